@@ -1,0 +1,23 @@
+/**
+ * @file hyst.h
+ * @brief hyst: allocation-free hysteresis modelling and compensation (TCM).
+ *
+ * Include this one header. Modules:
+ *  - hyst/config.h: compile-time options (real type, limits, hooks);
+ *  - hyst/status.h: status codes and event flags;
+ *  - hyst/curve.h:  the major ascending curve f0;
+ *  - hyst/tcm.h:    the TCM instance (init, reset, step, process).
+ */
+#ifndef HYST_HYST_H
+#define HYST_HYST_H
+
+#define HYST_VERSION_MAJOR 0
+#define HYST_VERSION_MINOR 1
+#define HYST_VERSION_PATCH 0
+
+#include "hyst/config.h"
+#include "hyst/status.h"
+#include "hyst/curve.h"
+#include "hyst/tcm.h"
+
+#endif /* HYST_HYST_H */

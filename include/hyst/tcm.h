@@ -1,0 +1,183 @@
+/**
+ * @file tcm.h
+ * @brief The trajectory construction method (TCM): a hysteresis model instance.
+ *
+ * One instance models one actuator axis. It keeps the turning points (TPs)
+ * that still matter in four caller-owned arrays of equal length:
+ *
+ *  - xltp/yltp: left TPs (input was falling, then rose), x ascending;
+ *    entry 0 is the anchor A0 = (lo, f0(lo)), never removed.
+ *  - xrtp/yrtp: right TPs (input was rising, then fell), x descending.
+ *
+ * With inputs quantised to Nu distinct values in [lo, hi] (an Nu-code DAC),
+ * Nu/2 entries per array can never overflow (HYST_CAPACITY()).
+ *
+ * Per sample (hyst_step()):
+ *  1. an input equal to the previous one changes nothing;
+ *  2. a reversal of direction stores the previous point as a new TP;
+ *  3. TPs the input reaches or passes are wiped out (Madelung's rule 3); the
+ *     surviving current TP is found by binary search, only when a TP is passed;
+ *  4. the output is y_k + g(x - x_k) on a rising branch from LTP (x_k, y_k) and
+ *     y_k - g(x_k - x) on a falling branch from RTP (x_k, y_k).
+ * A sample that passes no TP costs one comparison and one evaluation of g.
+ *
+ * Instances share nothing: several may run side by side (multi-axis stages).
+ */
+#ifndef HYST_TCM_H
+#define HYST_TCM_H
+
+#include "hyst/config.h"
+#include "hyst/curve.h"
+#include "hyst/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Entries per turning-point array for inputs with @p nu distinct values. */
+#define HYST_CAPACITY(nu) ((nu) / 2u)
+
+/**
+ * @brief A TCM instance. Fields are private; use the functions below.
+ */
+typedef struct hyst {
+    hyst_curve_t curve;  /**< branch shape and domain */
+    hyst_real_t *xltp;   /**< LTP inputs, ascending, [0] = lo */
+    hyst_real_t *yltp;   /**< LTP outputs */
+    hyst_real_t *xrtp;   /**< RTP inputs, descending */
+    hyst_real_t *yrtp;   /**< RTP outputs */
+    size_t capacity;     /**< entries of each array */
+    size_t n_ltp;        /**< stored LTPs, including A0 (>= 1) */
+    size_t n_rtp;        /**< stored RTPs; n_ltp > n_rtp <=> branch rising */
+    hyst_real_t x_prev;  /**< last valid (clamped) input */
+    hyst_real_t y_prev;  /**< output for x_prev */
+    int status;          /**< hyst_status_t of the last sample */
+    unsigned events;     /**< sticky HYST_EVENT_* flags */
+} hyst_t;
+
+/**
+ * @brief Declares an instance and its four TP arrays, statically.
+ *
+ * @code
+ * HYST_DEFINE(axis_x, 4096);              // 12-bit DAC: 4 x 2048 entries
+ * ...
+ * if (HYST_INIT(axis_x, &f0) != HYST_OK) { handle_error(); }
+ * @endcode
+ * Usable at file scope or in a function (the objects are static).
+ */
+#define HYST_DEFINE(name, nu)                                          \
+    static hyst_real_t name##_xltp[HYST_CAPACITY(nu)];                 \
+    static hyst_real_t name##_yltp[HYST_CAPACITY(nu)];                 \
+    static hyst_real_t name##_xrtp[HYST_CAPACITY(nu)];                 \
+    static hyst_real_t name##_yrtp[HYST_CAPACITY(nu)];                 \
+    static hyst_t name
+
+/** hyst_init() on an instance declared by HYST_DEFINE(). */
+#define HYST_INIT(name, f0)                                            \
+    hyst_init(&(name), (f0), name##_xltp, name##_yltp, name##_xrtp,    \
+              name##_yrtp, sizeof(name##_xltp) / sizeof(name##_xltp[0]))
+
+/**
+ * @brief Initialises an instance with a polynomial f0 and caller-owned memory.
+ *
+ * Validates everything once (see hyst_curve_from_poly() for the curve checks)
+ * and leaves the instance at A0, as hyst_reset(). On error nothing is written.
+ *
+ * @param[out] S         instance.
+ * @param[in]  f0        major ascending curve, coefficients highest power first.
+ * @param[in]  xltp,yltp,xrtp,yrtp  four arrays of @p capacity entries each.
+ * @param[in]  capacity  entries per array, >= 2; HYST_CAPACITY(Nu) for Nu codes.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_CAPACITY, or a curve error.
+ */
+hyst_status_t hyst_init(hyst_t *S, const hyst_poly_t *f0, hyst_real_t *xltp,
+                        hyst_real_t *yltp, hyst_real_t *xrtp, hyst_real_t *yrtp,
+                        size_t capacity);
+
+/**
+ * @brief As hyst_init(), with a curve already prepared (hyst_curve_t).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_CAPACITY or HYST_ERR_ARG (a curve
+ *         not prepared by a hyst_curve_* function).
+ */
+hyst_status_t hyst_init_curve(hyst_t *S, const hyst_curve_t *curve,
+                              hyst_real_t *xltp, hyst_real_t *yltp,
+                              hyst_real_t *xrtp, hyst_real_t *yrtp,
+                              size_t capacity);
+
+/**
+ * @brief Forgets all turning points: the trajectory is back at A0 = (lo, f0(lo)).
+ *
+ * Also clears the sticky events. Call after a power-up of the actuator that
+ * starts from zero drive.
+ * @param[in,out] S initialised instance.
+ */
+void hyst_reset(hyst_t *S);
+
+/**
+ * @brief Advances the model by one input sample.
+ *
+ * Bounded time: O(1) unless the sample passes a stored TP, then one binary
+ * search, O(log capacity). Never allocates, never writes out of the arrays.
+ *  - NaN or infinite @p x: ignored, state untouched, returns the previous
+ *    output; status HYST_ERR_NONFINITE.
+ *  - @p x outside [lo, hi]: clamped to the domain; status HYST_WARN_CLAMPED.
+ *  - a reversal with a full array: the innermost stored loop (the two most
+ *    recent TPs) is forgotten to make room; the output stays continuous at
+ *    this sample; status HYST_WARN_FULL. Cannot happen when the inputs take
+ *    at most 2 * capacity distinct values.
+ * The status of the sample is read by hyst_status(); hyst_events() collects
+ * the conditions of all samples.
+ *
+ * @param[in,out] S  initialised instance.
+ * @param[in]     x  input sample.
+ * @return output y.
+ */
+hyst_real_t hyst_step(hyst_t *S, hyst_real_t x);
+
+/**
+ * @brief Runs hyst_step() over a block of samples.
+ * @param[in,out] S  initialised instance.
+ * @param[in]     x  @p n inputs.
+ * @param[out]    y  @p n outputs (may be the same array as @p x).
+ * @param[in]     n  number of samples.
+ * @return HYST_ERR_NONFINITE if any sample was not finite, else HYST_WARN_FULL
+ *         if any overflow happened, else HYST_WARN_CLAMPED if any input was
+ *         clamped, else HYST_OK. HYST_ERR_NULL if a pointer is NULL with n > 0.
+ */
+hyst_status_t hyst_process(hyst_t *S, const hyst_real_t *x, hyst_real_t *y,
+                           size_t n);
+
+/** @brief Status of the last sample (hyst_status_t). */
+static inline int hyst_status(const hyst_t *S) { return S->status; }
+
+/** @brief Sticky HYST_EVENT_* flags since the last reset or clear. */
+static inline unsigned hyst_events(const hyst_t *S) { return S->events; }
+
+/** @brief Clears the sticky event flags. */
+static inline void hyst_clear_events(hyst_t *S) { S->events = 0u; }
+
+/** @brief Last output (f0(lo) after init or reset). */
+static inline hyst_real_t hyst_output(const hyst_t *S) { return S->y_prev; }
+
+/** @brief Last valid input, after clamping (lo after init or reset). */
+static inline hyst_real_t hyst_input(const hyst_t *S) { return S->x_prev; }
+
+/** @brief Stored left TPs, excluding the anchor A0. */
+static inline size_t hyst_ltp_count(const hyst_t *S) { return S->n_ltp - 1u; }
+
+/** @brief Stored right TPs. */
+static inline size_t hyst_rtp_count(const hyst_t *S) { return S->n_rtp; }
+
+/** @brief Stored TPs, excluding the anchor A0 (the paper's TP count). */
+static inline size_t hyst_tp_count(const hyst_t *S)
+{
+    return S->n_ltp - 1u + S->n_rtp;
+}
+
+/** @brief 1 if the current branch rises (it leaves an LTP), 0 if it falls. */
+static inline int hyst_rising(const hyst_t *S) { return S->n_ltp > S->n_rtp; }
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* HYST_TCM_H */

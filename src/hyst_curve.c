@@ -1,0 +1,232 @@
+/* Polynomial curve set-up: validation, shift/scale to [0, 1], monotonicity. */
+#include "hyst/curve.h"
+
+/* Finite test without libm: NaN fails x == x, +-Inf gives Inf - Inf = NaN. */
+static int wide_is_finite(hyst_wide_t v)
+{
+    hyst_wide_t z = v - v;
+    return z == z;
+}
+
+/* Rewrites p (highest power first, degree n) as the coefficients of
+ * p(x0 + t) (Ruffini-Horner Taylor shift). */
+static void taylor_shift(hyst_wide_t *p, unsigned n, hyst_wide_t x0)
+{
+    unsigned i, j;
+    for (i = 0u; i < n; ++i) {
+        for (j = 1u; j <= n - i; ++j) {
+            p[j] += x0 * p[j - 1u];
+        }
+    }
+}
+
+/* Coefficients of f0(lo + span u), highest power first, into q[0..n]. */
+static void normalise(hyst_wide_t *q, const hyst_wide_t *c, unsigned n,
+                      hyst_wide_t lo, hyst_wide_t span)
+{
+    unsigned j;
+    hyst_wide_t scale = 1;
+    for (j = 0u; j <= n; ++j) {
+        q[j] = c[j];
+    }
+    taylor_shift(q, n, lo);
+    for (j = n + 1u; j-- > 0u;) { /* q[j] multiplies u^(n-j) */
+        q[j] *= scale;
+        scale *= span;
+    }
+}
+
+/* Bernstein coefficients on [a, a + w] of d (lowest power first, degree m). */
+static void bernstein_on(hyst_wide_t *beta, const hyst_wide_t *d, unsigned m,
+                         hyst_wide_t a, hyst_wide_t w)
+{
+    hyst_wide_t q[HYST_MAX_DEGREE];
+    hyst_wide_t scale = 1;
+    unsigned i, k;
+    for (k = 0u; k <= m; ++k) { /* highest power first for taylor_shift */
+        q[k] = d[m - k];
+    }
+    taylor_shift(q, m, a);
+    for (k = 0u; k <= m; ++k) { /* q[m-k] multiplies t^k, scale by w^k */
+        q[m - k] *= scale;
+        scale *= w;
+    }
+    for (i = 0u; i <= m; ++i) {
+        /* beta_i = sum_k C(i,k)/C(m,k) q_k, ratio built incrementally */
+        hyst_wide_t sum = 0;
+        hyst_wide_t ratio = 1;
+        for (k = 0u; k <= i; ++k) {
+            sum += ratio * q[m - k];
+            if (k < i) {
+                ratio *= (hyst_wide_t)(i - k) / (hyst_wide_t)(m - k);
+            }
+        }
+        beta[i] = sum;
+    }
+}
+
+static unsigned long trailing_zeros(unsigned long v)
+{
+    unsigned long n = 0u;
+    while ((v & 1u) == 0u) {
+        v >>= 1u;
+        ++n;
+    }
+    return n;
+}
+
+/* Is G (lowest power first, degree n, on u in [0, 1]) non-decreasing?
+ * Depth-first dyadic subdivision of the Bernstein form of G', no stack:
+ * the next interval after an accepted one follows from its index alone. */
+static int unit_increasing(const hyst_wide_t *g, unsigned n, hyst_wide_t *turn_u)
+{
+    const unsigned long leaves = 1ul << HYST_MONOTONE_DEPTH;
+    hyst_wide_t d[HYST_MAX_DEGREE];
+    hyst_wide_t beta[HYST_MAX_DEGREE];
+    hyst_wide_t bound = 0;
+    hyst_wide_t tol;
+    unsigned long pos = 0u;  /* interval start, in leaves */
+    unsigned long level = 0u;
+    const unsigned m = n - 1u;
+    unsigned k;
+
+    for (k = 0u; k <= m; ++k) {
+        d[k] = (hyst_wide_t)(k + 1u) * g[k + 1u];
+        bound += d[k] < 0 ? -d[k] : d[k];
+    }
+    /* Slopes within rounding of zero count as zero (x^3 at 0 is increasing). */
+    tol = bound * (hyst_wide_t)(sizeof(hyst_wide_t) >= 8u ? 1e-12 : 1e-5);
+
+    for (;;) {
+        const hyst_wide_t width = (hyst_wide_t)1 / (hyst_wide_t)(1ul << level);
+        const hyst_wide_t a = (hyst_wide_t)pos / (hyst_wide_t)leaves;
+        hyst_wide_t lowest;
+        int settled;
+        bernstein_on(beta, d, m, a, width);
+        if (beta[0] < -tol) {
+            *turn_u = a;
+            return 0;
+        }
+        lowest = beta[0];
+        for (k = 1u; k <= m; ++k) {
+            lowest = beta[k] < lowest ? beta[k] : lowest;
+        }
+        settled = lowest >= -tol;
+        if (!settled && level == HYST_MONOTONE_DEPTH) {
+            if (beta[m] < -tol) {
+                *turn_u = a + width;
+                return 0;
+            }
+            settled = 1; /* dip narrower than one leaf: accepted */
+        }
+        if (settled) {
+            pos += leaves >> level;
+            if (pos == leaves) {
+                return 1;
+            }
+            level = HYST_MONOTONE_DEPTH - trailing_zeros(pos);
+        } else {
+            ++level;
+        }
+    }
+}
+
+/* Normalised coefficients lowest power first: g[k] multiplies u^k. */
+static void unit_poly(hyst_wide_t *g, const hyst_wide_t *c, unsigned n,
+                      hyst_wide_t lo, hyst_wide_t hi)
+{
+    hyst_wide_t q[HYST_MAX_DEGREE + 1];
+    unsigned k;
+    normalise(q, c, n, lo, hi - lo);
+    for (k = 0u; k <= n; ++k) {
+        g[k] = q[n - k];
+    }
+}
+
+int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
+                            hyst_wide_t lo, hyst_wide_t hi, hyst_wide_t *turn)
+{
+    hyst_wide_t g[HYST_MAX_DEGREE + 1];
+    hyst_wide_t total = 0;
+    hyst_wide_t turn_u = 0;
+    unsigned k;
+    int ok;
+    unit_poly(g, coeffs, degree, lo, hi);
+    for (k = 1u; k <= degree; ++k) {
+        total += g[k];
+    }
+    ok = unit_increasing(g, degree, &turn_u);
+    if (ok && !(total > 0)) { /* slope never negative yet f0(hi) <= f0(lo): constant */
+        ok = 0;
+        turn_u = 0;
+    }
+    if (!ok && turn != NULL) {
+        *turn = lo + turn_u * (hi - lo);
+    }
+    return ok;
+}
+
+hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
+{
+    hyst_wide_t c[HYST_MAX_DEGREE + 1];
+    hyst_wide_t g[HYST_MAX_DEGREE + 1];
+    hyst_curve_t out;
+    hyst_wide_t lo, hi, y_hi;
+    unsigned n, k;
+
+    if (curve == NULL || f0 == NULL) {
+        return HYST_ERR_NULL;
+    }
+    n = f0->degree;
+    if (n < 1u || n > HYST_MAX_DEGREE) {
+        return HYST_ERR_DEGREE;
+    }
+    lo = f0->lo;
+    hi = f0->hi;
+    if (!wide_is_finite(lo) || !wide_is_finite(hi) || !(lo < hi)) {
+        return HYST_ERR_DOMAIN;
+    }
+    for (k = 0u; k <= n; ++k) {
+        c[k] = f0->coeffs[k];
+        if (!wide_is_finite(c[k])) {
+            return HYST_ERR_COEFF;
+        }
+    }
+    unit_poly(g, c, n, lo, hi);
+    y_hi = 0;
+    for (k = 0u; k <= n; ++k) {
+        y_hi += g[k];
+    }
+    out.kind = HYST_CURVE_POLY;
+    out.degree = n;
+    out.lo = f0->lo;
+    out.hi = f0->hi;
+    out.y_lo = (hyst_real_t)g[0];
+    out.y_hi = (hyst_real_t)y_hi;
+    out.inv_span = (hyst_real_t)(1 / (hi - lo));
+    for (k = 0u; k < n; ++k) {
+        out.a[k] = (hyst_real_t)g[n - k]; /* a[0] multiplies u^n */
+        if (!wide_is_finite((hyst_wide_t)out.a[k])) {
+            return HYST_ERR_COEFF;
+        }
+    }
+    if (!wide_is_finite((hyst_wide_t)out.y_lo) || !wide_is_finite((hyst_wide_t)out.y_hi) ||
+        !wide_is_finite((hyst_wide_t)out.inv_span)) {
+        return HYST_ERR_COEFF;
+    }
+    if (!hyst_poly_is_increasing(c, n, lo, hi, NULL)) {
+        return HYST_ERR_NOT_INCREASING;
+    }
+    *curve = out;
+    return HYST_OK;
+}
+
+hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x)
+{
+    hyst_real_t acc = f0->coeffs[0];
+    unsigned k;
+    for (k = 1u; k <= f0->degree; ++k) {
+        acc = acc * x + f0->coeffs[k];
+    }
+    return acc;
+}

@@ -1,0 +1,21 @@
+/* Human-readable status names. */
+#include "hyst/status.h"
+
+const char *hyst_status_str(int status)
+{
+    switch (status) {
+    case HYST_OK: return "ok";
+    case HYST_WARN_CLAMPED: return "input clamped to the domain";
+    case HYST_WARN_FULL: return "turning-point memory full, innermost loop forgotten";
+    case HYST_ERR_NULL: return "null pointer";
+    case HYST_ERR_DOMAIN: return "domain not finite or lo >= hi";
+    case HYST_ERR_DEGREE: return "degree out of range";
+    case HYST_ERR_CAPACITY: return "capacity too small";
+    case HYST_ERR_COEFF: return "coefficient not finite or curve overflows";
+    case HYST_ERR_NOT_INCREASING: return "f0 not increasing on the domain";
+    case HYST_ERR_NONFINITE: return "sample not finite";
+    case HYST_ERR_ARG: return "invalid argument";
+    case HYST_ERR_NOSPACE: return "buffer too small";
+    default: return "unknown status";
+    }
+}

@@ -1,0 +1,77 @@
+#include "support.h"
+
+const double paper_eq20_coeffs[4] = {-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1};
+
+const hyst_poly_t paper_eq20 = {
+    3u, HYST_REAL_C(0.0), HYST_REAL_C(40.0),
+    {HYST_REAL_C(-6.1876e-6), HYST_REAL_C(1.1949e-3), HYST_REAL_C(8.6444e-2),
+     HYST_REAL_C(5.8517e-1)}};
+
+void rng_seed(rng_t *r, uint32_t seed)
+{
+    r->s = seed ? seed : 0x9E3779B9u;
+}
+
+uint32_t rng_u32(rng_t *r) /* xorshift32 */
+{
+    uint32_t x = r->s;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    r->s = x;
+    return x;
+}
+
+double rng_unit(rng_t *r)
+{
+    return (double)(rng_u32(r) >> 8) / 16777216.0;
+}
+
+double rng_range(rng_t *r, double a, double b)
+{
+    return a + (b - a) * rng_unit(r);
+}
+
+uint32_t rng_below(rng_t *r, uint32_t n)
+{
+    return (uint32_t)(rng_unit(r) * (double)n);
+}
+
+int paper_levels(double lo, double hi, double *levels)
+{
+    const double span = hi - lo;
+    int n = 0;
+    int k;
+    for (k = 0; k < 7; ++k) { /* shrink: peaks hi, hi - s, ...; valleys lo + s, ... */
+        levels[n++] = hi - span * 0.0625 * k;
+        levels[n++] = lo + span * 0.0625 * (k + 1);
+    }
+    for (k = 6; k >= 0; --k) { /* grow back through the same levels */
+        levels[n++] = hi - span * 0.0625 * k;
+        if (k > 0) {
+            levels[n++] = lo + span * 0.0625 * k;
+        }
+    }
+    levels[n++] = lo;
+    return n;
+}
+
+long ramp_path(double start, const double *levels, int n_levels, double step,
+               hyst_real_t *out, long max)
+{
+    long count = 0;
+    double at = start;
+    int i;
+    for (i = 0; i < n_levels; ++i) {
+        const double target = levels[i];
+        const double dist = target > at ? target - at : at - target;
+        long steps = (long)(dist / step) + 1;
+        long k;
+        for (k = 1; k <= steps && count < max; ++k) {
+            const double v = k == steps ? target : at + (target - at) * (double)k / (double)steps;
+            out[count++] = (hyst_real_t)v;
+        }
+        at = target;
+    }
+    return count;
+}

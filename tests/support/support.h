@@ -1,0 +1,39 @@
+/* Shared by the tests: a seeded PRNG, test signals and the paper's curve. */
+#ifndef HYST_TEST_SUPPORT_H
+#define HYST_TEST_SUPPORT_H
+
+#include "hyst/hyst.h"
+#include <stdint.h>
+
+/* Tolerance of the build's real type, as a fraction of the output range. */
+#ifdef HYST_USE_DOUBLE
+#define TOL_OF_RANGE 1e-9
+#else
+#define TOL_OF_RANGE 1e-5
+#endif
+
+/* Paper Eq. 20: piezo positioner, 0..40 V, output in um. */
+extern const hyst_poly_t paper_eq20;
+extern const double paper_eq20_coeffs[4];
+
+typedef struct {
+    uint32_t s;
+} rng_t;
+
+void rng_seed(rng_t *r, uint32_t seed);
+uint32_t rng_u32(rng_t *r);
+double rng_unit(rng_t *r);                  /* [0, 1) */
+double rng_range(rng_t *r, double a, double b);
+uint32_t rng_below(rng_t *r, uint32_t n);   /* [0, n) */
+
+/* The paper's test signal: a triangle from lo whose amplitude shrinks around
+ * the centre for 7 peaks and 7 valleys, then grows back to the full range and
+ * returns to lo. Turning levels in *levels (caller array of 32); returns count. */
+int paper_levels(double lo, double hi, double *levels);
+
+/* Samples of a piecewise-linear path through levels, step at most `step`,
+ * starting at `start`. Writes at most max samples; returns how many. */
+long ramp_path(double start, const double *levels, int n_levels, double step,
+               hyst_real_t *out, long max);
+
+#endif
