@@ -288,7 +288,7 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
         big = d > big ? d : big;
     }
     for (i = 0u; i <= n; ++i) {
-        if (!(wide_abs(id->r[row_at(i, m)]) > big * WIDE_EPS * 1e3)) {
+        if (!(wide_abs(id->r[row_at(i, m)]) > big * WIDE_EPS * (hyst_wide_t)1000)) {
             return HYST_ERR_SINGULAR;
         }
     }

@@ -82,16 +82,73 @@ static void test_example1_both_estimators_recover_x_squared(void)
     }
 }
 
+/* Max |fit - f0| over the domain (201 points), in double. */
+static double curve_error(const hyst_ident_result_t *res, const hyst_poly_t *f0)
+{
+    double worst = 0.0;
+    int i;
+    unsigned k;
+    for (i = 0; i <= 200; ++i) {
+        const double x = (double)f0->lo + (double)(f0->hi - f0->lo) * (double)i / 200.0;
+        double a = 0.0, b = 0.0;
+        for (k = 0u; k <= f0->degree; ++k) {
+            a = a * x + (double)res->coeffs[k];
+            b = b * x + (double)f0->coeffs[k];
+        }
+        worst = fabs(a - b) > worst ? fabs(a - b) : worst;
+    }
+    return worst;
+}
+
+/* Both estimators over 40 noisy records each (seeds fixed): Example 1 and
+ * the Eq. 20 cubic, noise 0.5 % of the output range. The joint estimator
+ * uses every sample for every coefficient; the reflected one also depends on
+ * y(lo) + y(hi) taken from the few samples at the extremes, whose noise
+ * shifts the whole reflected branch. Asserted: joint is the more accurate
+ * on average (the reason it is the default), numbers in
+ * docs/identification.md. */
+#define MC_RUNS 40
+static void test_noisy_simulations_favour_joint(void)
+{
+    static const hyst_poly_t sq = {2u, HYST_REAL_C(0.0), HYST_REAL_C(1.0),
+                                   {HYST_REAL_C(1.0), HYST_REAL_C(0.0), HYST_REAL_C(0.0)}};
+    const hyst_poly_t *curves[2] = {&sq, &paper_eq20};
+    const double sigma[2] = {0.005, 0.005 * 4.974}; /* 0.5 % of f0(hi) - f0(lo) */
+    int c;
+    for (c = 0; c < 2; ++c) {
+        double ms[2] = {0.0, 0.0};
+        int run, m;
+        for (run = 0; run < MC_RUNS; ++run) {
+            size_t n;
+            rng_seed(&rng, 1000u + (uint32_t)run);
+            n = simulate_sine(curves[c], 200, 10, sigma[c]);
+            for (m = 0; m < 2; ++m) {
+                hyst_ident_result_t res;
+                double e;
+                TEST_ASSERT_EQUAL_INT(HYST_OK, fit(m == 0 ? HYST_IDENT_REFLECT : HYST_IDENT_JOINT,
+                                                   curves[c]->degree, n, &res));
+                e = curve_error(&res, curves[c]);
+                ms[m] += e * e / MC_RUNS;
+            }
+        }
+        printf("noisy %s, %d runs: RMS over runs of max |f_fit - f0| / sigma: reflect %.3f, "
+               "joint %.3f\n",
+               c == 0 ? "example1" : "eq20", MC_RUNS, sqrt(ms[0]) / sigma[c],
+               sqrt(ms[1]) / sigma[c]);
+        TEST_ASSERT_TRUE(ms[1] < ms[0]);
+    }
+}
+
 /* Noise-free Eq. 20 cubic on a triangle 0..40 V: exact data, so the fit is
- * exact up to rounding. In f32 the simulated outputs are floats (relative
- * rounding 6e-8 of up to 5.6 um, i.e. 3e-7 um); that error maps into c3
- * (a 6e-6 coefficient multiplied by 40^3 = 64000) as about 3e-7 / 64000 =
- * 5e-12 absolute, i.e. 1e-6 relative to c3 per unit of noise gain; the
- * least-squares gain over the basis on [0, 40] is ~100, so f32 asserts 1e-4. */
+ * exact up to rounding (measured f64: 1e-13 relative). In f32 the model's
+ * coefficients are floats (relative rounding 6e-8) and each simulated
+ * output carries a float rounding of up to 3e-7 um; the fit passes that on
+ * mostly to c3, whose term is only 0.4 um at 40 V: measured 6.2e-7
+ * relative, so f32 asserts 1e-5 (16x margin; the fit itself runs in double). */
 #ifdef HYST_USE_DOUBLE
 #define EQ20_REL 1e-6
 #else
-#define EQ20_REL 1e-4
+#define EQ20_REL 1e-5
 #endif
 static void test_eq20_cubic_is_returned_exactly(void)
 {
@@ -109,11 +166,16 @@ static void test_eq20_cubic_is_returned_exactly(void)
     }
     for (m = 0; m < 2; ++m) {
         hyst_ident_result_t res;
+        double worst = 0.0;
         TEST_ASSERT_EQUAL_INT(HYST_OK, fit(methods[m], 3u, (size_t)n, &res));
         for (k = 0; k < 4; ++k) {
             const double want = paper_eq20_coeffs[k];
+            const double rel = fabs((double)res.coeffs[k] - want) / fabs(want);
+            worst = rel > worst ? rel : worst;
             TEST_ASSERT_DOUBLE_WITHIN(EQ20_REL * fabs(want), want, (double)res.coeffs[k]);
         }
+        printf("eq20 noiseless %s: max relative coefficient error %.3g\n",
+               m == 0 ? "joint" : "reflect", worst);
         TEST_ASSERT_EQUAL_DOUBLE(0.0, (double)res.lo);
         TEST_ASSERT_EQUAL_DOUBLE(40.0, (double)res.hi);
         TEST_ASSERT_TRUE(res.increasing);
@@ -360,8 +422,8 @@ static size_t read_piezo(void)
  * is empty), sensor lag 1 sample (the data's README).
  * Measured (host, f64 and f32 alike to 4 digits), RMS prediction error in
  * sensor units on an output range of 45: joint 0.451, reflect 1.069. The
- * model cannot do much better on this record (the best symmetric loop of
- * degree 7 with any lag leaves 0.33: creep and drift, see
+ * model cannot do much better on this record (degree 5 with a lag of 4
+ * still leaves 0.384: the loop is not point-symmetric and drifts, see
  * docs/identification.md), so the bounds are regression guards: 0.55 and
  * 1.25, ~20 % above the measurements for libm/FPU differences, below what
  * a broken fit gives (degree-1 joint fit: 2.86). */
@@ -425,6 +487,7 @@ int main(void)
     hyst_port_init();
     UNITY_BEGIN();
     RUN_TEST(test_example1_both_estimators_recover_x_squared);
+    RUN_TEST(test_noisy_simulations_favour_joint);
     RUN_TEST(test_eq20_cubic_is_returned_exactly);
     RUN_TEST(test_degree9_on_dac_codes_is_sound);
     RUN_TEST(test_non_increasing_fit_is_reported_with_turn);

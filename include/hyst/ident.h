@@ -20,8 +20,9 @@
  * direction; samples before the input first moves have no direction and are
  * not used.
  *
- * Streaming and allocation-free: the instance (hyst_ident_t, a fixed
- * ~0.8 KB in double) is the whole workspace, whatever the number of samples.
+ * Streaming and allocation-free: the instance (hyst_ident_t: 872 bytes with
+ * hyst_wide_t = double on a 64-bit host, 472 with HYST_NO_DOUBLE) is the whole
+ * workspace, whatever the number of samples.
  * Each sample updates a triangular factor by Givens rotations (an orthogonal
  * factorisation, never the normal equations), in hyst_wide_t, on the input
  * scaled to t in [-1, 1] over the domain and a Chebyshev basis in t, so raw
@@ -146,9 +147,9 @@ hyst_status_t hyst_ident_init(hyst_ident_t *id, const hyst_ident_config_t *cfg);
  * @param[in]     x  input.
  * @param[in]     y  output measured for @p x (already delay-aligned).
  * @return HYST_OK when used; HYST_ERR_NONFINITE (NaN/Inf) or HYST_ERR_DOMAIN
- *         (x outside [lo, hi]) when ignored; HYST_WARN_CLAMPED... never;
- *         HYST_ERR_ARG after hyst_ident_solve(). A sample before the input
- *         first moves returns HYST_OK and is counted as ignored.
+ *         (x outside [lo, hi]) when ignored; HYST_ERR_ARG after
+ *         hyst_ident_solve(). A sample before the input first moves
+ *         returns HYST_OK but is not used (it has no direction).
  */
 hyst_status_t hyst_ident_add(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y);
 
