@@ -13,7 +13,8 @@
  *  - HYST_IDENT_REFLECT (the paper's procedure): falling samples are mapped
  *    onto f0 by the point reflection of Eq. 14, x' = lo + hi - x,
  *    y' = y(lo) + y(hi) - y, with y(lo), y(hi) the mean outputs of the samples
- *    at the extreme inputs seen; then one polynomial fit.
+ *    at the extreme inputs seen; then one polynomial fit. The domain should
+ *    then be the inputs' range (the reflection uses lo + hi).
  *
  * A sample is rising or falling by its direction of travel: the sign of
  * x - (previous different input); a repeated input keeps the previous
