@@ -149,10 +149,14 @@ static unsigned long length_of(unsigned long n_ltp, unsigned long n_rtp)
     return HEADER_OCTETS + 2ul * R * (1ul + n_ltp + n_rtp) + CRC_OCTETS;
 }
 
+/* A function, not an inline test: with a 16-bit size_t the comparison is
+ * always true, which -Wtype-limits would flag on AVR. */
+static int count_fits(unsigned long n) { return n <= MAX_COUNT; }
+
 size_t hyst_snapshot_size(const hyst_t *S)
 {
     unsigned long need;
-    if (S->n_ltp > MAX_COUNT || S->n_rtp > MAX_COUNT) {
+    if (!count_fits((unsigned long)S->n_ltp) || !count_fits((unsigned long)S->n_rtp)) {
         return 0u; /* not representable; save refuses with HYST_ERR_NOSPACE */
     }
     need = length_of((unsigned long)S->n_ltp, (unsigned long)S->n_rtp);
@@ -268,7 +272,7 @@ hyst_status_t hyst_snapshot_restore(hyst_t *S, const unsigned char *buf,
     length = get_u32(buf + 8);
     nl32 = get_u32(buf + 16);
     nr32 = get_u32(buf + 20);
-    if (length > len || nl32 > MAX_COUNT || nr32 > MAX_COUNT ||
+    if (length > len || !count_fits(nl32) || !count_fits(nr32) ||
         length != length_of(nl32, nr32)) {
         return HYST_ERR_FORMAT; /* truncated, or length and counts disagree */
     }
