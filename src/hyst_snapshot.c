@@ -14,7 +14,7 @@
 #define MAGIC3 0x53u /* 'S' */
 #define HEADER_OCTETS 32u
 #define CRC_OCTETS 4u
-#define R HYST_SNAPSHOT_REAL_OCTETS
+#define R ((size_t)HYST_SNAPSHOT_REAL_OCTETS)
 #define MAX_COUNT 0x03FFFFFFul /* keeps L below 2^31 for either R */
 #define EVENTS_KNOWN (HYST_EVENT_NONFINITE | HYST_EVENT_CLAMPED | HYST_EVENT_FULL)
 
@@ -56,7 +56,7 @@ static unsigned long get_u32(const unsigned char *p)
 
 /* Reals travel as their IEEE-754 bits; the union reads the representation
  * (well-defined in C99 TC3) without memcpy or CHAR_BIT assumptions. */
-#if R == 8u
+#if HYST_SNAPSHOT_REAL_OCTETS == 8u
 typedef union {
     hyst_real_t r;
     uint64_t u;
