@@ -191,7 +191,11 @@ static void restore_forged(reader_t *r, int fix)
         size_t good = 0, nl, nr;
         unsigned long crc;
         CHECK(hyst_snapshot_save(&A.S, snap, sizeof(snap), &good) == HYST_OK);
+        const int keep_id = forged[30] & 1u; /* then: the curve id of the input */
+        unsigned char id[4];
+        memcpy(id, forged + 12, 4u);
         memcpy(forged, snap, 16u); /* magic, version, R, curve id */
+        if (keep_id) memcpy(forged + 12, id, 4u);
         nl = 1u + forged[16] % MAX_CAP;
         nr = nl - (forged[20] & 1u);
         len = 36u + 2u * HYST_SNAPSHOT_REAL_OCTETS * (1u + nl + nr);
@@ -316,6 +320,16 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 }
                 CHECK(m == 0u || memcmp(&ys[m - 1u], &A.S.y_prev, sizeof(hyst_real_t)) == 0);
                 if (st == HYST_WARN_FULL || (hyst_events(&A.S) & HYST_EVENT_FULL)) full = 1;
+                break;
+            }
+            case 6: { /* a real snapshot of A with one bit flipped: always refused */
+                size_t len = 0, bit;
+                CHECK(hyst_snapshot_save(&A.S, snap, sizeof(snap), &len) == HYST_OK);
+                bit = rd_u16(&r) % (8u * len);
+                snap[bit / 8u] = (unsigned char)(snap[bit / 8u] ^ (1u << (bit % 8u)));
+                memcpy(&keep, &C, sizeof(C));
+                CHECK(hyst_snapshot_restore(&C.S, snap, len) < 0);
+                CHECK(memcmp(&keep, &C, sizeof(C)) == 0);
                 break;
             }
             default: /* clear events, read accessors */

@@ -55,7 +55,7 @@ seeds = {
     "raw_inf_coeff": raw(0, 40, 2, 0.0, 1.0, [math.inf, 1.0, 0.0]),
     "raw_overflow": raw(0, 40, 9, 0.0, 1e40, [1.0] + [0.0] * 9),
     "forged_restore": structured(0, 16, *cubic) + shrinking(2) + bytes([0xF2, 60, 0]) + b"HYSS" + bytes(56)
-        + bytes([0xF3, 100, 0]) + bytes(range(100)),
+        + bytes([0xF3, 100, 0]) + bytes(range(100)) + bytes([0xF6, 77, 1, 0xF6, 5, 0]),
 }
 for name, data in seeds.items():
     with open(os.path.join(out, name), "wb") as f:
