@@ -8,14 +8,17 @@
  *   [0]      flags: bit0 raw config (arbitrary doubles) else structured,
  *            bit1 init through hyst_curve_from_poly + hyst_init_curve,
  *            bit2 NULL-pointer probes, bit3 corrupted curve kind probe
- *   [1]      degree (byte % 12: 0, 10, 11 are invalid)
- *   [2]      capacity (byte % 48: 0 and 1 are invalid)
+ *   [1]      capacity (byte % 48: 0 and 1 are invalid)
+ *   [2]      degree (byte % 12: 0, 10, 11 are invalid)
  *   config   raw: lo, hi, coeffs as 8-byte doubles; structured: small grids
- *   samples  opcode byte, then its operand (see next_sample / OP_*)
+ *   then     opcodes: 0xF0..0xFF are control opcodes (the switch in
+ *            LLVMFuzzerTestOneInput: reset, snapshot twin, forged restores,
+ *            block through hyst_process, bit-flipped snapshot, accessors);
+ *            any other byte is one sample of kind op & 7 (next_sample).
  *
- * Adding an entry point: add an opcode to the switch in run_ops() (and, if it
- * reads configuration, to probe_config()); seeds in fuzz/corpus/ reach it once
- * an input carries the new opcode. fuzz/run lists every function declared in
+ * Adding an entry point: give it a control opcode in that switch (0xF5 and
+ * 0xF7..0xFF fall to the default case, the accessors, today) and a seed in
+ * fuzz/make_corpus.py that uses it. fuzz/run lists every function declared in
  * include/hyst/ (all headers, by glob) that this file does not call. */
 #include "hyst/hyst.h"
 #include "ref_tcm.h"
