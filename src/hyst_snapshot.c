@@ -57,45 +57,35 @@ static unsigned long get_u32(const unsigned char *p)
 /* Reals travel as their IEEE-754 bits; the union reads the representation
  * (well-defined in C99 TC3) without memcpy or CHAR_BIT assumptions. */
 #if HYST_SNAPSHOT_REAL_OCTETS == 8u
-typedef union {
-    hyst_real_t r;
-    uint64_t u;
-} real_bits_t;
-
-static void put_real(unsigned char *p, hyst_real_t v)
-{
-    real_bits_t b;
-    b.r = v;
-    put_u32(p, (unsigned long)(b.u & 0xFFFFFFFFu));
-    put_u32(p + 4, (unsigned long)(b.u >> 32));
-}
-
-static hyst_real_t get_real(const unsigned char *p)
-{
-    real_bits_t b;
-    b.u = (uint64_t)get_u32(p) | ((uint64_t)get_u32(p + 4) << 32);
-    return b.r;
-}
+typedef uint64_t real_uint_t;
 #else
+typedef uint32_t real_uint_t;
+#endif
 typedef union {
     hyst_real_t r;
-    uint32_t u;
+    real_uint_t u;
 } real_bits_t;
 
 static void put_real(unsigned char *p, hyst_real_t v)
 {
     real_bits_t b;
+    unsigned k;
     b.r = v;
-    put_u32(p, (unsigned long)b.u);
+    for (k = 0u; k < R; ++k) {
+        p[k] = (unsigned char)((b.u >> (8u * k)) & 0xFFu);
+    }
 }
 
 static hyst_real_t get_real(const unsigned char *p)
 {
     real_bits_t b;
-    b.u = (uint32_t)get_u32(p);
+    unsigned k;
+    b.u = 0u;
+    for (k = 0u; k < R; ++k) {
+        b.u |= (real_uint_t)(p[k] & 0xFFu) << (8u * k);
+    }
     return b.r;
 }
-#endif
 
 static int real_is_finite(hyst_real_t v)
 {
