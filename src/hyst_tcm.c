@@ -1,5 +1,6 @@
 /* The TCM engine: turning-point memory, wipe-out, branch output. */
 #include "hyst/tcm.h"
+#include "hyst_internal.h"
 
 hyst_status_t hyst_init_curve(hyst_t *S, const hyst_curve_t *curve,
                               hyst_real_t *xltp, hyst_real_t *yltp,
@@ -84,6 +85,12 @@ void hyst_reset(hyst_t *S)
     S->events = 0u;
     settle(S, S->curve.lo);
     S->y_prev = S->curve.y_lo;
+}
+
+void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y)
+{
+    settle(S, x);
+    S->y_prev = y;
 }
 
 /* Count of xltp[0..n) below x (ascending array): LTPs that survive a fall to x. */

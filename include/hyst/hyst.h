@@ -8,6 +8,7 @@
  *  - hyst/curve.h:  the major ascending curve f0;
  *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
  *  - hyst/ident.h:  identification of f0 from measured data.
+ *  - hyst/snapshot.h: save/restore of an instance's memory (CRC-checked).
  */
 #ifndef HYST_HYST_H
 #define HYST_HYST_H
@@ -21,5 +22,6 @@
 #include "hyst/curve.h"
 #include "hyst/tcm.h"
 #include "hyst/ident.h"
+#include "hyst/snapshot.h"
 
 #endif /* HYST_HYST_H */
