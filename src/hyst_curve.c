@@ -1,12 +1,6 @@
-/* Polynomial curve set-up: validation, shift/scale to [0, 1], monotonicity. */
-#include "hyst/curve.h"
-
-/* Finite test without libm: NaN fails x == x, +-Inf gives Inf - Inf = NaN. */
-static int wide_is_finite(hyst_wide_t v)
-{
-    hyst_wide_t z = v - v;
-    return z == z;
-}
+/* Polynomial curve set-up (validation, shift/scale to [0, 1], monotonicity)
+ * and what every curve kind shares: the out-of-line g, checks, evaluation. */
+#include "hyst_curve_impl.h"
 
 /* Rewrites p (highest power first, degree n) as the coefficients of
  * p(x0 + t) (Ruffini-Horner Taylor shift). */
@@ -170,7 +164,7 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
 {
     hyst_wide_t c[HYST_MAX_DEGREE + 1];
     hyst_wide_t g[HYST_MAX_DEGREE + 1];
-    hyst_curve_t out;
+    hyst_curve_t out = {0};
     hyst_wide_t lo, hi, y_hi;
     unsigned n, k;
 
@@ -183,12 +177,12 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
     }
     lo = f0->lo;
     hi = f0->hi;
-    if (!wide_is_finite(lo) || !wide_is_finite(hi) || !(lo < hi)) {
+    if (!hyst_wide_is_finite_(lo) || !hyst_wide_is_finite_(hi) || !(lo < hi)) {
         return HYST_ERR_DOMAIN;
     }
     for (k = 0u; k <= n; ++k) {
         c[k] = f0->coeffs[k];
-        if (!wide_is_finite(c[k])) {
+        if (!hyst_wide_is_finite_(c[k])) {
             return HYST_ERR_COEFF;
         }
     }
@@ -206,12 +200,12 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
     out.inv_span = (hyst_real_t)(1 / (hi - lo));
     for (k = 0u; k < n; ++k) {
         out.a[k] = (hyst_real_t)g[n - k]; /* a[0] multiplies u^n */
-        if (!wide_is_finite((hyst_wide_t)out.a[k])) {
+        if (!hyst_wide_is_finite_((hyst_wide_t)out.a[k])) {
             return HYST_ERR_COEFF;
         }
     }
-    if (!wide_is_finite((hyst_wide_t)out.y_lo) || !wide_is_finite((hyst_wide_t)out.y_hi) ||
-        !wide_is_finite((hyst_wide_t)out.inv_span)) {
+    if (!hyst_wide_is_finite_((hyst_wide_t)out.y_lo) || !hyst_wide_is_finite_((hyst_wide_t)out.y_hi) ||
+        !hyst_wide_is_finite_((hyst_wide_t)out.inv_span)) {
         return HYST_ERR_COEFF;
     }
     if (!hyst_poly_is_increasing(c, n, lo, hi, NULL)) {
@@ -229,4 +223,42 @@ hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x)
         acc = acc * x + f0->coeffs[k];
     }
     return acc;
+}
+
+hyst_real_t hyst_curve_g_other(const hyst_curve_t *curve, hyst_real_t d)
+{
+    if (curve->kind == HYST_CURVE_POLY_INV) {
+        return hyst_poly_inv_g_(curve, d);
+    }
+    /* PWL, PWL_INV: the difference of two interpolations; exactly 0 at d = 0 */
+    return hyst_pwl_eval_(curve, curve->lo + d) - curve->y_lo;
+}
+
+hyst_status_t hyst_curve_check(const hyst_curve_t *curve)
+{
+    if (curve == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (!(curve->lo < curve->hi)) {
+        return HYST_ERR_ARG;
+    }
+    switch (curve->kind) {
+    case HYST_CURVE_POLY:
+    case HYST_CURVE_POLY_INV:
+        return curve->degree >= 1u && curve->degree <= HYST_MAX_DEGREE ? HYST_OK
+                                                                       : HYST_ERR_ARG;
+    case HYST_CURVE_PWL:
+    case HYST_CURVE_PWL_INV:
+        return curve->px != NULL && curve->py != NULL && curve->n_points >= 2u
+                   ? HYST_OK
+                   : HYST_ERR_ARG;
+    default:
+        return HYST_ERR_ARG;
+    }
+}
+
+hyst_real_t hyst_curve_eval(const hyst_curve_t *curve, hyst_real_t x)
+{
+    x = x < curve->lo ? curve->lo : (x > curve->hi ? curve->hi : x);
+    return curve->y_lo + hyst_curve_g(curve, x - curve->lo);
 }

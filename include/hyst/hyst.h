@@ -6,7 +6,9 @@
  *  - hyst/config.h: compile-time options (real type, limits, hooks);
  *  - hyst/status.h: status codes and event flags;
  *  - hyst/curve.h:  the major ascending curve f0;
- *  - hyst/tcm.h:    the TCM instance (init, reset, step, process).
+ *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
+ *  - hyst/inverse.h: the inverse TCM, a feedforward compensator;
+ *  - hyst/pi.h:     the Prandtl-Ishlinskii model and its inverse.
  */
 #ifndef HYST_HYST_H
 #define HYST_HYST_H
@@ -19,5 +21,7 @@
 #include "hyst/status.h"
 #include "hyst/curve.h"
 #include "hyst/tcm.h"
+#include "hyst/inverse.h"
+#include "hyst/pi.h"
 
 #endif /* HYST_HYST_H */
