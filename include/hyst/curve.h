@@ -45,7 +45,7 @@ typedef struct hyst_poly {
  * See docs/pi_and_inverse.md for the measured worst error.
  */
 #ifndef HYST_INV_MAX_ITER
-#define HYST_INV_MAX_ITER 6
+#define HYST_INV_MAX_ITER 12
 #endif
 #if HYST_INV_MAX_ITER < 1
 #error "HYST_INV_MAX_ITER must be at least 1"
@@ -58,7 +58,7 @@ typedef struct hyst_poly {
  * each sample starts Newton inside the bracket of its table interval.
  */
 #ifndef HYST_INV_KNOTS
-#define HYST_INV_KNOTS 8
+#define HYST_INV_KNOTS 16
 #endif
 #if HYST_INV_KNOTS < 1
 #error "HYST_INV_KNOTS must be at least 1"
