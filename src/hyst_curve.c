@@ -225,7 +225,7 @@ hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x)
     return acc;
 }
 
-hyst_real_t hyst_curve_g_other(const hyst_curve_t *curve, hyst_real_t d)
+hyst_real_t hyst_curve_g_unit_other(const hyst_curve_t *curve, hyst_real_t d)
 {
     if (curve->kind == HYST_CURVE_POLY_INV) {
         return hyst_poly_inv_g_(curve, d);

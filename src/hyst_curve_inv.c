@@ -67,8 +67,9 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
     out.hi = fwd->y_hi;
     out.y_lo = fwd->lo;
     out.y_hi = fwd->hi;
-    if (fwd->kind == HYST_CURVE_POLY_INV) {
+    if (fwd->kind == HYST_CURVE_POLY_INV) { /* as hyst_curve_from_poly() set it */
         out.kind = HYST_CURVE_POLY;
+        out.inv_span = (hyst_real_t)(1 / ((hyst_wide_t)out.hi - (hyst_wide_t)out.lo));
         *inv = out;
         return HYST_OK;
     }
@@ -79,6 +80,7 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
         return HYST_ERR_NOT_INVERTIBLE;
     }
     out.kind = HYST_CURVE_POLY_INV;
+    out.inv_span = 1; /* g^-1 takes the output difference itself */
     out.span = (hyst_real_t)((hyst_wide_t)fwd->hi - (hyst_wide_t)fwd->lo);
     out.knot_scale = (hyst_real_t)((hyst_wide_t)HYST_INV_KNOTS / range);
     fill_knots(&out, range);

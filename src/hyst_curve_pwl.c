@@ -46,6 +46,7 @@ hyst_status_t hyst_curve_from_pwl(hyst_curve_t *curve, const hyst_real_t *x,
     out.hi = x[n - 1u];
     out.y_lo = y[0];
     out.y_hi = y[n - 1u];
+    out.inv_span = 1; /* g takes d itself: exact at the breakpoints */
     out.px = x;
     out.py = y;
     out.n_points = n;

@@ -16,6 +16,7 @@ const char *hyst_status_str(int status)
     case HYST_ERR_NONFINITE: return "sample not finite";
     case HYST_ERR_ARG: return "invalid argument";
     case HYST_ERR_NOSPACE: return "buffer too small";
+    case HYST_ERR_SINGULAR: return "too few distinct inputs for the fit";
     case HYST_ERR_BREAKPOINTS: return "breakpoints/thresholds not finite or not strictly increasing";
     case HYST_ERR_WEIGHTS: return "PI weights not finite or a partial sum not positive";
     case HYST_ERR_NOT_INVERTIBLE: return "curve not strictly increasing, no inverse";

@@ -45,16 +45,45 @@ hyst_status_t hyst_init(hyst_t *S, const hyst_poly_t *f0, hyst_real_t *xltp,
     return hyst_init_curve(S, &curve, xltp, yltp, xrtp, yrtp, capacity);
 }
 
+/* Output on the current branch. The one formula of both paths, so that a
+ * loop that closes returns to its starting output bit for bit. */
+HYST_INLINE hyst_real_t branch_y(const hyst_t *S, hyst_real_t x)
+{
+    return S->y_ctp + S->sign * hyst_curve_g_unit(&S->curve, (x - S->x_ctp) * S->u_scale);
+}
+
+/* Derives the fast-path cache from the arrays and the last input. */
+static void settle(hyst_t *S, hyst_real_t x)
+{
+    const size_t nl = S->n_ltp, nr = S->n_rtp;
+    if (nl > nr) {
+        S->x_ctp = S->xltp[nl - 1u];
+        S->y_ctp = S->yltp[nl - 1u];
+        S->sign = 1;
+        S->window[0] = x;
+        S->window[1] = nr > 0u ? S->xrtp[nr - 1u] : S->curve.hi;
+        S->moving_end = 0u;
+    } else {
+        S->x_ctp = S->xrtp[nr - 1u];
+        S->y_ctp = S->yrtp[nr - 1u];
+        S->sign = -1;
+        S->window[0] = S->xltp[nl - 1u];
+        S->window[1] = x;
+        S->moving_end = 1u;
+    }
+    S->u_scale = S->sign * S->curve.inv_span;
+}
+
 void hyst_reset(hyst_t *S)
 {
     S->xltp[0] = S->curve.lo;
     S->yltp[0] = S->curve.y_lo;
     S->n_ltp = 1u;
     S->n_rtp = 0u;
-    S->x_prev = S->curve.lo;
-    S->y_prev = S->curve.y_lo;
     S->status = HYST_OK;
     S->events = 0u;
+    settle(S, S->curve.lo);
+    S->y_prev = S->curve.y_lo;
 }
 
 /* Count of xltp[0..n) below x (ascending array): LTPs that survive a fall to x. */
@@ -106,33 +135,32 @@ static int admit_slow(hyst_t *S, hyst_real_t *x)
     return 1;
 }
 
-hyst_real_t hyst_step(hyst_t *S, hyst_real_t x)
+/* Everything but the fast path: bad samples, reversals, wipe-out. */
+static hyst_real_t step_slow(hyst_t *S, hyst_real_t x)
 {
+    const hyst_real_t x_prev = S->window[S->moving_end];
     size_t nl, nr;
     hyst_real_t y;
 
-    HYST_TIMING_BEGIN();
     S->status = HYST_OK;
     if (!(x >= S->curve.lo && x <= S->curve.hi) && !admit_slow(S, &x)) {
-        HYST_TIMING_END();
         return S->y_prev;
     }
-    if (x == S->x_prev) { /* rule: repeated samples create no TP */
-        HYST_TIMING_END();
+    if (x == x_prev) { /* repeated samples create no TP */
         return S->y_prev;
     }
     nl = S->n_ltp;
     nr = S->n_rtp;
     if (nl > nr) {
         /* rising branch from LTP nl-1; RTP nr-1 (if any) is the one below */
-        if (x < S->x_prev) {
+        if (x < x_prev) {
             /* reversal: (x_prev, y_prev) becomes RTP nr, falling from it */
             if (x <= S->xltp[nl - 1u]) { /* the new RTP and LTP nl-1 wiped at once */
                 nl = ltp_below(S->xltp, nl - 1u, x);
                 nr = nl;
                 nl += (nl == 0u); /* fell to lo: back at A0 */
             } else { /* nr < nl <= capacity: the RTP array has room */
-                S->xrtp[nr] = S->x_prev;
+                S->xrtp[nr] = x_prev;
                 S->yrtp[nr] = S->y_prev;
                 ++nr;
             }
@@ -142,7 +170,7 @@ hyst_real_t hyst_step(hyst_t *S, hyst_real_t x)
         }
     } else {
         /* falling branch from RTP nr-1; LTP nl-1 is the one below */
-        if (x > S->x_prev) {
+        if (x > x_prev) {
             if (x >= S->xrtp[nr - 1u]) { /* the new LTP and RTP nr-1 wiped at once */
                 nr = rtp_above(S->xrtp, nr - 1u, x);
                 nl = nr + 1u;
@@ -155,7 +183,7 @@ hyst_real_t hyst_step(hyst_t *S, hyst_real_t x)
                     S->status = HYST_WARN_FULL;
                     S->events |= HYST_EVENT_FULL;
                 }
-                S->xltp[nl] = S->x_prev;
+                S->xltp[nl] = x_prev;
                 S->yltp[nl] = S->y_prev;
                 ++nl;
             }
@@ -167,15 +195,35 @@ hyst_real_t hyst_step(hyst_t *S, hyst_real_t x)
     }
     S->n_ltp = nl;
     S->n_rtp = nr;
-    if (nl > nr) {
-        y = S->yltp[nl - 1u] + hyst_curve_g(&S->curve, x - S->xltp[nl - 1u]);
-    } else {
-        y = S->yrtp[nr - 1u] - hyst_curve_g(&S->curve, S->xrtp[nr - 1u] - x);
-    }
-    S->x_prev = x;
+    settle(S, x);
+    y = branch_y(S, x);
     S->y_prev = y;
+    return y;
+}
+
+/* The per-sample computation, inlined into hyst_step() and hyst_process(). */
+HYST_INLINE hyst_real_t step(hyst_t *S, hyst_real_t x)
+{
+    hyst_real_t y;
+    HYST_TIMING_BEGIN();
+    /* Fast path: the input moves on and reaches no stored TP. NaN fails the
+     * comparisons, and the window lies inside [lo, hi]: no other check needed. */
+    if (!(x > S->window[0] && x < S->window[1])) {
+        y = step_slow(S, x);
+        HYST_TIMING_END();
+        return y;
+    }
+    y = branch_y(S, x);
+    S->window[S->moving_end] = x;
+    S->y_prev = y;
+    S->status = HYST_OK;
     HYST_TIMING_END();
     return y;
+}
+
+hyst_real_t hyst_step(hyst_t *S, hyst_real_t x)
+{
+    return step(S, x);
 }
 
 hyst_status_t hyst_process(hyst_t *S, const hyst_real_t *x, hyst_real_t *y,
@@ -188,7 +236,7 @@ hyst_status_t hyst_process(hyst_t *S, const hyst_real_t *x, hyst_real_t *y,
         return HYST_ERR_NULL;
     }
     for (i = 0u; i < n; ++i) {
-        y[i] = hyst_step(S, x[i]);
+        y[i] = step(S, x[i]);
         if (S->status < 0) {
             failed = 1;
         } else if (S->status > worst) {

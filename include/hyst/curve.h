@@ -90,10 +90,13 @@ typedef struct hyst_curve {
     hyst_real_t lo, hi;    /**< domain of the curve */
     hyst_real_t y_lo;      /**< curve value at lo */
     hyst_real_t y_hi;      /**< curve value at hi */
-    hyst_real_t inv_span;  /**< POLY: 1 / (hi - lo) */
-    /** polynomial kinds: g(d) = u (a[0] u^(n-1) + ... + a[n-1]), u = d / span */
+    /** argument scale of hyst_curve_g_unit(): 1 / (hi - lo) for POLY, 1 for
+     *  the other kinds (their g takes d itself) */
+    hyst_real_t inv_span;
+    /** polynomial kinds: f0(lo + s u) - f0(lo) = u (a[0] u^(n-1) + ... + a[n-1]),
+     *  s = input span of f0 */
     hyst_real_t a[HYST_MAX_DEGREE];
-    hyst_real_t span;       /**< POLY_INV: input span of f0 (u -> d) */
+    hyst_real_t span;       /**< POLY_INV: input span s of f0 (u -> d) */
     hyst_real_t knot_scale; /**< POLY_INV: HYST_INV_KNOTS / (f0(hi) - f0(lo)) */
     /** POLY_INV: u where g(u span) = k / knot_scale, k = 0..HYST_INV_KNOTS */
     hyst_real_t knot_u[HYST_INV_KNOTS + 1];
@@ -204,21 +207,62 @@ int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
 hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x);
 
 /**
- * @brief g(d) of the kinds other than HYST_CURVE_POLY (out of line).
+ * @brief g of the kinds other than HYST_CURVE_POLY (out of line).
+ *
+ * These kinds have inv_span = 1: their argument is d itself, unscaled, so a
+ * piecewise-linear curve stays exact at its breakpoints.
  * @param[in] curve prepared curve.
  * @param[in] d     distance from the turning point, 0 <= d <= hi - lo.
  * @return g(d).
  */
-hyst_real_t hyst_curve_g_other(const hyst_curve_t *curve, hyst_real_t d);
+hyst_real_t hyst_curve_g_unit_other(const hyst_curve_t *curve, hyst_real_t d);
+
+/**
+ * @brief The branch shape at u = d * inv_span.
+ *
+ * HYST_CURVE_POLY: u = d / (hi - lo) in [0, 1], Horner's rule unrolled by a
+ * switch on the degree: one multiply-add per coefficient and no loop
+ * overhead on the per-sample path. Other kinds (inv_span = 1, u = d): one
+ * out-of-line call, see hyst_curve_g().
+ */
+HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t u)
+{
+    const hyst_real_t *a = curve->a; /* a[0] multiplies u^n */
+    hyst_real_t acc;
+    if (curve->kind != HYST_CURVE_POLY) {
+        return hyst_curve_g_unit_other(curve, u);
+    }
+#define HYST_H_(acc_, k_) ((acc_) * u + a[k_])
+    switch (curve->degree) { /* independent cases: no register merges */
+    case 1: acc = a[0]; break;
+    case 2: acc = HYST_H_(a[0], 1); break;
+    case 3: acc = HYST_H_(HYST_H_(a[0], 1), 2); break;
+    case 4: acc = HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3); break;
+    case 5: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4); break;
+    case 6: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4), 5); break;
+    case 7: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4), 5), 6); break;
+    case 8: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4), 5), 6), 7); break;
+    default: { /* 9 and above: Horner's loop */
+        unsigned k;
+        acc = a[0];
+        for (k = 1u; k < curve->degree; ++k) {
+            acc = HYST_H_(acc, k);
+        }
+        break;
+    }
+    }
+#undef HYST_H_
+    return acc * u;
+}
 
 /**
  * @brief The branch shape g(d) = f(lo + d) - f(lo) of a prepared curve f.
  *
  * Polynomial: one Horner evaluation, inline. Piecewise linear (either
  * direction): one binary search over the points, O(log n_points), one
- * division. Inverted polynomial: at most HYST_INV_MAX_ITER Newton steps.
- * Arguments slightly outside [0, hi - lo] (rounding) are clamped by the
- * out-of-line kinds.
+ * division. Inverted polynomial: at most HYST_INV_MAX_ITER evaluations of
+ * f0 and f0' plus one division each. Arguments slightly outside
+ * [0, hi - lo] (rounding) are clamped by the out-of-line kinds.
  *
  * @param[in] curve prepared by a hyst_curve_* constructor.
  * @param[in] d     distance from the turning point, 0 <= d <= hi - lo.
@@ -226,17 +270,7 @@ hyst_real_t hyst_curve_g_other(const hyst_curve_t *curve, hyst_real_t d);
  */
 static inline hyst_real_t hyst_curve_g(const hyst_curve_t *curve, hyst_real_t d)
 {
-    if (curve->kind == HYST_CURVE_POLY) {
-        const hyst_real_t u = d * curve->inv_span;
-        const hyst_real_t *a = curve->a;
-        hyst_real_t acc = a[0];
-        unsigned i;
-        for (i = 1u; i < curve->degree; ++i) {
-            acc = acc * u + a[i];
-        }
-        return acc * u;
-    }
-    return hyst_curve_g_other(curve, d);
+    return hyst_curve_g_unit(curve, d * curve->inv_span);
 }
 
 #ifdef __cplusplus

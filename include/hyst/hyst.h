@@ -7,6 +7,7 @@
  *  - hyst/status.h: status codes and event flags;
  *  - hyst/curve.h:  the major ascending curve f0;
  *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
+ *  - hyst/ident.h:  identification of f0 from measured data.
  *  - hyst/inverse.h: the inverse TCM, a feedforward compensator;
  *  - hyst/pi.h:     the Prandtl-Ishlinskii model and its inverse.
  */
@@ -21,6 +22,7 @@
 #include "hyst/status.h"
 #include "hyst/curve.h"
 #include "hyst/tcm.h"
+#include "hyst/ident.h"
 #include "hyst/inverse.h"
 #include "hyst/pi.h"
 

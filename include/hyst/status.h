@@ -23,11 +23,12 @@ typedef enum hyst_status {
     HYST_ERR_NONFINITE = -7,     /**< a sample is NaN or infinite: ignored */
     HYST_ERR_ARG = -8,           /**< another argument is invalid (see the call) */
     HYST_ERR_NOSPACE = -9,       /**< a caller buffer is too small */
-    HYST_ERR_BREAKPOINTS = -10,  /**< PWL breakpoints or PI thresholds not finite,
+    HYST_ERR_SINGULAR = -10,     /**< too few distinct inputs for the fit (rank deficient) */
+    HYST_ERR_BREAKPOINTS = -11,  /**< PWL breakpoints or PI thresholds not finite,
                                       not strictly increasing (PI: r1 != 0) */
-    HYST_ERR_WEIGHTS = -11,      /**< PI weights not finite, or a partial sum
+    HYST_ERR_WEIGHTS = -12,      /**< PI weights not finite, or a partial sum
                                       w1 + ... + wi not positive */
-    HYST_ERR_NOT_INVERTIBLE = -12 /**< curve not strictly increasing: no inverse */
+    HYST_ERR_NOT_INVERTIBLE = -13 /**< curve not strictly increasing: no inverse */
 } hyst_status_t;
 
 /** @name Sticky event flags (hyst_events()): set by samples, cleared by the caller. */
