@@ -4,9 +4,13 @@
  *
  * A TCM needs one function of its curve: the branch shape
  * g(d) = f0(lo + d) - f0(lo), d in [0, hi - lo] (METHOD.md section 3).
- * hyst_curve_t holds it in a form that costs one Horner evaluation per sample:
- * the polynomial is shifted to lo and scaled to u = d / (hi - lo) in [0, 1]
- * once, at set-up, in hyst_wide_t precision.
+ * hyst_curve_t holds it ready for per-sample use, in one of four kinds:
+ *  - polynomial: shifted to lo and scaled to u = d / (hi - lo) in [0, 1]
+ *    once, at set-up, in hyst_wide_t precision; one Horner evaluation inline;
+ *  - piecewise linear (breakpoints + values, or a PI loading curve, pi.h):
+ *    binary search for the segment, exact at the breakpoints;
+ *  - the inverses of both (hyst_curve_inverse()), for a compensator: the
+ *    same engine on f0^-1 (METHOD.md section 8, inverse.h).
  */
 #ifndef HYST_CURVE_H
 #define HYST_CURVE_H

@@ -30,7 +30,8 @@ extern "C" {
  * @brief Initialises @p S as the inverse (compensator) of the TCM with the
  *        polynomial @p f0.
  *
- * hyst_curve_from_poly(), hyst_curve_inverse(), hyst_init_curve(). g^-1 costs
+ * hyst_curve_from_poly(), hyst_curve_inverse(), hyst_init_curve(), in this
+ * order (a curve error is reported before an instance error). g^-1 costs
  * at most HYST_INV_MAX_ITER Newton steps per sample. For a curve of another
  * kind (piecewise linear, PI loading curve) call hyst_curve_inverse() and
  * hyst_init_curve() directly.
