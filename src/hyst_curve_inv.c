@@ -134,7 +134,7 @@ hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
          * the step before last (two steps beat two bisections); else bisect.
          * Near a flat point of order m Newton only crawls, by (m-1)/m per
          * step, while bisection shrinks the residual by about 2^m. */
-        next = u - f / df;
+        next = df > 0 ? u - f / df : u; /* no division by a zero slope */
         newton = df > 0 && next >= ua && next <= ub &&
                  absr(f) * (hyst_real_t)NEWTON_RATIO <= absr(dx_old) * df;
         if (best_f < 0 || absr(f) < best_f) { /* the answer: the best point */
