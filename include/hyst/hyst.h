@@ -8,7 +8,9 @@
  *  - hyst/curve.h:  the major ascending curve f0;
  *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
  *  - hyst/ident.h:  identification of f0 from measured data.
- *  - hyst/snapshot.h: save/restore of an instance's memory (CRC-checked).
+ *  - hyst/snapshot.h: save/restore of an instance's memory (CRC-checked);
+ *  - hyst/inverse.h: the inverse TCM, a feedforward compensator;
+ *  - hyst/pi.h:     the Prandtl-Ishlinskii model and its inverse.
  */
 #ifndef HYST_HYST_H
 #define HYST_HYST_H
@@ -23,5 +25,7 @@
 #include "hyst/tcm.h"
 #include "hyst/ident.h"
 #include "hyst/snapshot.h"
+#include "hyst/inverse.h"
+#include "hyst/pi.h"
 
 #endif /* HYST_HYST_H */
