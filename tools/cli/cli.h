@@ -26,7 +26,7 @@ int cli_fail(const char *cmd, const char *fmt, ...)
 
 /* ---- options: --name VALUE, --name=VALUE, -- ends them, - is a file ---- */
 
-enum { CLI_END = 0, CLI_OPT = 1, CLI_POS = 2 };
+enum { CLI_END = 0, CLI_OPT = 1, CLI_POS = 2, CLI_HELP = 3 };
 
 typedef struct cli_args {
     const char *cmd;      /* subcommand name, for messages */
@@ -110,8 +110,10 @@ typedef struct cli_samples {
 
 void cli_samples_init(cli_samples_t *s);
 
-/* FILE or --xcol: 1 if the current argument was one, 0 if not, -1 after a message. */
-int cli_samples_arg(cli_args_t *a, int kind, const char *pos, cli_samples_t *s);
+/* Next option of a sample command, handling the common ones itself (FILE,
+ * --xcol, --help/-h: prints @p help): CLI_OPT (the caller's, name in a->opt),
+ * CLI_END, CLI_HELP (exit 0) or -1 after a message (exit 1). */
+int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help);
 
 /* What a sample command does per sample. */
 typedef struct cli_map {

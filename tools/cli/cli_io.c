@@ -370,23 +370,32 @@ void cli_samples_init(cli_samples_t *s)
     s->xcol = 1ul;
 }
 
-int cli_samples_arg(cli_args_t *a, int kind, const char *pos, cli_samples_t *s)
+int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help)
 {
-    const char *v;
-    if (kind == CLI_POS) {
-        if (s->file != NULL) {
-            return -cli_fail(a->cmd, "more than one input file ('%s', '%s')", s->file, pos);
+    const char *pos = NULL, *v;
+    int kind;
+    while ((kind = cli_args_next(a, &pos)) != CLI_END) {
+        if (kind < 0) {
+            return -1;
         }
-        s->file = pos;
-        return 1;
+        if (kind == CLI_POS) {
+            if (s->file != NULL) {
+                return -cli_fail(a->cmd, "more than one input file ('%s', '%s')", s->file, pos);
+            }
+            s->file = pos;
+        } else if (cli_is(a, "--help") || cli_is(a, "-h")) {
+            (void)fputs(help, stdout);
+            return CLI_HELP;
+        } else if (cli_is(a, "--xcol")) {
+            if ((v = cli_value(a)) == NULL ||
+                !cli_opt_ulong(a, v, 1ul, CLI_MAX_FIELD, &s->xcol)) {
+                return -1;
+            }
+        } else {
+            return CLI_OPT;
+        }
     }
-    if (!cli_is(a, "--xcol")) {
-        return 0;
-    }
-    if ((v = cli_value(a)) == NULL || !cli_opt_ulong(a, v, 1ul, CLI_MAX_FIELD, &s->xcol)) {
-        return -1;
-    }
-    return 1;
+    return CLI_END;
 }
 
 int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)

@@ -90,25 +90,16 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     cli_samples_t s;
     cli_map_t m;
     tcm_run_t r;
-    const char *pos = NULL, *v;
+    const char *v;
     double coeffs[HYST_MAX_DEGREE + 1], range[2];
     size_t ncoef = 0u, nrange = 0u;
-    int tp = 0, kind, got, rc;
+    int tp = 0, kind, rc;
     hyst_poly_t f0;
 
     cli_args_init(&a, cmd, argc, argv);
     cli_samples_init(&s);
-    while ((kind = cli_args_next(&a, &pos)) != CLI_END) {
-        if (kind < 0 || (got = cli_samples_arg(&a, kind, pos, &s)) < 0) {
-            return 1;
-        }
-        if (got) {
-            continue;
-        }
-        if (cli_is(&a, "--help") || cli_is(&a, "-h")) {
-            (void)fputs(help, stdout);
-            return 0;
-        } else if (cli_is(&a, "--tp")) {
+    while ((kind = cli_samples_next(&a, &s, help)) == CLI_OPT) {
+        if (cli_is(&a, "--tp")) {
             tp = 1;
         } else if (cli_is(&a, "--poly")) {
             if ((v = cli_value(&a)) == NULL ||
@@ -122,6 +113,9 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
         } else {
             return cli_unknown(&a);
         }
+    }
+    if (kind != CLI_END) {
+        return kind == CLI_HELP ? 0 : 1;
     }
     if (make_poly(cmd, coeffs, ncoef, range, nrange, &f0) != 0) {
         return 1;

@@ -76,23 +76,14 @@ int cmd_pi(int argc, char **argv)
     cli_args_t a;
     cli_samples_t s;
     cli_map_t m;
-    const char *pos = NULL, *v;
+    const char *v;
     hyst_status_t st;
-    int kind, got;
+    int kind;
 
     cli_args_init(&a, "pi", argc, argv);
     cli_samples_init(&s);
-    while ((kind = cli_args_next(&a, &pos)) != CLI_END) {
-        if (kind < 0 || (got = cli_samples_arg(&a, kind, pos, &s)) < 0) {
-            return 1;
-        }
-        if (got) {
-            continue;
-        }
-        if (cli_is(&a, "--help") || cli_is(&a, "-h")) {
-            (void)fputs(help, stdout);
-            return 0;
-        } else if (cli_is(&a, "--weights")) {
+    while ((kind = cli_samples_next(&a, &s, help)) == CLI_OPT) {
+        if (cli_is(&a, "--weights")) {
             if ((v = cli_value(&a)) == NULL || !cli_opt_list(&a, v, w, 1u, PI_MAX_OPERATORS, &nw)) {
                 return 1;
             }
@@ -103,6 +94,9 @@ int cmd_pi(int argc, char **argv)
         } else {
             return cli_unknown(&a);
         }
+    }
+    if (kind != CLI_END) {
+        return kind == CLI_HELP ? 0 : 1;
     }
     if (nw == 0u) {
         return cli_fail(a.cmd, "--weights is required (see 'hyst pi --help')");
