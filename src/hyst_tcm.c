@@ -57,6 +57,26 @@ void hyst_reset(hyst_t *S)
     S->events = 0u;
 }
 
+#ifdef HYST_USE_LINEAR_SEARCH
+/* Benchmark variant: scans down from the newest TP, so a sample costs one
+ * comparison per TP it wipes out (O(capacity) worst case). Same results as
+ * the binary search below, since the arrays are sorted. */
+static size_t ltp_below(const hyst_real_t *xltp, size_t n, hyst_real_t x)
+{
+    while (n > 0u && !(xltp[n - 1u] < x)) {
+        --n;
+    }
+    return n;
+}
+
+static size_t rtp_above(const hyst_real_t *xrtp, size_t n, hyst_real_t x)
+{
+    while (n > 0u && !(xrtp[n - 1u] > x)) {
+        --n;
+    }
+    return n;
+}
+#else
 /* Count of xltp[0..n) below x (ascending array): LTPs that survive a fall to x. */
 static size_t ltp_below(const hyst_real_t *xltp, size_t n, hyst_real_t x)
 {
@@ -88,6 +108,7 @@ static size_t rtp_above(const hyst_real_t *xrtp, size_t n, hyst_real_t x)
     }
     return left;
 }
+#endif /* HYST_USE_LINEAR_SEARCH */
 
 /* Out-of-line so the common path stays short: NaN/Inf or outside [lo, hi].
  * Returns 0 if the sample must be ignored, else 1 with *x clamped. */
