@@ -136,6 +136,10 @@ def main():
 
     tcm_elf = os.path.join(args.m4, "bench", "bench_tcm")
     lin_elf = os.path.join(args.m4, "bench", "bench_tcm_linear")
+    nm = os.environ.get("HYST_NM", "arm-none-eabi-nm")
+    for sym in ("null_tcm", "null_pi"):  # calibration: one "bx lr"
+        if qemu_count.symbol_size(tcm_elf, sym, nm) != 2:
+            problems.append("calibration callee %s is not a single bx lr" % sym)
     tcm = qemu_count.measure(tcm_elf, qemu, profile=SHOWCASE)
     lin = qemu_count.measure(lin_elf, qemu)
     lin2 = qemu_count.measure(lin_elf, qemu)

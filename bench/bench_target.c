@@ -64,26 +64,30 @@ static unsigned n_records;
 static int failures;
 static volatile hyst_real_t sink;
 
-typedef hyst_real_t (*tcm_fn)(hyst_t *, hyst_real_t);
+/* BENCH_TIMED(name, type) defines, for a model of instance type `type`:
+ *  - null_<name>(): the calibration callee, whose whole body is the return
+ *    (one instruction);
+ *  - timed_<name>(fn, S, x): one pulse around one call of fn. The pulse also
+ *    covers the wrapper's own instructions between the two pin writes; the
+ *    calibration pulse (same wrapper, null callee) measures those, and the
+ *    analysis subtracts them. */
+#define BENCH_TIMED(name, type)                                               \
+    BENCH_NOIPA static hyst_real_t null_##name(type *S, hyst_real_t x)       \
+    {                                                                         \
+        (void)S;                                                              \
+        return x;                                                             \
+    }                                                                         \
+    BENCH_NOIPA static void timed_##name(hyst_real_t (*fn)(type *, hyst_real_t), \
+                                         type *S, hyst_real_t x)              \
+    {                                                                         \
+        hyst_real_t y;                                                        \
+        hyst_port_timing_begin();                                             \
+        y = fn(S, x);                                                         \
+        hyst_port_timing_end();                                               \
+        sink = y;                                                             \
+    }
 
-/* Calibration callee: its whole body is the return (one instruction). */
-BENCH_NOIPA static hyst_real_t null_tcm(hyst_t *S, hyst_real_t x)
-{
-    (void)S;
-    return x;
-}
-
-/* One pulse around one call. The pulse also covers the wrapper's own
- * instructions between the two pin writes; the calibration pulse (same
- * wrapper, null callee) measures those, and the analysis subtracts them. */
-BENCH_NOIPA static void timed_tcm(tcm_fn fn, hyst_t *S, hyst_real_t x)
-{
-    hyst_real_t y;
-    hyst_port_timing_begin();
-    y = fn(S, x);
-    hyst_port_timing_end();
-    sink = y;
-}
+BENCH_TIMED(tcm, hyst_t)
 
 static void record(const char *kind, unsigned m, unsigned k, unsigned p)
 {
@@ -306,22 +310,7 @@ static void bench_tcm(void)
 }
 
 #if BENCH_PI
-typedef hyst_real_t (*pi_fn)(hyst_pi_t *, hyst_real_t);
-
-BENCH_NOIPA static hyst_real_t null_pi(hyst_pi_t *P, hyst_real_t x)
-{
-    (void)P;
-    return x;
-}
-
-BENCH_NOIPA static void timed_pi(pi_fn fn, hyst_pi_t *P, hyst_real_t x)
-{
-    hyst_real_t y;
-    hyst_port_timing_begin();
-    y = fn(P, x);
-    hyst_port_timing_end();
-    sink = y;
-}
+BENCH_TIMED(pi, hyst_pi_t)
 
 static void bench_pi(void)
 {

@@ -12,7 +12,7 @@ if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget)
     if(Python3_Interpreter_FOUND)
         add_test(NAME tcm_budget
                  COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/test_budget.py
-                         --elf $<TARGET_FILE:bench_budget> --qemu ${HYST_QEMU}
+                         --elf $<TARGET_FILE:bench_budget> --qemu ${HYST_QEMU} --nm ${CMAKE_NM}
                          --typical ${HYST_BUDGET_TYPICAL_INSNS}
                          --worst ${HYST_BUDGET_WORST_INSNS})
         set_tests_properties(tcm_budget PROPERTIES TIMEOUT 600 LABELS "budget")

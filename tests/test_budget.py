@@ -31,11 +31,17 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--elf", required=True)
     ap.add_argument("--qemu", default="qemu-system-arm")
+    ap.add_argument("--nm", default="arm-none-eabi-nm")
     ap.add_argument("--typical", type=int, required=True)
     ap.add_argument("--worst", type=int, required=True)
     args = ap.parse_args()
 
     fails = []
+    # Calibration assumes a one-instruction callee (Thumb "bx lr", 2 bytes).
+    for sym in ("null_tcm", "null_pi"):
+        size = qemu_count.symbol_size(args.elf, sym, args.nm)
+        if size != 2:
+            fails.append("calibration callee %s is %s bytes, not one bx lr" % (sym, size))
     run = qemu_count.measure(args.elf, args.qemu)
     if run.exit_code != 0 or run.meta.get("failures") != "0":
         fails.append("firmware checks: exit %s, failures %s" % (run.exit_code, run.meta.get("failures")))

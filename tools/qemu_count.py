@@ -172,6 +172,16 @@ def measure(elf, qemu="qemu-system-arm", timeout=900, profile=()):
     return run
 
 
+def symbol_size(elf, name, nm="arm-none-eabi-nm"):
+    """Size in bytes of a symbol of elf (nm -S), or None if absent."""
+    out = subprocess.run([nm, "-S", elf], capture_output=True, text=True, check=True).stdout
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 4 and parts[3] == name:
+            return int(parts[1], 16)
+    return None
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("elf")
