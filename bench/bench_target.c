@@ -50,7 +50,7 @@
 #define CAP HYST_CAPACITY(NU)
 #define CODE_HI ((hyst_real_t)(NU - 1u))
 #define PI_SAMPLES 256u
-#define MAX_RECORDS 24000u
+#define MAX_RECORDS 32000u
 
 HYST_DEFINE(tcm, NU);
 
@@ -205,8 +205,10 @@ static void measure_falling(unsigned j, int last)
         time_plain("rev_rise", n, xj + HYST_REAL_C(0.5));
     }
     if (n >= 1u && in_sweep(n)) {
-        time_wipe_fall("wipe_fall", n, 0u, ltp_target(0u));
-        time_wipe_rise("wipe_revrise", n, 0u, rtp_target(0u));
+        for (k = 0u; k <= 1u; ++k) { /* to lo or hi, and just short of it */
+            time_wipe_fall("wipe_fall", n, k, ltp_target(k));
+            time_wipe_rise("wipe_revrise", n, k, rtp_target(k));
+        }
     }
     if (BENCH_EXHAUSTIVE && last) {
         for (k = 0u; k <= n; ++k) {
@@ -229,11 +231,13 @@ static void measure_rising(unsigned i, int last)
         time_plain("rev_fall", n_fall, xp - HYST_REAL_C(0.5));
         time_plain("repeat", n_fall, xp);
     }
-    if (i >= 3u && in_sweep(n_rise)) {
-        time_wipe_rise("wipe_rise", n_rise, 0u, rtp_target(0u));
-    }
-    if (i >= 2u && in_sweep(n_fall)) {
-        time_wipe_fall("wipe_revfall", n_fall, 0u, ltp_target(0u));
+    for (k = 0u; k <= 1u; ++k) { /* to lo or hi, and just short of it */
+        if (i >= 3u && in_sweep(n_rise)) {
+            time_wipe_rise("wipe_rise", n_rise, k, rtp_target(k));
+        }
+        if (i >= 2u && in_sweep(n_fall)) {
+            time_wipe_fall("wipe_revfall", n_fall, k, ltp_target(k));
+        }
     }
     if (BENCH_EXHAUSTIVE && last) {
         for (k = 0u; k <= n_fall; ++k) {
