@@ -175,7 +175,9 @@ def main():
     pi = [r["insns"] for r in b if r["kind"] == "pi10"]
     lin_wipes = [r for r in lv if wipe_kind(r["kind"])]
     lin_worst = max(lin_wipes, key=lambda r: r["insns"])
-    deep = [r for r in b if r["kind"] in WIPES]  # the sweep: every m, k = 0 and 1
+    # Fit on the m sweep's interior targets (k = 1): a target at lo or hi
+    # (k = 0) may skip the search in an engine that saturates there.
+    deep = [r for r in b if r["kind"] in WIPES and r["k"] == 1]
     a, c = fit_line([r["p"] for r in deep], [r["insns"] for r in deep])
     la, lc = fit_line([r["p"] for r in lin_wipes], [r["insns"] for r in lin_wipes])
     cal = tcm.pulses[0].raw
