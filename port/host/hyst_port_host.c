@@ -39,6 +39,9 @@ void hyst_port_puts(const char *s)
 
 void hyst_port_exit(int code) { exit(code); }
 
+/* Each pair of marks adds two clock reads (tens of ns) to the region: time
+ * blocks of samples (hyst_process), not single ones, and report the best of
+ * several runs; wall time on a shared host is never a test criterion. */
 void hyst_port_timing_begin(void)
 {
     (void)clock_gettime(CLOCK_MONOTONIC, &t_begin);

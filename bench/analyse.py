@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""Runs the benchmark images and turns their counts into the bench/run report.
+
+  analyse.py --m4 BUILD_M4 --host BUILD_HOST --out DIR [--plot-python PY]
+
+Writes DIR/tcm_cost.csv (variant,kind,m,k,p,insns: one row per timed
+sample), DIR/worst_path.txt (annotated disassembly of the profiled samples),
+DIR/summary.txt, and DIR/cost_vs_p.png when a Python with matplotlib is
+given. Prints the summary, one "key value" per line. Exits non-zero if a
+firmware image failed its own checks or the counts are inconsistent.
+"""
+import argparse
+import csv
+import glob
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "tools"))
+import qemu_count  # noqa: E402
+
+PAPER = {"12": 16 * 1024, "16": 256 * 1024, "18": int(1.5 * 1024 * 1024), "24": 96 * 1024 * 1024}
+SHOWCASE = range(1, 7)  # bench_target.c: pulses 1..6
+TYPICAL = ("typ_fall", "typ_rise", "show_typ_fall", "show_typ_rise")
+REVERSAL = ("rev_fall", "rev_rise")
+WIPES = ("wipe_fall", "wipe_rise", "wipe_revfall", "wipe_revrise")
+
+
+def wipe_kind(kind):
+    base = kind.split("_", 1)[1] if kind.startswith(("exh_", "show_")) else kind
+    return base in WIPES
+
+
+def rows_of(run, variant):
+    rows = []
+    for p in run.pulses:
+        if p.net is None:
+            continue
+        kind, m, k, probes = p.label[0], int(p.label[1]), int(p.label[2]), int(p.label[3])
+        rows.append(dict(variant=variant, kind=kind, m=m, k=k, p=probes, insns=p.net))
+    return rows
+
+
+def fit_line(xs, ys):
+    n = float(len(xs))
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxx = sum((x - mx) ** 2 for x in xs)
+    a = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx else 0.0
+    return a, my - a * mx
+
+
+def annotate(elf, run, pulses, objdump):
+    """Disassembly of every instruction the given pulses executed, with counts."""
+    dis = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], capture_output=True,
+                         text=True, check=True).stdout.splitlines()
+    out = []
+    for idx in pulses:
+        prof = {pc: c for (i, pc), c in run.profile.items() if i == idx and c}
+        pulse = run.pulses[idx]
+        out.append("=== pulse %d: %s  raw %d, in the callee %s (count = executions)"
+                   % (idx, " ".join(pulse.label), pulse.raw, pulse.net))
+        func = None
+        per_func = {}
+        for line in dis:
+            m = re.match(r"^([0-9a-f]{8}) <(.*)>:", line)
+            if m:
+                func = m.group(2)
+                continue
+            m = re.match(r"^\s+([0-9a-f]+):\s+(.*)", line)
+            if m and int(m.group(1), 16) in prof:
+                c = prof[int(m.group(1), 16)]
+                per_func[func] = per_func.get(func, 0) + c
+                out.append("%6d  %-24s %s" % (c, func, line.strip()))
+        out.append("  per function: " + ", ".join("%s %d" % kv for kv in sorted(per_func.items())))
+        out.append("")
+    return "\n".join(out)
+
+
+def stack_of(build_m4, opt, root):
+    """Deepest static stack from `root` over the -fcallgraph-info graphs."""
+    with open(os.path.join(build_m4, "bench", "objects_%s.txt" % opt)) as f:
+        objs = [l.strip() for l in f if l.strip()]
+    frame, edges = {}, {}
+    for obj in objs:
+        ci = re.sub(r"\.obj$|\.o$", "", obj) + ".ci"
+        if not os.path.exists(ci):
+            raise RuntimeError("no call graph %s" % ci)
+        text = open(ci).read()
+        for m in re.finditer(r'node: \{ title: "([^"]+)" label: "[^"]*\\n(\d+) bytes \(([^)]*)\)', text):
+            if "dynamic" in m.group(3) and "bounded" not in m.group(3):
+                raise RuntimeError("%s has an unbounded frame" % m.group(1))
+            frame[m.group(1)] = int(m.group(2))
+        for m in re.finditer(r'edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"', text):
+            edges.setdefault(m.group(1), set()).add(m.group(2))
+
+    def depth(fn, seen):
+        if fn in seen:
+            raise RuntimeError("recursion through %s" % fn)
+        if fn not in frame:
+            raise RuntimeError("%s calls %s, outside the core" % (root, fn))
+        return frame[fn] + max([depth(c, seen | {fn}) for c in edges.get(fn, ())] or [0])
+
+    return depth(root, frozenset())
+
+
+def flash_of(build_m4, opt, size_tool):
+    with open(os.path.join(build_m4, "bench", "objects_%s.txt" % opt)) as f:
+        objs = [l.strip() for l in f if l.strip()]
+    out = subprocess.run([size_tool] + objs, capture_output=True, text=True, check=True).stdout
+    total = 0
+    per = {}
+    for line in out.splitlines()[1:]:
+        parts = line.split()
+        text, data = int(parts[0]), int(parts[1])
+        per[os.path.basename(parts[-1]).split(".")[0]] = text + data
+        total += text + data
+    return total, per
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--m4", required=True)
+    ap.add_argument("--host", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--plot-python", default="")
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    qemu = os.environ.get("HYST_QEMU", "qemu-system-arm")
+    summary = []
+    problems = []
+
+    def put(key, value):
+        summary.append((key, value))
+
+    tcm_elf = os.path.join(args.m4, "bench", "bench_tcm")
+    lin_elf = os.path.join(args.m4, "bench", "bench_tcm_linear")
+    nm = os.environ.get("HYST_NM", "arm-none-eabi-nm")
+    for sym in ("null_tcm", "null_pi"):  # calibration: one "bx lr"
+        if qemu_count.symbol_size(tcm_elf, sym, nm) != 2:
+            problems.append("calibration callee %s is not a single bx lr" % sym)
+    tcm = qemu_count.measure(tcm_elf, qemu, profile=SHOWCASE)
+    lin = qemu_count.measure(lin_elf, qemu)
+    lin2 = qemu_count.measure(lin_elf, qemu)
+    for name, run in (("bench_tcm", tcm), ("bench_tcm_linear", lin)):
+        if run.exit_code != 0 or run.meta.get("failures") != "0":
+            problems.append("%s: exit %s, failures %s" % (name, run.exit_code, run.meta.get("failures")))
+    repeat_ok = [p.raw for p in lin.pulses] == [p.raw for p in lin2.pulses]
+    if not repeat_ok:
+        problems.append("bench_tcm_linear gave different counts on two runs")
+
+    rows = rows_of(tcm, "binary") + rows_of(lin, "linear")
+    with open(os.path.join(args.out, "tcm_cost.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=["variant", "kind", "m", "k", "p", "insns"])
+        w.writeheader()
+        w.writerows(rows)
+
+    b = [r for r in rows if r["variant"] == "binary"]
+    lv = [r for r in rows if r["variant"] == "linear"]
+    # The same sample measured in two places of the image must cost the same.
+    seen = {}
+    for r in b:
+        if wipe_kind(r["kind"]):
+            key = (r["kind"].split("_", 1)[1] if r["kind"].startswith(("exh_", "show_")) else r["kind"],
+                   r["m"], r["k"])
+            if key in seen and seen[key] != r["insns"]:
+                problems.append("%s measured %d and %d" % (key, seen[key], r["insns"]))
+            seen[key] = r["insns"]
+
+    typ = max(r["insns"] for r in b if r["kind"] in TYPICAL)
+    wipes = [r for r in b if wipe_kind(r["kind"])]
+    worst = max(wipes, key=lambda r: (r["insns"], r["p"]))
+    clamped = [r for r in b if r["kind"].startswith("clamp")]
+    pi = [r["insns"] for r in b if r["kind"] == "pi10"]
+    lin_wipes = [r for r in lv if wipe_kind(r["kind"])]
+    lin_worst = max(lin_wipes, key=lambda r: r["insns"])
+    # Fit on the m sweep's interior targets (k = 1): a target at lo or hi
+    # (k = 0) may skip the search in an engine that saturates there.
+    deep = [r for r in b if r["kind"] in WIPES and r["k"] == 1]
+    a, c = fit_line([r["p"] for r in deep], [r["insns"] for r in deep])
+    la, lc = fit_line([r["p"] for r in lin_wipes], [r["insns"] for r in lin_wipes])
+    cal = tcm.pulses[0].raw
+
+    put("tcm_typical_insns", typ)
+    put("tcm_typical_fall_insns", max(r["insns"] for r in b if r["kind"] in ("typ_fall", "show_typ_fall")))
+    put("tcm_typical_rise_insns", max(r["insns"] for r in b if r["kind"] in ("typ_rise", "show_typ_rise")))
+    put("tcm_reversal_insns", max(r["insns"] for r in b if r["kind"] in REVERSAL))
+    put("tcm_repeat_insns", max(r["insns"] for r in b if r["kind"] == "repeat"))
+    put("tcm_worst_insns_nu4096", worst["insns"])
+    put("tcm_worst_p_nu4096", worst["p"])
+    put("tcm_worst_m_nu4096", worst["m"])
+    put("tcm_worst_kind", worst["kind"].split("_", 1)[1] if worst["kind"].startswith(("exh_", "show_")) else worst["kind"])
+    put("tcm_max_m_nu4096", max(r["m"] for r in wipes))
+    put("tcm_worst_clamped_insns_nu4096", max(r["insns"] for r in clamped))
+    put("tcm_nan_insns", max(r["insns"] for r in b if r["kind"] == "nan"))
+    put("tcm_wipe_samples_measured", len(wipes))
+    put("tcm_fit_insns_per_p", "%.2f" % a)
+    put("tcm_fit_insns_const", "%.2f" % c)
+    put("pi10_insns", max(pi))
+    put("pi10_min_insns", min(pi))
+    put("tcm_typical_over_pi10", "%.3f" % (typ / float(max(pi))))
+    put("tcm_worst_over_pi10", "%.3f" % (worst["insns"] / float(max(pi))))
+    put("tcm_linear_worst_insns_nu4096", lin_worst["insns"])
+    put("tcm_linear_worst_m_nu4096", lin_worst["m"])
+    put("tcm_linear_fit_insns_per_p", "%.2f" % la)
+    put("timing_hook_overhead_insns", cal - 1)
+    put("deterministic_repeat_ok", 1 if repeat_ok else 0)
+
+    size_tool = os.environ.get("HYST_SIZE", "arm-none-eabi-size")
+    for opt in ("Os", "O2"):
+        total, per = flash_of(args.m4, opt, size_tool)
+        put("core_flash_bytes_%s" % opt, total)
+        put("core_flash_bytes_%s_tcm" % opt, per.get("hyst_tcm", 0))
+    put("step_stack_bytes", stack_of(args.m4, "O2", "hyst_step"))
+    put("step_stack_bytes_Os", stack_of(args.m4, "Os", "hyst_step"))
+    put("process_stack_bytes", stack_of(args.m4, "O2", "hyst_process"))
+
+    inst = int(tcm.meta["sizeof_hyst_t"])
+    real = int(tcm.meta["sizeof_real"])
+    put("sizeof_hyst_t", inst)
+    for bits in ("12", "16", "18", "24"):
+        nu = 1 << int(bits)
+        put("ram_%sbit_bytes" % bits, inst + 4 * (nu // 2) * real)
+        put("ram_%sbit_paper_bytes" % bits, PAPER[bits])
+
+    host = subprocess.run([os.path.join(args.host, "bench", "bench_host")],
+                          capture_output=True, text=True)
+    if host.returncode != 0:
+        problems.append("bench_host failed: " + host.stderr.strip())
+    for line in host.stdout.splitlines():
+        parts = line.split()
+        if len(parts) == 2:
+            put(parts[0], parts[1])
+    with open(os.path.join(args.m4, "bench", "pi_source.txt")) as f:
+        put("pi10_source", f.read().strip())
+
+    objdump = os.environ.get("HYST_OBJDUMP", "arm-none-eabi-objdump")
+    with open(os.path.join(args.out, "worst_path.txt"), "w") as f:
+        f.write(annotate(tcm_elf, tcm, SHOWCASE, objdump))
+
+    with open(os.path.join(args.out, "summary.txt"), "w") as f:
+        for k, v in summary:
+            f.write("%s %s\n" % (k, v))
+    for k, v in summary:
+        print("%s %s" % (k, v))
+
+    if args.plot_python:
+        r = subprocess.run([args.plot_python, os.path.join(HERE, "plot.py"),
+                            os.path.join(args.out, "tcm_cost.csv"),
+                            os.path.join(args.out, "cost_vs_p.png"),
+                            "%.6f" % a, "%.6f" % c, str(max(pi)), str(typ)])
+        if r.returncode != 0:
+            problems.append("plot failed")
+    for p in problems:
+        print("analyse: %s" % p, file=sys.stderr)
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,19 @@
+/* The models every benchmark runs: TCM on the paper's Eq. 20 over 12-bit
+ * codes, and the paper's PI model of Table 1. */
+#ifndef HYST_BENCH_MODELS_H
+#define HYST_BENCH_MODELS_H
+
+#include "hyst/hyst.h"
+
+/** Input codes of a 12-bit DAC: Nu = 4096, x in 0 .. 4095. */
+#define BENCH_NU 4096u
+
+/** PI-10 of the paper's Table 1, domain [0, 1]. */
+#define BENCH_PI_N 10u
+extern const hyst_real_t bench_pi10_r[BENCH_PI_N];
+extern const hyst_real_t bench_pi10_w[BENCH_PI_N];
+
+/** Paper Eq. 20 (0..40 V, cubic) stretched over the codes 0 .. BENCH_NU - 1. */
+void bench_f0_codes(hyst_poly_t *f0);
+
+#endif

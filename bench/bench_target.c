@@ -1,0 +1,421 @@
+/*
+ * Per-sample cost of hyst_step() (and of a PI-10 model) on the target, one
+ * timing pulse per measured sample. Runs under QEMU with tools/qemu_count.py,
+ * which counts the instructions executed inside each pulse.
+ *
+ * Inputs are the codes of a 12-bit DAC (Nu = 4096, x in 0..4095, curve =
+ * the paper's Eq. 20 stretched over the codes), so each TP array holds
+ * HYST_CAPACITY(4096) = 2048 entries. The trajectory 0, 4095, 1, 4094, 2, ...
+ * nests one more TP pair per reversal; the states along it carry m = 1 .. 2047
+ * TPs in the array a wipe-out searches. At each state the firmware snapshots
+ * the instance, times one sample of a kind, checks the result, restores.
+ *
+ * Pulse 0 calibrates (see tools/qemu_count.py); pulses 1..6 are the typical
+ * and deepest samples at the largest m (profiled by bench/analyse.py).
+ * After all pulses it prints one line per pulse, in pulse order:
+ *   @pulse <kind> <m> <k> <p>
+ * m = entries in the searched array, k = entries that survive, p = comparisons
+ * the search makes (0 when no search runs); and a few "# key value" lines.
+ *
+ * Build switches: BENCH_SWEEP_ALL (every m, else a sparse set), BENCH_EXHAUSTIVE
+ * (every survivor count k at the largest m), BENCH_PI (PI-10 pulses),
+ * HYST_USE_LINEAR_SEARCH (engine variant, changes the p model).
+ */
+#include "hyst/hyst.h"
+#include "hyst/pi.h"
+#include "hyst_port.h"
+#include "bench_models.h"
+
+#include <stdio.h>
+
+#ifndef BENCH_SWEEP_ALL
+#define BENCH_SWEEP_ALL 1
+#endif
+#ifndef BENCH_EXHAUSTIVE
+#define BENCH_EXHAUSTIVE 1
+#endif
+#ifndef BENCH_PI
+#define BENCH_PI 1
+#endif
+
+/* Keeps GCC from specialising the timed wrappers per callee: the wrapper's
+ * code must be the same for the calibration call and the measured one. */
+#if defined(__GNUC__) && !defined(__clang__)
+#define BENCH_NOIPA __attribute__((noipa))
+#else
+#define BENCH_NOIPA __attribute__((noinline))
+#endif
+
+#define NU BENCH_NU
+#define CAP HYST_CAPACITY(NU)
+#define CODE_HI ((hyst_real_t)(NU - 1u))
+#define PI_SAMPLES 256u
+#define MAX_RECORDS 32000u
+
+HYST_DEFINE(tcm, NU);
+
+typedef struct {
+    const char *kind;
+    unsigned m, k, p;
+} record_t;
+
+static record_t records[MAX_RECORDS];
+static unsigned n_records;
+static int failures;
+static volatile hyst_real_t sink;
+
+/* BENCH_TIMED(name, type) defines, for a model of instance type `type`:
+ *  - null_<name>(): the calibration callee, whose whole body is the return
+ *    (one instruction);
+ *  - timed_<name>(fn, S, x): one pulse around one call of fn. The pulse also
+ *    covers the wrapper's own instructions between the two pin writes; the
+ *    calibration pulse (same wrapper, null callee) measures those, and the
+ *    analysis subtracts them. */
+#define BENCH_TIMED(name, type)                                               \
+    BENCH_NOIPA static hyst_real_t null_##name(type *S, hyst_real_t x)       \
+    {                                                                         \
+        (void)S;                                                              \
+        return x;                                                             \
+    }                                                                         \
+    BENCH_NOIPA static void timed_##name(hyst_real_t (*fn)(type *, hyst_real_t), \
+                                         type *S, hyst_real_t x)              \
+    {                                                                         \
+        hyst_real_t y;                                                        \
+        hyst_port_timing_begin();                                             \
+        y = fn(S, x);                                                         \
+        hyst_port_timing_end();                                               \
+        sink = y;                                                             \
+    }
+
+BENCH_TIMED(tcm, hyst_t)
+
+static void record(const char *kind, unsigned m, unsigned k, unsigned p)
+{
+    if (n_records < MAX_RECORDS) {
+        records[n_records].kind = kind;
+        records[n_records].m = m;
+        records[n_records].k = k;
+        records[n_records].p = p;
+    } else {
+        failures |= 1;
+    }
+    ++n_records;
+}
+
+/* Comparisons ltp_below()/rtp_above() make over n entries of which the
+ * first k satisfy the predicate (the arrays are sorted). */
+static unsigned search_probes(unsigned n, unsigned k)
+{
+#ifdef HYST_USE_LINEAR_SEARCH
+    return (n - k) + (k > 0u ? 1u : 0u);
+#else
+    unsigned left = 0u, p = 0u;
+    while (n > 0u) {
+        const unsigned half = n / 2u;
+        ++p;
+        if (left + half < k) {
+            left += half + 1u;
+            n -= half + 1u;
+        } else {
+            n = half;
+        }
+    }
+    return p;
+#endif
+}
+
+static void expect_counts(size_t ltp, size_t rtp)
+{
+    if (hyst_ltp_count(&tcm) != ltp || hyst_rtp_count(&tcm) != rtp ||
+        hyst_status(&tcm) < 0) {
+        failures |= 2;
+    }
+}
+
+/* A sample on the current branch, or a reversal that only pushes a TP. */
+static void time_plain(const char *kind, unsigned m, hyst_real_t x)
+{
+    const hyst_t snap = tcm;
+    const size_t tps = hyst_tp_count(&tcm);
+    timed_tcm(hyst_step, &tcm, x);
+    if (hyst_tp_count(&tcm) < tps) {
+        failures |= 4; /* it wiped: not the kind it claims to be */
+    }
+    record(kind, m, 0u, 0u);
+    tcm = snap;
+}
+
+/* A falling wipe-out (x <= the LTP below): the first k of the n searched LTPs
+ * survive; the model is back on the falling branch from RTP k-1, or at A0. */
+static void time_wipe_fall(const char *kind, unsigned n, unsigned k, hyst_real_t x)
+{
+    const hyst_t snap = tcm;
+    timed_tcm(hyst_step, &tcm, x);
+    expect_counts(k > 0u ? k - 1u : 0u, k);
+    record(kind, n, k, search_probes(n, k));
+    tcm = snap;
+}
+
+/* A rising wipe-out: k of n searched RTPs survive, rising from LTP k. */
+static void time_wipe_rise(const char *kind, unsigned n, unsigned k, hyst_real_t x)
+{
+    const hyst_t snap = tcm;
+    timed_tcm(hyst_step, &tcm, x);
+    expect_counts(k, k);
+    record(kind, n, k, search_probes(n, k));
+    tcm = snap;
+}
+
+/* LTP codes are 0, 1, 2, ...: x = k - 0.5 leaves k of them (x = 0 none). */
+static hyst_real_t ltp_target(unsigned k)
+{
+    return k == 0u ? HYST_REAL_C(0.0) : (hyst_real_t)k - HYST_REAL_C(0.5);
+}
+
+/* RTP codes are 4095, 4094, ...: x = 4095.5 - k leaves k (x = 4095 none). */
+static hyst_real_t rtp_target(unsigned k)
+{
+    return k == 0u ? CODE_HI : CODE_HI + HYST_REAL_C(0.5) - (hyst_real_t)k;
+}
+
+static int sparse_m(unsigned m)
+{
+    unsigned b;
+    if (m <= 8u || m == CAP - 1u || m == CAP - 2u) {
+        return 1;
+    }
+    for (b = 8u; b <= CAP; b *= 2u) {
+        if (m + 1u == b || m == b || m == b + 1u) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int in_sweep(unsigned m) { return BENCH_SWEEP_ALL || sparse_m(m); }
+
+/* Falling state F_j: LTPs 0..j-1, RTPs 4095..4096-j, x_prev = j. */
+static void measure_falling(unsigned j, int last)
+{
+    const unsigned n = j - 1u; /* searched by both wipe kinds */
+    const hyst_real_t xj = (hyst_real_t)j;
+    unsigned k;
+    if (sparse_m(j)) {
+        time_plain("typ_fall", n, xj - HYST_REAL_C(0.5));
+        time_plain("rev_rise", n, xj + HYST_REAL_C(0.5));
+    }
+    if (n >= 1u && in_sweep(n)) {
+        for (k = 0u; k <= 1u; ++k) { /* to lo or hi, and just short of it */
+            time_wipe_fall("wipe_fall", n, k, ltp_target(k));
+            time_wipe_rise("wipe_revrise", n, k, rtp_target(k));
+        }
+    }
+    if (BENCH_EXHAUSTIVE && last) {
+        for (k = 0u; k <= n; ++k) {
+            time_wipe_fall("exh_wipe_fall", n, k, ltp_target(k));
+            time_wipe_rise("exh_wipe_revrise", n, k, rtp_target(k));
+        }
+        /* Out of the domain: clamped to hi, then the deepest rising wipe. */
+        time_wipe_rise("clamp_hi", n, 0u, CODE_HI + HYST_REAL_C(1.0));
+    }
+}
+
+/* Rising state R_i: LTPs 0..i-1, RTPs 4095..4097-i, x_prev = 4096-i. */
+static void measure_rising(unsigned i, int last)
+{
+    const unsigned n_rise = i - 2u, n_fall = i - 1u;
+    const hyst_real_t xp = hyst_input(&tcm);
+    unsigned k;
+    if (sparse_m(i) && i >= 2u) {
+        time_plain("typ_rise", n_fall, xp + HYST_REAL_C(0.5));
+        time_plain("rev_fall", n_fall, xp - HYST_REAL_C(0.5));
+        time_plain("repeat", n_fall, xp);
+    }
+    for (k = 0u; k <= 1u; ++k) { /* to lo or hi, and just short of it */
+        if (i >= 3u && in_sweep(n_rise)) {
+            time_wipe_rise("wipe_rise", n_rise, k, rtp_target(k));
+        }
+        if (i >= 2u && in_sweep(n_fall)) {
+            time_wipe_fall("wipe_revfall", n_fall, k, ltp_target(k));
+        }
+    }
+    if (BENCH_EXHAUSTIVE && last) {
+        for (k = 0u; k <= n_fall; ++k) {
+            if (k <= n_rise) {
+                time_wipe_rise("exh_wipe_rise", n_rise, k, rtp_target(k));
+            }
+            time_wipe_fall("exh_wipe_revfall", n_fall, k, ltp_target(k));
+        }
+        time_wipe_fall("clamp_lo", n_fall, 0u, HYST_REAL_C(-1.0));
+        {
+            const hyst_t snap = tcm;
+            volatile hyst_real_t zero = HYST_REAL_C(0.0);
+            const hyst_real_t nan = zero / zero;
+            timed_tcm(hyst_step, &tcm, nan);
+            if (hyst_status(&tcm) != HYST_ERR_NONFINITE) {
+                failures |= 8;
+            }
+            record("nan", n_fall, 0u, 0u);
+            tcm = snap;
+        }
+    }
+}
+
+/* Next reversal of the trajectory 0, 4095, 1, 4094, ...: peak i leads to
+ * R_i, valley i to F_i. */
+static void step_peak(unsigned i) { (void)hyst_step(&tcm, (hyst_real_t)(NU - i)); }
+static void step_valley(unsigned i) { (void)hyst_step(&tcm, (hyst_real_t)i); }
+
+/* The cheapest and the deepest sample of each kind at the largest m, first
+ * in the pulse order (pulses 1..6) so that the analysis can profile them. */
+static void showcase(void)
+{
+    unsigned i;
+    for (i = 1u; i < CAP; ++i) {
+        step_peak(i);
+        step_valley(i);
+    }
+    time_plain("show_typ_fall", CAP - 2u, (hyst_real_t)(CAP - 1u) - HYST_REAL_C(0.5));
+    time_wipe_fall("show_wipe_fall", CAP - 2u, 0u, ltp_target(0u));
+    time_wipe_rise("show_wipe_revrise", CAP - 2u, 0u, rtp_target(0u));
+    step_peak(CAP);
+    time_plain("show_typ_rise", CAP - 1u, hyst_input(&tcm) + HYST_REAL_C(0.5));
+    time_wipe_rise("show_wipe_rise", CAP - 2u, 0u, rtp_target(0u));
+    time_wipe_fall("show_wipe_revfall", CAP - 1u, 0u, ltp_target(0u));
+    hyst_reset(&tcm);
+}
+
+static void bench_tcm(void)
+{
+    hyst_poly_t f0;
+    unsigned i;
+    bench_f0_codes(&f0);
+    if (HYST_INIT(tcm, &f0) != HYST_OK) {
+        failures |= 16;
+        return;
+    }
+    record("cal_tcm", 0u, 0u, 0u);
+    timed_tcm(null_tcm, &tcm, HYST_REAL_C(1.0));
+    showcase();
+
+    for (i = 1u; i <= CAP; ++i) {
+        step_peak(i);
+        if (hyst_ltp_count(&tcm) != i - 1u || hyst_rtp_count(&tcm) != i - 1u) {
+            failures |= 32;
+            return;
+        }
+        measure_rising(i, i == CAP);
+        if (i == CAP) {
+            break;
+        }
+        step_valley(i);
+        measure_falling(i, i == CAP - 1u);
+    }
+}
+
+#if BENCH_PI
+BENCH_TIMED(pi, hyst_pi_t)
+
+static void bench_pi(void)
+{
+    static hyst_real_t z[BENCH_PI_N];
+    hyst_pi_t P;
+    unsigned t, lcg = 12345u;
+    hyst_real_t x = HYST_REAL_C(0.0);
+    if (hyst_pi_init(&P, bench_pi10_r, bench_pi10_w, z, BENCH_PI_N) != HYST_OK) {
+        failures |= 64;
+        return;
+    }
+    record("cal_pi", 0u, 0u, 0u);
+    timed_pi(null_pi, &P, HYST_REAL_C(0.5));
+    /* A random walk with jumps over [0, 1]: every operator path is taken. */
+    for (t = 0u; t < PI_SAMPLES; ++t) {
+        lcg = lcg * 1664525u + 1013904223u;
+        if ((lcg >> 28) == 0u) {
+            x = (hyst_real_t)(lcg >> 8) * HYST_REAL_C(5.9604645e-8);
+        } else {
+            x += ((hyst_real_t)(lcg >> 20) - HYST_REAL_C(2048.0)) * HYST_REAL_C(1e-4);
+            x = x < HYST_REAL_C(0.0) ? HYST_REAL_C(0.0) : (x > HYST_REAL_C(1.0) ? HYST_REAL_C(1.0) : x);
+        }
+        timed_pi(hyst_pi_step, &P, x);
+        record("pi10", 10u, 0u, 0u);
+    }
+}
+#endif
+
+/* Small buffered writer: printf per record would dominate the run (every
+ * instruction of it is logged too). */
+static char out_buf[4096];
+static unsigned out_len;
+
+static void out_flush(void)
+{
+    out_buf[out_len] = '\0';
+    hyst_port_puts(out_buf);
+    out_len = 0u;
+}
+
+static void out_str(const char *s)
+{
+    if (out_len + 64u >= sizeof out_buf) { /* no line is longer */
+        out_flush();
+    }
+    while (*s != '\0') {
+        out_buf[out_len++] = *s++;
+    }
+}
+
+static void out_uint(unsigned long v)
+{
+    char d[12];
+    unsigned n = 0u;
+    do {
+        d[n++] = (char)('0' + (int)(v % 10u));
+        v /= 10u;
+    } while (v != 0u);
+    while (n > 0u) {
+        out_buf[out_len++] = d[--n];
+    }
+}
+
+static void out_kv(const char *key, unsigned long v)
+{
+    out_str("# ");
+    out_str(key);
+    out_str(" ");
+    out_uint(v);
+    out_str("\n");
+}
+
+int main(void)
+{
+    unsigned r;
+    hyst_port_init();
+    bench_tcm();
+#if BENCH_PI
+    bench_pi();
+#endif
+    for (r = 0u; r < n_records && r < MAX_RECORDS; ++r) {
+        out_str("@pulse ");
+        out_str(records[r].kind);
+        out_str(" ");
+        out_uint(records[r].m);
+        out_buf[out_len++] = ' ';
+        out_uint(records[r].k);
+        out_buf[out_len++] = ' ';
+        out_uint(records[r].p);
+        out_buf[out_len++] = '\n';
+    }
+    out_kv("nu", NU);
+    out_kv("capacity", CAP);
+    out_kv("sizeof_hyst_t", sizeof(hyst_t));
+    out_kv("sizeof_real", sizeof(hyst_real_t));
+#ifdef HYST_USE_LINEAR_SEARCH
+    out_kv("linear_search", 1u);
+#else
+    out_kv("linear_search", 0u);
+#endif
+    out_kv("failures", (unsigned long)failures);
+    out_flush();
+    hyst_port_exit(failures != 0 ? 1 : 0);
+}

@@ -1,0 +1,22 @@
+# Per-sample instruction budgets of hyst_step on the Cortex-M4F (issue 5):
+# exact counts under QEMU, never time. Needs the bench_budget image
+# (bench/CMakeLists.txt) and Python 3. Red while the engine exceeds them.
+# Python by path, not the imported target: ctest would run a target through
+# CMAKE_CROSSCOMPILING_EMULATOR.
+option(HYST_BUDGET_TEST "Assert the per-sample instruction budgets under QEMU" ON)
+set(HYST_BUDGET_TYPICAL_INSNS 40)  # a sample that stays on its branch
+set(HYST_BUDGET_WORST_INSNS 150)   # any sample at Nu = 4096 (paper: ~420 DSP cycles)
+
+if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget)
+    find_package(Python3 COMPONENTS Interpreter)
+    if(Python3_Interpreter_FOUND)
+        add_test(NAME tcm_budget
+                 COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/test_budget.py
+                         --elf $<TARGET_FILE:bench_budget> --qemu ${HYST_QEMU} --nm ${CMAKE_NM}
+                         --typical ${HYST_BUDGET_TYPICAL_INSNS}
+                         --worst ${HYST_BUDGET_WORST_INSNS})
+        set_tests_properties(tcm_budget PROPERTIES TIMEOUT 600 LABELS "budget")
+    else()
+        message(WARNING "HYST_BUDGET_TEST: no Python 3, the budget test is not registered")
+    endif()
+endif()
