@@ -6,7 +6,8 @@
  *  - hyst/config.h: compile-time options (real type, limits, hooks);
  *  - hyst/status.h: status codes and event flags;
  *  - hyst/curve.h:  the major ascending curve f0;
- *  - hyst/tcm.h:    the TCM instance (init, reset, step, process).
+ *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
+ *  - hyst/code.h:   the same TCM over integer DAC codes.
  */
 #ifndef HYST_HYST_H
 #define HYST_HYST_H
@@ -19,5 +20,6 @@
 #include "hyst/status.h"
 #include "hyst/curve.h"
 #include "hyst/tcm.h"
+#include "hyst/code.h"
 
 #endif /* HYST_HYST_H */

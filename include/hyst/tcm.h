@@ -21,6 +21,19 @@
  *     y_k - g(x_k - x) on a falling branch from RTP (x_k, y_k).
  * A sample that passes no TP costs one comparison and one evaluation of g.
  *
+ * Bounded memory (docs/memory.md). When a reversal at P finds the LTP array
+ * full, or (with hyst_set_deadband()) P is closer than the deadband to the
+ * current TP, the innermost stored loop (L1, R1) and P are replaced by ONE
+ * turning point V: the point of the next outer branch (the one from R2) whose
+ * own branch passes through P. The output is continuous at this sample and
+ * the stack stays a valid TCM state, so no jump appears at a later wipe-out
+ * either (the former policy, dropping L1 and R1 and storing P, jumped by
+ * g(R2-L1) - g(R1-L1) - g(R2-P) + g(R1-P) when the trajectory came back to
+ * R2 or through P). The price, m = the miss of V's branch at the forgotten
+ * R1, is at most max|f0''| w^2 / 4 (w = input width of the forgotten loop)
+ * and never more than the former jump; hyst_error_bound() adds up the misses
+ * that can still matter. A merge costs up to 2 * 24 evaluations of g.
+ *
  * Instances share nothing: several may run side by side (multi-axis stages).
  */
 #ifndef HYST_TCM_H
@@ -38,21 +51,36 @@ extern "C" {
 #define HYST_CAPACITY(nu) ((nu) / 2u)
 
 /**
- * @brief A TCM instance. Fields are private; use the functions below.
+ * @brief Members shared by every TCM instance type (private).
+ *
+ * @p xtype is the stored input type: hyst_real_t here, an integer code word
+ * in hyst/code.h. One engine source (src/tcm_engine.inc) serves both.
+ */
+#define HYST_TCM_MEMBERS_(xtype)                                        \
+    hyst_curve_t curve;  /**< branch shape and domain */                \
+    xtype *xltp;         /**< LTP inputs, ascending, [0] = lo */        \
+    hyst_real_t *yltp;   /**< LTP outputs */                            \
+    xtype *xrtp;         /**< RTP inputs, descending */                 \
+    hyst_real_t *yrtp;   /**< RTP outputs */                            \
+    size_t capacity;     /**< entries of each array */                  \
+    size_t n_ltp;        /**< stored LTPs, including A0 (>= 1) */       \
+    size_t n_rtp;        /**< stored RTPs; n_ltp > n_rtp <=> rising */  \
+    xtype x_prev;        /**< last valid (clamped) input */             \
+    hyst_real_t y_prev;  /**< output for x_prev */                      \
+    int status;          /**< hyst_status_t of the last sample */       \
+    unsigned events;     /**< sticky HYST_EVENT_* flags */              \
+    xtype deadband;      /**< reversals narrower than this: not stored */ \
+    xtype db_reach;      /**< widest skipped reversal, open window */   \
+    hyst_real_t db_err;  /**< error bound of that skipped reversal */   \
+    hyst_real_t forgot;  /**< error bound: misses of live merges */     \
+    size_t forgot_level  /**< all live while stack depth > this */
+
+/**
+ * @brief A TCM instance with real inputs. Fields are private; use the
+ *        functions below.
  */
 typedef struct hyst {
-    hyst_curve_t curve;  /**< branch shape and domain */
-    hyst_real_t *xltp;   /**< LTP inputs, ascending, [0] = lo */
-    hyst_real_t *yltp;   /**< LTP outputs */
-    hyst_real_t *xrtp;   /**< RTP inputs, descending */
-    hyst_real_t *yrtp;   /**< RTP outputs */
-    size_t capacity;     /**< entries of each array */
-    size_t n_ltp;        /**< stored LTPs, including A0 (>= 1) */
-    size_t n_rtp;        /**< stored RTPs; n_ltp > n_rtp <=> branch rising */
-    hyst_real_t x_prev;  /**< last valid (clamped) input */
-    hyst_real_t y_prev;  /**< output for x_prev */
-    int status;          /**< hyst_status_t of the last sample */
-    unsigned events;     /**< sticky HYST_EVENT_* flags */
+    HYST_TCM_MEMBERS_(hyst_real_t);
 } hyst_t;
 
 /**
@@ -120,10 +148,10 @@ void hyst_reset(hyst_t *S);
  *  - NaN or infinite @p x: ignored, state untouched, returns the previous
  *    output; status HYST_ERR_NONFINITE.
  *  - @p x outside [lo, hi]: clamped to the domain; status HYST_WARN_CLAMPED.
- *  - a reversal with a full array: the innermost stored loop (the two most
- *    recent TPs) is forgotten to make room; the output stays continuous at
- *    this sample; status HYST_WARN_FULL. Cannot happen when the inputs take
- *    at most 2 * capacity distinct values.
+ *  - a reversal with a full array: the innermost stored loop is merged
+ *    away (see "Bounded memory" below); the output stays continuous, at
+ *    this sample and later; status HYST_WARN_FULL. Cannot happen when the
+ *    inputs take at most 2 * capacity distinct values.
  * The status of the sample is read by hyst_status(); hyst_events() collects
  * the conditions of all samples.
  *
@@ -145,6 +173,39 @@ hyst_real_t hyst_step(hyst_t *S, hyst_real_t x);
  */
 hyst_status_t hyst_process(hyst_t *S, const hyst_real_t *x, hyst_real_t *y,
                            size_t n);
+
+/**
+ * @brief Sets the noise deadband: a reversal that leaves the current turning
+ *        point by less than @p width (input units) is not stored as a new
+ *        turning point.
+ *
+ * Such a reversal is merged with the innermost loop instead (see "Bounded
+ * memory" above), so sensor or command noise cannot fill the memory; each
+ * merge costs at most width * (max f0' - min f0') in output, accounted in
+ * hyst_error_bound(). The first loop (the one from A0) is always stored.
+ * 0 (the default after init) disables it. Kept by hyst_reset().
+ * @param[in,out] S      initialised instance.
+ * @param[in]     width  deadband in input units, finite, >= 0.
+ * @return HYST_OK, HYST_ERR_NULL or HYST_ERR_ARG (negative or not finite).
+ */
+hyst_status_t hyst_set_deadband(hyst_t *S, hyst_real_t width);
+
+/**
+ * @brief Bound on |y - y_full|, y_full being the output of the same model
+ *        with unlimited memory and no deadband, for the inputs so far.
+ *
+ * The sum of the misses of the merges (full array or deadband) whose outer
+ * turning point is still stored; 0 while nothing was forgotten, back to 0
+ * when the trajectory leaves all merged loops (e.g. reaches lo or hi).
+ * Proven for curves whose f0'' keeps one sign on [lo, hi] (docs/memory.md);
+ * arithmetic rounding is not included.
+ * @param[in] S initialised instance.
+ * @return the bound, in output units.
+ */
+static inline hyst_real_t hyst_error_bound(const hyst_t *S)
+{
+    return S->forgot + S->db_err;
+}
 
 /** @brief Status of the last sample (hyst_status_t). */
 static inline int hyst_status(const hyst_t *S) { return S->status; }

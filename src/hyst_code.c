@@ -1,0 +1,108 @@
+/* The TCM engine over integer DAC codes: code range set-up, clamping, and
+ * the shared engine (tcm_engine.inc) over hyst_code_word_t. */
+#include "hyst/code.h"
+
+#define TCM_S hyst_code_t
+#define TCM_X hyst_code_word_t
+#define TCM_LO(S) ((S)->lo)
+#define TCM_HI(S) ((S)->hi)
+/* exact integer difference (a >= b), then one conversion */
+#define TCM_D(a, b) ((hyst_real_t)(uint_least32_t)((uint_least32_t)(a) - (uint_least32_t)(b)))
+#define TCM_MID(a, b) ((hyst_code_word_t)((a) + ((b) - (a)) / 2u))
+#define TCM_IN hyst_code_word_t
+#define TCM_STEP hyst_code_step
+#include "tcm_engine.inc"
+
+hyst_status_t hyst_code_init_curve(hyst_code_t *S, const hyst_curve_t *curve,
+                                   uint_least32_t code_lo, uint_least32_t code_hi,
+                                   hyst_code_word_t *xltp, hyst_real_t *yltp,
+                                   hyst_code_word_t *xrtp, hyst_real_t *yrtp,
+                                   size_t capacity)
+{
+    if (S == NULL || curve == NULL || xltp == NULL || yltp == NULL ||
+        xrtp == NULL || yrtp == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (capacity < 2u) {
+        return HYST_ERR_CAPACITY;
+    }
+    if (!(code_lo < code_hi) || code_hi > HYST_CODE_MAX) {
+        return HYST_ERR_DOMAIN;
+    }
+    /* g must be a function of u = d * inv_span (curve.h), so that one code
+     * span replaces the domain span. */
+    if (curve->kind != HYST_CURVE_POLY) {
+        return HYST_ERR_ARG;
+    }
+    S->curve = *curve;
+    S->curve.inv_span = (hyst_real_t)(1 / (hyst_wide_t)(code_hi - code_lo));
+    S->lo = (hyst_code_word_t)code_lo;
+    S->hi = (hyst_code_word_t)code_hi;
+    tcm_attach(S, xltp, yltp, xrtp, yrtp, capacity);
+    return HYST_OK;
+}
+
+hyst_status_t hyst_code_init(hyst_code_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
+                             uint_least32_t code_hi, hyst_code_word_t *xltp,
+                             hyst_real_t *yltp, hyst_code_word_t *xrtp, hyst_real_t *yrtp,
+                             size_t capacity)
+{
+    hyst_curve_t curve;
+    hyst_status_t st;
+    if (S == NULL || xltp == NULL || yltp == NULL || xrtp == NULL || yrtp == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (capacity < 2u) {
+        return HYST_ERR_CAPACITY;
+    }
+    st = hyst_curve_from_poly(&curve, f0);
+    if (st != HYST_OK) {
+        return st;
+    }
+    return hyst_code_init_curve(S, &curve, code_lo, code_hi, xltp, yltp, xrtp, yrtp,
+                                capacity);
+}
+
+void hyst_code_reset(hyst_code_t *S) { tcm_reset(S); }
+
+hyst_status_t hyst_code_set_deadband(hyst_code_t *S, uint_least32_t codes)
+{
+    if (S == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (codes > (uint_least32_t)(S->hi - S->lo)) {
+        return HYST_ERR_ARG;
+    }
+    S->deadband = (hyst_code_word_t)codes;
+    return HYST_OK;
+}
+
+/* Out of line: the common path is one compare. */
+static hyst_code_word_t clamp_slow(hyst_code_t *S, uint_least32_t code)
+{
+    S->status = HYST_WARN_CLAMPED;
+    S->events |= HYST_EVENT_CLAMPED;
+    return code < S->lo ? S->lo : S->hi;
+}
+
+hyst_real_t hyst_code_step(hyst_code_t *S, uint_least32_t code)
+{
+    hyst_real_t y;
+    hyst_code_word_t x;
+    HYST_TIMING_BEGIN();
+    S->status = HYST_OK;
+    if (code >= S->lo && code <= S->hi) {
+        x = (hyst_code_word_t)code;
+    } else {
+        x = clamp_slow(S, code);
+    }
+    y = tcm_advance(S, x);
+    HYST_TIMING_END();
+    return y;
+}
+
+hyst_status_t hyst_code_process(hyst_code_t *S, const hyst_code_word_t *x, hyst_real_t *y,
+                                size_t n)
+{
+    return tcm_process(S, x, y, n);
+}
