@@ -2,15 +2,30 @@
  * the shared engine (tcm_engine.inc) over hyst_code_word_t. */
 #include "hyst/code.h"
 
+/* Out of line: the common path is one compare. */
+static hyst_code_word_t clamp_slow(hyst_code_t *S, uint_least32_t code)
+{
+    S->status = HYST_WARN_CLAMPED;
+    S->events |= HYST_EVENT_CLAMPED;
+    return code < S->lo ? S->lo : S->hi;
+}
+
+static int tcm_admit(hyst_code_t *S, uint_least32_t code, hyst_code_word_t *out)
+{
+    *out = code >= S->lo && code <= S->hi ? (hyst_code_word_t)code : clamp_slow(S, code);
+    return 1;
+}
+
 #define TCM_S hyst_code_t
 #define TCM_X hyst_code_word_t
+#define TCM_ARG uint_least32_t
+#define TCM_IN hyst_code_word_t
 #define TCM_LO(S) ((S)->lo)
 #define TCM_HI(S) ((S)->hi)
+#define TCM_R(a) ((hyst_real_t)(a))
 /* exact integer difference (a >= b), then one conversion */
 #define TCM_D(a, b) ((hyst_real_t)(uint_least32_t)((uint_least32_t)(a) - (uint_least32_t)(b)))
 #define TCM_MID(a, b) ((hyst_code_word_t)((a) + ((b) - (a)) / 2u))
-#define TCM_IN hyst_code_word_t
-#define TCM_STEP hyst_code_step
 #include "tcm_engine.inc"
 
 hyst_status_t hyst_code_init_curve(hyst_code_t *S, const hyst_curve_t *curve,
@@ -77,28 +92,9 @@ hyst_status_t hyst_code_set_deadband(hyst_code_t *S, uint_least32_t codes)
     return HYST_OK;
 }
 
-/* Out of line: the common path is one compare. */
-static hyst_code_word_t clamp_slow(hyst_code_t *S, uint_least32_t code)
-{
-    S->status = HYST_WARN_CLAMPED;
-    S->events |= HYST_EVENT_CLAMPED;
-    return code < S->lo ? S->lo : S->hi;
-}
-
 hyst_real_t hyst_code_step(hyst_code_t *S, uint_least32_t code)
 {
-    hyst_real_t y;
-    hyst_code_word_t x;
-    HYST_TIMING_BEGIN();
-    S->status = HYST_OK;
-    if (code >= S->lo && code <= S->hi) {
-        x = (hyst_code_word_t)code;
-    } else {
-        x = clamp_slow(S, code);
-    }
-    y = tcm_advance(S, x);
-    HYST_TIMING_END();
-    return y;
+    return step(S, code);
 }
 
 hyst_status_t hyst_code_process(hyst_code_t *S, const hyst_code_word_t *x, hyst_real_t *y,

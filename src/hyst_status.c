@@ -16,6 +16,7 @@ const char *hyst_status_str(int status)
     case HYST_ERR_NONFINITE: return "sample not finite";
     case HYST_ERR_ARG: return "invalid argument";
     case HYST_ERR_NOSPACE: return "buffer too small";
+    case HYST_ERR_SINGULAR: return "too few distinct inputs for the fit";
     default: return "unknown status";
     }
 }

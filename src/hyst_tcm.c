@@ -2,14 +2,38 @@
  * shared engine (tcm_engine.inc) over hyst_real_t. */
 #include "hyst/tcm.h"
 
+/* Out-of-line so the common path stays short: NaN/Inf or outside [lo, hi].
+ * Returns 0 if the sample must be ignored, else 1 with *x clamped. */
+static int admit_slow(hyst_t *S, hyst_real_t *x)
+{
+    const hyst_real_t v = *x;
+    const hyst_real_t z = v - v;
+    if (z != z) {
+        S->status = HYST_ERR_NONFINITE;
+        S->events |= HYST_EVENT_NONFINITE;
+        return 0;
+    }
+    *x = v < S->curve.lo ? S->curve.lo : S->curve.hi;
+    S->status = HYST_WARN_CLAMPED;
+    S->events |= HYST_EVENT_CLAMPED;
+    return 1;
+}
+
+static int tcm_admit(hyst_t *S, hyst_real_t x, hyst_real_t *out)
+{
+    *out = x;
+    return (x >= S->curve.lo && x <= S->curve.hi) || admit_slow(S, out);
+}
+
 #define TCM_S hyst_t
 #define TCM_X hyst_real_t
+#define TCM_ARG hyst_real_t
+#define TCM_IN hyst_real_t
 #define TCM_LO(S) ((S)->curve.lo)
 #define TCM_HI(S) ((S)->curve.hi)
+#define TCM_R(a) (a)
 #define TCM_D(a, b) ((a) - (b))
 #define TCM_MID(a, b) ((a) + ((b) - (a)) * HYST_REAL_C(0.5))
-#define TCM_IN hyst_real_t
-#define TCM_STEP hyst_step
 #include "tcm_engine.inc"
 
 hyst_status_t hyst_init_curve(hyst_t *S, const hyst_curve_t *curve,
@@ -65,35 +89,9 @@ hyst_status_t hyst_set_deadband(hyst_t *S, hyst_real_t width)
     return HYST_OK;
 }
 
-/* Out-of-line so the common path stays short: NaN/Inf or outside [lo, hi].
- * Returns 0 if the sample must be ignored, else 1 with *x clamped. */
-static int admit_slow(hyst_t *S, hyst_real_t *x)
-{
-    const hyst_real_t v = *x;
-    const hyst_real_t z = v - v;
-    if (z != z) {
-        S->status = HYST_ERR_NONFINITE;
-        S->events |= HYST_EVENT_NONFINITE;
-        return 0;
-    }
-    *x = v < S->curve.lo ? S->curve.lo : S->curve.hi;
-    S->status = HYST_WARN_CLAMPED;
-    S->events |= HYST_EVENT_CLAMPED;
-    return 1;
-}
-
 hyst_real_t hyst_step(hyst_t *S, hyst_real_t x)
 {
-    hyst_real_t y;
-    HYST_TIMING_BEGIN();
-    S->status = HYST_OK;
-    if (!(x >= S->curve.lo && x <= S->curve.hi) && !admit_slow(S, &x)) {
-        HYST_TIMING_END();
-        return S->y_prev;
-    }
-    y = tcm_advance(S, x);
-    HYST_TIMING_END();
-    return y;
+    return step(S, x);
 }
 
 hyst_status_t hyst_process(hyst_t *S, const hyst_real_t *x, hyst_real_t *y,

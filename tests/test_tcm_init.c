@@ -152,7 +152,7 @@ static void test_nan_and_inf_samples_leave_state_untouched(void)
         TEST_ASSERT_EQUAL_INT(HYST_ERR_NONFINITE, hyst_status(&S));
         TEST_ASSERT_EQUAL_UINT(before.n_ltp, S.n_ltp);
         TEST_ASSERT_EQUAL_UINT(before.n_rtp, S.n_rtp);
-        TEST_ASSERT_EQUAL_MEMORY(&before.x_prev, &S.x_prev, sizeof S.x_prev);
+        TEST_ASSERT_EQUAL_MEMORY(&before.window, &S.window, sizeof S.window);
         TEST_ASSERT_EQUAL_MEMORY(&before.y_prev, &S.y_prev, sizeof S.y_prev);
     }
     TEST_ASSERT_EQUAL_UINT(HYST_EVENT_NONFINITE, hyst_events(&S));

@@ -146,8 +146,9 @@ hyst_status_t hyst_code_set_deadband(hyst_code_t *S, uint_least32_t codes);
 /**
  * @brief Advances the model by one code.
  *
- * As hyst_step(): O(1) unless a stored TP is passed (then one binary search)
- * or a merge happens (full array or deadband: up to 2 * 24 evaluations of g).
+ * As hyst_step(): a constant fast path while the code moves on along its
+ * branch; one binary search when a stored TP is passed; a merge (full
+ * array) costs up to 2 + 2 * 24 evaluations of g.
  * A code outside [code_lo, code_hi] is clamped (status HYST_WARN_CLAMPED).
  * @param[in,out] S     initialised instance.
  * @param[in]     code  input code.
@@ -181,7 +182,10 @@ static inline void hyst_code_clear_events(hyst_code_t *S) { S->events = 0u; }
 static inline hyst_real_t hyst_code_output(const hyst_code_t *S) { return S->y_prev; }
 
 /** @brief Last valid code, after clamping (code_lo after init or reset). */
-static inline uint_least32_t hyst_code_input(const hyst_code_t *S) { return S->x_prev; }
+static inline uint_least32_t hyst_code_input(const hyst_code_t *S)
+{
+    return S->window[S->moving_end];
+}
 
 /** @brief Stored TPs, excluding the anchor A0. */
 static inline size_t hyst_code_tp_count(const hyst_code_t *S)

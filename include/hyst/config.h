@@ -50,6 +50,13 @@ typedef hyst_real_t hyst_wide_t;
 typedef double hyst_wide_t;
 #endif
 
+/** Inline that the compiler may not decline: the per-sample path. */
+#if defined(__GNUC__) || defined(__clang__)
+#define HYST_INLINE static inline __attribute__((always_inline))
+#else
+#define HYST_INLINE static inline
+#endif
+
 /**
  * @brief Timing hooks around the per-sample computation (GPIO set/clear).
  *

@@ -106,16 +106,42 @@ hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x);
  * @param[in] d     distance from the turning point, 0 <= d <= hi - lo.
  * @return g(d); g(0) is exactly 0.
  */
+/**
+ * @brief The branch shape at u = d / (hi - lo), u in [0, 1].
+ *
+ * Horner's rule unrolled by a switch on the degree: one multiply-add per
+ * coefficient and no loop overhead on the per-sample path.
+ */
+HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t u)
+{
+    const hyst_real_t *a = curve->a; /* a[0] multiplies u^n */
+    hyst_real_t acc;
+#define HYST_H_(acc_, k_) ((acc_) * u + a[k_])
+    switch (curve->degree) { /* independent cases: no register merges */
+    case 1: acc = a[0]; break;
+    case 2: acc = HYST_H_(a[0], 1); break;
+    case 3: acc = HYST_H_(HYST_H_(a[0], 1), 2); break;
+    case 4: acc = HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3); break;
+    case 5: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4); break;
+    case 6: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4), 5); break;
+    case 7: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4), 5), 6); break;
+    case 8: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4), 5), 6), 7); break;
+    default: { /* 9 and above: Horner's loop */
+        unsigned k;
+        acc = a[0];
+        for (k = 1u; k < curve->degree; ++k) {
+            acc = HYST_H_(acc, k);
+        }
+        break;
+    }
+    }
+#undef HYST_H_
+    return acc * u;
+}
+
 static inline hyst_real_t hyst_curve_g(const hyst_curve_t *curve, hyst_real_t d)
 {
-    const hyst_real_t u = d * curve->inv_span;
-    const hyst_real_t *a = curve->a;
-    hyst_real_t acc = a[0];
-    unsigned i;
-    for (i = 1u; i < curve->degree; ++i) {
-        acc = acc * u + a[i];
-    }
-    return acc * u;
+    return hyst_curve_g_unit(curve, d * curve->inv_span);
 }
 
 #ifdef __cplusplus

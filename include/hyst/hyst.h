@@ -7,7 +7,8 @@
  *  - hyst/status.h: status codes and event flags;
  *  - hyst/curve.h:  the major ascending curve f0;
  *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
- *  - hyst/code.h:   the same TCM over integer DAC codes.
+ *  - hyst/code.h:   the same TCM over integer DAC codes;
+ *  - hyst/ident.h:  identification of f0 from measured data.
  */
 #ifndef HYST_HYST_H
 #define HYST_HYST_H
@@ -21,5 +22,6 @@
 #include "hyst/curve.h"
 #include "hyst/tcm.h"
 #include "hyst/code.h"
+#include "hyst/ident.h"
 
 #endif /* HYST_HYST_H */

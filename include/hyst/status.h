@@ -22,7 +22,8 @@ typedef enum hyst_status {
     HYST_ERR_NOT_INCREASING = -6,/**< f0 is not increasing on [lo, hi] */
     HYST_ERR_NONFINITE = -7,     /**< a sample is NaN or infinite: ignored */
     HYST_ERR_ARG = -8,           /**< another argument is invalid (see the call) */
-    HYST_ERR_NOSPACE = -9        /**< a caller buffer is too small */
+    HYST_ERR_NOSPACE = -9,       /**< a caller buffer is too small */
+    HYST_ERR_SINGULAR = -10      /**< too few distinct inputs for the fit (rank deficient) */
 } hyst_status_t;
 
 /** @name Sticky event flags (hyst_events()): set by samples, cleared by the caller. */

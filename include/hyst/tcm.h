@@ -19,20 +19,22 @@
  *     surviving current TP is found by binary search, only when a TP is passed;
  *  4. the output is y_k + g(x - x_k) on a rising branch from LTP (x_k, y_k) and
  *     y_k - g(x_k - x) on a falling branch from RTP (x_k, y_k).
- * A sample that passes no TP costs one comparison and one evaluation of g.
+ * A sample that moves on along its branch without reaching a stored TP takes
+ * a constant fast path: two comparisons against a cached window, one
+ * evaluation of g (about 34 Cortex-M4F instructions for a cubic).
  *
  * Bounded memory (docs/memory.md). When a reversal at P finds the LTP array
- * full, or (with hyst_set_deadband()) P is closer than the deadband to the
- * current TP, the innermost stored loop (L1, R1) and P are replaced by ONE
- * turning point V: the point of the next outer branch (the one from R2) whose
- * own branch passes through P. The output is continuous at this sample and
- * the stack stays a valid TCM state, so no jump appears at a later wipe-out
+ * full, the innermost stored loop (L1, R1) and P are replaced by ONE LTP V:
+ * the point of the next outer branch (the falling one from R2) whose rising
+ * branch passes through P. The output is continuous at this sample and the
+ * stack stays a valid TCM state, so no jump appears at a later wipe-out
  * either (the former policy, dropping L1 and R1 and storing P, jumped by
  * g(R2-L1) - g(R1-L1) - g(R2-P) + g(R1-P) when the trajectory came back to
  * R2 or through P). The price, m = the miss of V's branch at the forgotten
- * R1, is at most max|f0''| w^2 / 4 (w = input width of the forgotten loop)
- * and never more than the former jump; hyst_error_bound() adds up the misses
- * that can still matter. A merge costs up to 2 * 24 evaluations of g.
+ * R1, is at most max|f0''| w^2 / 4 (w = input width of the forgotten loop),
+ * at most its output height and never more than the former jump;
+ * hyst_error_bound() adds up the misses that can still matter. A merge costs
+ * up to 2 + 2 * 24 evaluations of g, on the overflowing sample only.
  *
  * Instances share nothing: several may run side by side (multi-axis stages).
  */
@@ -56,23 +58,34 @@ extern "C" {
  * @p xtype is the stored input type: hyst_real_t here, an integer code word
  * in hyst/code.h. One engine source (src/tcm_engine.inc) serves both.
  */
-#define HYST_TCM_MEMBERS_(xtype)                                        \
-    hyst_curve_t curve;  /**< branch shape and domain */                \
-    xtype *xltp;         /**< LTP inputs, ascending, [0] = lo */        \
-    hyst_real_t *yltp;   /**< LTP outputs */                            \
-    xtype *xrtp;         /**< RTP inputs, descending */                 \
-    hyst_real_t *yrtp;   /**< RTP outputs */                            \
-    size_t capacity;     /**< entries of each array */                  \
-    size_t n_ltp;        /**< stored LTPs, including A0 (>= 1) */       \
-    size_t n_rtp;        /**< stored RTPs; n_ltp > n_rtp <=> rising */  \
-    xtype x_prev;        /**< last valid (clamped) input */             \
-    hyst_real_t y_prev;  /**< output for x_prev */                      \
-    int status;          /**< hyst_status_t of the last sample */       \
-    unsigned events;     /**< sticky HYST_EVENT_* flags */              \
-    xtype deadband;      /**< reversals narrower than this: not stored */ \
-    xtype db_reach;      /**< widest skipped reversal, open window */   \
-    hyst_real_t db_err;  /**< error bound of that skipped reversal */   \
-    hyst_real_t forgot;  /**< error bound: misses of live merges */     \
+#define HYST_TCM_MEMBERS_(xtype)                                           \
+    hyst_curve_t curve;  /**< branch shape and domain */                   \
+    xtype *xltp;         /**< LTP inputs, ascending, [0] = lo */           \
+    hyst_real_t *yltp;   /**< LTP outputs */                               \
+    xtype *xrtp;         /**< RTP inputs, descending */                    \
+    hyst_real_t *yrtp;   /**< RTP outputs */                               \
+    size_t capacity;     /**< entries of each array */                     \
+    size_t n_ltp;        /**< stored LTPs, including A0 (>= 1) */          \
+    size_t n_rtp;        /**< stored RTPs; n_ltp > n_rtp <=> rising */     \
+    /* Fast-path cache, derived from the arrays after every slow step:     \
+     * while the input moves on inside the open interval (window[0],       \
+     * window[1]), no TP is created or passed and                          \
+     * y = y_ctp + sign g(u_scale (x - x_ctp)). window[moving_end] is the  \
+     * last valid input. */                                                \
+    xtype window[2];                                                       \
+    hyst_real_t x_ctp;   /**< current TP's input, as a real */             \
+    hyst_real_t y_ctp;                                                     \
+    hyst_real_t sign;    /**< +1 on a rising branch, -1 on a falling one */ \
+    hyst_real_t u_scale; /**< sign / (hi - lo) */                          \
+    hyst_real_t y_prev;  /**< output for the last valid input */           \
+    unsigned moving_end; /**< 0 rising (the lower end follows x), 1 falling */ \
+    int status;          /**< hyst_status_t of the last sample */          \
+    unsigned events;     /**< sticky HYST_EVENT_* flags */                 \
+    /* Bounded memory (docs/memory.md), off the fast path. */              \
+    xtype deadband;      /**< reversals narrower than this: not stored */  \
+    xtype db_reach;      /**< widest skipped reversal, open window */      \
+    hyst_real_t db_err;  /**< error bound of that skipped reversal */      \
+    hyst_real_t forgot;  /**< error bound: misses of live merges */        \
     size_t forgot_level  /**< all live while stack depth > this */
 
 /**
@@ -175,15 +188,17 @@ hyst_status_t hyst_process(hyst_t *S, const hyst_real_t *x, hyst_real_t *y,
                            size_t n);
 
 /**
- * @brief Sets the noise deadband: a reversal that leaves the current turning
- *        point by less than @p width (input units) is not stored as a new
- *        turning point.
+ * @brief Sets the noise deadband: a reversal closer than @p width (input
+ *        units) to the current turning point is not stored.
  *
- * Such a reversal is merged with the innermost loop instead (see "Bounded
- * memory" above), so sensor or command noise cannot fill the memory; each
- * merge costs at most width * (max f0' - min f0') in output, accounted in
- * hyst_error_bound(). The first loop (the one from A0) is always stored.
- * 0 (the default after init) disables it. Kept by hyst_reset().
+ * The input then moves back along the current branch (reversibly) instead of
+ * starting a minor loop, so sensor or command noise cannot fill the memory.
+ * The full model would run a loop of width d < width inside that branch: the
+ * error is at most that loop's height |g(d) - 2 g(d/2)| <= max|f0''| width^2
+ * / 4 (for f0'' of one sign; docs/memory.md), is 0 again once the input
+ * leaves the window, never accumulates and never jumps. Samples inside the
+ * window take the slow path. 0 (the default after init) disables it; kept by
+ * hyst_reset().
  * @param[in,out] S      initialised instance.
  * @param[in]     width  deadband in input units, finite, >= 0.
  * @return HYST_OK, HYST_ERR_NULL or HYST_ERR_ARG (negative or not finite).
@@ -194,9 +209,10 @@ hyst_status_t hyst_set_deadband(hyst_t *S, hyst_real_t width);
  * @brief Bound on |y - y_full|, y_full being the output of the same model
  *        with unlimited memory and no deadband, for the inputs so far.
  *
- * The sum of the misses of the merges (full array or deadband) whose outer
- * turning point is still stored; 0 while nothing was forgotten, back to 0
- * when the trajectory leaves all merged loops (e.g. reaches lo or hi).
+ * The sum of the misses of the full-array merges whose outer turning point
+ * is still stored, plus the bound of the open deadband excursion; 0 while
+ * nothing was forgotten, back to 0 when the trajectory leaves all merged
+ * loops (at the latest when it reaches lo or hi).
  * Proven for curves whose f0'' keeps one sign on [lo, hi] (docs/memory.md);
  * arithmetic rounding is not included.
  * @param[in] S initialised instance.
@@ -220,7 +236,7 @@ static inline void hyst_clear_events(hyst_t *S) { S->events = 0u; }
 static inline hyst_real_t hyst_output(const hyst_t *S) { return S->y_prev; }
 
 /** @brief Last valid input, after clamping (lo after init or reset). */
-static inline hyst_real_t hyst_input(const hyst_t *S) { return S->x_prev; }
+static inline hyst_real_t hyst_input(const hyst_t *S) { return S->window[S->moving_end]; }
 
 /** @brief Stored left TPs, excluding the anchor A0. */
 static inline size_t hyst_ltp_count(const hyst_t *S) { return S->n_ltp - 1u; }

@@ -1,0 +1,219 @@
+/**
+ * @file ident.h
+ * @brief Identification of the major ascending curve f0 from measured data.
+ *
+ * Excite the actuator with a full-range periodic wave between lo and hi,
+ * record input x and output y, and fit f0 as a polynomial of degree n by
+ * least squares (METHOD.md section 6). Two estimators:
+ *
+ *  - HYST_IDENT_JOINT (default): rising samples obey y = f0(x), falling
+ *    samples y = f0(lo) + f0(hi) - f0(lo + hi - x); both are linear in the
+ *    coefficients, so all samples enter one least-squares problem and no
+ *    output at the extremes has to be estimated.
+ *  - HYST_IDENT_REFLECT (the paper's procedure): falling samples are mapped
+ *    onto f0 by the point reflection of Eq. 14, x' = lo + hi - x,
+ *    y' = y(lo) + y(hi) - y, with y(lo), y(hi) the mean outputs of the samples
+ *    at the extreme inputs seen; then one polynomial fit. The domain should
+ *    then be the inputs' range (the reflection uses lo + hi).
+ *
+ * A sample is rising or falling by its direction of travel: the sign of
+ * x - (previous different input); a repeated input keeps the previous
+ * direction; samples before the input first moves have no direction and are
+ * not used.
+ *
+ * Streaming and allocation-free: the instance (hyst_ident_t: 872 bytes with
+ * hyst_wide_t = double on a 64-bit host, 472 with HYST_NO_DOUBLE) is the whole
+ * workspace, whatever the number of samples.
+ * Each sample updates a triangular factor by Givens rotations (an orthogonal
+ * factorisation, never the normal equations), in hyst_wide_t, on the input
+ * scaled to t in [-1, 1] over the domain and a Chebyshev basis in t, so raw
+ * units (volts 0..40, DAC codes 0..65535) are fine up to HYST_MAX_DEGREE.
+ * Coefficients come back in the user's units, highest power first.
+ *
+ * Firmware (domain known, samples streamed, no buffer):
+ * @code
+ * hyst_ident_t id;
+ * hyst_ident_result_t res;
+ * hyst_ident_config_t cfg = { 3u, HYST_IDENT_JOINT, 0.0, 4095.0 };
+ * hyst_ident_init(&id, &cfg);
+ * for (...) { hyst_ident_add(&id, code, measured); }   // pass 1: fit
+ * hyst_ident_solve(&id, &res);
+ * for (...) { hyst_ident_check(&id, code, measured); } // pass 2 (optional): residuals
+ * hyst_ident_residuals(&id, &res);
+ * @endcode
+ * Host, data in arrays: hyst_ident_fit() does it all, with skip, sensor
+ * delay and the domain taken from the data.
+ */
+#ifndef HYST_IDENT_H
+#define HYST_IDENT_H
+
+#include "hyst/config.h"
+#include "hyst/curve.h"
+#include "hyst/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** @brief Estimator of f0 (hyst_ident_config_t::method). */
+typedef enum hyst_ident_method {
+    HYST_IDENT_DEFAULT = 0, /**< HYST_IDENT_JOINT */
+    HYST_IDENT_JOINT = 1,   /**< both branches in one least-squares problem */
+    HYST_IDENT_REFLECT = 2  /**< the paper: falling samples reflected by Eq. 14 */
+} hyst_ident_method_t;
+
+/** Columns of the triangular factor: n + 1 coefficients and two right-hand sides. */
+#define HYST_IDENT_COLS (HYST_MAX_DEGREE + 3)
+
+/**
+ * @brief What to fit. Zero fields take their defaults where stated.
+ */
+typedef struct hyst_ident_config {
+    unsigned degree;  /**< n, 1..HYST_MAX_DEGREE */
+    int method;       /**< hyst_ident_method_t; 0 = HYST_IDENT_JOINT */
+    hyst_wide_t lo;   /**< domain; hyst_ident_fit(): lo == hi takes it from the data */
+    hyst_wide_t hi;   /**< upper end of the domain */
+    size_t skip;      /**< hyst_ident_fit() only: samples dropped at the start (settling) */
+    size_t delay;     /**< hyst_ident_fit() only: output lags the input by this many samples */
+} hyst_ident_config_t;
+
+/** @brief Direction-of-travel classifier (private to hyst_ident_t). */
+typedef struct hyst_ident_dir {
+    hyst_wide_t x_prev; /**< previous input */
+    int started;        /**< a previous input exists */
+    int dir;            /**< +1 rising, -1 falling, 0 not moved yet */
+} hyst_ident_dir_t;
+
+/**
+ * @brief An identification in progress. Fields are private.
+ *
+ * Holds its own workspace: the packed upper-triangular factor of
+ * HYST_IDENT_COLS columns. Copyable; instances share nothing.
+ */
+typedef struct hyst_ident {
+    unsigned degree;      /**< n */
+    int method;           /**< hyst_ident_method_t, resolved */
+    int phase;            /**< 0 fitting, 1 solved (checking) */
+    hyst_wide_t lo, hi;   /**< domain */
+    hyst_wide_t mid;      /**< (lo + hi) / 2 */
+    hyst_wide_t inv_half; /**< 2 / (hi - lo) */
+    /** R factor, rows packed: row i holds columns i..HYST_IDENT_COLS-1 */
+    hyst_wide_t r[HYST_IDENT_COLS * (HYST_IDENT_COLS + 1) / 2];
+    hyst_ident_dir_t dir; /**< classifier of the current pass */
+    hyst_wide_t x_min, x_max;   /**< extreme inputs seen */
+    hyst_wide_t sy_min, sy_max; /**< sums of the outputs at those inputs */
+    size_t n_min, n_max;        /**< samples at those inputs */
+    size_t rising, falling;     /**< samples used, by branch */
+    size_t ignored;             /**< non-finite, out of domain or before the first move */
+    hyst_wide_t cheb[HYST_MAX_DEGREE + 1]; /**< solution, Chebyshev basis in t */
+    hyst_wide_t shift;          /**< f0(lo) + f0(hi) of the solution */
+    hyst_wide_t ss, max_abs;    /**< check pass: squared sum, max |residual| */
+    size_t checked;             /**< check pass: samples compared */
+} hyst_ident_t;
+
+/**
+ * @brief An identified f0 and how well it fits.
+ */
+typedef struct hyst_ident_result {
+    unsigned degree;  /**< n */
+    int method;       /**< estimator used (resolved, never 0) */
+    hyst_wide_t coeffs[HYST_MAX_DEGREE + 1]; /**< c_n ... c_0, user units, highest power first */
+    hyst_wide_t lo, hi;  /**< domain */
+    /** RMS of the residual y - (major loop): rising samples against f0(x),
+     *  falling ones against f0(lo) + f0(hi) - f0(lo + hi - x). After
+     *  hyst_ident_solve() alone: the least-squares residual of the fit
+     *  (REFLECT: in the reflected coordinates). */
+    hyst_wide_t rms;
+    hyst_wide_t max_abs; /**< max |residual|; negative until a check pass */
+    hyst_wide_t y_lo_est, y_hi_est; /**< REFLECT: y(lo), y(hi) used by Eq. 14; else f0(lo), f0(hi) */
+    size_t used;         /**< samples in the fit */
+    size_t rising;       /**< of which rising */
+    size_t falling;      /**< of which falling */
+    int increasing;      /**< 1 if f0 increases on [lo, hi] (hyst_poly_is_increasing()) */
+    hyst_wide_t turn;    /**< if not increasing: an x where the slope is negative */
+} hyst_ident_result_t;
+
+/**
+ * @brief Starts an identification on a known domain.
+ * @param[out] id  instance (the whole workspace).
+ * @param[in]  cfg degree, method, lo < hi (skip and delay are not used here).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_DEGREE, HYST_ERR_DOMAIN or
+ *         HYST_ERR_ARG (unknown method). Nothing is written on error.
+ */
+hyst_status_t hyst_ident_init(hyst_ident_t *id, const hyst_ident_config_t *cfg);
+
+/**
+ * @brief Adds one sample (x, y) to the fit. Constant time and memory.
+ * @param[in,out] id initialised instance, not yet solved.
+ * @param[in]     x  input.
+ * @param[in]     y  output measured for @p x (already delay-aligned).
+ * @return HYST_OK when used; HYST_ERR_NONFINITE (NaN/Inf) or HYST_ERR_DOMAIN
+ *         (x outside [lo, hi]) when ignored; HYST_ERR_ARG after
+ *         hyst_ident_solve(). A sample before the input first moves
+ *         returns HYST_OK but is not used (it has no direction).
+ */
+hyst_status_t hyst_ident_add(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y);
+
+/**
+ * @brief Solves the least-squares problem of the samples added so far.
+ *
+ * Fills @p res (coefficients in user units, highest power first; domain;
+ * least-squares RMS; the monotonicity check) and switches @p id to the
+ * check pass: further samples go to hyst_ident_check().
+ * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_ARG (already solved);
+ *         HYST_ERR_SINGULAR (too few distinct inputs for degree n).
+ *         A fit that does not increase is still HYST_OK: see res->increasing.
+ */
+hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res);
+
+/**
+ * @brief Check pass: compares one sample with the fitted major loop.
+ *
+ * Feed the same samples again (classified afresh); then
+ * hyst_ident_residuals() gives their RMS and maximum.
+ * @return HYST_OK, HYST_ERR_ARG (not solved), or the codes of hyst_ident_add().
+ */
+hyst_status_t hyst_ident_check(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y);
+
+/**
+ * @brief Writes the check pass's RMS and max residual into @p res.
+ * @return HYST_OK, HYST_ERR_NULL or HYST_ERR_ARG (no sample checked).
+ */
+hyst_status_t hyst_ident_residuals(const hyst_ident_t *id, hyst_ident_result_t *res);
+
+/**
+ * @brief Smallest and largest finite entry of an array (the domain of a record).
+ * @return HYST_OK, HYST_ERR_NULL, or HYST_ERR_DOMAIN (no finite entry, or all equal).
+ */
+hyst_status_t hyst_ident_domain(const hyst_wide_t *x, size_t n, hyst_wide_t *lo,
+                                hyst_wide_t *hi);
+
+/**
+ * @brief Identifies f0 from recorded arrays, in two passes over them.
+ *
+ * Sample i (skip <= i < n - delay) pairs x[i] with y[i + delay]. The domain
+ * is cfg->lo..cfg->hi, or the range of those x when cfg->lo == cfg->hi.
+ * Pass 1 fits, pass 2 computes the residuals (res->rms, res->max_abs).
+ * @param[in]  cfg  degree, method, domain, skip, delay.
+ * @param[in]  x, y @p n samples each.
+ * @param[out] work workspace (any content).
+ * @param[out] res  result.
+ * @return as hyst_ident_init() and hyst_ident_solve(); HYST_ERR_ARG when
+ *         skip + delay leaves no sample.
+ */
+hyst_status_t hyst_ident_fit(const hyst_ident_config_t *cfg, const hyst_wide_t *x,
+                             const hyst_wide_t *y, size_t n, hyst_ident_t *work,
+                             hyst_ident_result_t *res);
+
+/**
+ * @brief The identified curve as a hyst_poly_t for hyst_init().
+ * @return HYST_OK, HYST_ERR_NULL, or HYST_ERR_COEFF (a coefficient does not
+ *         fit hyst_real_t).
+ */
+hyst_status_t hyst_ident_poly(const hyst_ident_result_t *res, hyst_poly_t *f0);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* HYST_IDENT_H */

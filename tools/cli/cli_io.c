@@ -1,0 +1,355 @@
+/* Shared by the subcommands of `hyst`: messages, option parsing, number
+ * parsing, and the column reader for data files. */
+#include "cli.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int cli_fail(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    (void)fflush(stdout);
+    (void)fprintf(stderr, "hyst %s: ", cmd);
+    va_start(ap, fmt);
+    (void)vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    (void)fputc('\n', stderr);
+    return 1;
+}
+
+const char *cli_file_name(const char *path)
+{
+    return (path == NULL || strcmp(path, "-") == 0) ? "<stdin>" : path;
+}
+
+/* ---- options ---- */
+
+void cli_args_init(cli_args_t *a, const char *cmd, int argc, char **argv)
+{
+    a->cmd = cmd;
+    a->argc = argc;
+    a->argv = argv;
+    a->i = 1; /* argv[0] is the subcommand */
+    a->only_pos = 0;
+    a->opt[0] = '\0';
+    a->inline_v = NULL;
+    a->value_taken = 1;
+}
+
+int cli_args_next(cli_args_t *a, const char **pos)
+{
+    const char *arg, *eq;
+    size_t len;
+    if (!a->value_taken && a->inline_v != NULL) {
+        return -cli_fail(a->cmd, "option %s takes no value (got '%s')", a->opt, a->inline_v);
+    }
+    a->opt[0] = '\0';
+    a->inline_v = NULL;
+    a->value_taken = 1;
+    if (a->i >= a->argc) {
+        return CLI_END;
+    }
+    arg = a->argv[a->i++];
+    if (!a->only_pos && strcmp(arg, "--") == 0) {
+        a->only_pos = 1;
+        return cli_args_next(a, pos);
+    }
+    if (a->only_pos || arg[0] != '-' || arg[1] == '\0') {
+        *pos = arg;
+        return CLI_POS;
+    }
+    eq = strchr(arg, '=');
+    len = eq != NULL ? (size_t)(eq - arg) : strlen(arg);
+    if (len >= sizeof a->opt) {
+        len = sizeof a->opt - 1u;
+    }
+    memcpy(a->opt, arg, len);
+    a->opt[len] = '\0';
+    a->inline_v = eq != NULL ? eq + 1 : NULL;
+    a->value_taken = 0;
+    return CLI_OPT;
+}
+
+int cli_is(const cli_args_t *a, const char *name) { return strcmp(a->opt, name) == 0; }
+
+const char *cli_value(cli_args_t *a)
+{
+    a->value_taken = 1;
+    if (a->inline_v != NULL) {
+        return a->inline_v;
+    }
+    if (a->i >= a->argc) {
+        (void)cli_fail(a->cmd, "option %s needs a value", a->opt);
+        return NULL;
+    }
+    return a->argv[a->i++];
+}
+
+int cli_unknown(const cli_args_t *a)
+{
+    return cli_fail(a->cmd, "unknown option '%s' (see 'hyst %s --help')", a->opt, a->cmd);
+}
+
+int cli_parse_double(const char *s, double *out)
+{
+    char *end;
+    double v;
+    while (*s == ' ' || *s == '\t') {
+        ++s;
+    }
+    if (*s == '\0') {
+        return 0;
+    }
+    errno = 0;
+    v = strtod(s, &end);
+    while (*end == ' ' || *end == '\t') {
+        ++end;
+    }
+    if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v)) {
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+int cli_opt_ulong(const cli_args_t *a, const char *v, unsigned long min, unsigned long max,
+                  unsigned long *out)
+{
+    char *end;
+    unsigned long u;
+    errno = 0;
+    u = (v[0] >= '0' && v[0] <= '9') ? strtoul(v, &end, 10) : 0ul;
+    if (!(v[0] >= '0' && v[0] <= '9') || *end != '\0' || errno == ERANGE || u < min || u > max) {
+        return !cli_fail(a->cmd, "option %s: '%s' is not an integer in %lu..%lu", a->opt, v, min,
+                         max);
+    }
+    *out = u;
+    return 1;
+}
+
+int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, size_t max,
+                 size_t *n)
+{
+    char item[128];
+    const char *p = v;
+    size_t count = 0u;
+    for (;;) {
+        const char *comma = strchr(p, ',');
+        const size_t len = comma != NULL ? (size_t)(comma - p) : strlen(p);
+        if (count == max) {
+            return !cli_fail(a->cmd, "option %s: more than %lu numbers in '%s'", a->opt,
+                             (unsigned long)max, v);
+        }
+        if (len >= sizeof item) {
+            return !cli_fail(a->cmd, "option %s: number %lu too long", a->opt,
+                             (unsigned long)count + 1ul);
+        }
+        memcpy(item, p, len);
+        item[len] = '\0';
+        if (!cli_parse_double(item, &out[count])) {
+            return !cli_fail(a->cmd, "option %s: item %lu '%s' is not a finite number", a->opt,
+                             (unsigned long)count + 1ul, item);
+        }
+        ++count;
+        if (comma == NULL) {
+            break;
+        }
+        p = comma + 1;
+    }
+    if (count < min) {
+        return !cli_fail(a->cmd, "option %s: '%s' has %lu numbers, needs at least %lu", a->opt, v,
+                         (unsigned long)count, (unsigned long)min);
+    }
+    *n = count;
+    return 1;
+}
+
+/* ---- data files ---- */
+
+/* One line of any length into *buf (grown); 0 at end of file, -1 out of memory. */
+static int read_line(FILE *f, char **buf, size_t *cap)
+{
+    size_t len = 0u;
+    int c;
+    while ((c = fgetc(f)) != EOF) {
+        if (len + 1u >= *cap) {
+            const size_t ncap = *cap ? 2u * *cap : 256u;
+            char *nb = (char *)realloc(*buf, ncap);
+            if (nb == NULL) {
+                return -1;
+            }
+            *buf = nb;
+            *cap = ncap;
+        }
+        if (c == '\n') {
+            break;
+        }
+        (*buf)[len++] = (char)c;
+    }
+    if (c == EOF && len == 0u) {
+        return 0;
+    }
+    if (len > 0u && (*buf)[len - 1u] == '\r') {
+        --len;
+    }
+    (*buf)[len] = '\0';
+    return 1;
+}
+
+static int is_space(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+static int is_delim(char c) { return c == ',' || c == ';'; }
+
+/* Splits a data line into fields, in place: runs of blanks separate, and so
+ * does one ',' or ';' with optional blanks around it. Returns the count, or
+ * -(k) when field k is empty (two delimiters in a row, or one at an end). */
+static long split_fields(char *line, char **field, long max)
+{
+    char *p = line;
+    long n = 0;
+    for (;;) {
+        char *start;
+        while (is_space(*p)) {
+            ++p;
+        }
+        if (*p == '\0') {
+            return (n > 0 && p > line && is_delim(p[-1])) ? -(n + 1) : n;
+        }
+        if (is_delim(*p)) {
+            return -(n + 1);
+        }
+        start = p;
+        while (*p != '\0' && !is_space(*p) && !is_delim(*p)) {
+            ++p;
+        }
+        if (n < max) {
+            field[n] = start;
+        }
+        ++n;
+        while (is_space(*p)) {
+            *p++ = '\0';
+        }
+        if (is_delim(*p)) {
+            *p++ = '\0';
+            while (is_space(*p)) {
+                ++p;
+            }
+            if (*p == '\0' || is_delim(*p)) {
+                return -(n + 1);
+            }
+        } else if (*p != '\0') {
+            continue; /* blank-separated */
+        }
+    }
+}
+
+static int table_push(cli_table_t *t, const double *v, unsigned ncols)
+{
+    unsigned c;
+    if (t->n == t->cap) {
+        const size_t ncap = t->cap ? 2u * t->cap : 1024u;
+        for (c = 0u; c < ncols; ++c) {
+            double *nb = (double *)realloc(t->col[c], ncap * sizeof(double));
+            if (nb == NULL) {
+                return -1;
+            }
+            t->col[c] = nb;
+        }
+        t->cap = ncap;
+    }
+    for (c = 0u; c < ncols; ++c) {
+        t->col[c][t->n] = v[c];
+    }
+    ++t->n;
+    return 0;
+}
+
+void cli_table_free(cli_table_t *t)
+{
+    unsigned c;
+    for (c = 0u; c < CLI_MAX_COLS; ++c) {
+        free(t->col[c]);
+        t->col[c] = NULL;
+    }
+    t->n = t->cap = 0u;
+}
+
+
+int cli_read_columns(const char *cmd, const char *path, const unsigned long *cols,
+                     unsigned ncols, cli_table_t *t)
+{
+    const char *name = cli_file_name(path);
+    const int use_stdin = path == NULL || strcmp(path, "-") == 0;
+    FILE *f = use_stdin ? stdin : fopen(path, "r");
+    char *line = NULL;
+    size_t cap = 0u;
+    unsigned long lineno = 0ul;
+    int rc = 0, got;
+    unsigned c;
+
+    memset(t, 0, sizeof *t);
+    if (f == NULL) {
+        return -cli_fail(cmd, "%s: cannot open: %s", name, strerror(errno));
+    }
+    while (rc == 0 && (got = read_line(f, &line, &cap)) != 0) {
+        char *field[CLI_MAX_FIELD];
+        double v[CLI_MAX_COLS];
+        const char *p = line;
+        long nf;
+        ++lineno;
+        if (got < 0) {
+            rc = -cli_fail(cmd, "%s:%lu: out of memory", name, lineno);
+            break;
+        }
+        while (is_space(*p)) {
+            ++p;
+        }
+        if (*p == '\0' || *p == '#') {
+            continue;
+        }
+        nf = split_fields(line, field, CLI_MAX_FIELD);
+        if (nf < 0) {
+            rc = -cli_fail(cmd, "%s:%lu: field %ld is empty", name, lineno, -nf);
+            break;
+        }
+        for (c = 0u; c < ncols && rc == 0; ++c) {
+            if ((unsigned long)nf < cols[c]) {
+                rc = -cli_fail(cmd, "%s:%lu: field %lu is missing (the line has %ld field%s)",
+                               name, lineno, cols[c], nf, nf == 1 ? "" : "s");
+            } else if (!cli_parse_double(field[cols[c] - 1u], &v[c])) {
+                rc = -cli_fail(cmd, "%s:%lu: field %lu: '%s' is not a finite number", name,
+                               lineno, cols[c], field[cols[c] - 1u]);
+            }
+        }
+        if (rc == 0 && table_push(t, v, ncols) != 0) {
+            rc = -cli_fail(cmd, "%s:%lu: out of memory", name, lineno);
+        }
+    }
+    if (rc == 0 && ferror(f)) {
+        rc = -cli_fail(cmd, "%s: read error", name);
+    }
+    if (rc == 0 && t->n == 0u) {
+        rc = -cli_fail(cmd, "%s: no data (the file is empty or holds only comments and blank "
+                            "lines)",
+                       name);
+    }
+    free(line);
+    if (!use_stdin) {
+        (void)fclose(f);
+    }
+    if (rc != 0) {
+        cli_table_free(t);
+    }
+    return rc;
+}
+
+void cli_c_literal(char *buf, size_t len, double v)
+{
+    (void)snprintf(buf, len, "%.17g", v);
+    if (strpbrk(buf, ".eEn") == NULL && strlen(buf) + 3u < len) {
+        strcat(buf, ".0");
+    }
+}

@@ -1,0 +1,257 @@
+/* hyst fit: identify f0 from measured input/output columns. */
+#include "cli.h"
+#include "hyst/hyst.h"
+
+#include <ctype.h>
+#include <stdio.h>
+#include <string.h>
+
+static const char help[] =
+    "usage: hyst fit --degree N [--skip S] [--delay D] [--xcol I --ycol J]\n"
+    "                [--method joint|reflect] [--domain LO,HI] [--header NAME] FILE\n"
+    "\n"
+    "Fits the major ascending curve f0 (polynomial of degree N) of a hysteresis\n"
+    "loop to the input/output record in FILE ('-' = standard input), excited by a\n"
+    "full-range periodic wave. Columns are separated by blanks, ',' or ';';\n"
+    "'#' lines and blank lines are skipped.\n"
+    "\n"
+    "  --degree N     polynomial degree, 1..9 (required)\n"
+    "  --skip S       drop the first S data lines (settling; default 0)\n"
+    "  --delay D      the output lags the input by D samples (default 0)\n"
+    "  --xcol I       input column, 1-based (default 1)\n"
+    "  --ycol J       output column, 1-based (default 2)\n"
+    "  --method M     joint (default): both branches in one least-squares problem;\n"
+    "                 reflect: the paper's Eq. 14, falling samples reflected with\n"
+    "                 the outputs measured at the extreme inputs\n"
+    "  --domain LO,HI domain of f0 (default: the range of the inputs used);\n"
+    "                 samples outside it are ignored\n"
+    "  --header NAME  also write NAME.h holding\n"
+    "                 'static const hyst_poly_t NAME = {...};' for firmware\n"
+    "  --help         this text\n"
+    "\n"
+    "Output: line 1 the coefficients cN,...,c0 (highest power first), line 2 LO,HI,\n"
+    "line 3 the RMS and max residual against the fitted major loop (output units),\n"
+    "then '#' comment lines.\n"
+    "Exit status: 0 success; 1 bad option or input (nothing printed); 2 the fitted\n"
+    "f0 is not increasing on the domain (results printed, no header written).\n";
+
+typedef struct fit_opts {
+    hyst_ident_config_t cfg;
+    unsigned long cols[2];
+    const char *file;
+    const char *header;
+    int have_degree;
+} fit_opts_t;
+
+static int valid_identifier(const char *s)
+{
+    size_t i;
+    if (!(isalpha((unsigned char)s[0]) || s[0] == '_')) {
+        return 0;
+    }
+    for (i = 1u; s[i] != '\0'; ++i) {
+        if (!(isalnum((unsigned char)s[i]) || s[i] == '_')) {
+            return 0;
+        }
+    }
+    return i < 200u;
+}
+
+/* 0 on success, 1 after a message, -1 after --help. */
+static int parse(fit_opts_t *o, int argc, char **argv)
+{
+    cli_args_t a;
+    const char *pos = NULL, *v;
+    unsigned long u;
+    double dom[2];
+    size_t nd;
+    int kind;
+    memset(o, 0, sizeof *o);
+    o->cols[0] = 1ul;
+    o->cols[1] = 2ul;
+    o->cfg.method = HYST_IDENT_JOINT;
+    cli_args_init(&a, "fit", argc, argv);
+    while ((kind = cli_args_next(&a, &pos)) != CLI_END) {
+        if (kind < 0) {
+            return 1;
+        }
+        if (kind == CLI_POS) {
+            if (o->file != NULL) {
+                return cli_fail(a.cmd, "more than one input file ('%s', '%s')", o->file, pos);
+            }
+            o->file = pos;
+            continue;
+        }
+        if (cli_is(&a, "--help") || cli_is(&a, "-h")) {
+            (void)fputs(help, stdout);
+            return -1;
+        }
+        if ((v = cli_value(&a)) == NULL) {
+            return 1;
+        }
+        if (cli_is(&a, "--degree")) {
+            if (!cli_opt_ulong(&a, v, 1ul, HYST_MAX_DEGREE, &u)) {
+                return 1;
+            }
+            o->cfg.degree = (unsigned)u;
+            o->have_degree = 1;
+        } else if (cli_is(&a, "--skip") || cli_is(&a, "--delay")) {
+            if (!cli_opt_ulong(&a, v, 0ul, 1000000000ul, &u)) {
+                return 1;
+            }
+            *(cli_is(&a, "--skip") ? &o->cfg.skip : &o->cfg.delay) = (size_t)u;
+        } else if (cli_is(&a, "--xcol") || cli_is(&a, "--ycol")) {
+            if (!cli_opt_ulong(&a, v, 1ul, CLI_MAX_FIELD, &u)) {
+                return 1;
+            }
+            o->cols[cli_is(&a, "--xcol") ? 0 : 1] = u;
+        } else if (cli_is(&a, "--method")) {
+            if (strcmp(v, "joint") == 0) {
+                o->cfg.method = HYST_IDENT_JOINT;
+            } else if (strcmp(v, "reflect") == 0) {
+                o->cfg.method = HYST_IDENT_REFLECT;
+            } else {
+                return cli_fail(a.cmd, "option --method: '%s' is neither joint nor reflect", v);
+            }
+        } else if (cli_is(&a, "--domain")) {
+            if (!cli_opt_list(&a, v, dom, 2u, 2u, &nd)) {
+                return 1;
+            }
+            if (!(dom[0] < dom[1])) {
+                return cli_fail(a.cmd, "option --domain: LO must be below HI in '%s'", v);
+            }
+            o->cfg.lo = dom[0];
+            o->cfg.hi = dom[1];
+        } else if (cli_is(&a, "--header")) {
+            if (!valid_identifier(v)) {
+                return cli_fail(a.cmd, "option --header: '%s' is not a C identifier", v);
+            }
+            o->header = v;
+        } else {
+            return cli_unknown(&a);
+        }
+    }
+    if (!o->have_degree) {
+        return cli_fail(a.cmd, "--degree is required (see 'hyst fit --help')");
+    }
+    if (o->file == NULL) {
+        return cli_fail(a.cmd, "no input FILE (use '-' for standard input)");
+    }
+    return 0;
+}
+
+static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflect" : "joint"; }
+
+static int write_header(const fit_opts_t *o, const hyst_ident_result_t *r)
+{
+    char path[256], lit[40], guard[256];
+    size_t i;
+    unsigned k;
+    FILE *f;
+    (void)snprintf(path, sizeof path, "%s.h", o->header);
+    for (i = 0u; o->header[i] != '\0' && i + 3u < sizeof guard; ++i) {
+        guard[i] = (char)toupper((unsigned char)o->header[i]);
+    }
+    memcpy(guard + i, "_H", 3u);
+    f = fopen(path, "w");
+    if (f == NULL) {
+        return cli_fail("fit", "%s: cannot write the header", path);
+    }
+    (void)fprintf(f,
+                  "/* Generated by 'hyst fit': major ascending curve f0 identified from\n"
+                  " * %s (x column %lu, y column %lu, skip %lu, delay %lu),\n"
+                  " * degree %u, %s estimator, domain [%.9g, %.9g].\n"
+                  " * Residual against the major loop over %lu samples:\n"
+                  " * RMS %.4g, max %.4g (output units). */\n",
+                  cli_file_name(o->file), o->cols[0], o->cols[1], (unsigned long)o->cfg.skip,
+                  (unsigned long)o->cfg.delay, r->degree, method_name(r->method),
+                  (double)r->lo, (double)r->hi, (unsigned long)r->used, (double)r->rms,
+                  (double)r->max_abs);
+    (void)fprintf(f, "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n\n", guard, guard);
+    (void)fprintf(f, "static const hyst_poly_t %s = {\n    %uu, ", o->header, r->degree);
+    cli_c_literal(lit, sizeof lit, (double)r->lo);
+    (void)fprintf(f, "HYST_REAL_C(%s), ", lit);
+    cli_c_literal(lit, sizeof lit, (double)r->hi);
+    (void)fprintf(f, "HYST_REAL_C(%s),\n    {", lit);
+    for (k = 0u; k <= r->degree; ++k) {
+        cli_c_literal(lit, sizeof lit, (double)r->coeffs[k]);
+        (void)fprintf(f, "%sHYST_REAL_C(%s)", k ? ",\n     " : "", lit);
+    }
+    (void)fprintf(f, "}};\n\n#endif /* %s */\n", guard);
+    if (fclose(f) != 0) {
+        return cli_fail("fit", "%s: write error", path);
+    }
+    (void)fprintf(stderr, "hyst fit: wrote %s\n", path);
+    return 0;
+}
+
+int cmd_fit(int argc, char **argv)
+{
+    fit_opts_t o;
+    cli_table_t t;
+    hyst_ident_t work;
+    hyst_ident_result_t r;
+    hyst_status_t st;
+    const char *name;
+    size_t pairs, nread;
+    unsigned k;
+    int rc = parse(&o, argc, argv);
+    if (rc != 0) {
+        return rc < 0 ? 0 : rc;
+    }
+    name = cli_file_name(o.file);
+    if (cli_read_columns("fit", o.file, o.cols, 2u, &t) != 0) {
+        return 1;
+    }
+    nread = t.n;
+    pairs = t.n > o.cfg.skip + o.cfg.delay ? t.n - o.cfg.skip - o.cfg.delay : 0u;
+    st = pairs == 0u ? HYST_ERR_ARG : hyst_ident_fit(&o.cfg, t.col[0], t.col[1], t.n, &work, &r);
+    cli_table_free(&t);
+    switch (st) {
+    case HYST_OK:
+        break;
+    case HYST_ERR_ARG:
+        return cli_fail("fit", "%s: --skip %lu and --delay %lu leave no sample of the %lu read",
+                        name, (unsigned long)o.cfg.skip, (unsigned long)o.cfg.delay,
+                        (unsigned long)nread);
+    case HYST_ERR_SINGULAR:
+        return cli_fail("fit", "%s: too few distinct inputs for degree %u", name, o.cfg.degree);
+    case HYST_ERR_DOMAIN:
+        return cli_fail("fit", "%s: the inputs do not span a range (all equal?)", name);
+    default:
+        return cli_fail("fit", "%s: %s", name, hyst_status_str(st));
+    }
+    if (r.increasing && o.header != NULL && write_header(&o, &r) != 0) {
+        return 1;
+    }
+    for (k = 0u; k <= r.degree; ++k) {
+        (void)printf("%s%.15g", k ? "," : "", (double)r.coeffs[k]);
+    }
+    (void)printf("\n%.15g,%.15g\n%.6g,%.6g\n", (double)r.lo, (double)r.hi, (double)r.rms,
+                 (double)r.max_abs);
+    (void)printf("# residual rms,max above; %s estimator, degree %u, %lu of %lu samples used "
+                 "(%lu rising, %lu falling)\n",
+                 method_name(r.method), r.degree, (unsigned long)r.used, (unsigned long)pairs,
+                 (unsigned long)r.rising, (unsigned long)r.falling);
+    if (r.method == HYST_IDENT_REFLECT) {
+        (void)printf("# y(lo), y(hi) measured for Eq. 14: %.9g, %.9g\n", (double)r.y_lo_est,
+                     (double)r.y_hi_est);
+    }
+    if (r.increasing) {
+        (void)printf("# f0 increases on [%.9g, %.9g]\n", (double)r.lo, (double)r.hi);
+    } else {
+        (void)printf("# f0 NOT increasing: slope negative at x = %.9g\n", (double)r.turn);
+    }
+    if (fflush(stdout) != 0) {
+        return cli_fail("fit", "write error on standard output");
+    }
+    if (!r.increasing) {
+        (void)fprintf(stderr,
+                      "hyst fit: %s: the fitted f0 is not increasing on [%.9g, %.9g] (slope "
+                      "negative at x = %.9g): try another degree%s\n",
+                      name, (double)r.lo, (double)r.hi, (double)r.turn,
+                      o.header != NULL ? "; no header written" : "");
+        return 2;
+    }
+    return 0;
+}

@@ -1,0 +1,51 @@
+/* `hyst`: command-line front end of the hyst library (host only).
+ * Subcommands live in cmd_<name>.c; add one by adding a row to the table. */
+#include "cli.h"
+#include "hyst/hyst.h"
+
+#include <stdio.h>
+#include <string.h>
+
+typedef struct {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} command_t;
+
+static const command_t commands[] = {
+    {"fit", cmd_fit, "identify f0 from measured input/output columns"},
+    {"sim", cmd_sim, "run the hysteresis model over input samples"},
+};
+
+static void usage(FILE *out)
+{
+    size_t i;
+    (void)fprintf(out, "usage: hyst <command> [options] [FILE]\n\ncommands:\n");
+    for (i = 0u; i < sizeof commands / sizeof commands[0]; ++i) {
+        (void)fprintf(out, "  %-6s %s\n", commands[i].name, commands[i].summary);
+    }
+    (void)fprintf(out, "\n'hyst <command> --help' describes a command. hyst %d.%d.%d\n",
+                  HYST_VERSION_MAJOR, HYST_VERSION_MINOR, HYST_VERSION_PATCH);
+}
+
+int main(int argc, char **argv)
+{
+    size_t i;
+    if (argc < 2) {
+        usage(stderr);
+        return 1;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
+        strcmp(argv[1], "help") == 0) {
+        usage(stdout);
+        return 0;
+    }
+    for (i = 0u; i < sizeof commands / sizeof commands[0]; ++i) {
+        if (strcmp(argv[1], commands[i].name) == 0) {
+            return commands[i].run(argc - 1, argv + 1);
+        }
+    }
+    (void)fprintf(stderr, "hyst: unknown command '%s'\n", argv[1]);
+    usage(stderr);
+    return 1;
+}
