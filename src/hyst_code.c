@@ -34,12 +34,12 @@ hyst_status_t hyst_code_init_curve(hyst_code_t *S, const hyst_curve_t *curve,
                                    hyst_code_word_t *xrtp, hyst_real_t *yrtp,
                                    size_t capacity)
 {
-    if (S == NULL || curve == NULL || xltp == NULL || yltp == NULL ||
-        xrtp == NULL || yrtp == NULL) {
+    const hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
+    if (curve == NULL) {
         return HYST_ERR_NULL;
     }
-    if (capacity < 2u) {
-        return HYST_ERR_CAPACITY;
+    if (st != HYST_OK) {
+        return st;
     }
     if (!(code_lo < code_hi) || code_hi > HYST_CODE_MAX) {
         return HYST_ERR_DOMAIN;
@@ -63,19 +63,13 @@ hyst_status_t hyst_code_init(hyst_code_t *S, const hyst_poly_t *f0, uint_least32
                              size_t capacity)
 {
     hyst_curve_t curve;
-    hyst_status_t st;
-    if (S == NULL || xltp == NULL || yltp == NULL || xrtp == NULL || yrtp == NULL) {
-        return HYST_ERR_NULL;
+    hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
+    if (st == HYST_OK) {
+        st = hyst_curve_from_poly(&curve, f0);
     }
-    if (capacity < 2u) {
-        return HYST_ERR_CAPACITY;
-    }
-    st = hyst_curve_from_poly(&curve, f0);
-    if (st != HYST_OK) {
-        return st;
-    }
-    return hyst_code_init_curve(S, &curve, code_lo, code_hi, xltp, yltp, xrtp, yrtp,
-                                capacity);
+    return st != HYST_OK ? st
+                         : hyst_code_init_curve(S, &curve, code_lo, code_hi, xltp, yltp, xrtp,
+                                                yrtp, capacity);
 }
 
 void hyst_code_reset(hyst_code_t *S) { tcm_reset(S); }

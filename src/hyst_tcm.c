@@ -41,12 +41,12 @@ hyst_status_t hyst_init_curve(hyst_t *S, const hyst_curve_t *curve,
                               hyst_real_t *xrtp, hyst_real_t *yrtp,
                               size_t capacity)
 {
-    if (S == NULL || curve == NULL || xltp == NULL || yltp == NULL ||
-        xrtp == NULL || yrtp == NULL) {
+    const hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
+    if (curve == NULL) {
         return HYST_ERR_NULL;
     }
-    if (capacity < 2u) {
-        return HYST_ERR_CAPACITY;
+    if (st != HYST_OK) {
+        return st;
     }
     if (curve->kind != HYST_CURVE_POLY) {
         return HYST_ERR_ARG;
@@ -61,18 +61,11 @@ hyst_status_t hyst_init(hyst_t *S, const hyst_poly_t *f0, hyst_real_t *xltp,
                         size_t capacity)
 {
     hyst_curve_t curve;
-    hyst_status_t st;
-    if (S == NULL || xltp == NULL || yltp == NULL || xrtp == NULL || yrtp == NULL) {
-        return HYST_ERR_NULL;
+    hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
+    if (st == HYST_OK) {
+        st = hyst_curve_from_poly(&curve, f0);
     }
-    if (capacity < 2u) {
-        return HYST_ERR_CAPACITY;
-    }
-    st = hyst_curve_from_poly(&curve, f0);
-    if (st != HYST_OK) {
-        return st;
-    }
-    return hyst_init_curve(S, &curve, xltp, yltp, xrtp, yrtp, capacity);
+    return st != HYST_OK ? st : hyst_init_curve(S, &curve, xltp, yltp, xrtp, yrtp, capacity);
 }
 
 void hyst_reset(hyst_t *S) { tcm_reset(S); }
