@@ -148,7 +148,7 @@ hyst_status_t hyst_code_set_deadband(hyst_code_t *S, uint_least32_t codes);
  *
  * As hyst_step(): a constant fast path while the code moves on along its
  * branch; one binary search when a stored TP is passed; a merge (full
- * array) costs up to 2 + 2 * 24 evaluations of g.
+ * array) costs at most 6 + 2 * bits evaluations of g (38 at 16 bits).
  * A code outside [code_lo, code_hi] is clamped (status HYST_WARN_CLAMPED).
  * @param[in,out] S     initialised instance.
  * @param[in]     code  input code.

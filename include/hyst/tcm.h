@@ -34,7 +34,8 @@
  * R1, is at most max|f0''| w^2 / 4 (w = input width of the forgotten loop),
  * at most its output height and never more than the former jump;
  * hyst_error_bound() adds up the misses that can still matter. A merge costs
- * up to 2 + 2 * 24 evaluations of g, on the overflowing sample only.
+ * at most 54 evaluations of g (6 + 2 per bisection step, at most 24 steps),
+ * on the overflowing sample only.
  *
  * Instances share nothing: several may run side by side (multi-axis stages).
  */
