@@ -30,6 +30,15 @@ typedef struct {
 
 static eng_t E;
 
+/* The curve under test: the paper's Eq. 20 (convex) unless a test swaps in
+ * the concave one; cubic coefficients, highest power first. */
+static const double concave_coeffs[4] = {0.0, -0.01, 1.0, 0.5};
+static const hyst_poly_t concave = {3u, HYST_REAL_C(0.0), HYST_REAL_C(40.0),
+                                    {HYST_REAL_C(0.0), HYST_REAL_C(-0.01), HYST_REAL_C(1.0),
+                                     HYST_REAL_C(0.5)}};
+static const hyst_poly_t *curve_poly = &paper_eq20;
+static const double *curve_c = paper_eq20_coeffs;
+
 void setUp(void) { rng_seed(&rng, 777u); }
 void tearDown(void) {}
 
@@ -37,10 +46,10 @@ static void eng_init(eng_t *e, int code, size_t cap)
 {
     e->code = code;
     if (code) {
-        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init(&e->c, &paper_eq20, 0u, (uint_least32_t)CODES,
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init(&e->c, curve_poly, 0u, (uint_least32_t)CODES,
                                                       e->xc[0], e->y[0], e->xc[1], e->y[1], cap));
     } else {
-        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&e->f, &paper_eq20, e->xf[0], e->y[0], e->xf[1],
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&e->f, curve_poly, e->xf[0], e->y[0], e->xf[1],
                                                  e->y[1], cap));
     }
 }
@@ -96,13 +105,13 @@ static double slope_max, slope_min, curv_max, out_range;
 static void curve_facts(void)
 {
     int k;
-    ref_init(&ref, paper_eq20_coeffs, 3u, LO, HI);
+    ref_init(&ref, curve_c, 3u, LO, HI);
     slope_max = 0.0;
     slope_min = 1e300;
     curv_max = 0.0;
     for (k = 0; k <= 1000; ++k) {
         const double x = LO + (HI - LO) * k / 1000.0;
-        const double c = paper_eq20_coeffs[0], b = paper_eq20_coeffs[1], a = paper_eq20_coeffs[2];
+        const double c = curve_c[0], b = curve_c[1], a = curve_c[2];
         const double s = 3 * c * x * x + 2 * b * x + a;
         const double s2 = 6 * c * x + 2 * b;
         slope_max = s > slope_max ? s : slope_max;
@@ -191,7 +200,7 @@ static stats_t run(int code, size_t cap, double db, int kind, long n, double ste
     if (db > 0.0) {
         dbq = eng_set_deadband(&E, db);
     }
-    ref_init(&ref, paper_eq20_coeffs, 3u, LO, HI);
+    ref_init(&ref, curve_c, 3u, LO, HI);
     y_prev = ref_f0(&ref, LO);
     s.kind = kind;
     s.x = s.target = s.centre = 20.0;
@@ -267,6 +276,19 @@ static void check_all_kinds(int code)
 static void test_bound_holds_real_inputs(void) { check_all_kinds(0); }
 static void test_bound_holds_codes(void) { check_all_kinds(1); }
 
+/* f0 concave (f0'' < 0: the loops run the other way round): same bounds. */
+static void test_bound_holds_on_a_concave_curve(void)
+{
+    curve_poly = &concave;
+    curve_c = concave_coeffs;
+    curve_facts();
+    check_all_kinds(0);
+    check_all_kinds(1);
+    curve_poly = &paper_eq20;
+    curve_c = paper_eq20_coeffs;
+    curve_facts();
+}
+
 /* The case the former policy got wrong: A0, R0, L1, R1 stored (capacity 2),
  * reversal at P inside (L1, R1). Dropping L1, R1 and storing P made the
  * output jump by J on reaching R0; the merge keeps it continuous and the
@@ -278,7 +300,7 @@ static void test_overflow_is_continuous_where_dropping_jumped(void)
     double x, y_prev, worst = 0.0;
     int fulls = 0;
     eng_init(&E, 0, 2u);
-    ref_init(&ref, paper_eq20_coeffs, 3u, LO, HI);
+    ref_init(&ref, curve_c, 3u, LO, HI);
     (void)eng_step(&E, xr0);
     (void)ref_step(&ref, xr0);
     (void)eng_step(&E, xl1);
@@ -422,6 +444,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_bound_holds_real_inputs);
     RUN_TEST(test_bound_holds_codes);
+    RUN_TEST(test_bound_holds_on_a_concave_curve);
     RUN_TEST(test_overflow_is_continuous_where_dropping_jumped);
     RUN_TEST(test_reaching_an_end_restores_the_exact_model);
     RUN_TEST(test_deadband_keeps_noise_out_of_memory);
