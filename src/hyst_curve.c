@@ -1,12 +1,7 @@
 /* Polynomial curve set-up: validation, shift/scale to [0, 1], monotonicity. */
 #include "hyst/curve.h"
+#include "hyst_internal.h"
 
-/* Finite test without libm: NaN fails x == x, +-Inf gives Inf - Inf = NaN. */
-static int wide_is_finite(hyst_wide_t v)
-{
-    hyst_wide_t z = v - v;
-    return z == z;
-}
 
 /* Rewrites p (highest power first, degree n) as the coefficients of
  * p(x0 + t) (Ruffini-Horner Taylor shift). */
@@ -155,13 +150,18 @@ int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
     for (k = 1u; k <= degree; ++k) {
         total += g[k];
     }
-    ok = unit_increasing(g, degree, &turn_u);
-    if (ok && !(total > 0)) { /* slope never negative yet f0(hi) <= f0(lo): constant */
-        ok = 0;
-        turn_u = 0;
+    if (!hyst_wide_is_finite(total)) {
+        ok = 0; /* the curve overflows hyst_wide_t on the domain: nothing provable */
+    } else {
+        ok = unit_increasing(g, degree, &turn_u);
+        if (ok && !(total > 0)) { /* slope never negative yet f0(hi) <= f0(lo): constant */
+            ok = 0;
+            turn_u = 0;
+        }
     }
     if (!ok && turn != NULL) {
-        *turn = lo + turn_u * (hi - lo);
+        const hyst_wide_t at = lo + turn_u * (hi - lo);
+        *turn = at > hi ? hi : at; /* rounding must not leave the domain */
     }
     return ok;
 }
@@ -183,12 +183,12 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
     }
     lo = f0->lo;
     hi = f0->hi;
-    if (!wide_is_finite(lo) || !wide_is_finite(hi) || !(lo < hi)) {
+    if (!hyst_wide_is_finite(lo) || !hyst_wide_is_finite(hi) || !(lo < hi)) {
         return HYST_ERR_DOMAIN;
     }
     for (k = 0u; k <= n; ++k) {
         c[k] = f0->coeffs[k];
-        if (!wide_is_finite(c[k])) {
+        if (!hyst_wide_is_finite(c[k])) {
             return HYST_ERR_COEFF;
         }
     }
@@ -206,12 +206,12 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
     out.inv_span = (hyst_real_t)(1 / (hi - lo));
     for (k = 0u; k < n; ++k) {
         out.a[k] = (hyst_real_t)g[n - k]; /* a[0] multiplies u^n */
-        if (!wide_is_finite((hyst_wide_t)out.a[k])) {
+        if (!hyst_wide_is_finite((hyst_wide_t)out.a[k])) {
             return HYST_ERR_COEFF;
         }
     }
-    if (!wide_is_finite((hyst_wide_t)out.y_lo) || !wide_is_finite((hyst_wide_t)out.y_hi) ||
-        !wide_is_finite((hyst_wide_t)out.inv_span)) {
+    if (!hyst_wide_is_finite((hyst_wide_t)out.y_lo) || !hyst_wide_is_finite((hyst_wide_t)out.y_hi) ||
+        !hyst_wide_is_finite((hyst_wide_t)out.inv_span)) {
         return HYST_ERR_COEFF;
     }
     if (!hyst_poly_is_increasing(c, n, lo, hi, NULL)) {

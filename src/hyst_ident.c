@@ -2,6 +2,8 @@
  * Chebyshev basis of the scaled input t = (x - mid) / half in [-1, 1]. */
 #include "hyst/ident.h"
 
+#include "hyst_internal.h"
+
 #include <math.h>
 
 #if defined(HYST_NO_DOUBLE) && !defined(HYST_USE_DOUBLE)
@@ -12,12 +14,6 @@
 #define WIDE_EPS ((hyst_wide_t)2.3e-16)
 #endif
 
-/* Finite test without classification macros: NaN fails v == v. */
-static int wide_is_finite(hyst_wide_t v)
-{
-    hyst_wide_t z = v - v;
-    return z == z;
-}
 
 static hyst_wide_t wide_abs(hyst_wide_t v) { return v < 0 ? -v : v; }
 
@@ -95,7 +91,7 @@ static void givens_add(hyst_wide_t *r, unsigned m, hyst_wide_t *v)
 /* Checks the sample shared by add and check; 0 if usable. */
 static hyst_status_t sample_status(const hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y)
 {
-    if (!wide_is_finite(x) || !wide_is_finite(y)) {
+    if (!hyst_wide_is_finite(x) || !hyst_wide_is_finite(y)) {
         return HYST_ERR_NONFINITE;
     }
     if (x < id->lo || x > id->hi) {
@@ -119,8 +115,8 @@ hyst_status_t hyst_ident_init(hyst_ident_t *id, const hyst_ident_config_t *cfg)
     if (cfg->degree < 1u || cfg->degree > HYST_MAX_DEGREE) {
         return HYST_ERR_DEGREE;
     }
-    if (!wide_is_finite(cfg->lo) || !wide_is_finite(cfg->hi) || !(cfg->lo < cfg->hi) ||
-        !wide_is_finite(cfg->hi - cfg->lo)) {
+    if (!hyst_wide_is_finite(cfg->lo) || !hyst_wide_is_finite(cfg->hi) || !(cfg->lo < cfg->hi) ||
+        !hyst_wide_is_finite(cfg->hi - cfg->lo)) {
         return HYST_ERR_DOMAIN;
     }
     method = method_of(cfg->method);
@@ -182,7 +178,6 @@ hyst_status_t hyst_ident_add(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y)
     const unsigned n = id->degree;
     hyst_status_t st;
     hyst_wide_t t;
-    unsigned k;
     int dir;
 
     if (id->phase != 0) {
@@ -206,6 +201,7 @@ hyst_status_t hyst_ident_add(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y)
     if (dir > 0) {
         ++id->rising;
     } else {
+        unsigned k;
         ++id->falling;
         for (k = 0u; k <= n; ++k) {
             const hyst_wide_t odd = (k & 1u) ? -1 : 1; /* T_k(-t) = (-1)^k T_k(t) */
@@ -399,7 +395,7 @@ hyst_status_t hyst_ident_domain(const hyst_wide_t *x, size_t n, hyst_wide_t *lo,
         return HYST_ERR_NULL;
     }
     for (i = 0u; i < n; ++i) {
-        if (!wide_is_finite(x[i])) {
+        if (!hyst_wide_is_finite(x[i])) {
             continue;
         }
         if (!any || x[i] < a) {
@@ -471,8 +467,8 @@ hyst_status_t hyst_ident_poly(const hyst_ident_result_t *res, hyst_poly_t *f0)
     out.hi = (hyst_real_t)res->hi;
     for (k = 0u; k <= HYST_MAX_DEGREE; ++k) {
         out.coeffs[k] = k <= res->degree ? (hyst_real_t)res->coeffs[k] : 0;
-        if (!wide_is_finite((hyst_wide_t)out.coeffs[k]) || !wide_is_finite((hyst_wide_t)out.lo) ||
-            !wide_is_finite((hyst_wide_t)out.hi)) {
+        if (!hyst_wide_is_finite((hyst_wide_t)out.coeffs[k]) || !hyst_wide_is_finite((hyst_wide_t)out.lo) ||
+            !hyst_wide_is_finite((hyst_wide_t)out.hi)) {
             return HYST_ERR_COEFF;
         }
     }

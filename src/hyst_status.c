@@ -17,6 +17,10 @@ const char *hyst_status_str(int status)
     case HYST_ERR_ARG: return "invalid argument";
     case HYST_ERR_NOSPACE: return "buffer too small";
     case HYST_ERR_SINGULAR: return "too few distinct inputs for the fit";
+    case HYST_ERR_FORMAT: return "not a valid snapshot (magic, length or state)";
+    case HYST_ERR_CRC: return "snapshot checksum mismatch";
+    case HYST_ERR_VERSION: return "snapshot version or real type differs";
+    case HYST_ERR_CURVE: return "snapshot taken with a different curve";
     default: return "unknown status";
     }
 }

@@ -1,6 +1,7 @@
 /* The TCM engine with real inputs: validation, admission of samples, and the
  * shared engine (tcm_engine.inc) over hyst_real_t. */
 #include "hyst/tcm.h"
+#include "hyst_internal.h"
 
 /* Out-of-line so the common path stays short: NaN/Inf or outside [lo, hi].
  * Returns 0 if the sample must be ignored, else 1 with *x clamped. */
@@ -69,6 +70,18 @@ hyst_status_t hyst_init(hyst_t *S, const hyst_poly_t *f0, hyst_real_t *xltp,
 }
 
 void hyst_reset(hyst_t *S) { tcm_reset(S); }
+
+void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y)
+{
+    /* The snapshot carries the TPs, not the bookkeeping of what bounded
+     * memory forgot: the error bound counts again from here. */
+    S->forgot = 0;
+    S->forgot_level = TCM_NO_LEVEL;
+    S->db_reach = 0;
+    S->db_err = 0;
+    settle(S, x);
+    S->y_prev = y;
+}
 
 hyst_status_t hyst_set_deadband(hyst_t *S, hyst_real_t width)
 {

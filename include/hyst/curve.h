@@ -83,8 +83,9 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0);
  * @param[in]  degree 1..HYST_MAX_DEGREE.
  * @param[in]  lo, hi domain, lo < hi.
  * @param[out] turn   if not NULL and f0 is not increasing: an x in [lo, hi]
- *                    where the slope is negative (the leftmost one found).
- * @return 1 if increasing, 0 if not.
+ *                    where the slope is negative (the leftmost one found);
+ *                    lo when f0 overflows hyst_wide_t on the domain.
+ * @return 1 if increasing, 0 if not (or if f0 overflows hyst_wide_t there).
  */
 int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
                             hyst_wide_t lo, hyst_wide_t hi, hyst_wide_t *turn);

@@ -9,6 +9,7 @@
  *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
  *  - hyst/code.h:   the same TCM over integer DAC codes;
  *  - hyst/ident.h:  identification of f0 from measured data.
+ *  - hyst/snapshot.h: save/restore of an instance's memory (CRC-checked).
  */
 #ifndef HYST_HYST_H
 #define HYST_HYST_H
@@ -23,5 +24,6 @@
 #include "hyst/tcm.h"
 #include "hyst/code.h"
 #include "hyst/ident.h"
+#include "hyst/snapshot.h"
 
 #endif /* HYST_HYST_H */

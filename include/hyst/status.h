@@ -23,7 +23,11 @@ typedef enum hyst_status {
     HYST_ERR_NONFINITE = -7,     /**< a sample is NaN or infinite: ignored */
     HYST_ERR_ARG = -8,           /**< another argument is invalid (see the call) */
     HYST_ERR_NOSPACE = -9,       /**< a caller buffer is too small */
-    HYST_ERR_SINGULAR = -10      /**< too few distinct inputs for the fit (rank deficient) */
+    HYST_ERR_SINGULAR = -10,     /**< too few distinct inputs for the fit (rank deficient) */
+    HYST_ERR_FORMAT = -11,       /**< not a snapshot: bad magic, truncated, bad length or impossible state */
+    HYST_ERR_CRC = -12,          /**< snapshot checksum mismatch (corrupted) */
+    HYST_ERR_VERSION = -13,      /**< snapshot format version or real type differs */
+    HYST_ERR_CURVE = -14         /**< snapshot taken with a different curve */
 } hyst_status_t;
 
 /** @name Sticky event flags (hyst_events()): set by samples, cleared by the caller. */

@@ -1,0 +1,251 @@
+/* The paper's results, computed on the target (Cortex-M4F under QEMU, or the
+ * host) and printed as sections that tools/report.py turns into a report:
+ *   @section <name>      starts a section
+ *   @value <key> <num>   a scalar result
+ *   @table <name> <cols> a CSV table follows, one row per line
+ *   @end                 ends the section
+ * Every number is computed here; the host only draws. */
+#include "hyst/hyst.h"
+#include "hyst_port.h"
+#include "piezo_data.h"
+#include "plant_bw.h"
+#include "support.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#ifndef HYST_DATA_DIR
+#define HYST_DATA_DIR "tests/data"
+#endif
+
+#define NU 4096u /* 12-bit DAC, the paper's sizing */
+HYST_DEFINE(model, NU);
+
+static int failures;
+
+static void section(const char *name) { printf("@section %s\n", name); }
+static void end(void) { printf("@end\n"); }
+static void value(const char *key, double v) { printf("@value %s %.9g\n", key, v); }
+static void check(int ok, const char *what)
+{
+    if (!ok) {
+        printf("@value failed_%s 1\n", what);
+        ++failures;
+    }
+}
+
+/* Gaussian noise, Box-Muller on the tests' seeded generator. */
+static double gauss(rng_t *r)
+{
+    const double u1 = 1.0 - rng_unit(r); /* (0, 1] */
+    const double u2 = rng_unit(r);
+    return sqrt(-2.0 * log(u1)) * cos(6.283185307179586 * u2);
+}
+
+static void print_fit(const char *prefix, const hyst_ident_result_t *res)
+{
+    char key[48];
+    unsigned k;
+    for (k = 0u; k <= res->degree; ++k) {
+        (void)snprintf(key, sizeof key, "%s_c%u", prefix, res->degree - k);
+        value(key, (double)res->coeffs[k]);
+    }
+    (void)snprintf(key, sizeof key, "%s_rms", prefix);
+    value(key, (double)res->rms);
+}
+
+/* Simulation Example 1: f0 = x^2 on [0, 1], a full-range sine through the
+ * model, output noise 0.5 % of the range; both estimators, degree 2. */
+static void example1(void)
+{
+    static const hyst_poly_t sq = {2u, HYST_REAL_C(0.0), HYST_REAL_C(1.0),
+                                   {HYST_REAL_C(1.0), HYST_REAL_C(0.0), HYST_REAL_C(0.0)}};
+    static const int methods[2] = {HYST_IDENT_REFLECT, HYST_IDENT_JOINT};
+    static const char *names[2] = {"reflect", "joint"};
+    static hyst_ident_t id;
+    hyst_ident_result_t res;
+    int m;
+    section("example1");
+    value("noise_sigma", 0.005);
+    for (m = 0; m < 2; ++m) {
+        hyst_ident_config_t cfg = {0};
+        rng_t r;
+        long i;
+        cfg.degree = 2u;
+        cfg.method = methods[m];
+        cfg.lo = 0.0;
+        cfg.hi = 1.0;
+        rng_seed(&r, 777u);
+        check(HYST_INIT(model, &sq) == HYST_OK, "example1_init");
+        check(hyst_ident_init(&id, &cfg) == HYST_OK, "example1_ident");
+        for (i = 0; i < 2000; ++i) { /* 10 periods of 200 samples */
+            const double x = 0.5 - 0.5 * cos(6.283185307179586 * (double)i / 200.0);
+            const double y = (double)hyst_step(&model, (hyst_real_t)x) + 0.005 * gauss(&r);
+            (void)hyst_ident_add(&id, x, y);
+        }
+        check(hyst_ident_solve(&id, &res) == HYST_OK, "example1_solve");
+        print_fit(names[m], &res);
+        check(fabs((double)res.coeffs[0] - 1.0) < 0.005 && fabs((double)res.coeffs[1]) < 0.005 &&
+                  fabs((double)res.coeffs[2]) < 0.005,
+              "example1_tolerance");
+    }
+    end();
+}
+
+/* Excitation: 5 triangles 0..40..0 V in 0.1 V steps; returns the samples. */
+static long triangle_cycles(hyst_real_t *x, long max)
+{
+    double levels[10];
+    int k;
+    for (k = 0; k < 5; ++k) {
+        levels[2 * k] = 40.0;
+        levels[2 * k + 1] = 0.0;
+    }
+    return ramp_path(0.0, levels, 10, 0.1, x, max);
+}
+
+/* The experiment: identify f0 from a simulated piezo (Bouc-Wen, not a TCM),
+ * then predict its response to the paper's test signal. */
+static void experiment(void)
+{
+    static hyst_real_t xs[8192];
+    static hyst_ident_t id;
+    static const char *names[2] = {"reflect", "joint"};
+    static const int methods[2] = {HYST_IDENT_REFLECT, HYST_IDENT_JOINT};
+    hyst_ident_result_t fit[2];
+    double levels[32];
+    plant_bw_t plant;
+    hyst_poly_t f0;
+    double ss = 0.0, max_err = 0.0, y_min = 1e30, y_max = -1e30;
+    size_t max_tp = 0u;
+    long n, i;
+    int m;
+
+    section("experiment");
+    for (m = 0; m < 2; ++m) {
+        hyst_ident_config_t cfg = {0};
+        cfg.degree = 3u;
+        cfg.method = methods[m];
+        cfg.lo = 0.0;
+        cfg.hi = 40.0;
+        plant_bw_init_piezo(&plant);
+        check(hyst_ident_init(&id, &cfg) == HYST_OK, "experiment_ident");
+        n = triangle_cycles(xs, 8192);
+        for (i = 0; i < n; ++i) {
+            const double y = plant_bw_step(&plant, (double)xs[i]);
+            if (i >= n / 5) { /* the first cycle settles */
+                (void)hyst_ident_add(&id, (double)xs[i], y);
+            }
+        }
+        check(hyst_ident_solve(&id, &fit[m]) == HYST_OK, "experiment_solve");
+        print_fit(names[m], &fit[m]);
+    }
+    check(hyst_ident_poly(&fit[1], &f0) == HYST_OK && HYST_INIT(model, &f0) == HYST_OK,
+          "experiment_model");
+    n = ramp_path(0.0, levels, paper_levels(0.0, 40.0, levels), 0.1, xs, 8192);
+    printf("@table prediction i,x_V,y_plant_um,y_model_um,tp\n");
+    for (i = 0; i < n; ++i) { /* the plant is where the excitation left it: x = 0 */
+        const double yp = plant_bw_step(&plant, (double)xs[i]);
+        const double ym = (double)hyst_step(&model, xs[i]);
+        const double e = ym - yp;
+        const size_t tp = hyst_tp_count(&model);
+        ss += e * e;
+        max_err = fabs(e) > max_err ? fabs(e) : max_err;
+        y_min = yp < y_min ? yp : y_min;
+        y_max = yp > y_max ? yp : y_max;
+        max_tp = tp > max_tp ? tp : max_tp;
+        printf("%ld,%.3f,%.6f,%.6f,%u\n", i, (double)xs[i], yp, ym, (unsigned)tp);
+    }
+    value("samples", (double)n);
+    value("max_error_um", max_err);
+    value("rms_error_um", sqrt(ss / (double)n));
+    value("max_error_pct", 100.0 * max_err / (y_max - y_min));
+    value("max_tp", (double)max_tp);
+    check(max_tp == 14u, "experiment_tp");
+    end();
+}
+
+/* Measured data: fit on the first half of the cycles after settling,
+ * predict the second half (rows as in tests/test_ident.c). */
+static void measured(void)
+{
+    static double xs[8100], ys[8100];
+    static hyst_ident_t work;
+    static const char *names[2] = {"reflect", "joint"};
+    static const int methods[2] = {HYST_IDENT_REFLECT, HYST_IDENT_JOINT};
+    const size_t skip = 350u, split = 4150u, stop = 7950u, delay = 1u;
+    const long n = piezo_data_load(HYST_DATA_DIR "/piezo_major_loop.dat", xs, ys, 8100u);
+    int m;
+    section("measured");
+    value("rows", (double)n);
+    check(n == 8027, "measured_load");
+    if (n != 8027) {
+        end();
+        return;
+    }
+    for (m = 0; m < 2; ++m) {
+        hyst_ident_config_t cfg = {0};
+        hyst_ident_result_t res;
+        hyst_poly_t f0;
+        double ss = 0.0, max_err = 0.0;
+        char key[48];
+        size_t i;
+        cfg.degree = 3u;
+        cfg.method = methods[m];
+        cfg.skip = skip;
+        cfg.delay = delay;
+        check(hyst_ident_fit(&cfg, xs, ys, split + delay, &work, &res) == HYST_OK, "measured_fit");
+        print_fit(names[m], &res);
+        check(hyst_ident_poly(&res, &f0) == HYST_OK && HYST_INIT(model, &f0) == HYST_OK,
+              "measured_model");
+        if (m == 1) {
+            printf("@table prediction i,x_V,y_measured,y_model\n");
+        }
+        for (i = split; i < stop; ++i) {
+            const double ym = (double)hyst_step(&model, (hyst_real_t)xs[i]);
+            const double e = ym - ys[i + delay];
+            ss += e * e;
+            max_err = fabs(e) > max_err ? fabs(e) : max_err;
+            if (m == 1) {
+                printf("%u,%.6f,%.6f,%.6f\n", (unsigned)i, xs[i], ys[i + delay], ym);
+            }
+        }
+        (void)snprintf(key, sizeof key, "%s_predict_rms", names[m]);
+        value(key, sqrt(ss / (double)(stop - split)));
+        (void)snprintf(key, sizeof key, "%s_predict_max", names[m]);
+        value(key, max_err);
+    }
+    end();
+}
+
+/* Table 2 analogue: RAM of one instance sized for Nu = 2^bits codes. */
+static void memory(void)
+{
+    static const unsigned bits[4] = {12u, 16u, 18u, 24u};
+    int k;
+    section("memory");
+    value("instance_bytes", (double)sizeof(hyst_t));
+    value("real_bytes", (double)sizeof(hyst_real_t));
+    printf("@table ram bits,nu,entries_per_array,bytes\n");
+    for (k = 0; k < 4; ++k) {
+        const unsigned long nu = 1ul << bits[k];
+        const unsigned long entries = (unsigned long)HYST_CAPACITY(nu);
+        const unsigned long bytes = 4ul * entries * (unsigned long)sizeof(hyst_real_t) +
+                                    (unsigned long)sizeof(hyst_t);
+        printf("%u,%lu,%lu,%lu\n", bits[k], nu, entries, bytes);
+    }
+    end();
+}
+
+int main(void)
+{
+    hyst_port_init();
+    printf("@report hyst %d.%d.%d real=%s\n", HYST_VERSION_MAJOR, HYST_VERSION_MINOR,
+           HYST_VERSION_PATCH, sizeof(hyst_real_t) == 4u ? "float" : "double");
+    example1();
+    experiment();
+    measured();
+    memory();
+    printf("@failures %d\n", failures);
+    return failures == 0 ? 0 : 1;
+}

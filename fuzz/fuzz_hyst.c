@@ -1,0 +1,368 @@
+/* libFuzzer harness: arbitrary bytes -> a configuration, a capacity and a
+ * sample sequence, fed to every public entry point; on valid configurations
+ * the core (built with HYST_USE_DOUBLE) is compared with the linear-scan
+ * reference of the tests (tests/support/ref_tcm.c). Any mismatch or broken
+ * invariant aborts, which libFuzzer reports as a crash.
+ *
+ * Input layout (every read past the end yields zeros, so every input is valid):
+ *   [0]      flags: bit0 raw config (arbitrary doubles) else structured,
+ *            bit1 init through hyst_curve_from_poly + hyst_init_curve,
+ *            bit2 NULL-pointer probes, bit3 corrupted curve kind probe
+ *   [1]      capacity (byte % 48: 0 and 1 are invalid)
+ *   [2]      degree (byte % 12: 0, 10, 11 are invalid)
+ *   config   raw: lo, hi, coeffs as 8-byte doubles; structured: small grids
+ *   then     opcodes: 0xF0..0xFF are control opcodes (the switch in
+ *            LLVMFuzzerTestOneInput: reset, snapshot twin, forged restores,
+ *            block through hyst_process, bit-flipped snapshot, accessors);
+ *            any other byte is one sample of kind op & 7 (next_sample).
+ *
+ * Adding an entry point: give it a control opcode in that switch (0xF5 and
+ * 0xF7..0xFF fall to the default case, the accessors, today) and a seed in
+ * fuzz/make_corpus.py that uses it. fuzz/run lists every function declared in
+ * include/hyst/ (all headers, by glob) that this file does not call. */
+#include "hyst/hyst.h"
+#include "ref_tcm.h"
+
+#include <float.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef HYST_USE_DOUBLE
+#error "the differential harness compares a double core with the double reference"
+#endif
+
+#define MAX_CAP 48u
+#define MAX_SAMPLES 4096u
+#define SNAP_MAX HYST_SNAPSHOT_SIZE(MAX_CAP)
+
+typedef struct {
+    const unsigned char *p;
+    size_t n, at;
+} reader_t;
+
+static unsigned rd_u8(reader_t *r) { return r->at < r->n ? r->p[r->at++] : 0u; }
+
+static unsigned rd_u16(reader_t *r)
+{
+    const unsigned lo = rd_u8(r);
+    return lo | (rd_u8(r) << 8);
+}
+
+static double rd_f64(reader_t *r)
+{
+    unsigned char b[8];
+    double v;
+    unsigned k;
+    for (k = 0; k < 8u; ++k) b[k] = (unsigned char)rd_u8(r);
+    memcpy(&v, b, sizeof(v));
+    return v;
+}
+
+#define CHECK(cond)                                                               \
+    do {                                                                          \
+        if (!(cond)) {                                                            \
+            fprintf(stderr, "fuzz_hyst: %s:%d: check failed: %s\n", __FILE__,     \
+                    __LINE__, #cond);                                              \
+            abort();                                                              \
+        }                                                                         \
+    } while (0)
+
+typedef struct {
+    hyst_t S;
+    hyst_real_t xl[MAX_CAP], yl[MAX_CAP], xr[MAX_CAP], yr[MAX_CAP];
+} inst_t;
+
+static inst_t A, B, C, keep;
+static ref_tcm_t ref;
+static unsigned char snap[SNAP_MAX], forged[SNAP_MAX];
+
+/* Nesting, alternation, counts <= capacity, last input on the current branch. */
+static void check_invariants(const inst_t *I)
+{
+    const hyst_t *S = &I->S;
+    const size_t nl = S->n_ltp, nr = S->n_rtp;
+    size_t i;
+    CHECK(nl >= 1u && nl <= S->capacity && nr <= S->capacity);
+    CHECK(nr == nl || nr + 1u == nl);
+    CHECK(hyst_rising(S) == (nl > nr));
+    CHECK(hyst_tp_count(S) == nl - 1u + nr);
+    CHECK(I->xl[0] == S->curve.lo && I->yl[0] == S->curve.y_lo);
+    for (i = 1; i < nl; ++i) CHECK(I->xl[i] > I->xl[i - 1]);
+    for (i = 1; i < nr; ++i) CHECK(I->xr[i] < I->xr[i - 1]);
+    if (nr > 0u) {
+        CHECK(I->xl[nl - 1u] < I->xr[nr - 1u]);
+        CHECK(I->xr[0] <= S->curve.hi);
+    }
+    CHECK(hyst_input(S) >= S->curve.lo && hyst_input(S) <= S->curve.hi);
+    if (nl > nr) {
+        CHECK(hyst_input(S) >= I->xl[nl - 1u] && (nr == 0u || hyst_input(S) < I->xr[nr - 1u]));
+    } else {
+        CHECK(hyst_input(S) > I->xl[nl - 1u] && hyst_input(S) <= I->xr[nr - 1u]);
+    }
+}
+
+/* Configuration from bytes. Structured: lo, hi and coefficients on small
+ * grids, so that many curves are valid and well conditioned (differential
+ * comparison is meaningful); raw: any doubles, for the init checks. */
+static void read_config(reader_t *r, int raw, hyst_poly_t *f)
+{
+    unsigned k;
+    memset(f, 0, sizeof(*f));
+    f->degree = rd_u8(r) % 12u;
+    if (raw) {
+        f->lo = rd_f64(r);
+        f->hi = rd_f64(r);
+        for (k = 0; k <= HYST_MAX_DEGREE; ++k) f->coeffs[k] = rd_f64(r);
+        return;
+    }
+    f->lo = ((double)(signed char)rd_u8(r)) / 32.0;             /* -4 .. 4 */
+    f->hi = f->lo + (double)(rd_u8(r) % 64u) / 16.0;            /* span 0 .. 4 */
+    for (k = 0; k <= HYST_MAX_DEGREE; ++k) {
+        f->coeffs[k] = ((double)(signed char)rd_u8(r)) / 64.0; /* -2 .. 2 */
+    }
+    if (f->degree >= 1u && f->degree <= HYST_MAX_DEGREE) { /* push the slope up half the time */
+        f->coeffs[f->degree - 1u] += (double)(rd_u8(r) & 0x3Fu);
+    }
+}
+
+/* Called when hyst_curve_from_poly accepted the domain and coefficients
+ * (OK or NOT_INCREASING): the direct call must agree. Not called on other
+ * finite input: a curve that overflows once normalised makes the subdivision
+ * run to full depth (seconds), see docs/reliability.md. */
+static void probe_config(const hyst_poly_t *f, int increasing)
+{
+    hyst_wide_t c[HYST_MAX_DEGREE + 1];
+    hyst_wide_t turn = 0;
+    unsigned k;
+    int finite = isfinite(f->lo) && isfinite(f->hi) && f->lo < f->hi &&
+                 f->degree >= 1u && f->degree <= HYST_MAX_DEGREE;
+    for (k = 0; finite && k <= f->degree; ++k) {
+        c[k] = f->coeffs[k];
+        finite = isfinite(c[k]);
+    }
+    if (finite) {
+        const int inc = hyst_poly_is_increasing(c, f->degree, f->lo, f->hi, &turn);
+        CHECK(inc == increasing);
+        if (!inc) { /* exactly in [lo, hi] (regress_turn_rounding once rounded past hi) */
+            CHECK(turn >= f->lo && turn <= f->hi);
+        }
+        (void)hyst_poly_eval(f, f->lo);
+    }
+}
+
+/* Rounding allowance of the differential comparison: Horner's error bound on
+ * the raw coefficients (the reference evaluates those; the core a shifted,
+ * scaled copy), times the depth of turning points each output hangs on. */
+static double horner_bound(const hyst_poly_t *f)
+{
+    const double m = fmax(fabs(f->lo), fabs(f->hi));
+    double acc = 0.0;
+    unsigned k;
+    for (k = 0; k <= f->degree; ++k) acc = acc * m + fabs(f->coeffs[k]);
+    return 8.0 * (double)(f->degree + 1u) * DBL_EPSILON * acc;
+}
+
+static double next_sample(reader_t *r, const hyst_poly_t *f, unsigned op)
+{
+    const double span = f->hi - f->lo;
+    switch (op & 7u) {
+    case 0: return NAN;
+    case 1: return (op & 8u) ? INFINITY : -INFINITY;
+    case 2: return rd_f64(r);                                  /* anything */
+    case 3: return (op & 8u) ? f->hi : f->lo;                  /* the ends */
+    case 4: return f->lo + span * ((double)rd_u8(r) / 255.0);  /* 8-bit codes: repeats */
+    default:                                                    /* 16-bit, 10% beyond */
+        return f->lo - 0.1 * span + 1.2 * span * ((double)rd_u16(r) / 65535.0);
+    }
+}
+
+/* Restore of forged bytes: on error nothing changes; on success the state
+ * must satisfy every invariant. fix = make magic/version/length/CRC right so
+ * the state validation itself is exercised. */
+static void restore_forged(reader_t *r, int fix)
+{
+    size_t len = rd_u16(r) % (SNAP_MAX + 1u), i;
+    hyst_status_t st;
+    memset(forged, 0, sizeof(forged));
+    for (i = 0; i < len; ++i) forged[i] = (unsigned char)rd_u8(r);
+    if (fix) {
+        size_t good = 0, nl, nr;
+        unsigned long crc;
+        CHECK(hyst_snapshot_save(&A.S, snap, sizeof(snap), &good) == HYST_OK);
+        const int keep_id = forged[30] & 1u; /* then: the curve id of the input */
+        unsigned char id[4];
+        memcpy(id, forged + 12, 4u);
+        memcpy(forged, snap, 16u); /* magic, version, R, curve id */
+        if (keep_id) memcpy(forged + 12, id, 4u);
+        nl = 1u + forged[16] % MAX_CAP;
+        nr = nl - (forged[20] & 1u);
+        len = 36u + 2u * HYST_SNAPSHOT_REAL_OCTETS * (1u + nl + nr);
+        if (len > SNAP_MAX) return;
+        memset(forged + 16, 0, 4);
+        memset(forged + 20, 0, 4);
+        forged[16] = (unsigned char)nl;
+        forged[20] = (unsigned char)nr;
+        forged[8] = (unsigned char)(len & 0xFFu);
+        forged[9] = (unsigned char)(len >> 8);
+        forged[10] = forged[11] = 0u;
+        crc = hyst_crc32(0ul, forged, len - 4u);
+        for (i = 0; i < 4u; ++i) forged[len - 4u + i] = (unsigned char)((crc >> (8u * i)) & 0xFFu);
+    }
+    memcpy(&keep, &C, sizeof(C));
+    st = hyst_snapshot_restore(&C.S, forged, len);
+    if (st != HYST_OK) {
+        CHECK(st < 0);
+        CHECK(memcmp(&keep, &C, sizeof(C)) == 0); /* untouched */
+    } else { /* accepted: a reachable state, and it keeps running sanely */
+        check_invariants(&C);
+        (void)hyst_step(&C.S, C.S.curve.lo + 0.5 * (C.S.curve.hi - C.S.curve.lo));
+        check_invariants(&C);
+        (void)hyst_step(&C.S, C.S.curve.lo);
+        check_invariants(&C);
+    }
+}
+
+static int init_instance(inst_t *I, const hyst_poly_t *f, size_t cap, int via_curve)
+{
+    if (via_curve) {
+        hyst_curve_t curve;
+        hyst_status_t st = hyst_curve_from_poly(&curve, f);
+        if (st != HYST_OK) return st;
+        return hyst_init_curve(&I->S, &curve, I->xl, I->yl, I->xr, I->yr, cap);
+    }
+    return hyst_init(&I->S, f, I->xl, I->yl, I->xr, I->yr, cap);
+}
+
+int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
+{
+    reader_t r = {data, size, 0};
+    hyst_poly_t f;
+    const unsigned flags = rd_u8(&r);
+    const size_t cap = rd_u8(&r) % MAX_CAP;
+    hyst_status_t st;
+    int compare, full = 0;
+    double range, tol0;
+    unsigned n;
+    hyst_real_t xs[64], ys[64];
+
+    read_config(&r, (int)(flags & 1u), &f);
+    (void)hyst_status_str((int)(signed char)flags);
+
+    memset(&A, 0, sizeof(A));
+    memcpy(&keep, &A, sizeof(A));
+    st = (hyst_status_t)init_instance(&A, &f, cap, (int)(flags & 2u));
+    if (st == HYST_OK || st == HYST_ERR_NOT_INCREASING) {
+        probe_config(&f, st == HYST_OK);
+    }
+    if (st != HYST_OK) {
+        CHECK(st < 0);
+        CHECK(memcmp(&keep, &A, sizeof(A)) == 0); /* init errors write nothing */
+        return 0;
+    }
+    CHECK(cap >= 2u);
+    CHECK(hyst_curve_g(&A.S.curve, 0.0) == 0.0); /* documented: exactly 0 */
+    check_invariants(&A);
+    if (flags & 4u) { /* NULL probes: refused, never dereferenced */
+        CHECK(hyst_init(NULL, &f, A.xl, A.yl, A.xr, A.yr, cap) == HYST_ERR_NULL);
+        CHECK(hyst_init(&B.S, &f, A.xl, NULL, A.xr, A.yr, cap) == HYST_ERR_NULL);
+        CHECK(hyst_process(&A.S, NULL, ys, 1u) == HYST_ERR_NULL);
+        CHECK(hyst_process(&A.S, NULL, NULL, 0u) == HYST_OK);
+        CHECK(hyst_snapshot_save(&A.S, NULL, 1u, NULL) == HYST_ERR_NULL);
+        CHECK(hyst_snapshot_restore(&A.S, NULL, 0u) == HYST_ERR_NULL);
+    }
+    if (flags & 8u) { /* a curve not made by hyst_curve_*: refused */
+        hyst_curve_t bad = A.S.curve;
+        bad.kind = 0x5A;
+        CHECK(hyst_init_curve(&B.S, &bad, B.xl, B.yl, B.xr, B.yr, cap) == HYST_ERR_ARG);
+    }
+    /* B: snapshot twin of A; C: target of forged snapshots */
+    CHECK(init_instance(&B, &f, cap, 0) == HYST_OK);
+    CHECK(init_instance(&C, &f, cap, 0) == HYST_OK);
+
+    /* Differential only on structured curves: raw ones may be so badly
+     * conditioned that the reference itself is wrong. */
+    compare = !(flags & 1u);
+    ref_init(&ref, f.coeffs, f.degree, f.lo, f.hi);
+    range = fabs(A.S.curve.y_hi - A.S.curve.y_lo);
+    tol0 = horner_bound(&f);
+
+    for (n = 0; n < MAX_SAMPLES && r.at < r.n; ++n) {
+        const unsigned op = rd_u8(&r);
+        if ((op & 0xF0u) == 0xF0u) { /* control opcodes */
+            switch (op & 0x0Fu) {
+            case 0: /* reset: A, B, reference back at A0 */
+                hyst_reset(&A.S);
+                hyst_reset(&B.S);
+                ref_init(&ref, f.coeffs, f.degree, f.lo, f.hi);
+                full = 0;
+                CHECK(hyst_tp_count(&A.S) == 0u && hyst_events(&A.S) == 0u);
+                break;
+            case 1: { /* snapshot A into B, then they must run bit-identically */
+                size_t len = 0;
+                CHECK(hyst_snapshot_save(&A.S, snap, sizeof(snap), &len) == HYST_OK);
+                CHECK(len == hyst_snapshot_size(&A.S) && len <= HYST_SNAPSHOT_SIZE(cap));
+                CHECK(hyst_snapshot_restore(&B.S, snap, len) == HYST_OK);
+                CHECK(memcmp(B.xl, A.xl, A.S.n_ltp * sizeof(hyst_real_t)) == 0);
+                CHECK(hyst_snapshot_save(&A.S, snap, len - 1u, NULL) == HYST_ERR_NOSPACE);
+                break;
+            }
+            case 2: restore_forged(&r, 0); break;
+            case 3: restore_forged(&r, 1); break;
+            case 4: { /* a block through hyst_process, the reference sample by sample */
+                unsigned k, m = rd_u8(&r) % 64u;
+                for (k = 0; k < m; ++k) xs[k] = next_sample(&r, &f, rd_u8(&r));
+                st = hyst_process(&A.S, xs, ys, m);
+                for (k = 0; k < m; ++k) {
+                    (void)hyst_step(&B.S, xs[k]);
+                    if (isfinite(xs[k])) (void)ref_step(&ref, xs[k]);
+                }
+                CHECK(m == 0u || memcmp(&ys[m - 1u], &A.S.y_prev, sizeof(hyst_real_t)) == 0);
+                if (st == HYST_WARN_FULL || (hyst_events(&A.S) & HYST_EVENT_FULL)) full = 1;
+                break;
+            }
+            case 6: { /* a real snapshot of A with one bit flipped: always refused */
+                size_t len = 0, bit;
+                CHECK(hyst_snapshot_save(&A.S, snap, sizeof(snap), &len) == HYST_OK);
+                bit = rd_u16(&r) % (8u * len);
+                snap[bit / 8u] = (unsigned char)(snap[bit / 8u] ^ (1u << (bit % 8u)));
+                memcpy(&keep, &C, sizeof(C));
+                CHECK(hyst_snapshot_restore(&C.S, snap, len) < 0);
+                CHECK(memcmp(&keep, &C, sizeof(C)) == 0);
+                break;
+            }
+            default: /* clear events, read accessors */
+                hyst_clear_events(&A.S);
+                hyst_clear_events(&B.S);
+                (void)hyst_output(&A.S);
+                (void)hyst_input(&A.S);
+                (void)hyst_ltp_count(&A.S);
+                (void)hyst_rtp_count(&A.S);
+                break;
+            }
+        } else { /* one sample to A, B and the reference */
+            const double x = next_sample(&r, &f, op);
+            const hyst_real_t y = hyst_step(&A.S, x);
+            const hyst_real_t yb = hyst_step(&B.S, x);
+            CHECK(memcmp(&y, &yb, sizeof(y)) == 0); /* twin: bit-identical */
+            if (!isfinite(x)) {
+                CHECK(hyst_status(&A.S) == HYST_ERR_NONFINITE);
+                CHECK(y == A.S.y_prev);
+            } else {
+                const double yr = ref_step(&ref, x);
+                if (hyst_status(&A.S) == HYST_WARN_FULL) full = 1;
+                if (compare && !full) {
+                    const double depth = (double)hyst_tp_count(&A.S) + 2.0;
+                    CHECK(hyst_tp_count(&A.S) == (size_t)ref_tp_count(&ref));
+                    CHECK(fabs(y - yr) <= 1e-9 * range + depth * tol0);
+                }
+            }
+        }
+        check_invariants(&A);
+        check_invariants(&B);
+        CHECK(A.S.n_ltp == B.S.n_ltp && A.S.n_rtp == B.S.n_rtp);
+    }
+    return 0;
+}

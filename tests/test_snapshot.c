@@ -1,0 +1,316 @@
+/* Snapshot/restore: octet format, round trip, and refusal of every damaged
+ * snapshot (each bit flipped once, each truncation) with the instance untouched. */
+#include "support.h"
+#include "unity.h"
+
+#include <math.h>
+#include <string.h>
+
+#define CAP 16
+#define BUF HYST_SNAPSHOT_SIZE(CAP)
+#define R HYST_SNAPSHOT_REAL_OCTETS
+
+typedef struct {
+    hyst_t S;
+    hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
+} inst_t;
+
+static inst_t A, B, saved;
+static unsigned char snap[BUF], work[BUF];
+static size_t snap_len;
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static void init_inst(inst_t *I, const hyst_poly_t *f0, size_t cap)
+{
+    memset(I, 0, sizeof(*I));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&I->S, f0, I->xl, I->yl, I->xr, I->yr, cap));
+}
+
+/* A walk that leaves several nested loops open (TPs on both sides). */
+static void drive(inst_t *I, uint32_t seed, int n)
+{
+    rng_t rng;
+    int k;
+    double lo = 0.0, hi = 40.0;
+    rng_seed(&rng, seed);
+    for (k = 0; k < n; ++k) { /* shrinking triangle: each reversal nests */
+        const double t = k % 2 == 0 ? hi : lo;
+        (void)hyst_step(&I->S, (hyst_real_t)t);
+        (void)hyst_step(&I->S, (hyst_real_t)(t + (k % 2 == 0 ? -0.3 : 0.3)));
+        if (k % 2 == 0) {
+            hi -= rng_range(&rng, 0.5, 2.0);
+        } else {
+            lo += rng_range(&rng, 0.5, 2.0);
+        }
+    }
+}
+
+static void keep(const inst_t *I) { memcpy(&saved, I, sizeof(saved)); }
+
+static void assert_untouched(const inst_t *I)
+{
+    TEST_ASSERT_EQUAL_MEMORY(&saved, I, sizeof(saved));
+}
+
+static void take_snapshot(void)
+{
+    init_inst(&A, &paper_eq20, CAP);
+    drive(&A, 7u, 10);
+    TEST_ASSERT_TRUE(hyst_tp_count(&A.S) >= 6u);
+    memset(snap, 0xA5, sizeof(snap));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&A.S, snap, sizeof(snap), &snap_len));
+    TEST_ASSERT_EQUAL_size_t(hyst_snapshot_size(&A.S), snap_len);
+    /* a differently-driven target: a restore that touched it would show */
+    init_inst(&B, &paper_eq20, CAP);
+    drive(&B, 99u, 5);
+    keep(&B);
+}
+
+static void refix_crc(unsigned char *buf, size_t len)
+{
+    const unsigned long crc = hyst_crc32(0ul, buf, len - 4u);
+    buf[len - 4u] = (unsigned char)(crc & 0xFFu);
+    buf[len - 3u] = (unsigned char)((crc >> 8) & 0xFFu);
+    buf[len - 2u] = (unsigned char)((crc >> 16) & 0xFFu);
+    buf[len - 1u] = (unsigned char)((crc >> 24) & 0xFFu);
+}
+
+static void test_crc32_matches_the_standard_check_value(void)
+{
+    static const unsigned char digits[9] = {'1', '2', '3', '4', '5', '6', '7', '8', '9'};
+    TEST_ASSERT_EQUAL_HEX32(0xCBF43926ul, hyst_crc32(0ul, digits, 9u));
+    /* continuation equals one pass */
+    TEST_ASSERT_EQUAL_HEX32(0xCBF43926ul, hyst_crc32(hyst_crc32(0ul, digits, 4u), digits + 4, 5u));
+    TEST_ASSERT_EQUAL_HEX32(0ul, hyst_crc32(0ul, digits, 0u));
+}
+
+static void test_layout_is_octets_little_endian_ieee(void)
+{
+    static const hyst_poly_t line = {1u, HYST_REAL_C(0.0), HYST_REAL_C(1.0),
+                                     {HYST_REAL_C(1.0), HYST_REAL_C(0.0)}};
+    size_t len = 0u;
+    unsigned k;
+    init_inst(&A, &line, CAP);
+    (void)hyst_step(&A.S, HYST_REAL_C(0.5)); /* rising from A0, no TP */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&A.S, snap, sizeof(snap), &len));
+    TEST_ASSERT_EQUAL_size_t(36u + 2u * R * 2u, len); /* x/y_prev + A0 */
+    TEST_ASSERT_EQUAL_HEX8(0x48, snap[0]);
+    TEST_ASSERT_EQUAL_HEX8(0x59, snap[1]);
+    TEST_ASSERT_EQUAL_HEX8(0x53, snap[2]);
+    TEST_ASSERT_EQUAL_HEX8(0x53, snap[3]);
+    TEST_ASSERT_EQUAL_HEX8(1, snap[4]);
+    TEST_ASSERT_EQUAL_HEX8(0, snap[5]);
+    TEST_ASSERT_EQUAL_HEX8(R, snap[6]);
+    TEST_ASSERT_EQUAL_HEX8(len, snap[8]);
+    TEST_ASSERT_EQUAL_HEX8(0, snap[9]);
+    TEST_ASSERT_EQUAL_HEX8(1, snap[16]); /* n_ltp: A0 */
+    TEST_ASSERT_EQUAL_HEX8(0, snap[20]); /* n_rtp */
+    /* x_prev = 0.5: binary32 0x3F000000, binary64 0x3FE0000000000000, little-endian */
+    for (k = 0u; k < R; ++k) {
+        static const unsigned char half32[4] = {0x00, 0x00, 0x00, 0x3F};
+        static const unsigned char half64[8] = {0, 0, 0, 0, 0, 0, 0xE0, 0x3F};
+        TEST_ASSERT_EQUAL_HEX8(R == 4u ? half32[k % 4u] : half64[k], snap[32u + k]);
+    }
+    TEST_ASSERT_EQUAL_HEX32(hyst_crc32(0ul, snap, len - 4u),
+                            (unsigned long)snap[len - 4u] | ((unsigned long)snap[len - 3u] << 8) |
+                                ((unsigned long)snap[len - 2u] << 16) |
+                                ((unsigned long)snap[len - 1u] << 24));
+}
+
+static void test_round_trip_continues_bit_identically(void)
+{
+    rng_t rng;
+    int k;
+    take_snapshot();
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, snap, snap_len));
+    TEST_ASSERT_EQUAL_size_t(hyst_tp_count(&A.S), hyst_tp_count(&B.S));
+    TEST_ASSERT_EQUAL_MEMORY(A.xl, B.xl, A.S.n_ltp * sizeof(hyst_real_t));
+    TEST_ASSERT_EQUAL_MEMORY(A.yl, B.yl, A.S.n_ltp * sizeof(hyst_real_t));
+    TEST_ASSERT_EQUAL_MEMORY(A.xr, B.xr, A.S.n_rtp * sizeof(hyst_real_t));
+    TEST_ASSERT_EQUAL_MEMORY(A.yr, B.yr, A.S.n_rtp * sizeof(hyst_real_t));
+    rng_seed(&rng, 5u);
+    for (k = 0; k < 2000; ++k) {
+        const hyst_real_t x = (hyst_real_t)rng_range(&rng, -2.0, 42.0);
+        const hyst_real_t ya = hyst_step(&A.S, x);
+        const hyst_real_t yb = hyst_step(&B.S, x);
+        TEST_ASSERT_EQUAL_MEMORY(&ya, &yb, sizeof(ya));
+        TEST_ASSERT_EQUAL_size_t(hyst_tp_count(&A.S), hyst_tp_count(&B.S));
+        TEST_ASSERT_EQUAL_INT(hyst_status(&A.S), hyst_status(&B.S));
+    }
+    TEST_ASSERT_EQUAL_UINT(hyst_events(&A.S), hyst_events(&B.S));
+}
+
+static void test_status_and_events_survive(void)
+{
+    init_inst(&A, &paper_eq20, CAP);
+    drive(&A, 3u, 4);
+    (void)hyst_step(&A.S, HYST_REAL_C(50.0));     /* clamped */
+    (void)hyst_step(&A.S, (hyst_real_t)NAN);      /* ignored, status negative */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&A.S, snap, sizeof(snap), &snap_len));
+    init_inst(&B, &paper_eq20, CAP);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, snap, snap_len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NONFINITE, hyst_status(&B.S));
+    TEST_ASSERT_EQUAL_UINT(HYST_EVENT_CLAMPED | HYST_EVENT_NONFINITE, hyst_events(&B.S));
+    TEST_ASSERT_EQUAL_MEMORY(&A.S.y_prev, &B.S.y_prev, sizeof(hyst_real_t));
+}
+
+/* Each bit flip must be refused with the error of the field it hits. */
+static int expected_for_offset(size_t i)
+{
+    if (i < 4u || (i >= 8u && i < 12u) || (i >= 16u && i < 24u)) {
+        return HYST_ERR_FORMAT; /* magic; length field; counts (length then disagrees) */
+    }
+    if (i >= 4u && i < 7u) {
+        return HYST_ERR_VERSION;
+    }
+    return HYST_ERR_CRC;
+}
+
+static void test_every_bit_flip_is_refused_and_leaves_the_instance_untouched(void)
+{
+    size_t i;
+    unsigned bit;
+    take_snapshot();
+    for (i = 0u; i < snap_len; ++i) {
+        for (bit = 0u; bit < 8u; ++bit) {
+            memcpy(work, snap, snap_len);
+            work[i] = (unsigned char)(work[i] ^ (1u << bit));
+            TEST_ASSERT_EQUAL_INT_MESSAGE(expected_for_offset(i),
+                                          hyst_snapshot_restore(&B.S, work, snap_len),
+                                          "flipped bit not refused as expected");
+            assert_untouched(&B);
+        }
+    }
+}
+
+static void test_every_truncation_is_refused(void)
+{
+    size_t n;
+    take_snapshot();
+    for (n = 0u; n < snap_len; ++n) {
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&B.S, snap, n));
+        assert_untouched(&B);
+    }
+    /* extra octets after a valid snapshot are ignored (fixed-size NVM slots) */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, snap, sizeof(snap)));
+}
+
+static void test_other_version_or_real_width_is_refused(void)
+{
+    take_snapshot();
+    memcpy(work, snap, snap_len);
+    work[4] = 2u;
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_VERSION, hyst_snapshot_restore(&B.S, work, snap_len));
+    memcpy(work, snap, snap_len);
+    work[6] = (unsigned char)(R == 4u ? 8u : 4u);
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_VERSION, hyst_snapshot_restore(&B.S, work, snap_len));
+    assert_untouched(&B);
+}
+
+static void test_other_curve_is_refused(void)
+{
+    hyst_poly_t other = paper_eq20;
+    take_snapshot();
+    other.coeffs[2] = HYST_REAL_C(8.6445e-2); /* a tiny change is another curve */
+    init_inst(&B, &other, CAP);
+    keep(&B);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&B.S, snap, snap_len));
+    assert_untouched(&B);
+}
+
+static void test_capacity_must_hold_the_saved_points(void)
+{
+    take_snapshot();
+    init_inst(&B, &paper_eq20, 3u);
+    keep(&B);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CAPACITY, hyst_snapshot_restore(&B.S, snap, snap_len));
+    assert_untouched(&B);
+    init_inst(&B, &paper_eq20, A.S.n_ltp); /* exactly enough */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, snap, snap_len));
+}
+
+static inst_t scratch;
+
+/* The octets of v, taken from a snapshot of an instance whose x_prev is v. */
+static void set_real(unsigned char *p, hyst_real_t v)
+{
+    inst_t *T = &scratch;
+    size_t len = 0u;
+    static unsigned char tmp[BUF];
+    static const hyst_poly_t line = {1u, HYST_REAL_C(-100.0), HYST_REAL_C(100.0),
+                                     {HYST_REAL_C(1.0), HYST_REAL_C(0.0)}};
+    init_inst(T, &line, CAP);
+    (void)hyst_step(&T->S, v);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&T->S, tmp, sizeof(tmp), &len));
+    memcpy(p, tmp + 32, R);
+}
+
+/* A snapshot with a valid CRC but a state the model cannot reach. */
+static void test_impossible_state_with_valid_crc_is_refused(void)
+{
+    const size_t ltp = 32u + 2u * R; /* LTP 0 = A0 */
+    size_t rtp;
+    unsigned char x[8];
+    take_snapshot();
+    rtp = ltp + 2u * R * A.S.n_ltp;
+    /* LTP 1 moved above RTP 0: nesting broken */
+    memcpy(work, snap, snap_len);
+    memcpy(work + ltp + 2u * R, work + rtp, R);
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&B.S, work, snap_len));
+    /* A0 not at lo */
+    set_real(x, HYST_REAL_C(1.0));
+    memcpy(work, snap, snap_len);
+    memcpy(work + ltp, x, R);
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&B.S, work, snap_len));
+    /* last input outside the current branch's interval (x_prev = 41 > hi) */
+    set_real(x, HYST_REAL_C(41.0));
+    memcpy(work, snap, snap_len);
+    memcpy(work + 32, x, R);
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&B.S, work, snap_len));
+    /* unknown event flag */
+    memcpy(work, snap, snap_len);
+    work[24] = (unsigned char)(work[24] | 0x80u);
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&B.S, work, snap_len));
+    assert_untouched(&B);
+}
+
+static void test_save_refuses_small_buffers_and_null(void)
+{
+    size_t len = 123u;
+    take_snapshot();
+    memset(work, 0x5A, sizeof(work));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOSPACE, hyst_snapshot_save(&A.S, work, snap_len - 1u, &len));
+    TEST_ASSERT_EQUAL_size_t(123u, len);
+    TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, work, sizeof(work));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_snapshot_save(NULL, work, sizeof(work), &len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_snapshot_save(&A.S, NULL, sizeof(work), &len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_snapshot_restore(NULL, snap, snap_len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_snapshot_restore(&B.S, NULL, snap_len));
+    assert_untouched(&B);
+    TEST_ASSERT_TRUE(snap_len <= HYST_SNAPSHOT_SIZE(CAP));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_crc32_matches_the_standard_check_value);
+    RUN_TEST(test_layout_is_octets_little_endian_ieee);
+    RUN_TEST(test_round_trip_continues_bit_identically);
+    RUN_TEST(test_status_and_events_survive);
+    RUN_TEST(test_every_bit_flip_is_refused_and_leaves_the_instance_untouched);
+    RUN_TEST(test_every_truncation_is_refused);
+    RUN_TEST(test_other_version_or_real_width_is_refused);
+    RUN_TEST(test_other_curve_is_refused);
+    RUN_TEST(test_capacity_must_hold_the_saved_points);
+    RUN_TEST(test_impossible_state_with_valid_crc_is_refused);
+    RUN_TEST(test_save_refuses_small_buffers_and_null);
+    return UNITY_END();
+}
