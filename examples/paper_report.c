@@ -9,6 +9,7 @@
 #include "hyst_port.h"
 #include "piezo_data.h"
 #include "plant_bw.h"
+#include "signals.h"
 #include "support.h"
 
 #include <math.h>
@@ -92,6 +93,60 @@ static void example1(void)
     end();
 }
 
+/* Simulation Example 2: TCM with f0 = the PI loading curve reproduces the
+ * PI model of Table 1 (10 operators on [0, 1]). */
+static void example2(void)
+{
+    static const hyst_real_t w[10] = {
+        HYST_REAL_C(0.0789), HYST_REAL_C(0.2268), HYST_REAL_C(0.1928), HYST_REAL_C(0.2019),
+        HYST_REAL_C(0.1995), HYST_REAL_C(0.2001), HYST_REAL_C(0.2000), HYST_REAL_C(0.2000),
+        HYST_REAL_C(0.1999), HYST_REAL_C(0.2005)};
+    static const hyst_real_t r[10] = {
+        HYST_REAL_C(0.0), HYST_REAL_C(0.1), HYST_REAL_C(0.2), HYST_REAL_C(0.3), HYST_REAL_C(0.4),
+        HYST_REAL_C(0.5), HYST_REAL_C(0.6), HYST_REAL_C(0.7), HYST_REAL_C(0.8), HYST_REAL_C(0.9)};
+    static hyst_real_t bx[11], by[11], z[10], xs[20000];
+    static hyst_pi_t pi;
+    static const char *const keys[SIG_KINDS] = {"walk", "jumps", "paper_triangle"};
+    hyst_curve_t f_pi;
+    double range;
+    int kind;
+    section("example2");
+    check(hyst_pi_loading_curve(&f_pi, r, w, 10u, HYST_REAL_C(1.0), bx, by) == HYST_OK,
+          "example2_curve");
+    range = (double)(f_pi.y_hi - f_pi.y_lo);
+    value("range", range);
+    for (kind = 0; kind < SIG_KINDS; ++kind) {
+        const long n = 20000;
+        double worst = 0.0;
+        char key[48];
+        rng_t rng;
+        long i;
+        rng_seed(&rng, 99u + (uint32_t)kind);
+        fill_signal(kind, &rng, 0.0, 1.0, xs, n);
+        check(hyst_pi_init(&pi, r, w, z, 10u) == HYST_OK, "example2_pi");
+        check(hyst_init_curve(&model, &f_pi, model_xltp, model_yltp, model_xrtp, model_yrtp,
+                              HYST_CAPACITY(NU)) == HYST_OK,
+              "example2_tcm");
+        if (kind == SIG_PAPER) {
+            printf("@table trace x,y_pi,y_tcm\n");
+        }
+        for (i = 0; i < n; ++i) {
+            const double yp = (double)hyst_pi_step(&pi, xs[i]);
+            const double yt = (double)hyst_step(&model, xs[i]);
+            worst = fabs(yp - yt) > worst ? fabs(yp - yt) : worst;
+            if (kind == SIG_PAPER && i < 2000) {
+                printf("%.5f,%.7f,%.7f\n", (double)xs[i], yp, yt);
+            }
+        }
+        (void)snprintf(key, sizeof key, "%s_samples", keys[kind]);
+        value(key, (double)n);
+        (void)snprintf(key, sizeof key, "%s_max_diff", keys[kind]);
+        value(key, worst);
+        check(worst <= 2e-6 * range, "example2_equivalence");
+    }
+    end();
+}
+
 /* Excitation: 5 triangles 0..40..0 V in 0.1 V steps; returns the samples. */
 static long triangle_cycles(hyst_real_t *x, long max)
 {
@@ -106,6 +161,8 @@ static long triangle_cycles(hyst_real_t *x, long max)
 
 /* The experiment: identify f0 from a simulated piezo (Bouc-Wen, not a TCM),
  * then predict its response to the paper's test signal. */
+static hyst_poly_t plant_f0; /* identified in experiment(), used by compensation() */
+
 static void experiment(void)
 {
     static hyst_real_t xs[8192];
@@ -142,6 +199,7 @@ static void experiment(void)
     }
     check(hyst_ident_poly(&fit[1], &f0) == HYST_OK && HYST_INIT(model, &f0) == HYST_OK,
           "experiment_model");
+    plant_f0 = f0;
     n = ramp_path(0.0, levels, paper_levels(0.0, 40.0, levels), 0.1, xs, 8192);
     printf("@table prediction i,x_V,y_plant_um,y_model_um,tp\n");
     for (i = 0; i < n; ++i) { /* the plant is where the excitation left it: x = 0 */
@@ -218,6 +276,46 @@ static void measured(void)
     end();
 }
 
+/* Feedforward compensation of the same Bouc-Wen plant: the desired
+ * displacement (the paper's test signal shape in um) drives the plant
+ * (a) through a linear scaling of the major loop's end points and (b) through
+ * the inverse TCM of the f0 identified in experiment(). */
+static void compensation(void)
+{
+    static hyst_real_t xs[8192];
+    double levels[32];
+    plant_bw_t open_plant, comp_plant;
+    const double y_lo = (double)hyst_poly_eval(&plant_f0, plant_f0.lo);
+    const double y_hi = (double)hyst_poly_eval(&plant_f0, plant_f0.hi);
+    double ss_open = 0.0, ss_comp = 0.0, max_open = 0.0, max_comp = 0.0;
+    long n, i;
+    section("compensation");
+    check(HYST_INIT_INVERSE(model, &plant_f0) == HYST_OK, "compensation_init");
+    plant_bw_init_piezo(&open_plant);
+    plant_bw_init_piezo(&comp_plant);
+    /* desired output: the test signal's levels mapped onto 5 %..95 % of the stroke */
+    n = ramp_path(0.0, levels, paper_levels(0.0, 40.0, levels), 0.1, xs, 8192);
+    printf("@table tracking i,y_ref,y_open,y_comp\n");
+    for (i = 0; i < n; ++i) {
+        const double y_ref = y_lo + (y_hi - y_lo) * (0.05 + 0.9 * (double)xs[i] / 40.0);
+        const double x_open = 40.0 * (y_ref - y_lo) / (y_hi - y_lo);
+        const double x_comp = (double)hyst_step(&model, (hyst_real_t)y_ref);
+        const double yo = plant_bw_step(&open_plant, x_open);
+        const double yc = plant_bw_step(&comp_plant, x_comp);
+        ss_open += (yo - y_ref) * (yo - y_ref);
+        ss_comp += (yc - y_ref) * (yc - y_ref);
+        max_open = fabs(yo - y_ref) > max_open ? fabs(yo - y_ref) : max_open;
+        max_comp = fabs(yc - y_ref) > max_comp ? fabs(yc - y_ref) : max_comp;
+        printf("%ld,%.6f,%.6f,%.6f\n", i, y_ref, yo, yc);
+    }
+    value("open_rms", sqrt(ss_open / (double)n));
+    value("open_max", max_open);
+    value("comp_rms", sqrt(ss_comp / (double)n));
+    value("comp_max", max_comp);
+    check(ss_comp < ss_open && max_comp < max_open, "compensation_better");
+    end();
+}
+
 /* Table 2 analogue: RAM of one instance sized for Nu = 2^bits codes. */
 static void memory(void)
 {
@@ -243,7 +341,9 @@ int main(void)
     printf("@report hyst %d.%d.%d real=%s\n", HYST_VERSION_MAJOR, HYST_VERSION_MINOR,
            HYST_VERSION_PATCH, sizeof(hyst_real_t) == 4u ? "float" : "double");
     example1();
+    example2();
     experiment();
+    compensation();
     measured();
     memory();
     printf("@failures %d\n", failures);

@@ -44,13 +44,15 @@ hyst_status_t hyst_code_init_curve(hyst_code_t *S, const hyst_curve_t *curve,
     if (!(code_lo < code_hi) || code_hi > HYST_CODE_MAX) {
         return HYST_ERR_DOMAIN;
     }
-    /* g must be a function of u = d * inv_span (curve.h), so that one code
-     * span replaces the domain span. */
-    if (curve->kind != HYST_CURVE_POLY) {
+    if (hyst_curve_check(curve) != HYST_OK) {
         return HYST_ERR_ARG;
     }
+    /* g takes d * inv_span (curve.h): a code difference is d in user units
+     * times (hi - lo) / (code_hi - code_lo), folded in once, for every kind. */
     S->curve = *curve;
-    S->curve.inv_span = (hyst_real_t)(1 / (hyst_wide_t)(code_hi - code_lo));
+    S->curve.inv_span = (hyst_real_t)((hyst_wide_t)curve->inv_span *
+                                      ((hyst_wide_t)curve->hi - (hyst_wide_t)curve->lo) /
+                                      (hyst_wide_t)(code_hi - code_lo));
     S->lo = (hyst_code_word_t)code_lo;
     S->hi = (hyst_code_word_t)code_hi;
     tcm_attach(S, xltp, yltp, xrtp, yrtp, capacity);

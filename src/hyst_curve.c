@@ -1,5 +1,6 @@
-/* Polynomial curve set-up: validation, shift/scale to [0, 1], monotonicity. */
-#include "hyst/curve.h"
+/* Polynomial curve set-up (validation, shift/scale to [0, 1], monotonicity)
+ * and what every curve kind shares: the out-of-line g, checks, evaluation. */
+#include "hyst_curve_impl.h"
 #include "hyst_internal.h"
 
 
@@ -170,7 +171,7 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
 {
     hyst_wide_t c[HYST_MAX_DEGREE + 1];
     hyst_wide_t g[HYST_MAX_DEGREE + 1];
-    hyst_curve_t out;
+    hyst_curve_t out = {0};
     hyst_wide_t lo, hi, y_hi;
     unsigned n, k;
 
@@ -229,4 +230,42 @@ hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x)
         acc = acc * x + f0->coeffs[k];
     }
     return acc;
+}
+
+hyst_real_t hyst_curve_g_unit_other(const hyst_curve_t *curve, hyst_real_t d)
+{
+    if (curve->kind == HYST_CURVE_POLY_INV) {
+        return hyst_poly_inv_g_(curve, d);
+    }
+    /* PWL, PWL_INV: the difference of two interpolations; exactly 0 at d = 0 */
+    return hyst_pwl_eval_(curve, curve->lo + d) - curve->y_lo;
+}
+
+hyst_status_t hyst_curve_check(const hyst_curve_t *curve)
+{
+    if (curve == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (!(curve->lo < curve->hi)) {
+        return HYST_ERR_ARG;
+    }
+    switch (curve->kind) {
+    case HYST_CURVE_POLY:
+    case HYST_CURVE_POLY_INV:
+        return curve->degree >= 1u && curve->degree <= HYST_MAX_DEGREE ? HYST_OK
+                                                                       : HYST_ERR_ARG;
+    case HYST_CURVE_PWL:
+    case HYST_CURVE_PWL_INV:
+        return curve->px != NULL && curve->py != NULL && curve->n_points >= 2u
+                   ? HYST_OK
+                   : HYST_ERR_ARG;
+    default:
+        return HYST_ERR_ARG;
+    }
+}
+
+hyst_real_t hyst_curve_eval(const hyst_curve_t *curve, hyst_real_t x)
+{
+    x = x < curve->lo ? curve->lo : (x > curve->hi ? curve->hi : x);
+    return curve->y_lo + hyst_curve_g(curve, x - curve->lo);
 }

@@ -49,7 +49,7 @@ hyst_status_t hyst_init_curve(hyst_t *S, const hyst_curve_t *curve,
     if (st != HYST_OK) {
         return st;
     }
-    if (curve->kind != HYST_CURVE_POLY) {
+    if (hyst_curve_check(curve) != HYST_OK) {
         return HYST_ERR_ARG;
     }
     S->curve = *curve;

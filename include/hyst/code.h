@@ -120,7 +120,8 @@ hyst_status_t hyst_code_init(hyst_code_t *S, const hyst_poly_t *f0, uint_least32
 /**
  * @brief As hyst_code_init(), with a curve already prepared.
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_CAPACITY, HYST_ERR_DOMAIN or
- *         HYST_ERR_ARG (a curve not prepared by hyst_curve_from_poly()).
+ *         HYST_ERR_ARG (a curve not prepared by a hyst_curve_* constructor;
+ *         every kind works on codes).
  */
 hyst_status_t hyst_code_init_curve(hyst_code_t *S, const hyst_curve_t *curve,
                                    uint_least32_t code_lo, uint_least32_t code_hi,

@@ -4,9 +4,13 @@
  *
  * A TCM needs one function of its curve: the branch shape
  * g(d) = f0(lo + d) - f0(lo), d in [0, hi - lo] (METHOD.md section 3).
- * hyst_curve_t holds it in a form that costs one Horner evaluation per sample:
- * the polynomial is shifted to lo and scaled to u = d / (hi - lo) in [0, 1]
- * once, at set-up, in hyst_wide_t precision.
+ * hyst_curve_t holds it ready for per-sample use, in one of four kinds:
+ *  - polynomial: shifted to lo and scaled to u = d / (hi - lo) in [0, 1]
+ *    once, at set-up, in hyst_wide_t precision; one Horner evaluation inline;
+ *  - piecewise linear (breakpoints + values, or a PI loading curve, pi.h):
+ *    binary search for the segment, exact at the breakpoints;
+ *  - the inverses of both (hyst_curve_inverse()), for a compensator: the
+ *    same engine on f0^-1 (METHOD.md section 8, inverse.h).
  */
 #ifndef HYST_CURVE_H
 #define HYST_CURVE_H
@@ -36,26 +40,73 @@ typedef struct hyst_poly {
     hyst_real_t coeffs[HYST_MAX_DEGREE + 1]; /**< c_n ... c_0, highest power first */
 } hyst_poly_t;
 
+/**
+ * @brief Newton iterations per sample of an inverted polynomial (bound).
+ *
+ * HYST_CURVE_POLY_INV evaluates g^-1 by a bracketed Newton iteration that
+ * stops after at most this many steps: the worst-case time per sample is
+ * HYST_INV_MAX_ITER evaluations of f0 and f0' plus one division each.
+ * See docs/pi_and_inverse.md for the measured worst error.
+ */
+#ifndef HYST_INV_MAX_ITER
+#define HYST_INV_MAX_ITER 12
+#endif
+#if HYST_INV_MAX_ITER < 1
+#error "HYST_INV_MAX_ITER must be at least 1"
+#endif
+
+/**
+ * @brief Intervals of the start table of an inverted polynomial.
+ *
+ * g^-1 is tabulated at init at HYST_INV_KNOTS + 1 equally spaced outputs;
+ * each sample starts Newton inside the bracket of its table interval.
+ */
+#ifndef HYST_INV_KNOTS
+#define HYST_INV_KNOTS 16
+#endif
+#if HYST_INV_KNOTS < 1
+#error "HYST_INV_KNOTS must be at least 1"
+#endif
+
 /** @brief Kinds of curve the engine can run on. */
 typedef enum hyst_curve_kind {
-    HYST_CURVE_POLY = 1 /**< polynomial, Horner's rule */
+    HYST_CURVE_POLY = 1,     /**< polynomial f0, Horner's rule (inline) */
+    HYST_CURVE_PWL = 2,      /**< piecewise-linear f0, binary search */
+    HYST_CURVE_POLY_INV = 3, /**< f0^-1 of a polynomial: bracketed Newton */
+    HYST_CURVE_PWL_INV = 4   /**< f0^-1 of a piecewise-linear f0: exact */
 } hyst_curve_kind_t;
 
 /**
  * @brief Branch shape g of a curve, ready for per-sample use.
  *
- * Filled by hyst_curve_from_poly(); treat as opaque. Self-contained (no
- * pointers), so it may be copied or stored in flash.
+ * Filled by a hyst_curve_* constructor; treat as opaque. Polynomial kinds
+ * are self-contained (no pointers): they may be copied or stored in flash.
+ * Piecewise-linear kinds point at the caller's breakpoint and value arrays,
+ * which must stay alive and unchanged as long as the curve (or an instance
+ * initialised with it) is used.
+ *
+ * lo, hi is the domain of THIS curve and y_lo, y_hi its values there: for an
+ * inverse curve the domain is [f0(lo), f0(hi)] and the values lo, hi.
  */
 typedef struct hyst_curve {
     int kind;              /**< hyst_curve_kind_t */
-    unsigned degree;       /**< polynomial degree n */
-    hyst_real_t lo, hi;    /**< input domain */
-    hyst_real_t y_lo;      /**< f0(lo) */
-    hyst_real_t y_hi;      /**< f0(hi) */
-    hyst_real_t inv_span;  /**< 1 / (hi - lo) */
-    /** g(d) = u (a[0] u^(n-1) + ... + a[n-1]), u = d * inv_span */
+    unsigned degree;       /**< polynomial degree n (polynomial kinds) */
+    hyst_real_t lo, hi;    /**< domain of the curve */
+    hyst_real_t y_lo;      /**< curve value at lo */
+    hyst_real_t y_hi;      /**< curve value at hi */
+    /** argument scale of hyst_curve_g_unit(): 1 / (hi - lo) for POLY, 1 for
+     *  the other kinds (their g takes d itself) */
+    hyst_real_t inv_span;
+    /** polynomial kinds: f0(lo + s u) - f0(lo) = u (a[0] u^(n-1) + ... + a[n-1]),
+     *  s = input span of f0 */
     hyst_real_t a[HYST_MAX_DEGREE];
+    hyst_real_t span;       /**< POLY_INV: input span s of f0 (u -> d) */
+    hyst_real_t knot_scale; /**< POLY_INV: HYST_INV_KNOTS / (f0(hi) - f0(lo)) */
+    /** POLY_INV: u where g(u span) = k / knot_scale, k = 0..HYST_INV_KNOTS */
+    hyst_real_t knot_u[HYST_INV_KNOTS + 1];
+    const hyst_real_t *px; /**< PWL: caller's breakpoints (PWL_INV: values) */
+    const hyst_real_t *py; /**< PWL: caller's values (PWL_INV: breakpoints) */
+    size_t n_points;       /**< PWL: entries of px and py, >= 2 */
 } hyst_curve_t;
 
 /**
@@ -72,6 +123,65 @@ typedef struct hyst_curve {
  *         HYST_ERR_COEFF or HYST_ERR_NOT_INCREASING.
  */
 hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0);
+
+/**
+ * @brief Prepares a piecewise-linear f0 through caller-owned points.
+ *
+ * f0 interpolates (x[i], y[i]), i = 0..n-1, linearly; the domain is
+ * [x[0], x[n-1]]. The curve keeps the two pointers, not copies: the arrays
+ * must outlive the curve and every instance initialised with it, unchanged.
+ * Checks, in this order: NULL pointers, n >= 2 (else HYST_ERR_ARG), finite
+ * and strictly increasing breakpoints (HYST_ERR_BREAKPOINTS), finite values
+ * (HYST_ERR_COEFF), values non-decreasing with y[n-1] > y[0]
+ * (HYST_ERR_NOT_INCREASING; flat pieces are allowed here, but such a curve
+ * has no inverse). @p curve is written only on success.
+ *
+ * @param[out] curve prepared curve.
+ * @param[in]  x     n breakpoints, strictly increasing.
+ * @param[in]  y     n values f0(x[i]), non-decreasing.
+ * @param[in]  n     number of points, >= 2.
+ * @return HYST_OK or the error named above.
+ */
+hyst_status_t hyst_curve_from_pwl(hyst_curve_t *curve, const hyst_real_t *x,
+                                  const hyst_real_t *y, size_t n);
+
+/**
+ * @brief Prepares the inverse curve f0^-1, for a compensator (METHOD.md 8).
+ *
+ * A TCM initialised with the result (hyst_init_curve()) is the inverse model:
+ * its input is the desired output on [f0(lo), f0(hi)], its output the input
+ * that produces it. The engine clamps desired outputs outside that range and
+ * reports HYST_WARN_CLAMPED.
+ *  - polynomial: g^-1 by bracketed Newton, at most HYST_INV_MAX_ITER steps;
+ *  - piecewise linear: exact (the same points with the axes swapped; the
+ *    inverse keeps pointing at the caller's arrays);
+ *  - an inverse curve: gives back the forward curve.
+ * The forward curve must be strictly increasing: a PWL f0 with a flat piece,
+ * or a polynomial with a flat stretch wider than rounding, is refused.
+ *
+ * @param[out] inv prepared inverse curve (may be the same object as @p fwd).
+ * @param[in]  fwd curve prepared by a hyst_curve_* constructor.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (not a prepared curve) or
+ *         HYST_ERR_NOT_INVERTIBLE.
+ */
+hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
+
+/**
+ * @brief Checks that a curve was prepared by a hyst_curve_* constructor.
+ *
+ * A cheap structural check (kind, domain, pointers), not a re-validation.
+ * @param[in] curve curve to check.
+ * @return HYST_OK, HYST_ERR_NULL or HYST_ERR_ARG.
+ */
+hyst_status_t hyst_curve_check(const hyst_curve_t *curve);
+
+/**
+ * @brief The curve itself, f(x) = y_lo + g(x - lo), for tools and tests.
+ * @param[in] curve prepared curve.
+ * @param[in] x     point of the domain (clamped to it).
+ * @return f(x); for an inverse curve, the input that f0 maps to x.
+ */
+hyst_real_t hyst_curve_eval(const hyst_curve_t *curve, hyst_real_t x);
 
 /**
  * @brief Checks that a polynomial increases on [lo, hi].
@@ -102,21 +212,31 @@ int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
 hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x);
 
 /**
- * @brief The branch shape g(d) = f0(lo + d) - f0(lo) of a prepared curve.
- * @param[in] curve prepared by hyst_curve_from_poly().
- * @param[in] d     distance from the turning point, 0 <= d <= hi - lo.
- * @return g(d); g(0) is exactly 0.
- */
-/**
- * @brief The branch shape at u = d / (hi - lo), u in [0, 1].
+ * @brief g of the kinds other than HYST_CURVE_POLY (out of line).
  *
- * Horner's rule unrolled by a switch on the degree: one multiply-add per
- * coefficient and no loop overhead on the per-sample path.
+ * These kinds have inv_span = 1: their argument is d itself, unscaled, so a
+ * piecewise-linear curve stays exact at its breakpoints.
+ * @param[in] curve prepared curve.
+ * @param[in] d     distance from the turning point, 0 <= d <= hi - lo.
+ * @return g(d).
+ */
+hyst_real_t hyst_curve_g_unit_other(const hyst_curve_t *curve, hyst_real_t d);
+
+/**
+ * @brief The branch shape at u = d * inv_span.
+ *
+ * HYST_CURVE_POLY: u = d / (hi - lo) in [0, 1], Horner's rule unrolled by a
+ * switch on the degree: one multiply-add per coefficient and no loop
+ * overhead on the per-sample path. Other kinds (inv_span = 1, u = d): one
+ * out-of-line call, see hyst_curve_g().
  */
 HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t u)
 {
     const hyst_real_t *a = curve->a; /* a[0] multiplies u^n */
     hyst_real_t acc;
+    if (curve->kind != HYST_CURVE_POLY) {
+        return hyst_curve_g_unit_other(curve, u);
+    }
 #define HYST_H_(acc_, k_) ((acc_) * u + a[k_])
     switch (curve->degree) { /* independent cases: no register merges */
     case 1: acc = a[0]; break;
@@ -140,6 +260,19 @@ HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t
     return acc * u;
 }
 
+/**
+ * @brief The branch shape g(d) = f(lo + d) - f(lo) of a prepared curve f.
+ *
+ * Polynomial: one Horner evaluation, inline. Piecewise linear (either
+ * direction): one binary search over the points, O(log n_points), one
+ * division. Inverted polynomial: at most HYST_INV_MAX_ITER evaluations of
+ * f0 and f0' plus one division each. Arguments slightly outside
+ * [0, hi - lo] (rounding) are clamped by the out-of-line kinds.
+ *
+ * @param[in] curve prepared by a hyst_curve_* constructor.
+ * @param[in] d     distance from the turning point, 0 <= d <= hi - lo.
+ * @return g(d); g(0) is exactly 0.
+ */
 static inline hyst_real_t hyst_curve_g(const hyst_curve_t *curve, hyst_real_t d)
 {
     return hyst_curve_g_unit(curve, d * curve->inv_span);

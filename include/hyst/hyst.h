@@ -9,7 +9,9 @@
  *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
  *  - hyst/code.h:   the same TCM over integer DAC codes;
  *  - hyst/ident.h:  identification of f0 from measured data.
- *  - hyst/snapshot.h: save/restore of an instance's memory (CRC-checked).
+ *  - hyst/snapshot.h: save/restore of an instance's memory (CRC-checked);
+ *  - hyst/inverse.h: the inverse TCM, a feedforward compensator;
+ *  - hyst/pi.h:     the Prandtl-Ishlinskii model and its inverse.
  */
 #ifndef HYST_HYST_H
 #define HYST_HYST_H
@@ -25,5 +27,7 @@
 #include "hyst/code.h"
 #include "hyst/ident.h"
 #include "hyst/snapshot.h"
+#include "hyst/inverse.h"
+#include "hyst/pi.h"
 
 #endif /* HYST_HYST_H */

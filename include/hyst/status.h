@@ -27,7 +27,12 @@ typedef enum hyst_status {
     HYST_ERR_FORMAT = -11,       /**< not a snapshot: bad magic, truncated, bad length or impossible state */
     HYST_ERR_CRC = -12,          /**< snapshot checksum mismatch (corrupted) */
     HYST_ERR_VERSION = -13,      /**< snapshot format version or real type differs */
-    HYST_ERR_CURVE = -14         /**< snapshot taken with a different curve */
+    HYST_ERR_CURVE = -14,        /**< snapshot taken with a different curve */
+    HYST_ERR_BREAKPOINTS = -15,  /**< PWL breakpoints or PI thresholds not finite,
+                                      not strictly increasing (PI: r1 != 0) */
+    HYST_ERR_WEIGHTS = -16,      /**< PI weights not finite, or a partial sum
+                                      w1 + ... + wi not positive */
+    HYST_ERR_NOT_INVERTIBLE = -17 /**< curve not strictly increasing: no inverse */
 } hyst_status_t;
 
 /** @name Sticky event flags (hyst_events()): set by samples, cleared by the caller. */

@@ -12,6 +12,8 @@
 /* Subcommands (one file each). */
 int cmd_fit(int argc, char **argv);
 int cmd_sim(int argc, char **argv);
+int cmd_inv(int argc, char **argv);
+int cmd_pi(int argc, char **argv);
 
 /* ---- messages ---- */
 
@@ -24,7 +26,7 @@ int cli_fail(const char *cmd, const char *fmt, ...)
 
 /* ---- options: --name VALUE, --name=VALUE, -- ends them, - is a file ---- */
 
-enum { CLI_END = 0, CLI_OPT = 1, CLI_POS = 2 };
+enum { CLI_END = 0, CLI_OPT = 1, CLI_POS = 2, CLI_HELP = 3 };
 
 typedef struct cli_args {
     const char *cmd;      /* subcommand name, for messages */
@@ -68,6 +70,7 @@ int cli_parse_double(const char *s, double *out);
 
 typedef struct cli_table {
     double *col[CLI_MAX_COLS]; /* requested columns, n entries each */
+    unsigned long *line;       /* file line number of each entry */
     size_t n;                  /* data lines read */
     size_t cap;
 } cli_table_t;
@@ -86,5 +89,56 @@ const char *cli_file_name(const char *path);
 
 /* A number printed as a C floating literal (always a '.' or an exponent). */
 void cli_c_literal(char *buf, size_t len, double v);
+
+/* ---- sample streams: one output line per input sample ---- */
+
+/* Help lines of the options every sample command takes. */
+#define CLI_HELP_XCOL                                                                 \
+    "  --xcol I          input column, 1-based (default 1); columns are separated\n" \
+    "                    by blanks, ',' or ';'; '#' lines and blank lines are skipped\n"
+#define CLI_HELP_EXIT                                                                 \
+    "Exit status: 0 success, 1 bad option or input (nothing is printed then).\n"
+
+/* Relative rounding of a number printed with 9 significant digits (5e-10),
+ * with margin: clamping by less than this is not warned. */
+#define CLI_PRINT_TOL 1e-9
+
+typedef struct cli_samples {
+    const char *file;   /* NULL or "-": standard input */
+    unsigned long xcol; /* input column, 1-based */
+} cli_samples_t;
+
+void cli_samples_init(cli_samples_t *s);
+
+/* Next option of a sample command, handling the common ones itself (FILE,
+ * --xcol, --help/-h: prints @p help): CLI_OPT (the caller's, name in a->opt),
+ * CLI_END, CLI_HELP (exit 0) or -1 after a message (exit 1). */
+int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help);
+
+/* What a sample command does per sample. */
+typedef struct cli_map {
+    void *ctx;
+    /* Before the first sample, with the count: 0, or 1 after a message. May be NULL. */
+    int (*begin)(void *ctx, size_t n);
+    /* One sample: returns the output, sets *clamped if the input was clamped. */
+    double (*step)(void *ctx, double x, int *clamped);
+    /* Second output column ("y,c") after each step, or NULL. */
+    unsigned long (*col2)(void *ctx);
+    const char *clamp_what; /* for the clamp warning: "inputs", ... */
+    double lo, hi;          /* the interval inputs are clamped to */
+} cli_map_t;
+
+/* Reads the samples completely (a malformed one stops everything, nothing
+ * printed), then prints one output per line with 9 significant digits. Clamped
+ * inputs are not an error: one warning on stderr gives their count and the
+ * first line (those beyond lo/hi by more than CLI_PRINT_TOL relative), and
+ * the exit status stays 0. Returns the exit status. */
+int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m);
+
+/* ---- sim and inv (cli_tcm.c) ---- */
+
+/* The whole of `hyst sim` (inverse = 0) or `hyst inv` (inverse = 1): options
+ * --poly, --range, --xcol, --tp, FILE; --help prints @p help. */
+int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, int inverse);
 
 #endif /* HYST_CLI_H */

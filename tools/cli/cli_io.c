@@ -1,5 +1,5 @@
 /* Shared by the subcommands of `hyst`: messages, option parsing, number
- * parsing, and the column reader for data files. */
+ * parsing, the column reader for data files, and the sample-to-line runner. */
 #include "cli.h"
 
 #include <errno.h>
@@ -246,11 +246,12 @@ static long split_fields(char *line, char **field, long max)
     }
 }
 
-static int table_push(cli_table_t *t, const double *v, unsigned ncols)
+static int table_push(cli_table_t *t, const double *v, unsigned ncols, unsigned long lineno)
 {
     unsigned c;
     if (t->n == t->cap) {
         const size_t ncap = t->cap ? 2u * t->cap : 1024u;
+        unsigned long *nl;
         for (c = 0u; c < ncols; ++c) {
             double *nb = (double *)realloc(t->col[c], ncap * sizeof(double));
             if (nb == NULL) {
@@ -258,11 +259,17 @@ static int table_push(cli_table_t *t, const double *v, unsigned ncols)
             }
             t->col[c] = nb;
         }
+        nl = (unsigned long *)realloc(t->line, ncap * sizeof(unsigned long));
+        if (nl == NULL) {
+            return -1;
+        }
+        t->line = nl;
         t->cap = ncap;
     }
     for (c = 0u; c < ncols; ++c) {
         t->col[c][t->n] = v[c];
     }
+    t->line[t->n] = lineno;
     ++t->n;
     return 0;
 }
@@ -274,9 +281,10 @@ void cli_table_free(cli_table_t *t)
         free(t->col[c]);
         t->col[c] = NULL;
     }
+    free(t->line);
+    t->line = NULL;
     t->n = t->cap = 0u;
 }
-
 
 int cli_read_columns(const char *cmd, const char *path, const unsigned long *cols,
                      unsigned ncols, cli_table_t *t)
@@ -324,7 +332,7 @@ int cli_read_columns(const char *cmd, const char *path, const unsigned long *col
                                lineno, cols[c], field[cols[c] - 1u]);
             }
         }
-        if (rc == 0 && table_push(t, v, ncols) != 0) {
+        if (rc == 0 && table_push(t, v, ncols, lineno) != 0) {
             rc = -cli_fail(cmd, "%s:%lu: out of memory", name, lineno);
         }
     }
@@ -352,4 +360,81 @@ void cli_c_literal(char *buf, size_t len, double v)
     if (strpbrk(buf, ".eEn") == NULL && strlen(buf) + 3u < len) {
         strcat(buf, ".0");
     }
+}
+
+/* ---- sample streams ---- */
+
+void cli_samples_init(cli_samples_t *s)
+{
+    s->file = NULL;
+    s->xcol = 1ul;
+}
+
+int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help)
+{
+    const char *pos = NULL, *v;
+    int kind;
+    while ((kind = cli_args_next(a, &pos)) != CLI_END) {
+        if (kind < 0) {
+            return -1;
+        }
+        if (kind == CLI_POS) {
+            if (s->file != NULL) {
+                return -cli_fail(a->cmd, "more than one input file ('%s', '%s')", s->file, pos);
+            }
+            s->file = pos;
+        } else if (cli_is(a, "--help") || cli_is(a, "-h")) {
+            (void)fputs(help, stdout);
+            return CLI_HELP;
+        } else if (cli_is(a, "--xcol")) {
+            if ((v = cli_value(a)) == NULL ||
+                !cli_opt_ulong(a, v, 1ul, CLI_MAX_FIELD, &s->xcol)) {
+                return -1;
+            }
+        } else {
+            return CLI_OPT;
+        }
+    }
+    return CLI_END;
+}
+
+int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
+{
+    cli_table_t t;
+    size_t i, nclamped = 0u;
+    unsigned long first = 0ul;
+    int rc;
+    if (cli_read_columns(cmd, s->file, &s->xcol, 1u, &t) != 0) {
+        return 1;
+    }
+    rc = m->begin != NULL ? m->begin(m->ctx, t.n) : 0;
+    for (i = 0u; rc == 0 && i < t.n; ++i) {
+        int clamped = 0;
+        const double x = t.col[0][i];
+        const double y = m->step(m->ctx, x, &clamped);
+        /* A bound printed with 9 digits (sim's f0(lo) fed to inv) may land just
+         * outside: rounding, not an unreachable target, so not warned. */
+        if (clamped && (x < m->lo - CLI_PRINT_TOL * fabs(m->lo) ||
+                        x > m->hi + CLI_PRINT_TOL * fabs(m->hi)) &&
+            nclamped++ == 0u) {
+            first = t.line[i];
+        }
+        if (m->col2 != NULL) {
+            (void)printf("%.9g,%lu\n", y, m->col2(m->ctx));
+        } else {
+            (void)printf("%.9g\n", y);
+        }
+    }
+    if (rc == 0 && nclamped > 0u) {
+        (void)fprintf(stderr,
+                      "hyst %s: warning: %s: %lu %s outside [%.9g, %.9g] were clamped to it "
+                      "(first at line %lu)\n",
+                      cmd, cli_file_name(s->file), (unsigned long)nclamped, m->clamp_what,
+                      m->lo, m->hi, first);
+    }
+    cli_table_free(&t);
+    if (rc == 0 && fflush(stdout) != 0) {
+        rc = cli_fail(cmd, "write error on standard output");
+    }
+    return rc;
 }

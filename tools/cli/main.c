@@ -15,6 +15,8 @@ typedef struct {
 static const command_t commands[] = {
     {"fit", cmd_fit, "identify f0 from measured input/output columns"},
     {"sim", cmd_sim, "run the hysteresis model over input samples"},
+    {"inv", cmd_inv, "compensator: the input that gives each desired output"},
+    {"pi", cmd_pi, "run a Prandtl-Ishlinskii model over input samples"},
 };
 
 static void usage(FILE *out)

@@ -1,0 +1,143 @@
+/* Shared by `hyst sim` and `hyst inv`: the same options (--poly, --range,
+ * --xcol, --tp, FILE) and the same engine, forward or on the inverse curve. */
+#include "cli.h"
+#include "hyst/hyst.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+typedef struct tcm_run {
+    const hyst_poly_t *f0;
+    int inverse;
+    const char *cmd;
+    hyst_real_t *mem;
+    hyst_t S;
+} tcm_run_t;
+
+/* --poly and --range into *f0; 1 after a message. The curve is checked here,
+ * before any input is read. */
+static int make_poly(const char *cmd, const double *coeffs, size_t ncoef, const double *range,
+                     size_t nrange, hyst_poly_t *f0)
+{
+    hyst_curve_t curve;
+    hyst_status_t st;
+    size_t i;
+    if (ncoef == 0u) {
+        return cli_fail(cmd, "--poly is required (see 'hyst %s --help')", cmd);
+    }
+    if (nrange == 0u) {
+        return cli_fail(cmd, "--range is required (see 'hyst %s --help')", cmd);
+    }
+    if (!(range[0] < range[1])) {
+        return cli_fail(cmd, "option --range: LO must be below HI");
+    }
+    f0->degree = (unsigned)(ncoef - 1u);
+    f0->lo = (hyst_real_t)range[0];
+    f0->hi = (hyst_real_t)range[1];
+    for (i = 0u; i <= HYST_MAX_DEGREE; ++i) {
+        f0->coeffs[i] = i < ncoef ? (hyst_real_t)coeffs[i] : 0;
+    }
+    st = hyst_curve_from_poly(&curve, f0);
+    if (st == HYST_ERR_NOT_INCREASING) {
+        hyst_wide_t c[HYST_MAX_DEGREE + 1], turn = 0;
+        for (i = 0u; i < ncoef; ++i) {
+            c[i] = (hyst_wide_t)coeffs[i];
+        }
+        (void)hyst_poly_is_increasing(c, f0->degree, range[0], range[1], &turn);
+        return cli_fail(cmd, "option --poly: f0 is not increasing on [%g, %g] "
+                             "(slope negative at x = %.6g)",
+                        range[0], range[1], (double)turn);
+    }
+    if (st != HYST_OK) {
+        return cli_fail(cmd, "options --poly/--range: %s", hyst_status_str(st));
+    }
+    return 0;
+}
+
+static int tcm_begin(void *ctx, size_t n)
+{
+    tcm_run_t *r = (tcm_run_t *)ctx;
+    /* n samples make at most n turning points: the memory never overflows. */
+    const size_t cap = n / 2u + 2u;
+    hyst_status_t st;
+    r->mem = (hyst_real_t *)malloc(4u * cap * sizeof(hyst_real_t));
+    if (r->mem == NULL) {
+        return cli_fail(r->cmd, "out of memory");
+    }
+    st = r->inverse ? hyst_init_inverse(&r->S, r->f0, r->mem, r->mem + cap, r->mem + 2u * cap,
+                                        r->mem + 3u * cap, cap)
+                    : hyst_init(&r->S, r->f0, r->mem, r->mem + cap, r->mem + 2u * cap,
+                                r->mem + 3u * cap, cap);
+    return st == HYST_OK ? 0 : cli_fail(r->cmd, "%s", hyst_status_str(st));
+}
+
+static double tcm_step(void *ctx, double x, int *clamped)
+{
+    tcm_run_t *r = (tcm_run_t *)ctx;
+    const hyst_real_t y = hyst_step(&r->S, (hyst_real_t)x);
+    *clamped = hyst_status(&r->S) == HYST_WARN_CLAMPED;
+    return (double)y;
+}
+
+static unsigned long tcm_tp(void *ctx)
+{
+    return (unsigned long)hyst_tp_count(&((tcm_run_t *)ctx)->S);
+}
+
+int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, int inverse)
+{
+    cli_args_t a;
+    cli_samples_t s;
+    cli_map_t m;
+    tcm_run_t r;
+    const char *v;
+    double coeffs[HYST_MAX_DEGREE + 1], range[2];
+    size_t ncoef = 0u, nrange = 0u;
+    int tp = 0, kind, rc;
+    hyst_poly_t f0;
+
+    cli_args_init(&a, cmd, argc, argv);
+    cli_samples_init(&s);
+    while ((kind = cli_samples_next(&a, &s, help)) == CLI_OPT) {
+        if (cli_is(&a, "--tp")) {
+            tp = 1;
+        } else if (cli_is(&a, "--poly")) {
+            if ((v = cli_value(&a)) == NULL ||
+                !cli_opt_list(&a, v, coeffs, 2u, HYST_MAX_DEGREE + 1u, &ncoef)) {
+                return 1;
+            }
+        } else if (cli_is(&a, "--range")) {
+            if ((v = cli_value(&a)) == NULL || !cli_opt_list(&a, v, range, 2u, 2u, &nrange)) {
+                return 1;
+            }
+        } else {
+            return cli_unknown(&a);
+        }
+    }
+    if (kind != CLI_END) {
+        return kind == CLI_HELP ? 0 : 1;
+    }
+    if (make_poly(cmd, coeffs, ncoef, range, nrange, &f0) != 0) {
+        return 1;
+    }
+    r.f0 = &f0;
+    r.inverse = inverse;
+    r.cmd = cmd;
+    r.mem = NULL;
+    m.ctx = &r;
+    m.begin = tcm_begin;
+    m.step = tcm_step;
+    m.col2 = tp ? tcm_tp : NULL;
+    if (inverse) {
+        m.clamp_what = "desired outputs";
+        m.lo = (double)hyst_poly_eval(&f0, f0.lo);
+        m.hi = (double)hyst_poly_eval(&f0, f0.hi);
+    } else {
+        m.clamp_what = "inputs";
+        m.lo = range[0];
+        m.hi = range[1];
+    }
+    rc = cli_map_samples(cmd, &s, &m);
+    free(r.mem);
+    return rc;
+}

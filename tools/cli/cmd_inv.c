@@ -1,0 +1,26 @@
+/* hyst inv: the compensator (inverse TCM), one drive input per desired output. */
+#include "cli.h"
+
+static const char help[] =
+    "usage: hyst inv --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp] [FILE]\n"
+    "\n"
+    "Runs the compensator of the model 'hyst sim' runs with the same --poly and\n"
+    "--range: for each desired output in FILE (standard input if FILE is absent\n"
+    "or '-'), the input that makes the model produce it, given the history. It is\n"
+    "the same engine on the inverse curve f0^-1, starting from (f0(LO), LO), so\n"
+    "'hyst sim' of the printed inputs gives back the desired outputs.\n"
+    "Prints one input per line with 9 significant digits.\n"
+    "\n"
+    "  --poly cN,...,c0  coefficients of f0, highest power first (degree 1..9)\n"
+    "  --range LO,HI     domain of f0; desired outputs outside [f0(LO), f0(HI)] are\n"
+    "                    unreachable: they are clamped to it (the drive saturates at\n"
+    "                    LO or HI), with a warning on stderr (count, first line)\n"
+    "                    unless within 1e-9 relative (9-digit rounding of a bound);\n"
+    "                    exit status stays 0, as for 'hyst sim'\n"
+    CLI_HELP_XCOL
+    "  --tp              add the turning-point count as a second column: x,tp\n"
+    "  --help            this text\n"
+    "\n"
+    CLI_HELP_EXIT;
+
+int cmd_inv(int argc, char **argv) { return cli_tcm_command(argc, argv, "inv", help, 1); }
