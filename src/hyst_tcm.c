@@ -1,129 +1,7 @@
-/* The TCM engine: turning-point memory, wipe-out, branch output. */
+/* The TCM engine with real inputs: validation, admission of samples, and the
+ * shared engine (tcm_engine.inc) over hyst_real_t. */
 #include "hyst/tcm.h"
 #include "hyst_internal.h"
-
-hyst_status_t hyst_init_curve(hyst_t *S, const hyst_curve_t *curve,
-                              hyst_real_t *xltp, hyst_real_t *yltp,
-                              hyst_real_t *xrtp, hyst_real_t *yrtp,
-                              size_t capacity)
-{
-    if (S == NULL || curve == NULL || xltp == NULL || yltp == NULL ||
-        xrtp == NULL || yrtp == NULL) {
-        return HYST_ERR_NULL;
-    }
-    if (capacity < 2u) {
-        return HYST_ERR_CAPACITY;
-    }
-    if (hyst_curve_check(curve) != HYST_OK) {
-        return HYST_ERR_ARG;
-    }
-    S->curve = *curve;
-    S->xltp = xltp;
-    S->yltp = yltp;
-    S->xrtp = xrtp;
-    S->yrtp = yrtp;
-    S->capacity = capacity;
-    hyst_reset(S);
-    return HYST_OK;
-}
-
-hyst_status_t hyst_init(hyst_t *S, const hyst_poly_t *f0, hyst_real_t *xltp,
-                        hyst_real_t *yltp, hyst_real_t *xrtp, hyst_real_t *yrtp,
-                        size_t capacity)
-{
-    hyst_curve_t curve;
-    hyst_status_t st;
-    if (S == NULL || xltp == NULL || yltp == NULL || xrtp == NULL || yrtp == NULL) {
-        return HYST_ERR_NULL;
-    }
-    if (capacity < 2u) {
-        return HYST_ERR_CAPACITY;
-    }
-    st = hyst_curve_from_poly(&curve, f0);
-    if (st != HYST_OK) {
-        return st;
-    }
-    return hyst_init_curve(S, &curve, xltp, yltp, xrtp, yrtp, capacity);
-}
-
-/* Output on the current branch. The one formula of both paths, so that a
- * loop that closes returns to its starting output bit for bit. */
-HYST_INLINE hyst_real_t branch_y(const hyst_t *S, hyst_real_t x)
-{
-    return S->y_ctp + S->sign * hyst_curve_g_unit(&S->curve, (x - S->x_ctp) * S->u_scale);
-}
-
-/* Derives the fast-path cache from the arrays and the last input. */
-static void settle(hyst_t *S, hyst_real_t x)
-{
-    const size_t nl = S->n_ltp, nr = S->n_rtp;
-    if (nl > nr) {
-        S->x_ctp = S->xltp[nl - 1u];
-        S->y_ctp = S->yltp[nl - 1u];
-        S->sign = 1;
-        S->window[0] = x;
-        S->window[1] = nr > 0u ? S->xrtp[nr - 1u] : S->curve.hi;
-        S->moving_end = 0u;
-    } else {
-        S->x_ctp = S->xrtp[nr - 1u];
-        S->y_ctp = S->yrtp[nr - 1u];
-        S->sign = -1;
-        S->window[0] = S->xltp[nl - 1u];
-        S->window[1] = x;
-        S->moving_end = 1u;
-    }
-    S->u_scale = S->sign * S->curve.inv_span;
-}
-
-void hyst_reset(hyst_t *S)
-{
-    S->xltp[0] = S->curve.lo;
-    S->yltp[0] = S->curve.y_lo;
-    S->n_ltp = 1u;
-    S->n_rtp = 0u;
-    S->status = HYST_OK;
-    S->events = 0u;
-    settle(S, S->curve.lo);
-    S->y_prev = S->curve.y_lo;
-}
-
-void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y)
-{
-    settle(S, x);
-    S->y_prev = y;
-}
-
-/* Count of xltp[0..n) below x (ascending array): LTPs that survive a fall to x. */
-static size_t ltp_below(const hyst_real_t *xltp, size_t n, hyst_real_t x)
-{
-    size_t left = 0u;
-    while (n > 0u) {
-        const size_t half = n / 2u;
-        if (xltp[left + half] < x) {
-            left += half + 1u;
-            n -= half + 1u;
-        } else {
-            n = half;
-        }
-    }
-    return left;
-}
-
-/* Count of xrtp[0..n) above x (descending array): RTPs that survive a rise to x. */
-static size_t rtp_above(const hyst_real_t *xrtp, size_t n, hyst_real_t x)
-{
-    size_t left = 0u;
-    while (n > 0u) {
-        const size_t half = n / 2u;
-        if (xrtp[left + half] > x) {
-            left += half + 1u;
-            n -= half + 1u;
-        } else {
-            n = half;
-        }
-    }
-    return left;
-}
 
 /* Out-of-line so the common path stays short: NaN/Inf or outside [lo, hi].
  * Returns 0 if the sample must be ignored, else 1 with *x clamped. */
@@ -142,90 +20,79 @@ static int admit_slow(hyst_t *S, hyst_real_t *x)
     return 1;
 }
 
-/* Everything but the fast path: bad samples, reversals, wipe-out. */
-static hyst_real_t step_slow(hyst_t *S, hyst_real_t x)
+static int tcm_admit(hyst_t *S, hyst_real_t x, hyst_real_t *out)
 {
-    const hyst_real_t x_prev = S->window[S->moving_end];
-    size_t nl, nr;
-    hyst_real_t y;
-
-    S->status = HYST_OK;
-    if (!(x >= S->curve.lo && x <= S->curve.hi) && !admit_slow(S, &x)) {
-        return S->y_prev;
-    }
-    if (x == x_prev) { /* repeated samples create no TP */
-        return S->y_prev;
-    }
-    nl = S->n_ltp;
-    nr = S->n_rtp;
-    if (nl > nr) {
-        /* rising branch from LTP nl-1; RTP nr-1 (if any) is the one below */
-        if (x < x_prev) {
-            /* reversal: (x_prev, y_prev) becomes RTP nr, falling from it */
-            if (x <= S->xltp[nl - 1u]) { /* the new RTP and LTP nl-1 wiped at once */
-                nl = ltp_below(S->xltp, nl - 1u, x);
-                nr = nl;
-                nl += (nl == 0u); /* fell to lo: back at A0 */
-            } else { /* nr < nl <= capacity: the RTP array has room */
-                S->xrtp[nr] = x_prev;
-                S->yrtp[nr] = S->y_prev;
-                ++nr;
-            }
-        } else if (nr > 0u && x >= S->xrtp[nr - 1u]) {
-            nr = rtp_above(S->xrtp, nr - 1u, x);
-            nl = nr + 1u;
-        }
-    } else {
-        /* falling branch from RTP nr-1; LTP nl-1 is the one below */
-        if (x > x_prev) {
-            if (x >= S->xrtp[nr - 1u]) { /* the new LTP and RTP nr-1 wiped at once */
-                nr = rtp_above(S->xrtp, nr - 1u, x);
-                nl = nr + 1u;
-            } else {
-                /* Only the LTP array can fill (A0 takes one of its entries).
-                 * Full: forget the innermost loop, LTP nl-1 and RTP nr-1. */
-                if (nl == S->capacity) {
-                    --nl;
-                    --nr;
-                    S->status = HYST_WARN_FULL;
-                    S->events |= HYST_EVENT_FULL;
-                }
-                S->xltp[nl] = x_prev;
-                S->yltp[nl] = S->y_prev;
-                ++nl;
-            }
-        } else if (x <= S->xltp[nl - 1u]) {
-            nl = ltp_below(S->xltp, nl - 1u, x);
-            nr = nl;
-            nl += (nl == 0u);
-        }
-    }
-    S->n_ltp = nl;
-    S->n_rtp = nr;
-    settle(S, x);
-    y = branch_y(S, x);
-    S->y_prev = y;
-    return y;
+    *out = x;
+    return (x >= S->curve.lo && x <= S->curve.hi) || admit_slow(S, out);
 }
 
-/* The per-sample computation, inlined into hyst_step() and hyst_process(). */
-HYST_INLINE hyst_real_t step(hyst_t *S, hyst_real_t x)
+#define TCM_S hyst_t
+#define TCM_X hyst_real_t
+#define TCM_ARG hyst_real_t
+#define TCM_IN hyst_real_t
+#define TCM_LO(S) ((S)->curve.lo)
+#define TCM_HI(S) ((S)->curve.hi)
+#define TCM_R(a) (a)
+#define TCM_D(a, b) ((a) - (b))
+#define TCM_MID(a, b) ((a) + ((b) - (a)) * HYST_REAL_C(0.5))
+#include "tcm_engine.inc"
+
+hyst_status_t hyst_init_curve(hyst_t *S, const hyst_curve_t *curve,
+                              hyst_real_t *xltp, hyst_real_t *yltp,
+                              hyst_real_t *xrtp, hyst_real_t *yrtp,
+                              size_t capacity)
 {
-    hyst_real_t y;
-    HYST_TIMING_BEGIN();
-    /* Fast path: the input moves on and reaches no stored TP. NaN fails the
-     * comparisons, and the window lies inside [lo, hi]: no other check needed. */
-    if (!(x > S->window[0] && x < S->window[1])) {
-        y = step_slow(S, x);
-        HYST_TIMING_END();
-        return y;
+    const hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
+    if (curve == NULL) {
+        return HYST_ERR_NULL;
     }
-    y = branch_y(S, x);
-    S->window[S->moving_end] = x;
+    if (st != HYST_OK) {
+        return st;
+    }
+    if (hyst_curve_check(curve) != HYST_OK) {
+        return HYST_ERR_ARG;
+    }
+    S->curve = *curve;
+    tcm_attach(S, xltp, yltp, xrtp, yrtp, capacity);
+    return HYST_OK;
+}
+
+hyst_status_t hyst_init(hyst_t *S, const hyst_poly_t *f0, hyst_real_t *xltp,
+                        hyst_real_t *yltp, hyst_real_t *xrtp, hyst_real_t *yrtp,
+                        size_t capacity)
+{
+    hyst_curve_t curve;
+    hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
+    if (st == HYST_OK) {
+        st = hyst_curve_from_poly(&curve, f0);
+    }
+    return st != HYST_OK ? st : hyst_init_curve(S, &curve, xltp, yltp, xrtp, yrtp, capacity);
+}
+
+void hyst_reset(hyst_t *S) { tcm_reset(S); }
+
+void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y)
+{
+    /* The snapshot carries the TPs, not the bookkeeping of what bounded
+     * memory forgot: the error bound counts again from here. */
+    S->forgot = 0;
+    S->forgot_level = TCM_NO_LEVEL;
+    S->db_reach = 0;
+    S->db_err = 0;
+    settle(S, x);
     S->y_prev = y;
-    S->status = HYST_OK;
-    HYST_TIMING_END();
-    return y;
+}
+
+hyst_status_t hyst_set_deadband(hyst_t *S, hyst_real_t width)
+{
+    if (S == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (!(width >= 0 && width - width == 0)) { /* negative, NaN or infinite */
+        return HYST_ERR_ARG;
+    }
+    S->deadband = width;
+    return HYST_OK;
 }
 
 hyst_real_t hyst_step(hyst_t *S, hyst_real_t x)
@@ -236,19 +103,5 @@ hyst_real_t hyst_step(hyst_t *S, hyst_real_t x)
 hyst_status_t hyst_process(hyst_t *S, const hyst_real_t *x, hyst_real_t *y,
                            size_t n)
 {
-    int worst = HYST_OK; /* HYST_WARN_FULL > HYST_WARN_CLAMPED > HYST_OK */
-    int failed = 0;
-    size_t i;
-    if (n > 0u && (S == NULL || x == NULL || y == NULL)) {
-        return HYST_ERR_NULL;
-    }
-    for (i = 0u; i < n; ++i) {
-        y[i] = step(S, x[i]);
-        if (S->status < 0) {
-            failed = 1;
-        } else if (S->status > worst) {
-            worst = S->status;
-        }
-    }
-    return failed ? HYST_ERR_NONFINITE : (hyst_status_t)worst;
+    return tcm_process(S, x, y, n);
 }

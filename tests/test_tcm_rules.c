@@ -4,6 +4,8 @@
 #include "support.h"
 #include "unity.h"
 
+#include <math.h>
+
 #define TRIALS 300
 #define CAP 64
 
@@ -273,27 +275,75 @@ static void test_random_codes_never_overflow(void)
     check_guards();
 }
 
-/* Full array: the innermost loop is forgotten, the output at that sample is
- * the unbounded model's, nothing is written out of bounds. */
+/* Largest slope of Eq. 20 on [0, 40]. */
+static double paper_max_slope(void)
+{
+    const double *c = paper_eq20_coeffs;
+    double best = 0.0;
+    int k;
+    for (k = 0; k <= 400; ++k) {
+        const double x = 0.1 * k;
+        const double s = 3.0 * c[0] * x * x + 2.0 * c[1] * x + c[2];
+        best = s > best ? s : best;
+    }
+    return best;
+}
+
+/* Full array: the innermost loop (L1, R1) and the new TP P merge into one LTP
+ * V whose branch starts exactly through P (continuous at the overflow
+ * sample) and lies on the outer branch (continuous at every later wipe-out);
+ * the outer TPs are kept bit for bit; every sample stays within
+ * hyst_error_bound() of the unbounded model; nothing is written out of
+ * bounds; reaching hi makes the model exact again. */
 static void test_full_array_forgets_innermost_loop(void)
 {
     static ref_tcm_t ref;
     const size_t cap = 4u;
+    const double tol = TOL_OF_RANGE * 5.0;
+    const double lmax = paper_max_slope();
     int i, fulls = 0;
-    double lo = 0.0, hi = 40.0;
+    double lo = 0.0, hi = 40.0, y_ref;
+    hyst_real_t y, x_prev = HYST_REAL_C(0.0), y_prev;
     TEST_ASSERT_EQUAL_INT(HYST_OK, init_quantised(&A, cap));
     ref_init(&ref, paper_eq20_coeffs, 3u, 0.0, 40.0);
+    y_prev = hyst_output(&A);
     for (i = 0; i < 40; ++i) { /* ever narrower nested loops */
         const double x = (i % 2 == 0) ? hi : lo;
         const hyst_real_t xr_ = (hyst_real_t)x;
-        const double y_ref = ref_step(&ref, (double)xr_);
-        const hyst_real_t y = hyst_step(&A, xr_);
-        TEST_ASSERT_TRUE(A.n_ltp <= cap && A.n_rtp <= cap);
-        if (hyst_status(&A) == HYST_WARN_FULL) {
-            ++fulls;
-            TEST_ASSERT_DOUBLE_WITHIN(TOL_OF_RANGE * 5.0, y_ref, (double)y);
-            TEST_ASSERT_EQUAL_UINT(cap, (unsigned)A.n_ltp);
+        hyst_real_t outer_x[2 * CAP];
+        size_t k, nl_before = A.n_ltp, nr_before = A.n_rtp;
+        const hyst_real_t l1_before = A.xltp[A.n_ltp - 1u];
+        for (k = 0; k + 1u < cap; ++k) {
+            outer_x[k] = A.xltp[k];
+            outer_x[cap + k] = A.xrtp[k];
         }
+        y_ref = ref_step(&ref, (double)xr_);
+        y = hyst_step(&A, xr_);
+        TEST_ASSERT_TRUE(A.n_ltp <= cap && A.n_rtp <= cap);
+        TEST_ASSERT_TRUE(fabs((double)y - y_ref) <= (double)hyst_error_bound(&A) + tol);
+        TEST_ASSERT_TRUE(fabs((double)y - (double)y_prev) <= lmax * fabs(x - (double)x_prev) + tol);
+        if (hyst_status(&A) == HYST_WARN_FULL) {
+            const hyst_real_t xv = A.xltp[cap - 1u], yv = A.yltp[cap - 1u];
+            ++fulls;
+            TEST_ASSERT_EQUAL_UINT(cap, (unsigned)nl_before);
+            TEST_ASSERT_EQUAL_UINT(cap, (unsigned)A.n_ltp);
+            TEST_ASSERT_EQUAL_UINT(nr_before - 1u, (unsigned)A.n_rtp); /* R1 gone */
+            for (k = 0; k + 1u < cap; ++k) { /* outer TPs untouched */
+                TEST_ASSERT_EQUAL_MEMORY(&outer_x[k], &A.xltp[k], sizeof xv);
+                TEST_ASSERT_EQUAL_MEMORY(&outer_x[cap + k], &A.xrtp[k], sizeof xv);
+            }
+            TEST_ASSERT_TRUE(xv >= l1_before && xv <= x_prev); /* V between L1 and P */
+            /* V's branch passes through P: no step at this sample */
+            TEST_ASSERT_DOUBLE_WITHIN(tol, (double)y_prev,
+                                      (double)(yv + hyst_curve_g(&A.curve, x_prev - xv)));
+            /* V lies on the falling branch of R2, now the RTP below it */
+            TEST_ASSERT_DOUBLE_WITHIN(tol, (double)A.yrtp[A.n_rtp - 1u] -
+                                               (double)hyst_curve_g(&A.curve, A.xrtp[A.n_rtp - 1u] - xv),
+                                      (double)yv);
+            TEST_ASSERT_TRUE(hyst_error_bound(&A) > 0);
+        }
+        x_prev = xr_;
+        y_prev = y;
         if (i % 2 == 0) {
             hi -= 1.0;
         } else {
@@ -306,9 +356,12 @@ static void test_full_array_forgets_innermost_loop(void)
     TEST_ASSERT_TRUE(fulls > 10);
     TEST_ASSERT_EQUAL_UINT(HYST_EVENT_FULL, hyst_events(&A) & HYST_EVENT_FULL);
     check_guards();
-    /* the trajectory still closes loops and saturates normally */
-    (void)hyst_step(&A, HYST_REAL_C(40.0));
+    /* the trajectory still closes loops and saturates normally, exactly */
+    y = hyst_step(&A, HYST_REAL_C(40.0));
+    y_ref = ref_step(&ref, 40.0);
     TEST_ASSERT_EQUAL_UINT(0u, (unsigned)hyst_tp_count(&A));
+    TEST_ASSERT_DOUBLE_WITHIN(tol, y_ref, (double)y);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, (float)hyst_error_bound(&A));
 }
 
 /* Paper experiment shape (Fig. 14): shrinking then growing triangle on Eq. 20. */

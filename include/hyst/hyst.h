@@ -7,6 +7,7 @@
  *  - hyst/status.h: status codes and event flags;
  *  - hyst/curve.h:  the major ascending curve f0;
  *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
+ *  - hyst/code.h:   the same TCM over integer DAC codes;
  *  - hyst/ident.h:  identification of f0 from measured data.
  *  - hyst/snapshot.h: save/restore of an instance's memory (CRC-checked);
  *  - hyst/inverse.h: the inverse TCM, a feedforward compensator;
@@ -23,6 +24,7 @@
 #include "hyst/status.h"
 #include "hyst/curve.h"
 #include "hyst/tcm.h"
+#include "hyst/code.h"
 #include "hyst/ident.h"
 #include "hyst/snapshot.h"
 #include "hyst/inverse.h"

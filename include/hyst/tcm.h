@@ -23,6 +23,20 @@
  * a constant fast path: two comparisons against a cached window, one
  * evaluation of g (about 34 Cortex-M4F instructions for a cubic).
  *
+ * Bounded memory (docs/memory.md). When a reversal at P finds the LTP array
+ * full, the innermost stored loop (L1, R1) and P are replaced by ONE LTP V:
+ * the point of the next outer branch (the falling one from R2) whose rising
+ * branch passes through P. The output is continuous at this sample and the
+ * stack stays a valid TCM state, so no jump appears at a later wipe-out
+ * either (the former policy, dropping L1 and R1 and storing P, jumped by
+ * g(R2-L1) - g(R1-L1) - g(R2-P) + g(R1-P) when the trajectory came back to
+ * R2 or through P). The price, m = the miss of V's branch at the forgotten
+ * R1, is at most max|f0''| w^2 / 4 (w = input width of the forgotten loop),
+ * at most its output height and never more than the former jump;
+ * hyst_error_bound() adds up the misses that can still matter. A merge costs
+ * at most 54 evaluations of g (6 + 2 per bisection step, at most 24 steps),
+ * on the overflowing sample only.
+ *
  * Instances share nothing: several may run side by side (multi-axis stages).
  */
 #ifndef HYST_TCM_H
@@ -40,30 +54,47 @@ extern "C" {
 #define HYST_CAPACITY(nu) ((nu) / 2u)
 
 /**
- * @brief A TCM instance. Fields are private; use the functions below.
+ * @brief Members shared by every TCM instance type (private).
+ *
+ * @p xtype is the stored input type: hyst_real_t here, an integer code word
+ * in hyst/code.h. One engine source (src/tcm_engine.inc) serves both.
+ */
+#define HYST_TCM_MEMBERS_(xtype)                                           \
+    hyst_curve_t curve;  /**< branch shape and domain */                   \
+    xtype *xltp;         /**< LTP inputs, ascending, [0] = lo */           \
+    hyst_real_t *yltp;   /**< LTP outputs */                               \
+    xtype *xrtp;         /**< RTP inputs, descending */                    \
+    hyst_real_t *yrtp;   /**< RTP outputs */                               \
+    size_t capacity;     /**< entries of each array */                     \
+    size_t n_ltp;        /**< stored LTPs, including A0 (>= 1) */          \
+    size_t n_rtp;        /**< stored RTPs; n_ltp > n_rtp <=> rising */     \
+    /* Fast-path cache, derived from the arrays after every slow step:     \
+     * while the input moves on inside the open interval (window[0],       \
+     * window[1]), no TP is created or passed and                          \
+     * y = y_ctp + sign g(u_scale (x - x_ctp)). window[moving_end] is the  \
+     * last valid input. */                                                \
+    xtype window[2];                                                       \
+    hyst_real_t x_ctp;   /**< current TP's input, as a real */             \
+    hyst_real_t y_ctp;                                                     \
+    hyst_real_t sign;    /**< +1 on a rising branch, -1 on a falling one */ \
+    hyst_real_t u_scale; /**< sign / (hi - lo) */                          \
+    hyst_real_t y_prev;  /**< output for the last valid input */           \
+    unsigned moving_end; /**< 0 rising (the lower end follows x), 1 falling */ \
+    int status;          /**< hyst_status_t of the last sample */          \
+    unsigned events;     /**< sticky HYST_EVENT_* flags */                 \
+    /* Bounded memory (docs/memory.md), off the fast path. */              \
+    xtype deadband;      /**< reversals narrower than this: not stored */  \
+    xtype db_reach;      /**< widest skipped reversal, open window */      \
+    hyst_real_t db_err;  /**< error bound of that skipped reversal */      \
+    hyst_real_t forgot;  /**< error bound: misses of live merges */        \
+    size_t forgot_level  /**< all live while stack depth > this */
+
+/**
+ * @brief A TCM instance with real inputs. Fields are private; use the
+ *        functions below.
  */
 typedef struct hyst {
-    hyst_curve_t curve;  /**< branch shape and domain */
-    hyst_real_t *xltp;   /**< LTP inputs, ascending, [0] = lo */
-    hyst_real_t *yltp;   /**< LTP outputs */
-    hyst_real_t *xrtp;   /**< RTP inputs, descending */
-    hyst_real_t *yrtp;   /**< RTP outputs */
-    size_t capacity;     /**< entries of each array */
-    size_t n_ltp;        /**< stored LTPs, including A0 (>= 1) */
-    size_t n_rtp;        /**< stored RTPs; n_ltp > n_rtp <=> branch rising */
-    /* Fast-path cache, derived from the arrays after every slow step: while
-     * the input moves on inside the open interval (window[0], window[1]),
-     * no TP is created or passed and y = y_ctp + sign g(u_scale (x - x_ctp)).
-     * window[moving_end] is the last valid input. */
-    hyst_real_t window[2];
-    hyst_real_t x_ctp;   /**< current TP */
-    hyst_real_t y_ctp;
-    hyst_real_t sign;    /**< +1 on a rising branch, -1 on a falling one */
-    hyst_real_t u_scale; /**< sign / (hi - lo) */
-    hyst_real_t y_prev;  /**< output for the last valid input */
-    unsigned moving_end; /**< 0 rising (the lower end follows x), 1 falling */
-    int status;          /**< hyst_status_t of the last sample */
-    unsigned events;     /**< sticky HYST_EVENT_* flags */
+    HYST_TCM_MEMBERS_(hyst_real_t);
 } hyst_t;
 
 /**
@@ -131,10 +162,10 @@ void hyst_reset(hyst_t *S);
  *  - NaN or infinite @p x: ignored, state untouched, returns the previous
  *    output; status HYST_ERR_NONFINITE.
  *  - @p x outside [lo, hi]: clamped to the domain; status HYST_WARN_CLAMPED.
- *  - a reversal with a full array: the innermost stored loop (the two most
- *    recent TPs) is forgotten to make room; the output stays continuous at
- *    this sample; status HYST_WARN_FULL. Cannot happen when the inputs take
- *    at most 2 * capacity distinct values.
+ *  - a reversal with a full array: the innermost stored loop is merged
+ *    away (see "Bounded memory" below); the output stays continuous, at
+ *    this sample and later; status HYST_WARN_FULL. Cannot happen when the
+ *    inputs take at most 2 * capacity distinct values.
  * The status of the sample is read by hyst_status(); hyst_events() collects
  * the conditions of all samples.
  *
@@ -156,6 +187,42 @@ hyst_real_t hyst_step(hyst_t *S, hyst_real_t x);
  */
 hyst_status_t hyst_process(hyst_t *S, const hyst_real_t *x, hyst_real_t *y,
                            size_t n);
+
+/**
+ * @brief Sets the noise deadband: a reversal closer than @p width (input
+ *        units) to the current turning point is not stored.
+ *
+ * The input then moves back along the current branch (reversibly) instead of
+ * starting a minor loop, so sensor or command noise cannot fill the memory.
+ * The full model would run a loop of width d < width inside that branch: the
+ * error is at most that loop's height |g(d) - 2 g(d/2)| <= max|f0''| width^2
+ * / 4 (for f0'' of one sign; docs/memory.md), is 0 again once the input
+ * leaves the window, never accumulates and never jumps. Samples inside the
+ * window take the slow path. 0 (the default after init) disables it; kept by
+ * hyst_reset().
+ * @param[in,out] S      initialised instance.
+ * @param[in]     width  deadband in input units, finite, >= 0.
+ * @return HYST_OK, HYST_ERR_NULL or HYST_ERR_ARG (negative or not finite).
+ */
+hyst_status_t hyst_set_deadband(hyst_t *S, hyst_real_t width);
+
+/**
+ * @brief Bound on |y - y_full|, y_full being the output of the same model
+ *        with unlimited memory and no deadband, for the inputs so far.
+ *
+ * The sum of the misses of the full-array merges whose outer turning point
+ * is still stored, plus the bound of the open deadband excursion; 0 while
+ * nothing was forgotten, back to 0 when the trajectory leaves all merged
+ * loops (at the latest when it reaches lo or hi).
+ * Proven for curves whose f0'' keeps one sign on [lo, hi] (docs/memory.md);
+ * arithmetic rounding is not included.
+ * @param[in] S initialised instance.
+ * @return the bound, in output units.
+ */
+static inline hyst_real_t hyst_error_bound(const hyst_t *S)
+{
+    return S->forgot + S->db_err;
+}
 
 /** @brief Status of the last sample (hyst_status_t). */
 static inline int hyst_status(const hyst_t *S) { return S->status; }
