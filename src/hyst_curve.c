@@ -199,6 +199,7 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
         y_hi += g[k];
     }
     out.kind = HYST_CURVE_POLY;
+    out.horner = n;
     out.degree = n;
     out.lo = f0->lo;
     out.hi = f0->hi;
@@ -252,11 +253,14 @@ hyst_status_t hyst_curve_check(const hyst_curve_t *curve)
     switch (curve->kind) {
     case HYST_CURVE_POLY:
     case HYST_CURVE_POLY_INV:
-        return curve->degree >= 1u && curve->degree <= HYST_MAX_DEGREE ? HYST_OK
-                                                                       : HYST_ERR_ARG;
+        return curve->degree >= 1u && curve->degree <= HYST_MAX_DEGREE &&
+                       curve->horner == (curve->kind == HYST_CURVE_POLY ? curve->degree : 0u)
+                   ? HYST_OK
+                   : HYST_ERR_ARG;
     case HYST_CURVE_PWL:
     case HYST_CURVE_PWL_INV:
-        return curve->px != NULL && curve->py != NULL && curve->n_points >= 2u
+        return curve->horner == 0u && curve->px != NULL && curve->py != NULL &&
+                       curve->n_points >= 2u
                    ? HYST_OK
                    : HYST_ERR_ARG;
     default:

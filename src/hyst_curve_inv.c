@@ -69,6 +69,7 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
     out.y_hi = fwd->hi;
     if (fwd->kind == HYST_CURVE_POLY_INV) { /* as hyst_curve_from_poly() set it */
         out.kind = HYST_CURVE_POLY;
+        out.horner = out.degree;
         out.inv_span = (hyst_real_t)(1 / ((hyst_wide_t)out.hi - (hyst_wide_t)out.lo));
         *inv = out;
         return HYST_OK;
@@ -80,6 +81,7 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
         return HYST_ERR_NOT_INVERTIBLE;
     }
     out.kind = HYST_CURVE_POLY_INV;
+    out.horner = 0u; /* g^-1 is evaluated out of line */
     out.inv_span = 1; /* g^-1 takes the output difference itself */
     out.span = (hyst_real_t)((hyst_wide_t)fwd->hi - (hyst_wide_t)fwd->lo);
     out.knot_scale = (hyst_real_t)((hyst_wide_t)HYST_INV_KNOTS / range);

@@ -91,6 +91,9 @@ typedef enum hyst_curve_kind {
 typedef struct hyst_curve {
     int kind;              /**< hyst_curve_kind_t */
     unsigned degree;       /**< polynomial degree n (polynomial kinds) */
+    /** degree of the inline Horner path of hyst_curve_g_unit(): n for POLY,
+     *  0 for the kinds evaluated out of line (the per-sample dispatch) */
+    unsigned horner;
     hyst_real_t lo, hi;    /**< domain of the curve */
     hyst_real_t y_lo;      /**< curve value at lo */
     hyst_real_t y_hi;      /**< curve value at hi */
@@ -234,11 +237,9 @@ HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t
 {
     const hyst_real_t *a = curve->a; /* a[0] multiplies u^n */
     hyst_real_t acc;
-    if (curve->kind != HYST_CURVE_POLY) {
-        return hyst_curve_g_unit_other(curve, u);
-    }
 #define HYST_H_(acc_, k_) ((acc_) * u + a[k_])
-    switch (curve->degree) { /* independent cases: no register merges */
+    switch (curve->horner) { /* independent cases: no register merges */
+    case 0: return hyst_curve_g_unit_other(curve, u); /* not a polynomial */
     case 1: acc = a[0]; break;
     case 2: acc = HYST_H_(a[0], 1); break;
     case 3: acc = HYST_H_(HYST_H_(a[0], 1), 2); break;
@@ -250,7 +251,7 @@ HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t
     default: { /* 9 and above: Horner's loop */
         unsigned k;
         acc = a[0];
-        for (k = 1u; k < curve->degree; ++k) {
+        for (k = 1u; k < curve->horner; ++k) {
             acc = HYST_H_(acc, k);
         }
         break;
