@@ -226,20 +226,18 @@ hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x);
 hyst_real_t hyst_curve_g_unit_other(const hyst_curve_t *curve, hyst_real_t d);
 
 /**
- * @brief The branch shape at u = d * inv_span.
+ * @brief Polynomial branch shape at u = d / (hi - lo), u in [0, 1]: the
+ *        per-sample path, for curves with curve->horner >= 1 only.
  *
- * HYST_CURVE_POLY: u = d / (hi - lo) in [0, 1], Horner's rule unrolled by a
- * switch on the degree: one multiply-add per coefficient and no loop
- * overhead on the per-sample path. Other kinds (inv_span = 1, u = d): one
- * out-of-line call, see hyst_curve_g().
+ * Horner's rule unrolled by a switch on the degree: one multiply-add per
+ * coefficient, no loop and no call.
  */
-HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t u)
+HYST_INLINE hyst_real_t hyst_curve_horner(const hyst_curve_t *curve, hyst_real_t u)
 {
     const hyst_real_t *a = curve->a; /* a[0] multiplies u^n */
     hyst_real_t acc;
 #define HYST_H_(acc_, k_) ((acc_) * u + a[k_])
     switch (curve->horner) { /* independent cases: no register merges */
-    case 0: return hyst_curve_g_unit_other(curve, u); /* not a polynomial */
     case 1: acc = a[0]; break;
     case 2: acc = HYST_H_(a[0], 1); break;
     case 3: acc = HYST_H_(HYST_H_(a[0], 1), 2); break;
@@ -259,6 +257,17 @@ HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t
     }
 #undef HYST_H_
     return acc * u;
+}
+
+/**
+ * @brief The branch shape at u = d * inv_span, any kind.
+ *
+ * HYST_CURVE_POLY: hyst_curve_horner(), inline. Other kinds (inv_span = 1,
+ * u = d): one out-of-line call, see hyst_curve_g().
+ */
+HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t u)
+{
+    return curve->horner != 0u ? hyst_curve_horner(curve, u) : hyst_curve_g_unit_other(curve, u);
 }
 
 /**
