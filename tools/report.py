@@ -251,8 +251,9 @@ def memory(sec, md, bench):
     md.append("## Memory (Table 2 analogue)\n")
     md.append(f"One instance with arrays for Nu = 2^bits codes: 4 arrays × Nu/2 entries × "
               f"{int(sec['values']['real_bytes'])} bytes + {int(sec['values']['instance_bytes'])} bytes of "
-              "instance. (The paper's figures count half of this: apparently two arrays; hyst stores x and y "
-              "of both kinds of turning point.)\n")
+              "instance. (The paper's table corresponds to 8 bytes per entry position at 12 and 16 bits and "
+              "12 bytes at 18 and 24 bits; hyst keeps x and y of an LTP and of an RTP at each position: 16 "
+              "bytes in float, less with the integer-code variant.)\n")
     md.append("| resolution | Nu | entries per array | hyst (bytes) | paper |\n|---|---|---|---|---|")
     for row in t["data"]:
         bits, nu, entries, nbytes = (int(v) for v in row)
