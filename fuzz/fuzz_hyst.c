@@ -19,7 +19,8 @@
  * Adding an entry point: give it a control opcode in that switch (0xF5 and
  * 0xF7..0xFF fall to the default case, the accessors, today) and a seed in
  * fuzz/make_corpus.py that uses it. fuzz/run lists every function declared in
- * include/hyst/ (all headers, by glob) that this file does not call. */
+ * include/hyst/ (all headers, by glob) that neither this file nor
+ * fuzz_models.c (PI, PWL, inverse, identification) calls. */
 #include "hyst/hyst.h"
 #include "ref_tcm.h"
 #include "fuzz_common.h"
