@@ -6,7 +6,9 @@
  * Input layout (reads past the end yield zeros, so every input is valid):
  *   [0]  module (byte % 4): 0 PI, 1 PWL curve, 2 polynomial inverse, 3 ident
  *   [1]  flags: bit1 raw parameters (arbitrary doubles) else structured
- *        grids; bit2 a module-specific corruption; bit3 NULL-pointer probes
+ *        grids; bit2 a module-specific corruption (ident: REFLECT, or the
+ *        domain from the data); bit3 NULL-pointer probes (ident known f0:
+ *        explicit domain); bit4 (ident) a known f0 through the TCM
  *   then the module's parameters, then opcodes until the input ends (see
  *   each fuzz_* function). 0xF0..0xFF are control opcodes in the PI, PWL
  *   and inverse modules; any other byte is one sample of kind op & 7
