@@ -19,9 +19,11 @@
  * Adding an entry point: give it a control opcode in that switch (0xF5 and
  * 0xF7..0xFF fall to the default case, the accessors, today) and a seed in
  * fuzz/make_corpus.py that uses it. fuzz/run lists every function declared in
- * include/hyst/ (all headers, by glob) that this file does not call. */
+ * include/hyst/ (all headers, by glob) that neither this file nor
+ * fuzz_models.c (PI, PWL, inverse, identification) calls. */
 #include "hyst/hyst.h"
 #include "ref_tcm.h"
+#include "fuzz_common.h"
 
 #include <float.h>
 #include <math.h>
@@ -37,38 +39,6 @@
 #define MAX_CAP 48u
 #define MAX_SAMPLES 4096u
 #define SNAP_MAX HYST_SNAPSHOT_SIZE(MAX_CAP)
-
-typedef struct {
-    const unsigned char *p;
-    size_t n, at;
-} reader_t;
-
-static unsigned rd_u8(reader_t *r) { return r->at < r->n ? r->p[r->at++] : 0u; }
-
-static unsigned rd_u16(reader_t *r)
-{
-    const unsigned lo = rd_u8(r);
-    return lo | (rd_u8(r) << 8);
-}
-
-static double rd_f64(reader_t *r)
-{
-    unsigned char b[8];
-    double v;
-    unsigned k;
-    for (k = 0; k < 8u; ++k) b[k] = (unsigned char)rd_u8(r);
-    memcpy(&v, b, sizeof(v));
-    return v;
-}
-
-#define CHECK(cond)                                                               \
-    do {                                                                          \
-        if (!(cond)) {                                                            \
-            fprintf(stderr, "fuzz_hyst: %s:%d: check failed: %s\n", __FILE__,     \
-                    __LINE__, #cond);                                              \
-            abort();                                                              \
-        }                                                                         \
-    } while (0)
 
 typedef struct {
     hyst_t S;
@@ -104,30 +74,6 @@ static void check_invariants(const inst_t *I)
     }
 }
 
-/* Configuration from bytes. Structured: lo, hi and coefficients on small
- * grids, so that many curves are valid and well conditioned (differential
- * comparison is meaningful); raw: any doubles, for the init checks. */
-static void read_config(reader_t *r, int raw, hyst_poly_t *f)
-{
-    unsigned k;
-    memset(f, 0, sizeof(*f));
-    f->degree = rd_u8(r) % 12u;
-    if (raw) {
-        f->lo = rd_f64(r);
-        f->hi = rd_f64(r);
-        for (k = 0; k <= HYST_MAX_DEGREE; ++k) f->coeffs[k] = rd_f64(r);
-        return;
-    }
-    f->lo = ((double)(signed char)rd_u8(r)) / 32.0;             /* -4 .. 4 */
-    f->hi = f->lo + (double)(rd_u8(r) % 64u) / 16.0;            /* span 0 .. 4 */
-    for (k = 0; k <= HYST_MAX_DEGREE; ++k) {
-        f->coeffs[k] = ((double)(signed char)rd_u8(r)) / 64.0; /* -2 .. 2 */
-    }
-    if (f->degree >= 1u && f->degree <= HYST_MAX_DEGREE) { /* push the slope up half the time */
-        f->coeffs[f->degree - 1u] += (double)(rd_u8(r) & 0x3Fu);
-    }
-}
-
 /* Called when hyst_curve_from_poly accepted the domain and coefficients
  * (OK or NOT_INCREASING): the direct call must agree. Not called on other
  * finite input: a curve that overflows once normalised makes the subdivision
@@ -151,18 +97,6 @@ static void probe_config(const hyst_poly_t *f, int increasing)
         }
         (void)hyst_poly_eval(f, f->lo);
     }
-}
-
-/* Rounding allowance of the differential comparison: Horner's error bound on
- * the raw coefficients (the reference evaluates those; the core a shifted,
- * scaled copy), times the depth of turning points each output hangs on. */
-static double horner_bound(const hyst_poly_t *f)
-{
-    const double m = fmax(fabs(f->lo), fabs(f->hi));
-    double acc = 0.0;
-    unsigned k;
-    for (k = 0; k <= f->degree; ++k) acc = acc * m + fabs(f->coeffs[k]);
-    return 8.0 * (double)(f->degree + 1u) * DBL_EPSILON * acc;
 }
 
 static double next_sample(reader_t *r, const hyst_poly_t *f, unsigned op)

@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""Writes the seed corpus fuzz/corpus/ (small, committed). Layout: fuzz_hyst.c."""
+"""Writes the seed corpora (small, committed): fuzz/corpus/ for fuzz_hyst.c and
+fuzz/corpus_models/ for fuzz_models.c (layouts in their header comments).
+regress_* files are fuzzer finds, kept by hand, never written here."""
 import os, struct, math
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -57,7 +59,102 @@ seeds = {
     "forged_restore": structured(0, 16, *cubic) + shrinking(2) + bytes([0xF2, 60, 0]) + b"HYSS" + bytes(56)
         + bytes([0xF3, 100, 0]) + bytes(range(100)) + bytes([0xF6, 77, 1, 0xF6, 5, 0]),
 }
-for name, data in seeds.items():
-    with open(os.path.join(out, name), "wb") as f:
-        f.write(data)
-print(f"{len(seeds)} seeds in {out}")
+
+# ---- fuzz_models.c: [module % 4][flags] then the module's bytes ----
+PI, PWL, INV, IDENT = 0, 1, 2, 3
+RAW, CORRUPT, NULLS, KNOWN = 2, 4, 8, 16
+
+def pi(flags, steps, weights, hi, ops=b"", r0=None):
+    """steps: r_i - r_(i-1) in 1/16 (i >= 1); weights: w_1 in (1..64)/32 as a
+    byte, then w_i as signed bytes / 64; hi: r_N + signed byte / 16."""
+    b = bytes([PI, flags, len(weights)]) + bytes([weights[0]])
+    for st, w in zip(steps, weights[1:]):
+        b += bytes([st]) + sbyte(w)
+    if r0 is not None:
+        b += sbyte(r0)
+    return b + sbyte(hi) + ops
+
+def pos(u, kind=5):  # sample as a position in [-0.1, 1.1] of the span
+    v = int(round((u + 0.1) / 1.2 * 65535))
+    return bytes([kind]) + struct.pack("<H", max(0, min(65535, v)))
+
+def tri(levels=4, steps=4, lo=0.0, hi=1.0):
+    b, at = b"", lo
+    for k in range(levels):
+        for target in (hi - (hi - lo) * 0.1 * k, lo + (hi - lo) * 0.1 * (k + 1)):
+            for i in range(1, steps + 1):
+                b += pos(at + (target - at) * i / steps)
+            at = target
+    return b
+
+def block(us):
+    return bytes([0xF1, len(us)]) + b"".join(pos(u) for u in us)
+
+def pwl(flags, dys, dxs, cap, probes=b"", ops=b""):
+    """dys: value steps in 1/16 (first: y_0 = dy/16 - 1); dxs: x_0 as a signed
+    byte / 16, then steps in 1/16."""
+    b = bytes([PWL, flags, len(dys)])
+    for i, (dy, dx) in enumerate(zip(dys, dxs)):
+        b += bytes([dy]) + (sbyte(dx) if i == 0 else bytes([dx]))
+    return b + bytes([cap]) + probes + ops
+
+def poly(module, flags, degree, lo, span, coeffs, slope, tail=b""):
+    c = list(coeffs) + [0.0] * (10 - len(coeffs))
+    b = bytes([module, flags, degree]) + sbyte(lo * 32) + bytes([int(span * 16) % 64])
+    b += b"".join(sbyte(v * 64) for v in c)
+    if 1 <= degree <= 9:
+        b += bytes([slope])
+    return b + tail
+
+def ident(flags, degree, method, lo, span, ops, skip=0, delay=0):
+    return bytes([IDENT, flags, degree]) + sbyte(method) + sbyte(lo * 16) + bytes([int(span * 16)]) + ops + bytes([skip, delay])
+
+def add(u, yb=0x10, check=False):  # one sample at position u of the domain
+    return bytes([0x85 if check else 0x05, yb]) + pos(u)[1:]
+
+SOLVE, RESID, POLY, REINIT = 0xC0, 0xC1, 0xC2, 0xC3
+ramp = [i / 6 for i in range(7)]
+wave = ramp + ramp[::-1][1:] + ramp[1:]
+table1 = [3, 15, 12, 13, 13, 13, 13, 13, 13, 13]  # paper Table 1 weights, about
+cubic_c = [-1 / 64, 8 / 64, 32 / 64, 36 / 64]
+models = {
+    "pi_table1_walk": pi(0, [2] * 9, [3] + [w / 64 for w in [15, 12, 13, 13, 13, 13, 13, 13, 13]], 1.0,
+                         tri(4, 4) + b"\xf0" + tri(2, 3) + block([0.2, 0.9, 0.4]) + b"\xf2" + pos(-0.05)),
+    "pi_inverse_chain": pi(0, [1, 3, 5], [40, 0.3, -0.2, 0.5], 0.5, tri(3, 5) + pos(0.0, 3) + bytes([4, 200])),
+    "pi_block_nan": pi(0, [4], [20, 0.5], 1.0, bytes([0xF1, 0x85, 0, 0, 4, 9, 1, 5, 0, 128, 2]) + bytes(8) + b"\xf3"),
+    "pi_bad_r0": pi(CORRUPT, [4, 4], [20, 0.5, 0.5], 1.0, pos(0.5), r0=0.25),
+    "pi_equal_thresholds": pi(0, [4, 0], [20, 0.5, 0.5], 1.0, pos(0.5)),
+    "pi_bad_weights": pi(NULLS, [4, 4], [1, -0.5, 0.2], 1.0, pos(0.5)),
+    "pi_n0": bytes([PI, NULLS, 0]),
+    "pi_hi_below": pi(0, [4], [20, 0.5], -0.5, tri(1, 3)),
+    "pi_raw": bytes([PI, RAW, 2]) + struct.pack("<4d", 0.0, 0.5, 0.25, 1e-3) + struct.pack("<d", 2.0) + tri(1, 3),
+    "pwl_round_trip": pwl(0, [16, 4, 20, 1, 9, 30, 2, 7], [-16, 3, 1, 8, 2, 15, 4, 6], 16, bytes(range(0, 255, 37)) * 2,
+                          tri(4, 4) + b"\xf0" + pos(1.05) + pos(-0.05) + bytes([0])),
+    "pwl_flat_piece": pwl(0, [16, 4, 0, 9], [0, 3, 1, 8], 8, bytes([100, 50, 200])),
+    "pwl_decreasing": pwl(CORRUPT, [16, 1, 9], [0, 3, 1], 8),
+    "pwl_equal_breakpoints": pwl(NULLS, [16, 3, 9], [0, 3, 0], 8),
+    "pwl_cap1": pwl(NULLS, [16, 3, 9], [0, 3, 5], 1, bytes([10, 20, 30, 40])),
+    "pwl_raw": bytes([PWL, RAW, 3]) + struct.pack("<6d", -1.0, 0.0, 0.5, math.nan, 2.0, 1.0),
+    "inv_cubic": poly(INV, 0, 3, 0.0, 3.9, cubic_c, 2, bytes([40]) + tri(4, 4) + b"\xf0" + pos(1.08) + b"\xf2"),
+    "inv_flat_x3": poly(INV, 0, 3, -1.0, 2.0, [1.0, 0.0, 0.0, 0.0], 0, bytes([20]) + tri(2, 6)),
+    "inv_not_increasing": poly(INV, NULLS, 2, -1.0, 2.0, [1.0, 0.0, 0.0], 0, bytes([20])),
+    "inv_cap1": poly(INV, NULLS, 3, 0.0, 3.9, cubic_c, 2, bytes([1])),
+    "inv_raw_eq20": bytes([INV, RAW, 3]) + struct.pack("<dd", 0.0, 40.0)
+        + struct.pack("<10d", -6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1, *[0.0] * 6) + bytes([40]),
+    "ident_stream": ident(NULLS, 3, 0, -1.0, 3.0, b"".join(add(u) for u in wave) + bytes([RESID, SOLVE])
+                          + b"".join(add(u, check=True) for u in wave) + bytes([RESID, POLY, SOLVE, REINIT])
+                          + add(0.5) + add(1.2) + bytes([0x00, 5, 0x01, 2]) + struct.pack("<d", 1e300) + bytes([SOLVE]), 2, 1),
+    "ident_few_samples": ident(CORRUPT, 5, 2, 0.0, 1.0, add(0.1) + add(0.2) + add(0.2) + bytes([SOLVE, RESID])),
+    "ident_bad_config": ident(0, 10, 0, 0.0, 1.0, add(0.5)),
+    "ident_bad_method": ident(0, 2, 3, 0.0, 1.0, add(0.5)),
+    "ident_known_joint": poly(IDENT, KNOWN, 3, 0.0, 3.9, cubic_c, 2, bytes([5])),
+    "ident_known_reflect": poly(IDENT, KNOWN | CORRUPT | NULLS, 5, -1.0, 2.5, [0.1, 0.0, -0.3, 0.2, 0.5, 0.1], 3, bytes([0])),
+    "ident_known_deg9": poly(IDENT, KNOWN, 9, 0.5, 1.0, [0.1] * 10, 40, bytes([31])),
+}
+for d, group in ((out, seeds), (os.path.join(here, "corpus_models"), models)):
+    os.makedirs(d, exist_ok=True)
+    for name, data in group.items():
+        assert len(data) < 300, name
+        with open(os.path.join(d, name), "wb") as f:
+            f.write(data)
+    print(f"{len(group)} seeds in {d}")

@@ -30,7 +30,8 @@ static void fill_knots(hyst_curve_t *c, hyst_wide_t range)
     c->knot_u[0] = 0;
     c->knot_u[HYST_INV_KNOTS] = 1;
     for (k = 1u; k < HYST_INV_KNOTS; ++k) {
-        const hyst_wide_t e = range * (hyst_wide_t)k / (hyst_wide_t)HYST_INV_KNOTS;
+        /* k / K first: range * k overflows once range > DBL_MAX / K */
+        const hyst_wide_t e = range * ((hyst_wide_t)k / (hyst_wide_t)HYST_INV_KNOTS);
         hyst_wide_t a = from, b = 1;
         for (it = 0u; it < 80u; ++it) {
             const hyst_wide_t m = (a + b) / 2;

@@ -1,0 +1,84 @@
+/* Shared by the fuzz harnesses: a byte reader that yields zeros past the
+ * end (so every input is valid), CHECK (abort, which libFuzzer reports as a
+ * crash), the configuration reader and Horner's rounding bound. Static
+ * functions: each harness is one translation unit. */
+#ifndef FUZZ_COMMON_H
+#define FUZZ_COMMON_H
+
+#include "hyst/hyst.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    const unsigned char *p;
+    size_t n, at;
+} reader_t;
+
+static unsigned rd_u8(reader_t *r) { return r->at < r->n ? r->p[r->at++] : 0u; }
+
+static unsigned rd_u16(reader_t *r)
+{
+    const unsigned lo = rd_u8(r);
+    return lo | (rd_u8(r) << 8);
+}
+
+static double rd_f64(reader_t *r)
+{
+    unsigned char b[8];
+    double v;
+    unsigned k;
+    for (k = 0; k < 8u; ++k) b[k] = (unsigned char)rd_u8(r);
+    memcpy(&v, b, sizeof(v));
+    return v;
+}
+
+#define CHECK(cond)                                                               \
+    do {                                                                          \
+        if (!(cond)) {                                                            \
+            fprintf(stderr, "fuzz: %s:%d: check failed: %s\n", __FILE__,     \
+                    __LINE__, #cond);                                              \
+            abort();                                                              \
+        }                                                                         \
+    } while (0)
+
+/* Configuration from bytes. Structured: lo, hi and coefficients on small
+ * grids, so that many curves are valid and well conditioned (differential
+ * comparison is meaningful); raw: any doubles, for the init checks. */
+static void read_config(reader_t *r, int raw, hyst_poly_t *f)
+{
+    unsigned k;
+    memset(f, 0, sizeof(*f));
+    f->degree = rd_u8(r) % 12u;
+    if (raw) {
+        f->lo = rd_f64(r);
+        f->hi = rd_f64(r);
+        for (k = 0; k <= HYST_MAX_DEGREE; ++k) f->coeffs[k] = rd_f64(r);
+        return;
+    }
+    f->lo = ((double)(signed char)rd_u8(r)) / 32.0;             /* -4 .. 4 */
+    f->hi = f->lo + (double)(rd_u8(r) % 64u) / 16.0;            /* span 0 .. 4 */
+    for (k = 0; k <= HYST_MAX_DEGREE; ++k) {
+        f->coeffs[k] = ((double)(signed char)rd_u8(r)) / 64.0; /* -2 .. 2 */
+    }
+    if (f->degree >= 1u && f->degree <= HYST_MAX_DEGREE) { /* push the slope up half the time */
+        f->coeffs[f->degree - 1u] += (double)(rd_u8(r) & 0x3Fu);
+    }
+}
+
+/* Rounding allowance of the differential comparison: Horner's error bound on
+ * the raw coefficients (the reference evaluates those; the core a shifted,
+ * scaled copy), times the depth of turning points each output hangs on. */
+static double horner_bound(const hyst_poly_t *f)
+{
+    const double m = fmax(fabs(f->lo), fabs(f->hi));
+    double acc = 0.0;
+    unsigned k;
+    for (k = 0; k <= f->degree; ++k) acc = acc * m + fabs(f->coeffs[k]);
+    return 8.0 * (double)(f->degree + 1u) * DBL_EPSILON * acc;
+}
+
+#endif
