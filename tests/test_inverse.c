@@ -274,6 +274,72 @@ static void test_out_of_range_desired_output_is_clamped(void)
     TEST_ASSERT_EQUAL_INT(0, (int)hyst_tp_count(&Hinv)); /* saturation wiped memory */
 }
 
+/* x^3 on [-1, 1]: flat at 0, where its compensator is steep. */
+static const hyst_poly_t cubic = {3u, HYST_REAL_C(-1.0), HYST_REAL_C(1.0),
+                                  {HYST_REAL_C(1.0), HYST_REAL_C(0.0), HYST_REAL_C(0.0),
+                                   HYST_REAL_C(0.0)}};
+
+/* Steps the compensator and asserts the drive is inside [lo, hi] (finding 6
+ * in docs/reliability.md: after a merge it could leave it with status OK). */
+static hyst_real_t drive_in_range(hyst_real_t yd)
+{
+    const hyst_real_t x = hyst_step(&Hinv, yd);
+    TEST_ASSERT_TRUE(x >= cubic.lo && x <= cubic.hi);
+    return x;
+}
+
+/* fuzz/corpus_models/regress_full_drive_overrange: capacity 2, the memory
+ * fills at the sixth sample; the seventh gave a drive of 1.0697 > hi = 1.
+ * Its tiny outputs (1e-307 and below) are scaled up to stay distinct in float. */
+static void test_drive_stays_in_range_after_a_merge(void)
+{
+    static const hyst_real_t yd[] = {HYST_REAL_C(1.0),
+                                     HYST_REAL_C(-0.7803921568627451),
+                                     HYST_REAL_C(0.39395742732890815),
+                                     HYST_REAL_C(1e-30),
+                                     HYST_REAL_C(-1e-31),
+                                     HYST_REAL_C(1e-32),
+                                     HYST_REAL_C(0.92874341954680673),
+                                     HYST_REAL_C(-0.14002288853284517),
+                                     HYST_REAL_C(0.043137254901960853)};
+    unsigned i;
+    int full = 0;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &cubic, il, jl, ir, jr, 2u));
+    for (i = 0u; i < sizeof yd / sizeof yd[0]; ++i) {
+        const hyst_real_t x = drive_in_range(yd[i]);
+        full |= hyst_status(&Hinv) == HYST_WARN_FULL;
+        if (i == 6u) { /* the overshooting sample: clamped to hi exactly */
+            TEST_ASSERT_TRUE(full); /* the sequence does reach the merge */
+            TEST_ASSERT_EQUAL_FLOAT(1.0f, (float)x);
+        }
+    }
+}
+
+/* Property: random desired outputs (jumps and small steps, near 0 where the
+ * compensator is steep), capacities 2 to 4: the drive never leaves [lo, hi]. */
+static void test_drive_stays_in_range_with_small_memory(void)
+{
+    unsigned long merges = 0u;
+    size_t cap;
+    for (cap = 2u; cap <= 4u; ++cap) {
+        long i;
+        hyst_real_t yd = 0;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &cubic, il, jl, ir, jr, cap));
+        for (i = 0; i < 200000L; ++i) {
+            if (rng_below(&rng, 4u) == 0u) {
+                yd = (hyst_real_t)rng_range(&rng, -1.0, 1.0);
+            } else {
+                const double v = (double)yd + rng_range(&rng, -0.05, 0.05);
+                yd = (hyst_real_t)(v > 1.0 ? 1.0 : v < -1.0 ? -1.0 : v);
+            }
+            (void)drive_in_range(yd);
+            merges += hyst_status(&Hinv) == HYST_WARN_FULL;
+        }
+    }
+    TEST_PRINTF("%lu merges", merges);
+    TEST_ASSERT_TRUE(merges > 1000u);
+}
+
 /* H(H^-1(y_d)) for n samples of sig (desired outputs); max |error| / range. */
 static double round_trip(const hyst_curve_t *fwd, long n)
 {
@@ -376,6 +442,8 @@ int main(void)
     RUN_TEST(test_pwl_inverse_is_exact_and_involutive);
     RUN_TEST(test_poly_inverse_is_involutive);
     RUN_TEST(test_init_inverse_checks);
+    RUN_TEST(test_drive_stays_in_range_after_a_merge);
+    RUN_TEST(test_drive_stays_in_range_with_small_memory);
     RUN_TEST(test_out_of_range_desired_output_is_clamped);
     RUN_TEST(test_round_trip_polynomial_eq20);
     RUN_TEST(test_round_trip_pwl);
