@@ -275,31 +275,16 @@ static void fuzz_pi(reader_t *rd, unsigned flags)
         wsum += fabs(pw[i]);
     }
 
-    /* Analytic inverse: refused only for thresholds rounding made equal, and
-     * then nothing written. */
+    /* Analytic inverse: refused only for thresholds rounding made equal or
+     * inverse weights that fail hyst_pi_check() once rounded (finding 3,
+     * regress_pi_inverse_overflow/_cancel, fixed), and then nothing written. */
     st = hyst_pi_inverse_params(pr, pw, n, ri, wi);
-    CHECK(st == HYST_OK || st == HYST_ERR_BREAKPOINTS);
+    CHECK(st == HYST_OK || st == HYST_ERR_BREAKPOINTS || st == HYST_ERR_WEIGHTS);
     if (st != HYST_OK) {
         CHECK(memcmp(ri, ri2, sizeof(ri)) == 0);
-        CHECK(hyst_pi_init_inverse(&Q, &P, ri2, wi2, zq) == HYST_ERR_BREAKPOINTS);
-    } else if (!all_finite(wi, n)) {
-        /* FINDING (docs/reliability.md, fuzz/corpus_models/regress_pi_inverse_overflow):
-         * hyst_pi_inverse_params() checks that the inverse thresholds are
-         * finite but not the weights: w'_1 = 1 / w_1 overflows for a
-         * subnormal w_1 (or w'_i = -w_i / (W_i W_(i-1)) for tiny partial
-         * sums), and it returns HYST_OK with an infinite weight, which
-         * pi.h says cannot happen. Tolerated here, the consequence pinned:
-         * hyst_pi_init_inverse() then refuses the weights. Remove this
-         * branch when the PI owner checks is_finite() in pass 1. */
-        CHECK(raw && hyst_pi_init_inverse(&Q, &P, ri2, wi2, zq) == HYST_ERR_WEIGHTS);
-    } else if (hyst_pi_check(ri, wi, n) != HYST_OK) {
-        /* FINDING, same place (regress_pi_inverse_cancel): the inverse's
-         * partial sums are 1/W_i > 0 in exact arithmetic, but summed in
-         * hyst_real_t, 1/W_1 + (1/W_2 - 1/W_1) cancels to 0 once W_2/W_1
-         * exceeds 1/eps (2^24 in float), so the inverse fails pi.h's "satisfy
-         * it again". Tolerated only then; hyst_pi_init_inverse() must refuse. */
-        CHECK(wmax / wmin >= 1.0 / EPS);
-        CHECK(hyst_pi_init_inverse(&Q, &P, ri2, wi2, zq) == HYST_ERR_WEIGHTS);
+        CHECK(hyst_pi_init_inverse(&Q, &P, ri2, wi2, zq) == st);
+    } else if (!all_finite(wi, n) || hyst_pi_check(ri, wi, n) != HYST_OK) {
+        CHECK(0); /* pi.h: the inverse's parameters satisfy hyst_pi_check() */
     } else {
         for (i = 0; i < n; ++i) { /* r'_i = f_PI(r_i): a sum of n products, gamma_n */
             double mag;
