@@ -194,6 +194,47 @@ static void test_pwl_constructor_checks(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_init_curve(&H, &c, xl, yl, xr, yr, CAP));
 }
 
+/* Finding 4 (docs/reliability.md): interpolation neither overflows nor
+ * underflows, and a value span beyond the real range is refused. */
+static void test_pwl_interpolation_is_safe_at_extreme_scales(void)
+{
+#ifdef HYST_USE_DOUBLE
+    /* regress_pwl_overflow: f(hi) was inf (the product overflowed) */
+    static const hyst_real_t xo[2] = {-1.6e193, 1.0e-314}, yo[2] = {-1.6e193, 0};
+    /* regress_pwl_underflow: f(hi) was y[0] (the product underflowed) */
+    static const hyst_real_t xu[2] = {-4.2e-131, 9.2e-175}, yu[2] = {4.6e-318, 5.1e-312};
+    static const hyst_real_t big = 1e308;
+#else
+    static const hyst_real_t xo[2] = {-1.6e30f, 1e-40f}, yo[2] = {-1.6e30f, 0};
+    static const hyst_real_t xu[2] = {-4.2e-20f, 9.2e-30f}, yu[2] = {1e-44f, 1e-39f};
+    static const hyst_real_t big = 3e38f;
+#endif
+    hyst_real_t xs[2], ys[2];
+    hyst_curve_t c;
+    hyst_real_t mid;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&c, xo, yo, 2u));
+    TEST_ASSERT_TRUE(hyst_curve_eval(&c, xo[1]) == yo[1]);
+    mid = hyst_curve_eval(&c, xo[0] * HYST_REAL_C(0.5));
+    TEST_ASSERT_TRUE(mid > yo[0] && mid < yo[1]);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&c, xu, yu, 2u));
+    TEST_ASSERT_TRUE(hyst_curve_eval(&c, xu[1]) == yu[1]);
+    TEST_ASSERT_TRUE(hyst_curve_eval(&c, xu[0]) == yu[0]);
+    /* values -big .. big: each finite, their span not */
+    xs[0] = 0;
+    xs[1] = 1;
+    ys[0] = -big;
+    ys[1] = big;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_curve_from_pwl(&c, xs, ys, 2u));
+    xs[0] = -big; /* the same for the breakpoints, in hyst_real_t */
+    xs[1] = big;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_BREAKPOINTS, hyst_curve_from_pwl(&c, xs, ys, 2u));
+    xs[0] = 0;
+    xs[1] = 1;
+    ys[0] = 0; /* span big: accepted */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&c, xs, ys, 2u));
+    TEST_ASSERT_TRUE(hyst_curve_eval(&c, 1) == big);
+}
+
 static void assert_same_pwl(const hyst_curve_t *a, const hyst_curve_t *b)
 {
     TEST_ASSERT_EQUAL_INT(a->kind, b->kind);
@@ -439,6 +480,7 @@ int main(void)
     RUN_TEST(test_newton_residual_at_flat_points);
     RUN_TEST(test_newton_inverse_accurate_in_x);
     RUN_TEST(test_pwl_constructor_checks);
+    RUN_TEST(test_pwl_interpolation_is_safe_at_extreme_scales);
     RUN_TEST(test_pwl_inverse_is_exact_and_involutive);
     RUN_TEST(test_poly_inverse_is_involutive);
     RUN_TEST(test_init_inverse_checks);
