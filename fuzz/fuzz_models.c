@@ -275,31 +275,16 @@ static void fuzz_pi(reader_t *rd, unsigned flags)
         wsum += fabs(pw[i]);
     }
 
-    /* Analytic inverse: refused only for thresholds rounding made equal, and
-     * then nothing written. */
+    /* Analytic inverse: refused only for thresholds rounding made equal or
+     * inverse weights that fail hyst_pi_check() once rounded (finding 3,
+     * regress_pi_inverse_overflow/_cancel, fixed), and then nothing written. */
     st = hyst_pi_inverse_params(pr, pw, n, ri, wi);
-    CHECK(st == HYST_OK || st == HYST_ERR_BREAKPOINTS);
+    CHECK(st == HYST_OK || st == HYST_ERR_BREAKPOINTS || st == HYST_ERR_WEIGHTS);
     if (st != HYST_OK) {
         CHECK(memcmp(ri, ri2, sizeof(ri)) == 0);
-        CHECK(hyst_pi_init_inverse(&Q, &P, ri2, wi2, zq) == HYST_ERR_BREAKPOINTS);
-    } else if (!all_finite(wi, n)) {
-        /* FINDING (docs/reliability.md, fuzz/corpus_models/regress_pi_inverse_overflow):
-         * hyst_pi_inverse_params() checks that the inverse thresholds are
-         * finite but not the weights: w'_1 = 1 / w_1 overflows for a
-         * subnormal w_1 (or w'_i = -w_i / (W_i W_(i-1)) for tiny partial
-         * sums), and it returns HYST_OK with an infinite weight, which
-         * pi.h says cannot happen. Tolerated here, the consequence pinned:
-         * hyst_pi_init_inverse() then refuses the weights. Remove this
-         * branch when the PI owner checks is_finite() in pass 1. */
-        CHECK(raw && hyst_pi_init_inverse(&Q, &P, ri2, wi2, zq) == HYST_ERR_WEIGHTS);
-    } else if (hyst_pi_check(ri, wi, n) != HYST_OK) {
-        /* FINDING, same place (regress_pi_inverse_cancel): the inverse's
-         * partial sums are 1/W_i > 0 in exact arithmetic, but summed in
-         * hyst_real_t, 1/W_1 + (1/W_2 - 1/W_1) cancels to 0 once W_2/W_1
-         * exceeds 1/eps (2^24 in float), so the inverse fails pi.h's "satisfy
-         * it again". Tolerated only then; hyst_pi_init_inverse() must refuse. */
-        CHECK(wmax / wmin >= 1.0 / EPS);
-        CHECK(hyst_pi_init_inverse(&Q, &P, ri2, wi2, zq) == HYST_ERR_WEIGHTS);
+        CHECK(hyst_pi_init_inverse(&Q, &P, ri2, wi2, zq) == st);
+    } else if (!all_finite(wi, n) || hyst_pi_check(ri, wi, n) != HYST_OK) {
+        CHECK(0); /* pi.h: the inverse's parameters satisfy hyst_pi_check() */
     } else {
         for (i = 0; i < n; ++i) { /* r'_i = f_PI(r_i): a sum of n products, gamma_n */
             double mag;
@@ -471,30 +456,23 @@ static hyst_status_t pwl_expected(size_t n)
     for (i = 0; i < n; ++i) {
         if (!isfinite(qy[i])) return HYST_ERR_COEFF;
     }
+    if (!isfinite(qy[n - 1u] - qy[0])) return HYST_ERR_COEFF; /* so must the value span */
     for (i = 1; i < n; ++i) {
         if (qy[i] < qy[i - 1u]) return HYST_ERR_NOT_INCREASING;
     }
     return qy[n - 1u] > qy[0] ? HYST_OK : HYST_ERR_NOT_INCREASING;
 }
 
-/* FINDING (docs/reliability.md, fuzz/corpus_models/regress_pwl_overflow,
- * regress_pwl_underflow): hyst_pwl_eval_() (src/hyst_curve_pwl.c:82) forms
- * (x - x_k) * (y_k+1 - y_k) before dividing by x_k+1 - x_k. With values
- * beyond ~1e154 the product overflows and hyst_curve_eval() returns inf (NaN
- * at x_k once y_k+1 - y_k itself overflows); below ~1e-154 it underflows
- * (f(x_n-1) = y_n-2), and a subnormal difference has no relative
- * accuracy left. hyst_curve_from_pwl() accepts such points. The harness
- * skips the evaluation checks for them (raw parameters only) until the
- * curve owner divides first and checks the value span like the breakpoint
- * span. */
+/* Finding 4 (docs/reliability.md, regress_pwl_overflow, regress_pwl_underflow),
+ * fixed: hyst_pwl_eval_() divides first and both spans must be finite, so
+ * products no longer overflow or underflow. Still skipped (raw parameters
+ * only): subnormal differences, which have no relative accuracy left. */
 static int pwl_extreme(const hyst_real_t *px, const hyst_real_t *py, size_t n)
 {
     size_t i;
     for (i = 0; i + 1u < n; ++i) {
-        const double dx = px[i + 1u] - px[i], dy = py[i + 1u] - py[i], prod = dx * dy;
-        if (!isfinite(prod) || (prod != 0.0 && fabs(prod) < DBL_MIN) ||
-            (prod == 0.0 && dy != 0.0) || (dy != 0.0 && fabs(dy) < DBL_MIN) ||
-            fabs(dx) < DBL_MIN) {
+        const double dx = px[i + 1u] - px[i], dy = py[i + 1u] - py[i];
+        if ((dy != 0.0 && fabs(dy) < DBL_MIN) || fabs(dx) < DBL_MIN) {
             return 1;
         }
     }
@@ -685,7 +663,7 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
                 continue;
             }
             if (hyst_status(&Ti.S) == HYST_WARN_FULL) run_ok = 0;
-            CHECK(!run_ok || in_domain(xd, c.lo, c.hi)); /* see fuzz_inverse() */
+            CHECK(in_domain(xd, c.lo, c.hi)); /* see fuzz_inverse() */
             CHECK((hyst_status(&Ti.S) == HYST_WARN_CLAMPED) == (yd < c.y_lo || yd > c.y_hi) ||
                   hyst_status(&Ti.S) == HYST_WARN_FULL);
             {
@@ -834,14 +812,9 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
             const double xd = hyst_step(&Ti.S, yd);
             if (!isfinite(yd)) continue;
             if (hyst_status(&Ti.S) == HYST_WARN_FULL) run_ok = 0;
-            /* The drive stays in [lo, hi] while the memory never overflowed.
-             * FINDING (docs/reliability.md, regress_full_drive_overrange):
-             * after HYST_WARN_FULL the forgotten loop leaves an LTP whose
-             * branch can overshoot the major loop: x^3 on [-1, 1], capacity
-             * 2, gives a drive of 1.0697 > hi with status HYST_OK. Not
-             * checked after an overflow until the engine owner decides (clamp
-             * the output, or document it in tcm.h). */
-            CHECK(!run_ok || in_domain(xd, cf.lo, cf.hi));
+            /* The drive stays in [lo, hi], after a merge too (finding 6,
+             * regress_full_drive_overrange, fixed: the engine clamps). */
+            CHECK(in_domain(xd, cf.lo, cf.hi));
             {
                 const double yf = hyst_step(&T.S, xd);
                 if (hyst_status(&T.S) == HYST_WARN_FULL) run_ok = 0;
@@ -1032,12 +1005,8 @@ static void fuzz_ident(reader_t *rd, unsigned flags)
             const double x = next_pos(rd, op, cfg.lo, cfg.hi - cfg.lo);
             double y = yb == 0u ? NAN : yb == 1u ? INFINITY : yb == 2u ? rd_f64(rd)
                                                                      : (double)(signed char)yb / 8.0 + x;
-            /* Outputs beyond 1e150 overflow the Givens rotations; the fit's
-             * coefficients become non-finite and hyst_ident_solve() spends
-             * ~3 s (ASan) in hyst_poly_is_increasing() on them: FINDING
-             * (docs/reliability.md), reproducer fuzz/slow/regress_ident_overflow_solve,
-             * kept out of the seeds so it does not eat the CI budget. */
-            if (isfinite(y) && fabs(y) > 1e150) y = copysign(1e150, y);
+            /* Outputs up to DBL_MAX: finding 8 (fuzz/slow/regress_ident_overflow_solve,
+             * seconds per solve before) is fixed, no clamp any more. */
             exp = sample_expected(&cfg, x, y);
             if (kind < 2u) {
                 st = hyst_ident_add(&id, x, y);

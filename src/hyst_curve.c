@@ -104,7 +104,11 @@ static int unit_increasing(const hyst_wide_t *g, unsigned n, hyst_wide_t *turn_u
             return 0;
         }
         lowest = beta[0];
-        for (k = 1u; k <= m; ++k) {
+        for (k = 0u; k <= m; ++k) {
+            if (!hyst_wide_is_finite(beta[k])) {
+                *turn_u = a; /* the slope overflows here: nothing provable */
+                return 0;
+            }
             lowest = beta[k] < lowest ? beta[k] : lowest;
         }
         settled = lowest >= -tol;

@@ -13,6 +13,13 @@ static int strictly_increasing(const hyst_real_t *v, size_t n)
     return 1;
 }
 
+/* b - a finite in hyst_real_t, where interpolation computes the differences. */
+static int span_is_finite(hyst_real_t a, hyst_real_t b)
+{
+    const hyst_real_t d = b - a;
+    return hyst_wide_is_finite((hyst_wide_t)d);
+}
+
 hyst_status_t hyst_curve_from_pwl(hyst_curve_t *curve, const hyst_real_t *x,
                                   const hyst_real_t *y, size_t n)
 {
@@ -24,14 +31,18 @@ hyst_status_t hyst_curve_from_pwl(hyst_curve_t *curve, const hyst_real_t *x,
     if (n < 2u) {
         return HYST_ERR_ARG;
     }
-    if (!strictly_increasing(x, n) ||
-        !hyst_wide_is_finite((hyst_wide_t)x[n - 1u] - (hyst_wide_t)x[0])) {
+    if (!strictly_increasing(x, n) || !span_is_finite(x[0], x[n - 1u])) {
         return HYST_ERR_BREAKPOINTS;
     }
     for (i = 0u; i < n; ++i) {
         if (!hyst_wide_is_finite((hyst_wide_t)y[i])) {
             return HYST_ERR_COEFF;
         }
+    }
+    /* The value span bounds every segment's rise, as the breakpoint span
+     * its width: then interpolation cannot overflow (the inverse swaps them). */
+    if (!span_is_finite(y[0], y[n - 1u])) {
+        return HYST_ERR_COEFF;
     }
     for (i = 1u; i < n; ++i) {
         if (y[i] < y[i - 1u]) {
@@ -78,8 +89,10 @@ hyst_real_t hyst_pwl_eval_(const hyst_curve_t *curve, hyst_real_t x)
     size_t k;
     x = x < curve->lo ? curve->lo : (x > curve->hi ? curve->hi : x);
     k = segment_of(px, curve->n_points, x);
-    /* Exact at every breakpoint: there x - px[k] is 0. */
-    return py[k] + (x - px[k]) * (py[k + 1u] - py[k]) / (px[k + 1u] - px[k]);
+    /* The fraction first, t in [0, 1]: t * dy can neither overflow (dy is
+     * finite, see the span checks) nor underflow where (x - x_k) dy would.
+     * Exact at every breakpoint: there t is 0. */
+    return py[k] + (x - px[k]) / (px[k + 1u] - px[k]) * (py[k + 1u] - py[k]);
 }
 
 /* Inverse of a PWL curve: the same points, axes swapped (exact). */

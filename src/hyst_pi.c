@@ -116,10 +116,17 @@ static hyst_wide_t next_inverse_threshold(hyst_wide_t prev, hyst_wide_t slope,
     return prev + slope * ((hyst_wide_t)r[i] - (hyst_wide_t)r[i - 1u]);
 }
 
+/* w'_i rounded to hyst_real_t; slope = W_i, prev_slope = W_(i-1), i >= 1. */
+static hyst_real_t inverse_weight(const hyst_real_t *w, size_t i, hyst_wide_t slope,
+                                  hyst_wide_t prev_slope)
+{
+    return (hyst_real_t)(-(hyst_wide_t)w[i] / (slope * prev_slope));
+}
+
 hyst_status_t hyst_pi_inverse_params(const hyst_real_t *r, const hyst_real_t *w,
                                      size_t n, hyst_real_t *r_inv, hyst_real_t *w_inv)
 {
-    hyst_wide_t slope, thr;
+    hyst_wide_t slope, thr, sum;
     size_t i;
     hyst_status_t st = hyst_pi_check(r, w, n);
     if (st != HYST_OK) {
@@ -128,16 +135,30 @@ hyst_status_t hyst_pi_inverse_params(const hyst_real_t *r, const hyst_real_t *w,
     if (r_inv == NULL || w_inv == NULL) {
         return HYST_ERR_NULL;
     }
-    /* Pass 1: the rounded inverse thresholds must still increase strictly. */
+    /* Pass 1: the rounded inverse thresholds must still increase strictly,
+     * and the rounded inverse weights pass hyst_pi_check() (same sums): 1/w_1
+     * can overflow, and the partial sums 1/W_i can cancel to 0 once W_i/W_1
+     * exceeds 1/eps. */
     slope = w[0];
     thr = 0;
+    sum = (hyst_wide_t)(hyst_real_t)(1 / slope);
+    if (!is_finite(sum) || !(sum > 0)) {
+        return HYST_ERR_WEIGHTS;
+    }
     for (i = 1u; i < n; ++i) {
         const hyst_wide_t next = next_inverse_threshold(thr, slope, r, i);
+        const hyst_wide_t prev_slope = slope;
+        hyst_real_t wi;
         if (!is_finite(next) || !((hyst_real_t)next > (hyst_real_t)thr)) {
             return HYST_ERR_BREAKPOINTS;
         }
         thr = next;
         slope += (hyst_wide_t)w[i];
+        wi = inverse_weight(w, i, slope, prev_slope);
+        sum += (hyst_wide_t)wi;
+        if (!is_finite((hyst_wide_t)wi) || !(sum > 0)) {
+            return HYST_ERR_WEIGHTS;
+        }
     }
     /* Pass 2: write. */
     slope = w[0];
@@ -149,7 +170,7 @@ hyst_status_t hyst_pi_inverse_params(const hyst_real_t *r, const hyst_real_t *w,
         thr = next_inverse_threshold(thr, slope, r, i);
         slope += (hyst_wide_t)w[i];
         r_inv[i] = (hyst_real_t)thr;
-        w_inv[i] = (hyst_real_t)(-(hyst_wide_t)w[i] / (slope * prev_slope));
+        w_inv[i] = inverse_weight(w, i, slope, prev_slope);
     }
     return HYST_OK;
 }

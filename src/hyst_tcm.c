@@ -79,7 +79,8 @@ void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y)
     S->forgot_level = TCM_NO_LEVEL;
     S->db_reach = 0;
     S->db_err = 0;
-    settle(S, x);
+    tcm_set_slow_only(S);
+    settle_idle(S, x);
     S->y_prev = y;
 }
 

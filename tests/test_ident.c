@@ -252,6 +252,55 @@ static void test_non_increasing_fit_is_reported_with_turn(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e3 * TOL_OF_RANGE, -6.0, (double)res.coeffs[1]);
 }
 
+/* Finding 8 (docs/reliability.md, fuzz/slow/regress_ident_overflow_solve):
+ * outputs near DBL_MAX overflow the Givens rotations and the coefficients are
+ * not finite. hyst_ident_solve() used to spend ~2^21 Bernstein evaluations
+ * in hyst_poly_is_increasing() on them (seconds); now that check gives up at
+ * the first non-finite slope. Documented result: HYST_OK, res->increasing
+ * == 0 (nothing provable), and hyst_ident_poly() refuses the coefficients.
+ * Time is not asserted; the status and the flags are. */
+static void test_overflowing_outputs_are_reported_not_increasing(void)
+{
+    hyst_ident_config_t cfg = {0};
+    hyst_ident_result_t res;
+    hyst_poly_t p;
+    unsigned k;
+    int finite = 1;
+    cfg.degree = 5u;
+    cfg.lo = 0.0;
+    cfg.hi = 3.9375;
+    cfg.method = HYST_IDENT_JOINT;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_init(&work, &cfg));
+    for (k = 0u; k <= 200u; ++k) { /* up and down once, outputs up to 1.7e308 */
+        const double t = (double)(k <= 100u ? k : 200u - k) / 100.0;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_add(&work, 3.9375 * t, 1.7e308 * t * t * t));
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_solve(&work, &res));
+    for (k = 0u; k <= res.degree; ++k) {
+        finite &= res.coeffs[k] - res.coeffs[k] == 0;
+    }
+    TEST_ASSERT_FALSE(finite); /* the data does overflow the solve */
+    TEST_ASSERT_FALSE(res.increasing);
+    TEST_ASSERT_TRUE(res.turn >= res.lo && res.turn <= res.hi);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_ident_poly(&res, &p));
+}
+
+/* The fit of fuzz/slow/regress_ident_overflow_solve: finite coefficients
+ * near 1e305 whose slope overflows in Bernstein form. hyst_poly_is_increasing()
+ * ran to full depth on the NaN bounds (2.9 s under ASan per call); now it
+ * reports "not increasing" at the first non-finite bound, with a turn point
+ * in the domain (time not asserted). */
+static void test_overflowing_fit_is_not_increasing_at_once(void)
+{
+    static const hyst_wide_t c[6] = {0x1.697bc951db39bp+1009, -0x1.16e2724242905p+1013,
+                                     0x1.32d6f6c480549p+1015, -0x1.16d6ad2a41cefp+1016,
+                                     0x1.507ef54c59eeap+1015, -0x1.4e09acaap+991};
+    const hyst_wide_t lo = -0x1.9333333333334p-2, hi = 0x1.1533333333333p+2;
+    hyst_wide_t turn = -1e9;
+    TEST_ASSERT_FALSE(hyst_poly_is_increasing(c, 5u, lo, hi, &turn));
+    TEST_ASSERT_TRUE(turn >= lo && turn <= hi);
+}
+
 /* Settling samples are skipped, a sensor lag is undone, the domain can be given. */
 static void test_skip_delay_and_given_domain(void)
 {
@@ -491,6 +540,8 @@ int main(void)
     RUN_TEST(test_eq20_cubic_is_returned_exactly);
     RUN_TEST(test_degree9_on_dac_codes_is_sound);
     RUN_TEST(test_non_increasing_fit_is_reported_with_turn);
+    RUN_TEST(test_overflowing_outputs_are_reported_not_increasing);
+    RUN_TEST(test_overflowing_fit_is_not_increasing_at_once);
     RUN_TEST(test_skip_delay_and_given_domain);
     RUN_TEST(test_streaming_api_and_sample_errors);
     RUN_TEST(test_bad_arguments_are_refused);

@@ -194,6 +194,47 @@ static void test_pwl_constructor_checks(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_init_curve(&H, &c, xl, yl, xr, yr, CAP));
 }
 
+/* Finding 4 (docs/reliability.md): interpolation neither overflows nor
+ * underflows, and a value span beyond the real range is refused. */
+static void test_pwl_interpolation_is_safe_at_extreme_scales(void)
+{
+#ifdef HYST_USE_DOUBLE
+    /* regress_pwl_overflow: f(hi) was inf (the product overflowed) */
+    static const hyst_real_t xo[2] = {-1.6e193, 1.0e-314}, yo[2] = {-1.6e193, 0};
+    /* regress_pwl_underflow: f(hi) was y[0] (the product underflowed) */
+    static const hyst_real_t xu[2] = {-4.2e-131, 9.2e-175}, yu[2] = {4.6e-318, 5.1e-312};
+    static const hyst_real_t big = 1e308;
+#else
+    static const hyst_real_t xo[2] = {-1.6e30f, 1e-40f}, yo[2] = {-1.6e30f, 0};
+    static const hyst_real_t xu[2] = {-4.2e-20f, 9.2e-30f}, yu[2] = {1e-44f, 1e-39f};
+    static const hyst_real_t big = 3e38f;
+#endif
+    hyst_real_t xs[2], ys[2];
+    hyst_curve_t c;
+    hyst_real_t mid;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&c, xo, yo, 2u));
+    TEST_ASSERT_TRUE(hyst_curve_eval(&c, xo[1]) == yo[1]);
+    mid = hyst_curve_eval(&c, xo[0] * HYST_REAL_C(0.5));
+    TEST_ASSERT_TRUE(mid > yo[0] && mid < yo[1]);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&c, xu, yu, 2u));
+    TEST_ASSERT_TRUE(hyst_curve_eval(&c, xu[1]) == yu[1]);
+    TEST_ASSERT_TRUE(hyst_curve_eval(&c, xu[0]) == yu[0]);
+    /* values -big .. big: each finite, their span not */
+    xs[0] = 0;
+    xs[1] = 1;
+    ys[0] = -big;
+    ys[1] = big;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_curve_from_pwl(&c, xs, ys, 2u));
+    xs[0] = -big; /* the same for the breakpoints, in hyst_real_t */
+    xs[1] = big;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_BREAKPOINTS, hyst_curve_from_pwl(&c, xs, ys, 2u));
+    xs[0] = 0;
+    xs[1] = 1;
+    ys[0] = 0; /* span big: accepted */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&c, xs, ys, 2u));
+    TEST_ASSERT_TRUE(hyst_curve_eval(&c, 1) == big);
+}
+
 static void assert_same_pwl(const hyst_curve_t *a, const hyst_curve_t *b)
 {
     TEST_ASSERT_EQUAL_INT(a->kind, b->kind);
@@ -272,6 +313,72 @@ static void test_out_of_range_desired_output_is_clamped(void)
     TEST_ASSERT_EQUAL_FLOAT(0.0f, (float)hyst_step(&Hinv, HYST_REAL_C(-3.0)));
     TEST_ASSERT_EQUAL_INT(HYST_WARN_CLAMPED, hyst_status(&Hinv));
     TEST_ASSERT_EQUAL_INT(0, (int)hyst_tp_count(&Hinv)); /* saturation wiped memory */
+}
+
+/* x^3 on [-1, 1]: flat at 0, where its compensator is steep. */
+static const hyst_poly_t cubic = {3u, HYST_REAL_C(-1.0), HYST_REAL_C(1.0),
+                                  {HYST_REAL_C(1.0), HYST_REAL_C(0.0), HYST_REAL_C(0.0),
+                                   HYST_REAL_C(0.0)}};
+
+/* Steps the compensator and asserts the drive is inside [lo, hi] (finding 6
+ * in docs/reliability.md: after a merge it could leave it with status OK). */
+static hyst_real_t drive_in_range(hyst_real_t yd)
+{
+    const hyst_real_t x = hyst_step(&Hinv, yd);
+    TEST_ASSERT_TRUE(x >= cubic.lo && x <= cubic.hi);
+    return x;
+}
+
+/* fuzz/corpus_models/regress_full_drive_overrange: capacity 2, the memory
+ * fills at the sixth sample; the seventh gave a drive of 1.0697 > hi = 1.
+ * Its tiny outputs (1e-307 and below) are scaled up to stay distinct in float. */
+static void test_drive_stays_in_range_after_a_merge(void)
+{
+    static const hyst_real_t yd[] = {HYST_REAL_C(1.0),
+                                     HYST_REAL_C(-0.7803921568627451),
+                                     HYST_REAL_C(0.39395742732890815),
+                                     HYST_REAL_C(1e-30),
+                                     HYST_REAL_C(-1e-31),
+                                     HYST_REAL_C(1e-32),
+                                     HYST_REAL_C(0.92874341954680673),
+                                     HYST_REAL_C(-0.14002288853284517),
+                                     HYST_REAL_C(0.043137254901960853)};
+    unsigned i;
+    int full = 0;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &cubic, il, jl, ir, jr, 2u));
+    for (i = 0u; i < sizeof yd / sizeof yd[0]; ++i) {
+        const hyst_real_t x = drive_in_range(yd[i]);
+        full |= hyst_status(&Hinv) == HYST_WARN_FULL;
+        if (i == 6u) { /* the overshooting sample: clamped to hi exactly */
+            TEST_ASSERT_TRUE(full); /* the sequence does reach the merge */
+            TEST_ASSERT_EQUAL_FLOAT(1.0f, (float)x);
+        }
+    }
+}
+
+/* Property: random desired outputs (jumps and small steps, near 0 where the
+ * compensator is steep), capacities 2 to 4: the drive never leaves [lo, hi]. */
+static void test_drive_stays_in_range_with_small_memory(void)
+{
+    unsigned long merges = 0u;
+    size_t cap;
+    for (cap = 2u; cap <= 4u; ++cap) {
+        long i;
+        hyst_real_t yd = 0;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &cubic, il, jl, ir, jr, cap));
+        for (i = 0; i < 200000L; ++i) {
+            if (rng_below(&rng, 4u) == 0u) {
+                yd = (hyst_real_t)rng_range(&rng, -1.0, 1.0);
+            } else {
+                const double v = (double)yd + rng_range(&rng, -0.05, 0.05);
+                yd = (hyst_real_t)(v > 1.0 ? 1.0 : v < -1.0 ? -1.0 : v);
+            }
+            (void)drive_in_range(yd);
+            merges += hyst_status(&Hinv) == HYST_WARN_FULL;
+        }
+    }
+    TEST_PRINTF("%lu merges", merges);
+    TEST_ASSERT_TRUE(merges > 1000u);
 }
 
 /* H(H^-1(y_d)) for n samples of sig (desired outputs); max |error| / range. */
@@ -373,9 +480,12 @@ int main(void)
     RUN_TEST(test_newton_residual_at_flat_points);
     RUN_TEST(test_newton_inverse_accurate_in_x);
     RUN_TEST(test_pwl_constructor_checks);
+    RUN_TEST(test_pwl_interpolation_is_safe_at_extreme_scales);
     RUN_TEST(test_pwl_inverse_is_exact_and_involutive);
     RUN_TEST(test_poly_inverse_is_involutive);
     RUN_TEST(test_init_inverse_checks);
+    RUN_TEST(test_drive_stays_in_range_after_a_merge);
+    RUN_TEST(test_drive_stays_in_range_with_small_memory);
     RUN_TEST(test_out_of_range_desired_output_is_clamped);
     RUN_TEST(test_round_trip_polynomial_eq20);
     RUN_TEST(test_round_trip_pwl);

@@ -260,6 +260,46 @@ static void test_inverse_parameters(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_pi_inverse_params(r, w, 2u, NULL, w_inv));
 }
 
+/* Finding 3 (docs/reliability.md): inverse weights that, rounded, fail
+ * hyst_pi_check() are refused with HYST_ERR_WEIGHTS, nothing written. */
+static void test_inverse_weights_are_checked(void)
+{
+#ifdef HYST_USE_DOUBLE
+    /* regress_pi_inverse_overflow: 1 / w_1 overflows (w_1 subnormal) */
+    static const hyst_real_t w_sub[1] = {2.56e-317};
+    /* regress_pi_inverse_cancel: W_2 / W_1 > 1 / eps, 1/W_1 + w'_2 = 0 */
+    static const hyst_real_t r_fz[3] = {0, 9.1e-314, 5.7e21};
+    static const hyst_real_t w_fz[3] = {7.5e20, 4.7e255, 3.7e-188};
+#else
+    static const hyst_real_t w_sub[1] = {1e-40f}; /* 1 / w_1 > FLT_MAX */
+#endif
+    static const hyst_real_t r1[1] = {0};
+    /* the same cancellation, in both precisions: w'_2 rounds to -1 = -w'_1 */
+    static const hyst_real_t r2[2] = {0, HYST_REAL_C(1.0)};
+    static const hyst_real_t w2[2] = {HYST_REAL_C(1.0), HYST_REAL_C(1e30)};
+    static const hyst_real_t w2_ok[2] = {HYST_REAL_C(1.0), HYST_REAL_C(1e3)};
+    size_t i;
+    for (i = 0u; i < 3u; ++i) {
+        r_inv[i] = HYST_REAL_C(7.0);
+        w_inv[i] = HYST_REAL_C(7.0);
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_pi_check(r1, w_sub, 1u)); /* the forward is valid */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_WEIGHTS, hyst_pi_inverse_params(r1, w_sub, 1u, r_inv, w_inv));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_pi_check(r2, w2, 2u));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_WEIGHTS, hyst_pi_inverse_params(r2, w2, 2u, r_inv, w_inv));
+#ifdef HYST_USE_DOUBLE
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_pi_check(r_fz, w_fz, 3u));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_WEIGHTS, hyst_pi_inverse_params(r_fz, w_fz, 3u, r_inv, w_inv));
+#endif
+    for (i = 0u; i < 3u; ++i) { /* nothing written */
+        TEST_ASSERT_EQUAL_FLOAT(7.0f, (float)r_inv[i]);
+        TEST_ASSERT_EQUAL_FLOAT(7.0f, (float)w_inv[i]);
+    }
+    /* a ratio well inside the precision is still accepted, and checks */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_pi_inverse_params(r2, w2_ok, 2u, r_inv, w_inv));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_pi_check(r_inv, w_inv, 2u));
+}
+
 /* PI(PI^-1(y_d)) = y_d, also outside the loading range (inputs < 0 and > r_N). */
 static void test_inverse_pi_undoes_pi(void)
 {
@@ -293,6 +333,7 @@ int main(void)
     RUN_TEST(test_tcm_with_f_pi_reproduces_table1_pi);
     RUN_TEST(test_tcm_with_f_pi_reproduces_random_pi);
     RUN_TEST(test_inverse_parameters);
+    RUN_TEST(test_inverse_weights_are_checked);
     RUN_TEST(test_inverse_pi_undoes_pi);
     return UNITY_END();
 }

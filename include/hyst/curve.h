@@ -134,7 +134,8 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0);
  * [x[0], x[n-1]]. The curve keeps the two pointers, not copies: the arrays
  * must outlive the curve and every instance initialised with it, unchanged.
  * Checks, in this order: NULL pointers, n >= 2 (else HYST_ERR_ARG), finite
- * and strictly increasing breakpoints (HYST_ERR_BREAKPOINTS), finite values
+ * and strictly increasing breakpoints with a finite span x[n-1] - x[0]
+ * (HYST_ERR_BREAKPOINTS), finite values with a finite span y[n-1] - y[0]
  * (HYST_ERR_COEFF), values non-decreasing with y[n-1] > y[0]
  * (HYST_ERR_NOT_INCREASING; flat pieces are allowed here, but such a curve
  * has no inverse). @p curve is written only on success.

@@ -132,14 +132,19 @@ hyst_status_t hyst_pi_process(hyst_pi_t *P, const hyst_real_t *x, hyst_real_t *y
  * A PI model with (r', w') maps the output of (r, w) back to its input, for
  * any input sequence (both starting from the reset state). Computed in
  * hyst_wide_t. Validates the forward parameters first, and refuses inverse
- * thresholds that rounding to hyst_real_t would make equal. On error nothing
- * is written. Output arrays must not overlap the inputs.
+ * thresholds that rounding to hyst_real_t would make equal (
+ * HYST_ERR_BREAKPOINTS) and inverse weights that, rounded, fail
+ * hyst_pi_check() (HYST_ERR_WEIGHTS: 1 / w_1 overflows, or the partial sums
+ * 1 / W_i cancel to 0 when W_i / W_1 exceeds about 1 / epsilon), so that the
+ * inverse's parameters always pass hyst_pi_check(). On error nothing is
+ * written. Output arrays must not overlap the inputs.
  *
  * @param[in]  r,w    forward parameters, @p n entries each.
  * @param[in]  n      number of operators.
  * @param[out] r_inv  @p n inverse thresholds.
  * @param[out] w_inv  @p n inverse weights.
- * @return HYST_OK, an error of hyst_pi_check(), or HYST_ERR_BREAKPOINTS.
+ * @return HYST_OK, an error of hyst_pi_check(), HYST_ERR_BREAKPOINTS or
+ *         HYST_ERR_WEIGHTS.
  */
 hyst_status_t hyst_pi_inverse_params(const hyst_real_t *r, const hyst_real_t *w,
                                      size_t n, hyst_real_t *r_inv, hyst_real_t *w_inv);

@@ -35,7 +35,13 @@
  * at most its output height and never more than the former jump;
  * hyst_error_bound() adds up the misses that can still matter. A merge costs
  * at most 54 evaluations of g (6 + 2 per bisection step, at most 24 steps),
- * on the overflowing sample only.
+ * on the overflowing sample only. V's branches are not the full model's and
+ * can leave the major loop (x^3's compensator with capacity 2 gave a drive
+ * of 1.07 > hi), so while a merge is alive every sample takes the slow path
+ * and its output is clamped to [y_lo, y_hi], the curve's output range; the
+ * full model's output lies there, so the clamp never adds error. The fast
+ * path returns once the input leaves the merged loops (at the latest at lo
+ * or hi).
  *
  * Instances share nothing: several may run side by side (multi-axis stages).
  */
@@ -87,7 +93,8 @@ extern "C" {
     xtype db_reach;      /**< widest skipped reversal, open window */      \
     hyst_real_t db_err;  /**< error bound of that skipped reversal */      \
     hyst_real_t forgot;  /**< error bound: misses of live merges */        \
-    size_t forgot_level  /**< all live while stack depth > this */
+    size_t forgot_level; /**< all live while stack depth > this */       \
+    int slow_only        /**< no fast path: out-of-line curve or merge */
 
 /**
  * @brief A TCM instance with real inputs. Fields are private; use the
