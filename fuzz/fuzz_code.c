@@ -28,10 +28,11 @@
  *   [0] flags: bit0 raw config, bit1 init through hyst_code_init_curve,
  *       bit2 NULL probes, bit3 corrupted curve kind, bit4 raw code range
  *       (24-bit numbers: DOMAIN errors), bit5 deadband on, bit6 invalid
- *       deadband probes
+ *       deadband probes, bit7 capacity 4100 (deep stacks)
  *   [1] capacity (byte % 20: 0 and 1 invalid, 2..16 the bounded use)
  *   config (fuzz_common.h), code range, deadband, then opcodes:
- *   0xF0 reset all, 0xF1 block through hyst_code_process, 0xF2.. accessors;
+ *   0xF0 reset all, 0xF1 block through hyst_code_process, 0xF2 n nested
+ *   reversals (8 n, converging on the middle: deep stacks), 0xF3.. accessors;
  *   any other byte one code of kind op & 7 (next_code). */
 #include "hyst/hyst.h"
 #include "ref_tcm.h"
@@ -41,7 +42,7 @@
 #error "the differential harness compares a double core with the double reference"
 #endif
 
-#define MAX_CAP 20u
+#define MAX_CAP 4100u /* flag bit7: deep stacks, every rung of the binary search */
 #define MAX_SAMPLES 4096u
 
 typedef struct {
@@ -253,7 +254,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     reader_t r = {data, size, 0};
     hyst_poly_t f;
     const unsigned flags = rd_u8(&r);
-    const size_t cap = rd_u8(&r) % MAX_CAP;
+    const unsigned cap_byte = rd_u8(&r);
+    const size_t cap = (flags & 128u) ? MAX_CAP : cap_byte % 20u;
     const int via_curve = (int)(flags & 2u);
     hyst_status_t st;
     unsigned long dbc = 0;
@@ -384,7 +386,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             last_code = clo;
             continue;
         }
-        if (op > 0xF1u) { /* accessors, clear events */
+        if (op > 0xF2u) { /* accessors, clear events */
             (void)hyst_code_status(&C.S);
             (void)hyst_code_rising(&C.S);
             hyst_code_clear_events(&C.S);
@@ -394,10 +396,14 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             continue;
         }
         if (op == 0xF1u) m = rd_u8(&r) % 64u;
+        if (op == 0xF2u) m = 8u * rd_u8(&r); /* nested oscillation, up to 2040 TPs */
         for (k = 0; k < m; ++k) {
-            unsigned long c = next_code(&r, op == 0xF1u ? rd_u8(&r) : op);
+            /* 0xF2: x_k = mid -+ half (1 - k / (m + 1)), each a reversal */
+            const unsigned long half = (chi - clo) / 2u, amp = half - half * k / (m + 1u);
+            unsigned long c = op == 0xF2u ? ((k & 1u) ? clo + half + amp : clo + half - amp)
+                                          : next_code(&r, op == 0xF1u ? rd_u8(&r) : op);
             if (op == 0xF1u) c &= 0xFFFFul; /* a block holds code words */
-            xs[k] = (hyst_code_word_t)c;
+            if (op == 0xF1u) xs[k] = (hyst_code_word_t)c;
             if (op != 0xF1u) { /* the single-step path through C, too */
                 ys[0] = hyst_code_step(&C.S, c);
             }
@@ -477,7 +483,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 tc.y_prev = y;
                 tf.y_prev = yf;
                 if (op != 0xF1u) CHECK(memcmp(&ys[0], &y, sizeof(y)) == 0 && same_code(&C, &T));
-                ys[k] = y; /* expected block output */
+                if (op == 0xF1u) ys[k] = y; /* expected block output */
             }
             check_code_invariants(&T);
             CHECK(F.S.n_ltp <= cap && F.S.n_rtp <= cap);

@@ -153,7 +153,7 @@ models = {
 }
 
 # ---- fuzz_code.c: [flags][cap % 20] config, code range, [deadband], ops ----
-RAWCFG, VIACURVE, CNULLS, CKIND, RAWRANGE, DEADBAND, BADDB = 1, 2, 4, 8, 16, 32, 64
+RAWCFG, VIACURVE, CNULLS, CKIND, RAWRANGE, DEADBAND, BADDB, DEEP = 1, 2, 4, 8, 16, 32, 64, 128
 convex = (3, 0.0, 3.9, [1 / 64, 8 / 64, 32 / 64, 0.0], 2)    # f0'' > 0
 concave = (2, 0.0, 3.9, [-4 / 64, 1.0, 0.0], 0)              # f0'' < 0
 wavy = (3, 0.0, 3.9, [-1 / 64, 8 / 64, 32 / 64, 36 / 64], 2)  # f0'' changes sign
@@ -182,7 +182,7 @@ def shrink_codes(levels=6, steps=4, top=65535):
             at = target
     return b
 
-noise = bytes([0]) + struct.pack("<H", 30000) + b"".join(bytes([2, v & 0xFF]) for v in (5, -3, 4, -6, 2, 7, -2, -5) * 3)
+noise = bytes([0]) + struct.pack("<H", 30000) + b"".join(bytes([10, v & 0xFF]) for v in (5, -3, 4, -6, 2, 7, -2, -5) * 3)
 code_seeds = {
     "exact_convex": code_cfg(0, 19, convex) + shrink_codes(),
     "merge_cap2": code_cfg(0, 2, convex) + shrink_codes(6, 3),
@@ -190,10 +190,13 @@ code_seeds = {
     "deadband_noise": code_cfg(DEADBAND, 6, convex, db=6) + noise + shrink_codes(2, 2),
     "deadband_zero": code_cfg(DEADBAND, 8, convex, db=0) + noise,
     "block_clamp": code_cfg(VIACURVE, 5, convex, clo=1000, span=4000)
-        + bytes([0xF1, 6, 3, 11, 4, 7, 0, 0x10, 0x00, 0x14, 9, 12]) + bytes([0xF2, 0xF0]) + shrink_codes(2, 2, 4000),
+        + bytes([0xF1, 6, 3, 11, 4, 7, 0, 0x10, 0x00, 0x14, 9, 12]) + bytes([0xF5, 0xF0]) + shrink_codes(2, 2, 4000),
     "one_bit_range": code_cfg(0, 3, convex, clo=7, span=1) + bytes([3, 11, 3, 11, 4, 5]),
     "probes": code_cfg(CNULLS | CKIND | BADDB, 8, convex) + shrink_codes(2, 2),
     "wavy_cap3": code_cfg(0, 3, wavy) + shrink_codes(5, 2),
+    "deep_nesting": code_cfg(DEEP, 0, convex) + bytes([0xF2, 255]) + shrink_codes(2, 2),
+    "deep_nesting_deadband": code_cfg(DEEP | DEADBAND, 0, concave, db=9) + bytes([0xF2, 200]) + noise,
+    "nesting_cap3": code_cfg(0, 3, convex) + bytes([0xF2, 40, 3, 11]),
     "bad_cap1": code_cfg(0, 1, convex),
     "bad_range_empty": code_raw_range(0, 8, convex, 500, 500),
     "bad_range_wide": code_raw_range(0, 8, convex, 0, 70000),
