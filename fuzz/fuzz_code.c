@@ -32,7 +32,7 @@
  *   [1] capacity (byte % 20: 0 and 1 invalid, 2..19 the bounded use)
  *   config (fuzz_common.h), code range, deadband, then opcodes:
  *   0xF0 reset all, 0xF1 block through hyst_code_process, 0xF2 n nested
- *   reversals (8 n, converging on the middle: deep stacks), 0xF3.. accessors;
+ *   reversals (16 n deep, n % 40 else; converging on the middle), 0xF3.. accessors;
  *   any other byte one code of kind op & 7 (next_code). */
 #include "hyst/hyst.h"
 #include "ref_tcm.h"
@@ -401,8 +401,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             continue;
         }
         if (op == 0xF1u) m = rd_u8(&r) % 64u;
-        if (op == 0xF2u) { /* nested oscillation: up to 2040 TPs (deep), else 39 */
-            m = cap == MAX_CAP ? 8u * rd_u8(&r) : rd_u8(&r) % 40u;
+        if (op == 0xF2u) { /* nested oscillation: up to 4080 reversals (deep), else 39 */
+            m = cap == MAX_CAP ? 16u * rd_u8(&r) : rd_u8(&r) % 40u;
         }
         if (m > MAX_SAMPLES - done) m = MAX_SAMPLES - done; /* the budget of one input */
         done += m;

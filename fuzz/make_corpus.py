@@ -194,7 +194,8 @@ code_seeds = {
     "one_bit_range": code_cfg(0, 3, convex, clo=7, span=1) + bytes([3, 11, 3, 11, 4, 5]),
     "probes": code_cfg(CNULLS | CKIND | BADDB, 8, convex) + shrink_codes(2, 2),
     "wavy_cap3": code_cfg(0, 3, wavy) + shrink_codes(5, 2),
-    "deep_nesting": code_cfg(DEEP, 255, convex) + bytes([0xF2, 255]) + shrink_codes(2, 2),
+    "deep_nesting": code_cfg(DEEP, 255, convex) + bytes([0xF2, 255]) + c16(60000) + c16(5000)
+        + bytes([0xF0, 0xF2, 160]) + c16(50000) + bytes([0xF2, 100]) + c16(20000) + shrink_codes(2, 2),
     "deep_nesting_deadband": code_cfg(DEEP | DEADBAND, 250, concave, db=9) + bytes([0xF2, 200]) + noise,
     "nesting_cap3": code_cfg(0, 3, convex) + bytes([0xF2, 40, 3, 11]),
     "bad_cap1": code_cfg(0, 1, convex),
