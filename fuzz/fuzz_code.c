@@ -326,6 +326,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         CHECK(hyst_code_process(&C.S, NULL, NULL, 0u) == HYST_OK);
         CHECK(hyst_code_set_deadband(NULL, 0u) == HYST_ERR_NULL);
         CHECK(hyst_set_deadband(NULL, 0.0) == HYST_ERR_NULL);
+        CHECK(hyst_init_curve(&keepf.S, NULL, F.xl, F.yl, F.xr, F.yr, cap) == HYST_ERR_NULL);
     }
     if (flags & 8u) { /* a curve not made by hyst_curve_*: refused */
         hyst_curve_t bad = F.S.curve;
