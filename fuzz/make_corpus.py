@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the seed corpora (small, committed): fuzz/corpus/ for fuzz_hyst.c and
-fuzz/corpus_models/ for fuzz_models.c (layouts in their header comments).
+"""Writes the seed corpora (small, committed): fuzz/corpus/ for fuzz_hyst.c,
+fuzz/corpus_models/ for fuzz_models.c and fuzz/corpus_code/ for fuzz_code.c (layouts in their header comments).
 regress_* files are fuzzer finds, kept by hand, never written here."""
 import os, struct, math
 
@@ -151,7 +151,61 @@ models = {
     "ident_known_reflect": poly(IDENT, KNOWN | CORRUPT | NULLS, 5, -1.0, 2.5, [0.1, 0.0, -0.3, 0.2, 0.5, 0.1], 3, bytes([0])),
     "ident_known_deg9": poly(IDENT, KNOWN, 9, 0.5, 1.0, [0.1] * 10, 40, bytes([31])),
 }
-for d, group in ((out, seeds), (os.path.join(here, "corpus_models"), models)):
+
+# ---- fuzz_code.c: [flags][cap % 20] config, code range, [deadband], ops ----
+RAWCFG, VIACURVE, CNULLS, CKIND, RAWRANGE, DEADBAND, BADDB, DEEP = 1, 2, 4, 8, 16, 32, 64, 128
+convex = (3, 0.0, 3.9, [1 / 64, 8 / 64, 32 / 64, 0.0], 2)    # f0'' > 0
+concave = (2, 0.0, 3.9, [-4 / 64, 1.0, 0.0], 0)              # f0'' < 0
+wavy = (3, 0.0, 3.9, [-1 / 64, 8 / 64, 32 / 64, 36 / 64], 2)  # f0'' changes sign
+
+def code_cfg(flags, cap, curve, clo=0, span=65535, shift=0, db=None):
+    b = structured(flags & ~RAWCFG, cap, *curve)
+    b = bytes([flags, cap]) + b[2:]
+    b += bytes([shift]) + struct.pack("<HH", span << shift if span << shift < 65536 else span, clo)
+    if flags & DEADBAND:
+        b += struct.pack("<H", db or 0)
+    return b
+
+def code_raw_range(flags, cap, curve, lo, hi):
+    b = structured(0, cap, *curve)
+    return bytes([flags | RAWRANGE, cap]) + b[2:] + struct.pack("<I", lo)[:3] + struct.pack("<I", hi)[:3]
+
+def c16(v):  # one in-range code, kind 0 (u16 % (span + 1))
+    return bytes([0]) + struct.pack("<H", v)
+
+def shrink_codes(levels=6, steps=4, top=65535):
+    b, at = b"", 0
+    for k in range(levels):
+        for target in (int(top * (1 - 0.07 * k)), int(top * 0.07 * (k + 1))):
+            for i in range(1, steps + 1):
+                b += c16(at + (target - at) * i // steps)
+            at = target
+    return b
+
+noise = bytes([0]) + struct.pack("<H", 30000) + b"".join(bytes([10, v & 0xFF]) for v in (5, -3, 4, -6, 2, 7, -2, -5) * 3)
+code_seeds = {
+    "exact_convex": code_cfg(0, 19, convex) + shrink_codes(),
+    "merge_cap2": code_cfg(0, 2, convex) + shrink_codes(6, 3),
+    "merge_cap4_concave": code_cfg(0, 4, concave) + shrink_codes(7, 3),
+    "deadband_noise": code_cfg(DEADBAND, 6, convex, db=6) + noise + shrink_codes(2, 2),
+    "deadband_zero": code_cfg(DEADBAND, 8, convex, db=0) + noise,
+    "block_clamp": code_cfg(VIACURVE, 5, convex, clo=1000, span=4000)
+        + bytes([0xF1, 6, 3, 11, 4, 7, 0, 0x10, 0x00, 0x14, 9, 12]) + bytes([0xF5, 0xF0]) + shrink_codes(2, 2, 4000),
+    "one_bit_range": code_cfg(0, 3, convex, clo=7, span=1) + bytes([3, 11, 3, 11, 4, 5]),
+    "probes": code_cfg(CNULLS | CKIND | BADDB, 8, convex) + shrink_codes(2, 2),
+    "wavy_cap3": code_cfg(0, 3, wavy) + shrink_codes(5, 2),
+    "deep_nesting": code_cfg(DEEP, 255, convex) + bytes([0xF2, 255]) + c16(60000) + c16(5000)
+        + bytes([0xF0, 0xF2, 160]) + c16(50000) + bytes([0xF2, 100]) + c16(20000) + shrink_codes(2, 2),
+    "deep_nesting_deadband": code_cfg(DEEP | DEADBAND, 250, concave, db=9) + bytes([0xF2, 200]) + noise,
+    "nesting_cap3": code_cfg(0, 3, convex) + bytes([0xF2, 40, 3, 11]),
+    "bad_cap1": code_cfg(0, 1, convex),
+    "bad_range_empty": code_raw_range(0, 8, convex, 500, 500),
+    "bad_range_wide": code_raw_range(0, 8, convex, 0, 70000),
+    "bad_curve_and_range": code_raw_range(0, 8, (2, -1.0, 2.0, [1.0, 0.0, 0.0], 0), 9, 3),
+    "bad_degree0": code_cfg(VIACURVE, 8, (0, 0.0, 1.0, [1.0], 0)),
+}
+for d, group in ((out, seeds), (os.path.join(here, "corpus_models"), models),
+                 (os.path.join(here, "corpus_code"), code_seeds)):
     os.makedirs(d, exist_ok=True)
     for name, data in group.items():
         assert len(data) < 300, name
