@@ -74,9 +74,11 @@ void hyst_reset(hyst_t *S) { tcm_reset(S); }
 void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y)
 {
     /* The snapshot carries the TPs, not the bookkeeping of what bounded
-     * memory forgot: the error bound counts again from here. */
+     * memory forgot: the error bound counts again from here, and a merge is
+     * assumed alive until the input reaches lo or hi (slow path, output
+     * clamped to the major loop's range; a no-op when nothing overshoots). */
     S->forgot = 0;
-    S->forgot_level = TCM_NO_LEVEL;
+    S->forgot_level = 0u;
     S->db_reach = 0;
     S->db_err = 0;
     tcm_set_slow_only(S);

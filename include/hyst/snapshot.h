@@ -98,6 +98,12 @@ hyst_status_t hyst_snapshot_save(const hyst_t *S, unsigned char *buf,
  * alternation, strict nesting, finite values inside [lo, hi], A0 at
  * (lo, f0(lo))). On any error @p S is left exactly as it was.
  *
+ * The bounded-memory bookkeeping is not saved: after a restore
+ * hyst_error_bound() counts from 0, and the instance assumes a merge may be
+ * alive until the input reaches lo or hi (samples take the slow path and the
+ * output is clamped to the major loop's range; outputs are otherwise the
+ * same as without the restore).
+ *
  * @param[in,out] S    instance initialised (hyst_init) with the snapshot's curve;
  *                     its capacity may differ but must hold the saved TPs.
  * @param[in]     buf  snapshot octets.
