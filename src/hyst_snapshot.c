@@ -14,6 +14,8 @@
 #define MAGIC2 0x53u /* 'S' */
 #define MAGIC3 0x53u /* 'S' */
 #define HEADER_OCTETS 32u
+#define BOOK_OCTETS (4u + 3u * R) /* merge level, its bound, deadband reach and bound */
+#define NO_LEVEL 0xFFFFFFFFul     /* no live merge */
 #define CRC_OCTETS 4u
 #define R ((size_t)HYST_SNAPSHOT_REAL_OCTETS)
 #define MAX_COUNT 0x03FFFFFFul /* keeps L below 2^31 for either R */
@@ -137,7 +139,7 @@ static unsigned long curve_id(const hyst_curve_t *c)
 /* L in unsigned long (size_t may be 16 bits); counts <= MAX_COUNT. */
 static unsigned long length_of(unsigned long n_ltp, unsigned long n_rtp)
 {
-    return HEADER_OCTETS + 2ul * R * (1ul + n_ltp + n_rtp) + CRC_OCTETS;
+    return HEADER_OCTETS + 2ul * R * (1ul + n_ltp + n_rtp) + BOOK_OCTETS + CRC_OCTETS;
 }
 
 /* A function, not an inline test: with a 16-bit size_t the comparison is
@@ -190,6 +192,12 @@ hyst_status_t hyst_snapshot_save(const hyst_t *S, unsigned char *buf,
         put_real(buf + at, S->xrtp[i]);
         put_real(buf + at + R, S->yrtp[i]);
     }
+    put_u32(buf + at, S->forgot_level == (size_t)-1 ? NO_LEVEL
+                                                     : (unsigned long)S->forgot_level);
+    put_real(buf + at + 4u, S->forgot);
+    put_real(buf + at + 4u + R, S->db_reach);
+    put_real(buf + at + 4u + 2u * R, S->db_err);
+    at += BOOK_OCTETS;
     put_u32(buf + at, hyst_crc32(0ul, buf, at));
     if (len != NULL) {
         *len = need;
@@ -243,10 +251,25 @@ static int state_is_valid(const hyst_t *S, const unsigned char *body,
     return x_prev > top_ltp && x_prev <= top_rtp; /* falling from RTP nr-1 */
 }
 
+/* The bounded-memory bookkeeping: a merge level within the stack (or none),
+ * finite non-negative bounds and deadband reach. Reads only. */
+static int book_is_valid(const unsigned char *p, size_t depth, hyst_tcm_book_t *book)
+{
+    const unsigned long level = get_u32(p);
+    book->forgot_level = level == NO_LEVEL ? (size_t)-1 : (size_t)level;
+    book->forgot = get_real(p + 4u);
+    book->db_reach = get_real(p + 4u + R);
+    book->db_err = get_real(p + 4u + 2u * R);
+    return (level == NO_LEVEL || level <= (unsigned long)depth) && real_is_finite(book->forgot) &&
+           book->forgot >= 0 && real_is_finite(book->db_reach) && book->db_reach >= 0 &&
+           real_is_finite(book->db_err) && book->db_err >= 0;
+}
+
 hyst_status_t hyst_snapshot_restore(hyst_t *S, const unsigned char *buf,
                                     size_t len)
 {
     unsigned long length, nl32, nr32, events;
+    hyst_tcm_book_t book;
     size_t nl, nr, i, at;
     unsigned status16;
 
@@ -286,6 +309,10 @@ hyst_status_t hyst_snapshot_restore(hyst_t *S, const unsigned char *buf,
         !state_is_valid(S, buf + HEADER_OCTETS, nl, nr)) {
         return HYST_ERR_FORMAT;
     }
+    at = HEADER_OCTETS + 2u * R * (1u + nl + nr);
+    if (!book_is_valid(buf + at, nl + nr, &book)) {
+        return HYST_ERR_FORMAT;
+    }
     /* Everything checked: only now write the instance. */
     at = HEADER_OCTETS + 2u * R;
     for (i = 0u; i < nl; ++i, at += 2u * R) {
@@ -298,7 +325,7 @@ hyst_status_t hyst_snapshot_restore(hyst_t *S, const unsigned char *buf,
     }
     S->n_ltp = nl;
     S->n_rtp = nr;
-    hyst_tcm_resume(S, get_real(buf + HEADER_OCTETS), get_real(buf + HEADER_OCTETS + R));
+    hyst_tcm_resume(S, get_real(buf + HEADER_OCTETS), get_real(buf + HEADER_OCTETS + R), &book);
     S->events = (unsigned)events;
     /* 16-bit two's complement back to int without implementation-defined casts */
     S->status = status16 >= 0x8000u ? -(int)(0xFFFFu - status16) - 1 : (int)status16;

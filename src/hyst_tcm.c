@@ -71,16 +71,12 @@ hyst_status_t hyst_init(hyst_t *S, const hyst_poly_t *f0, hyst_real_t *xltp,
 
 void hyst_reset(hyst_t *S) { tcm_reset(S); }
 
-void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y)
+void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y, const hyst_tcm_book_t *book)
 {
-    /* The snapshot carries the TPs, not the bookkeeping of what bounded
-     * memory forgot: the error bound counts again from here, and a merge is
-     * assumed alive until the input reaches lo or hi (slow path, output
-     * clamped to the major loop's range; a no-op when nothing overshoots). */
-    S->forgot = 0;
-    S->forgot_level = 0u;
-    S->db_reach = 0;
-    S->db_err = 0;
+    S->forgot = book->forgot;
+    S->forgot_level = book->forgot_level;
+    S->db_reach = book->db_reach;
+    S->db_err = book->db_err;
     tcm_set_slow_only(S);
     settle_idle(S, x);
     S->y_prev = y;

@@ -95,12 +95,13 @@ static void test_layout_is_octets_little_endian_ieee(void)
     init_inst(&A, &line, CAP);
     (void)hyst_step(&A.S, HYST_REAL_C(0.5)); /* rising from A0, no TP */
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&A.S, snap, sizeof(snap), &len));
-    TEST_ASSERT_EQUAL_size_t(36u + 2u * R * 2u, len); /* x/y_prev + A0 */
+    TEST_ASSERT_EQUAL_size_t(40u + 2u * R * 2u + 3u * R, len); /* x/y_prev + A0 + book */
     TEST_ASSERT_EQUAL_HEX8(0x48, snap[0]);
     TEST_ASSERT_EQUAL_HEX8(0x59, snap[1]);
     TEST_ASSERT_EQUAL_HEX8(0x53, snap[2]);
     TEST_ASSERT_EQUAL_HEX8(0x53, snap[3]);
-    TEST_ASSERT_EQUAL_HEX8(1, snap[4]);
+    TEST_ASSERT_EQUAL_HEX8(HYST_SNAPSHOT_VERSION, snap[4]);
+    TEST_ASSERT_EQUAL_HEX8(2, snap[4]);
     TEST_ASSERT_EQUAL_HEX8(0, snap[5]);
     TEST_ASSERT_EQUAL_HEX8(R, snap[6]);
     TEST_ASSERT_EQUAL_HEX8(len, snap[8]);
@@ -112,6 +113,10 @@ static void test_layout_is_octets_little_endian_ieee(void)
         static const unsigned char half32[4] = {0x00, 0x00, 0x00, 0x3F};
         static const unsigned char half64[8] = {0, 0, 0, 0, 0, 0, 0xE0, 0x3F};
         TEST_ASSERT_EQUAL_HEX8(R == 4u ? half32[k % 4u] : half64[k], snap[32u + k]);
+    }
+    /* no live merge: level 0xFFFFFFFF right after the TPs */
+    for (k = 0u; k < 4u; ++k) {
+        TEST_ASSERT_EQUAL_HEX8(0xFF, snap[32u + 4u * R + k]);
     }
     TEST_ASSERT_EQUAL_HEX32(hyst_crc32(0ul, snap, len - 4u),
                             (unsigned long)snap[len - 4u] | ((unsigned long)snap[len - 3u] << 8) |
@@ -201,7 +206,7 @@ static void test_other_version_or_real_width_is_refused(void)
 {
     take_snapshot();
     memcpy(work, snap, snap_len);
-    work[4] = 2u;
+    work[4] = (unsigned char)(HYST_SNAPSHOT_VERSION + 1u);
     refix_crc(work, snap_len);
     TEST_ASSERT_EQUAL_INT(HYST_ERR_VERSION, hyst_snapshot_restore(&B.S, work, snap_len));
     memcpy(work, snap, snap_len);
@@ -298,6 +303,32 @@ static void test_save_refuses_small_buffers_and_null(void)
     TEST_ASSERT_TRUE(snap_len <= HYST_SNAPSHOT_SIZE(CAP));
 }
 
+/* Bounded memory: a snapshot taken while merges are alive restores their
+ * bookkeeping, so both copies continue bit for bit, error bound included
+ * (once found by the fuzzer's twin check: fuzz/corpus/regress_restore_merge_alive). */
+static void test_live_merges_continue_bit_identically(void)
+{
+    rng_t r;
+    int i;
+    init_inst(&A, &paper_eq20, 2u);
+    for (i = 0; i < 12; ++i) { /* nested loops: the 2-entry arrays overflow */
+        (void)hyst_step(&A.S, (hyst_real_t)(i % 2 == 0 ? 39.0 - i : 1.0 + i));
+    }
+    TEST_ASSERT_TRUE(hyst_error_bound(&A.S) > 0);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&A.S, snap, sizeof(snap), &snap_len));
+    init_inst(&B, &paper_eq20, 2u);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, snap, snap_len));
+    TEST_ASSERT_EQUAL_MEMORY(&A.S.forgot, &B.S.forgot, sizeof A.S.forgot);
+    rng_seed(&r, 5u);
+    for (i = 0; i < 3000; ++i) {
+        const hyst_real_t x = (hyst_real_t)rng_range(&r, 5.0, 35.0);
+        const hyst_real_t ya = hyst_step(&A.S, x);
+        const hyst_real_t yb = hyst_step(&B.S, x);
+        TEST_ASSERT_EQUAL_MEMORY(&ya, &yb, sizeof ya);
+        TEST_ASSERT_TRUE(hyst_error_bound(&A.S) == hyst_error_bound(&B.S));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -308,6 +339,7 @@ int main(void)
     RUN_TEST(test_every_bit_flip_is_refused_and_leaves_the_instance_untouched);
     RUN_TEST(test_every_truncation_is_refused);
     RUN_TEST(test_other_version_or_real_width_is_refused);
+    RUN_TEST(test_live_merges_continue_bit_identically);
     RUN_TEST(test_other_curve_is_refused);
     RUN_TEST(test_capacity_must_hold_the_saved_points);
     RUN_TEST(test_impossible_state_with_valid_crc_is_refused);

@@ -30,9 +30,13 @@
  * | 32 + R        | R         | last output y_prev                                     |
  * | 32 + 2R       | 2R n_ltp  | LTPs, oldest first: x, y                               |
  * | ...           | 2R n_rtp  | RTPs, oldest first: x, y                               |
+ * | L - 8 - 3R    | 4         | stack level of the shallowest live merge, or 0xFFFFFFFF |
+ * | L - 4 - 3R    | R         | error bound of the live merges (hyst_error_bound part) |
+ * | L - 4 - 2R    | R         | deadband: widest skipped reversal of the open window   |
+ * | L - 4 - R     | R         | deadband: its error bound                              |
  * | L - 4         | 4         | CRC-32 of octets [0, L - 4)                            |
  *
- * L = 36 + 2R (1 + n_ltp + n_rtp). Curve serialisation for the id: kind and
+ * L = 40 + 2R (1 + n_ltp + n_rtp) + 3R. Curve serialisation for the id: kind and
  * degree (2 octets each), then lo, hi, f0(lo), f0(hi), 1/(hi - lo) and the
  * degree normalised coefficients (R octets each). The CRC is CRC-32/ISO-HDLC
  * (the zlib/Ethernet CRC: reflected polynomial 0xEDB88320, initial value and
@@ -52,7 +56,7 @@ extern "C" {
 #endif
 
 /** Format version written and accepted by this library. */
-#define HYST_SNAPSHOT_VERSION 1u
+#define HYST_SNAPSHOT_VERSION 2u
 
 /** Octets per real in a snapshot: 8 if hyst_real_t is an IEEE binary64, else 4. */
 #if defined(HYST_USE_DOUBLE) && DBL_MANT_DIG == 53
@@ -66,7 +70,8 @@ extern "C" {
  *        snapshot of any state of an instance of @p capacity entries.
  */
 #define HYST_SNAPSHOT_SIZE(capacity) \
-    (36u + 2u * HYST_SNAPSHOT_REAL_OCTETS * (1u + 2u * (size_t)(capacity)))
+    (40u + 2u * HYST_SNAPSHOT_REAL_OCTETS * (1u + 2u * (size_t)(capacity)) + \
+     3u * HYST_SNAPSHOT_REAL_OCTETS)
 
 /**
  * @brief Length in octets of a snapshot of the current state of @p S.
@@ -98,11 +103,8 @@ hyst_status_t hyst_snapshot_save(const hyst_t *S, unsigned char *buf,
  * alternation, strict nesting, finite values inside [lo, hi], A0 at
  * (lo, f0(lo))). On any error @p S is left exactly as it was.
  *
- * The bounded-memory bookkeeping is not saved: after a restore
- * hyst_error_bound() counts from 0, and the instance assumes a merge may be
- * alive until the input reaches lo or hi (samples take the slow path and the
- * output is clamped to the major loop's range; outputs are otherwise the
- * same as without the restore).
+ * The bounded-memory bookkeeping (live merges, deadband window) is saved
+ * too, so a restored instance continues bit for bit, error bound included.
  *
  * @param[in,out] S    instance initialised (hyst_init) with the snapshot's curve;
  *                     its capacity may differ but must hold the saved TPs.
