@@ -18,8 +18,8 @@ Example (docs/identification.md):
   tools/plot.py --data data.dat --ycol 5 --skip 350 --delay 1 \
       --fit fit.txt --sim sim.csv --out build/report
 
-numpy and matplotlib are installed from PyPI into build/plot-venv on first
-use if they are missing. Neither the C build nor the tests need this script.
+numpy and matplotlib come from tools/pyenv.sh (a venv under build/, from
+PyPI, made on first use) when this Python lacks them. Neither the C build nor the tests need this script.
 """
 import argparse
 import os
@@ -28,11 +28,10 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-VENV = os.path.join(ROOT, "build", "plot-venv")
 
 
 def ensure_packages():
-    """Re-runs this script in a venv holding numpy and matplotlib if needed."""
+    """Re-runs this script with tools/pyenv.sh's Python (numpy + matplotlib) if needed."""
     try:
         import matplotlib  # noqa: F401
         import numpy  # noqa: F401
@@ -40,12 +39,8 @@ def ensure_packages():
     except ImportError:
         pass
     if os.environ.get("HYST_PLOT_VENV") == "1":
-        sys.exit("plot.py: numpy/matplotlib still missing after installing them in " + VENV)
-    py = os.path.join(VENV, "bin", "python")
-    if not os.path.exists(py):
-        print("plot.py: installing numpy and matplotlib into " + VENV, file=sys.stderr)
-        subprocess.check_call([sys.executable, "-m", "venv", VENV])
-        subprocess.check_call([py, "-m", "pip", "install", "--quiet", "numpy", "matplotlib"])
+        sys.exit("plot.py: numpy/matplotlib still missing in the Python of tools/pyenv.sh")
+    py = subprocess.check_output(["bash", os.path.join(ROOT, "tools", "pyenv.sh")], text=True).strip()
     env = dict(os.environ, HYST_PLOT_VENV="1")
     os.execve(py, [py, os.path.abspath(__file__)] + sys.argv[1:], env)
 
