@@ -484,13 +484,25 @@ static int pwl_extreme(const hyst_real_t *px, const hyst_real_t *py, size_t n)
  * (k - 1 or k) turns into an output error. */
 static double x_rounding(const hyst_real_t *px, const hyst_real_t *py, size_t n, size_t k, double x)
 {
-    double L = 0.0;
+    /* x itself is off by up to e (the rounding of lo + (x - lo)). While
+     * x +- e stays within the neighbouring segments, f moves by at most their
+     * largest slope times e, computed as dy * (e / dx) since dy / dx may
+     * underflow; beyond them, by the values between the breakpoints that
+     * bracket x +- e (f is monotone). */
+    const double e = 4.0 * EPS * (fabs(px[0]) + fabs(x));
+    size_t a = k > 0u ? k - 1u : 0u;
+    size_t b = k + 2u < n ? k + 2u : n - 1u;
+    double bound = 0.0;
     size_t j;
-    for (j = k > 0u ? k - 1u : 0u; j <= k + 1u && j + 1u < n; ++j) {
-        L = fmax(L, (py[j + 1u] - py[j]) / (px[j + 1u] - px[j]));
+    if (x - e >= px[a] && x + e <= px[b]) {
+        for (j = a; j < b; ++j) {
+            bound = fmax(bound, fabs(py[j + 1u] - py[j]) * (e / (px[j + 1u] - px[j])));
+        }
+        return isfinite(bound) ? bound : INFINITY;
     }
-    if (!isfinite(L)) return INFINITY; /* a slope beyond DBL_MAX: no bound */
-    return L == 0.0 ? 0.0 : 4.0 * EPS * L * (fabs(px[0]) + fabs(x));
+    while (a > 0u && px[a] > x - e) --a;
+    while (b + 1u < n && px[b] < x + e) ++b;
+    return py[b] - py[a];
 }
 
 /* f(px[i]) == py[i]: curve.h says a PWL curve is exact at its breakpoints,
