@@ -26,6 +26,7 @@ static int tcm_admit(hyst_code_t *S, uint_least32_t code, hyst_code_word_t *out)
 /* exact integer difference (a >= b), then one conversion */
 #define TCM_D(a, b) ((hyst_real_t)(uint_least32_t)((uint_least32_t)(a) - (uint_least32_t)(b)))
 #define TCM_MID(a, b) ((hyst_code_word_t)((a) + ((b) - (a)) / 2u))
+#define TCM_NORM(a) (a)
 #include "tcm_engine.inc"
 
 hyst_status_t hyst_code_init_curve(hyst_code_t *S, const hyst_curve_t *curve,
@@ -85,6 +86,7 @@ hyst_status_t hyst_code_set_deadband(hyst_code_t *S, uint_least32_t codes)
         return HYST_ERR_ARG;
     }
     S->deadband = (hyst_code_word_t)codes;
+    tcm_set_detour(S);
     return HYST_OK;
 }
 

@@ -3,6 +3,39 @@
 #include "hyst/tcm.h"
 #include "hyst_internal.h"
 
+#include <float.h>
+#include <stdint.h>
+
+/* The turning points are searched by their bit patterns read as integers
+ * (tcm_engine.inc) when hyst_real_t is IEEE 754 binary32 or binary64 with
+ * the byte order of the integers (every target hyst knows). Define
+ * HYST_KEYED_SEARCH=0 to compare reals instead. Off under -ffast-math,
+ * which need not keep the sign of zero that the search relies on. */
+#ifndef HYST_KEYED_SEARCH
+#if defined(__FAST_MATH__)
+#define HYST_KEYED_SEARCH 0
+#else
+#define HYST_KEYED_SEARCH 1
+#endif
+#endif
+#if defined(HYST_USE_DOUBLE)
+#define HYST_REAL_MANT_DIG_ DBL_MANT_DIG
+#define HYST_REAL_MAX_EXP_ DBL_MAX_EXP
+#else
+#define HYST_REAL_MANT_DIG_ FLT_MANT_DIG
+#define HYST_REAL_MAX_EXP_ FLT_MAX_EXP
+#endif
+#if HYST_KEYED_SEARCH && FLT_RADIX == 2 && HYST_REAL_MANT_DIG_ == 24 && HYST_REAL_MAX_EXP_ == 128
+#define TCM_KEY_T int32_t
+#define TCM_UKEY_T uint32_t
+#elif HYST_KEYED_SEARCH && FLT_RADIX == 2 && HYST_REAL_MANT_DIG_ == 53 && HYST_REAL_MAX_EXP_ == 1024
+#define TCM_KEY_T int64_t
+#define TCM_UKEY_T uint64_t
+#endif
+#ifdef TCM_KEY_T
+typedef char tcm_key_fits[sizeof(TCM_KEY_T) == sizeof(hyst_real_t) ? 1 : -1];
+#endif
+
 /* Out-of-line so the common path stays short: NaN/Inf or outside [lo, hi].
  * Returns 0 if the sample must be ignored, else 1 with *x clamped. */
 static int admit_slow(hyst_t *S, hyst_real_t *x)
@@ -35,6 +68,7 @@ static int tcm_admit(hyst_t *S, hyst_real_t x, hyst_real_t *out)
 #define TCM_R(a) (a)
 #define TCM_D(a, b) ((a) - (b))
 #define TCM_MID(a, b) ((a) + ((b) - (a)) * HYST_REAL_C(0.5))
+#define TCM_NORM(a) ((a) + HYST_REAL_C(0.0)) /* -0 + +0 = +0 */
 #include "tcm_engine.inc"
 
 hyst_status_t hyst_init_curve(hyst_t *S, const hyst_curve_t *curve,
@@ -77,7 +111,7 @@ void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y, const hyst_tcm_boo
     S->forgot_level = book->forgot_level;
     S->db_reach = book->db_reach;
     S->db_err = book->db_err;
-    tcm_set_slow_only(S);
+    tcm_set_detour(S);
     settle_idle(S, x);
     S->y_prev = y;
 }
@@ -91,6 +125,7 @@ hyst_status_t hyst_set_deadband(hyst_t *S, hyst_real_t width)
         return HYST_ERR_ARG;
     }
     S->deadband = width;
+    tcm_set_detour(S);
     return HYST_OK;
 }
 

@@ -119,6 +119,60 @@ static void test_random_curves_of_every_degree_match_reference(void)
     }
 }
 
+/* A domain across zero, f0(x) = x^3/3 + x^2/2 + x (f0' = x^2 + x + 1 > 0):
+ * the search by bit patterns takes both its signed (x >= 0) and its
+ * unsigned (x < 0) ladders, and inputs of -0.0 and +0.0 (equal values) must
+ * behave alike, whatever TP they meet. */
+static void test_bipolar_domain_and_signed_zeros_match_reference(void)
+{
+    hyst_poly_t f0;
+    const double c[4] = {1.0 / 3.0, 0.5, 1.0, 0.0};
+    double worst = 0.0, range;
+    long code = 0, i, zeros = 0, negative_tps = 0;
+    f0.degree = 3u;
+    f0.lo = HYST_REAL_C(-2.0);
+    f0.hi = HYST_REAL_C(2.0);
+    f0.coeffs[0] = (hyst_real_t)c[0];
+    f0.coeffs[1] = (hyst_real_t)c[1];
+    f0.coeffs[2] = (hyst_real_t)c[2];
+    f0.coeffs[3] = (hyst_real_t)c[3];
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&S, &f0, xl, yl, xr, yr, CAP));
+    ref_init(&ref, c, 3u, -2.0, 2.0);
+    range = ref_f0(&ref, 2.0) - ref_f0(&ref, -2.0);
+    for (i = 0; i < SAMPLES; ++i) {
+        hyst_real_t xin;
+        double y, yr_, d;
+        /* codes -2047..2047, small steps around 0 and some jumps */
+        if (rng_below(&rng, 16u) == 0u) {
+            code = (long)rng_below(&rng, 4095u) - 2047;
+        } else if (rng_below(&rng, 8u) == 0u) {
+            code = 0;
+        } else {
+            code += (long)rng_below(&rng, 9u) - 4;
+            code = code < -2047 ? -2047 : (code > 2047 ? 2047 : code);
+        }
+        xin = (hyst_real_t)(2.0 * (double)code / 2047.0);
+        if (code == 0) {
+            xin = rng_below(&rng, 2u) ? HYST_REAL_C(-0.0) : HYST_REAL_C(0.0);
+            ++zeros;
+        }
+        y = (double)hyst_step(&S, xin);
+        yr_ = ref_step(&ref, (double)xin);
+        d = y > yr_ ? y - yr_ : yr_ - y;
+        worst = d > worst ? d : worst;
+        if (ref_tp_count(&ref) != (long)hyst_tp_count(&S)) {
+            TEST_FAIL_MESSAGE("turning-point count differs from the reference");
+        }
+        if (hyst_ltp_count(&S) > 0u && S.xltp[1] < 0) {
+            ++negative_tps;
+        }
+    }
+    TEST_PRINTF("bipolar: max |error| / range = %g, %ld zeros, %ld samples with a negative TP",
+                worst / range, zeros, negative_tps);
+    TEST_ASSERT_TRUE(zeros > 1000 && negative_tps > 1000);
+    TEST_ASSERT_TRUE(worst / range <= TOL_OF_RANGE);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -126,5 +180,6 @@ int main(void)
     RUN_TEST(test_random_jumps_match_reference);
     RUN_TEST(test_quantised_codes_match_reference);
     RUN_TEST(test_random_curves_of_every_degree_match_reference);
+    RUN_TEST(test_bipolar_domain_and_signed_zeros_match_reference);
     return UNITY_END();
 }

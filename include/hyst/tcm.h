@@ -94,7 +94,7 @@ extern "C" {
     hyst_real_t db_err;  /**< error bound of that skipped reversal */      \
     hyst_real_t forgot;  /**< error bound: misses of live merges */        \
     size_t forgot_level; /**< all live while stack depth > this */       \
-    int slow_only        /**< no fast path: out-of-line curve or merge */
+    unsigned detour      /**< why slow samples leave the plain path (flags) */
 
 /**
  * @brief A TCM instance with real inputs. Fields are private; use the
