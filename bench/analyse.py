@@ -53,14 +53,15 @@ def fit_line(xs, ys):
 
 def annotate(elf, run, pulses, objdump):
     """Disassembly of every instruction the given pulses executed, with counts."""
+    name = os.path.basename(elf)
     dis = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], capture_output=True,
                          text=True, check=True).stdout.splitlines()
     out = []
     for idx in pulses:
         prof = {pc: c for (i, pc), c in run.profile.items() if i == idx and c}
         pulse = run.pulses[idx]
-        out.append("=== pulse %d: %s  raw %d, in the callee %s (count = executions)"
-                   % (idx, " ".join(pulse.label), pulse.raw, pulse.net))
+        out.append("=== %s pulse %d: %s  raw %d, in the callee %s (count = executions)"
+                   % (name, idx, " ".join(pulse.label), pulse.raw, pulse.net))
         func = None
         per_func = {}
         for line in dis:
@@ -119,12 +120,21 @@ def flash_of(build_m4, opt, size_tool):
     return total, per
 
 
+def deepest_pulse(run):
+    """Index of the costliest wipe-out or clamped pulse of a run."""
+    cands = [i for i, p in enumerate(run.pulses)
+             if p.net is not None and (wipe_kind(p.label[0]) or p.label[0].startswith("clamp"))]
+    return max(cands, key=lambda i: (run.pulses[i].net, int(run.pulses[i].label[3])))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--m4", required=True)
     ap.add_argument("--host", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--plot-python", default="")
+    ap.add_argument("--drive", default=os.path.join(HERE, "..", "tests", "data", "piezo_major_loop.dat"),
+                    help="measured drive for the host throughput (column 1)")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     qemu = os.environ.get("HYST_QEMU", "qemu-system-arm")
@@ -224,7 +234,7 @@ def main():
         put("ram_%sbit_bytes" % bits, inst + 4 * (nu // 2) * real)
         put("ram_%sbit_paper_bytes" % bits, PAPER[bits])
 
-    host = subprocess.run([os.path.join(args.host, "bench", "bench_host")],
+    host = subprocess.run([os.path.join(args.host, "bench", "bench_host"), args.drive],
                           capture_output=True, text=True)
     if host.returncode != 0:
         problems.append("bench_host failed: " + host.stderr.strip())
@@ -235,9 +245,24 @@ def main():
     with open(os.path.join(args.m4, "bench", "pi_source.txt")) as f:
         put("pi10_source", f.read().strip())
 
+    # The costliest sample of the budget images (every survivor count at the
+    # largest m), on 0..4095 and on a domain across zero; the first profiled.
     objdump = os.environ.get("HYST_OBJDUMP", "arm-none-eabi-objdump")
+    worst_text = ""
+    for name, key in (("bench_budget", None), ("bench_budget_bipolar", "tcm_worst_bipolar_insns_nu4096")):
+        elf = os.path.join(args.m4, "bench", name)
+        run = qemu_count.measure(elf, qemu)
+        if run.exit_code != 0 or run.meta.get("failures") != "0":
+            problems.append("%s: exit %s, failures %s" % (name, run.exit_code, run.meta.get("failures")))
+            continue
+        idx = deepest_pulse(run)
+        if key:
+            put(key, run.pulses[idx].net)
+        else:
+            prof = qemu_count.measure(elf, qemu, profile=[idx])
+            worst_text = annotate(elf, prof, [idx], objdump)
     with open(os.path.join(args.out, "worst_path.txt"), "w") as f:
-        f.write(annotate(tcm_elf, tcm, SHOWCASE, objdump))
+        f.write(worst_text + annotate(tcm_elf, tcm, SHOWCASE, objdump))
 
     with open(os.path.join(args.out, "summary.txt"), "w") as f:
         for k, v in summary:

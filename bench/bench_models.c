@@ -11,14 +11,25 @@ const hyst_real_t bench_pi10_w[BENCH_PI_N] = {
     HYST_REAL_C(0.2000), HYST_REAL_C(0.2000), HYST_REAL_C(0.1999),
     HYST_REAL_C(0.2005)};
 
-void bench_f0_codes(hyst_poly_t *f0)
+void bench_f0_codes(hyst_poly_t *f0, double offset)
 {
     const double s = 40.0 / (double)(BENCH_NU - 1u); /* volts per code */
+    double c[4];
+    unsigned i, j;
+    c[0] = -6.1876e-6 * s * s * s;
+    c[1] = 1.1949e-3 * s * s;
+    c[2] = 8.6444e-2 * s;
+    c[3] = 5.8517e-1;
+    /* Taylor shift: q(x) = p(x - offset), highest power first. */
+    for (i = 0u; i < 3u; ++i) {
+        for (j = 1u; j <= 3u - i; ++j) {
+            c[j] -= offset * c[j - 1u];
+        }
+    }
     f0->degree = 3u;
-    f0->lo = HYST_REAL_C(0.0);
-    f0->hi = (hyst_real_t)(BENCH_NU - 1u);
-    f0->coeffs[0] = (hyst_real_t)(-6.1876e-6 * s * s * s);
-    f0->coeffs[1] = (hyst_real_t)(1.1949e-3 * s * s);
-    f0->coeffs[2] = (hyst_real_t)(8.6444e-2 * s);
-    f0->coeffs[3] = (hyst_real_t)5.8517e-1;
+    f0->lo = (hyst_real_t)offset;
+    f0->hi = (hyst_real_t)(offset + (double)(BENCH_NU - 1u));
+    for (i = 0u; i < 4u; ++i) {
+        f0->coeffs[i] = (hyst_real_t)c[i];
+    }
 }

@@ -13,7 +13,8 @@
 extern const hyst_real_t bench_pi10_r[BENCH_PI_N];
 extern const hyst_real_t bench_pi10_w[BENCH_PI_N];
 
-/** Paper Eq. 20 (0..40 V, cubic) stretched over the codes 0 .. BENCH_NU - 1. */
-void bench_f0_codes(hyst_poly_t *f0);
+/** Paper Eq. 20 (0..40 V, cubic) stretched over the codes 0 .. BENCH_NU - 1,
+ *  then shifted by @p offset: domain offset .. offset + BENCH_NU - 1. */
+void bench_f0_codes(hyst_poly_t *f0, double offset);
 
 #endif

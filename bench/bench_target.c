@@ -19,6 +19,8 @@
  *
  * Build switches: BENCH_SWEEP_ALL (every m, else a sparse set), BENCH_EXHAUSTIVE
  * (every survivor count k at the largest m), BENCH_PI (PI-10 pulses),
+ * BENCH_OFFSET (codes shifted by this much, e.g. -2048: a domain across
+ * zero, whose searches take both ladders of the keyed search),
  * HYST_USE_LINEAR_SEARCH (engine variant, changes the p model).
  */
 #include "hyst/hyst.h"
@@ -37,6 +39,9 @@
 #ifndef BENCH_PI
 #define BENCH_PI 1
 #endif
+#ifndef BENCH_OFFSET
+#define BENCH_OFFSET 0
+#endif
 
 /* Keeps GCC from specialising the timed wrappers per callee: the wrapper's
  * code must be the same for the calibration call and the measured one. */
@@ -48,7 +53,10 @@
 
 #define NU BENCH_NU
 #define CAP HYST_CAPACITY(NU)
-#define CODE_HI ((hyst_real_t)(NU - 1u))
+/* Input value of code c (exact in hyst_real_t, like the half codes). */
+#define OFF ((hyst_real_t)(BENCH_OFFSET))
+#define CODE(c) ((hyst_real_t)(c) + OFF)
+#define CODE_HI CODE(NU - 1u)
 #define PI_SAMPLES 256u
 #define MAX_RECORDS 32000u
 
@@ -169,7 +177,7 @@ static void time_wipe_rise(const char *kind, unsigned n, unsigned k, hyst_real_t
 /* LTP codes are 0, 1, 2, ...: x = k - 0.5 leaves k of them (x = 0 none). */
 static hyst_real_t ltp_target(unsigned k)
 {
-    return k == 0u ? HYST_REAL_C(0.0) : (hyst_real_t)k - HYST_REAL_C(0.5);
+    return k == 0u ? CODE(0u) : CODE(k) - HYST_REAL_C(0.5);
 }
 
 /* RTP codes are 4095, 4094, ...: x = 4095.5 - k leaves k (x = 4095 none). */
@@ -198,7 +206,7 @@ static int in_sweep(unsigned m) { return BENCH_SWEEP_ALL || sparse_m(m); }
 static void measure_falling(unsigned j, int last)
 {
     const unsigned n = j - 1u; /* searched by both wipe kinds */
-    const hyst_real_t xj = (hyst_real_t)j;
+    const hyst_real_t xj = CODE(j);
     unsigned k;
     if (sparse_m(j)) {
         time_plain("typ_fall", n, xj - HYST_REAL_C(0.5));
@@ -246,7 +254,7 @@ static void measure_rising(unsigned i, int last)
             }
             time_wipe_fall("exh_wipe_revfall", n_fall, k, ltp_target(k));
         }
-        time_wipe_fall("clamp_lo", n_fall, 0u, HYST_REAL_C(-1.0));
+        time_wipe_fall("clamp_lo", n_fall, 0u, CODE(0u) - HYST_REAL_C(1.0));
         {
             const hyst_t snap = tcm;
             volatile hyst_real_t zero = HYST_REAL_C(0.0);
@@ -263,8 +271,8 @@ static void measure_rising(unsigned i, int last)
 
 /* Next reversal of the trajectory 0, 4095, 1, 4094, ...: peak i leads to
  * R_i, valley i to F_i. */
-static void step_peak(unsigned i) { (void)hyst_step(&tcm, (hyst_real_t)(NU - i)); }
-static void step_valley(unsigned i) { (void)hyst_step(&tcm, (hyst_real_t)i); }
+static void step_peak(unsigned i) { (void)hyst_step(&tcm, CODE(NU - i)); }
+static void step_valley(unsigned i) { (void)hyst_step(&tcm, CODE(i)); }
 
 /* The cheapest and the deepest sample of each kind at the largest m, first
  * in the pulse order (pulses 1..6) so that the analysis can profile them. */
@@ -275,7 +283,7 @@ static void showcase(void)
         step_peak(i);
         step_valley(i);
     }
-    time_plain("show_typ_fall", CAP - 2u, (hyst_real_t)(CAP - 1u) - HYST_REAL_C(0.5));
+    time_plain("show_typ_fall", CAP - 2u, CODE(CAP - 1u) - HYST_REAL_C(0.5));
     time_wipe_fall("show_wipe_fall", CAP - 2u, 0u, ltp_target(0u));
     time_wipe_rise("show_wipe_revrise", CAP - 2u, 0u, rtp_target(0u));
     step_peak(CAP);
@@ -289,7 +297,7 @@ static void bench_tcm(void)
 {
     hyst_poly_t f0;
     unsigned i;
-    bench_f0_codes(&f0);
+    bench_f0_codes(&f0, (double)BENCH_OFFSET);
     if (HYST_INIT(tcm, &f0) != HYST_OK) {
         failures |= 16;
         return;
@@ -410,6 +418,7 @@ int main(void)
     out_kv("capacity", CAP);
     out_kv("sizeof_hyst_t", sizeof(hyst_t));
     out_kv("sizeof_real", sizeof(hyst_real_t));
+    out_kv("offset_neg", (unsigned long)(BENCH_OFFSET < 0 ? -(BENCH_OFFSET) : 0));
 #ifdef HYST_USE_LINEAR_SEARCH
     out_kv("linear_search", 1u);
 #else

@@ -27,22 +27,15 @@ def base(kind):
     return kind.split("_", 1)[1] if kind.startswith(("exh_", "show_")) else kind
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--elf", required=True)
-    ap.add_argument("--qemu", default="qemu-system-arm")
-    ap.add_argument("--nm", default="arm-none-eabi-nm")
-    ap.add_argument("--typical", type=int, required=True)
-    ap.add_argument("--worst", type=int, required=True)
-    args = ap.parse_args()
-
+def check(elf, args):
+    """Budget checks of one image; returns the failures."""
     fails = []
     # Calibration assumes a one-instruction callee (Thumb "bx lr", 2 bytes).
     for sym in ("null_tcm", "null_pi"):
-        size = qemu_count.symbol_size(args.elf, sym, args.nm)
+        size = qemu_count.symbol_size(elf, sym, args.nm)
         if size != 2:
             fails.append("calibration callee %s is %s bytes, not one bx lr" % (sym, size))
-    run = qemu_count.measure(args.elf, args.qemu)
+    run = qemu_count.measure(elf, args.qemu)
     if run.exit_code != 0 or run.meta.get("failures") != "0":
         fails.append("firmware checks: exit %s, failures %s" % (run.exit_code, run.meta.get("failures")))
     samples = [p for p in run.pulses if not p.label[0].startswith("cal")]
@@ -61,8 +54,7 @@ def main():
         if not group:
             fails.append("no %s samples measured" % name)
     if fails:
-        print("\n".join("FAIL " + f for f in fails))
-        return 1
+        return fails
 
     # Coverage: at the largest m, every survivor count k of every wipe kind.
     m_max = max(int(p.label[1]) for p in wipes)
@@ -96,6 +88,22 @@ def main():
                      % (len(over), args.worst, worst.net, " ".join(worst.label)))
     if not 2 * worst_typ.net < pi_max:
         fails.append("typical TCM sample (%d) not below half of PI-10 (%d)" % (worst_typ.net, pi_max))
+    return fails
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--elf", required=True, action="append",
+                    help="an image of bench_target.c; repeat for several")
+    ap.add_argument("--qemu", default="qemu-system-arm")
+    ap.add_argument("--nm", default="arm-none-eabi-nm")
+    ap.add_argument("--typical", type=int, required=True)
+    ap.add_argument("--worst", type=int, required=True)
+    args = ap.parse_args()
+    fails = []
+    for elf in args.elf:
+        print("== %s" % os.path.basename(elf))
+        fails += ["%s: %s" % (os.path.basename(elf), f) for f in check(elf, args)]
     for f in fails:
         print("FAIL " + f)
     print("PASS" if not fails else "%d budget checks failed" % len(fails))

@@ -326,6 +326,62 @@ static void test_define_macro_and_block_call(void)
     TEST_ASSERT_EQUAL_UINT(0u, hyst_code_events(&axis));
 }
 
+/* The block call's run loop against per-sample steps on codes: runs on one
+ * branch, reversals, nested zigzags (capacity 8 overflows), clamped codes,
+ * random chunks; outputs bit for bit, statuses, TPs and events alike. */
+static void test_block_call_equals_per_sample_steps(void)
+{
+    enum { N = 20000 };
+    static hyst_code_word_t xs[N];
+    static hyst_real_t ya[N], yb[N];
+    static hyst_code_t D;
+    static hyst_code_word_t dx_[2][8];
+    static hyst_real_t dy_[2][8];
+    long x = 2000, dx = 3, amp = 0, centre = 0;
+    int zig = 0, worst = HYST_OK;
+    size_t i, k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_code(0u, 4095u, 8u));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init(&D, &paper_eq20, 0u, 4095u, dx_[0], dy_[0],
+                                                  dx_[1], dy_[1], 8u));
+    for (i = 0u; i < (size_t)N; ++i) {
+        const uint32_t r = rng_below(&rng, 64u);
+        if (zig > 0) {
+            x = centre + ((zig & 1) ? amp : -amp);
+            amp = amp * 7 / 8;
+            --zig;
+        } else if (r == 0u) {
+            zig = 30;
+            centre = 1000 + (long)rng_below(&rng, 2000u);
+            amp = 200 + (long)rng_below(&rng, 700u);
+        } else if (r < 3u) {
+            x = (long)rng_below(&rng, 4096u);
+        } else if (r < 9u) {
+            dx = -dx;
+        } else if (r == 9u) {
+            dx = (long)rng_below(&rng, 9u) - 4;
+        }
+        x += zig > 0 ? 0 : dx;
+        x = x < 0 ? 0 : (x > 4095 ? 4095 : x);
+        xs[i] = (hyst_code_word_t)(r == 10u ? 4200u : (unsigned long)x); /* some clamped */
+        ya[i] = hyst_code_step(&C, xs[i]);
+        worst = hyst_code_status(&C) > worst ? hyst_code_status(&C) : worst;
+    }
+    for (i = 0u; i < (size_t)N; i += k) {
+        k = 1u + (size_t)rng_below(&rng, 300u);
+        k = i + k > (size_t)N ? (size_t)N - i : k;
+        (void)hyst_code_process(&D, &xs[i], &yb[i], k);
+    }
+    TEST_ASSERT_EQUAL_MEMORY(ya, yb, sizeof ya);
+    TEST_ASSERT_EQUAL_UINT(hyst_code_events(&C), hyst_code_events(&D));
+    TEST_ASSERT_EQUAL_UINT(HYST_EVENT_CLAMPED | HYST_EVENT_FULL,
+                           hyst_code_events(&C) & (HYST_EVENT_CLAMPED | HYST_EVENT_FULL));
+    TEST_ASSERT_EQUAL_UINT((unsigned)hyst_code_tp_count(&C), (unsigned)hyst_code_tp_count(&D));
+    TEST_ASSERT_EQUAL_UINT((unsigned)C.n_ltp, (unsigned)D.n_ltp);
+    TEST_ASSERT_EQUAL_MEMORY(cx[0], dx_[0], C.n_ltp * sizeof cx[0][0]);
+    TEST_ASSERT_EQUAL_MEMORY(cy[0], dy_[0], C.n_ltp * sizeof cy[0][0]);
+    TEST_ASSERT_TRUE(worst == HYST_WARN_FULL);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -341,5 +397,6 @@ int main(void)
     RUN_TEST(test_bad_configuration_is_refused);
     RUN_TEST(test_code_words_are_small);
     RUN_TEST(test_define_macro_and_block_call);
+    RUN_TEST(test_block_call_equals_per_sample_steps);
     return UNITY_END();
 }

@@ -418,6 +418,136 @@ static void test_instances_are_independent(void)
     }
 }
 
+/* Status of a block as hyst_process() documents it, from per-sample ones. */
+static int fold_status(const int *st, size_t n)
+{
+    int worst = HYST_OK, failed = 0;
+    size_t i;
+    for (i = 0u; i < n; ++i) {
+        failed |= st[i] < 0;
+        worst = st[i] > worst ? st[i] : worst;
+    }
+    return failed ? HYST_ERR_NONFINITE : worst;
+}
+
+/* Smooth runs, reversals, jumps, repeats, NaN, out-of-domain samples and
+ * shrinking zigzags (nested loops: they fill small arrays). */
+typedef struct {
+    double x, dx, centre, amp;
+    int zig;
+} mix_t;
+
+static hyst_real_t mixed_sample(mix_t *m)
+{
+    uint32_t r;
+    if (m->zig > 0) {
+        m->x = m->centre + ((m->zig & 1) ? m->amp : -m->amp);
+        m->amp *= 0.85;
+        --m->zig;
+        return (hyst_real_t)m->x;
+    }
+    r = rng_below(&rng, 64u);
+    if (r == 0u) {
+        return (hyst_real_t)NAN;
+    }
+    if (r == 1u) {
+        return (hyst_real_t)rng_range(&rng, -10.0, 50.0); /* often clamped */
+    }
+    if (r == 13u) {
+        m->centre = rng_range(&rng, 10.0, 30.0);
+        m->amp = rng_range(&rng, 2.0, 10.0);
+        m->zig = 30;
+    }
+    if (r < 4u) {
+        m->x = rng_range(&rng, 0.0, 40.0);
+    } else if (r < 10u) {
+        m->dx = -m->dx; /* reversal */
+    } else if (r < 12u) {
+        m->dx = rng_range(&rng, -0.5, 0.5);
+    }
+    if (r != 12u) { /* 12: a repeated sample */
+        m->x += m->dx;
+    }
+    m->x = m->x < 0.0 ? 0.0 : (m->x > 40.0 ? 40.0 : m->x);
+    return (hyst_real_t)m->x;
+}
+
+/* hyst_process() runs samples on one branch through its own loop: it must
+ * equal hyst_step() per sample bit for bit, state and statuses included,
+ * for every chunking, in place or not, with merges (capacity 8), with the
+ * deadband, and with a curve evaluated out of line (no fast path). */
+static void test_block_call_equals_per_sample_steps(void)
+{
+    static const hyst_real_t px[4] = {HYST_REAL_C(0.0), HYST_REAL_C(10.0), HYST_REAL_C(25.0), HYST_REAL_C(40.0)};
+    static const hyst_real_t py[4] = {HYST_REAL_C(0.0), HYST_REAL_C(1.0), HYST_REAL_C(3.5), HYST_REAL_C(6.0)};
+    enum { N = 20000, SMALL_CAP = 8 };
+    static hyst_real_t xs[N], ya[N], yb[N];
+    static int st[N];
+    int config;
+    for (config = 0; config < 3; ++config) {
+        hyst_curve_t pwl;
+        mix_t mix = {20.0, 0.05, 0.0, 0.0, 0};
+        size_t i = 0u, blocks = 0u, inplace = 0u;
+        if (config == 2) {
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&pwl, px, py, 4u));
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&A, &pwl, xl, yl, xr, yr, SMALL_CAP));
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&B, &pwl, xl2, yl2, xr2, yr2, SMALL_CAP));
+        } else {
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&A, &paper_eq20, xl, yl, xr, yr, SMALL_CAP));
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&B, &paper_eq20, xl2, yl2, xr2, yr2, SMALL_CAP));
+        }
+        if (config == 1) {
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_set_deadband(&A, HYST_REAL_C(0.3)));
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_set_deadband(&B, HYST_REAL_C(0.3)));
+        }
+        for (i = 0u; i < (size_t)N; ++i) {
+            xs[i] = mixed_sample(&mix);
+            ya[i] = hyst_step(&A, xs[i]);
+            st[i] = hyst_status(&A);
+        }
+        for (i = 0u; i < (size_t)N; blocks++) {
+            size_t n = 1u + (size_t)rng_below(&rng, 300u), k;
+            int got;
+            n = i + n > (size_t)N ? (size_t)N - i : n;
+            if (rng_below(&rng, 2u) == 0u) { /* in place: y is x */
+                for (k = 0u; k < n; ++k) {
+                    yb[i + k] = xs[i + k];
+                }
+                got = hyst_process(&B, &yb[i], &yb[i], n);
+                ++inplace;
+            } else {
+                got = hyst_process(&B, &xs[i], &yb[i], n);
+            }
+            TEST_ASSERT_EQUAL_INT(fold_status(&st[i], n), got);
+            TEST_ASSERT_EQUAL_INT(st[i + n - 1u], hyst_status(&B));
+            i += n;
+        }
+        TEST_ASSERT_EQUAL_MEMORY(ya, yb, sizeof ya);
+        TEST_ASSERT_EQUAL_UINT(hyst_events(&A), hyst_events(&B));
+        TEST_ASSERT_EQUAL_UINT((unsigned)A.n_ltp, (unsigned)B.n_ltp);
+        TEST_ASSERT_EQUAL_UINT((unsigned)A.n_rtp, (unsigned)B.n_rtp);
+        TEST_ASSERT_EQUAL_MEMORY(xl, xl2, A.n_ltp * sizeof xl[0]);
+        TEST_ASSERT_EQUAL_MEMORY(yl, yl2, A.n_ltp * sizeof yl[0]);
+        if (A.n_rtp > 0u) {
+            TEST_ASSERT_EQUAL_MEMORY(xr, xr2, A.n_rtp * sizeof xr[0]);
+            TEST_ASSERT_EQUAL_MEMORY(yr, yr2, A.n_rtp * sizeof yr[0]);
+        }
+        {
+            const hyst_real_t oa = hyst_output(&A), ob = hyst_output(&B);
+            const hyst_real_t ia = hyst_input(&A), ib = hyst_input(&B);
+            const hyst_real_t ea = hyst_error_bound(&A), eb = hyst_error_bound(&B);
+            TEST_ASSERT_EQUAL_MEMORY(&oa, &ob, sizeof oa);
+            TEST_ASSERT_EQUAL_MEMORY(&ia, &ib, sizeof ia);
+            TEST_ASSERT_EQUAL_MEMORY(&ea, &eb, sizeof ea);
+        }
+        TEST_PRINTF("config %d: %u blocks (%u in place), events %u", config, (unsigned)blocks,
+                    (unsigned)inplace, hyst_events(&A));
+        /* the mix must reach every status: NaN, clamping, and the full array */
+        TEST_ASSERT_EQUAL_UINT(HYST_EVENT_NONFINITE | HYST_EVENT_CLAMPED | HYST_EVENT_FULL,
+                               hyst_events(&A) & (HYST_EVENT_NONFINITE | HYST_EVENT_CLAMPED | HYST_EVENT_FULL));
+    }
+}
+
 static void test_define_macro_declares_a_working_instance(void)
 {
     HYST_DEFINE(axis, 64);
@@ -442,6 +572,7 @@ int main(void)
     RUN_TEST(test_full_array_forgets_innermost_loop);
     RUN_TEST(test_paper_signal_turning_point_count);
     RUN_TEST(test_instances_are_independent);
+    RUN_TEST(test_block_call_equals_per_sample_steps);
     RUN_TEST(test_define_macro_declares_a_working_instance);
     return UNITY_END();
 }
