@@ -6,18 +6,8 @@
 #include <float.h>
 #include <stdint.h>
 
-/* The turning points are searched by their bit patterns read as integers
- * (tcm_engine.inc) when hyst_real_t is IEEE 754 binary32 or binary64 with
- * the byte order of the integers (every target hyst knows). Define
- * HYST_KEYED_SEARCH=0 to compare reals instead. Off under -ffast-math,
- * which need not keep the sign of zero that the search relies on. */
-#ifndef HYST_KEYED_SEARCH
-#if defined(__FAST_MATH__)
-#define HYST_KEYED_SEARCH 0
-#else
-#define HYST_KEYED_SEARCH 1
-#endif
-#endif
+/* HYST_KEYED_SEARCH (config.h): search by bit patterns when hyst_real_t
+ * is IEEE 754 binary32 or binary64. */
 #if defined(HYST_USE_DOUBLE)
 #define HYST_REAL_MANT_DIG_ DBL_MANT_DIG
 #define HYST_REAL_MAX_EXP_ DBL_MAX_EXP

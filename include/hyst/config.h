@@ -50,6 +50,24 @@ typedef hyst_real_t hyst_wide_t;
 typedef double hyst_wide_t;
 #endif
 
+/**
+ * @brief Search the turning points by the bit patterns of the reals.
+ *
+ * 1 (default): hyst_real_t values are compared as integers of the same size
+ * in the binary search, one instruction fewer per probe on FPUs that move
+ * flags (Cortex-M4F, C28x); exact for IEEE 754 binary32/binary64 whose byte
+ * order is the integers' (every target hyst knows), and used only for those
+ * formats. 0: compare reals. Off by default under -ffast-math, which need
+ * not keep the sign of zero the search relies on.
+ */
+#ifndef HYST_KEYED_SEARCH
+#if defined(__FAST_MATH__)
+#define HYST_KEYED_SEARCH 0
+#else
+#define HYST_KEYED_SEARCH 1
+#endif
+#endif
+
 /** Inline that the compiler may not decline: the per-sample path. */
 #if defined(__GNUC__) || defined(__clang__)
 #define HYST_INLINE static inline __attribute__((always_inline))

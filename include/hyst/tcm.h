@@ -21,7 +21,10 @@
  *     y_k - g(x_k - x) on a falling branch from RTP (x_k, y_k).
  * A sample that moves on along its branch without reaching a stored TP takes
  * a constant fast path: two comparisons against a cached window, one
- * evaluation of g (35 Cortex-M4F instructions for a cubic).
+ * evaluation of g (35 Cortex-M4F instructions for a cubic). A sample that
+ * passes TPs costs one binary search more (at most 146 instructions at
+ * Nu = 4096; docs/timing.md). hyst_process() runs the samples that stay on
+ * their branch in a loop of its own, with bit-identical results.
  *
  * Bounded memory (docs/memory.md). When a reversal at P finds the LTP array
  * full, the innermost stored loop (L1, R1) and P are replaced by ONE LTP V:
