@@ -97,6 +97,15 @@ void hyst_reset(hyst_t *S) { tcm_reset(S); }
 
 void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y, const hyst_tcm_book_t *book)
 {
+    size_t i;
+    /* The keyed search needs +0 where a TP is zero; snapshots of earlier
+     * versions may hold -0 (an equal value: nothing else changes). */
+    for (i = 0u; i < S->n_ltp; ++i) {
+        S->xltp[i] = TCM_NORM(S->xltp[i]);
+    }
+    for (i = 0u; i < S->n_rtp; ++i) {
+        S->xrtp[i] = TCM_NORM(S->xrtp[i]);
+    }
     S->forgot = book->forgot;
     S->forgot_level = book->forgot_level;
     S->db_reach = book->db_reach;

@@ -329,6 +329,41 @@ static void test_live_merges_continue_bit_identically(void)
     }
 }
 
+/* A snapshot whose TP is -0.0 (earlier versions stored the input as given)
+ * restores as +0.0 and then behaves exactly like the instance that stored
+ * +0.0: the search by bit patterns tells -0 from +0 otherwise. */
+static void test_negative_zero_turning_point_restores_as_zero(void)
+{
+    static const hyst_poly_t f0 = {3u, HYST_REAL_C(-2.0), HYST_REAL_C(2.0),
+                                   {HYST_REAL_C(0.3333333), HYST_REAL_C(0.5), HYST_REAL_C(1.0),
+                                    HYST_REAL_C(0.0)}};
+    const size_t ltp1 = 32u + 2u * R * 2u; /* header, last sample, A0 */
+    static const hyst_real_t after[6] = {HYST_REAL_C(0.5), HYST_REAL_C(0.0), HYST_REAL_C(0.25),
+                                         HYST_REAL_C(-0.5), HYST_REAL_C(1.0), HYST_REAL_C(0.0)};
+    hyst_real_t zero;
+    size_t len, k;
+    init_inst(&A, &f0, CAP);
+    (void)hyst_step(&A.S, HYST_REAL_C(1.0));
+    (void)hyst_step(&A.S, HYST_REAL_C(-0.0));
+    (void)hyst_step(&A.S, HYST_REAL_C(0.5)); /* LTP at zero, inside the RTP at 1 */
+    TEST_ASSERT_EQUAL_UINT(1u, (unsigned)hyst_ltp_count(&A.S));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&A.S, work, sizeof(work), &len));
+    for (k = 0u; k < R; ++k) {
+        TEST_ASSERT_EQUAL_UINT(0u, work[ltp1 + k]); /* stored as +0 */
+    }
+    work[ltp1 + R - 1u] = 0x80u; /* sign bit: -0 */
+    refix_crc(work, len);
+    init_inst(&B, &f0, CAP);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, work, len));
+    zero = B.xl[1];
+    TEST_ASSERT_EQUAL_MEMORY(&A.xl[1], &zero, sizeof zero);
+    for (k = 0u; k < 6u; ++k) {
+        const hyst_real_t ya = hyst_step(&A.S, after[k]), yb = hyst_step(&B.S, after[k]);
+        TEST_ASSERT_EQUAL_MEMORY(&ya, &yb, sizeof ya);
+        TEST_ASSERT_EQUAL_UINT((unsigned)hyst_tp_count(&A.S), (unsigned)hyst_tp_count(&B.S));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -344,5 +379,6 @@ int main(void)
     RUN_TEST(test_capacity_must_hold_the_saved_points);
     RUN_TEST(test_impossible_state_with_valid_crc_is_refused);
     RUN_TEST(test_save_refuses_small_buffers_and_null);
+    RUN_TEST(test_negative_zero_turning_point_restores_as_zero);
     return UNITY_END();
 }
