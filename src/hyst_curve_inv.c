@@ -137,8 +137,12 @@ hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
     ub = c->knot_u[j + 1u];
     ta = (hyst_real_t)j; /* G K / R at the knots, by construction */
     tb = (hyst_real_t)(j + 1u);
-    pu[0] = ua; pu[1] = ua; pu[2] = ub; /* no split yet: linear leaf */
-    pt[0] = ta; pt[1] = ta; pt[2] = tb;
+    pu[0] = ua; /* no split yet: h1 = 0 below, linear leaf */
+    pu[1] = ua;
+    pu[2] = ub;
+    pt[0] = ta;
+    pt[1] = ta;
+    pt[2] = tb;
     for (lv = 0u; lv < LEVELS; ++lv) {
         const hyst_real_t m = (ua + ub) * HYST_REAL_C(0.5);
         hyst_real_t tm;
@@ -146,8 +150,12 @@ hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
             break; /* no real between: the leaf */
         }
         tm = real_g(c, m) * c->knot_scale;
-        pu[0] = ua; pu[1] = m; pu[2] = ub;
-        pt[0] = ta; pt[1] = tm; pt[2] = tb;
+        pu[0] = ua; /* the last split's three points, for the leaf */
+        pu[1] = m;
+        pu[2] = ub;
+        pt[0] = ta;
+        pt[1] = tm;
+        pt[2] = tb;
         if (tm < t) {
             ua = m;
             ta = tm;
