@@ -46,7 +46,7 @@ typedef struct hyst_poly {
  * HYST_CURVE_POLY_INV evaluates g^-1 by at most 2 HYST_INV_MAX_ITER
  * bisections of a tabulated bracket, each one evaluation of f0 (together the
  * multiply-adds of HYST_INV_MAX_ITER evaluations of f0 and f0'), and at most
- * nine divisions. g^-1 is non-decreasing in its argument.
+ * ten divisions. g^-1 is non-decreasing in its argument.
  * See docs/pi_and_inverse.md for the measured worst error.
  */
 #ifndef HYST_INV_MAX_ITER
@@ -278,7 +278,7 @@ HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t
  * Polynomial: one Horner evaluation, inline. Piecewise linear (either
  * direction): one binary search over the points, O(log n_points), one
  * division. Inverted polynomial: at most 2 HYST_INV_MAX_ITER evaluations
- * of f0 and nine divisions. Arguments slightly outside
+ * of f0 and ten divisions. Arguments slightly outside
  * [0, hi - lo] (rounding) are clamped by the out-of-line kinds.
  *
  * @param[in] curve prepared by a hyst_curve_* constructor.
