@@ -148,6 +148,52 @@ static int fit_leaf(leaf_t *q, const hyst_real_t pu[3], const hyst_real_t pt[3])
     return q->side;
 }
 
+/* Division-free early-stop precheck: G's parabola through the parent's
+ * points (0, 2h, 4h: the bracket pt[0], pt[2] and the third point to, on
+ * side `from`) predicts the new point pt[1] to REAL_EPS in u. */
+static int cubic_small(const hyst_real_t pt[3], int from, hyst_real_t to, hyst_real_t width)
+{
+    const hyst_real_t guess = from > 0 ? (3 * pt[0] + 6 * pt[2] - to) * HYST_REAL_C(0.125)
+                                       : (6 * pt[0] + 3 * pt[2] - to) * HYST_REAL_C(0.125);
+    return absr(pt[1] - guess) * width <= REAL_EPS * (pt[2] - pt[0]);
+}
+
+/* The early stop: the leaf's parabola u(t) predicts the parent's third
+ * point (uo, to) to 16 REAL_EPS; in the child its error is ~1/60 of that.
+ * q is left fitted if so, else side 0. */
+static int leaf_predicts(leaf_t *q, const hyst_real_t pu[3], const hyst_real_t pt[3],
+                         hyst_real_t uo, hyst_real_t to)
+{
+    if (fit_leaf(q, pu, pt) != 0) {
+        const hyst_real_t sg = (hyst_real_t)q->side * (to - q->t0);
+        const hyst_real_t far = q->u0 + (hyst_real_t)q->side * (sg * (q->c1 + q->c2 * sg));
+        if (absr(uo - far) <= 16 * REAL_EPS) {
+            return 1;
+        }
+    }
+    q->side = 0;
+    return 0;
+}
+
+/* The leaf's answer for t, in [ua, ub]: q if fitted (or fittable), else
+ * linear between the ends (ta, ua), (tb, ub). Each branch is chosen by the
+ * leaf alone and non-decreasing in t; NaN goes to ua. */
+static hyst_real_t leaf_value(leaf_t *q, const hyst_real_t pu[3], const hyst_real_t pt[3],
+                              hyst_real_t t, const hyst_real_t end[4])
+{
+    const hyst_real_t ua = end[0], ub = end[1], ta = end[2], tb = end[3];
+    hyst_real_t r = ua;
+    if (q->side != 0 || fit_leaf(q, pu, pt) != 0) {
+        const hyst_real_t s = pos(q->side > 0 ? t - q->t0 : q->t0 - t);
+        const hyst_real_t v = s * (q->c1 + q->c2 * s);
+        r = q->side > 0 ? q->u0 + v : q->u0 - v;
+    } else if (tb > ta) {
+        r = ua + pos(t - ta) * ((ub - ua) / (tb - ta));
+    }
+    r = r > ua ? r : ua;
+    return r < ub ? r : ub;
+}
+
 /* g^-1(e) is non-decreasing in e, for every e, however G rounds (finding 5:
  * Newton's answer was not; near a flat point it reversed by 1e-5 of the range).
  * Why: the answer comes from a decision tree. The knot cell j = floor(t),
@@ -168,7 +214,7 @@ static int fit_leaf(leaf_t *q, const hyst_real_t pu[3], const hyst_real_t pt[3])
 hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
 {
     const hyst_real_t t = e * c->knot_scale;
-    hyst_real_t ua, ub, ta, tb, uo = 0, to = 0, r, pu[3], pt[3];
+    hyst_real_t ua, ub, ta, tb, uo = 0, to = 0, r, pu[3], pt[3], end[4];
     leaf_t q;
     unsigned j, lv, tries = 0u;
     int from = 0; /* side of the parent's third point (uo, to), 0: none */
@@ -204,24 +250,10 @@ hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
         pt[0] = ta;
         pt[1] = tm;
         pt[2] = tb;
-        if (from != 0 && tries < 2u && tb > ta) {
-            /* G's parabola through the parent's points (0, 2h, 4h) at m, no
-             * division: first a cheap sign (to REAL_EPS in u) that the cubic
-             * term is small here */
-            const hyst_real_t guess = from > 0 ? (3 * ta + 6 * tb - to) * HYST_REAL_C(0.125)
-                                               : (6 * ta + 3 * tb - to) * HYST_REAL_C(0.125);
-            if (absr(tm - guess) * (ub - ua) <= REAL_EPS * (tb - ta)) {
-                /* then the leaf's parabola u(t) must predict the parent's
-                 * third point to 16 eps: its error in the child is ~1/60 of
-                 * that. At most twice: the divisions stay bounded. */
-                ++tries;
-                if (fit_leaf(&q, pu, pt) != 0) {
-                    const hyst_real_t sg = (hyst_real_t)q.side * (to - q.t0);
-                    const hyst_real_t far = q.u0 + (hyst_real_t)q.side * (sg * (q.c1 + q.c2 * sg));
-                    stop = absr(uo - far) <= 16 * REAL_EPS;
-                }
-                q.side = stop ? q.side : 0;
-            }
+        /* at most twice: the divisions stay bounded */
+        if (from != 0 && tries < 2u && tb > ta && cubic_small(pt, from, to, ub - ua)) {
+            ++tries;
+            stop = leaf_predicts(&q, pu, pt, uo, to);
         }
         if (tm < t) {
             uo = ua;
@@ -240,15 +272,10 @@ hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
             break;
         }
     }
-    r = ua;
-    if (q.side != 0 || fit_leaf(&q, pu, pt) != 0) {
-        const hyst_real_t s = pos(q.side > 0 ? t - q.t0 : q.t0 - t);
-        const hyst_real_t v = s * (q.c1 + q.c2 * s);
-        r = q.side > 0 ? q.u0 + v : q.u0 - v;
-    } else if (tb > ta) { /* linear in the leaf */
-        r = ua + pos(t - ta) * ((ub - ua) / (tb - ta));
-    }
-    r = r > ua ? r : ua; /* in the leaf (NaN to ua): monotone across leaves */
-    r = r < ub ? r : ub;
+    end[0] = ua; /* in the leaf: monotone across leaves */
+    end[1] = ub;
+    end[2] = ta;
+    end[3] = tb;
+    r = leaf_value(&q, pu, pt, t, end);
     return r * c->span;
 }
