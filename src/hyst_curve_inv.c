@@ -149,13 +149,14 @@ static int fit_leaf(leaf_t *q, const hyst_real_t pu[3], const hyst_real_t pt[3])
 }
 
 /* Division-free early-stop precheck: G's parabola through the parent's
- * points (0, 2h, 4h: the bracket pt[0], pt[2] and the third point to, on
- * side `from`) predicts the new point pt[1] to REAL_EPS in u. */
-static int cubic_small(const hyst_real_t pt[3], int from, hyst_real_t to, hyst_real_t width)
+ * points (0, 2h, 4h: the bracket's ta, tb and the third point to, on side
+ * `from`) predicts the new point tm to REAL_EPS in u. */
+static int cubic_small(hyst_real_t ta, hyst_real_t tm, hyst_real_t tb, int from, hyst_real_t to,
+                       hyst_real_t width)
 {
-    const hyst_real_t guess = from > 0 ? (3 * pt[0] + 6 * pt[2] - to) * HYST_REAL_C(0.125)
-                                       : (6 * pt[0] + 3 * pt[2] - to) * HYST_REAL_C(0.125);
-    return absr(pt[1] - guess) * width <= REAL_EPS * (pt[2] - pt[0]);
+    const hyst_real_t guess = from > 0 ? (3 * ta + 6 * tb - to) * HYST_REAL_C(0.125)
+                                       : (6 * ta + 3 * tb - to) * HYST_REAL_C(0.125);
+    return absr(tm - guess) * width <= REAL_EPS * (tb - ta);
 }
 
 /* The early stop: the leaf's parabola u(t) predicts the parent's third
@@ -230,12 +231,6 @@ hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
     ta = (hyst_real_t)j; /* G K / R at the knots, by construction */
     tb = (hyst_real_t)(j + 1u);
     q.side = 0;
-    pu[0] = ua; /* no split yet: h1 = 0, linear leaf */
-    pu[1] = ua;
-    pu[2] = ub;
-    pt[0] = ta;
-    pt[1] = ta;
-    pt[2] = tb;
     for (lv = 0u; lv < LEVELS; ++lv) {
         const hyst_real_t m = (ua + ub) * HYST_REAL_C(0.5);
         hyst_real_t tm;
@@ -244,14 +239,15 @@ hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
             break; /* no real between: the leaf */
         }
         tm = real_g(c, m) * c->knot_scale;
-        pu[0] = ua; /* the last split's three points, for the leaf */
-        pu[1] = m;
-        pu[2] = ub;
-        pt[0] = ta;
-        pt[1] = tm;
-        pt[2] = tb;
-        /* at most twice: the divisions stay bounded */
-        if (from != 0 && tries < 2u && tb > ta && cubic_small(pt, from, to, ub - ua)) {
+        /* on odd levels (half the cost where it fails, near flat points)
+         * and at most twice (the divisions stay bounded) */
+        if ((lv & 1u) != 0u && tries < 2u && tb > ta && cubic_small(ta, tm, tb, from, to, ub - ua)) {
+            pu[0] = ua;
+            pu[1] = m;
+            pu[2] = ub;
+            pt[0] = ta;
+            pt[1] = tm;
+            pt[2] = tb;
             ++tries;
             stop = leaf_predicts(&q, pu, pt, uo, to);
         }
@@ -272,6 +268,14 @@ hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
             break;
         }
     }
+    /* the last split's three points: the leaf's ends and the third one
+     * (none if no split: h1 = 0 then, linear leaf) */
+    pu[0] = from < 0 ? uo : ua;
+    pu[1] = from < 0 ? ua : (from > 0 ? ub : ua);
+    pu[2] = from > 0 ? uo : ub;
+    pt[0] = from < 0 ? to : ta;
+    pt[1] = from < 0 ? ta : (from > 0 ? tb : ta);
+    pt[2] = from > 0 ? to : tb;
     end[0] = ua; /* in the leaf: monotone across leaves */
     end[1] = ub;
     end[2] = ta;
