@@ -13,7 +13,7 @@
  *   (a) open loop, by a plain linear scaling from displacement to voltage;
  *   (b) through the inverse TCM on that piecewise-linear f0 (exact inverse);
  *   (c) through the inverse TCM on a cubic f0 fitted by hyst_ident to two
- *       full-range triangle cycles of the plant (Newton inverse).
+ *       full-range triangle cycles of the plant (polynomial inverse).
  * Prints the RMS and maximum tracking errors and the ratios to (a); exits
  * non-zero unless (b) and (c) beat (a) on both. Host and QEMU. */
 #include "hyst/hyst.h"

@@ -733,7 +733,7 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
     hyst_curve_t cf, ci, back;
     hyst_status_t exp, st, cst;
     size_t cap;
-    double R, tol, M, rel;
+    double R, tol, M, rel, prev_d = 0.0;
     int run_ok, flat;
     unsigned ops, j;
 
@@ -767,26 +767,21 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
     M = fmax(fabs(f.lo), fabs(f.hi));
     /* g(g^-1(e)) = e: the issue's 1e-9 of the range, plus the drive's
      * rounding (8 eps M) times the steepest slope and Horner's bound (raw
-     * curves can be badly scaled).
-     * FINDING (docs/reliability.md, fuzz/corpus_models/regress_inverse_flat_point):
-     * near a flat point (f0' below 1% of its mean slope somewhere on the
-     * domain) g^-1 is steep and HYST_INV_MAX_ITER = 12 bracketed Newton
-     * steps do not reach 1e-9: x^3 on [-1, 1.875] gives 3.9e-9 of the range
-     * in the curve residual. docs/pi_and_inverse.md documents this class and
-     * its measured worst case (7.1e-8 of the range, x^3 on [-0.7, 1]); there
-     * the harness holds g(g^-1(e)) to that documented 1e-7 instead, and a
-     * larger error is a failure. Everywhere else 1e-9 stays required. */
+     * curves can be badly scaled). Flat points (f0' below 1% of its mean
+     * slope somewhere) are held to the same bound since finding 5's fix
+     * (docs/reliability.md; regress_inverse_flat_point gave 3.9e-9 of the
+     * range with Newton); the flag only names the check. */
     rel = min_rel_slope(&f, R);
     flat = !(rel >= 1e-2);
     tol = 1e-9 * R + 8.0 * EPS * M * slope_bound(&f) + 4.0 * horner_bound(&f);
-    if (flat) tol += 1e-7 * R;
     /* A range within 1/eps of the subnormals has no relative accuracy left
      * (raw curves only): init and the structural checks above suffice. */
     if (!isfinite(tol) || !(R >= DBL_MIN / EPS)) return;
-    /* Within 64 (n + 1) of DBL_MAX, G'(u) overflows in the Newton step, which
-     * then falls back to 12 bisections (4e-4 of the range measured on
-     * regress_inverse_knot_overflow, R = 5.3e307): raw curves only, noted in
-     * docs/reliability.md, not checked. */
+    /* Within 64 (n + 1) of DBL_MAX, Horner's partial sums of G can overflow
+     * (the Newton solver before finding 5's fix lost G' there: 4e-4 of the
+     * range on regress_inverse_knot_overflow, R = 5.3e307); an infinite G(m)
+     * sends the bisection left. Raw curves only, noted in
+     * docs/reliability.md; only the bound below is checked. */
     if (!isfinite(R * 64.0 * (double)(f.degree + 1u))) {
         /* What is still guaranteed there: the knot table brackets e within
          * one of HYST_INV_KNOTS equal slices of the range, and the answer
@@ -795,7 +790,8 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         for (j = 0; j <= 64u; ++j) {
             const double e = R * ((double)j / 64.0);
             const double d = hyst_curve_g(&ci, e), g = hyst_curve_g(&cf, d);
-            CHECK(d >= 0.0 && d <= cf.hi - cf.lo);
+            CHECK(d >= 0.0 && d <= cf.hi - cf.lo && d >= prev_d); /* monotone here too */
+            prev_d = d;
             if (isfinite(g)) CLOSE("poly_inv_near_dbl_max", fabs(g - e), R / HYST_INV_KNOTS * (1.0 + 1e-9));
         }
         return;
@@ -804,6 +800,10 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         const double e = R * ((double)j / 64.0); /* no overflow near DBL_MAX */
         const double d = hyst_curve_g(&ci, e);
         CHECK(d >= 0.0 && d <= cf.hi - cf.lo);
+        /* g^-1 non-decreasing (finding 5): grid and neighbouring doubles */
+        CHECK(d >= prev_d && hyst_curve_g(&ci, nextafter(e, -INFINITY)) <= d &&
+              hyst_curve_g(&ci, nextafter(e, INFINITY)) >= d);
+        prev_d = d;
         CHECK(hyst_curve_g_unit_other(&ci, e) == d);
         CLOSE(flat ? "poly_inv_curve_flat" : "poly_inv_curve_round_trip", fabs(hyst_curve_g(&cf, d) - e), tol);
         CLOSE("poly_inv_of_inv", fabs(hyst_curve_g(&back, d) - hyst_curve_g(&cf, d)), 4.0 * EPS * R + horner_bound(&f));
@@ -834,18 +834,11 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
             {
                 const double yf = hyst_step(&T.S, xd);
                 if (hyst_status(&T.S) == HYST_WARN_FULL) run_ok = 0;
-                /* H(H^-1(yd)) = clamp(yd); per-TP bound as above.
-                 * FINDING (docs/reliability.md, regress_inverse_flat_reversal):
-                 * near a flat point g^-1 is not monotone (Newton stops on
-                 * the residual |G(u) - e|, tiny there, not on the bracket
-                 * width): on x^3 on [-1, 1], yd rising 8e-281 -> 4.7e-10
-                 * gives drives +3.9e-6 -> -3.8e-6. The forward model sees a
-                 * false reversal, falls from it along the steep part of f0
-                 * (slope 3 at lo) and misses yd by 2.3e-5 (1.2e-5 of the
-                 * range). So the issue's round trip is not checked on flat
-                 * curves until the inverse owner makes g^-1 monotone; the
-                 * curve-level residual above still is. */
-                if (run_ok && !flat) {
+                /* H(H^-1(yd)) = clamp(yd); per-TP bound as above, on flat
+                 * curves too: g^-1 is monotone since finding 5's fix (before,
+                 * regress_inverse_flat_reversal reversed the drive and the
+                 * model missed yd by 1.2e-5 of the range). */
+                if (run_ok) {
                     const double depth = (double)hyst_tp_count(&T.S) + 2.0;
                     CLOSE("poly_inv_tcm_round_trip", fabs(yf - clampd(yd, cf.y_lo, cf.y_hi)), depth * tol);
                 }

@@ -12,7 +12,7 @@ hyst_real_t hyst_pwl_eval_(const hyst_curve_t *curve, hyst_real_t x);
  * if the values are not strictly increasing. */
 hyst_status_t hyst_pwl_inverse_(hyst_curve_t *inv, const hyst_curve_t *fwd);
 
-/* POLY_INV: g^-1(e), bracketed Newton, at most HYST_INV_MAX_ITER steps. */
+/* POLY_INV: g^-1(e), monotone, <= 2 HYST_INV_MAX_ITER bisections of G. */
 hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *curve, hyst_real_t e);
 
 #endif

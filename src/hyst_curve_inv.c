@@ -3,12 +3,12 @@
  * Polynomial f0: g(d) = G(d / span) with G(u) = u (a[0] u^(n-1) + ... + a[n-1])
  * on u in [0, 1], G(0) = 0, G(1) = R = f0(hi) - f0(lo). g^-1(e) solves G(u) = e:
  *  1. start: G^-1 is tabulated at init at e_k = k R / K (K = HYST_INV_KNOTS),
- *     so e in [e_j, e_j+1] gives the bracket [u_j, u_j+1] and a linear start;
- *  2. at most HYST_INV_MAX_ITER steps, each one evaluation of G and G':
- *     Newton while it stays in the bracket and its step is less than half
- *     the step before last, else bisection (the rule of Numerical Recipes'
- *     rtsafe). The bracket shrinks around the root at every step; near a
- *     flat point of f0, where Newton crawls or cycles, bisection halves it. */
+ *     so e in [e_j, e_j+1] gives the bracket [u_j, u_j+1];
+ *  2. at most 2 HYST_INV_MAX_ITER bisections of it, each one evaluation of
+ *     G, fewer once a parabola fits to rounding;
+ *  3. inverse quadratic interpolation in the last bracket.
+ * Bisection, not Newton: its answer is monotone in e (proof at
+ * hyst_poly_inv_g_), and a flat point of f0 (G' = 0) costs it nothing. */
 #include "hyst_curve_impl.h"
 
 /* G(u) in hyst_wide_t, from the coefficients the samples will use. */
@@ -91,20 +91,134 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
     return HYST_OK;
 }
 
-/* A Newton step is taken only if at most 1/NEWTON_RATIO of the step before last. */
-#define NEWTON_RATIO 4
+/* Bisection levels per sample, at most: two per HYST_INV_MAX_ITER, each one
+ * evaluation of G, as many multiply-adds as a Newton step's G and G'. */
+#define LEVELS (2u * (unsigned)(HYST_INV_MAX_ITER))
 
-/* Relative step below which Newton has converged to rounding. */
-#define STEP_EPS ((hyst_real_t)(sizeof(hyst_real_t) >= 8u ? 2.3e-16 : 1.2e-7))
+/* Rounding unit of hyst_real_t: the early stop's target in u. */
+#define REAL_EPS ((hyst_real_t)(sizeof(hyst_real_t) >= 8u ? 2.2e-16 : 1.2e-7))
+
+/* G(u) in hyst_real_t, as the samples see it. */
+static hyst_real_t real_g(const hyst_curve_t *c, hyst_real_t u)
+{
+    hyst_real_t acc = c->a[0];
+    unsigned i;
+    for (i = 1u; i < c->degree; ++i) {
+        acc = acc * u + c->a[i];
+    }
+    return acc * u;
+}
+
+static hyst_real_t pos(hyst_real_t v) { return v > 0 ? v : 0; }
 
 static hyst_real_t absr(hyst_real_t v) { return v < 0 ? -v : v; }
 
+/* u(t) = u0 + side s (c1 + c2 s), s = max(0, side (t - t0)), c1, c2 >= 0:
+ * every rounded operation is monotone, so u is non-decreasing in t. */
+typedef struct {
+    hyst_real_t u0, t0, c1, c2;
+    int side; /* +1: from the left point, -1: from the right, 0: none */
+} leaf_t;
+
+/* The quadratic u(t) through three points, in the form above if its
+ * coefficients allow (u' >= 0 at the end it is written from); else side 0.
+ * Noise near a flat point or an overflow (NaN fails every test) give 0. */
+static int fit_leaf(leaf_t *q, const hyst_real_t pu[3], const hyst_real_t pt[3])
+{
+    const hyst_real_t h1 = pt[1] - pt[0], h2 = pt[2] - pt[1];
+    q->side = 0;
+    if (h1 > 0 && h2 > 0) {
+        const hyst_real_t d1 = (pu[1] - pu[0]) / h1, d2 = (pu[2] - pu[1]) / h2;
+        const hyst_real_t cc = (d2 - d1) / (pt[2] - pt[0]);
+        const hyst_real_t left = d1 - cc * h1, right = d2 + cc * h2; /* u' at t0, t2 */
+        if (cc >= 0 && left >= 0) {
+            q->u0 = pu[0];
+            q->t0 = pt[0];
+            q->c1 = left;
+            q->c2 = cc;
+            q->side = 1;
+        } else if (cc < 0 && right >= 0) {
+            q->u0 = pu[2];
+            q->t0 = pt[2];
+            q->c1 = right;
+            q->c2 = -cc;
+            q->side = -1;
+        }
+    }
+    return q->side;
+}
+
+/* Division-free early-stop precheck: G's parabola through the parent's
+ * points (0, 2h, 4h: the bracket's ta, tb and the third point to, on side
+ * `from`) predicts the new point tm to REAL_EPS in u. */
+static int cubic_small(hyst_real_t ta, hyst_real_t tm, hyst_real_t tb, int from, hyst_real_t to,
+                       hyst_real_t width)
+{
+    const hyst_real_t guess = from > 0 ? (3 * ta + 6 * tb - to) * HYST_REAL_C(0.125)
+                                       : (6 * ta + 3 * tb - to) * HYST_REAL_C(0.125);
+    return absr(tm - guess) * width <= REAL_EPS * (tb - ta);
+}
+
+/* The early stop: the leaf's parabola u(t) predicts the parent's third
+ * point (uo, to) to 16 REAL_EPS; in the child its error is ~1/60 of that.
+ * q is left fitted if so, else side 0. */
+static int leaf_predicts(leaf_t *q, const hyst_real_t pu[3], const hyst_real_t pt[3],
+                         hyst_real_t uo, hyst_real_t to)
+{
+    if (fit_leaf(q, pu, pt) != 0) {
+        const hyst_real_t sg = (hyst_real_t)q->side * (to - q->t0);
+        const hyst_real_t far = q->u0 + (hyst_real_t)q->side * (sg * (q->c1 + q->c2 * sg));
+        if (absr(uo - far) <= 16 * REAL_EPS) {
+            return 1;
+        }
+    }
+    q->side = 0;
+    return 0;
+}
+
+/* The leaf's answer for t, in [ua, ub]: q if fitted (or fittable), else
+ * linear between the ends (ta, ua), (tb, ub). Each branch is chosen by the
+ * leaf alone and non-decreasing in t; NaN goes to ua. */
+static hyst_real_t leaf_value(leaf_t *q, const hyst_real_t pu[3], const hyst_real_t pt[3],
+                              hyst_real_t t, const hyst_real_t end[4])
+{
+    const hyst_real_t ua = end[0], ub = end[1], ta = end[2], tb = end[3];
+    hyst_real_t r = ua;
+    if (q->side != 0 || fit_leaf(q, pu, pt) != 0) {
+        const hyst_real_t s = pos(q->side > 0 ? t - q->t0 : q->t0 - t);
+        const hyst_real_t v = s * (q->c1 + q->c2 * s);
+        r = q->side > 0 ? q->u0 + v : q->u0 - v;
+    } else if (tb > ta) {
+        r = ua + pos(t - ta) * ((ub - ua) / (tb - ta));
+    }
+    r = r > ua ? r : ua;
+    return r < ub ? r : ub;
+}
+
+/* g^-1(e) is non-decreasing in e, for every e, however G rounds (finding 5:
+ * Newton's answer was not; near a flat point it reversed by 1e-5 of the range).
+ * Why: the answer comes from a decision tree. The knot cell j = floor(t),
+ * t = e K / R, is non-decreasing in e and the cells are ordered (knot_u is).
+ * In the cell every split point m = (a + b) / 2 depends on the path so far,
+ * not on e, and each decision "tm < t" (tm = G(m) K / R) is monotone in e, as
+ * rounding is. For e1 < e2 both paths agree up to the first split where they
+ * differ; there e1 goes left and e2 right (the reverse needs tm < t1 and
+ * t2 <= tm), and each answer stays in its own half: g^-1(e1) <= m <= g^-1(e2).
+ * If they never differ, both end in the same leaf, whose function of t is
+ * non-decreasing (leaf_t). Where the descent stops is also decided by the
+ * path alone. (A Newton point depends on e itself: two e could stop on noisy
+ * points on either side of each other.)
+ * Accuracy: halvings of the knot cell, then inverse quadratic interpolation
+ * through the last split's three points (error ~ width^3). The descent stops
+ * early once that parabola predicts the parent's third point to 16 REAL_EPS
+ * in u: in the leaf, at a quarter of the distance, it is ~60 times closer. */
 hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
 {
-    const hyst_real_t *a = c->a;
     const hyst_real_t t = e * c->knot_scale;
-    hyst_real_t ua, ub, u, dx, dx_old, best_f, best_u;
-    unsigned j, i, it;
+    hyst_real_t ua, ub, ta, tb, uo = 0, to = 0, r, pu[3], pt[3], end[4];
+    leaf_t q;
+    unsigned j, lv, tries = 0u;
+    int from = 0; /* side of the parent's third point (uo, to), 0: none */
     if (!(t > 0)) {
         return 0; /* g^-1(0) = 0 exactly; rounding below 0 clamped */
     }
@@ -114,50 +228,58 @@ hyst_real_t hyst_poly_inv_g_(const hyst_curve_t *c, hyst_real_t e)
     j = (unsigned)t;
     ua = c->knot_u[j];
     ub = c->knot_u[j + 1u];
-    u = ua + (ub - ua) * (t - (hyst_real_t)j); /* secant of the table */
-    dx = ub - ua;
-    dx_old = dx;
-    best_u = u;
-    best_f = -1; /* none yet */
-    for (it = 0u; it < HYST_INV_MAX_ITER; ++it) {
-        hyst_real_t p = a[0], dp = 0, f, df, next;
-        int newton;
-        for (i = 1u; i < c->degree; ++i) {
-            dp = dp * u + p;
-            p = p * u + a[i];
+    ta = (hyst_real_t)j; /* G K / R at the knots, by construction */
+    tb = (hyst_real_t)(j + 1u);
+    q.side = 0;
+    for (lv = 0u; lv < LEVELS; ++lv) {
+        const hyst_real_t m = (ua + ub) * HYST_REAL_C(0.5);
+        hyst_real_t tm;
+        int stop = 0;
+        if (!(m > ua && m < ub)) {
+            break; /* no real between: the leaf */
         }
-        f = p * u - e;   /* G(u) - e */
-        df = p + u * dp; /* G'(u) */
-        if (f < 0) {
-            ua = u;
+        tm = real_g(c, m) * c->knot_scale;
+        /* on odd levels (half the cost where it fails, near flat points)
+         * and at most twice (the divisions stay bounded) */
+        if ((lv & 1u) != 0u && tries < 2u && tb > ta && cubic_small(ta, tm, tb, from, to, ub - ua)) {
+            pu[0] = ua;
+            pu[1] = m;
+            pu[2] = ub;
+            pt[0] = ta;
+            pt[1] = tm;
+            pt[2] = tb;
+            ++tries;
+            stop = leaf_predicts(&q, pu, pt, uo, to);
+        }
+        if (tm < t) {
+            uo = ua;
+            to = ta;
+            from = -1; /* the third point is left of the new bracket */
+            ua = m;
+            ta = tm;
         } else {
-            ub = u;
+            uo = ub;
+            to = tb;
+            from = 1;
+            ub = m;
+            tb = tm;
         }
-        /* Newton if it stays in the bracket and its step is at most 1/4 of
-         * the step before last (two steps beat two bisections); else bisect.
-         * Near a flat point of order m Newton only crawls, by (m-1)/m per
-         * step, while bisection shrinks the residual by about 2^m. */
-        next = df > 0 ? u - f / df : u; /* no division by a zero slope */
-        newton = df > 0 && next >= ua && next <= ub &&
-                 absr(f) * (hyst_real_t)NEWTON_RATIO <= absr(dx_old) * df;
-        if (best_f < 0 || absr(f) < best_f) { /* the answer: the best point */
-            best_f = absr(f);                 /* evaluated, never a guess */
-            best_u = u;
-        }
-        if (f == 0 || (newton && absr(f) <= STEP_EPS * absr(u) * df)) {
-            break; /* converged to rounding */
-        }
-        dx_old = dx;
-        if (newton) {
-            dx = f / df;
-        } else {
-            dx = (ub - ua) * HYST_REAL_C(0.5);
-            next = ua + dx;
-        }
-        if (next == u) {
+        if (stop) {
             break;
         }
-        u = next;
     }
-    return best_u * c->span;
+    /* the last split's three points: the leaf's ends and the third one
+     * (none if no split: h1 = 0 then, linear leaf) */
+    pu[0] = from < 0 ? uo : ua;
+    pu[1] = from < 0 ? ua : (from > 0 ? ub : ua);
+    pu[2] = from > 0 ? uo : ub;
+    pt[0] = from < 0 ? to : ta;
+    pt[1] = from < 0 ? ta : (from > 0 ? tb : ta);
+    pt[2] = from > 0 ? to : tb;
+    end[0] = ua; /* in the leaf: monotone across leaves */
+    end[1] = ub;
+    end[2] = ta;
+    end[3] = tb;
+    r = leaf_value(&q, pu, pt, t, end);
+    return r * c->span;
 }

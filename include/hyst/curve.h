@@ -41,11 +41,12 @@ typedef struct hyst_poly {
 } hyst_poly_t;
 
 /**
- * @brief Newton iterations per sample of an inverted polynomial (bound).
+ * @brief Work per sample of an inverted polynomial (bound).
  *
- * HYST_CURVE_POLY_INV evaluates g^-1 by a bracketed Newton iteration that
- * stops after at most this many steps: the worst-case time per sample is
- * HYST_INV_MAX_ITER evaluations of f0 and f0' plus one division each.
+ * HYST_CURVE_POLY_INV evaluates g^-1 by at most 2 HYST_INV_MAX_ITER
+ * bisections of a tabulated bracket, each one evaluation of f0 (together the
+ * multiply-adds of HYST_INV_MAX_ITER evaluations of f0 and f0'), and at most
+ * ten divisions. g^-1 is non-decreasing in its argument.
  * See docs/pi_and_inverse.md for the measured worst error.
  */
 #ifndef HYST_INV_MAX_ITER
@@ -156,7 +157,7 @@ hyst_status_t hyst_curve_from_pwl(hyst_curve_t *curve, const hyst_real_t *x,
  * its input is the desired output on [f0(lo), f0(hi)], its output the input
  * that produces it. The engine clamps desired outputs outside that range and
  * reports HYST_WARN_CLAMPED.
- *  - polynomial: g^-1 by bracketed Newton, at most HYST_INV_MAX_ITER steps;
+ *  - polynomial: g^-1 by bisection, <= 2 HYST_INV_MAX_ITER steps, monotone;
  *  - piecewise linear: exact (the same points with the axes swapped; the
  *    inverse keeps pointing at the caller's arrays);
  *  - an inverse curve: gives back the forward curve.
@@ -276,8 +277,8 @@ HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t
  *
  * Polynomial: one Horner evaluation, inline. Piecewise linear (either
  * direction): one binary search over the points, O(log n_points), one
- * division. Inverted polynomial: at most HYST_INV_MAX_ITER evaluations of
- * f0 and f0' plus one division each. Arguments slightly outside
+ * division. Inverted polynomial: at most 2 HYST_INV_MAX_ITER evaluations
+ * of f0 and ten divisions. Arguments slightly outside
  * [0, hi - lo] (rounding) are clamped by the out-of-line kinds.
  *
  * @param[in] curve prepared by a hyst_curve_* constructor.

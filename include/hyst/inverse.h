@@ -32,7 +32,8 @@ extern "C" {
  *
  * hyst_curve_from_poly(), hyst_curve_inverse(), hyst_init_curve(), in this
  * order (a curve error is reported before an instance error). g^-1 costs
- * at most HYST_INV_MAX_ITER Newton steps per sample. For a curve of another
+ * at most 2 HYST_INV_MAX_ITER evaluations of f0 per sample, and the drive is
+ * non-decreasing in the desired output along a branch. For a curve of another
  * kind (piecewise linear, PI loading curve) call hyst_curve_inverse() and
  * hyst_init_curve() directly.
  *
