@@ -211,6 +211,13 @@ def main():
     put("pi10_min_insns", min(pi))
     put("tcm_typical_over_pi10", "%.3f" % (typ / float(max(pi))))
     put("tcm_worst_over_pi10", "%.3f" % (worst["insns"] / float(max(pi))))
+    # Bounded memory, 32-entry arrays (bench_bounded() in bench_target.c):
+    # k = 0 without, k = 1 with a 4-code deadband.
+    for db, tag in ((0, "bounded"), (1, "bounded_db4")):
+        for kind in ("plain", "detour", "merge"):
+            got = [r["insns"] for r in b if r["kind"] == "bnd_" + kind and r["k"] == db]
+            if got:
+                put("tcm_%s_%s_insns" % (tag, kind), max(got))
     put("tcm_linear_worst_insns_nu4096", lin_worst["insns"])
     put("tcm_linear_worst_m_nu4096", lin_worst["m"])
     put("tcm_linear_fit_insns_per_p", "%.2f" % la)

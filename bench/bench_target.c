@@ -21,6 +21,8 @@
  * (every survivor count k at the largest m), BENCH_PI (PI-10 pulses),
  * BENCH_OFFSET (codes shifted by this much, e.g. -2048: a domain across
  * zero, whose searches take both ladders of the keyed search),
+ * BENCH_BOUNDED (bounded memory: every sample of a nesting random signal
+ * through 32-entry arrays, with and without a deadband),
  * HYST_USE_LINEAR_SEARCH (engine variant, changes the p model).
  */
 #include "hyst/hyst.h"
@@ -41,6 +43,9 @@
 #endif
 #ifndef BENCH_OFFSET
 #define BENCH_OFFSET 0
+#endif
+#ifndef BENCH_BOUNDED
+#define BENCH_BOUNDED 1
 #endif
 
 /* Keeps GCC from specialising the timed wrappers per callee: the wrapper's
@@ -321,6 +326,56 @@ static void bench_tcm(void)
     }
 }
 
+#if BENCH_BOUNDED
+/* Bounded memory (docs/memory.md), 32 entries per array on the 12-bit
+ * codes: a random walk with nesting zigzags times every sample, labelled
+ * "bnd_merge" (it merged a loop: status HYST_WARN_FULL), "bnd_detour" (a
+ * merge or a deadband excursion was alive, hyst_error_bound() > 0: the slow
+ * path with its bookkeeping) or "bnd_plain". m = TPs, k = deadband on. */
+#define BND_CAP 32u
+#define BND_SAMPLES 2000u
+
+static void bench_bounded(hyst_real_t deadband)
+{
+    static hyst_real_t xl[BND_CAP], yl[BND_CAP], xr[BND_CAP], yr[BND_CAP];
+    static hyst_t S;
+    hyst_poly_t f0;
+    unsigned t, lcg = 777u, zig = 0u;
+    long x = 2048, amp = 0, centre = 0, dx = 8;
+    bench_f0_codes(&f0, (double)BENCH_OFFSET);
+    if (hyst_init(&S, &f0, xl, yl, xr, yr, BND_CAP) != HYST_OK ||
+        hyst_set_deadband(&S, deadband) != HYST_OK) {
+        failures |= 128;
+        return;
+    }
+    for (t = 0u; t < BND_SAMPLES; ++t) {
+        const int alive = hyst_error_bound(&S) > 0;
+        lcg = lcg * 1664525u + 1013904223u;
+        if (zig > 0u) { /* nested loops: each swing smaller */
+            x = centre + ((zig & 1u) ? amp : -amp);
+            amp = amp * 15 / 16;
+            --zig;
+        } else if ((lcg >> 26) == 0u) {
+            zig = 80u;
+            centre = 1024 + (long)((lcg >> 8) % 2048u);
+            amp = 300 + (long)((lcg >> 12) % 600u);
+        } else {
+            if ((lcg >> 28) < 3u) {
+                dx = -dx;
+            }
+            x += dx + (long)((lcg >> 16) % 5u) - 2;
+        }
+        x = x < 0 ? 0 : (x > (long)NU - 1 ? (long)NU - 1 : x);
+        timed_tcm(hyst_step, &S, CODE((unsigned long)x));
+        record(hyst_status(&S) == HYST_WARN_FULL ? "bnd_merge" : alive ? "bnd_detour" : "bnd_plain",
+               (unsigned)hyst_tp_count(&S), deadband > 0 ? 1u : 0u, 0u);
+    }
+    if ((hyst_events(&S) & HYST_EVENT_FULL) == 0u) {
+        failures |= 256; /* the signal must overflow the arrays */
+    }
+}
+#endif
+
 #if BENCH_PI
 BENCH_TIMED(pi, hyst_pi_t)
 
@@ -400,6 +455,10 @@ int main(void)
     unsigned r;
     hyst_port_init();
     bench_tcm();
+#if BENCH_BOUNDED
+    bench_bounded(HYST_REAL_C(0.0));
+    bench_bounded(HYST_REAL_C(4.0)); /* a 4-code deadband */
+#endif
 #if BENCH_PI
     bench_pi();
 #endif
