@@ -23,12 +23,24 @@
  * zero, whose searches take both ladders of the keyed search),
  * BENCH_BOUNDED (bounded memory: every sample of a nesting random signal
  * through 32-entry arrays, with and without a deadband),
- * HYST_USE_LINEAR_SEARCH (engine variant, changes the p model).
+ * BENCH_LINEAR (the engine with a linear scan, bench/linear_engine.c:
+ * changes the p model).
  */
 #include "hyst/hyst.h"
 #include "hyst/pi.h"
 #include "hyst_port.h"
 #include "bench_models.h"
+
+#ifdef BENCH_LINEAR
+/* The same firmware on the linear-scan engine (bench/linear_engine.c). */
+float bench_lin_step(hyst_tcm_t *S, float x);
+hyst_status_t bench_lin_init_(hyst_tcm_t *S, const hyst_poly_t *f0, float *xltp, float *yltp,
+                              float *xrtp, float *yrtp, size_t capacity, unsigned long layout);
+#undef hyst_step
+#define hyst_step bench_lin_step
+#undef HYST_INIT
+#define HYST_INIT(name, f0) bench_lin_init_(&(name), (f0), HYST_ARRAYS_(name), HYST_LAYOUT)
+#endif
 
 #include <stdio.h>
 
@@ -119,7 +131,7 @@ static void record(const char *kind, unsigned m, unsigned k, unsigned p)
  * first k satisfy the predicate (the arrays are sorted). */
 static unsigned search_probes(unsigned n, unsigned k)
 {
-#ifdef HYST_USE_LINEAR_SEARCH
+#ifdef BENCH_LINEAR
     return (n - k) + (k > 0u ? 1u : 0u);
 #else
     unsigned left = 0u, p = 0u;
@@ -478,7 +490,7 @@ int main(void)
     out_kv("sizeof_hyst_t", sizeof(hyst_t));
     out_kv("sizeof_real", sizeof(hyst_real_t));
     out_kv("offset_neg", (unsigned long)(BENCH_OFFSET < 0 ? -(BENCH_OFFSET) : 0));
-#ifdef HYST_USE_LINEAR_SEARCH
+#ifdef BENCH_LINEAR
     out_kv("linear_search", 1u);
 #else
     out_kv("linear_search", 0u);

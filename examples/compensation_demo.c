@@ -31,7 +31,7 @@
 static hyst_real_t plant_r[N_OPS], plant_w[N_OPS], plant_z[N_OPS];
 static hyst_pi_t plant;
 static hyst_real_t id_x[N_ID], id_y[N_ID]; /* kept by the curves: static */
-HYST_DEFINE(comp, DAC_CODES);
+HYST_DEFINE_INVERSE(comp, DAC_CODES);
 
 static double loading(double v)
 {

@@ -20,7 +20,7 @@
 #endif
 
 #define NU 4096u /* 12-bit DAC, the paper's sizing */
-HYST_DEFINE(model, NU);
+HYST_DEFINE_INVERSE(model, NU); /* model, then the compensator */
 
 static int failures;
 
@@ -113,7 +113,7 @@ static void example2(void)
     section("example2");
     check(hyst_pi_loading_curve(&f_pi, r, w, 10u, HYST_REAL_C(1.0), bx, by) == HYST_OK,
           "example2_curve");
-    range = (double)(f_pi.y_hi - f_pi.y_lo);
+    range = (double)(f_pi.y_hi.HYST_R - f_pi.y_lo.HYST_R);
     value("range", range);
     for (kind = 0; kind < SIG_KINDS; ++kind) {
         const long n = 20000;

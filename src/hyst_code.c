@@ -1,43 +1,58 @@
-/* The TCM engine over integer DAC codes: code range set-up, clamping, and
- * the shared engine (tcm_engine.inc) over hyst_code_word_t. */
+/* SPDX-License-Identifier: MIT */
+/* The code variant (hyst_code_*): integer DAC codes in, float out. The
+ * engine over hyst_code_word_t inputs; curves are f32 curves in user units,
+ * evaluated out of line by the f32 variant's copy. */
 #include "hyst/code.h"
 
+#include "num_f32.h"
+#include "num_ops.h"
+#include "hyst_util.h"
+
 /* Out of line: the common path is one compare. */
-static hyst_code_word_t clamp_slow(hyst_code_t *S, uint_least32_t code)
+static hyst_code_word_t hyst_code_clamp_slow(hyst_tcm_t *S, uint_least32_t code)
 {
     S->status = HYST_WARN_CLAMPED;
     S->events |= HYST_EVENT_CLAMPED;
-    return code < S->lo ? S->lo : S->hi;
+    return code < S->lo.code ? S->lo.code : S->hi.code;
 }
 
-static int tcm_admit(hyst_code_t *S, uint_least32_t code, hyst_code_word_t *out)
+static int hyst_code_admit(hyst_tcm_t *S, uint_least32_t code, hyst_code_word_t *out)
 {
-    *out = code >= S->lo && code <= S->hi ? (hyst_code_word_t)code : clamp_slow(S, code);
+    *out = code >= S->lo.code && code <= S->hi.code ? (hyst_code_word_t)code
+                                                    : hyst_code_clamp_slow(S, code);
     return 1;
 }
 
-#define TCM_S hyst_code_t
+#define TCM_NAME(n) hyst_code_##n
+#define TCM_VARIANT HYST_VARIANT_CODE
 #define TCM_X hyst_code_word_t
+#define TCM_XF code
+#define TCM_Y float
+#define TCM_YF f32
 #define TCM_ARG uint_least32_t
 #define TCM_IN hyst_code_word_t
-#define TCM_LO(S) ((S)->lo)
-#define TCM_HI(S) ((S)->hi)
-#define TCM_R(a) ((hyst_real_t)(a))
+#define TCM_R(a) ((float)(a))
 /* exact integer difference (a >= b), then one conversion */
-#define TCM_D(a, b) ((hyst_real_t)(uint_least32_t)((uint_least32_t)(a) - (uint_least32_t)(b)))
+#define TCM_D(a, b) ((float)(uint_least32_t)((uint_least32_t)(a) - (uint_least32_t)(b)))
 #define TCM_MID(a, b) ((hyst_code_word_t)((a) + ((b) - (a)) / 2u))
 #define TCM_NORM(a) (a)
-#include "tcm_engine.inc"
+#define TCM_ADMIT(S, x, out) hyst_code_admit((S), (x), (out))
+#define TCM_G_OTHER(c, d) hyst_f32_curve_g_other_((c), (d))
+#include "tcm_engine.h"
 
-hyst_status_t hyst_code_init_curve(hyst_code_t *S, const hyst_curve_t *curve,
-                                   uint_least32_t code_lo, uint_least32_t code_hi,
-                                   hyst_code_word_t *xltp, hyst_real_t *yltp,
-                                   hyst_code_word_t *xrtp, hyst_real_t *yrtp,
-                                   size_t capacity)
+hyst_status_t hyst_code_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve,
+                                    uint_least32_t code_lo, uint_least32_t code_hi,
+                                    hyst_code_word_t *xltp, float *yltp, hyst_code_word_t *xrtp,
+                                    float *yrtp, size_t capacity, unsigned long layout)
 {
-    const hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
-    if (curve == NULL) {
-        return HYST_ERR_NULL;
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity,
+                                         sizeof(hyst_code_word_t), sizeof(float), layout);
+    hyst_wide_t unit;
+    if (st == HYST_OK) {
+        st = hyst_curve_check(curve);
+    }
+    if (st == HYST_OK && curve->variant != (unsigned)HYST_VARIANT_F32) {
+        st = HYST_ERR_LAYOUT;
     }
     if (st != HYST_OK) {
         return st;
@@ -45,58 +60,65 @@ hyst_status_t hyst_code_init_curve(hyst_code_t *S, const hyst_curve_t *curve,
     if (!(code_lo < code_hi) || code_hi > HYST_CODE_MAX) {
         return HYST_ERR_DOMAIN;
     }
-    if (hyst_curve_check(curve) != HYST_OK) {
-        return HYST_ERR_ARG;
-    }
-    /* g takes d * inv_span (curve.h): a code difference is d in user units
-     * times (hi - lo) / (code_hi - code_lo), folded in once, for every kind. */
-    S->curve = *curve;
-    S->curve.inv_span = (hyst_real_t)((hyst_wide_t)curve->inv_span *
-                                      ((hyst_wide_t)curve->hi - (hyst_wide_t)curve->lo) /
-                                      (hyst_wide_t)(code_hi - code_lo));
-    S->lo = (hyst_code_word_t)code_lo;
-    S->hi = (hyst_code_word_t)code_hi;
-    tcm_attach(S, xltp, yltp, xrtp, yrtp, capacity);
+    /* G takes d * unit: a code difference is d in user units times
+     * (hi - lo) / (code_hi - code_lo), folded in once, for every kind. */
+    unit = (hyst_wide_t)curve->unit.f32 * ((hyst_wide_t)curve->hi.f32 - (hyst_wide_t)curve->lo.f32) /
+           (hyst_wide_t)(code_hi - code_lo);
+    hyst_code_attach(S, curve, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, (float)unit,
+                     xltp, yltp, xrtp, yrtp, capacity);
     return HYST_OK;
 }
 
-hyst_status_t hyst_code_init(hyst_code_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
-                             uint_least32_t code_hi, hyst_code_word_t *xltp,
-                             hyst_real_t *yltp, hyst_code_word_t *xrtp, hyst_real_t *yrtp,
-                             size_t capacity)
+hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
+                              uint_least32_t code_hi, hyst_code_word_t *xltp, float *yltp,
+                              hyst_code_word_t *xrtp, float *yrtp, size_t capacity,
+                              unsigned long layout)
 {
     hyst_curve_t curve;
-    hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity,
+                                         sizeof(hyst_code_word_t), sizeof(float), layout);
     if (st == HYST_OK) {
-        st = hyst_curve_from_poly(&curve, f0);
+        st = hyst_curve_poly_(&curve, f0, HYST_VARIANT_F32, layout);
     }
-    return st != HYST_OK ? st
-                         : hyst_code_init_curve(S, &curve, code_lo, code_hi, xltp, yltp, xrtp,
-                                                yrtp, capacity);
+    if (st == HYST_OK) {
+        st = hyst_code_init_curve_(S, &curve, code_lo, code_hi, xltp, yltp, xrtp, yrtp, capacity,
+                                   layout);
+    }
+    if (st == HYST_OK) {
+        S->curve = NULL; /* a polynomial is copied whole into the instance */
+    }
+    return st;
 }
 
-void hyst_code_reset(hyst_code_t *S) { tcm_reset(S); }
-
-hyst_status_t hyst_code_set_deadband(hyst_code_t *S, uint_least32_t codes)
+hyst_status_t hyst_code_set_deadband(hyst_tcm_t *S, uint_least32_t codes)
 {
     if (S == NULL) {
         return HYST_ERR_NULL;
     }
-    if (codes > (uint_least32_t)(S->hi - S->lo)) {
+    if (S->variant != (unsigned)HYST_VARIANT_CODE ||
+        codes > (uint_least32_t)(S->hi.code - S->lo.code)) {
         return HYST_ERR_ARG;
     }
-    S->deadband = (hyst_code_word_t)codes;
-    tcm_set_detour(S);
+    S->deadband.code = (hyst_code_word_t)codes;
+    hyst_code_set_detour(S);
     return HYST_OK;
 }
 
-hyst_real_t hyst_code_step(hyst_code_t *S, uint_least32_t code)
+float hyst_code_step(hyst_tcm_t *S, uint_least32_t code) { return hyst_code_sample(S, code); }
+
+hyst_status_t hyst_code_process(hyst_tcm_t *S, const hyst_code_word_t *x, float *y, size_t n)
 {
-    return step(S, code);
+    return hyst_code_block(S, x, y, n);
 }
 
-hyst_status_t hyst_code_process(hyst_code_t *S, const hyst_code_word_t *x, hyst_real_t *y,
-                                size_t n)
+float hyst_code_output(const hyst_tcm_t *S) { return S != NULL ? S->y_prev.f32 : 0; }
+
+uint_least32_t hyst_code_input(const hyst_tcm_t *S)
 {
-    return tcm_process(S, x, y, n);
+    return S != NULL ? S->window[S->moving_end].code : 0u;
+}
+
+float hyst_code_error_bound(const hyst_tcm_t *S)
+{
+    return S != NULL ? S->forgot.f32 + S->db_err.f32 : 0;
 }

@@ -1,8 +1,10 @@
-/* Polynomial curve set-up (validation, shift/scale to [0, 1], monotonicity)
- * and what every curve kind shares: the out-of-line g, checks, evaluation. */
-#include "hyst_curve_impl.h"
-#include "hyst_internal.h"
+/* SPDX-License-Identifier: MIT */
+/* Curve set-up, written once for every variant: polynomial validation,
+ * shift/scale to [0, 1] and monotonicity proof, the inverse curves, checks.
+ * Per-sample evaluation lives in src/curve_eval.h (one copy per real type). */
+#include <string.h>
 
+#include "hyst_util.h"
 
 /* Rewrites p (highest power first, degree n) as the coefficients of
  * p(x0 + t) (Ruffini-Horner Taylor shift). */
@@ -171,16 +173,21 @@ int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
     return ok;
 }
 
-hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
+hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsigned variant,
+                               unsigned long layout)
 {
     hyst_wide_t c[HYST_MAX_DEGREE + 1];
     hyst_wide_t g[HYST_MAX_DEGREE + 1];
-    hyst_curve_t out = {0};
+    hyst_curve_t out;
     hyst_wide_t lo, hi, y_hi;
     unsigned n, k;
+    int finite = 1;
 
     if (curve == NULL || f0 == NULL) {
         return HYST_ERR_NULL;
+    }
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
     }
     n = f0->degree;
     if (n < 1u || n > HYST_MAX_DEGREE) {
@@ -202,22 +209,20 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
     for (k = 0u; k <= n; ++k) {
         y_hi += g[k];
     }
+    memset(&out, 0, sizeof out);
     out.kind = HYST_CURVE_POLY;
-    out.horner = n;
-    out.degree = n;
-    out.lo = f0->lo;
-    out.hi = f0->hi;
-    out.y_lo = (hyst_real_t)g[0];
-    out.y_hi = (hyst_real_t)y_hi;
-    out.inv_span = (hyst_real_t)(1 / (hi - lo));
+    out.variant = variant;
+    out.layout = HYST_LAYOUT;
+    out.u.poly.degree = n;
+    finite &= hyst_num_set(&out.lo, variant, lo);
+    finite &= hyst_num_set(&out.hi, variant, hi);
+    finite &= hyst_num_set(&out.y_lo, variant, g[0]);
+    finite &= hyst_num_set(&out.y_hi, variant, y_hi);
+    finite &= hyst_num_set(&out.unit, variant, 1 / (hi - lo));
     for (k = 0u; k < n; ++k) {
-        out.a[k] = (hyst_real_t)g[n - k]; /* a[0] multiplies u^n */
-        if (!hyst_wide_is_finite((hyst_wide_t)out.a[k])) {
-            return HYST_ERR_COEFF;
-        }
+        finite &= hyst_num_set(&out.u.poly.a[k], variant, g[n - k]); /* a[0] multiplies u^n */
     }
-    if (!hyst_wide_is_finite((hyst_wide_t)out.y_lo) || !hyst_wide_is_finite((hyst_wide_t)out.y_hi) ||
-        !hyst_wide_is_finite((hyst_wide_t)out.inv_span)) {
+    if (!finite) {
         return HYST_ERR_COEFF;
     }
     if (!hyst_poly_is_increasing(c, n, lo, hi, NULL)) {
@@ -227,23 +232,32 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0)
     return HYST_OK;
 }
 
-hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x)
+hyst_status_t hyst_f32_curve_from_poly_(hyst_curve_t *curve, const hyst_poly_t *f0,
+                                        unsigned long layout)
 {
-    hyst_real_t acc = f0->coeffs[0];
+    return hyst_curve_poly_(curve, f0, HYST_VARIANT_F32, layout);
+}
+
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_from_poly_(hyst_curve_t *curve, const hyst_poly_t *f0,
+                                        unsigned long layout)
+{
+    return hyst_curve_poly_(curve, f0, HYST_VARIANT_F64, layout);
+}
+#endif
+
+hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x)
+{
+    hyst_wide_t acc;
     unsigned k;
-    for (k = 1u; k <= f0->degree; ++k) {
+    if (f0 == NULL) {
+        return 0;
+    }
+    acc = f0->coeffs[0];
+    for (k = 1u; k <= f0->degree && k <= HYST_MAX_DEGREE; ++k) {
         acc = acc * x + f0->coeffs[k];
     }
     return acc;
-}
-
-hyst_real_t hyst_curve_g_unit_other(const hyst_curve_t *curve, hyst_real_t d)
-{
-    if (curve->kind == HYST_CURVE_POLY_INV) {
-        return hyst_poly_inv_g_(curve, d);
-    }
-    /* PWL, PWL_INV: the difference of two interpolations; exactly 0 at d = 0 */
-    return hyst_pwl_eval_(curve, curve->lo + d) - curve->y_lo;
 }
 
 hyst_status_t hyst_curve_check(const hyst_curve_t *curve)
@@ -251,29 +265,35 @@ hyst_status_t hyst_curve_check(const hyst_curve_t *curve)
     if (curve == NULL) {
         return HYST_ERR_NULL;
     }
-    if (!(curve->lo < curve->hi)) {
+    if (curve->layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
+    }
+    if (curve->variant != (unsigned)HYST_VARIANT_F32
+#if HYST_ENABLE_F64
+        && curve->variant != (unsigned)HYST_VARIANT_F64
+#endif
+    ) {
+        return HYST_ERR_ARG;
+    }
+    if (!(hyst_num_get(&curve->lo, curve->variant) < hyst_num_get(&curve->hi, curve->variant))) {
         return HYST_ERR_ARG;
     }
     switch (curve->kind) {
     case HYST_CURVE_POLY:
+        return curve->u.poly.degree >= 1u && curve->u.poly.degree <= HYST_MAX_DEGREE
+                   ? HYST_OK
+                   : HYST_ERR_ARG;
     case HYST_CURVE_POLY_INV:
-        return curve->degree >= 1u && curve->degree <= HYST_MAX_DEGREE &&
-                       curve->horner == (curve->kind == HYST_CURVE_POLY ? curve->degree : 0u)
+        return curve->u.poly_inv.fwd.degree >= 1u &&
+                       curve->u.poly_inv.fwd.degree <= HYST_MAX_DEGREE
                    ? HYST_OK
                    : HYST_ERR_ARG;
     case HYST_CURVE_PWL:
     case HYST_CURVE_PWL_INV:
-        return curve->horner == 0u && curve->px != NULL && curve->py != NULL &&
-                       curve->n_points >= 2u
+        return curve->u.pwl.x.f32 != NULL && curve->u.pwl.y.f32 != NULL && curve->u.pwl.n >= 2u
                    ? HYST_OK
                    : HYST_ERR_ARG;
     default:
         return HYST_ERR_ARG;
     }
-}
-
-hyst_real_t hyst_curve_eval(const hyst_curve_t *curve, hyst_real_t x)
-{
-    x = x < curve->lo ? curve->lo : (x > curve->hi ? curve->hi : x);
-    return curve->y_lo + hyst_curve_g(curve, x - curve->lo);
 }

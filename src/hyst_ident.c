@@ -1,8 +1,9 @@
+/* SPDX-License-Identifier: MIT */
 /* Identification of f0: streaming least squares by Givens rotations on a
  * Chebyshev basis of the scaled input t = (x - mid) / half in [-1, 1]. */
 #include "hyst/ident.h"
 
-#include "hyst_internal.h"
+#include "hyst_util.h"
 
 #include <math.h>
 
@@ -15,7 +16,6 @@
 #endif
 
 
-static hyst_wide_t wide_abs(hyst_wide_t v) { return v < 0 ? -v : v; }
 
 /* Offset of row i of an m-column packed upper-triangular factor. */
 static size_t row_at(unsigned i, unsigned m)
@@ -105,8 +105,12 @@ static int method_of(int method)
     return method == HYST_IDENT_DEFAULT ? HYST_IDENT_JOINT : method;
 }
 
-hyst_status_t hyst_ident_init(hyst_ident_t *id, const hyst_ident_config_t *cfg)
+hyst_status_t hyst_ident_init_(hyst_ident_t *id, const hyst_ident_config_t *cfg,
+                               unsigned long layout)
 {
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
+    }
     size_t k;
     int method;
     if (id == NULL || cfg == NULL) {
@@ -280,11 +284,11 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
         return HYST_ERR_ARG;
     }
     for (i = 0u; i <= n; ++i) {
-        const hyst_wide_t d = wide_abs(id->r[row_at(i, m)]);
+        const hyst_wide_t d = hyst_wide_abs(id->r[row_at(i, m)]);
         big = d > big ? d : big;
     }
     for (i = 0u; i <= n; ++i) {
-        if (!(wide_abs(id->r[row_at(i, m)]) > big * WIDE_EPS * (hyst_wide_t)1000)) {
+        if (!(hyst_wide_abs(id->r[row_at(i, m)]) > big * WIDE_EPS * (hyst_wide_t)1000)) {
             return HYST_ERR_SINGULAR;
         }
     }
@@ -366,7 +370,7 @@ hyst_status_t hyst_ident_check(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y)
         e = y - (id->shift - clenshaw(id->cheb, id->degree, -t));
     }
     id->ss += e * e;
-    e = wide_abs(e);
+    e = hyst_wide_abs(e);
     id->max_abs = e > id->max_abs ? e : id->max_abs;
     ++id->checked;
     return HYST_OK;
@@ -414,15 +418,18 @@ hyst_status_t hyst_ident_domain(const hyst_wide_t *x, size_t n, hyst_wide_t *lo,
     return HYST_OK;
 }
 
-hyst_status_t hyst_ident_fit(const hyst_ident_config_t *cfg, const hyst_wide_t *x,
-                             const hyst_wide_t *y, size_t n, hyst_ident_t *work,
-                             hyst_ident_result_t *res)
+hyst_status_t hyst_ident_fit_(const hyst_ident_config_t *cfg, const hyst_wide_t *x,
+                              const hyst_wide_t *y, size_t n, hyst_ident_t *work,
+                              hyst_ident_result_t *res, unsigned long layout)
 {
     hyst_ident_config_t c;
     hyst_status_t st;
     size_t i, count;
     if (cfg == NULL || x == NULL || y == NULL || work == NULL || res == NULL) {
         return HYST_ERR_NULL;
+    }
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
     }
     if (cfg->skip >= n || cfg->delay >= n - cfg->skip) {
         return HYST_ERR_ARG;
@@ -463,10 +470,10 @@ hyst_status_t hyst_ident_poly(const hyst_ident_result_t *res, hyst_poly_t *f0)
         return HYST_ERR_DEGREE;
     }
     out.degree = res->degree;
-    out.lo = (hyst_real_t)res->lo;
-    out.hi = (hyst_real_t)res->hi;
+    out.lo = res->lo;
+    out.hi = res->hi;
     for (k = 0u; k <= HYST_MAX_DEGREE; ++k) {
-        out.coeffs[k] = k <= res->degree ? (hyst_real_t)res->coeffs[k] : 0;
+        out.coeffs[k] = k <= res->degree ? res->coeffs[k] : 0;
         if (!hyst_wide_is_finite((hyst_wide_t)out.coeffs[k]) || !hyst_wide_is_finite((hyst_wide_t)out.lo) ||
             !hyst_wide_is_finite((hyst_wide_t)out.hi)) {
             return HYST_ERR_COEFF;

@@ -1,12 +1,17 @@
-/* Snapshot/restore of a TCM instance in a CHAR_BIT-independent octet format
- * (layout in include/hyst/snapshot.h). */
+/* SPDX-License-Identifier: MIT */
+/* Snapshot/restore of a TCM instance of any variant, in a CHAR_BIT-
+ * independent octet format (layout in include/hyst/snapshot.h). */
 #include "hyst/snapshot.h"
-#include "hyst_internal.h"
+#include "hyst_util.h"
 
+#include <float.h>
 #include <stdint.h>
 
 #if FLT_MANT_DIG != 24 || FLT_MAX_EXP != 128
 #error "hyst snapshots assume IEEE-754 binary32 float"
+#endif
+#if HYST_ENABLE_F64 && (DBL_MANT_DIG != 53 || DBL_MAX_EXP != 1024)
+#error "hyst snapshots assume IEEE-754 binary64 double"
 #endif
 
 #define MAGIC0 0x48u /* 'H' */
@@ -14,12 +19,30 @@
 #define MAGIC2 0x53u /* 'S' */
 #define MAGIC3 0x53u /* 'S' */
 #define HEADER_OCTETS 32u
-#define BOOK_OCTETS (4u + 3u * R) /* merge level, its bound, deadband reach and bound */
-#define NO_LEVEL 0xFFFFFFFFul     /* no live merge */
+#define NO_LEVEL 0xFFFFFFFFul /* no live merge */
 #define CRC_OCTETS 4u
-#define R ((size_t)HYST_SNAPSHOT_REAL_OCTETS)
-#define MAX_COUNT 0x03FFFFFFul /* keeps L below 2^31 for either R */
+#define MAX_COUNT 0x03FFFFFFul /* keeps L below 2^31 */
 #define EVENTS_KNOWN (HYST_EVENT_NONFINITE | HYST_EVENT_CLAMPED | HYST_EVENT_FULL)
+
+/* How the numbers of a variant travel: R octets per real (outputs), X per
+ * stored input; the types of its inputs and outputs. */
+typedef enum { NUM_CODE, NUM_F32, NUM_F64 } num_type_t;
+typedef struct {
+    unsigned r, x;
+    num_type_t xt, yt;
+} format_t;
+
+static int format_of(unsigned variant, format_t *f)
+{
+    switch (variant) {
+    case HYST_VARIANT_F32: f->r = 4u; f->x = 4u; f->xt = NUM_F32; f->yt = NUM_F32; return 1;
+#if HYST_ENABLE_F64
+    case HYST_VARIANT_F64: f->r = 8u; f->x = 8u; f->xt = NUM_F64; f->yt = NUM_F64; return 1;
+#endif
+    case HYST_VARIANT_CODE: f->r = 4u; f->x = 4u; f->xt = NUM_CODE; f->yt = NUM_F32; return 1;
+    default: return 0;
+    }
+}
 
 unsigned long hyst_crc32(unsigned long crc, const unsigned char *buf, size_t n)
 {
@@ -57,113 +80,228 @@ static unsigned long get_u32(const unsigned char *p)
     return (unsigned long)get_u16(p) | ((unsigned long)get_u16(p + 2) << 16);
 }
 
-/* Reals travel as their IEEE-754 bits; the union reads the representation
+/* Reals travel as their IEEE-754 bits; the unions read the representation
  * (well-defined in C99 TC3) without memcpy or CHAR_BIT assumptions. */
-#if HYST_SNAPSHOT_REAL_OCTETS == 8u
-typedef uint64_t real_uint_t;
-#else
-typedef uint32_t real_uint_t;
-#endif
 typedef union {
-    hyst_real_t r;
-    real_uint_t u;
-} real_bits_t;
+    float r;
+    uint32_t u;
+} bits32_t;
+#if HYST_ENABLE_F64
+typedef union {
+    double r;
+    uint64_t u;
+} bits64_t;
+#endif
 
-static void put_real(unsigned char *p, hyst_real_t v)
+static void put_num(unsigned char *p, const hyst_num_t *v, num_type_t t)
 {
-    real_bits_t b;
     unsigned k;
-    b.r = v;
-    for (k = 0u; k < R; ++k) {
-        p[k] = (unsigned char)((b.u >> (8u * k)) & 0xFFu);
-    }
-}
-
-static hyst_real_t get_real(const unsigned char *p)
-{
-    real_bits_t b;
-    unsigned k;
-    b.u = 0u;
-    for (k = 0u; k < R; ++k) {
-        b.u |= (real_uint_t)(p[k] & 0xFFu) << (8u * k);
-    }
-    return b.r;
-}
-
-static int real_is_finite(hyst_real_t v)
-{
-    const hyst_real_t z = v - v;
-    return z == z;
-}
-
-/* Same bits, not just equal values (0.0 vs -0.0 differ here). */
-static int same_real(hyst_real_t a, const unsigned char *p)
-{
-    unsigned char q[R];
-    unsigned k;
-    put_real(q, a);
-    for (k = 0u; k < R; ++k) {
-        if (q[k] != (p[k] & 0xFFu)) {
-            return 0;
+#if HYST_ENABLE_F64
+    if (t == NUM_F64) {
+        bits64_t b;
+        b.r = v->f64;
+        for (k = 0u; k < 8u; ++k) {
+            p[k] = (unsigned char)((b.u >> (8u * k)) & 0xFFu);
         }
+        return;
     }
+#endif
+    if (t == NUM_F32) {
+        bits32_t b;
+        b.r = v->f32;
+        put_u32(p, (unsigned long)b.u);
+        return;
+    }
+    put_u32(p, (unsigned long)v->code);
+    (void)k;
+}
+
+/* The number at p; 0 if it cannot be one of type t (a code too wide). */
+static int get_num(const unsigned char *p, hyst_num_t *v, num_type_t t)
+{
+    unsigned k;
+#if HYST_ENABLE_F64
+    if (t == NUM_F64) {
+        bits64_t b;
+        b.u = 0u;
+        for (k = 0u; k < 8u; ++k) {
+            b.u |= (uint64_t)(p[k] & 0xFFu) << (8u * k);
+        }
+        v->f64 = b.r;
+        return 1;
+    }
+#endif
+    (void)k;
+    if (t == NUM_F32) {
+        bits32_t b;
+        b.u = (uint32_t)get_u32(p);
+        v->f32 = b.r;
+        return 1;
+    }
+    if (get_u32(p) > (unsigned long)HYST_CODE_MAX) {
+        return 0;
+    }
+    v->code = (hyst_code_word_t)get_u32(p);
     return 1;
 }
 
-static unsigned long crc_real(unsigned long crc, hyst_real_t v)
+/* A number as hyst_wide_t (exact for every type). */
+static hyst_wide_t wide_of(const hyst_num_t *v, num_type_t t)
 {
-    unsigned char q[R];
-    put_real(q, v);
-    return hyst_crc32(crc, q, R);
+#if HYST_ENABLE_F64
+    if (t == NUM_F64) {
+        return (hyst_wide_t)v->f64;
+    }
+#endif
+    return t == NUM_F32 ? (hyst_wide_t)v->f32 : (hyst_wide_t)v->code;
 }
 
-static unsigned long curve_id(const hyst_curve_t *c)
+/* Entry i of a caller array, as a number. */
+static hyst_num_t elem(hyst_ptr_t a, size_t i, num_type_t t)
+{
+    hyst_num_t v;
+#if HYST_ENABLE_F64
+    if (t == NUM_F64) {
+        v.f64 = a.f64[i];
+        return v;
+    }
+#endif
+    if (t == NUM_F32) {
+        v.f32 = a.f32[i];
+    } else {
+        v.code = a.code[i];
+    }
+    return v;
+}
+
+static void set_elem(hyst_ptr_t a, size_t i, const hyst_num_t *v, num_type_t t)
+{
+#if HYST_ENABLE_F64
+    if (t == NUM_F64) {
+        a.f64[i] = v->f64;
+        return;
+    }
+#endif
+    if (t == NUM_F32) {
+        a.f32[i] = v->f32;
+    } else {
+        a.code[i] = v->code;
+    }
+}
+
+static unsigned long crc_num(unsigned long crc, const hyst_num_t *v, num_type_t t)
+{
+    unsigned char q[8];
+    put_num(q, v, t);
+    return hyst_crc32(crc, q, t == NUM_F64 ? 8u : 4u);
+}
+
+static unsigned long crc_word(unsigned long crc, unsigned long w)
 {
     unsigned char q[4];
+    put_u32(q, w);
+    return hyst_crc32(crc, q, 4u);
+}
+
+/* Curve identity: everything that shapes the branches of this instance. */
+static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
+{
+    const hyst_curve_t *c = S->curve;
     unsigned long crc;
     unsigned k;
-    put_u16(q, (unsigned)c->kind & 0xFFFFu);
-    put_u16(q + 2, c->degree & 0xFFFFu);
-    crc = hyst_crc32(0ul, q, 4u);
-    crc = crc_real(crc, c->lo);
-    crc = crc_real(crc, c->hi);
-    crc = crc_real(crc, c->y_lo);
-    crc = crc_real(crc, c->y_hi);
-    crc = crc_real(crc, c->inv_span);
-    for (k = 0u; k < c->degree && k < HYST_MAX_DEGREE; ++k) {
-        crc = crc_real(crc, c->a[k]);
+    crc = crc_word(0ul, S->variant);
+    crc = crc_word(crc, c != NULL ? c->kind : (unsigned long)HYST_CURVE_POLY);
+    crc = crc_word(crc, S->horner);
+    crc = crc_num(crc, &S->lo, f->xt);
+    crc = crc_num(crc, &S->hi, f->xt);
+    crc = crc_num(crc, &S->y_lo, f->yt);
+    crc = crc_num(crc, &S->y_hi, f->yt);
+    crc = crc_num(crc, &S->unit, f->yt);
+    for (k = 0u; k < S->horner && k < HYST_MAX_DEGREE; ++k) {
+        crc = crc_num(crc, &S->coef[k], f->yt);
+    }
+    if (c == NULL) {
+        return crc;
+    }
+    if (c->kind == (unsigned)HYST_CURVE_POLY_INV) {
+        crc = crc_word(crc, c->u.poly_inv.fwd.degree);
+        for (k = 0u; k < c->u.poly_inv.fwd.degree && k < HYST_MAX_DEGREE; ++k) {
+            crc = crc_num(crc, &c->u.poly_inv.fwd.a[k], f->yt);
+        }
+        crc = crc_num(crc, &c->u.poly_inv.span, f->yt);
+        crc = crc_num(crc, &c->u.poly_inv.knot_scale, f->yt);
+        for (k = 0u; k <= HYST_INV_KNOTS; ++k) {
+            crc = crc_num(crc, &c->u.poly_inv.knot_u[k], f->yt);
+        }
+    } else if (c->kind == (unsigned)HYST_CURVE_PWL || c->kind == (unsigned)HYST_CURVE_PWL_INV) {
+        size_t i;
+        crc = crc_word(crc, (unsigned long)c->u.pwl.n);
+        for (i = 0u; i < c->u.pwl.n; ++i) { /* interior points shape the curve too */
+            hyst_num_t px, py;
+#if HYST_ENABLE_F64
+            if (c->variant == (unsigned)HYST_VARIANT_F64) {
+                px.f64 = c->u.pwl.x.f64[i];
+                py.f64 = c->u.pwl.y.f64[i];
+            } else
+#endif
+            {
+                px.f32 = c->u.pwl.x.f32[i];
+                py.f32 = c->u.pwl.y.f32[i];
+            }
+            crc = crc_num(crc, &px, f->yt);
+            crc = crc_num(crc, &py, f->yt);
+        }
     }
     return crc;
 }
 
 /* L in unsigned long (size_t may be 16 bits); counts <= MAX_COUNT. */
-static unsigned long length_of(unsigned long n_ltp, unsigned long n_rtp)
+static unsigned long length_of(const format_t *f, unsigned long n_ltp, unsigned long n_rtp)
 {
-    return HEADER_OCTETS + 2ul * R * (1ul + n_ltp + n_rtp) + BOOK_OCTETS + CRC_OCTETS;
+    return HEADER_OCTETS + (unsigned long)(f->x + f->r) * (1ul + n_ltp + n_rtp) + 4ul +
+           2ul * f->r + f->x + CRC_OCTETS;
 }
 
 /* A function, not an inline test: with a 16-bit size_t the comparison is
  * always true, which -Wtype-limits would flag on AVR. */
 static int count_fits(unsigned long n) { return n <= MAX_COUNT; }
 
-size_t hyst_snapshot_size(const hyst_t *S)
+/* Octets of a snapshot with these counts, 0 if not representable. */
+static size_t size_for(const format_t *f, size_t nl, size_t nr)
 {
     unsigned long need;
-    if (!count_fits((unsigned long)S->n_ltp) || !count_fits((unsigned long)S->n_rtp)) {
-        return 0u; /* not representable; save refuses with HYST_ERR_NOSPACE */
+    if (!count_fits((unsigned long)nl) || !count_fits((unsigned long)nr)) {
+        return 0u;
     }
-    need = length_of((unsigned long)S->n_ltp, (unsigned long)S->n_rtp);
+    need = length_of(f, (unsigned long)nl, (unsigned long)nr);
     return need == (unsigned long)(size_t)need ? (size_t)need : 0u;
 }
 
-hyst_status_t hyst_snapshot_save(const hyst_t *S, unsigned char *buf,
-                                 size_t size, size_t *len)
+size_t hyst_snapshot_size(const hyst_tcm_t *S)
 {
-    size_t need, i, at;
+    format_t f;
+    if (S == NULL || S->layout != HYST_LAYOUT || !format_of(S->variant, &f)) {
+        return 0u;
+    }
+    return size_for(&f, S->n_ltp, S->n_rtp);
+}
+
+hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t size,
+                                 size_t *len)
+{
+    format_t f;
+    size_t need, i, at, nl, nr;
+    hyst_num_t v;
     if (S == NULL || buf == NULL) {
         return HYST_ERR_NULL;
     }
-    need = hyst_snapshot_size(S);
+    if (S->layout != HYST_LAYOUT || !format_of(S->variant, &f)) {
+        return HYST_ERR_ARG;
+    }
+    /* The counts are read once: the size and the copy agree. */
+    nl = S->n_ltp;
+    nr = S->n_rtp;
+    need = size_for(&f, nl, nr);
     if (need == 0u || size < need) {
         return HYST_ERR_NOSPACE;
     }
@@ -172,32 +310,31 @@ hyst_status_t hyst_snapshot_save(const hyst_t *S, unsigned char *buf,
     buf[2] = MAGIC2;
     buf[3] = MAGIC3;
     put_u16(buf + 4, HYST_SNAPSHOT_VERSION);
-    buf[6] = (unsigned char)R;
-    buf[7] = 0u;
+    buf[6] = (unsigned char)f.r;
+    buf[7] = (unsigned char)S->variant;
     put_u32(buf + 8, (unsigned long)need);
-    put_u32(buf + 12, curve_id(&S->curve));
-    put_u32(buf + 16, (unsigned long)S->n_ltp);
-    put_u32(buf + 20, (unsigned long)S->n_rtp);
+    put_u32(buf + 12, curve_id(S, &f));
+    put_u32(buf + 16, (unsigned long)nl);
+    put_u32(buf + 20, (unsigned long)nr);
     put_u32(buf + 24, (unsigned long)S->events);
     put_u16(buf + 28, (unsigned)S->status & 0xFFFFu); /* two's complement */
     put_u16(buf + 30, 0u);
-    put_real(buf + HEADER_OCTETS, hyst_input(S));
-    put_real(buf + HEADER_OCTETS + R, S->y_prev);
-    at = HEADER_OCTETS + 2u * R;
-    for (i = 0u; i < S->n_ltp; ++i, at += 2u * R) {
-        put_real(buf + at, S->xltp[i]);
-        put_real(buf + at + R, S->yltp[i]);
+    put_num(buf + HEADER_OCTETS, &S->window[S->moving_end], f.xt);
+    put_num(buf + HEADER_OCTETS + f.x, &S->y_prev, f.yt);
+    at = HEADER_OCTETS + f.x + f.r;
+    for (i = 0u; i < nl + nr; ++i, at += f.x + f.r) {
+        const int left = i < nl;
+        const size_t k = left ? i : i - nl;
+        v = elem(left ? S->xltp : S->xrtp, k, f.xt);
+        put_num(buf + at, &v, f.xt);
+        v = elem(left ? S->yltp : S->yrtp, k, f.yt);
+        put_num(buf + at + f.x, &v, f.yt);
     }
-    for (i = 0u; i < S->n_rtp; ++i, at += 2u * R) {
-        put_real(buf + at, S->xrtp[i]);
-        put_real(buf + at + R, S->yrtp[i]);
-    }
-    put_u32(buf + at, S->forgot_level == (size_t)-1 ? NO_LEVEL
-                                                     : (unsigned long)S->forgot_level);
-    put_real(buf + at + 4u, S->forgot);
-    put_real(buf + at + 4u + R, S->db_reach);
-    put_real(buf + at + 4u + 2u * R, S->db_err);
-    at += BOOK_OCTETS;
+    put_u32(buf + at, S->forgot_level == (size_t)-1 ? NO_LEVEL : (unsigned long)S->forgot_level);
+    put_num(buf + at + 4u, &S->forgot, f.yt);
+    put_num(buf + at + 4u + f.r, &S->db_reach, f.xt);
+    put_num(buf + at + 4u + f.r + f.x, &S->db_err, f.yt);
+    at += 4u + 2u * f.r + f.x;
     put_u32(buf + at, hyst_crc32(0ul, buf, at));
     if (len != NULL) {
         *len = need;
@@ -205,96 +342,153 @@ hyst_status_t hyst_snapshot_save(const hyst_t *S, unsigned char *buf,
     return HYST_OK;
 }
 
+/* Bit-identical numbers. */
+static int same_num(const hyst_num_t *a, const hyst_num_t *b, num_type_t t)
+{
+    unsigned char p[8], q[8];
+    unsigned k, n = t == NUM_F64 ? 8u : 4u;
+    put_num(p, a, t);
+    put_num(q, b, t);
+    for (k = 0u; k < n; ++k) {
+        if (p[k] != q[k]) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Reads entry `at` of the body as (x, y) into wide values; 0 if a number is
+ * not of its type, not finite, or outside the instance's input domain or
+ * its output band [y_lo - h, y_hi + h] (h = y_hi - y_lo: the model's
+ * outputs lie in [y_lo, y_hi] up to rounding; a forged value does not). */
+static int read_point(const hyst_tcm_t *S, const format_t *f, const unsigned char *p,
+                      hyst_num_t *x, hyst_num_t *y)
+{
+    const hyst_wide_t lo = wide_of(&S->lo, f->xt), hi = wide_of(&S->hi, f->xt);
+    const hyst_wide_t ylo = wide_of(&S->y_lo, f->yt), yhi = wide_of(&S->y_hi, f->yt);
+    hyst_wide_t wx, wy;
+    if (!get_num(p, x, f->xt) || !get_num(p + f->x, y, f->yt)) {
+        return 0;
+    }
+    wx = wide_of(x, f->xt);
+    wy = wide_of(y, f->yt);
+    return hyst_wide_is_finite(wx) && hyst_wide_is_finite(wy) && wx >= lo && wx <= hi &&
+           wy >= ylo - (yhi - ylo) && wy <= yhi + (yhi - ylo);
+}
+
 /* Is the saved state one the engine can reach? Turning points alternate and
  * nest strictly: LTP x ascending, RTP x descending, every LTP below every RTP,
  * all inside [lo, hi]; A0 is (lo, f0(lo)); the last input lies on the current
  * branch, between its TP and the TP below. Reads only. */
-static int state_is_valid(const hyst_t *S, const unsigned char *body,
+static int state_is_valid(const hyst_tcm_t *S, const format_t *f, const unsigned char *body,
                           size_t nl, size_t nr)
 {
-    const hyst_real_t lo = S->curve.lo;
-    const hyst_real_t hi = S->curve.hi;
-    const unsigned char *ltp = body + 2u * R;
-    const unsigned char *rtp = ltp + 2u * R * nl;
-    const hyst_real_t x_prev = get_real(body);
-    hyst_real_t top_ltp = lo;
-    hyst_real_t top_rtp = hi;
+    const unsigned char *tp = body + f->x + f->r;
+    hyst_num_t x, y;
+    hyst_wide_t top_ltp = wide_of(&S->lo, f->xt), top_rtp = wide_of(&S->hi, f->xt), xp;
     size_t i;
-
-    if (!same_real(lo, ltp) || !same_real(S->curve.y_lo, ltp + R)) {
+    if (!read_point(S, f, tp, &x, &y) || !same_num(&x, &S->lo, f->xt) ||
+        !same_num(&y, &S->y_lo, f->yt)) {
         return 0;
     }
-    for (i = 0u; i < nl + nr; ++i) {
-        const unsigned char *p = i < nl ? ltp + 2u * R * i : rtp + 2u * R * (i - nl);
-        const hyst_real_t x = get_real(p);
-        if (!real_is_finite(x) || !real_is_finite(get_real(p + R)) || !(x >= lo && x <= hi)) {
+    for (i = 1u; i < nl + nr; ++i) {
+        hyst_wide_t w;
+        if (!read_point(S, f, tp + (f->x + f->r) * i, &x, &y)) {
             return 0;
         }
-        if (i > 0u && i < nl) { /* LTPs ascend strictly */
-            if (!(x > top_ltp)) {
+        w = wide_of(&x, f->xt);
+        if (i < nl) { /* LTPs ascend strictly */
+            if (!(w > top_ltp)) {
                 return 0;
             }
-            top_ltp = x;
-        } else if (i >= nl) { /* RTPs descend strictly, above every LTP */
-            if (!(x > top_ltp) || (i > nl && !(x < top_rtp))) {
+            top_ltp = w;
+        } else { /* RTPs descend strictly, above every LTP */
+            if (!(w > top_ltp) || (i > nl && !(w < top_rtp))) {
                 return 0;
             }
-            top_rtp = x;
+            top_rtp = w;
         }
     }
-    if (!real_is_finite(x_prev) || !real_is_finite(get_real(body + R))) {
+    if (!read_point(S, f, body, &x, &y)) {
         return 0;
     }
+    xp = wide_of(&x, f->xt);
     if (nl > nr) { /* rising from LTP nl-1, below RTP nr-1 (or hi) */
-        return x_prev >= top_ltp && (nr > 0u ? x_prev < top_rtp : x_prev <= hi);
+        return xp >= top_ltp && (nr > 0u ? xp < top_rtp : 1);
     }
-    return x_prev > top_ltp && x_prev <= top_rtp; /* falling from RTP nr-1 */
+    return xp > top_ltp && xp <= top_rtp; /* falling from RTP nr-1 */
 }
 
 /* The bounded-memory bookkeeping: a merge level within the stack (or none),
- * finite non-negative bounds and deadband reach. Reads only. */
-static int book_is_valid(const unsigned char *p, size_t depth, hyst_tcm_book_t *book)
+ * finite non-negative bounds no larger than the stack can owe (one loop
+ * height per stored pair, one for the deadband) and a deadband reach inside
+ * the domain. Reads only. */
+static int book_is_valid(const hyst_tcm_t *S, const format_t *f, const unsigned char *p,
+                         size_t depth, hyst_tcm_book_t *book)
 {
     const unsigned long level = get_u32(p);
+    const hyst_wide_t height =
+        wide_of(&S->y_hi, f->yt) - wide_of(&S->y_lo, f->yt);
+    const hyst_wide_t width = wide_of(&S->hi, f->xt) - wide_of(&S->lo, f->xt);
+    hyst_num_t v;
+    int ok = 1;
     book->forgot_level = level == NO_LEVEL ? (size_t)-1 : (size_t)level;
-    book->forgot = get_real(p + 4u);
-    book->db_reach = get_real(p + 4u + R);
-    book->db_err = get_real(p + 4u + 2u * R);
-    return (level == NO_LEVEL || level <= (unsigned long)depth) && real_is_finite(book->forgot) &&
-           book->forgot >= 0 && real_is_finite(book->db_reach) && book->db_reach >= 0 &&
-           real_is_finite(book->db_err) && book->db_err >= 0;
+    ok &= get_num(p + 4u, &v, f->yt);
+    book->forgot = wide_of(&v, f->yt);
+    ok &= get_num(p + 4u + f->r, &v, f->xt);
+    book->db_reach = wide_of(&v, f->xt);
+    ok &= get_num(p + 4u + f->r + f->x, &v, f->yt);
+    book->db_err = wide_of(&v, f->yt);
+    return ok && (level == NO_LEVEL || level <= (unsigned long)depth) &&
+           (level != NO_LEVEL || book->forgot == 0) && hyst_wide_is_finite(book->forgot) &&
+           book->forgot >= 0 && book->forgot <= height * (hyst_wide_t)(depth + 1u) &&
+           hyst_wide_is_finite(book->db_reach) && book->db_reach >= 0 &&
+           book->db_reach <= width && hyst_wide_is_finite(book->db_err) && book->db_err >= 0 &&
+           book->db_err <= height;
 }
 
-hyst_status_t hyst_snapshot_restore(hyst_t *S, const unsigned char *buf,
-                                    size_t len)
+/* A status a sample can leave. */
+static int status_is_known(int status)
+{
+    return status == HYST_OK || status == HYST_WARN_CLAMPED || status == HYST_WARN_FULL ||
+           status == HYST_ERR_NONFINITE;
+}
+
+hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf, size_t len)
 {
     unsigned long length, nl32, nr32, events;
     hyst_tcm_book_t book;
+    format_t f;
     size_t nl, nr, i, at;
     unsigned status16;
+    int status;
+    hyst_num_t x, y;
 
     if (S == NULL || buf == NULL) {
         return HYST_ERR_NULL;
+    }
+    if (S->layout != HYST_LAYOUT || !format_of(S->variant, &f)) {
+        return HYST_ERR_ARG;
     }
     if (len < HEADER_OCTETS + CRC_OCTETS || buf[0] != MAGIC0 || buf[1] != MAGIC1 ||
         buf[2] != MAGIC2 || buf[3] != MAGIC3) {
         return HYST_ERR_FORMAT;
     }
-    if (get_u16(buf + 4) != HYST_SNAPSHOT_VERSION || buf[6] != R) {
+    if (get_u16(buf + 4) != HYST_SNAPSHOT_VERSION || buf[6] != f.r || buf[7] != S->variant) {
         return HYST_ERR_VERSION;
     }
     length = get_u32(buf + 8);
     nl32 = get_u32(buf + 16);
     nr32 = get_u32(buf + 20);
     if (length > len || !count_fits(nl32) || !count_fits(nr32) ||
-        length != length_of(nl32, nr32)) {
+        length != length_of(&f, nl32, nr32)) {
         return HYST_ERR_FORMAT; /* truncated, or length and counts disagree */
     }
     at = (size_t)length - CRC_OCTETS;
     if (hyst_crc32(0ul, buf, at) != get_u32(buf + at)) {
         return HYST_ERR_CRC;
     }
-    if (get_u32(buf + 12) != curve_id(&S->curve)) {
+    if (get_u32(buf + 12) != curve_id(S, &f)) {
         return HYST_ERR_CURVE;
     }
     nl = (size_t)nl32;
@@ -304,30 +498,42 @@ hyst_status_t hyst_snapshot_restore(hyst_t *S, const unsigned char *buf,
     }
     events = get_u32(buf + 24);
     status16 = get_u16(buf + 28);
+    /* 16-bit two's complement back to int without implementation-defined casts */
+    status = status16 >= 0x8000u ? -(int)(0xFFFFu - status16) - 1 : (int)status16;
     if (nl < 1u || (nr != nl && nr + 1u != nl) || (events & ~(unsigned long)EVENTS_KNOWN) != 0u ||
-        buf[7] != 0u || get_u16(buf + 30) != 0u ||
-        !state_is_valid(S, buf + HEADER_OCTETS, nl, nr)) {
+        !status_is_known(status) || get_u16(buf + 30) != 0u ||
+        !state_is_valid(S, &f, buf + HEADER_OCTETS, nl, nr)) {
         return HYST_ERR_FORMAT;
     }
-    at = HEADER_OCTETS + 2u * R * (1u + nl + nr);
-    if (!book_is_valid(buf + at, nl + nr, &book)) {
+    at = HEADER_OCTETS + (f.x + f.r) * (1u + nl + nr);
+    if (!book_is_valid(S, &f, buf + at, nl + nr, &book)) {
         return HYST_ERR_FORMAT;
     }
     /* Everything checked: only now write the instance. */
-    at = HEADER_OCTETS + 2u * R;
-    for (i = 0u; i < nl; ++i, at += 2u * R) {
-        S->xltp[i] = get_real(buf + at);
-        S->yltp[i] = get_real(buf + at + R);
-    }
-    for (i = 0u; i < nr; ++i, at += 2u * R) {
-        S->xrtp[i] = get_real(buf + at);
-        S->yrtp[i] = get_real(buf + at + R);
+    at = HEADER_OCTETS + f.x + f.r;
+    for (i = 0u; i < nl + nr; ++i, at += f.x + f.r) {
+        const int left = i < nl;
+        const size_t k = left ? i : i - nl;
+        (void)get_num(buf + at, &x, f.xt);
+        (void)get_num(buf + at + f.x, &y, f.yt);
+        set_elem(left ? S->xltp : S->xrtp, k, &x, f.xt);
+        set_elem(left ? S->yltp : S->yrtp, k, &y, f.yt);
     }
     S->n_ltp = nl;
     S->n_rtp = nr;
-    hyst_tcm_resume(S, get_real(buf + HEADER_OCTETS), get_real(buf + HEADER_OCTETS + R), &book);
+    (void)get_num(buf + HEADER_OCTETS, &x, f.xt);
+    (void)get_num(buf + HEADER_OCTETS + f.x, &y, f.yt);
+    switch (S->variant) {
+    case HYST_VARIANT_F32: hyst_f32_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), &book); break;
+#if HYST_ENABLE_F64
+    case HYST_VARIANT_F64: hyst_f64_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), &book); break;
+#endif
+    default: hyst_code_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), &book); break;
+    }
     S->events = (unsigned)events;
-    /* 16-bit two's complement back to int without implementation-defined casts */
-    S->status = status16 >= 0x8000u ? -(int)(0xFFFFu - status16) - 1 : (int)status16;
+    S->status = status;
+    if (status != HYST_OK) { /* as after the sample that set it */
+        S->window[1u - S->moving_end] = S->window[S->moving_end];
+    }
     return HYST_OK;
 }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Human-readable status names. */
 #include "hyst/status.h"
 
@@ -24,6 +25,8 @@ const char *hyst_status_str(int status)
     case HYST_ERR_BREAKPOINTS: return "breakpoints/thresholds not finite or not strictly increasing";
     case HYST_ERR_WEIGHTS: return "PI weights not finite or a partial sum not positive";
     case HYST_ERR_NOT_INVERTIBLE: return "curve not strictly increasing, no inverse";
+    case HYST_ERR_LAYOUT: return "layout options or variant differ from the library's";
+    case HYST_ERR_OVERLAP: return "caller arrays overlap";
     default: return "unknown status";
     }
 }

@@ -1,140 +1,86 @@
-/* The TCM engine with real inputs: validation, admission of samples, and the
- * shared engine (tcm_engine.inc) over hyst_real_t. */
-#include "hyst/tcm.h"
-#include "hyst_internal.h"
+/* SPDX-License-Identifier: MIT */
+/* What every variant of the TCM instance shares, written once: the checks
+ * of an init, reset, counts, status and events. The per-sample engine is
+ * src/tcm_engine.h, instantiated per variant. */
+#include "hyst_util.h"
 
-#include <float.h>
 #include <stdint.h>
 
-/* HYST_KEYED_SEARCH (config.h): search by bit patterns when hyst_real_t
- * is IEEE 754 binary32 or binary64. */
-#if defined(HYST_USE_DOUBLE)
-#define HYST_REAL_MANT_DIG_ DBL_MANT_DIG
-#define HYST_REAL_MAX_EXP_ DBL_MAX_EXP
-#else
-#define HYST_REAL_MANT_DIG_ FLT_MANT_DIG
-#define HYST_REAL_MAX_EXP_ FLT_MAX_EXP
-#endif
-#if HYST_KEYED_SEARCH && FLT_RADIX == 2 && HYST_REAL_MANT_DIG_ == 24 && HYST_REAL_MAX_EXP_ == 128
-#define TCM_KEY_T int32_t
-#define TCM_UKEY_T uint32_t
-#elif HYST_KEYED_SEARCH && FLT_RADIX == 2 && HYST_REAL_MANT_DIG_ == 53 && HYST_REAL_MAX_EXP_ == 1024
-#define TCM_KEY_T int64_t
-#define TCM_UKEY_T uint64_t
-#endif
-#ifdef TCM_KEY_T
-typedef char tcm_key_fits[sizeof(TCM_KEY_T) == sizeof(hyst_real_t) ? 1 : -1];
-#endif
-
-/* Out-of-line so the common path stays short: NaN/Inf or outside [lo, hi].
- * Returns 0 if the sample must be ignored, else 1 with *x clamped. */
-static int admit_slow(hyst_t *S, hyst_real_t *x)
+int hyst_ranges_overlap(const void *a, size_t na, const void *b, size_t nb)
 {
-    const hyst_real_t v = *x;
-    const hyst_real_t z = v - v;
-    if (z != z) {
-        S->status = HYST_ERR_NONFINITE;
-        S->events |= HYST_EVENT_NONFINITE;
-        return 0;
-    }
-    *x = v < S->curve.lo ? S->curve.lo : S->curve.hi;
-    S->status = HYST_WARN_CLAMPED;
-    S->events |= HYST_EVENT_CLAMPED;
-    return 1;
+    /* Compared as integers: relational operators on pointers into different
+     * objects are undefined. */
+    const uintptr_t pa = (uintptr_t)a, pb = (uintptr_t)b;
+    return pa < pb + nb && pb < pa + na;
 }
 
-static int tcm_admit(hyst_t *S, hyst_real_t x, hyst_real_t *out)
+hyst_status_t hyst_check_memory(const hyst_tcm_t *S, const void *xltp, const void *yltp,
+                                const void *xrtp, const void *yrtp, size_t capacity,
+                                size_t xsize, size_t ysize, unsigned long layout)
 {
-    *out = x;
-    return (x >= S->curve.lo && x <= S->curve.hi) || admit_slow(S, out);
-}
-
-#define TCM_S hyst_t
-#define TCM_X hyst_real_t
-#define TCM_ARG hyst_real_t
-#define TCM_IN hyst_real_t
-#define TCM_LO(S) ((S)->curve.lo)
-#define TCM_HI(S) ((S)->curve.hi)
-#define TCM_R(a) (a)
-#define TCM_D(a, b) ((a) - (b))
-#define TCM_MID(a, b) ((a) + ((b) - (a)) * HYST_REAL_C(0.5))
-#define TCM_NORM(a) ((a) + HYST_REAL_C(0.0)) /* -0 + +0 = +0 */
-#include "tcm_engine.inc"
-
-hyst_status_t hyst_init_curve(hyst_t *S, const hyst_curve_t *curve,
-                              hyst_real_t *xltp, hyst_real_t *yltp,
-                              hyst_real_t *xrtp, hyst_real_t *yrtp,
-                              size_t capacity)
-{
-    const hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
-    if (curve == NULL) {
+    const void *arrays[4];
+    size_t sizes[4];
+    size_t i, j;
+    if (S == NULL || xltp == NULL || yltp == NULL || xrtp == NULL || yrtp == NULL) {
         return HYST_ERR_NULL;
     }
-    if (st != HYST_OK) {
-        return st;
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
     }
-    if (hyst_curve_check(curve) != HYST_OK) {
-        return HYST_ERR_ARG;
+    if (capacity < 2u || capacity > (size_t)-1 / 2u / (xsize > ysize ? xsize : ysize)) {
+        return HYST_ERR_CAPACITY;
     }
-    S->curve = *curve;
-    tcm_attach(S, xltp, yltp, xrtp, yrtp, capacity);
+    arrays[0] = xltp;
+    arrays[1] = yltp;
+    arrays[2] = xrtp;
+    arrays[3] = yrtp;
+    sizes[0] = sizes[2] = capacity * xsize;
+    sizes[1] = sizes[3] = capacity * ysize;
+    for (i = 0u; i < 4u; ++i) {
+        if (hyst_ranges_overlap(arrays[i], sizes[i], S, sizeof *S)) {
+            return HYST_ERR_OVERLAP;
+        }
+        for (j = i + 1u; j < 4u; ++j) {
+            if (hyst_ranges_overlap(arrays[i], sizes[i], arrays[j], sizes[j])) {
+                return HYST_ERR_OVERLAP;
+            }
+        }
+    }
     return HYST_OK;
 }
 
-hyst_status_t hyst_init(hyst_t *S, const hyst_poly_t *f0, hyst_real_t *xltp,
-                        hyst_real_t *yltp, hyst_real_t *xrtp, hyst_real_t *yrtp,
-                        size_t capacity)
+void hyst_reset(hyst_tcm_t *S)
 {
-    hyst_curve_t curve;
-    hyst_status_t st = tcm_check(S, xltp, yltp, xrtp, yrtp, capacity);
-    if (st == HYST_OK) {
-        st = hyst_curve_from_poly(&curve, f0);
+    if (S == NULL || S->layout != HYST_LAYOUT) {
+        return;
     }
-    return st != HYST_OK ? st : hyst_init_curve(S, &curve, xltp, yltp, xrtp, yrtp, capacity);
+    switch (S->variant) {
+    case HYST_VARIANT_F32: hyst_f32_reset_(S); break;
+#if HYST_ENABLE_F64
+    case HYST_VARIANT_F64: hyst_f64_reset_(S); break;
+#endif
+    case HYST_VARIANT_CODE: hyst_code_reset_(S); break;
+    default: break; /* not initialised */
+    }
 }
 
-void hyst_reset(hyst_t *S) { tcm_reset(S); }
+int hyst_status(const hyst_tcm_t *S) { return S != NULL ? S->status : HYST_ERR_NULL; }
 
-void hyst_tcm_resume(hyst_t *S, hyst_real_t x, hyst_real_t y, const hyst_tcm_book_t *book)
+unsigned hyst_events(const hyst_tcm_t *S) { return S != NULL ? S->events : 0u; }
+
+void hyst_clear_events(hyst_tcm_t *S)
 {
-    size_t i;
-    /* The keyed search needs +0 where a TP is zero; snapshots of earlier
-     * versions may hold -0 (an equal value: nothing else changes). */
-    for (i = 0u; i < S->n_ltp; ++i) {
-        S->xltp[i] = TCM_NORM(S->xltp[i]);
+    if (S != NULL) {
+        S->events = 0u;
     }
-    for (i = 0u; i < S->n_rtp; ++i) {
-        S->xrtp[i] = TCM_NORM(S->xrtp[i]);
-    }
-    S->forgot = book->forgot;
-    S->forgot_level = book->forgot_level;
-    S->db_reach = book->db_reach;
-    S->db_err = book->db_err;
-    tcm_set_detour(S);
-    settle_idle(S, x);
-    S->y_prev = y;
 }
 
-hyst_status_t hyst_set_deadband(hyst_t *S, hyst_real_t width)
-{
-    if (S == NULL) {
-        return HYST_ERR_NULL;
-    }
-    if (!(width >= 0 && width - width == 0)) { /* negative, NaN or infinite */
-        return HYST_ERR_ARG;
-    }
-    S->deadband = width;
-    tcm_set_detour(S);
-    return HYST_OK;
-}
+size_t hyst_ltp_count(const hyst_tcm_t *S) { return S != NULL ? S->n_ltp - 1u : 0u; }
 
-hyst_real_t hyst_step(hyst_t *S, hyst_real_t x)
-{
-    return step(S, x);
-}
+size_t hyst_rtp_count(const hyst_tcm_t *S) { return S != NULL ? S->n_rtp : 0u; }
 
-hyst_status_t hyst_process(hyst_t *S, const hyst_real_t *x, hyst_real_t *y,
-                           size_t n)
-{
-    return tcm_process(S, x, y, n);
-}
+size_t hyst_tp_count(const hyst_tcm_t *S) { return S != NULL ? S->n_ltp - 1u + S->n_rtp : 0u; }
+
+int hyst_rising(const hyst_tcm_t *S) { return S != NULL && S->n_ltp > S->n_rtp; }
+
+size_t hyst_capacity(const hyst_tcm_t *S) { return S != NULL ? S->capacity : 0u; }

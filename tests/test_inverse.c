@@ -26,6 +26,7 @@ static hyst_real_t il[CAP], jl[CAP], ir[CAP], jr[CAP];
 static hyst_real_t sig[SAMPLES];
 static hyst_t H, Hinv;
 static rng_t rng;
+static hyst_curve_t Cinv; /* compensators' curves: kept by their instances */
 
 void setUp(void) { rng_seed(&rng, 777u); }
 void tearDown(void) {}
@@ -35,10 +36,11 @@ static double dabs(double v) { return v < 0 ? -v : v; }
 /* g of a polynomial-kind curve, in double, from its coefficients. */
 static double unit_g(const hyst_curve_t *c, double u)
 {
-    double acc = (double)c->a[0];
+    const hyst_curve_poly_t *p = c->kind == HYST_CURVE_POLY ? &c->u.poly : &c->u.poly_inv.fwd;
+    double acc = (double)p->a[0].HYST_R;
     unsigned i;
-    for (i = 1u; i < c->degree; ++i) {
-        acc = acc * u + (double)c->a[i];
+    for (i = 1u; i < p->degree; ++i) {
+        acc = acc * u + (double)p->a[i].HYST_R;
     }
     return acc * u;
 }
@@ -49,8 +51,8 @@ static double residual_at(const hyst_curve_t *fwd, const hyst_curve_t *inv, doub
 {
     const hyst_real_t er = (hyst_real_t)e;
     const double d = (double)hyst_curve_g(inv, er);
-    TEST_ASSERT_TRUE(d >= 0.0 && d <= (double)inv->span);
-    return dabs(unit_g(fwd, d / (double)inv->span) - (double)er) / range;
+    TEST_ASSERT_TRUE(d >= 0.0 && d <= (double)inv->u.poly_inv.span.HYST_R);
+    return dabs(unit_g(fwd, d / (double)inv->u.poly_inv.span.HYST_R) - (double)er) / range;
 }
 
 /* Worst residual over a grid, random points, and 2^-1 .. 2^-50 of the range
@@ -274,8 +276,8 @@ static void test_poly_inverse_accurate_in_x(void)
     }
     TEST_PRINTF("Eq. 20: worst |f0^-1(f0(x)) - x| = %g V", worst);
     TEST_ASSERT_TRUE(worst <= 40.0 * 10.0 * TOL_OF_RANGE);
-    TEST_ASSERT_EQUAL_FLOAT((float)fwd.lo, (float)hyst_curve_eval(&inv, fwd.y_lo));
-    TEST_ASSERT_EQUAL_FLOAT((float)fwd.hi, (float)hyst_curve_eval(&inv, fwd.y_hi));
+    TEST_ASSERT_EQUAL_FLOAT((float)fwd.lo.HYST_R, (float)hyst_curve_eval(&inv, fwd.y_lo.HYST_R));
+    TEST_ASSERT_EQUAL_FLOAT((float)fwd.hi.HYST_R, (float)hyst_curve_eval(&inv, fwd.y_hi.HYST_R));
 }
 
 static void test_pwl_constructor_checks(void)
@@ -355,9 +357,10 @@ static void test_pwl_interpolation_is_safe_at_extreme_scales(void)
 static void assert_same_pwl(const hyst_curve_t *a, const hyst_curve_t *b)
 {
     TEST_ASSERT_EQUAL_INT(a->kind, b->kind);
-    TEST_ASSERT_TRUE(a->lo == b->lo && a->hi == b->hi && a->y_lo == b->y_lo &&
-                     a->y_hi == b->y_hi);
-    TEST_ASSERT_TRUE(a->px == b->px && a->py == b->py && a->n_points == b->n_points);
+    TEST_ASSERT_TRUE(a->lo.HYST_R == b->lo.HYST_R && a->hi.HYST_R == b->hi.HYST_R &&
+                     a->y_lo.HYST_R == b->y_lo.HYST_R && a->y_hi.HYST_R == b->y_hi.HYST_R);
+    TEST_ASSERT_TRUE(a->u.pwl.x.HYST_R == b->u.pwl.x.HYST_R &&
+                     a->u.pwl.y.HYST_R == b->u.pwl.y.HYST_R && a->u.pwl.n == b->u.pwl.n);
 }
 
 static void test_pwl_inverse_is_exact_and_involutive(void)
@@ -369,8 +372,8 @@ static void test_pwl_inverse_is_exact_and_involutive(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&c, x, y, 5u));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&inv, &c));
     TEST_ASSERT_EQUAL_INT(HYST_CURVE_PWL_INV, inv.kind);
-    TEST_ASSERT_EQUAL_FLOAT(-4.0f, (float)inv.lo);
-    TEST_ASSERT_EQUAL_FLOAT(6.5f, (float)inv.hi);
+    TEST_ASSERT_EQUAL_FLOAT(-4.0f, (float)inv.lo.HYST_R);
+    TEST_ASSERT_EQUAL_FLOAT(6.5f, (float)inv.hi.HYST_R);
     for (k = 0; k < 5; ++k) { /* exact at the breakpoints */
         TEST_ASSERT_TRUE(hyst_curve_eval(&inv, y[k]) == x[k]);
         TEST_ASSERT_TRUE(hyst_curve_eval(&c, x[k]) == y[k]);
@@ -391,25 +394,25 @@ static void test_poly_inverse_is_involutive(void)
     hyst_curve_t c, inv, back;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&c, &paper_eq20));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&inv, &c));
-    TEST_ASSERT_EQUAL_FLOAT((float)c.y_lo, (float)inv.lo);
-    TEST_ASSERT_EQUAL_FLOAT((float)c.y_hi, (float)inv.hi);
+    TEST_ASSERT_EQUAL_FLOAT((float)c.y_lo.HYST_R, (float)inv.lo.HYST_R);
+    TEST_ASSERT_EQUAL_FLOAT((float)c.y_hi.HYST_R, (float)inv.hi.HYST_R);
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&back, &inv));
     TEST_ASSERT_EQUAL_INT(HYST_CURVE_POLY, back.kind);
-    TEST_ASSERT_TRUE(back.lo == c.lo && back.hi == c.hi && back.y_lo == c.y_lo &&
-                     back.y_hi == c.y_hi && back.inv_span == c.inv_span);
-    TEST_ASSERT_EQUAL_MEMORY(c.a, back.a, sizeof c.a);
+    TEST_ASSERT_TRUE(back.lo.HYST_R == c.lo.HYST_R && back.hi.HYST_R == c.hi.HYST_R && back.y_lo.HYST_R == c.y_lo.HYST_R &&
+                     back.y_hi.HYST_R == c.y_hi.HYST_R && back.unit.HYST_R == c.unit.HYST_R);
+    TEST_ASSERT_EQUAL_MEMORY(&c.u.poly, &back.u.poly, sizeof c.u.poly);
 }
 
 static void test_init_inverse_checks(void)
 {
     hyst_poly_t f = paper_eq20;
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(NULL, &f, il, jl, ir, jr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(&Hinv, NULL, il, jl, ir, jr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(&Hinv, &f, il, jl, NULL, jr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_CAPACITY, hyst_init_inverse(&Hinv, &f, il, jl, ir, jr, 1u));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(NULL, &Cinv, &f, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(&Hinv, &Cinv, NULL, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(&Hinv, &Cinv, &f, il, jl, NULL, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CAPACITY, hyst_init_inverse(&Hinv, &Cinv, &f, il, jl, ir, jr, 1u));
     f.coeffs[0] = HYST_REAL_C(-1.0); /* -x^3 + ...: falls on [0, 40] */
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_INCREASING, hyst_init_inverse(&Hinv, &f, il, jl, ir, jr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &paper_eq20, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_INCREASING, hyst_init_inverse(&Hinv, &Cinv, &f, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, &paper_eq20, il, jl, ir, jr, CAP));
     TEST_ASSERT_EQUAL_FLOAT(0.0f, (float)hyst_output(&Hinv));
     TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.58517f, (float)hyst_input(&Hinv));
 }
@@ -417,15 +420,15 @@ static void test_init_inverse_checks(void)
 /* Desired outputs beyond [f0(lo), f0(hi)]: clamped, reported, drive at the ends. */
 static void test_out_of_range_desired_output_is_clamped(void)
 {
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &paper_eq20, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, &paper_eq20, il, jl, ir, jr, CAP));
     TEST_ASSERT_EQUAL_FLOAT(40.0f, (float)hyst_step(&Hinv, HYST_REAL_C(7.0)));
     TEST_ASSERT_EQUAL_INT(HYST_WARN_CLAMPED, hyst_status(&Hinv));
     TEST_ASSERT_EQUAL_UINT(HYST_EVENT_CLAMPED, hyst_events(&Hinv));
     /* on the major falling branch, y(20) = f0(40) - f0(20) + f0(0) */
     TEST_ASSERT_FLOAT_WITHIN(1e-4f, 20.0f,
-                             (float)hyst_step(&Hinv, hyst_poly_eval(&paper_eq20, 40) -
-                                                     hyst_poly_eval(&paper_eq20, 20) +
-                                                     hyst_poly_eval(&paper_eq20, 0)));
+                             (float)hyst_step(&Hinv, (hyst_real_t)hyst_poly_eval(&paper_eq20, 40) -
+                                                     (hyst_real_t)hyst_poly_eval(&paper_eq20, 20) +
+                                                     (hyst_real_t)hyst_poly_eval(&paper_eq20, 0)));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&Hinv));
     TEST_ASSERT_EQUAL_FLOAT(0.0f, (float)hyst_step(&Hinv, HYST_REAL_C(-3.0)));
     TEST_ASSERT_EQUAL_INT(HYST_WARN_CLAMPED, hyst_status(&Hinv));
@@ -462,7 +465,7 @@ static void test_drive_stays_in_range_after_a_merge(void)
                                      HYST_REAL_C(0.043137254901960853)};
     unsigned i;
     int full = 0;
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &cubic, il, jl, ir, jr, 2u));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, &cubic, il, jl, ir, jr, 2u));
     for (i = 0u; i < sizeof yd / sizeof yd[0]; ++i) {
         const hyst_real_t x = drive_in_range(yd[i]);
         full |= hyst_status(&Hinv) == HYST_WARN_FULL;
@@ -482,7 +485,7 @@ static void test_drive_stays_in_range_with_small_memory(void)
     for (cap = 2u; cap <= 4u; ++cap) {
         long i;
         hyst_real_t yd = 0;
-        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &cubic, il, jl, ir, jr, cap));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, &cubic, il, jl, ir, jr, cap));
         for (i = 0; i < 200000L; ++i) {
             if (rng_below(&rng, 4u) == 0u) {
                 yd = (hyst_real_t)rng_range(&rng, -1.0, 1.0);
@@ -502,7 +505,7 @@ static void test_drive_stays_in_range_with_small_memory(void)
 static double round_trip(const hyst_curve_t *fwd, long n)
 {
     hyst_curve_t inv;
-    const double range = (double)fwd->y_hi - (double)fwd->y_lo;
+    const double range = (double)fwd->y_hi.HYST_R - (double)fwd->y_lo.HYST_R;
     double worst = 0.0;
     long i;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&inv, fwd));
@@ -524,7 +527,7 @@ static void round_trip_all(const hyst_curve_t *fwd, const char *name)
     int kind;
     for (kind = 0; kind < SIG_KINDS; ++kind) {
         double err;
-        fill_signal(kind, &rng, (double)fwd->y_lo, (double)fwd->y_hi, sig, SAMPLES);
+        fill_signal(kind, &rng, (double)fwd->y_lo.HYST_R, (double)fwd->y_hi.HYST_R, sig, SAMPLES);
         err = round_trip(fwd, SAMPLES);
         TEST_PRINTF("%s, %s: max |H(H^-1(y_d)) - y_d| / range = %g", name,
                     signal_name[kind], err);
@@ -545,16 +548,16 @@ static void flat_pass(const hyst_poly_t *f0, double y_flat, int rising, double *
     size_t tps_inv = 0u, tps_fwd = 0u;
     long k, n = 0;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&fwd, f0));
-    range = (double)fwd.y_hi - (double)fwd.y_lo;
+    range = (double)fwd.y_hi.HYST_R - (double)fwd.y_lo.HYST_R;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&H, &fwd, xl, yl, xr, yr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, f0, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, f0, il, jl, ir, jr, CAP));
     if (!rising) { /* to the top first: the falling pass starts at hi */
-        (void)hyst_step(&H, hyst_step(&Hinv, fwd.y_hi));
+        (void)hyst_step(&H, hyst_step(&Hinv, fwd.y_hi.HYST_R));
     }
     for (k = 0; k < 3000L + 2L * TINY_STEPS; ++k) {
         double off, yd, x, y;
         if (k < 1000L) { /* from the end of the range to within 1e-3 of y_flat */
-            const double from = rising ? (double)fwd.y_lo : (double)fwd.y_hi;
+            const double from = rising ? (double)fwd.y_lo.HYST_R : (double)fwd.y_hi.HYST_R;
             off = (from - y_flat) * (1.0 - (double)k / 1000.0) + (y_flat - from) * 1e-3;
         } else if (k < 1000L + TINY_STEPS) { /* 2^-10 .. 2^-TINY_STEPS of the range */
             off = (rising ? -1.0 : 1.0) * range * ldexp(1.0, -(int)(k - 1000L + 10L));
@@ -564,7 +567,7 @@ static void flat_pass(const hyst_poly_t *f0, double y_flat, int rising, double *
             off = (rising ? 1.0 : -1.0) * range *
                   ldexp(1.0, -(int)(1000L + 2L * TINY_STEPS - k + 10L));
         } else { /* on to the other end */
-            const double to = rising ? (double)fwd.y_hi : (double)fwd.y_lo;
+            const double to = rising ? (double)fwd.y_hi.HYST_R : (double)fwd.y_lo.HYST_R;
             off = (to - y_flat) * (double)(k - 1000L - 2L * TINY_STEPS) / 2000.0;
         }
         off = k == 0 ? off : rising ? (off > prev_off ? off : prev_off)
@@ -575,7 +578,7 @@ static void flat_pass(const hyst_poly_t *f0, double y_flat, int rising, double *
         y = (double)hyst_step(&H, (hyst_real_t)x);
         TEST_ASSERT_TRUE(rising ? x >= prev_x : x <= prev_x); /* the drive never turns */
         yd = (double)(hyst_real_t)yd; /* what the engines saw, clamped */
-        yd = yd < (double)fwd.y_lo ? (double)fwd.y_lo : yd > (double)fwd.y_hi ? (double)fwd.y_hi : yd;
+        yd = yd < (double)fwd.y_lo.HYST_R ? (double)fwd.y_lo.HYST_R : yd > (double)fwd.y_hi.HYST_R ? (double)fwd.y_hi.HYST_R : yd;
         *worst = dabs(y - yd) / range > *worst ? dabs(y - yd) / range : *worst;
         prev_x = x;
         if (k == 0) { /* the falling pass turns at the top here: a true turning point */
@@ -647,7 +650,7 @@ static void test_inverse_pi_matches_inverse_tcm(void)
     for (kind = 0; kind < SIG_KINDS; ++kind) {
         double worst = 0.0;
         long i;
-        fill_signal(kind, &rng, (double)c.y_lo, (double)c.y_hi, sig, SAMPLES);
+        fill_signal(kind, &rng, (double)c.y_lo.HYST_R, (double)c.y_hi.HYST_R, sig, SAMPLES);
         TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&Hinv, &inv, il, jl, ir, jr, CAP));
         hyst_pi_reset(&Pinv);
         for (i = 0; i < SAMPLES; ++i) {

@@ -69,6 +69,7 @@ static void test_parameters_are_checked_with_specific_codes(void)
     hyst_real_t r[3] = {0, HYST_REAL_C(0.2), HYST_REAL_C(0.5)};
     hyst_real_t w[3] = {HYST_REAL_C(1.0), HYST_REAL_C(0.5), HYST_REAL_C(-0.2)};
     hyst_pi_t untouched;
+    hyst_curve_t loading;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_pi_init(&P, r, w, z, 3u));
     untouched = P;
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_pi_init(NULL, r, w, z, 3u));
@@ -94,7 +95,7 @@ static void test_parameters_are_checked_with_specific_codes(void)
     TEST_ASSERT_EQUAL_MEMORY(&untouched, &P, sizeof P);
     TEST_ASSERT_EQUAL_INT(HYST_ERR_WEIGHTS, hyst_pi_inverse_params(r, w, 3u, r_inv, w_inv));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_WEIGHTS,
-                          hyst_pi_loading_curve(&S.curve, r, w, 3u, 1, bx, by));
+                          hyst_pi_loading_curve(&loading, r, w, 3u, 1, bx, by));
 }
 
 /* Two operators, r = (0, 0.5), w = (1, 2): every rule by hand. */
@@ -191,7 +192,7 @@ static double tcm_vs_pi(const hyst_real_t *r, const hyst_real_t *w, size_t n_ops
         worst = d > worst ? d : worst;
     }
     TEST_ASSERT_EQUAL_UINT(0u, hyst_events(&S));
-    *range = (double)c.y_hi - (double)c.y_lo;
+    *range = (double)c.y_hi.HYST_R - (double)c.y_lo.HYST_R;
     return worst;
 }
 

@@ -8,7 +8,7 @@
 
 #define CAP 16
 #define BUF HYST_SNAPSHOT_SIZE(CAP)
-#define R HYST_SNAPSHOT_REAL_OCTETS
+#define R ((unsigned)sizeof(hyst_real_t)) /* octets per real of the variant */
 
 typedef struct {
     hyst_t S;
@@ -101,9 +101,10 @@ static void test_layout_is_octets_little_endian_ieee(void)
     TEST_ASSERT_EQUAL_HEX8(0x53, snap[2]);
     TEST_ASSERT_EQUAL_HEX8(0x53, snap[3]);
     TEST_ASSERT_EQUAL_HEX8(HYST_SNAPSHOT_VERSION, snap[4]);
-    TEST_ASSERT_EQUAL_HEX8(2, snap[4]);
+    TEST_ASSERT_EQUAL_HEX8(3, snap[4]);
     TEST_ASSERT_EQUAL_HEX8(0, snap[5]);
     TEST_ASSERT_EQUAL_HEX8(R, snap[6]);
+    TEST_ASSERT_EQUAL_HEX8(HYST_DEFAULT_VARIANT, snap[7]);
     TEST_ASSERT_EQUAL_HEX8(len, snap[8]);
     TEST_ASSERT_EQUAL_HEX8(0, snap[9]);
     TEST_ASSERT_EQUAL_HEX8(1, snap[16]); /* n_ltp: A0 */
@@ -167,7 +168,7 @@ static int expected_for_offset(size_t i)
     if (i < 4u || (i >= 8u && i < 12u) || (i >= 16u && i < 24u)) {
         return HYST_ERR_FORMAT; /* magic; length field; counts (length then disagrees) */
     }
-    if (i >= 4u && i < 7u) {
+    if (i >= 4u && i < 8u) { /* version, real width, variant */
         return HYST_ERR_VERSION;
     }
     return HYST_ERR_CRC;

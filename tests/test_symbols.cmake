@@ -1,6 +1,9 @@
 # The nm check (ctest "symbols"): the library archive must not reference the
 # heap, stdio, process exit or assert, and must define no writable global data
-# (no global state). Runs on the host for every preset, with the preset's nm
+# (no global state); its public functions are named hyst_*, and no static
+# function name stands in two of its objects (the engine instantiated per
+# variant generates names with the variant's prefix).
+# Runs on the host for every preset, with the preset's nm
 # (arm-none-eabi-nm for the Cortex-M4F build).
 #   cmake -DNM=<nm> -DLIB=<libhyst.a> [-DLIB2=...] -P test_symbols.cmake
 cmake_policy(SET CMP0057 NEW) # if(... IN_LIST ...)
@@ -22,6 +25,8 @@ foreach(lib IN ITEMS ${LIB} ${LIB2})
     set(undefined "")
     set(defined_hyst 0)
     set(sanitized 0)
+    set(statics "")
+    set(twice "")
     foreach(line IN LISTS lines)
         if(line MATCHES "^ *U _?([A-Za-z0-9_.$]+)$")
             list(APPEND undefined ${CMAKE_MATCH_1})
@@ -30,6 +35,15 @@ foreach(lib IN ITEMS ${LIB} ${LIB2})
             endif()
         elseif(line MATCHES "^[0-9a-fA-F]+ T _?hyst_")
             math(EXPR defined_hyst "${defined_hyst} + 1")
+        endif()
+        if(line MATCHES "^[0-9a-fA-F]+ t _?([A-Za-z_][A-Za-z0-9_]*)")
+            if(CMAKE_MATCH_1 IN_LIST statics)
+                list(APPEND twice ${CMAKE_MATCH_1})
+            endif()
+            list(APPEND statics ${CMAKE_MATCH_1})
+        elseif(line MATCHES "^[0-9a-fA-F]+ T _?([A-Za-z_][A-Za-z0-9_]*)" AND
+               NOT CMAKE_MATCH_1 MATCHES "^hyst_")
+            list(APPEND twice "${CMAKE_MATCH_1} (public, not hyst_*)")
         endif()
     endforeach()
     # Writable data (B/b bss, D/d data, C common, S/s small data); sanitizer
@@ -57,6 +71,11 @@ foreach(lib IN ITEMS ${LIB} ${LIB2})
     endif()
     if(bad)
         message(SEND_ERROR "symbols: ${lib} references forbidden symbols: ${bad}")
+        set(status 1)
+    endif()
+    if(twice)
+        list(REMOVE_DUPLICATES twice)
+        message(SEND_ERROR "symbols: ${lib}: static functions in two objects, or unprefixed public ones: ${twice}")
         set(status 1)
     endif()
     if(writable)

@@ -152,12 +152,115 @@ static void test_nan_and_inf_samples_leave_state_untouched(void)
         TEST_ASSERT_EQUAL_INT(HYST_ERR_NONFINITE, hyst_status(&S));
         TEST_ASSERT_EQUAL_UINT(before.n_ltp, S.n_ltp);
         TEST_ASSERT_EQUAL_UINT(before.n_rtp, S.n_rtp);
-        TEST_ASSERT_EQUAL_MEMORY(&before.window, &S.window, sizeof S.window);
+        TEST_ASSERT_EQUAL_MEMORY(&before.xltp.HYST_R[0], &S.xltp.HYST_R[0], sizeof(hyst_real_t));
+        TEST_ASSERT_TRUE(hyst_input(&before) == hyst_input(&S));
         TEST_ASSERT_EQUAL_MEMORY(&before.y_prev, &S.y_prev, sizeof S.y_prev);
     }
     TEST_ASSERT_EQUAL_UINT(HYST_EVENT_NONFINITE, hyst_events(&S));
     /* a valid sample afterwards continues as if the bad ones never came */
-    TEST_ASSERT_EQUAL_INT(HYST_OK, (hyst_step(&S, HYST_REAL_C(21.0)), hyst_status(&S)));
+    {
+        static hyst_real_t t[4][CAP];
+        hyst_t T;
+        hyst_real_t ys, yt;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&T, &paper_eq20, t[0], t[1], t[2], t[3], CAP));
+        (void)hyst_step(&T, HYST_REAL_C(35.0));
+        (void)hyst_step(&T, HYST_REAL_C(5.0));
+        (void)hyst_step(&T, HYST_REAL_C(20.0));
+        for (i = 0; i < 40; ++i) { /* on along the branch, then back and forth */
+            const hyst_real_t x = (hyst_real_t)(21.0 + (double)(i % 7) - (double)(i % 3));
+            ys = hyst_step(&S, x);
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&S));
+            yt = hyst_step(&T, x);
+            TEST_ASSERT_EQUAL_MEMORY(&yt, &ys, sizeof ys);
+        }
+    }
+}
+
+/* The caller's view of the layout options is compared with the library's:
+ * a translation unit built with another HYST_MAX_DEGREE is refused before
+ * anything is written. */
+static void test_layout_mismatch_is_refused(void)
+{
+    hyst_t before;
+    hyst_curve_t c;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_with(&paper_eq20));
+    before = S;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_LAYOUT,
+                          HYST_DEFAULT_NAME_(init_)(&S, &paper_eq20, xl, yl, xr, yr, CAP,
+                                                    HYST_LAYOUT + 1ul));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &S, sizeof S);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_LAYOUT,
+                          HYST_DEFAULT_NAME_(curve_from_poly_)(&c, &paper_eq20, HYST_LAYOUT ^ 1ul));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&c, &paper_eq20));
+    c.layout ^= 1ul; /* a curve prepared by a library with other options */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_LAYOUT, hyst_init_curve(&S, &c, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_LAYOUT, hyst_curve_check(&c));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &S, sizeof S);
+}
+
+/* One array passed twice (or overlapping the instance) is refused. */
+static void test_overlapping_arrays_are_refused(void)
+{
+    static hyst_real_t m[4u * CAP];
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_OVERLAP, hyst_init(&S, &paper_eq20, m, m, m, m, 8u));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_OVERLAP,
+                          hyst_init(&S, &paper_eq20, m, m + CAP - 1u, m + 2u * CAP, m + 3u * CAP, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK,
+                          hyst_init(&S, &paper_eq20, m, m + CAP, m + 2u * CAP, m + 3u * CAP, CAP));
+}
+
+/* The NULL policy: status calls say HYST_ERR_NULL, per-sample calls and
+ * accessors return 0, void calls do nothing. None crashes. */
+static void test_null_policy_every_entry_point(void)
+{
+    hyst_real_t y = 0;
+    hyst_curve_t c;
+    TEST_ASSERT_TRUE(hyst_step(NULL, HYST_REAL_C(1.0)) == 0);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_process(NULL, &y, &y, 1u));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_process(NULL, NULL, NULL, 0u));
+    hyst_reset(NULL);
+    hyst_clear_events(NULL);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_status(NULL));
+    TEST_ASSERT_EQUAL_UINT(0u, hyst_events(NULL));
+    TEST_ASSERT_EQUAL_UINT(0u, (unsigned)hyst_tp_count(NULL));
+    TEST_ASSERT_EQUAL_UINT(0u, (unsigned)hyst_ltp_count(NULL));
+    TEST_ASSERT_EQUAL_UINT(0u, (unsigned)hyst_rtp_count(NULL));
+    TEST_ASSERT_EQUAL_UINT(0u, (unsigned)hyst_capacity(NULL));
+    TEST_ASSERT_EQUAL_INT(0, hyst_rising(NULL));
+    TEST_ASSERT_TRUE(hyst_output(NULL) == 0 && hyst_input(NULL) == 0 && hyst_error_bound(NULL) == 0);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_set_deadband(NULL, 0));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_from_poly(NULL, &paper_eq20));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_from_poly(&c, NULL));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_check(NULL));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_inverse(NULL, NULL));
+    TEST_ASSERT_TRUE(hyst_curve_eval(NULL, 1) == 0 && hyst_curve_g(NULL, 1) == 0);
+    TEST_ASSERT_TRUE(hyst_poly_eval(NULL, 1.0) == 0.0);
+}
+
+/* The f32, f64 and code variants live in one program, side by side. */
+static void test_variants_coexist(void)
+{
+    static float a32[4][CAP];
+    static double a64[4][CAP];
+    static hyst_code_word_t cx[2][CAP];
+    static float cy[2][CAP];
+    hyst_tcm_t s32, s64, sc;
+    float y32;
+    double y64;
+    float yc;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f32_init(&s32, &paper_eq20, a32[0], a32[1], a32[2], a32[3], CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_init(&s64, &paper_eq20, a64[0], a64[1], a64[2], a64[3], CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK,
+                          hyst_code_init(&sc, &paper_eq20, 0u, 4000u, cx[0], cy[0], cx[1], cy[1], CAP));
+    y32 = hyst_f32_step(&s32, 30.0f);
+    y64 = hyst_f64_step(&s64, 30.0);
+    yc = hyst_code_step(&sc, 3000u); /* 30 V */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-5, y64, (double)y32);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-5, y64, (double)yc);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, hyst_poly_eval(&paper_eq20, 30.0), y64);
+    /* another variant's instance is refused where it would be misread */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_f64_set_deadband(&s32, 0.1));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_code_set_deadband(&s64, 1u));
 }
 
 static void test_out_of_range_inputs_are_clamped_and_reported(void)
@@ -247,5 +350,9 @@ int main(void)
     RUN_TEST(test_block_call_matches_steps_and_reports_worst);
     RUN_TEST(test_reset_returns_to_a0);
     RUN_TEST(test_status_strings_are_distinct);
+    RUN_TEST(test_layout_mismatch_is_refused);
+    RUN_TEST(test_overlapping_arrays_are_refused);
+    RUN_TEST(test_null_policy_every_entry_point);
+    RUN_TEST(test_variants_coexist);
     return UNITY_END();
 }

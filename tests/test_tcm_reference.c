@@ -163,7 +163,7 @@ static void test_bipolar_domain_and_signed_zeros_match_reference(void)
         if (ref_tp_count(&ref) != (long)hyst_tp_count(&S)) {
             TEST_FAIL_MESSAGE("turning-point count differs from the reference");
         }
-        if (hyst_ltp_count(&S) > 0u && S.xltp[1] < 0) {
+        if (hyst_ltp_count(&S) > 0u && S.xltp.HYST_R[1] < 0) {
             ++negative_tps;
         }
     }

@@ -17,7 +17,7 @@ static rng_t rng;
 void setUp(void) { rng_seed(&rng, 12345u); }
 void tearDown(void) {}
 
-static double output_range(const hyst_t *S) { return (double)(S->curve.y_hi - S->curve.y_lo); }
+static double output_range(const hyst_t *S) { return (double)(S->y_hi.HYST_R - S->y_lo.HYST_R); }
 
 /* Drives S through n random samples (walk with occasional jumps). */
 static void random_history(hyst_t *S, rng_t *r, int n)
@@ -38,7 +38,7 @@ static void random_history(hyst_t *S, rng_t *r, int n)
 /* x of the current TP (where the present branch starts). */
 static hyst_real_t ctp_x(const hyst_t *S)
 {
-    return hyst_rising(S) ? S->xltp[S->n_ltp - 1u] : S->xrtp[S->n_rtp - 1u];
+    return hyst_rising(S) ? S->xltp.HYST_R[S->n_ltp - 1u] : S->xrtp.HYST_R[S->n_rtp - 1u];
 }
 
 /* Rule 2 and 3: any excursion inside the current branch's range returns to
@@ -107,7 +107,7 @@ static void test_loops_are_point_symmetric(void)
         }
         xa = hyst_input(&A);
         ya = hyst_output(&A);
-        limit = A.n_rtp > 0u ? A.xrtp[A.n_rtp - 1u] : HYST_REAL_C(40.0);
+        limit = A.n_rtp > 0u ? A.xrtp.HYST_R[A.n_rtp - 1u] : HYST_REAL_C(40.0);
         if ((double)(limit - xa) < 0.05) {
             continue;
         }
@@ -165,7 +165,7 @@ static void test_branch_depends_only_on_its_turning_point(void)
         (void)hyst_step(&B, HYST_REAL_C(39.0) < xk + 5 ? HYST_REAL_C(39.0) : xk + 5);
         ya0 = hyst_step(&A, xk);
         yb0 = hyst_step(&B, xk);
-        reach = A.xrtp[A.n_rtp - 1u] < B.xrtp[B.n_rtp - 1u] ? A.xrtp[A.n_rtp - 1u] : B.xrtp[B.n_rtp - 1u];
+        reach = A.xrtp.HYST_R[A.n_rtp - 1u] < B.xrtp.HYST_R[B.n_rtp - 1u] ? A.xrtp.HYST_R[A.n_rtp - 1u] : B.xrtp.HYST_R[B.n_rtp - 1u];
         tol = TOL_OF_RANGE * output_range(&A);
         for (i = 1; i < 10; ++i) {
             const hyst_real_t x = (hyst_real_t)((double)xk + ((double)reach - (double)xk) * i / 10.0);
@@ -195,7 +195,7 @@ static void test_repeated_samples_create_no_turning_point(void)
     (void)hyst_step(&A, HYST_REAL_C(25.0));
     (void)hyst_step(&A, HYST_REAL_C(22.0)); /* reversal: one RTP at 25 */
     TEST_ASSERT_EQUAL_UINT(1u, (unsigned)hyst_rtp_count(&A));
-    TEST_ASSERT_EQUAL_FLOAT(25.0f, (float)A.xrtp[0]);
+    TEST_ASSERT_EQUAL_FLOAT(25.0f, (float)A.xrtp.HYST_R[0]);
 }
 
 /* 12-bit DAC codes: Nu = 4096, arrays of Nu/2. Guard words around each array
@@ -304,7 +304,9 @@ static void test_full_array_forgets_innermost_loop(void)
     int i, fulls = 0;
     double lo = 0.0, hi = 40.0, y_ref;
     hyst_real_t y, x_prev = HYST_REAL_C(0.0), y_prev;
+    hyst_curve_t eq20; /* the instance's curve, for g */
     TEST_ASSERT_EQUAL_INT(HYST_OK, init_quantised(&A, cap));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&eq20, &paper_eq20));
     ref_init(&ref, paper_eq20_coeffs, 3u, 0.0, 40.0);
     y_prev = hyst_output(&A);
     for (i = 0; i < 40; ++i) { /* ever narrower nested loops */
@@ -312,10 +314,10 @@ static void test_full_array_forgets_innermost_loop(void)
         const hyst_real_t xr_ = (hyst_real_t)x;
         hyst_real_t outer_x[2 * CAP];
         size_t k, nl_before = A.n_ltp, nr_before = A.n_rtp;
-        const hyst_real_t l1_before = A.xltp[A.n_ltp - 1u];
+        const hyst_real_t l1_before = A.xltp.HYST_R[A.n_ltp - 1u];
         for (k = 0; k + 1u < cap; ++k) {
-            outer_x[k] = A.xltp[k];
-            outer_x[cap + k] = A.xrtp[k];
+            outer_x[k] = A.xltp.HYST_R[k];
+            outer_x[cap + k] = A.xrtp.HYST_R[k];
         }
         y_ref = ref_step(&ref, (double)xr_);
         y = hyst_step(&A, xr_);
@@ -323,22 +325,22 @@ static void test_full_array_forgets_innermost_loop(void)
         TEST_ASSERT_TRUE(fabs((double)y - y_ref) <= (double)hyst_error_bound(&A) + tol);
         TEST_ASSERT_TRUE(fabs((double)y - (double)y_prev) <= lmax * fabs(x - (double)x_prev) + tol);
         if (hyst_status(&A) == HYST_WARN_FULL) {
-            const hyst_real_t xv = A.xltp[cap - 1u], yv = A.yltp[cap - 1u];
+            const hyst_real_t xv = A.xltp.HYST_R[cap - 1u], yv = A.yltp.HYST_R[cap - 1u];
             ++fulls;
             TEST_ASSERT_EQUAL_UINT(cap, (unsigned)nl_before);
             TEST_ASSERT_EQUAL_UINT(cap, (unsigned)A.n_ltp);
             TEST_ASSERT_EQUAL_UINT(nr_before - 1u, (unsigned)A.n_rtp); /* R1 gone */
             for (k = 0; k + 1u < cap; ++k) { /* outer TPs untouched */
-                TEST_ASSERT_EQUAL_MEMORY(&outer_x[k], &A.xltp[k], sizeof xv);
-                TEST_ASSERT_EQUAL_MEMORY(&outer_x[cap + k], &A.xrtp[k], sizeof xv);
+                TEST_ASSERT_EQUAL_MEMORY(&outer_x[k], &A.xltp.HYST_R[k], sizeof xv);
+                TEST_ASSERT_EQUAL_MEMORY(&outer_x[cap + k], &A.xrtp.HYST_R[k], sizeof xv);
             }
             TEST_ASSERT_TRUE(xv >= l1_before && xv <= x_prev); /* V between L1 and P */
             /* V's branch passes through P: no step at this sample */
             TEST_ASSERT_DOUBLE_WITHIN(tol, (double)y_prev,
-                                      (double)(yv + hyst_curve_g(&A.curve, x_prev - xv)));
+                                      (double)(yv + hyst_curve_g(&eq20, x_prev - xv)));
             /* V lies on the falling branch of R2, now the RTP below it */
-            TEST_ASSERT_DOUBLE_WITHIN(tol, (double)A.yrtp[A.n_rtp - 1u] -
-                                               (double)hyst_curve_g(&A.curve, A.xrtp[A.n_rtp - 1u] - xv),
+            TEST_ASSERT_DOUBLE_WITHIN(tol, (double)A.yrtp.HYST_R[A.n_rtp - 1u] -
+                                               (double)hyst_curve_g(&eq20, A.xrtp.HYST_R[A.n_rtp - 1u] - xv),
                                       (double)yv);
             TEST_ASSERT_TRUE(hyst_error_bound(&A) > 0);
         }

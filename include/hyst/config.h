@@ -1,10 +1,30 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file config.h
- * @brief Compile-time configuration of hyst: real type, limits, hooks.
+ * @brief Every compile-time option of hyst, with its default.
  *
- * Every option has a default here. Override them with compiler definitions
- * (-DHYST_USE_DOUBLE) or collect them in a file of your own and build with
+ * Override an option with a compiler definition (-DHYST_MAX_DEGREE=5), or
+ * collect them in a file of your own and build with
  * -DHYST_CONFIG_FILE="my_hyst_config.h"; never edit the library sources.
+ * With CMake, set the cache variable of the same name: the hyst target then
+ * exports the definition to everything that links it.
+ *
+ * | option              | default | meaning                                                    | layout |
+ * |---------------------|---------|------------------------------------------------------------|--------|
+ * | HYST_USE_DOUBLE     | off     | the unsuffixed names (hyst_step, hyst_t...) mean f64, not f32 | no  |
+ * | HYST_ENABLE_F64     | 1       | the f64 variant exists (0: numbers are 4 bytes, no double) | yes    |
+ * | HYST_MAX_DEGREE     | 9       | highest polynomial degree of a curve (>= 1)                | yes    |
+ * | HYST_INV_KNOTS      | 16      | intervals of the start table of an inverted polynomial      | yes    |
+ * | HYST_INV_MAX_ITER   | 12      | bound on the work of an inverted polynomial per sample      | no     |
+ * | HYST_CODE_BITS      | 16      | widest DAC code of the code variant (1..24)                 | yes    |
+ * | HYST_MONOTONE_DEPTH | 20      | dyadic depth of the monotonicity proof at init              | no     |
+ * | HYST_NO_DOUBLE      | off     | init-time arithmetic in float (targets without double)     | no     |
+ * | HYST_KEYED_SEARCH   | 1       | search turning points by IEEE bit patterns (0 under -ffast-math) | no |
+ *
+ * "layout" options change the size of public structs. Every translation
+ * unit that includes hyst and the library itself must agree on them; the
+ * init functions compare the caller's HYST_LAYOUT with the library's and
+ * refuse a mismatch with HYST_ERR_LAYOUT (instead of corrupting memory).
  */
 #ifndef HYST_CONFIG_H
 #define HYST_CONFIG_H
@@ -13,53 +33,42 @@
 #include HYST_CONFIG_FILE
 #endif
 
-#include <stddef.h>
+#ifndef HYST_ENABLE_F64
+#define HYST_ENABLE_F64 1
+#endif
 
-/** Highest polynomial degree of f0 an instance can hold (at least 9). */
 #ifndef HYST_MAX_DEGREE
 #define HYST_MAX_DEGREE 9
 #endif
-#if HYST_MAX_DEGREE < 1
-#error "HYST_MAX_DEGREE must be at least 1"
+#if HYST_MAX_DEGREE < 1 || HYST_MAX_DEGREE > 63
+#error "HYST_MAX_DEGREE must be 1..63"
 #endif
 
-/**
- * @brief Real type of every sample and stored turning point.
- *
- * float by default (the DSP28335 and Cortex-M4F FPUs are single precision);
- * define HYST_USE_DOUBLE for reference-grade host builds.
- */
-#ifdef HYST_USE_DOUBLE
-typedef double hyst_real_t;
-#define HYST_REAL_C(v) (v)
-#else
-typedef float hyst_real_t;
-#define HYST_REAL_C(v) (v##f)
+#ifndef HYST_INV_KNOTS
+#define HYST_INV_KNOTS 16
+#endif
+#if HYST_INV_KNOTS < 1 || HYST_INV_KNOTS > 255
+#error "HYST_INV_KNOTS must be 1..255"
 #endif
 
-/**
- * @brief Real type of one-off computations (curve set-up at init).
- *
- * double by default so that coefficients in raw units (DAC codes) convert
- * without cancellation; define HYST_NO_DOUBLE on targets where double math
- * must not be linked (init then runs in hyst_real_t).
- */
-#ifdef HYST_NO_DOUBLE
-typedef hyst_real_t hyst_wide_t;
-#else
-typedef double hyst_wide_t;
+#ifndef HYST_INV_MAX_ITER
+#define HYST_INV_MAX_ITER 12
+#endif
+#if HYST_INV_MAX_ITER < 1
+#error "HYST_INV_MAX_ITER must be at least 1"
 #endif
 
-/**
- * @brief Search the turning points by the bit patterns of the reals.
- *
- * 1 (default): hyst_real_t values are compared as integers of the same size
- * in the binary search, one instruction fewer per probe on FPUs that move
- * flags (Cortex-M4F, C28x); exact for IEEE 754 binary32/binary64 whose byte
- * order is the integers' (every target hyst knows), and used only for those
- * formats. 0: compare reals. Off by default under -ffast-math, which need
- * not keep the sign of zero the search relies on.
- */
+#ifndef HYST_CODE_BITS
+#define HYST_CODE_BITS 16
+#endif
+#if HYST_CODE_BITS < 1 || HYST_CODE_BITS > 24
+#error "HYST_CODE_BITS must be 1..24"
+#endif
+
+#ifndef HYST_MONOTONE_DEPTH
+#define HYST_MONOTONE_DEPTH 20
+#endif
+
 #ifndef HYST_KEYED_SEARCH
 #if defined(__FAST_MATH__)
 #define HYST_KEYED_SEARCH 0
@@ -68,27 +77,23 @@ typedef double hyst_wide_t;
 #endif
 #endif
 
+#if defined(HYST_USE_DOUBLE) && !HYST_ENABLE_F64
+#error "HYST_USE_DOUBLE needs HYST_ENABLE_F64"
+#endif
+
+/**
+ * @brief Fingerprint of the layout options, as this translation unit sees
+ *        them (compared by every init with the library's own).
+ */
+#define HYST_LAYOUT                                                              \
+    (((unsigned long)HYST_MAX_DEGREE) | ((unsigned long)HYST_INV_KNOTS << 6) |   \
+     ((unsigned long)HYST_CODE_BITS << 14) | ((unsigned long)HYST_ENABLE_F64 << 19))
+
 /** Inline that the compiler may not decline: the per-sample path. */
 #if defined(__GNUC__) || defined(__clang__)
 #define HYST_INLINE static inline __attribute__((always_inline))
 #else
 #define HYST_INLINE static inline
-#endif
-
-/**
- * @brief Timing hooks around the per-sample computation (GPIO set/clear).
- *
- * Compiled out unless HYST_USE_TIMING_HOOK is defined; then the port provides
- * hyst_port_timing_begin()/hyst_port_timing_end() (see port/template).
- */
-#ifdef HYST_USE_TIMING_HOOK
-void hyst_port_timing_begin(void);
-void hyst_port_timing_end(void);
-#define HYST_TIMING_BEGIN() hyst_port_timing_begin()
-#define HYST_TIMING_END() hyst_port_timing_end()
-#else
-#define HYST_TIMING_BEGIN() ((void)0)
-#define HYST_TIMING_END() ((void)0)
 #endif
 
 #endif /* HYST_CONFIG_H */

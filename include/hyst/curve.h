@@ -1,22 +1,29 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file curve.h
  * @brief The major ascending curve f0 and the branch shape g derived from it.
  *
  * A TCM needs one function of its curve: the branch shape
- * g(d) = f0(lo + d) - f0(lo), d in [0, hi - lo] (METHOD.md section 3).
- * hyst_curve_t holds it ready for per-sample use, in one of four kinds:
+ * g(d) = f0(lo + d) - f0(lo), d in [0, hi - lo] (docs/theory.md).
+ * hyst_curve_t holds it ready for per-sample use, as a tagged union of four
+ * kinds:
  *  - polynomial: shifted to lo and scaled to u = d / (hi - lo) in [0, 1]
  *    once, at set-up, in hyst_wide_t precision; one Horner evaluation inline;
  *  - piecewise linear (breakpoints + values, or a PI loading curve, pi.h):
  *    binary search for the segment, exact at the breakpoints;
  *  - the inverses of both (hyst_curve_inverse()), for a compensator: the
- *    same engine on f0^-1 (METHOD.md section 8, inverse.h).
+ *    same engine on f0^-1 (inverse.h).
+ *
+ * A curve is prepared for one real variant (f32 or f64): its numbers have
+ * that type. It may be const, live in flash and serve several instances; an
+ * instance keeps a pointer to it (and a copy of what its per-sample path
+ * needs), so it must outlive them, unchanged.
  */
 #ifndef HYST_CURVE_H
 #define HYST_CURVE_H
 
-#include "hyst/config.h"
 #include "hyst/status.h"
+#include "hyst/types.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -27,108 +34,97 @@ extern "C" {
  *
  * Coefficients are given HIGHEST POWER FIRST, as in the paper's Eq. 20 and as
  * numpy/MATLAB polyfit print them: f0(x) = coeffs[0] x^n + ... + coeffs[n].
- * Only the first degree + 1 entries are read. Example (paper, Eq. 20):
+ * Only the first degree + 1 entries are read. The same description serves
+ * every variant. Example (paper, Eq. 20):
  * @code
- * static const hyst_poly_t f0 = { 3, 0.0f, 40.0f,
- *     { -6.1876e-6f, 1.1949e-3f, 8.6444e-2f, 5.8517e-1f } };
+ * static const hyst_poly_t f0 = { 3, 0.0, 40.0,
+ *     { -6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1 } };
  * @endcode
  */
 typedef struct hyst_poly {
     unsigned degree;   /**< n, 1..HYST_MAX_DEGREE */
-    hyst_real_t lo;    /**< lower end of the identified input range */
-    hyst_real_t hi;    /**< upper end, hi > lo */
-    hyst_real_t coeffs[HYST_MAX_DEGREE + 1]; /**< c_n ... c_0, highest power first */
+    hyst_wide_t lo;    /**< lower end of the identified input range */
+    hyst_wide_t hi;    /**< upper end, hi > lo */
+    hyst_wide_t coeffs[HYST_MAX_DEGREE + 1]; /**< c_n ... c_0, highest power first */
 } hyst_poly_t;
-
-/**
- * @brief Work per sample of an inverted polynomial (bound).
- *
- * HYST_CURVE_POLY_INV evaluates g^-1 by at most 2 HYST_INV_MAX_ITER
- * bisections of a tabulated bracket, each one evaluation of f0 (together the
- * multiply-adds of HYST_INV_MAX_ITER evaluations of f0 and f0'), and at most
- * ten divisions. g^-1 is non-decreasing in its argument.
- * See docs/pi_and_inverse.md for the measured worst error.
- */
-#ifndef HYST_INV_MAX_ITER
-#define HYST_INV_MAX_ITER 12
-#endif
-#if HYST_INV_MAX_ITER < 1
-#error "HYST_INV_MAX_ITER must be at least 1"
-#endif
-
-/**
- * @brief Intervals of the start table of an inverted polynomial.
- *
- * g^-1 is tabulated at init at HYST_INV_KNOTS + 1 equally spaced outputs;
- * each sample starts Newton inside the bracket of its table interval.
- */
-#ifndef HYST_INV_KNOTS
-#define HYST_INV_KNOTS 16
-#endif
-#if HYST_INV_KNOTS < 1
-#error "HYST_INV_KNOTS must be at least 1"
-#endif
 
 /** @brief Kinds of curve the engine can run on. */
 typedef enum hyst_curve_kind {
     HYST_CURVE_POLY = 1,     /**< polynomial f0, Horner's rule (inline) */
     HYST_CURVE_PWL = 2,      /**< piecewise-linear f0, binary search */
-    HYST_CURVE_POLY_INV = 3, /**< f0^-1 of a polynomial: bracketed Newton */
+    HYST_CURVE_POLY_INV = 3, /**< f0^-1 of a polynomial: monotone bisection */
     HYST_CURVE_PWL_INV = 4   /**< f0^-1 of a piecewise-linear f0: exact */
 } hyst_curve_kind_t;
 
 /**
- * @brief Branch shape g of a curve, ready for per-sample use.
+ * @brief Polynomial branch shape on u in [0, 1]:
+ *        G(u) = f0(lo + u (hi - lo)) - f0(lo) = u (a[0] u^(n-1) + ... + a[n-1]).
+ */
+typedef struct hyst_curve_poly {
+    unsigned degree;                 /**< n */
+    hyst_num_t a[HYST_MAX_DEGREE];   /**< a[0] multiplies u^n */
+} hyst_curve_poly_t;
+
+/**
+ * @brief A prepared curve: its kind, its variant and the data of the kind.
  *
- * Filled by a hyst_curve_* constructor; treat as opaque. Polynomial kinds
- * are self-contained (no pointers): they may be copied or stored in flash.
- * Piecewise-linear kinds point at the caller's breakpoint and value arrays,
- * which must stay alive and unchanged as long as the curve (or an instance
- * initialised with it) is used.
- *
+ * Filled by a constructor below; treat as read-only. The first three
+ * members sit at the same offsets whatever the layout options, so a curve
+ * built with other options is recognised and refused (HYST_ERR_LAYOUT).
  * lo, hi is the domain of THIS curve and y_lo, y_hi its values there: for an
  * inverse curve the domain is [f0(lo), f0(hi)] and the values lo, hi.
  */
 typedef struct hyst_curve {
-    int kind;              /**< hyst_curve_kind_t */
-    unsigned degree;       /**< polynomial degree n (polynomial kinds) */
-    /** degree of the inline Horner path of hyst_curve_g_unit(): n for POLY,
-     *  0 for the kinds evaluated out of line (the per-sample dispatch) */
-    unsigned horner;
-    hyst_real_t lo, hi;    /**< domain of the curve */
-    hyst_real_t y_lo;      /**< curve value at lo */
-    hyst_real_t y_hi;      /**< curve value at hi */
-    /** argument scale of hyst_curve_g_unit(): 1 / (hi - lo) for POLY, 1 for
-     *  the other kinds (their g takes d itself) */
-    hyst_real_t inv_span;
-    /** polynomial kinds: f0(lo + s u) - f0(lo) = u (a[0] u^(n-1) + ... + a[n-1]),
-     *  s = input span of f0 */
-    hyst_real_t a[HYST_MAX_DEGREE];
-    hyst_real_t span;       /**< POLY_INV: input span s of f0 (u -> d) */
-    hyst_real_t knot_scale; /**< POLY_INV: HYST_INV_KNOTS / (f0(hi) - f0(lo)) */
-    /** POLY_INV: u where g(u span) = k / knot_scale, k = 0..HYST_INV_KNOTS */
-    hyst_real_t knot_u[HYST_INV_KNOTS + 1];
-    const hyst_real_t *px; /**< PWL: caller's breakpoints (PWL_INV: values) */
-    const hyst_real_t *py; /**< PWL: caller's values (PWL_INV: breakpoints) */
-    size_t n_points;       /**< PWL: entries of px and py, >= 2 */
+    unsigned kind;         /**< hyst_curve_kind_t */
+    unsigned variant;      /**< HYST_VARIANT_F32 or HYST_VARIANT_F64: type of the numbers */
+    unsigned long layout;  /**< HYST_LAYOUT of the library that prepared it */
+    hyst_num_t lo, hi;     /**< domain */
+    hyst_num_t y_lo, y_hi; /**< values at lo and hi */
+    /** argument scale of g: 1 / (hi - lo) for POLY (g takes u), 1 for the
+     *  other kinds (g takes d itself) */
+    hyst_num_t unit;
+    union {
+        hyst_curve_poly_t poly; /**< POLY */
+        struct {
+            hyst_curve_poly_t fwd;  /**< the forward polynomial's G */
+            hyst_num_t span;        /**< input span of f0 (u -> d) */
+            hyst_num_t knot_scale;  /**< HYST_INV_KNOTS / (f0(hi) - f0(lo)) */
+            /** u where G(u) = k / knot_scale, k = 0..HYST_INV_KNOTS */
+            hyst_num_t knot_u[HYST_INV_KNOTS + 1];
+        } poly_inv; /**< POLY_INV */
+        struct {
+            hyst_cptr_t x;  /**< the curve's breakpoints (caller's array) */
+            hyst_cptr_t y;  /**< its values (caller's array) */
+            size_t n;       /**< points, >= 2 */
+        } pwl; /**< PWL and PWL_INV (for PWL_INV, x are f0's values) */
+    } u;
 } hyst_curve_t;
 
 /**
+ * @name Polynomial curve
  * @brief Validates a polynomial f0 and prepares its branch shape.
  *
  * Checks, in this order: NULL pointers, degree in 1..HYST_MAX_DEGREE, finite
- * lo < hi, finite coefficients (and a finite f0 over the domain), and that f0
- * is increasing on [lo, hi] (its slope is never negative; isolated zeros such
- * as x^2 at 0 are accepted). @p curve is written only on success.
- *
- * @param[out] curve  prepared curve.
- * @param[in]  f0     polynomial, highest power first.
- * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_DEGREE, HYST_ERR_DOMAIN,
- *         HYST_ERR_COEFF or HYST_ERR_NOT_INCREASING.
+ * lo < hi, finite coefficients (and a finite f0 over the domain, in the
+ * variant's type), and that f0 is increasing on [lo, hi] (its slope is never
+ * negative; isolated zeros such as x^2 at 0 are accepted). @p curve is
+ * written only on success. Arguments: curve (out), f0 (highest power first).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT, HYST_ERR_DEGREE,
+ *         HYST_ERR_DOMAIN, HYST_ERR_COEFF or HYST_ERR_NOT_INCREASING.
  */
-hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0);
+/**@{*/
+hyst_status_t hyst_f32_curve_from_poly_(hyst_curve_t *curve, const hyst_poly_t *f0,
+                                        unsigned long layout);
+#define hyst_f32_curve_from_poly(curve, f0) hyst_f32_curve_from_poly_((curve), (f0), HYST_LAYOUT)
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_from_poly_(hyst_curve_t *curve, const hyst_poly_t *f0,
+                                        unsigned long layout);
+#define hyst_f64_curve_from_poly(curve, f0) hyst_f64_curve_from_poly_((curve), (f0), HYST_LAYOUT)
+#endif
+/**@}*/
 
 /**
+ * @name Piecewise-linear curve
  * @brief Prepares a piecewise-linear f0 through caller-owned points.
  *
  * f0 interpolates (x[i], y[i]), i = 0..n-1, linearly; the domain is
@@ -140,53 +136,77 @@ hyst_status_t hyst_curve_from_poly(hyst_curve_t *curve, const hyst_poly_t *f0);
  * (HYST_ERR_COEFF), values non-decreasing with y[n-1] > y[0]
  * (HYST_ERR_NOT_INCREASING; flat pieces are allowed here, but such a curve
  * has no inverse). @p curve is written only on success.
- *
- * @param[out] curve prepared curve.
- * @param[in]  x     n breakpoints, strictly increasing.
- * @param[in]  y     n values f0(x[i]), non-decreasing.
- * @param[in]  n     number of points, >= 2.
- * @return HYST_OK or the error named above.
  */
-hyst_status_t hyst_curve_from_pwl(hyst_curve_t *curve, const hyst_real_t *x,
-                                  const hyst_real_t *y, size_t n);
+/**@{*/
+hyst_status_t hyst_f32_curve_from_pwl_(hyst_curve_t *curve, const float *x, const float *y,
+                                       size_t n, unsigned long layout);
+#define hyst_f32_curve_from_pwl(curve, x, y, n) \
+    hyst_f32_curve_from_pwl_((curve), (x), (y), (n), HYST_LAYOUT)
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_from_pwl_(hyst_curve_t *curve, const double *x, const double *y,
+                                       size_t n, unsigned long layout);
+#define hyst_f64_curve_from_pwl(curve, x, y, n) \
+    hyst_f64_curve_from_pwl_((curve), (x), (y), (n), HYST_LAYOUT)
+#endif
+/**@}*/
 
 /**
- * @brief Prepares the inverse curve f0^-1, for a compensator (METHOD.md 8).
+ * @brief Prepares the inverse curve f0^-1, for a compensator (inverse.h).
  *
- * A TCM initialised with the result (hyst_init_curve()) is the inverse model:
- * its input is the desired output on [f0(lo), f0(hi)], its output the input
- * that produces it. The engine clamps desired outputs outside that range and
- * reports HYST_WARN_CLAMPED.
+ * A TCM initialised with the result (hyst_*_init_curve()) is the inverse
+ * model: its input is the desired output on [f0(lo), f0(hi)], its output the
+ * input that produces it. The engine clamps desired outputs outside that
+ * range and reports HYST_WARN_CLAMPED.
  *  - polynomial: g^-1 by bisection, <= 2 HYST_INV_MAX_ITER steps, monotone;
  *  - piecewise linear: exact (the same points with the axes swapped; the
  *    inverse keeps pointing at the caller's arrays);
  *  - an inverse curve: gives back the forward curve.
  * The forward curve must be strictly increasing: a PWL f0 with a flat piece,
  * or a polynomial with a flat stretch wider than rounding, is refused.
+ * The inverse has the variant of @p fwd.
  *
  * @param[out] inv prepared inverse curve (may be the same object as @p fwd).
- * @param[in]  fwd curve prepared by a hyst_curve_* constructor.
- * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (not a prepared curve) or
- *         HYST_ERR_NOT_INVERTIBLE.
+ * @param[in]  fwd curve prepared by a constructor.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (not a prepared curve),
+ *         HYST_ERR_LAYOUT or HYST_ERR_NOT_INVERTIBLE.
  */
 hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
 
 /**
- * @brief Checks that a curve was prepared by a hyst_curve_* constructor.
+ * @brief Checks that a curve was prepared by a constructor of this library.
  *
- * A cheap structural check (kind, domain, pointers), not a re-validation.
- * @param[in] curve curve to check.
- * @return HYST_OK, HYST_ERR_NULL or HYST_ERR_ARG.
+ * A cheap structural check (layout, variant, kind, domain, pointers), not a
+ * re-validation.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT or HYST_ERR_ARG.
  */
 hyst_status_t hyst_curve_check(const hyst_curve_t *curve);
 
 /**
- * @brief The curve itself, f(x) = y_lo + g(x - lo), for tools and tests.
- * @param[in] curve prepared curve.
- * @param[in] x     point of the domain (clamped to it).
- * @return f(x); for an inverse curve, the input that f0 maps to x.
+ * @name Evaluation
+ * @brief The curve itself, f(x) = y_lo + g(x - lo), for tools and tests
+ *        (x clamped to the domain; for an inverse curve, the input that f0
+ *        maps to x). The curve must have the function's variant.
  */
-hyst_real_t hyst_curve_eval(const hyst_curve_t *curve, hyst_real_t x);
+/**@{*/
+float hyst_f32_curve_eval(const hyst_curve_t *curve, float x);
+#if HYST_ENABLE_F64
+double hyst_f64_curve_eval(const hyst_curve_t *curve, double x);
+#endif
+/**@}*/
+
+/**
+ * @name Branch shape
+ * @brief g(d) = f(lo + d) - f(lo) of a prepared curve f, 0 <= d <= hi - lo:
+ *        what the engine evaluates (one Horner evaluation for a polynomial,
+ *        a binary search for a piecewise-linear curve, the monotone
+ *        bisection for an inverted polynomial); g(0) is exactly 0.
+ */
+/**@{*/
+float hyst_f32_curve_g(const hyst_curve_t *curve, float d);
+#if HYST_ENABLE_F64
+double hyst_f64_curve_g(const hyst_curve_t *curve, double d);
+#endif
+/**@}*/
 
 /**
  * @brief Checks that a polynomial increases on [lo, hi].
@@ -205,90 +225,21 @@ hyst_real_t hyst_curve_eval(const hyst_curve_t *curve, hyst_real_t x);
 int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
                             hyst_wide_t lo, hyst_wide_t hi, hyst_wide_t *turn);
 
-/** Depth of the dyadic subdivision of hyst_poly_is_increasing(). */
-#define HYST_MONOTONE_DEPTH 20
-
 /**
- * @brief f0(x) by Horner's rule in user units (for tools and tests).
+ * @brief f0(x) by Horner's rule in user units, in hyst_wide_t (tools, tests).
  * @param[in] f0 polynomial, highest power first.
  * @param[in] x  input, any value.
  * @return f0(x).
  */
-hyst_real_t hyst_poly_eval(const hyst_poly_t *f0, hyst_real_t x);
+hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 
-/**
- * @brief g of the kinds other than HYST_CURVE_POLY (out of line).
- *
- * These kinds have inv_span = 1: their argument is d itself, unscaled, so a
- * piecewise-linear curve stays exact at its breakpoints.
- * @param[in] curve prepared curve.
- * @param[in] d     distance from the turning point, 0 <= d <= hi - lo.
- * @return g(d).
- */
-hyst_real_t hyst_curve_g_unit_other(const hyst_curve_t *curve, hyst_real_t d);
-
-/**
- * @brief Polynomial branch shape at u = d / (hi - lo), u in [0, 1]: the
- *        per-sample path, for curves with curve->horner >= 1 only.
- *
- * Horner's rule unrolled by a switch on the degree: one multiply-add per
- * coefficient, no loop and no call.
- */
-HYST_INLINE hyst_real_t hyst_curve_horner(const hyst_curve_t *curve, hyst_real_t u)
-{
-    const hyst_real_t *a = curve->a; /* a[0] multiplies u^n */
-    hyst_real_t acc;
-#define HYST_H_(acc_, k_) ((acc_) * u + a[k_])
-    switch (curve->horner) { /* independent cases: no register merges */
-    case 1: acc = a[0]; break;
-    case 2: acc = HYST_H_(a[0], 1); break;
-    case 3: acc = HYST_H_(HYST_H_(a[0], 1), 2); break;
-    case 4: acc = HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3); break;
-    case 5: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4); break;
-    case 6: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4), 5); break;
-    case 7: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4), 5), 6); break;
-    case 8: acc = HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(HYST_H_(a[0], 1), 2), 3), 4), 5), 6), 7); break;
-    default: { /* 9 and above: Horner's loop */
-        unsigned k;
-        acc = a[0];
-        for (k = 1u; k < curve->horner; ++k) {
-            acc = HYST_H_(acc, k);
-        }
-        break;
-    }
-    }
-#undef HYST_H_
-    return acc * u;
-}
-
-/**
- * @brief The branch shape at u = d * inv_span, any kind.
- *
- * HYST_CURVE_POLY: hyst_curve_horner(), inline. Other kinds (inv_span = 1,
- * u = d): one out-of-line call, see hyst_curve_g().
- */
-HYST_INLINE hyst_real_t hyst_curve_g_unit(const hyst_curve_t *curve, hyst_real_t u)
-{
-    return curve->horner != 0u ? hyst_curve_horner(curve, u) : hyst_curve_g_unit_other(curve, u);
-}
-
-/**
- * @brief The branch shape g(d) = f(lo + d) - f(lo) of a prepared curve f.
- *
- * Polynomial: one Horner evaluation, inline. Piecewise linear (either
- * direction): one binary search over the points, O(log n_points), one
- * division. Inverted polynomial: at most 2 HYST_INV_MAX_ITER evaluations
- * of f0 and ten divisions. Arguments slightly outside
- * [0, hi - lo] (rounding) are clamped by the out-of-line kinds.
- *
- * @param[in] curve prepared by a hyst_curve_* constructor.
- * @param[in] d     distance from the turning point, 0 <= d <= hi - lo.
- * @return g(d); g(0) is exactly 0.
- */
-static inline hyst_real_t hyst_curve_g(const hyst_curve_t *curve, hyst_real_t d)
-{
-    return hyst_curve_g_unit(curve, d * curve->inv_span);
-}
+/** @name Default variant (f32, or f64 with HYST_USE_DOUBLE) */
+/**@{*/
+#define hyst_curve_from_poly HYST_DEFAULT_NAME_(curve_from_poly)
+#define hyst_curve_from_pwl HYST_DEFAULT_NAME_(curve_from_pwl)
+#define hyst_curve_eval HYST_DEFAULT_NAME_(curve_eval)
+#define hyst_curve_g HYST_DEFAULT_NAME_(curve_g)
+/**@}*/
 
 #ifdef __cplusplus
 }

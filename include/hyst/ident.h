@@ -1,10 +1,11 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file ident.h
  * @brief Identification of the major ascending curve f0 from measured data.
  *
  * Excite the actuator with a full-range periodic wave between lo and hi,
  * record input x and output y, and fit f0 as a polynomial of degree n by
- * least squares (METHOD.md section 6). Two estimators:
+ * least squares (docs/identification.md). Two estimators:
  *
  *  - HYST_IDENT_JOINT (default): rising samples obey y = f0(x), falling
  *    samples y = f0(lo) + f0(hi) - f0(lo + hi - x); both are linear in the
@@ -47,7 +48,6 @@
 #ifndef HYST_IDENT_H
 #define HYST_IDENT_H
 
-#include "hyst/config.h"
 #include "hyst/curve.h"
 #include "hyst/status.h"
 
@@ -140,7 +140,9 @@ typedef struct hyst_ident_result {
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_DEGREE, HYST_ERR_DOMAIN or
  *         HYST_ERR_ARG (unknown method). Nothing is written on error.
  */
-hyst_status_t hyst_ident_init(hyst_ident_t *id, const hyst_ident_config_t *cfg);
+hyst_status_t hyst_ident_init_(hyst_ident_t *id, const hyst_ident_config_t *cfg,
+                               unsigned long layout);
+#define hyst_ident_init(id, cfg) hyst_ident_init_((id), (cfg), HYST_LAYOUT)
 
 /**
  * @brief Adds one sample (x, y) to the fit. Constant time and memory.
@@ -201,9 +203,11 @@ hyst_status_t hyst_ident_domain(const hyst_wide_t *x, size_t n, hyst_wide_t *lo,
  * @return as hyst_ident_init() and hyst_ident_solve(); HYST_ERR_ARG when
  *         skip + delay leaves no sample.
  */
-hyst_status_t hyst_ident_fit(const hyst_ident_config_t *cfg, const hyst_wide_t *x,
-                             const hyst_wide_t *y, size_t n, hyst_ident_t *work,
-                             hyst_ident_result_t *res);
+hyst_status_t hyst_ident_fit_(const hyst_ident_config_t *cfg, const hyst_wide_t *x,
+                              const hyst_wide_t *y, size_t n, hyst_ident_t *work,
+                              hyst_ident_result_t *res, unsigned long layout);
+#define hyst_ident_fit(cfg, x, y, n, work, res) \
+    hyst_ident_fit_((cfg), (x), (y), (n), (work), (res), HYST_LAYOUT)
 
 /**
  * @brief The identified curve as a hyst_poly_t for hyst_init().

@@ -1,13 +1,15 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file inverse.h
- * @brief The inverse TCM: a feedforward compensator (METHOD.md section 8).
+ * @brief The inverse TCM: a feedforward compensator (docs/theory.md).
  *
  * The inverse of a TCM with curve f0 on [lo, hi] is a TCM in the (y, x)
- * plane with curve f0^-1 on [f0(lo), f0(hi)]: the same engine (hyst_t,
- * hyst_step()) on an inverse curve (hyst_curve_inverse()). Its input is the
- * desired displacement, its output the drive that produces it on the model:
+ * plane with curve f0^-1 on [f0(lo), f0(hi)]: the same engine (hyst_tcm_t,
+ * hyst_*_step()) on an inverse curve (hyst_curve_inverse()). Its input is
+ * the desired displacement, its output the drive that produces it on the
+ * model:
  * @code
- * HYST_DEFINE(comp, 4096);
+ * HYST_DEFINE_INVERSE(comp, 4096);
  * if (HYST_INIT_INVERSE(comp, &f0) != HYST_OK) { handle_error(); }
  * for (;;) { dac_write(hyst_step(&comp, desired_position())); }
  * @endcode
@@ -27,31 +29,46 @@ extern "C" {
 #endif
 
 /**
- * @brief Initialises @p S as the inverse (compensator) of the TCM with the
- *        polynomial @p f0.
+ * @name Compensator of a polynomial model
+ * @brief Initialises @p S as the inverse of the TCM with the polynomial @p f0.
  *
- * hyst_curve_from_poly(), hyst_curve_inverse(), hyst_init_curve(), in this
- * order (a curve error is reported before an instance error). g^-1 costs
- * at most 2 HYST_INV_MAX_ITER evaluations of f0 per sample, and the drive is
- * non-decreasing in the desired output along a branch. For a curve of another
- * kind (piecewise linear, PI loading curve) call hyst_curve_inverse() and
- * hyst_init_curve() directly.
- *
- * @param[out] S         instance, starts at (f0(lo), lo).
- * @param[in]  f0        forward major ascending curve.
- * @param[in]  xltp,yltp,xrtp,yrtp four arrays of @p capacity entries each.
- * @param[in]  capacity  entries per array, >= 2.
- * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_CAPACITY, a curve error or
- *         HYST_ERR_NOT_INVERTIBLE.
+ * hyst_*_curve_from_poly() and hyst_curve_inverse() into @p inv (caller
+ * storage that must outlive the instance), then hyst_*_init_curve(), in this
+ * order (a curve error is reported before an instance error). g^-1 costs at
+ * most 2 HYST_INV_MAX_ITER evaluations of f0 per sample, and the drive is
+ * non-decreasing in the desired output along a branch. For a curve of
+ * another kind (piecewise linear, PI loading curve) call
+ * hyst_curve_inverse() and hyst_*_init_curve() directly.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT, HYST_ERR_CAPACITY,
+ *         HYST_ERR_OVERLAP, a curve error or HYST_ERR_NOT_INVERTIBLE.
  */
-hyst_status_t hyst_init_inverse(hyst_t *S, const hyst_poly_t *f0, hyst_real_t *xltp,
-                                hyst_real_t *yltp, hyst_real_t *xrtp, hyst_real_t *yrtp,
-                                size_t capacity);
+/**@{*/
+hyst_status_t hyst_f32_init_inverse_(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
+                                     float *xltp, float *yltp, float *xrtp, float *yrtp,
+                                     size_t capacity, unsigned long layout);
+#define hyst_f32_init_inverse(S, inv, f0, xltp, yltp, xrtp, yrtp, capacity)                 \
+    hyst_f32_init_inverse_((S), (inv), (f0), (xltp), (yltp), (xrtp), (yrtp), (capacity),    \
+                           HYST_LAYOUT)
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_init_inverse_(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
+                                     double *xltp, double *yltp, double *xrtp, double *yrtp,
+                                     size_t capacity, unsigned long layout);
+#define hyst_f64_init_inverse(S, inv, f0, xltp, yltp, xrtp, yrtp, capacity)                 \
+    hyst_f64_init_inverse_((S), (inv), (f0), (xltp), (yltp), (xrtp), (yrtp), (capacity),    \
+                           HYST_LAYOUT)
+#endif
+#define hyst_init_inverse HYST_DEFAULT_NAME_(init_inverse)
+/**@}*/
 
-/** hyst_init_inverse() on an instance declared by HYST_DEFINE(). */
-#define HYST_INIT_INVERSE(name, f0)                                          \
-    hyst_init_inverse(&(name), (f0), name##_xltp, name##_yltp, name##_xrtp,  \
-                      name##_yrtp, sizeof(name##_xltp) / sizeof(name##_xltp[0]))
+/** A compensator's instance, arrays and inverse curve, statically (default variant). */
+#define HYST_DEFINE_INVERSE(name, nu) \
+    static hyst_curve_t name##_curve; \
+    HYST_DEFINE(name, nu)
+
+/** hyst_init_inverse() on an instance declared by HYST_DEFINE_INVERSE(). */
+#define HYST_INIT_INVERSE(name, f0) \
+    HYST_DEFAULT_NAME_(init_inverse_)(&(name), &name##_curve, (f0), HYST_ARRAYS_(name), \
+                                      HYST_LAYOUT)
 
 #ifdef __cplusplus
 }

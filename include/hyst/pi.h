@@ -1,7 +1,8 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file pi.h
  * @brief The Prandtl-Ishlinskii (PI) model, its analytic inverse and its
- *        loading curve as a TCM curve (METHOD.md section 7).
+ *        loading curve as a TCM curve (docs/theory.md).
  *
  * N one-sided play operators with thresholds 0 = r1 < r2 < ... < rN and
  * weights wi (paper Eq. 15):
@@ -31,98 +32,114 @@
 #ifndef HYST_PI_H
 #define HYST_PI_H
 
-#include "hyst/config.h"
 #include "hyst/curve.h"
 #include "hyst/status.h"
+#include "hyst/types.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/** @brief A PI model instance. Fields are private; use the functions below. */
+/**
+ * @brief A PI model instance of any real variant (f32 or f64: the type of
+ *        its numbers). Read it through the functions below.
+ */
 typedef struct hyst_pi {
-    const hyst_real_t *r; /**< N thresholds, r[0] = 0, strictly increasing */
-    const hyst_real_t *w; /**< N weights, positive partial sums */
-    hyst_real_t *z;       /**< N operator states (caller memory) */
-    size_t n;             /**< N, number of operators */
-    hyst_real_t x_prev;   /**< last valid input (0 after init/reset) */
-    hyst_real_t y_prev;   /**< last output (0 after init/reset) */
-    int status;           /**< hyst_status_t of the last sample */
-    unsigned events;      /**< sticky HYST_EVENT_* flags */
+    unsigned variant;  /**< HYST_VARIANT_F32 or HYST_VARIANT_F64; 0 before init */
+    hyst_cptr_t r;     /**< N thresholds, r[0] = 0, strictly increasing */
+    hyst_cptr_t w;     /**< N weights, positive partial sums */
+    hyst_ptr_t z;      /**< N operator states (caller memory) */
+    size_t n;          /**< N, number of operators */
+    hyst_num_t x_prev; /**< last valid input (0 after init/reset) */
+    hyst_num_t y_prev; /**< last output (0 after init/reset) */
+    int status;        /**< hyst_status_t of the last sample */
+    unsigned events;   /**< sticky HYST_EVENT_* flags */
 } hyst_pi_t;
 
 /**
- * @brief Declares a PI instance and its N operator states, statically.
+ * @brief Declares a PI instance and its N operator states, statically
+ *        (default variant; HYST_F32_PI_DEFINE / HYST_F64_PI_DEFINE name one).
  * @code
  * static const hyst_real_t r[10] = { ... }, w[10] = { ... };
  * HYST_PI_DEFINE(plant, 10);
  * if (HYST_PI_INIT(plant, r, w) != HYST_OK) { handle_error(); }
  * @endcode
  */
-#define HYST_PI_DEFINE(name, n)       \
-    static hyst_real_t name##_z[n];   \
+#define HYST_PI_DEFINE(name, n) HYST_PI_DEFINE_(name, hyst_real_t, n)
+#define HYST_F32_PI_DEFINE(name, n) HYST_PI_DEFINE_(name, float, n)
+#define HYST_F64_PI_DEFINE(name, n) HYST_PI_DEFINE_(name, double, n)
+/** @cond */
+#define HYST_PI_DEFINE_(name, type, n) \
+    static type name##_z[n];           \
     static hyst_pi_t name
+/** @endcond */
 
 /** hyst_pi_init() on an instance declared by HYST_PI_DEFINE(). */
 #define HYST_PI_INIT(name, r, w) \
     hyst_pi_init(&(name), (r), (w), name##_z, sizeof(name##_z) / sizeof(name##_z[0]))
 
 /**
- * @brief Checks PI parameters without creating an instance.
- * @param[in] r thresholds, @p n entries: r[0] = 0, finite, strictly increasing.
- * @param[in] w weights, @p n entries: finite, w[0] + ... + w[i] > 0 for all i.
- * @param[in] n number of operators, >= 1.
- * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (n = 0), HYST_ERR_BREAKPOINTS
- *         or HYST_ERR_WEIGHTS.
+ * @name Parameter check
+ * @brief r1 = 0, thresholds finite and strictly increasing
+ *        (HYST_ERR_BREAKPOINTS), weights finite with every partial sum
+ *        w1 + ... + wi > 0 (HYST_ERR_WEIGHTS); n >= 1 (HYST_ERR_ARG).
  */
-hyst_status_t hyst_pi_check(const hyst_real_t *r, const hyst_real_t *w, size_t n);
+/**@{*/
+hyst_status_t hyst_f32_pi_check(const float *r, const float *w, size_t n);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_pi_check(const double *r, const double *w, size_t n);
+#endif
+/**@}*/
 
 /**
- * @brief Initialises a PI instance on caller-owned parameters and states.
- *
- * Validates as hyst_pi_check(), then resets (hyst_pi_reset()). On error
- * nothing is written. @p r and @p w are kept by pointer.
- *
- * @param[out] P  instance.
- * @param[in]  r  @p n thresholds.
- * @param[in]  w  @p n weights.
- * @param[in]  z  @p n operator states, written by the model.
- * @param[in]  n  number of operators, >= 1.
- * @return HYST_OK or an error of hyst_pi_check().
+ * @name Initialisation
+ * @brief Checks the parameters (pi_check) and resets the instance. The
+ *        instance keeps @p r and @p w (which must outlive it, unchanged)
+ *        and works in @p z, N operator states.
+ * @return HYST_OK, HYST_ERR_NULL or an error of the check; nothing written
+ *         on error.
  */
-hyst_status_t hyst_pi_init(hyst_pi_t *P, const hyst_real_t *r, const hyst_real_t *w,
-                           hyst_real_t *z, size_t n);
+/**@{*/
+hyst_status_t hyst_f32_pi_init(hyst_pi_t *P, const float *r, const float *w, float *z, size_t n);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_pi_init(hyst_pi_t *P, const double *r, const double *w, double *z,
+                               size_t n);
+#endif
+/**@}*/
 
-/**
- * @brief Forgets the history: all operator states 0, output 0; clears events.
- * @param[in,out] P initialised instance.
- */
+/** @brief Back to the state before the first sample (z = 0, output 0); NULL: nothing. */
 void hyst_pi_reset(hyst_pi_t *P);
 
 /**
- * @brief Advances the PI model by one input sample. O(N), no branch on history.
+ * @name Per sample
+ * @brief Advances the PI model by one input sample: y = sum_i w_i z_i. O(N),
+ *        no branch on the history.
  *
  * A NaN or infinite @p x is ignored (state untouched, previous output
  * returned, status HYST_ERR_NONFINITE, event HYST_EVENT_NONFINITE).
- * @param[in,out] P initialised instance.
- * @param[in]     x input sample.
- * @return output y = sum_i w_i z_i.
  */
-hyst_real_t hyst_pi_step(hyst_pi_t *P, hyst_real_t x);
+/**@{*/
+float hyst_f32_pi_step(hyst_pi_t *P, float x);
+#if HYST_ENABLE_F64
+double hyst_f64_pi_step(hyst_pi_t *P, double x);
+#endif
+/**@}*/
 
 /**
- * @brief Runs hyst_pi_step() over a block of samples.
- * @param[in,out] P initialised instance.
- * @param[in]     x @p n inputs.
- * @param[out]    y @p n outputs (may be the same array as @p x).
- * @param[in]     n number of samples.
+ * @name Block of samples
+ * @brief The per-sample call over @p n samples (@p y may be @p x).
  * @return HYST_ERR_NONFINITE if any sample was not finite, else HYST_OK;
  *         HYST_ERR_NULL if a pointer is NULL with n > 0.
  */
-hyst_status_t hyst_pi_process(hyst_pi_t *P, const hyst_real_t *x, hyst_real_t *y,
-                              size_t n);
+/**@{*/
+hyst_status_t hyst_f32_pi_process(hyst_pi_t *P, const float *x, float *y, size_t n);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_pi_process(hyst_pi_t *P, const double *x, double *y, size_t n);
+#endif
+/**@}*/
 
 /**
+ * @name Inverse parameters
  * @brief Parameters of the inverse PI model (also of PI type).
  *
  * With W_i = w_1 + ... + w_i and r_i, w_i the forward parameters:
@@ -132,69 +149,91 @@ hyst_status_t hyst_pi_process(hyst_pi_t *P, const hyst_real_t *x, hyst_real_t *y
  * A PI model with (r', w') maps the output of (r, w) back to its input, for
  * any input sequence (both starting from the reset state). Computed in
  * hyst_wide_t. Validates the forward parameters first, and refuses inverse
- * thresholds that rounding to hyst_real_t would make equal (
- * HYST_ERR_BREAKPOINTS) and inverse weights that, rounded, fail
- * hyst_pi_check() (HYST_ERR_WEIGHTS: 1 / w_1 overflows, or the partial sums
- * 1 / W_i cancel to 0 when W_i / W_1 exceeds about 1 / epsilon), so that the
- * inverse's parameters always pass hyst_pi_check(). On error nothing is
- * written. Output arrays must not overlap the inputs.
- *
- * @param[in]  r,w    forward parameters, @p n entries each.
- * @param[in]  n      number of operators.
- * @param[out] r_inv  @p n inverse thresholds.
- * @param[out] w_inv  @p n inverse weights.
- * @return HYST_OK, an error of hyst_pi_check(), HYST_ERR_BREAKPOINTS or
- *         HYST_ERR_WEIGHTS.
+ * thresholds that rounding to the variant's type would make equal
+ * (HYST_ERR_BREAKPOINTS) and inverse weights that, rounded, fail the check
+ * (HYST_ERR_WEIGHTS: 1 / w_1 overflows, or the partial sums 1 / W_i cancel
+ * to 0 when W_i / W_1 exceeds about 1 / epsilon), so that the inverse's
+ * parameters always pass it. On error nothing is written. Output arrays
+ * must not overlap the inputs.
  */
-hyst_status_t hyst_pi_inverse_params(const hyst_real_t *r, const hyst_real_t *w,
-                                     size_t n, hyst_real_t *r_inv, hyst_real_t *w_inv);
+/**@{*/
+hyst_status_t hyst_f32_pi_inverse_params(const float *r, const float *w, size_t n, float *r_inv,
+                                         float *w_inv);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_pi_inverse_params(const double *r, const double *w, size_t n,
+                                         double *r_inv, double *w_inv);
+#endif
+/**@}*/
 
 /**
- * @brief Initialises @p inv as the inverse of the PI model @p fwd.
- *
- * hyst_pi_inverse_params() into @p r_inv, @p w_inv, then hyst_pi_init() on
- * them with the states @p z_inv (all three of fwd's N entries).
- * @return HYST_OK or an error of those two calls.
+ * @name Inverse model
+ * @brief Initialises @p inv as the inverse of the PI model @p fwd (same
+ *        variant): inverse_params into @p r_inv, @p w_inv, then init with the
+ *        states @p z_inv (all three of fwd's N entries).
+ * @return HYST_OK, HYST_ERR_ARG (fwd of another variant) or an error of
+ *         those two calls.
  */
-hyst_status_t hyst_pi_init_inverse(hyst_pi_t *inv, const hyst_pi_t *fwd,
-                                   hyst_real_t *r_inv, hyst_real_t *w_inv,
-                                   hyst_real_t *z_inv);
+/**@{*/
+hyst_status_t hyst_f32_pi_init_inverse(hyst_pi_t *inv, const hyst_pi_t *fwd, float *r_inv,
+                                       float *w_inv, float *z_inv);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_pi_init_inverse(hyst_pi_t *inv, const hyst_pi_t *fwd, double *r_inv,
+                                       double *w_inv, double *z_inv);
+#endif
+/**@}*/
 
 /**
+ * @name Loading curve
  * @brief The loading curve f_PI on [0, hi] as a piecewise-linear TCM curve.
  *
  * Fills the caller's @p bx with r_1..r_N, hi and @p by with f_PI there
- * (computed in hyst_wide_t), then hyst_curve_from_pwl() on them: a TCM
+ * (computed in hyst_wide_t), then the PWL constructor on them: a TCM
  * initialised with @p curve reproduces the PI model on inputs in [0, hi]
- * (METHOD.md section 7), and hyst_curve_inverse() of it gives the exact
- * inverse. @p bx and @p by are kept by the curve (see hyst_curve_from_pwl()).
- *
- * @param[out] curve prepared curve, domain [0, hi].
- * @param[in]  r,w   PI parameters, @p n entries each.
- * @param[in]  n     number of operators.
- * @param[in]  hi    upper end of the domain, finite, > r[n-1].
- * @param[out] bx,by @p n + 1 entries each.
- * @return HYST_OK, an error of hyst_pi_check(), HYST_ERR_DOMAIN (hi), or an
- *         error of hyst_curve_from_pwl().
+ * (docs/theory.md), and hyst_curve_inverse() of it gives the exact
+ * inverse. @p bx and @p by (n + 1 entries each) are kept by the curve.
+ * @return HYST_OK, an error of the check, HYST_ERR_DOMAIN (hi not finite or
+ *         not above r[n-1]), or an error of the PWL constructor.
  */
-hyst_status_t hyst_pi_loading_curve(hyst_curve_t *curve, const hyst_real_t *r,
-                                    const hyst_real_t *w, size_t n, hyst_real_t hi,
-                                    hyst_real_t *bx, hyst_real_t *by);
+/**@{*/
+hyst_status_t hyst_f32_pi_loading_curve(hyst_curve_t *curve, const float *r, const float *w,
+                                        size_t n, float hi, float *bx, float *by);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_pi_loading_curve(hyst_curve_t *curve, const double *r, const double *w,
+                                        size_t n, double hi, double *bx, double *by);
+#endif
+/**@}*/
 
-/** @brief Status of the last sample (hyst_status_t). */
-static inline int hyst_pi_status(const hyst_pi_t *P) { return P->status; }
+/** @name Last output (0 after init or reset) */
+/**@{*/
+float hyst_f32_pi_output(const hyst_pi_t *P);
+#if HYST_ENABLE_F64
+double hyst_f64_pi_output(const hyst_pi_t *P);
+#endif
+/**@}*/
+
+/** @brief Status of the last sample (hyst_status_t); NULL: HYST_ERR_NULL. */
+int hyst_pi_status(const hyst_pi_t *P);
 
 /** @brief Sticky HYST_EVENT_* flags since the last reset or clear. */
-static inline unsigned hyst_pi_events(const hyst_pi_t *P) { return P->events; }
+unsigned hyst_pi_events(const hyst_pi_t *P);
 
 /** @brief Clears the sticky event flags. */
-static inline void hyst_pi_clear_events(hyst_pi_t *P) { P->events = 0u; }
-
-/** @brief Last output (0 after init or reset). */
-static inline hyst_real_t hyst_pi_output(const hyst_pi_t *P) { return P->y_prev; }
+void hyst_pi_clear_events(hyst_pi_t *P);
 
 /** @brief Number of operators N. */
-static inline size_t hyst_pi_size(const hyst_pi_t *P) { return P->n; }
+size_t hyst_pi_size(const hyst_pi_t *P);
+
+/** @name Default variant (f32, or f64 with HYST_USE_DOUBLE) */
+/**@{*/
+#define hyst_pi_check HYST_DEFAULT_NAME_(pi_check)
+#define hyst_pi_init HYST_DEFAULT_NAME_(pi_init)
+#define hyst_pi_step HYST_DEFAULT_NAME_(pi_step)
+#define hyst_pi_process HYST_DEFAULT_NAME_(pi_process)
+#define hyst_pi_inverse_params HYST_DEFAULT_NAME_(pi_inverse_params)
+#define hyst_pi_init_inverse HYST_DEFAULT_NAME_(pi_init_inverse)
+#define hyst_pi_loading_curve HYST_DEFAULT_NAME_(pi_loading_curve)
+#define hyst_pi_output HYST_DEFAULT_NAME_(pi_output)
+/**@}*/
 
 #ifdef __cplusplus
 }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file snapshot.h
  * @brief Snapshot and restore of a TCM instance's memory (turning points).
@@ -10,15 +11,18 @@
  * is an array of unsigned char, each element holding one octet (0..255), so
  * a snapshot written on a 16-bit-char DSP (TI C28x) reads back on a PC.
  * Multi-octet integers are little-endian; reals are their IEEE-754 bit
- * patterns (binary32, or binary64 when hyst_real_t is a 64-bit double),
- * stored as little-endian integers.
+ * patterns (binary32 for the f32 and code variants, binary64 for f64),
+ * stored as little-endian integers; codes are 4-octet integers. One format
+ * and one implementation serve every variant: "R" below is the octets of
+ * a real of the instance's variant, "X" the octets of a stored input (R for
+ * the real variants, 4 for codes).
  *
  * | offset        | octets    | field                                                  |
  * |---------------|-----------|--------------------------------------------------------|
  * | 0             | 4         | magic 0x48 0x59 0x53 0x53 ("HYSS")                     |
  * | 4             | 2         | format version, HYST_SNAPSHOT_VERSION                  |
  * | 6             | 1         | R: octets per real, 4 or 8 (HYST_SNAPSHOT_REAL_OCTETS) |
- * | 7             | 1         | reserved, 0                                            |
+ * | 7             | 1         | variant (hyst_variant_t)                               |
  * | 8             | 4         | L: total length in octets, CRC included                |
  * | 12            | 4         | curve id: hyst_crc32 of the curve, serialised as below |
  * | 16            | 4         | n_ltp: stored LTPs including the anchor A0 (>= 1)      |
@@ -26,28 +30,28 @@
  * | 24            | 4         | sticky event flags (HYST_EVENT_*)                      |
  * | 28            | 2         | status of the last sample, 16-bit two's complement     |
  * | 30            | 2         | reserved, 0                                            |
- * | 32            | R         | last input x_prev                                      |
- * | 32 + R        | R         | last output y_prev                                     |
- * | 32 + 2R       | 2R n_ltp  | LTPs, oldest first: x, y                               |
- * | ...           | 2R n_rtp  | RTPs, oldest first: x, y                               |
- * | L - 8 - 3R    | 4         | stack level of the shallowest live merge, or 0xFFFFFFFF |
- * | L - 4 - 3R    | R         | error bound of the live merges (hyst_error_bound part) |
- * | L - 4 - 2R    | R         | deadband: widest skipped reversal of the open window   |
- * | L - 4 - R     | R         | deadband: its error bound                              |
+ * | 32            | X         | last input x_prev                                      |
+ * | 32 + X        | R         | last output y_prev                                     |
+ * | 32 + X + R    | (X+R) n_ltp | LTPs, oldest first: x, y                             |
+ * | ...           | (X+R) n_rtp | RTPs, oldest first: x, y                             |
+ * | L - 8 - 2R - X | 4        | stack level of the shallowest live merge, or 0xFFFFFFFF |
+ * | L - 4 - 2R - X | R        | error bound of the live merges (error_bound part)      |
+ * | L - 4 - R - X | X         | deadband: widest skipped reversal of the open window   |
+ * | L - 4 - R     | R         | deadband: error bound of the open window               |
  * | L - 4         | 4         | CRC-32 of octets [0, L - 4)                            |
  *
- * L = 40 + 2R (1 + n_ltp + n_rtp) + 3R. Curve serialisation for the id: kind and
- * degree (2 octets each), then lo, hi, f0(lo), f0(hi), 1/(hi - lo) and the
- * degree normalised coefficients (R octets each). The CRC is CRC-32/ISO-HDLC
- * (the zlib/Ethernet CRC: reflected polynomial 0xEDB88320, initial value and
- * final XOR 0xFFFFFFFF).
+ * L = 40 + (X + R)(1 + n_ltp + n_rtp) + 2R + X. Curve identity (the id):
+ * kind, degree or point count and variant, the domain, its values and scale,
+ * every coefficient of a polynomial, every point of a piecewise-linear curve
+ * and the start table of an inverted polynomial: a curve of the same ends
+ * but another shape is another curve. The CRC is CRC-32/ISO-HDLC (the
+ * zlib/Ethernet CRC: reflected polynomial 0xEDB88320, initial value and
+ * final XOR 0xFFFFFFFF). Version 2 snapshots (real variants only, a weaker
+ * curve id) are refused with HYST_ERR_VERSION.
  */
 #ifndef HYST_SNAPSHOT_H
 #define HYST_SNAPSHOT_H
 
-#include <float.h>
-
-#include "hyst/config.h"
 #include "hyst/status.h"
 #include "hyst/tcm.h"
 
@@ -56,29 +60,22 @@ extern "C" {
 #endif
 
 /** Format version written and accepted by this library. */
-#define HYST_SNAPSHOT_VERSION 2u
-
-/** Octets per real in a snapshot: 8 if hyst_real_t is an IEEE binary64, else 4. */
-#if defined(HYST_USE_DOUBLE) && DBL_MANT_DIG == 53
-#define HYST_SNAPSHOT_REAL_OCTETS 8u
-#else
-#define HYST_SNAPSHOT_REAL_OCTETS 4u
-#endif
+#define HYST_SNAPSHOT_VERSION 3u
 
 /**
  * @brief Buffer length, in octets (unsigned char elements), that holds a
- *        snapshot of any state of an instance of @p capacity entries.
+ *        snapshot of any state of an instance of @p capacity entries, of
+ *        any variant.
  */
-#define HYST_SNAPSHOT_SIZE(capacity) \
-    (40u + 2u * HYST_SNAPSHOT_REAL_OCTETS * (1u + 2u * (size_t)(capacity)) + \
-     3u * HYST_SNAPSHOT_REAL_OCTETS)
+#define HYST_SNAPSHOT_SIZE(capacity) (40u + 16u * (1u + 2u * (size_t)(capacity)) + 24u)
 
 /**
  * @brief Length in octets of a snapshot of the current state of @p S.
- * @param[in] S initialised instance.
- * @return octets hyst_snapshot_save() will write (<= HYST_SNAPSHOT_SIZE(capacity)).
+ * @param[in] S initialised instance of any variant.
+ * @return octets hyst_snapshot_save() will write now (<= HYST_SNAPSHOT_SIZE(capacity));
+ *         0 for NULL or an uninitialised instance.
  */
-size_t hyst_snapshot_size(const hyst_t *S);
+size_t hyst_snapshot_size(const hyst_tcm_t *S);
 
 /**
  * @brief Writes the instance's memory to a caller buffer.
@@ -92,7 +89,7 @@ size_t hyst_snapshot_size(const hyst_t *S);
  * @param[out] len  if not NULL: octets written (hyst_snapshot_size(S)).
  * @return HYST_OK, HYST_ERR_NULL, or HYST_ERR_NOSPACE (nothing written).
  */
-hyst_status_t hyst_snapshot_save(const hyst_t *S, unsigned char *buf,
+hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf,
                                  size_t size, size_t *len);
 
 /**
@@ -110,12 +107,13 @@ hyst_status_t hyst_snapshot_save(const hyst_t *S, unsigned char *buf,
  *                     its capacity may differ but must hold the saved TPs.
  * @param[in]     buf  snapshot octets.
  * @param[in]     len  octets available in @p buf (>= the snapshot's L).
- * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_FORMAT (bad magic, truncated,
- *         inconsistent length or impossible state), HYST_ERR_VERSION,
- *         HYST_ERR_CRC (corrupted), HYST_ERR_CURVE (other curve) or
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (S not initialised),
+ *         HYST_ERR_FORMAT (bad magic, truncated,
+ *         inconsistent length or impossible state), HYST_ERR_VERSION (other format version or
+ *         variant), HYST_ERR_CRC (corrupted), HYST_ERR_CURVE (other curve) or
  *         HYST_ERR_CAPACITY (the instance cannot hold the saved TPs).
  */
-hyst_status_t hyst_snapshot_restore(hyst_t *S, const unsigned char *buf,
+hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf,
                                     size_t len);
 
 /**

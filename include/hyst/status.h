@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file status.h
  * @brief Status codes and sticky event flags shared by every hyst module.
@@ -8,6 +9,10 @@
  */
 #ifndef HYST_STATUS_H
 #define HYST_STATUS_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /** @brief Result of a hyst call. */
 typedef enum hyst_status {
@@ -32,7 +37,11 @@ typedef enum hyst_status {
                                       not strictly increasing (PI: r1 != 0) */
     HYST_ERR_WEIGHTS = -16,      /**< PI weights not finite, or a partial sum
                                       w1 + ... + wi not positive */
-    HYST_ERR_NOT_INVERTIBLE = -17 /**< curve not strictly increasing: no inverse */
+    HYST_ERR_NOT_INVERTIBLE = -17, /**< curve not strictly increasing: no inverse */
+    HYST_ERR_LAYOUT = -18,       /**< the caller was compiled with other layout options
+                                      (HYST_LAYOUT, config.h) or passed a curve or
+                                      instance of another variant */
+    HYST_ERR_OVERLAP = -19       /**< caller arrays overlap */
 } hyst_status_t;
 
 /** @name Sticky event flags (hyst_events()): set by samples, cleared by the caller. */
@@ -48,5 +57,9 @@ typedef enum hyst_status {
  * @return a static string, never NULL ("unknown status" for other values).
  */
 const char *hyst_status_str(int status);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* HYST_STATUS_H */

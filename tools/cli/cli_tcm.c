@@ -12,6 +12,7 @@ typedef struct tcm_run {
     const char *cmd;
     hyst_real_t *mem;
     hyst_t S;
+    hyst_curve_t inv; /* the compensator's curve, kept by S */
 } tcm_run_t;
 
 /* --poly and --range into *f0; 1 after a message. The curve is checked here,
@@ -64,7 +65,7 @@ static int tcm_begin(void *ctx, size_t n)
     if (r->mem == NULL) {
         return cli_fail(r->cmd, "out of memory");
     }
-    st = r->inverse ? hyst_init_inverse(&r->S, r->f0, r->mem, r->mem + cap, r->mem + 2u * cap,
+    st = r->inverse ? hyst_init_inverse(&r->S, &r->inv, r->f0, r->mem, r->mem + cap, r->mem + 2u * cap,
                                         r->mem + 3u * cap, cap)
                     : hyst_init(&r->S, r->f0, r->mem, r->mem + cap, r->mem + 2u * cap,
                                 r->mem + 3u * cap, cap);

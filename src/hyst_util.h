@@ -1,0 +1,94 @@
+/* SPDX-License-Identifier: MIT */
+/* Library-internal helpers and entry points shared between modules; not
+ * installed. Every helper that more than one module needs lives here once. */
+#ifndef HYST_UTIL_H
+#define HYST_UTIL_H
+
+#include "hyst/curve.h"
+#include "hyst/tcm.h"
+
+/* Finite test without libm: NaN fails v == v, +-Inf gives Inf - Inf = NaN. */
+HYST_INLINE int hyst_wide_is_finite(hyst_wide_t v)
+{
+    const hyst_wide_t z = v - v;
+    return z == z;
+}
+
+HYST_INLINE hyst_wide_t hyst_wide_abs(hyst_wide_t v) { return v < 0 ? -v : v; }
+
+/* A real number of a curve or instance of real variant `variant`, as
+ * hyst_wide_t (exact: float and double both widen to double). */
+HYST_INLINE hyst_wide_t hyst_num_get(const hyst_num_t *v, unsigned variant)
+{
+#if HYST_ENABLE_F64
+    if (variant == (unsigned)HYST_VARIANT_F64) {
+        return (hyst_wide_t)v->f64;
+    }
+#else
+    (void)variant;
+#endif
+    return (hyst_wide_t)v->f32;
+}
+
+/* Stores w rounded to the variant's real type; returns 0 if the result is
+ * not finite (overflow). */
+HYST_INLINE int hyst_num_set(hyst_num_t *v, unsigned variant, hyst_wide_t w)
+{
+#if HYST_ENABLE_F64
+    if (variant == (unsigned)HYST_VARIANT_F64) {
+        v->f64 = (double)w;
+        return hyst_wide_is_finite((hyst_wide_t)v->f64);
+    }
+#else
+    (void)variant;
+#endif
+    v->f32 = (float)w;
+    return hyst_wide_is_finite((hyst_wide_t)v->f32);
+}
+
+/* 1 if [a, a + na) and [b, b + nb) (byte ranges) overlap. */
+int hyst_ranges_overlap(const void *a, size_t na, const void *b, size_t nb);
+
+/* Pointer, capacity, layout and overlap checks of every instance init:
+ * four arrays of `capacity` entries of xsize and ysize bytes. */
+hyst_status_t hyst_check_memory(const hyst_tcm_t *S, const void *xltp, const void *yltp,
+                                const void *xrtp, const void *yrtp, size_t capacity,
+                                size_t xsize, size_t ysize, unsigned long layout);
+
+/* Prepares a polynomial curve of a real variant (the work of the
+ * hyst_f32/f64_curve_from_poly constructors, written once). */
+hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsigned variant,
+                               unsigned long layout);
+
+/* What bounded memory keeps besides the TPs, in wide numbers (snapshots):
+ * the stack level of the shallowest live merge ((size_t)-1: none), its
+ * error bound, and the deadband window (widest skipped reversal and its
+ * bound). */
+typedef struct {
+    size_t forgot_level;
+    hyst_wide_t forgot;
+    hyst_wide_t db_reach;
+    hyst_wide_t db_err;
+} hyst_tcm_book_t;
+
+/* Per-variant entry points the modules written once dispatch to (generated
+ * by src/tcm_engine.h): reset, and resume after a snapshot restore
+ * (re-derives the per-sample cache from the arrays and counts, with x, y as
+ * the last valid sample and the saved bookkeeping). */
+void hyst_f32_reset_(hyst_tcm_t *S);
+void hyst_f32_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, const hyst_tcm_book_t *book);
+void hyst_code_reset_(hyst_tcm_t *S);
+void hyst_code_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, const hyst_tcm_book_t *book);
+#if HYST_ENABLE_F64
+void hyst_f64_reset_(hyst_tcm_t *S);
+void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, const hyst_tcm_book_t *book);
+#endif
+
+/* The kinds of g evaluated out of line (src/curve_eval.h), per real type:
+ * g(d), d = argument already scaled by the curve's unit (1 for them). */
+float hyst_f32_curve_g_other_(const hyst_curve_t *curve, float d);
+#if HYST_ENABLE_F64
+double hyst_f64_curve_g_other_(const hyst_curve_t *curve, double d);
+#endif
+
+#endif /* HYST_UTIL_H */

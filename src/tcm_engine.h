@@ -1,0 +1,747 @@
+/* SPDX-License-Identifier: MIT */
+/* The TCM engine, written once, instantiated explicitly by each variant's
+ * translation unit (src/hyst_f32.c, src/hyst_f64.c, src/hyst_code.c). Every
+ * name it generates is prefixed by TCM_NAME; everything is static but the
+ * variant's internal entry points (reset_, resume_: src/hyst_util.h).
+ *
+ * Contract, checked below: before the #include the variant defines
+ *   TCM_NAME(n)          prefixed name: hyst_f32_##n
+ *   TCM_VARIANT          hyst_variant_t of its instances
+ *   TCM_X, TCM_XF        stored input type and its hyst_num_t member
+ *   TCM_Y, TCM_YF        output type and its member (src/num_ops.h included
+ *                        for it: NUM_NAME(horner), NUM_NAME(abs))
+ *   TCM_ARG, TCM_IN      per-sample input type (may be wider than TCM_X),
+ *                        block input type
+ *   TCM_R(a)             a as TCM_Y (exact for codes up to 24 bits)
+ *   TCM_D(a, b)          a - b as TCM_Y, for a >= b (exact for codes)
+ *   TCM_MID(a, b)        a point of [a, b], a or b once they are adjacent
+ *   TCM_NORM(a)          a as stored in a TP array (reals: -0 becomes +0,
+ *                        which the search by bit patterns needs)
+ *   TCM_ADMIT(S, x, out) a function: 0 if the sample must be ignored, else
+ *                        1 with *out inside the domain (clamped if needed)
+ *   TCM_G_OTHER(c, d)    g of the curve kinds evaluated out of line
+ * and optionally TCM_KEY_T, TCM_UKEY_T: signed and unsigned integers of
+ * TCM_X's size, to search reals by their bit patterns; and
+ * TCM_LTP_BELOW(a, n, x), TCM_RTP_ABOVE(a, n, x): another search over the
+ * sorted TP arrays than the binary search below (the benchmarks measure a
+ * linear scan this way). */
+#ifndef HYST_TCM_ENGINE_H
+#define HYST_TCM_ENGINE_H
+
+#if !defined(TCM_NAME) || !defined(TCM_VARIANT) || !defined(TCM_X) || !defined(TCM_XF) ||   \
+    !defined(TCM_Y) || !defined(TCM_YF) || !defined(TCM_ARG) || !defined(TCM_IN) ||          \
+    !defined(TCM_R) || !defined(TCM_D) || !defined(TCM_MID) || !defined(TCM_NORM) ||         \
+    !defined(TCM_ADMIT) || !defined(TCM_G_OTHER)
+#error "tcm_engine.h: the variant must define every TCM_* macro of the contract"
+#endif
+#ifndef HYST_NUM_OPS_H
+#error "tcm_engine.h: include src/num_ops.h for the output type first"
+#endif
+
+#include <limits.h>
+#include <string.h>
+
+#include "hyst_util.h"
+
+#if defined(__GNUC__)
+#define TCM_NOINLINE __attribute__((noinline))
+#else
+#define TCM_NOINLINE
+#endif
+
+/* Members of the variant's numbers: inputs and outputs. */
+#define XV(v) ((v).TCM_XF)
+#define YV(v) ((v).TCM_YF)
+
+/* Bisection steps of a merge: enough for 24-bit codes and float inputs. */
+#define TCM_ROOT_STEPS 24
+
+/* "No merge alive": larger than any stack depth. */
+#define TCM_NO_LEVEL ((size_t)-1)
+
+/* Why a slow sample cannot take the plain path (S->detour, bit flags). */
+#define TCM_SLOW_ONLY 1u /* no fast path: out-of-line curve, or a live merge */
+#define TCM_BOOK 2u      /* bookkeeping when the stack changes: a live merge
+                          * or an open deadband excursion */
+#define TCM_DEADBAND 4u  /* reversals need the deadband test */
+
+/* G at u, any kind: Horner inline for polynomials, else out of line. */
+HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
+{
+    return S->horner != 0u ? NUM_NAME(horner)(S->coef, S->horner, u)
+                           : TCM_G_OTHER(S->curve, u);
+}
+
+/* g for the rare paths (merge, deadband): one out-of-line copy, not one
+ * inlined Horner switch per call site. d is an input difference. */
+static TCM_NOINLINE TCM_Y TCM_NAME(g)(const hyst_tcm_t *S, TCM_Y d)
+{
+    return TCM_NAME(g_unit)(S, d * YV(S->unit));
+}
+
+/* Output on the current branch. One formula for both paths (the fast path
+ * sees only polynomials, the same Horner code), so that a loop that closes
+ * returns to its starting output bit for bit. */
+HYST_INLINE TCM_Y TCM_NAME(branch_y)(const hyst_tcm_t *S, TCM_X x)
+{
+    return YV(S->y_ctp) +
+           YV(S->sign) * TCM_NAME(g_unit)(S, (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale));
+}
+
+/* branch_y() for the fast path: polynomial curves only, no call. */
+HYST_INLINE TCM_Y TCM_NAME(branch_y_poly)(const hyst_tcm_t *S, TCM_X x)
+{
+    return YV(S->y_ctp) + YV(S->sign) * NUM_NAME(horner)(S->coef, S->horner,
+                                                         (TCM_R(x) - YV(S->x_ctp)) *
+                                                             YV(S->u_scale));
+}
+
+/* Derives S->detour from the state it summarises; called wherever that
+ * state changes (all off the per-sample path), so that the plain slow path
+ * tests one word. */
+static void TCM_NAME(set_detour)(hyst_tcm_t *S)
+{
+    const unsigned merged = S->forgot_level != TCM_NO_LEVEL ? TCM_SLOW_ONLY | TCM_BOOK : 0u;
+    S->detour = merged | (S->horner == 0u ? TCM_SLOW_ONLY : 0u) |
+                (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
+                (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u);
+}
+
+/* The fast-path cache of a rising branch from LTP n_ltp - 1, last input x. */
+HYST_INLINE void TCM_NAME(settle_rising)(hyst_tcm_t *S, TCM_X x)
+{
+    const size_t nl = S->n_ltp, nr = S->n_rtp;
+    YV(S->x_ctp) = TCM_R(XV(S->xltp)[nl - 1u]);
+    YV(S->y_ctp) = YV(S->yltp)[nl - 1u];
+    YV(S->sign) = 1;
+    YV(S->u_scale) = YV(S->unit);
+    XV(S->window[0]) = x;
+    XV(S->window[1]) = nr > 0u ? XV(S->xrtp)[nr - 1u] : XV(S->hi);
+    S->moving_end = 0u;
+}
+
+/* The same for a falling branch from RTP n_rtp - 1. */
+HYST_INLINE void TCM_NAME(settle_falling)(hyst_tcm_t *S, TCM_X x)
+{
+    const size_t nl = S->n_ltp, nr = S->n_rtp;
+    YV(S->x_ctp) = TCM_R(XV(S->xrtp)[nr - 1u]);
+    YV(S->y_ctp) = YV(S->yrtp)[nr - 1u];
+    YV(S->sign) = -1;
+    YV(S->u_scale) = -YV(S->unit);
+    XV(S->window[0]) = XV(S->xltp)[nl - 1u];
+    XV(S->window[1]) = x;
+    S->moving_end = 1u;
+}
+
+/* Derives the fast-path cache from the arrays and the last input, then
+ * empties the window if every sample must be slow. */
+static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x)
+{
+    if (S->n_ltp > S->n_rtp) {
+        TCM_NAME(settle_rising)(S, x);
+    } else {
+        TCM_NAME(settle_falling)(S, x);
+    }
+    if ((S->detour & TCM_SLOW_ONLY) != 0u) {
+        XV(S->window[1u - S->moving_end]) = x;
+    }
+}
+
+/* A sample ended with a status other than HYST_OK: the fast path, which does
+ * not store the status, is closed for the next sample (it takes the slow
+ * path, which resets the status). */
+static void TCM_NAME(flag)(hyst_tcm_t *S, int status, unsigned event)
+{
+    S->status = status;
+    S->events |= event;
+    XV(S->window[1u - S->moving_end]) = XV(S->window[S->moving_end]);
+}
+
+void TCM_NAME(reset_)(hyst_tcm_t *S)
+{
+    XV(S->xltp)[0] = XV(S->lo);
+    YV(S->yltp)[0] = YV(S->y_lo);
+    S->n_ltp = 1u;
+    S->n_rtp = 0u;
+    S->status = HYST_OK;
+    S->events = 0u;
+    YV(S->forgot) = 0;
+    S->forgot_level = TCM_NO_LEVEL;
+    XV(S->db_reach) = 0;
+    YV(S->db_err) = 0;
+    TCM_NAME(set_detour)(S);
+    TCM_NAME(settle)(S, XV(S->lo));
+    YV(S->y_prev) = YV(S->y_lo);
+}
+
+void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, const hyst_tcm_book_t *book)
+{
+    size_t i;
+    /* The keyed search needs +0 where a TP is zero. */
+    for (i = 0u; i < S->n_ltp; ++i) {
+        XV(S->xltp)[i] = TCM_NORM(XV(S->xltp)[i]);
+    }
+    for (i = 0u; i < S->n_rtp; ++i) {
+        XV(S->xrtp)[i] = TCM_NORM(XV(S->xrtp)[i]);
+    }
+    YV(S->forgot) = (TCM_Y)book->forgot;
+    S->forgot_level = book->forgot_level;
+    XV(S->db_reach) = (TCM_X)book->db_reach;
+    YV(S->db_err) = (TCM_Y)book->db_err;
+    TCM_NAME(set_detour)(S);
+    TCM_NAME(settle)(S, TCM_NORM((TCM_X)x));
+    YV(S->y_prev) = (TCM_Y)y;
+}
+
+/* Validated set-up shared by every init: the curve's numbers, the arrays,
+ * the identity, deadband off, reset. unit: G's argument per input step. */
+static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo, TCM_X hi,
+                             TCM_Y unit, TCM_X *xltp, TCM_Y *yltp, TCM_X *xrtp, TCM_Y *yrtp,
+                             size_t capacity)
+{
+    unsigned k;
+    S->variant = (unsigned)TCM_VARIANT;
+    S->layout = HYST_LAYOUT;
+    S->curve = curve;
+    XV(S->lo) = lo;
+    XV(S->hi) = hi;
+    YV(S->y_lo) = YV(curve->y_lo);
+    YV(S->y_hi) = YV(curve->y_hi);
+    YV(S->unit) = unit;
+    S->horner = curve->kind == (unsigned)HYST_CURVE_POLY ? curve->u.poly.degree : 0u;
+    for (k = 0u; k < HYST_MAX_DEGREE; ++k) {
+        YV(S->coef[k]) = S->horner != 0u && k < S->horner ? YV(curve->u.poly.a[k]) : 0;
+    }
+    XV(S->xltp) = xltp;
+    YV(S->yltp) = yltp;
+    XV(S->xrtp) = xrtp;
+    YV(S->yrtp) = yrtp;
+    S->capacity = capacity;
+    XV(S->deadband) = 0;
+    TCM_NAME(reset_)(S);
+}
+
+/* floor(log2 n), n > 0. */
+static unsigned TCM_NAME(floor_log2)(size_t n)
+{
+#if defined(__GNUC__) || defined(__clang__) /* one clz instruction */
+    return (unsigned)(sizeof(unsigned long) * CHAR_BIT - 1u) -
+           (unsigned)__builtin_clzl((unsigned long)n);
+#else
+    unsigned lg = 0u;
+    while (n > 1u) {
+        n /= 2u;
+        ++lg;
+    }
+    return lg;
+#endif
+}
+
+/* Binary search without loop bookkeeping: the length of the prefix of
+ * a[0..n) whose entries satisfy KEEP (the arrays are sorted so that it is a
+ * prefix). One probe at p - 1 (p = 2^floor(log2 n)) leaves a window of p
+ * entries; an unrolled ladder of probes p/2 .. 1 resolves it, each a load, a
+ * compare and a conditional add: floor(log2 n) + 1 probes in all. Uses a, n,
+ * lg = floor(log2 n) and advances b. */
+#define TCM_PROBE_(step, KEEP)       \
+    do {                             \
+        if (KEEP(b + (step) - 1u)) { \
+            b += (step);             \
+        }                            \
+    } while (0)
+
+#define TCM_LADDER_(KEEP)                                                       \
+    do {                                                                        \
+        if (KEEP(a + ((size_t)1 << lg) - 1u)) {                                 \
+            b += n - ((size_t)1 << lg) + 1u;                                    \
+        }                                                                       \
+        switch (lg) {                                                           \
+        default: { /* capacities above 8192: the top of the ladder by a loop */ \
+            size_t width = (size_t)1 << (lg - 1u);                              \
+            for (; width > 2048u; width /= 2u) {                                \
+                TCM_PROBE_(width, KEEP);                                        \
+            }                                                                   \
+        }                                                                       \
+            /* fall through */                                                  \
+        case 12u: TCM_PROBE_(2048u, KEEP); /* fall through */                   \
+        case 11u: TCM_PROBE_(1024u, KEEP); /* fall through */                   \
+        case 10u: TCM_PROBE_(512u, KEEP); /* fall through */                    \
+        case 9u: TCM_PROBE_(256u, KEEP); /* fall through */                     \
+        case 8u: TCM_PROBE_(128u, KEEP); /* fall through */                     \
+        case 7u: TCM_PROBE_(64u, KEEP); /* fall through */                      \
+        case 6u: TCM_PROBE_(32u, KEEP); /* fall through */                      \
+        case 5u: TCM_PROBE_(16u, KEEP); /* fall through */                      \
+        case 4u: TCM_PROBE_(8u, KEEP); /* fall through */                       \
+        case 3u: TCM_PROBE_(4u, KEEP); /* fall through */                       \
+        case 2u: TCM_PROBE_(2u, KEEP); /* fall through */                       \
+        case 1u: TCM_PROBE_(1u, KEEP); /* fall through */                       \
+        case 0u:                                                                \
+            break;                                                              \
+        }                                                                       \
+    } while (0)
+
+#ifdef TCM_KEY_T
+/* Reals are searched by their bit patterns read as integers (TCM_KEY_T,
+ * same size): an integer compare is one instruction fewer per probe than a
+ * floating-point one on FPUs that move flags (Cortex-M4F, C28x). IEEE 754
+ * patterns order like the values: as signed integers when the searched
+ * value x is >= +0, as unsigned ones reversed when x < 0. Exact for finite
+ * values but -0, which is why x and the stored TPs have -0 made +0
+ * (TCM_NORM). */
+HYST_INLINE TCM_KEY_T TCM_NAME(key)(const TCM_X *p)
+{
+    TCM_KEY_T k;
+    memcpy(&k, p, sizeof k);
+    return k;
+}
+#define TCM_BELOW_S_(p) (TCM_NAME(key)(p) < kx)
+#define TCM_BELOW_U_(p) ((TCM_UKEY_T)TCM_NAME(key)(p) > (TCM_UKEY_T)kx)
+#define TCM_ABOVE_S_(p) (TCM_NAME(key)(p) > kx)
+#define TCM_ABOVE_U_(p) ((TCM_UKEY_T)TCM_NAME(key)(p) < (TCM_UKEY_T)kx)
+#define TCM_SEARCH_(SIGNED, UNSIGNED)               \
+    do {                                            \
+        const TCM_X xn = TCM_NORM(x);               \
+        const TCM_KEY_T kx = TCM_NAME(key)(&xn);    \
+        if (kx >= 0) {                              \
+            TCM_LADDER_(SIGNED);                    \
+        } else {                                    \
+            TCM_LADDER_(UNSIGNED);                  \
+        }                                           \
+    } while (0)
+#else
+/* Values compared as they are; no unsigned ladder. */
+#define TCM_BELOW_S_(p) (*(p) < x)
+#define TCM_ABOVE_S_(p) (*(p) > x)
+#define TCM_SEARCH_(KEEP, unused) TCM_LADDER_(KEEP)
+#endif
+
+/* Count of xltp[0..n) below x (ascending array): LTPs that survive a fall to x. */
+HYST_INLINE size_t TCM_NAME(ltp_below)(const TCM_X *a, size_t n, TCM_X x)
+{
+    const TCM_X *b = a;
+    unsigned lg;
+    if (n == 0u) {
+        return 0u;
+    }
+    lg = TCM_NAME(floor_log2)(n);
+    TCM_SEARCH_(TCM_BELOW_S_, TCM_BELOW_U_);
+    return (size_t)(b - a);
+}
+
+/* Count of xrtp[0..n) above x (descending array): RTPs that survive a rise to x. */
+HYST_INLINE size_t TCM_NAME(rtp_above)(const TCM_X *a, size_t n, TCM_X x)
+{
+    const TCM_X *b = a;
+    unsigned lg;
+    if (n == 0u) {
+        return 0u;
+    }
+    lg = TCM_NAME(floor_log2)(n);
+    TCM_SEARCH_(TCM_ABOVE_S_, TCM_ABOVE_U_);
+    return (size_t)(b - a);
+}
+
+#ifndef TCM_LTP_BELOW
+#define TCM_LTP_BELOW(a, n, x) TCM_NAME(ltp_below)((a), (n), (x))
+#define TCM_RTP_ABOVE(a, n, x) TCM_NAME(rtp_above)((a), (n), (x))
+#endif
+
+/* A TP was pushed or wiped: no deadband excursion is open any more. */
+static void TCM_NAME(window_closed)(hyst_tcm_t *S)
+{
+    XV(S->db_reach) = 0;
+    YV(S->db_err) = 0;
+    TCM_NAME(set_detour)(S);
+}
+
+/* The input left every merged loop: exact again, fast path back. Out of
+ * line: off the worst path. */
+static TCM_NOINLINE void TCM_NAME(merges_left)(hyst_tcm_t *S)
+{
+    YV(S->forgot) = 0;
+    S->forgot_level = TCM_NO_LEVEL;
+    TCM_NAME(set_detour)(S);
+}
+
+/* After a wipe-out to stack depth `depth` (0: the input reached lo or hi,
+ * which sets every past state): a merge whose outer TP is gone no longer
+ * matters (the input left its loop), so the error bound drops to 0 once the
+ * shallowest one is gone. */
+static void TCM_NAME(wiped)(hyst_tcm_t *S, size_t depth)
+{
+    if (depth <= S->forgot_level && S->forgot_level != TCM_NO_LEVEL) {
+        TCM_NAME(merges_left)(S);
+    }
+    if (XV(S->db_reach) != 0) {
+        TCM_NAME(window_closed)(S);
+    }
+}
+
+/* A merge keeps the outer TP O = R2 = (xo, yo); the current point
+ * P = (xp, yp) must lie on the rising branch of the new LTP V. */
+typedef struct {
+    TCM_X xo, xp;
+    TCM_Y yo, yp;
+} TCM_NAME(merge_t);
+
+/* y at v of O's falling branch minus y at v of the branch that rises from v
+ * through P: zero where V must be. */
+static TCM_Y TCM_NAME(gap)(const hyst_tcm_t *S, const TCM_NAME(merge_t) *m, TCM_X v)
+{
+    return (m->yo - TCM_NAME(g)(S, TCM_D(m->xo, v))) - (m->yp - TCM_NAME(g)(S, TCM_D(m->xp, v)));
+}
+
+/* Root of gap on [a, b] = [x_L1, x_P] by bisection: the gap has opposite
+ * signs at the ends when f0'' keeps one sign (docs/memory.md), else the
+ * better end wins. *resid = the gap left at the returned point. */
+static TCM_X TCM_NAME(root)(const hyst_tcm_t *S, const TCM_NAME(merge_t) *m, TCM_X a, TCM_X b,
+                            TCM_Y *resid)
+{
+    TCM_Y fa = TCM_NAME(gap)(S, m, a);
+    TCM_Y fb = TCM_NAME(gap)(S, m, b);
+    if (fa != 0 && fb != 0 && (fa > 0) != (fb > 0)) {
+        int k;
+        for (k = 0; k < TCM_ROOT_STEPS; ++k) {
+            const TCM_X mid = TCM_MID(a, b);
+            TCM_Y fm;
+            if (mid == a || mid == b) {
+                break;
+            }
+            fm = TCM_NAME(gap)(S, m, mid);
+            if ((fm > 0) == (fa > 0)) {
+                a = mid;
+                fa = fm;
+            } else {
+                b = mid;
+                fb = fm;
+            }
+        }
+    }
+    if (NUM_NAME(abs)(fa) <= NUM_NAME(abs)(fb)) {
+        *resid = NUM_NAME(abs)(fa);
+        return a;
+    }
+    *resid = NUM_NAME(abs)(fb);
+    return b;
+}
+
+/* Full LTP array at a reversal at P = (x_prev, y_prev), falling, so
+ * nl == nr == capacity >= 2: the innermost loop (L1, R1) and P become one
+ * LTP V on R2's falling branch whose rising branch passes through P (see
+ * tcm.h, "Bounded memory"). Off the per-sample path. */
+static TCM_NOINLINE void TCM_NAME(merge)(hyst_tcm_t *S, TCM_X x_prev, size_t *nr)
+{
+    const size_t l1 = S->capacity - 1u, r1 = *nr - 1u;
+    TCM_NAME(merge_t) m;
+    TCM_Y resid, miss, yv;
+    TCM_X v;
+    m.xp = x_prev;
+    m.yp = YV(S->y_prev);
+    m.xo = XV(S->xrtp)[r1 - 1u];
+    m.yo = YV(S->yrtp)[r1 - 1u];
+    v = TCM_NAME(root)(S, &m, XV(S->xltp)[l1], m.xp, &resid);
+    yv = m.yp - TCM_NAME(g)(S, TCM_D(m.xp, v));
+    miss = yv + TCM_NAME(g)(S, TCM_D(XV(S->xrtp)[r1], v)) - YV(S->yrtp)[r1]; /* at the lost R1 */
+    XV(S->xltp)[l1] = TCM_NORM(v);
+    YV(S->yltp)[l1] = yv;
+    *nr = r1;
+    YV(S->forgot) += NUM_NAME(abs)(miss) + resid;
+    if (2u * r1 - 1u < S->forgot_level) { /* stack position of R2 */
+        S->forgot_level = 2u * r1 - 1u;
+    }
+    TCM_NAME(set_detour)(S);
+}
+
+/* Deadband: the input reversed at x_prev within d < deadband of the
+ * current TP. Nothing is stored: the trajectory moves back along the current
+ * branch (reversibly), where the full model would run a minor loop of width
+ * at most d inside it; its error is at most that loop's height
+ * |g(d) - 2 g(d/2)| (docs/memory.md), kept for the widest d until the stack
+ * next changes (the full model has then wiped that loop too). */
+static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X d)
+{
+    if (d > XV(S->db_reach)) {
+        const TCM_Y full = TCM_D(d, (TCM_X)0);
+        XV(S->db_reach) = d;
+        YV(S->db_err) = NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_NAME(g)(S, full * NUM_C(0.5)));
+        TCM_NAME(set_detour)(S);
+    }
+}
+
+/* A slow sample with TCM_SLOW_ONLY (its window left empty by settle(): the
+ * next sample is slow too): while a merge is alive the output is clamped to
+ * the major loop's range [y_lo, y_hi]. The merged LTP V's branches are not
+ * the full model's and can leave that range (x^3's compensator: a drive of
+ * 1.07 > hi). The full model's output always lies in the range, so clamping
+ * never moves y away from it: |y - y_full| <= error_bound still holds. */
+static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x)
+{
+    TCM_Y y = TCM_NAME(branch_y)(S, x);
+    if (S->forgot_level != TCM_NO_LEVEL) {
+        if (y > YV(S->y_hi)) {
+            y = YV(S->y_hi);
+        } else if (y < YV(S->y_lo)) {
+            y = YV(S->y_lo);
+        }
+    }
+    return y;
+}
+
+/* Ends a slow sample: caches the branch now current and evaluates it. A
+ * status other than OK closes the fast path for the next sample. */
+static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x)
+{
+    TCM_Y y;
+    TCM_NAME(settle)(S, x);
+    y = (S->detour & TCM_SLOW_ONLY) != 0u ? TCM_NAME(slow_only)(S, x) : TCM_NAME(branch_y_poly)(S, x);
+    YV(S->y_prev) = y;
+    if (S->status != HYST_OK) {
+        XV(S->window[1u - S->moving_end]) = x;
+    }
+    return y;
+}
+
+/* Out of line, off the worst path: NaN, inputs outside (lo, hi) (clamped)
+ * and inputs at lo or hi, which pass every stored TP: back at A0 without a
+ * search. */
+static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
+{
+    TCM_X x;
+    if (!TCM_ADMIT(S, x_in, &x) || x == XV(S->window[S->moving_end])) {
+        if (S->status != HYST_OK) {
+            TCM_NAME(flag)(S, S->status, 0u);
+        }
+        return YV(S->y_prev);
+    }
+    S->n_ltp = 1u;
+    S->n_rtp = 0u;
+    TCM_NAME(wiped)(S, 0u);
+    return TCM_NAME(finish)(S, x);
+}
+
+/* Reversal on a falling branch without a wipe-out, with a detour (a flag
+ * of S->detour, or a full LTP array): (x_prev, y_prev) becomes LTP nl,
+ * unless the deadband skips it or a full array merges it. */
+static TCM_NOINLINE TCM_Y TCM_NAME(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
+{
+    size_t nl = S->n_ltp, nr = S->n_rtp;
+    if ((TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev) < XV(S->deadband)) {
+        TCM_NAME(skip)(S, (TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev)); /* keep falling */
+    } else {
+        if (nl == S->capacity) {
+            /* Only the LTP array can fill (A0 takes one of its entries). */
+            S->status = HYST_WARN_FULL;
+            S->events |= HYST_EVENT_FULL;
+            TCM_NAME(merge)(S, x_prev, &nr);
+        } else {
+            XV(S->xltp)[nl] = TCM_NORM(x_prev);
+            YV(S->yltp)[nl] = YV(S->y_prev);
+            ++nl;
+        }
+        S->n_ltp = nl;
+        S->n_rtp = nr;
+        TCM_NAME(window_closed)(S);
+    }
+    return TCM_NAME(finish)(S, x);
+}
+
+/* Reversal on a rising branch without a wipe-out, with a detour:
+ * (x_prev, y_prev) becomes RTP nr (nr < nl <= capacity: always room),
+ * unless the deadband skips it. */
+static TCM_NOINLINE TCM_Y TCM_NAME(reverse_down)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
+{
+    const size_t nl = S->n_ltp, nr = S->n_rtp;
+    if ((TCM_X)(x_prev - XV(S->xltp)[nl - 1u]) < XV(S->deadband)) {
+        TCM_NAME(skip)(S, (TCM_X)(x_prev - XV(S->xltp)[nl - 1u])); /* keep rising */
+    } else {
+        XV(S->xrtp)[nr] = TCM_NORM(x_prev);
+        YV(S->yrtp)[nr] = YV(S->y_prev);
+        S->n_rtp = nr + 1u;
+        TCM_NAME(window_closed)(S);
+    }
+    return TCM_NAME(finish)(S, x);
+}
+
+/* A wipe-out down to stack depth `depth` with a detour: bookkeeping, then
+ * the output. */
+static TCM_NOINLINE TCM_Y TCM_NAME(wiped_detour)(hyst_tcm_t *S, TCM_X x, size_t depth)
+{
+    TCM_NAME(wiped)(S, depth);
+    return TCM_NAME(finish)(S, x);
+}
+
+/* Everything but the fast path, for an input strictly inside (lo, hi):
+ * repeats, reversals, wipe-out. A wipe-out is always "rising to RTP nr-1 or
+ * beyond" or "falling to LTP nl-1 or below", after a reversal or not, so each
+ * search has one call site. The plain path (no detour: a polynomial curve,
+ * nothing merged, no deadband) ends in one settle and one Horner evaluation
+ * per direction; merges, the deadband and other curve kinds leave it through
+ * one test of S->detour. */
+static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
+{
+    TCM_X x, x_prev;
+    size_t nl, nr;
+    TCM_Y y;
+
+    S->status = HYST_OK;
+    x_prev = XV(S->window[S->moving_end]);
+    nl = S->n_ltp;
+    nr = S->n_rtp;
+    /* Domain checks folded into the direction test: rising can only leave
+     * through hi, falling through lo; NaN is neither rising nor falling. */
+    if (x_in > x_prev) {
+        if (!(x_in < XV(S->hi))) {
+            return TCM_NAME(step_edge)(S, x_in);
+        }
+        x = (TCM_X)x_in;
+        if (nr > 0u && x >= XV(S->xrtp)[nr - 1u]) {
+            /* wipe-out: RTPs at or below x go, with the LTPs above them */
+            nr = TCM_RTP_ABOVE(XV(S->xrtp), nr - 1u, x);
+            S->n_ltp = nr + 1u;
+            S->n_rtp = nr;
+            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK)) != 0u) {
+                return TCM_NAME(wiped_detour)(S, x, 2u * nr + 1u);
+            }
+        } else if (nl == nr && S->detour == 0u && nl < S->capacity) {
+            /* reversal on a falling branch: (x_prev, y_prev) becomes LTP nl */
+            XV(S->xltp)[nl] = TCM_NORM(x_prev);
+            YV(S->yltp)[nl] = YV(S->y_prev);
+            S->n_ltp = nl + 1u;
+        } else {
+            return nl == nr ? TCM_NAME(reverse_up)(S, x, x_prev) : TCM_NAME(finish)(S, x);
+        }
+        TCM_NAME(settle_rising)(S, x);
+    } else if (x_in < x_prev) {
+        if (!(x_in > XV(S->lo))) {
+            return TCM_NAME(step_edge)(S, x_in);
+        }
+        x = (TCM_X)x_in;
+        if (x <= XV(S->xltp)[nl - 1u]) {
+            /* wipe-out: LTPs at or above x go, with the RTPs above them;
+             * A0 = lo < x always survives */
+            nl = TCM_LTP_BELOW(XV(S->xltp), nl - 1u, x);
+            S->n_ltp = nl;
+            S->n_rtp = nl;
+            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK)) != 0u) {
+                return TCM_NAME(wiped_detour)(S, x, 2u * nl);
+            }
+        } else if (nl > nr && S->detour == 0u) {
+            /* reversal on a rising branch: (x_prev, y_prev) becomes RTP nr
+             * (nr < nl <= capacity: always room) */
+            XV(S->xrtp)[nr] = TCM_NORM(x_prev);
+            YV(S->yrtp)[nr] = YV(S->y_prev);
+            S->n_rtp = nr + 1u;
+        } else {
+            return nl > nr ? TCM_NAME(reverse_down)(S, x, x_prev) : TCM_NAME(finish)(S, x);
+        }
+        TCM_NAME(settle_falling)(S, x);
+    }
+    /* Always true for integer codes; false for a NaN real input: */
+    /* cppcheck-suppress knownConditionTrueFalse */
+    else if (x_in == x_prev) { /* repeated samples create no TP */
+        /* the window was closed only by a status to reset: reopen it */
+        TCM_NAME(settle)(S, x_prev);
+        return YV(S->y_prev);
+    } else {
+        return TCM_NAME(step_edge)(S, x_in); /* NaN */
+    }
+    y = TCM_NAME(branch_y_poly)(S, x);
+    YV(S->y_prev) = y;
+    return y;
+}
+
+/* The NULL policy's answer for a per-sample call: 0. Out of line, so that
+ * the check costs the fast path one compare-and-branch and nothing else. */
+static TCM_NOINLINE TCM_Y TCM_NAME(no_instance)(void) { return 0; }
+
+/* The per-sample computation, inlined into the public step call. The fast path
+ * does not store the status: every sample that ends with another status
+ * closes the window, so the next one goes through step_slow(), which sets it. */
+HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
+{
+    TCM_Y y;
+    if (S == NULL) {
+        return TCM_NAME(no_instance)();
+    }
+    /* Fast path: the input moves on and reaches no stored TP. NaN fails the
+     * comparisons, and the window lies inside [lo, hi]: no other check needed. */
+    if (!(x > XV(S->window[0]) && x < XV(S->window[1]))) {
+        return TCM_NAME(step_slow)(S, x);
+    }
+    y = TCM_NAME(branch_y_poly)(S, (TCM_X)x); /* the window is empty for other curve kinds */
+    XV(S->window[S->moving_end]) = (TCM_X)x;
+    YV(S->y_prev) = y;
+    return y;
+}
+
+/* The block call's inner loop: the samples from i on that stay inside the
+ * fast-path window, with the window in registers and the branch in locals
+ * (sample() keeps them in S: a store and a reload per sample). The same
+ * arithmetic as step() (branch_y_poly), so outputs are identical. Returns
+ * the first sample that leaves the window, n if none. */
+static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, size_t n)
+{
+    const size_t first = i;
+    const TCM_Y x_ctp = YV(S->x_ctp), y_ctp = YV(S->y_ctp), sign = YV(S->sign);
+    const TCM_Y u_scale = YV(S->u_scale);
+    const unsigned deg = S->horner;
+    TCM_X w0 = XV(S->window[0]), w1 = XV(S->window[1]);
+    /* One loop per direction: a selected update of w0 or w1 in one loop put
+     * a select on the loop-carried compare (measured 0.41 vs 0.36 of
+     * PI-10's time on the host). */
+    if (S->moving_end == 0u) { /* rising: the lower end follows x */
+        for (; i < n; ++i) {
+            const TCM_X xi = x[i]; /* read before y[i]: y may be x */
+            if (!(xi > w0 && xi < w1)) {
+                break;
+            }
+            y[i] = y_ctp + sign * NUM_NAME(horner)(S->coef, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            w0 = xi;
+        }
+    } else {
+        for (; i < n; ++i) {
+            const TCM_X xi = x[i];
+            if (!(xi > w0 && xi < w1)) {
+                break;
+            }
+            y[i] = y_ctp + sign * NUM_NAME(horner)(S->coef, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            w1 = xi;
+        }
+    }
+    if (i > first) {
+        XV(S->window[0]) = w0;
+        XV(S->window[1]) = w1;
+        YV(S->y_prev) = y[i - 1u];
+    }
+    return i;
+}
+
+/* The block call; statuses folded as documented. Runs of samples on one
+ * branch go through run(), the others through step_slow(). */
+static hyst_status_t TCM_NAME(block)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t n)
+{
+    int worst = HYST_OK; /* HYST_WARN_FULL > HYST_WARN_CLAMPED > HYST_OK */
+    int failed = 0;
+    size_t i = 0u;
+    if (n > 0u && (S == NULL || x == NULL || y == NULL)) {
+        return HYST_ERR_NULL;
+    }
+    while (i < n) {
+        i = TCM_NAME(run)(S, x, y, i, n);
+        if (i == n) {
+            break;
+        }
+        y[i] = TCM_NAME(step_slow)(S, x[i]); /* x[i] left the window */
+        if (S->status < 0) {
+            failed = 1;
+        } else if (S->status > worst) {
+            worst = S->status;
+        }
+        ++i;
+    }
+    return failed ? HYST_ERR_NONFINITE : (hyst_status_t)worst;
+}
+
+#undef XV
+#undef YV
+#endif /* HYST_TCM_ENGINE_H */

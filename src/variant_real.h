@@ -1,0 +1,152 @@
+/* SPDX-License-Identifier: MIT */
+/* A real variant (f32, f64): the engine over one real type for inputs and
+ * outputs, its out-of-line curve kinds and its public functions. Included
+ * once by src/hyst_f32.c and src/hyst_f64.c after their number type
+ * descriptor; everything generated is named by NUM_NAME. */
+#ifndef HYST_VARIANT_REAL_H
+#define HYST_VARIANT_REAL_H
+
+#include "hyst/pi.h"
+#include "hyst/tcm.h"
+#include "hyst/inverse.h"
+
+#include "num_ops.h"
+#include "hyst_util.h"
+#include "curve_eval.h"
+
+/* Out of line so the common path stays short: NaN/Inf or outside [lo, hi].
+ * Returns 0 if the sample must be ignored, else 1 with *x clamped. */
+static int NUM_NAME(admit_slow)(hyst_tcm_t *S, NUM_T *x)
+{
+    const NUM_T v = *x;
+    if (!NUM_NAME(is_finite)(v)) {
+        S->status = HYST_ERR_NONFINITE;
+        S->events |= HYST_EVENT_NONFINITE;
+        return 0;
+    }
+    *x = v < S->lo.NUM_F ? S->lo.NUM_F : S->hi.NUM_F;
+    S->status = HYST_WARN_CLAMPED;
+    S->events |= HYST_EVENT_CLAMPED;
+    return 1;
+}
+
+static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
+{
+    *out = x;
+    return (x >= S->lo.NUM_F && x <= S->hi.NUM_F) || NUM_NAME(admit_slow)(S, out);
+}
+
+#define TCM_NAME(n) NUM_NAME(n)
+#define TCM_VARIANT NUM_VARIANT
+#define TCM_X NUM_T
+#define TCM_XF NUM_F
+#define TCM_Y NUM_T
+#define TCM_YF NUM_F
+#define TCM_ARG NUM_T
+#define TCM_IN NUM_T
+#define TCM_R(a) (a)
+#define TCM_D(a, b) ((a) - (b))
+#define TCM_MID(a, b) ((a) + ((b) - (a)) * NUM_C(0.5))
+#define TCM_NORM(a) ((a) + NUM_C(0.0)) /* -0 + +0 = +0 */
+#define TCM_ADMIT(S, x, out) NUM_NAME(admit)((S), (x), (out))
+#define TCM_G_OTHER(c, d) NUM_NAME(curve_g_other_)((c), (d))
+#ifdef NUM_KEY_T
+#define TCM_KEY_T NUM_KEY_T
+#define TCM_UKEY_T NUM_UKEY_T
+#endif
+#include "tcm_engine.h"
+
+hyst_status_t NUM_NAME(init_curve_)(hyst_tcm_t *S, const hyst_curve_t *curve, NUM_T *xltp,
+                                    NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
+                                    unsigned long layout)
+{
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T),
+                                         sizeof(NUM_T), layout);
+    if (st == HYST_OK) {
+        st = hyst_curve_check(curve);
+    }
+    if (st == HYST_OK && curve->variant != (unsigned)NUM_VARIANT) {
+        st = HYST_ERR_LAYOUT;
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    NUM_NAME(attach)(S, curve, curve->lo.NUM_F, curve->hi.NUM_F, curve->unit.NUM_F, xltp, yltp,
+                     xrtp, yrtp, capacity);
+    return HYST_OK;
+}
+
+hyst_status_t NUM_NAME(init_)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
+                              NUM_T *xrtp, NUM_T *yrtp, size_t capacity, unsigned long layout)
+{
+    hyst_curve_t curve;
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T),
+                                         sizeof(NUM_T), layout);
+    if (st == HYST_OK) {
+        st = hyst_curve_poly_(&curve, f0, NUM_VARIANT, layout);
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    /* A polynomial is copied whole into the instance: no curve to keep. */
+    NUM_NAME(attach)(S, &curve, curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp, yltp,
+                     xrtp, yrtp, capacity);
+    S->curve = NULL;
+    return HYST_OK;
+}
+
+hyst_status_t NUM_NAME(init_inverse_)(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
+                                      NUM_T *xltp, NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp,
+                                      size_t capacity, unsigned long layout)
+{
+    hyst_curve_t curve;
+    hyst_status_t st = inv == NULL ? HYST_ERR_NULL : hyst_curve_poly_(&curve, f0, NUM_VARIANT, layout);
+    if (st == HYST_OK) {
+        st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T), sizeof(NUM_T),
+                               layout);
+    }
+    if (st == HYST_OK) {
+        st = hyst_curve_inverse(&curve, &curve);
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    *inv = curve;
+    return NUM_NAME(init_curve_)(S, inv, xltp, yltp, xrtp, yrtp, capacity, layout);
+}
+
+hyst_status_t NUM_NAME(set_deadband)(hyst_tcm_t *S, NUM_T width)
+{
+    if (S == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (S->variant != (unsigned)NUM_VARIANT || !(width >= 0 && NUM_NAME(is_finite)(width))) {
+        return HYST_ERR_ARG;
+    }
+    S->deadband.NUM_F = width;
+    NUM_NAME(set_detour)(S);
+    return HYST_OK;
+}
+
+NUM_T NUM_NAME(step)(hyst_tcm_t *S, NUM_T x) { return NUM_NAME(sample)(S, x); }
+
+hyst_status_t NUM_NAME(process)(hyst_tcm_t *S, const NUM_T *x, NUM_T *y, size_t n)
+{
+    return NUM_NAME(block)(S, x, y, n);
+}
+
+NUM_T NUM_NAME(output)(const hyst_tcm_t *S) { return S != NULL ? S->y_prev.NUM_F : 0; }
+
+NUM_T NUM_NAME(input)(const hyst_tcm_t *S)
+{
+    return S != NULL ? S->window[S->moving_end].NUM_F : 0;
+}
+
+NUM_T NUM_NAME(error_bound)(const hyst_tcm_t *S)
+{
+    return S != NULL ? S->forgot.NUM_F + S->db_err.NUM_F : 0;
+}
+
+#include "pi_model.h"
+
+#endif /* HYST_VARIANT_REAL_H */
