@@ -3,8 +3,9 @@
 #  - inv undoes sim: sim of an input sequence, then inv of its outputs, gives
 #    the inputs back (relative 1e-6), on smooth nested loops and random jumps;
 #  - unreachable targets: clamped, warned with count and first line, exit 0;
-#  - pi equals hand-computed values of Eq. 15 (METHOD.md section 7) for two
-#    operators, and the closed-form branches for the paper's Table 1 model.
+#  - pi equals hand-computed values of Eq. 15 (docs/theory.md, the PI section)
+#    for two operators, and the closed-form branches for the paper's Table 1
+#    model.
 #   inv_pi.sh <hyst> <work dir>
 set -euo pipefail
 tool=$1 work=$2
