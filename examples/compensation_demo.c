@@ -1,4 +1,4 @@
-/* Feedforward compensation with the inverse TCM (METHOD.md section 8).
+/* Feedforward compensation with the inverse TCM (docs/theory.md, the inverse model).
  *
  * Plant: a Prandtl-Ishlinskii model with 50 play operators on 0..100 V whose
  * loading curve follows h(v) = 0.05 v + 1.2e-3 v^2 - 6e-6 v^3 um (about

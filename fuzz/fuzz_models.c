@@ -276,7 +276,7 @@ static void fuzz_pi(reader_t *rd, unsigned flags)
     }
 
     /* Analytic inverse: refused only for thresholds rounding made equal or
-     * inverse weights that fail hyst_pi_check() once rounded (finding 3,
+     * inverse weights that fail hyst_pi_check() once rounded (docs/reliability.md, unchecked inverse PI weights,
      * regress_pi_inverse_overflow/_cancel, fixed), and then nothing written. */
     st = hyst_pi_inverse_params(pr, pw, n, ri, wi);
     CHECK(st == HYST_OK || st == HYST_ERR_BREAKPOINTS || st == HYST_ERR_WEIGHTS);
@@ -396,7 +396,7 @@ static void fuzz_pi(reader_t *rd, unsigned flags)
                 continue;
             }
             /* TCM with f0 = f_PI reproduces PI exactly for inputs in [0, hi]
-             * from 0 (METHOD.md 7). Rounding: PI sums n <= 16 products of
+             * from 0 (docs/theory.md, the PI model as a TCM). Rounding: PI sums n <= 16 products of
              * size <= range, TCM adds one PWL interpolation per sample (a
              * few eps of range): far below 1e-9 of the range. */
             if (tcm_ok) {
@@ -463,7 +463,7 @@ static hyst_status_t pwl_expected(size_t n)
     return qy[n - 1u] > qy[0] ? HYST_OK : HYST_ERR_NOT_INCREASING;
 }
 
-/* Finding 4 (docs/reliability.md, regress_pwl_overflow, regress_pwl_underflow),
+/* PWL interpolation overflow and underflow (docs/reliability.md, regress_pwl_overflow, regress_pwl_underflow),
  * fixed: hyst_pwl_eval_() divides first and both spans must be finite, so
  * products no longer overflow or underflow. Still skipped (raw parameters
  * only): subnormal differences, which have no relative accuracy left. */
@@ -631,7 +631,7 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
     for (i = 0; i < n; ++i) CHECK(at_breakpoint(&inv, qy, qx, n, i)); /* swapped axes: exact */
     /* Round trip f(f^-1(v)) = v. Per point: the drive's rounding (a few eps
      * of max|x|) times the steepest slope L, plus a few eps of |v|; with
-     * structured points that is far below 1e-9 R, which is the issue's bound;
+     * structured points that is far below 1e-9 R, which is the product's bound;
      * raw points can be arbitrarily steep, so the rounding term is kept. */
     if (!isfinite(R) || !isfinite(L) || !isfinite(mx * L) || !(R >= DBL_MIN / EPS)) return;
     tol = 1e-9 * R + 16.0 * EPS * (my + mx * L);
@@ -765,10 +765,10 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
     CHECK(hyst_curve_inverse(&back, &ci) == HYST_OK && back.kind == HYST_CURVE_POLY);
     R = cf.y_hi - cf.y_lo;
     M = fmax(fabs(f.lo), fabs(f.hi));
-    /* g(g^-1(e)) = e: the issue's 1e-9 of the range, plus the drive's
+    /* g(g^-1(e)) = e: the product's 1e-9 of the range, plus the drive's
      * rounding (8 eps M) times the steepest slope and Horner's bound (raw
      * curves can be badly scaled). Flat points (f0' below 1% of its mean
-     * slope somewhere) are held to the same bound since finding 5's fix
+     * slope somewhere) are held to the same bound since the monotone bisection replaced Newton
      * (docs/reliability.md; regress_inverse_flat_point gave 3.9e-9 of the
      * range with Newton); the flag only names the check. */
     rel = min_rel_slope(&f, R);
@@ -778,7 +778,7 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
      * (raw curves only): init and the structural checks above suffice. */
     if (!isfinite(tol) || !(R >= DBL_MIN / EPS)) return;
     /* Within 64 (n + 1) of DBL_MAX, Horner's partial sums of G can overflow
-     * (the Newton solver before finding 5's fix lost G' there: 4e-4 of the
+     * (the Newton solver before the monotone bisection lost G' there: 4e-4 of the
      * range on regress_inverse_knot_overflow, R = 5.3e307); an infinite G(m)
      * sends the bisection left. Raw curves only, noted in
      * docs/reliability.md; only the bound below is checked. */
@@ -786,7 +786,7 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         /* What is still guaranteed there: the knot table brackets e within
          * one of HYST_INV_KNOTS equal slices of the range, and the answer
          * stays in that bracket, so the residual is at most R / K. Before
-         * the fill_knots fix (finding 7) it was 0.75 R. */
+         * the fill_knots overflow fix it was 0.75 R. */
         for (j = 0; j <= 64u; ++j) {
             const double e = R * ((double)j / 64.0);
             const double d = hyst_curve_g(&ci, e), g = hyst_curve_g(&cf, d);
@@ -800,7 +800,7 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         const double e = R * ((double)j / 64.0); /* no overflow near DBL_MAX */
         const double d = hyst_curve_g(&ci, e);
         CHECK(d >= 0.0 && d <= cf.hi - cf.lo);
-        /* g^-1 non-decreasing (finding 5): grid and neighbouring doubles */
+        /* g^-1 non-decreasing (monotone bisection): grid and neighbouring doubles */
         CHECK(d >= prev_d && hyst_curve_g(&ci, nextafter(e, -INFINITY)) <= d &&
               hyst_curve_g(&ci, nextafter(e, INFINITY)) >= d);
         prev_d = d;
@@ -828,14 +828,14 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
             const double xd = hyst_step(&Ti.S, yd);
             if (!isfinite(yd)) continue;
             if (hyst_status(&Ti.S) == HYST_WARN_FULL) run_ok = 0;
-            /* The drive stays in [lo, hi], after a merge too (finding 6,
+            /* The drive stays in [lo, hi], after a merge too (the output clamp after a full array,
              * regress_full_drive_overrange, fixed: the engine clamps). */
             CHECK(in_domain(xd, cf.lo, cf.hi));
             {
                 const double yf = hyst_step(&T.S, xd);
                 if (hyst_status(&T.S) == HYST_WARN_FULL) run_ok = 0;
                 /* H(H^-1(yd)) = clamp(yd); per-TP bound as above, on flat
-                 * curves too: g^-1 is monotone since finding 5's fix (before,
+                 * curves too: g^-1 is monotone since the monotone bisection replaced Newton (before,
                  * regress_inverse_flat_reversal reversed the drive and the
                  * model missed yd by 1.2e-5 of the range). */
                 if (run_ok) {
@@ -1014,7 +1014,7 @@ static void fuzz_ident(reader_t *rd, unsigned flags)
             const double x = next_pos(rd, op, cfg.lo, cfg.hi - cfg.lo);
             double y = yb == 0u ? NAN : yb == 1u ? INFINITY : yb == 2u ? rd_f64(rd)
                                                                      : (double)(signed char)yb / 8.0 + x;
-            /* Outputs up to DBL_MAX: finding 8 (fuzz/slow/regress_ident_overflow_solve,
+            /* Outputs up to DBL_MAX: the slow identification on huge outputs (fuzz/slow/regress_ident_overflow_solve,
              * seconds per solve before) is fixed, no clamp any more. */
             exp = sample_expected(&cfg, x, y);
             if (kind < 2u) {

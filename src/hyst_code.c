@@ -45,15 +45,10 @@ hyst_status_t hyst_code_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve,
                                     hyst_code_word_t *xltp, float *yltp, hyst_code_word_t *xrtp,
                                     float *yrtp, size_t capacity, unsigned long layout)
 {
-    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity,
-                                         sizeof(hyst_code_word_t), sizeof(float), layout);
+    const hyst_status_t st =
+        hyst_check_init(S, curve, HYST_VARIANT_F32, xltp, yltp, xrtp, yrtp, capacity,
+                        sizeof(hyst_code_word_t), sizeof(float), layout);
     hyst_wide_t unit;
-    if (st == HYST_OK) {
-        st = hyst_curve_check(curve);
-    }
-    if (st == HYST_OK && curve->variant != (unsigned)HYST_VARIANT_F32) {
-        st = HYST_ERR_LAYOUT;
-    }
     if (st != HYST_OK) {
         return st;
     }

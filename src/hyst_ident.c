@@ -108,13 +108,13 @@ static int method_of(int method)
 hyst_status_t hyst_ident_init_(hyst_ident_t *id, const hyst_ident_config_t *cfg,
                                unsigned long layout)
 {
-    if (layout != HYST_LAYOUT) {
-        return HYST_ERR_LAYOUT;
-    }
     size_t k;
     int method;
     if (id == NULL || cfg == NULL) {
         return HYST_ERR_NULL;
+    }
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
     }
     if (cfg->degree < 1u || cfg->degree > HYST_MAX_DEGREE) {
         return HYST_ERR_DEGREE;

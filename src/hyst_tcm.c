@@ -49,6 +49,22 @@ hyst_status_t hyst_check_memory(const hyst_tcm_t *S, const void *xltp, const voi
     return HYST_OK;
 }
 
+hyst_status_t hyst_check_init(const hyst_tcm_t *S, const hyst_curve_t *curve,
+                              unsigned curve_variant, const void *xltp, const void *yltp,
+                              const void *xrtp, const void *yrtp, size_t capacity, size_t xsize,
+                              size_t ysize, unsigned long layout)
+{
+    hyst_status_t st =
+        hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, xsize, ysize, layout);
+    if (st == HYST_OK) {
+        st = hyst_curve_check(curve);
+    }
+    if (st == HYST_OK && curve->variant != curve_variant) {
+        st = HYST_ERR_LAYOUT;
+    }
+    return st;
+}
+
 void hyst_reset(hyst_tcm_t *S)
 {
     if (S == NULL || S->layout != HYST_LAYOUT) {

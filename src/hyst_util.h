@@ -55,6 +55,13 @@ hyst_status_t hyst_check_memory(const hyst_tcm_t *S, const void *xltp, const voi
                                 const void *xrtp, const void *yrtp, size_t capacity,
                                 size_t xsize, size_t ysize, unsigned long layout);
 
+/* hyst_check_memory(), then the curve: prepared by this library, of the
+ * variant `curve_variant` (HYST_ERR_LAYOUT otherwise). */
+hyst_status_t hyst_check_init(const hyst_tcm_t *S, const hyst_curve_t *curve,
+                              unsigned curve_variant, const void *xltp, const void *yltp,
+                              const void *xrtp, const void *yrtp, size_t capacity, size_t xsize,
+                              size_t ysize, unsigned long layout);
+
 /* Prepares a polynomial curve of a real variant (the work of the
  * hyst_f32/f64_curve_from_poly constructors, written once). */
 hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsigned variant,

@@ -315,8 +315,10 @@ HYST_INLINE TCM_KEY_T TCM_NAME(key)(const TCM_X *p)
 #define TCM_SEARCH_(KEEP, unused) TCM_LADDER_(KEEP)
 #endif
 
-/* Count of xltp[0..n) below x (ascending array): LTPs that survive a fall to x. */
-HYST_INLINE size_t TCM_NAME(ltp_below)(const TCM_X *a, size_t n, TCM_X x)
+/* Entries of a sorted TP array that survive the input's move to x: for a
+ * fall (ascending xltp), the LTPs below x; for a rise (descending xrtp), the
+ * RTPs above x. `falling` is a constant at each call site. */
+HYST_INLINE size_t TCM_NAME(survivors)(const TCM_X *a, size_t n, TCM_X x, const int falling)
 {
     const TCM_X *b = a;
     unsigned lg;
@@ -324,26 +326,17 @@ HYST_INLINE size_t TCM_NAME(ltp_below)(const TCM_X *a, size_t n, TCM_X x)
         return 0u;
     }
     lg = TCM_NAME(floor_log2)(n);
-    TCM_SEARCH_(TCM_BELOW_S_, TCM_BELOW_U_);
-    return (size_t)(b - a);
-}
-
-/* Count of xrtp[0..n) above x (descending array): RTPs that survive a rise to x. */
-HYST_INLINE size_t TCM_NAME(rtp_above)(const TCM_X *a, size_t n, TCM_X x)
-{
-    const TCM_X *b = a;
-    unsigned lg;
-    if (n == 0u) {
-        return 0u;
+    if (falling) {
+        TCM_SEARCH_(TCM_BELOW_S_, TCM_BELOW_U_);
+    } else {
+        TCM_SEARCH_(TCM_ABOVE_S_, TCM_ABOVE_U_);
     }
-    lg = TCM_NAME(floor_log2)(n);
-    TCM_SEARCH_(TCM_ABOVE_S_, TCM_ABOVE_U_);
     return (size_t)(b - a);
 }
 
 #ifndef TCM_LTP_BELOW
-#define TCM_LTP_BELOW(a, n, x) TCM_NAME(ltp_below)((a), (n), (x))
-#define TCM_RTP_ABOVE(a, n, x) TCM_NAME(rtp_above)((a), (n), (x))
+#define TCM_LTP_BELOW(a, n, x) TCM_NAME(survivors)((a), (n), (x), 1)
+#define TCM_RTP_ABOVE(a, n, x) TCM_NAME(survivors)((a), (n), (x), 0)
 #endif
 
 /* A TP was pushed or wiped: no deadband excursion is open any more. */

@@ -60,14 +60,8 @@ hyst_status_t NUM_NAME(init_curve_)(hyst_tcm_t *S, const hyst_curve_t *curve, NU
                                     NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                     unsigned long layout)
 {
-    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T),
-                                         sizeof(NUM_T), layout);
-    if (st == HYST_OK) {
-        st = hyst_curve_check(curve);
-    }
-    if (st == HYST_OK && curve->variant != (unsigned)NUM_VARIANT) {
-        st = HYST_ERR_LAYOUT;
-    }
+    const hyst_status_t st = hyst_check_init(S, curve, NUM_VARIANT, xltp, yltp, xrtp, yrtp,
+                                             capacity, sizeof(NUM_T), sizeof(NUM_T), layout);
     if (st != HYST_OK) {
         return st;
     }

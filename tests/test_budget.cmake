@@ -1,10 +1,10 @@
-# Per-sample instruction budgets of hyst_step on the Cortex-M4F (issue 5):
+# Per-sample instruction budgets of hyst_step on the Cortex-M4F:
 # exact counts under QEMU, never time. Needs the bench_budget image
 # (bench/CMakeLists.txt) and Python 3.
 # Python by path, not the imported target: ctest would run a target through
 # CMAKE_CROSSCOMPILING_EMULATOR.
 option(HYST_BUDGET_TEST "Assert the per-sample instruction budgets under QEMU" ON)
-# The product budgets (issue 5), on the domain 0..4095 and on one across
+# The product budgets, on the domain 0..4095 and on one across
 # zero (-2048..2047: the keyed search's other ladder).
 set(HYST_BUDGET_TYPICAL_INSNS 40)  # a sample that stays on its branch (measured: 35)
 set(HYST_BUDGET_WORST_INSNS 150)   # any sample at Nu = 4096 (paper: ~420 DSP cycles)

@@ -252,7 +252,7 @@ static void test_non_increasing_fit_is_reported_with_turn(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e3 * TOL_OF_RANGE, -6.0, (double)res.coeffs[1]);
 }
 
-/* Finding 8 (docs/reliability.md, fuzz/slow/regress_ident_overflow_solve):
+/* Slow identification on huge outputs (docs/reliability.md, fuzz/slow/regress_ident_overflow_solve):
  * outputs near DBL_MAX overflow the Givens rotations and the coefficients are
  * not finite. hyst_ident_solve() used to spend ~2^21 Bernstein evaluations
  * in hyst_poly_is_increasing() on them (seconds); now that check gives up at

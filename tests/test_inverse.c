@@ -1,4 +1,4 @@
-/* The inverse TCM (METHOD.md section 8): inverse curves, the bounded,
+/* The inverse TCM (docs/theory.md, the inverse model): inverse curves, the bounded,
  * monotone polynomial inverse, the round trip H(H^-1(y_d)) = y_d, clamping, and the inverse PI
  * against the inverse TCM with f0 = f_PI. */
 #include "signals.h"
@@ -15,7 +15,7 @@
  * HYST_INV_KNOTS (measured values in docs/pi_and_inverse.md). */
 #ifdef HYST_USE_DOUBLE
 #define POLY_INV_TOL 1e-14 /* measured 1.2e-15 */
-#define FLAT_TOL 5e-14   /* measured 6.8e-15 (x^5 on [-1, 1]); 7.1e-8 before finding 5 */
+#define FLAT_TOL 5e-14   /* measured 6.8e-15 (x^5 on [-1, 1]); 7.1e-8 with the former Newton solver */
 #else
 #define POLY_INV_TOL 2e-6  /* measured 5.0e-7: float rounding of g itself */
 #define FLAT_TOL 1e-5    /* measured 1.8e-6 (x^5 on [-1, 1]) */
@@ -144,7 +144,7 @@ static void test_poly_inverse_residual_at_flat_points(void)
     TEST_ASSERT_TRUE(worst <= FLAT_TOL);
 }
 
-/* Finding 5 (docs/reliability.md): g^-1 is non-decreasing in e. */
+/* Monotone inverse (docs/reliability.md): g^-1 is non-decreasing in e. */
 #ifdef HYST_USE_DOUBLE
 #define TINY_STEPS 1100 /* R 2^-k reaches the subnormals */
 #define real_next(v, to) nextafter((v), (to))
@@ -313,7 +313,7 @@ static void test_pwl_constructor_checks(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_init_curve(&H, &c, xl, yl, xr, yr, CAP));
 }
 
-/* Finding 4 (docs/reliability.md): interpolation neither overflows nor
+/* PWL overflow and underflow (docs/reliability.md): interpolation neither overflows nor
  * underflows, and a value span beyond the real range is refused. */
 static void test_pwl_interpolation_is_safe_at_extreme_scales(void)
 {
@@ -440,7 +440,7 @@ static const hyst_poly_t cubic = {3u, HYST_REAL_C(-1.0), HYST_REAL_C(1.0),
                                   {HYST_REAL_C(1.0), HYST_REAL_C(0.0), HYST_REAL_C(0.0),
                                    HYST_REAL_C(0.0)}};
 
-/* Steps the compensator and asserts the drive is inside [lo, hi] (finding 6
+/* Steps the compensator and asserts the drive is inside [lo, hi] (the clamp after a full array
  * in docs/reliability.md: after a merge it could leave it with status OK). */
 static hyst_real_t drive_in_range(hyst_real_t yd)
 {
@@ -535,7 +535,7 @@ static void round_trip_all(const hyst_curve_t *fwd, const char *name)
     }
 }
 
-/* Finding 5: the compensator (inverse.h) then the forward model (tcm.h) on
+/* Monotone inverse: the compensator (inverse.h) then the forward model (tcm.h) on
  * a monotone desired output through a flat point of f0, with offsets from it
  * down to the subnormals. g^-1 falling anywhere would reverse the drive: a
  * false turning point in the model, which then misses y_d by far more than
@@ -603,7 +603,7 @@ static void test_compensator_has_no_false_reversal_at_flat_points(void)
         flat_pass(&f, spec[k][3], 0, &worst);
     }
     TEST_PRINTF("flat points, compensator + model: max |H(H^-1(y_d)) - y_d| / range = %g", worst);
-    TEST_ASSERT_TRUE(worst <= TOL_OF_RANGE); /* the bound, flat points too */
+    TEST_ASSERT_TRUE(worst <= TOL_OF_RANGE); /* the product's bound, flat points too */
 }
 
 static void test_round_trip_polynomial_eq20(void)

@@ -1,6 +1,6 @@
 /* The Prandtl-Ishlinskii model: parameter checks, the operator rules, the
  * analytic inverse, and the paper's result that TCM with f0 = f_PI
- * reproduces PI exactly (METHOD.md section 7). */
+ * reproduces PI exactly (docs/theory.md). */
 #include "signals.h"
 #include "support.h"
 #include "unity.h"
@@ -21,11 +21,11 @@ static const hyst_real_t table1_w[10] = {
     HYST_REAL_C(0.1999), HYST_REAL_C(0.2005)};
 
 #ifdef HYST_USE_DOUBLE
-#define EQUIV_TOL_ABS 1e-12  /* issue: max |TCM - PI| <= 1e-12 in double */
+#define EQUIV_TOL_ABS 1e-12  /* target: max |TCM - PI| <= 1e-12 in double */
 #define EQUIV_TOL_REL 1e-12
 #else
 #define EQUIV_TOL_ABS 1e30   /* float: judged relative to the range only */
-#define EQUIV_TOL_REL 2e-6   /* issue: <= 2e-6 of the output range */
+#define EQUIV_TOL_REL 2e-6   /* target: <= 2e-6 of the output range */
 #endif
 
 static hyst_real_t z[MAX_OPS], zi[MAX_OPS], r_inv[MAX_OPS], w_inv[MAX_OPS];
@@ -261,7 +261,7 @@ static void test_inverse_parameters(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_pi_inverse_params(r, w, 2u, NULL, w_inv));
 }
 
-/* Finding 3 (docs/reliability.md): inverse weights that, rounded, fail
+/* Unchecked inverse PI weights (docs/reliability.md): inverse weights that, rounded, fail
  * hyst_pi_check() are refused with HYST_ERR_WEIGHTS, nothing written. */
 static void test_inverse_weights_are_checked(void)
 {

@@ -1,9 +1,12 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file hyst.h
  * @brief hyst: allocation-free hysteresis modelling and compensation (TCM).
  *
- * Include this one header. Modules:
- *  - hyst/config.h: compile-time options (real type, limits, hooks);
+ * Include this one header. Start with docs/architecture.md. Modules:
+ *  - hyst/version.h: the version;
+ *  - hyst/config.h: every compile-time option, with its default;
+ *  - hyst/types.h:  number types and the named variants (f32, f64, code);
  *  - hyst/status.h: status codes and event flags;
  *  - hyst/curve.h:  the major ascending curve f0;
  *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
@@ -16,11 +19,9 @@
 #ifndef HYST_HYST_H
 #define HYST_HYST_H
 
-#define HYST_VERSION_MAJOR 0
-#define HYST_VERSION_MINOR 1
-#define HYST_VERSION_PATCH 0
-
+#include "hyst/version.h"
 #include "hyst/config.h"
+#include "hyst/types.h"
 #include "hyst/status.h"
 #include "hyst/curve.h"
 #include "hyst/tcm.h"

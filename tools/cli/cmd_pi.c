@@ -9,8 +9,8 @@
 static const char help[] =
     "usage: hyst pi --weights w1,...,wN --thresholds r1,...,rN [--xcol I] [FILE]\n"
     "\n"
-    "Runs the Prandtl-Ishlinskii model of N one-sided play operators (METHOD.md\n"
-    "section 7, Eq. 15) over the input samples of FILE (standard input if FILE is\n"
+    "Runs the Prandtl-Ishlinskii model of N one-sided play operators (the paper's\n"
+    "Eq. 15; docs/theory.md) over the input samples of FILE (standard input if FILE is\n"
     "absent or '-'), from the reset state (every operator at 0):\n"
     "  z_i = max(x - r_i, min(x, z_i before)),  y = w1 z_1 + ... + wN z_N.\n"
     "Prints one output per line with 9 significant digits. The model has no domain:\n"
