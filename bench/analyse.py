@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Runs the benchmark images and turns their counts into the bench/run report.
 
   analyse.py --m4 BUILD_M4 --host BUILD_HOST --out DIR [--plot-python PY]
@@ -120,6 +121,26 @@ def flash_of(build_m4, opt, size_tool):
     return total, per
 
 
+# Functions of a variant's object that are not the engine: its out-of-line
+# curve kinds and its PI model (src/curve_eval.h, src/pi_model.h).
+NOT_ENGINE = re.compile(r"curve|_pi_|poly_inv|leaf|pwl|segment_of|strictly|span_is|real_g|"
+                        r"cubic_small|_pos$|next_inverse|inverse_weight|init_inverse")
+
+
+def engine_flash(build_m4, opt, nm_tool, variant="hyst_f32"):
+    """Bytes of the engine's functions in one variant's object (what hyst_tcm.o was)."""
+    with open(os.path.join(build_m4, "bench", "objects_%s.txt" % opt)) as f:
+        objs = [l.strip() for l in f if l.strip()]
+    obj = [o for o in objs if os.path.basename(o).split(".")[0] == variant][0]
+    out = subprocess.run([nm_tool, "-S", obj], capture_output=True, text=True, check=True).stdout
+    total = 0
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 4 and parts[2] in "tT" and not NOT_ENGINE.search(parts[3]):
+            total += int(parts[1], 16)
+    return total
+
+
 def deepest_pulse(run):
     """Index of the costliest wipe-out or clamped pulse of a run."""
     cands = [i for i, p in enumerate(run.pulses)
@@ -228,10 +249,13 @@ def main():
     for opt in ("Os", "O2"):
         total, per = flash_of(args.m4, opt, size_tool)
         put("core_flash_bytes_%s" % opt, total)
-        put("core_flash_bytes_%s_tcm" % opt, per.get("hyst_tcm", 0))
-    put("step_stack_bytes", stack_of(args.m4, "O2", "hyst_step"))
-    put("step_stack_bytes_Os", stack_of(args.m4, "Os", "hyst_step"))
-    put("process_stack_bytes", stack_of(args.m4, "O2", "hyst_process"))
+        # the float engine (f32 variant, without its curve kinds and PI model)
+        put("core_flash_bytes_%s_tcm" % opt,
+            engine_flash(args.m4, opt, os.environ.get("HYST_NM", "arm-none-eabi-nm")))
+        put("core_flash_bytes_%s_f32" % opt, per.get("hyst_f32", 0))
+    put("step_stack_bytes", stack_of(args.m4, "O2", "hyst_f32_step"))
+    put("step_stack_bytes_Os", stack_of(args.m4, "Os", "hyst_f32_step"))
+    put("process_stack_bytes", stack_of(args.m4, "O2", "hyst_f32_process"))
 
     inst = int(tcm.meta["sizeof_hyst_t"])
     real = int(tcm.meta["sizeof_real"])

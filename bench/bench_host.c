@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Host throughput of the block calls, TCM vs PI-10, in the same run: the two
  * models alternate over the same input block and each keeps its best of REPS

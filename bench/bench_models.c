@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "bench_models.h"
 
 const hyst_real_t bench_pi10_r[BENCH_PI_N] = {

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The models every benchmark runs: TCM on the paper's Eq. 20 over 12-bit
  * codes, and the paper's PI model of Table 1. */
 #ifndef HYST_BENCH_MODELS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Per-sample cost of hyst_step() (and of a PI-10 model) on the target, one
  * timing pulse per measured sample. Runs under QEMU with tools/qemu_count.py,

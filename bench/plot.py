@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """cost_vs_p.png from tcm_cost.csv (the analogue of the paper's Fig. 8).
 
   plot.py tcm_cost.csv out.png FIT_SLOPE FIT_CONST PI10_INSNS TYPICAL_INSNS

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Feedforward compensation with the inverse TCM (docs/theory.md, the inverse model).
  *
  * Plant: a Prandtl-Ishlinskii model with 50 play operators on 0..100 V whose

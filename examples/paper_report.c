@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The paper's results, computed on the target (Cortex-M4F under QEMU, or the
  * host) and printed as sections that tools/report.py turns into a report:
  *   @section <name>      starts a section

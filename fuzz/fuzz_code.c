@@ -45,10 +45,10 @@
 #define MAX_CAP 4100u /* flag bit7: deep stacks, every rung of the binary search */
 #define MAX_SAMPLES 4096u
 
-typedef struct {
-    hyst_code_t S;
+typedef struct { /* outputs of the code variant are float */
+    hyst_t S;
     hyst_code_word_t xl[MAX_CAP], xr[MAX_CAP];
-    hyst_real_t yl[MAX_CAP], yr[MAX_CAP];
+    float yl[MAX_CAP], yr[MAX_CAP];
 } cinst_t;
 
 typedef struct {
@@ -56,7 +56,18 @@ typedef struct {
     hyst_real_t xl[MAX_CAP], yl[MAX_CAP], xr[MAX_CAP], yr[MAX_CAP];
 } finst_t;
 
+/* f32 real instance: the engine whose curve checks the code variant shares
+ * (its curves are f32 curves), for the expected init status */
+typedef struct {
+    hyst_t S;
+    float xl[MAX_CAP], yl[MAX_CAP], xr[MAX_CAP], yr[MAX_CAP];
+} f32inst_t;
+
 static cinst_t C, T, Z, keepc;
+static f32inst_t F32;
+/* C's curve when it is initialised through hyst_code_init_curve (flag bit1):
+ * an f32 curve, which C points at, so it outlives C */
+static hyst_curve_t code_curve;
 /* How often the checks had something to check: FUZZ_CODE_STATS=1 prints
  * these at exit (reported in docs/reliability.md). */
 static unsigned long n_exact, n_vs_real, n_bounded, n_merge, n_window, n_nonzero;
@@ -112,25 +123,25 @@ static facts_t curve_facts(const hyst_poly_t *f)
  * (below the top, a stack that cannot merge, capacity 4100, never changes) */
 static void check_code_invariants(const cinst_t *I, int whole)
 {
-    const hyst_code_t *S = &I->S;
+    const hyst_t *S = &I->S;
     const size_t nl = S->n_ltp, nr = S->n_rtp;
     const size_t from = whole || nl < 36u ? 0u : nl - 4u;
     size_t i;
     CHECK(nl >= 1u && nl <= S->capacity && nr <= S->capacity);
     CHECK(nr == nl || nr + 1u == nl);
-    CHECK(hyst_code_rising(S) == (nl > nr));
-    CHECK(hyst_code_tp_count(S) == nl - 1u + nr);
-    CHECK(I->xl[0] == S->lo);
+    CHECK(hyst_rising(S) == (nl > nr));
+    CHECK(hyst_tp_count(S) == nl - 1u + nr);
+    CHECK(I->xl[0] == S->lo.code);
     for (i = from + 1u; i < nl; ++i) CHECK(I->xl[i] > I->xl[i - 1]);
     for (i = from + 1u; i < nr; ++i) CHECK(I->xr[i] < I->xr[i - 1]);
-    if (nr > 0u) CHECK(I->xl[nl - 1u] < I->xr[nr - 1u] && I->xr[0] <= S->hi);
-    CHECK(hyst_code_input(S) >= S->lo && hyst_code_input(S) <= S->hi);
+    if (nr > 0u) CHECK(I->xl[nl - 1u] < I->xr[nr - 1u] && I->xr[0] <= S->hi.code);
+    CHECK(hyst_code_input(S) >= S->lo.code && hyst_code_input(S) <= S->hi.code);
     CHECK(hyst_code_error_bound(S) >= 0.0);
     /* a reversal nearer than the deadband is never stored; a merge keeps this
      * (x_R2 - x_V >= x_R2 - x_P > x_R1 - x_P >= deadband) */
     for (i = from; i < nr; ++i) {
-        CHECK((unsigned long)(I->xr[i] - I->xl[i]) >= S->deadband);
-        if (i + 1u < nl) CHECK((unsigned long)(I->xr[i] - I->xl[i + 1u]) >= S->deadband);
+        CHECK((unsigned long)(I->xr[i] - I->xl[i]) >= S->deadband.code);
+        if (i + 1u < nl) CHECK((unsigned long)(I->xr[i] - I->xl[i + 1u]) >= S->deadband.code);
     }
 }
 
@@ -142,8 +153,8 @@ static int same_code(const cinst_t *a, const cinst_t *b)
            memcmp(a->yl, b->yl, a->S.n_ltp * sizeof(a->yl[0])) == 0 &&
            memcmp(a->xr, b->xr, a->S.n_rtp * sizeof(a->xr[0])) == 0 &&
            memcmp(a->yr, b->yr, a->S.n_rtp * sizeof(a->yr[0])) == 0 &&
-           memcmp(&a->S.y_prev, &b->S.y_prev, sizeof(hyst_real_t)) == 0 &&
-           a->S.forgot == b->S.forgot && a->S.db_err == b->S.db_err &&
+           memcmp(&a->S.y_prev.f32, &b->S.y_prev.f32, sizeof(float)) == 0 &&
+           a->S.forgot.f32 == b->S.forgot.f32 && a->S.db_err.f32 == b->S.db_err.f32 &&
            a->S.status == b->S.status && a->S.events == b->S.events;
 }
 
@@ -154,8 +165,8 @@ static int same_real(const finst_t *a, const finst_t *b)
            memcmp(a->yl, b->yl, a->S.n_ltp * sizeof(a->yl[0])) == 0 &&
            memcmp(a->xr, b->xr, a->S.n_rtp * sizeof(a->xr[0])) == 0 &&
            memcmp(a->yr, b->yr, a->S.n_rtp * sizeof(a->yr[0])) == 0 &&
-           memcmp(&a->S.y_prev, &b->S.y_prev, sizeof(hyst_real_t)) == 0 &&
-           a->S.forgot == b->S.forgot && a->S.db_err == b->S.db_err;
+           memcmp(&a->S.y_prev.HYST_R, &b->S.y_prev.HYST_R, sizeof(hyst_real_t)) == 0 &&
+           a->S.forgot.HYST_R == b->S.forgot.HYST_R && a->S.db_err.HYST_R == b->S.db_err.HYST_R;
 }
 
 static unsigned long rd_u24(reader_t *r)
@@ -196,17 +207,18 @@ static unsigned long next_code(reader_t *r, unsigned op)
 }
 
 /* Expected init status of a code instance: capacity, then a curve error
- * (the same as the real engine reports), else the code range. */
+ * (the same as the real engine reports: the f32 one, whose curves the code
+ * variant runs on), else the code range. */
 static void probe_init_errors(const hyst_poly_t *f, size_t cap, unsigned long lo,
                               unsigned long hi, hyst_status_t got, int via_curve)
 {
     const int range_ok = lo < hi && hi <= HYST_CODE_MAX;
     hyst_status_t fst;
     hyst_curve_t curve;
-    memset(&F.S, 0, sizeof(F.S));
-    fst = hyst_init(&F.S, f, F.xl, F.yl, F.xr, F.yr, cap);
-    if (via_curve && hyst_curve_from_poly(&curve, f) != HYST_OK) {
-        CHECK(got == hyst_curve_from_poly(&curve, f)); /* the harness's own call failed */
+    memset(&F32.S, 0, sizeof(F32.S));
+    fst = hyst_f32_init(&F32.S, f, F32.xl, F32.yl, F32.xr, F32.yr, cap);
+    if (via_curve && hyst_f32_curve_from_poly(&curve, f) != HYST_OK) {
+        CHECK(got == hyst_f32_curve_from_poly(&curve, f)); /* the harness's own call failed */
     } else if (cap < 2u) {
         CHECK(got == HYST_ERR_CAPACITY);
     } else if (fst == HYST_OK) {
@@ -220,11 +232,12 @@ static void probe_init_errors(const hyst_poly_t *f, size_t cap, unsigned long lo
 
 static hyst_status_t init_code(cinst_t *I, const hyst_poly_t *f, size_t cap, int via_curve)
 {
-    if (via_curve) {
-        hyst_curve_t curve;
-        const hyst_status_t st = hyst_curve_from_poly(&curve, f);
+    if (via_curve) { /* C only: the curve must outlive the instance */
+        hyst_status_t st;
+        CHECK(I == &C);
+        st = hyst_f32_curve_from_poly(&code_curve, f); /* codes run on f32 curves */
         if (st != HYST_OK) return st;
-        return hyst_code_init_curve(&I->S, &curve, clo, chi, I->xl, I->yl, I->xr, I->yr, cap);
+        return hyst_code_init_curve(&I->S, &code_curve, clo, chi, I->xl, I->yl, I->xr, I->yr, cap);
     }
     return hyst_code_init(&I->S, f, clo, chi, I->xl, I->yl, I->xr, I->yr, cap);
 }
@@ -270,7 +283,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     int compare, proven;
     unsigned n, done = 0; /* samples so far */
     hyst_code_word_t xs[64];
-    hyst_real_t ys[64];
+    float ys[64]; /* outputs of the code variant */
 
     read_config(&r, (int)(flags & 1u), &f);
     if ((flags & 1u) && !getenv("FUZZ_CODE_SLOW")) {
@@ -311,7 +324,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     CHECK(init_code(&Z, &f, cap, 0) == HYST_OK);
     CHECK(hyst_init(&F.S, &f, F.xl, F.yl, F.xr, F.yr, cap) == HYST_OK);
     CHECK(hyst_init(&F0.S, &f, F0.xl, F0.yl, F0.xr, F0.yr, cap) == HYST_OK);
-    CHECK(hyst_code_output(&C.S) == F.S.curve.y_lo && hyst_code_tp_count(&C.S) == 0u);
+    /* f0(lo), rounded to the code variant's float output */
+    CHECK(hyst_code_output(&C.S) == (float)F.S.y_lo.HYST_R && hyst_tp_count(&C.S) == 0u);
     CHECK(hyst_code_error_bound(&C.S) == 0.0 && hyst_error_bound(&F.S) == 0.0);
     step_v = (vhi - vlo) / (double)(chi - clo);
 
@@ -327,9 +341,11 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         CHECK(hyst_code_set_deadband(NULL, 0u) == HYST_ERR_NULL);
         CHECK(hyst_set_deadband(NULL, 0.0) == HYST_ERR_NULL);
         CHECK(hyst_init_curve(&keepf.S, NULL, F.xl, F.yl, F.xr, F.yr, cap) == HYST_ERR_NULL);
+        CHECK(hyst_code_step(NULL, clo) == 0.0f); /* per-sample calls: 0 for NULL */
     }
     if (flags & 8u) { /* a curve not made by hyst_curve_*: refused */
-        hyst_curve_t bad = F.S.curve;
+        hyst_curve_t bad;
+        CHECK(hyst_f32_curve_from_poly(&bad, &f) == HYST_OK); /* C's init accepted f */
         bad.kind = 0x5A;
         CHECK(hyst_code_init_curve(&keepc.S, &bad, clo, chi, T.xl, T.yl, T.xr, T.yr, cap) ==
               HYST_ERR_ARG);
@@ -360,31 +376,33 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     q = curve_facts(&f);
     proven = compare && q.one_signed;
     ref_init(&ref, f.coeffs, f.degree, f.lo, f.hi);
-    range = fabs(F.S.curve.y_hi - F.S.curve.y_lo);
+    range = fabs(F.S.y_hi.HYST_R - F.S.y_lo.HYST_R);
     tol0 = horner_bound(&f);
     resid = (q.slope_max - q.slope_min) * step_v; /* a merged TP rounded to a code */
     last_code = clo;
     memset(&tc, 0, sizeof(tc));
-    tc.y_prev = F.S.curve.y_lo;
+    tc.y_prev = F.S.y_lo.HYST_R;
     tc.x_prev = vlo;
     tc.forgot = dbc != 0u;
     tf = tc;
+    tc.y_prev = T.S.y_lo.f32; /* the code variant's own f0(lo), in float */
 
     for (n = 0; done < MAX_SAMPLES && r.at < r.n; ++n) {
         const unsigned op = rd_u8(&r);
         unsigned m = 1u, k;
         int blk_full = 0;
         if (op == 0xF0u) { /* reset everything; the deadband is kept */
-            hyst_code_reset(&C.S);
-            hyst_code_reset(&T.S);
-            hyst_code_reset(&Z.S);
+            hyst_reset(&C.S);
+            hyst_reset(&T.S);
+            hyst_reset(&Z.S);
             hyst_reset(&F.S);
             hyst_reset(&F0.S);
             ref_init(&ref, f.coeffs, f.degree, f.lo, f.hi);
-            CHECK(hyst_code_tp_count(&C.S) == 0u && hyst_code_events(&C.S) == 0u);
+            CHECK(hyst_tp_count(&C.S) == 0u && hyst_events(&C.S) == 0u);
             CHECK(hyst_code_error_bound(&C.S) == 0.0 && hyst_error_bound(&F.S) == 0.0);
-            CHECK(hyst_code_output(&C.S) == F.S.curve.y_lo && C.S.deadband == dbc);
-            tc.y_prev = tf.y_prev = F.S.curve.y_lo;
+            CHECK(hyst_code_output(&C.S) == (float)F.S.y_lo.HYST_R && C.S.deadband.code == dbc);
+            tc.y_prev = T.S.y_lo.f32;
+            tf.y_prev = F.S.y_lo.HYST_R;
             tc.x_prev = tf.x_prev = vlo;
             tc.forgot = tf.forgot = dbc != 0u;
             tc.full = tf.full = 0;
@@ -393,12 +411,12 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             continue;
         }
         if (op > 0xF2u) { /* accessors, clear events */
-            (void)hyst_code_status(&C.S);
-            (void)hyst_code_rising(&C.S);
-            hyst_code_clear_events(&C.S);
-            hyst_code_clear_events(&T.S);
-            hyst_code_clear_events(&Z.S);
-            CHECK(hyst_code_events(&C.S) == 0u);
+            (void)hyst_status(&C.S);
+            (void)hyst_rising(&C.S);
+            hyst_clear_events(&C.S);
+            hyst_clear_events(&T.S);
+            hyst_clear_events(&Z.S);
+            CHECK(hyst_events(&C.S) == 0u);
             continue;
         }
         if (op == 0xF1u) m = rd_u8(&r) % 64u;
@@ -424,30 +442,30 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 const int clamped = c < clo || c > chi;
                 const unsigned long cc = c < clo ? clo : c > chi ? chi : c;
                 const double x = volts(cc);
-                const hyst_real_t y = hyst_code_step(&T.S, c);
-                const hyst_real_t yz = hyst_code_step(&Z.S, c);
+                const float y = hyst_code_step(&T.S, c);
+                const float yz = hyst_code_step(&Z.S, c);
                 const hyst_real_t yf = hyst_step(&F.S, x);
                 const hyst_real_t yf0 = hyst_step(&F0.S, x);
                 const double yr = ref_step(&ref, x);
                 const double tol = 1e-9 * range + ((double)ref_tp_count(&ref) + 2.0) * tol0;
                 last_code = cc;
                 if (clamped) {
-                    CHECK(hyst_code_status(&T.S) == HYST_WARN_CLAMPED ||
-                          hyst_code_status(&T.S) == HYST_WARN_FULL);
-                    CHECK(hyst_code_events(&T.S) & HYST_EVENT_CLAMPED);
+                    CHECK(hyst_status(&T.S) == HYST_WARN_CLAMPED ||
+                          hyst_status(&T.S) == HYST_WARN_FULL);
+                    CHECK(hyst_events(&T.S) & HYST_EVENT_CLAMPED);
                 } else {
-                    CHECK(hyst_code_status(&T.S) != HYST_WARN_CLAMPED);
+                    CHECK(hyst_status(&T.S) != HYST_WARN_CLAMPED);
                 }
                 CHECK(hyst_code_input(&T.S) == cc);
                 CHECK(hyst_status(&F.S) != HYST_WARN_CLAMPED); /* volts() stays in [lo, hi] */
-                if (hyst_code_status(&T.S) == HYST_WARN_FULL) tc.forgot = tc.full = blk_full = 1;
+                if (hyst_status(&T.S) == HYST_WARN_FULL) tc.forgot = tc.full = blk_full = 1;
                 if (hyst_status(&F.S) == HYST_WARN_FULL) tf.forgot = tf.full = 1;
                 if (dbc == 0u) { /* deadband 0 is no deadband, bit for bit */
                     CHECK(memcmp(&y, &yz, sizeof(y)) == 0 && same_code(&T, &Z));
                     CHECK(memcmp(&yf, &yf0, sizeof(yf)) == 0 && same_real(&F, &F0));
                 }
                 if (compare && !tc.forgot) { /* exact: TCM over codes = reference */
-                    CHECK(hyst_code_tp_count(&T.S) == (size_t)ref_tp_count(&ref));
+                    CHECK(hyst_tp_count(&T.S) == (size_t)ref_tp_count(&ref));
                     CHECK(fabs(y - yr) <= tol);
                     CHECK(hyst_code_error_bound(&T.S) == 0.0);
                     ++n_exact;
@@ -458,7 +476,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                     CHECK(hyst_error_bound(&F.S) == 0.0);
                 }
                 if (compare && !tc.forgot && !tf.forgot) { /* code vs real engine */
-                    CHECK(hyst_code_tp_count(&T.S) == hyst_tp_count(&F.S));
+                    CHECK(hyst_tp_count(&T.S) == hyst_tp_count(&F.S));
                     CHECK(fabs(y - yf) <= tol);
                     ++n_vs_real;
                 }
@@ -468,7 +486,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                     check_bounded(&tf, x, yf, yr, bf, &q, tol, 0.0);
                     ++n_bounded;
                     n_nonzero += bc > 0.0;
-                    if (bc > tc.b_prev && hyst_code_status(&T.S) == HYST_WARN_FULL) {
+                    if (bc > tc.b_prev && hyst_status(&T.S) == HYST_WARN_FULL) {
                         /* a merge of L1, R1 and P: second order in w = x_R1 - x_L1 */
                         const double w = xr1 - xl1;
                         CHECK(bc - tc.b_prev <= q.curv_max * w * w / 4.0 + resid + tol);
@@ -499,11 +517,11 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             CHECK(F.S.n_ltp <= cap && F.S.n_rtp <= cap);
         }
         if (op == 0xF1u) { /* the block through C equals T's steps */
-            hyst_real_t yb[64];
+            float yb[64];
             int any_clamp = 0;
             for (k = 0; k < m; ++k) any_clamp |= xs[k] < clo || xs[k] > chi;
             st = hyst_code_process(&C.S, xs, yb, m);
-            CHECK(m == 0u || memcmp(yb, ys, m * sizeof(hyst_real_t)) == 0);
+            CHECK(m == 0u || memcmp(yb, ys, m * sizeof(float)) == 0);
             CHECK(same_code(&C, &T));
             /* documented summary: FULL if any overflow (seen on T), else CLAMPED */
             CHECK(st == (blk_full ? HYST_WARN_FULL : any_clamp ? HYST_WARN_CLAMPED : HYST_OK));

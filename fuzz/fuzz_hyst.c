@@ -46,6 +46,10 @@ typedef struct {
 } inst_t;
 
 static inst_t A, B, C, keep;
+/* The curve A is initialised with through hyst_init_curve (flag bit1): the
+ * instance keeps a pointer to it, so it lives as long as A. Not in inst_t,
+ * so that "init errors write nothing" compares the instance alone. */
+static hyst_curve_t curve_a;
 static ref_tcm_t ref;
 static unsigned char snap[SNAP_MAX], forged[SNAP_MAX];
 
@@ -59,14 +63,14 @@ static void check_invariants(const inst_t *I)
     CHECK(nr == nl || nr + 1u == nl);
     CHECK(hyst_rising(S) == (nl > nr));
     CHECK(hyst_tp_count(S) == nl - 1u + nr);
-    CHECK(I->xl[0] == S->curve.lo && I->yl[0] == S->curve.y_lo);
+    CHECK(I->xl[0] == S->lo.HYST_R && I->yl[0] == S->y_lo.HYST_R);
     for (i = 1; i < nl; ++i) CHECK(I->xl[i] > I->xl[i - 1]);
     for (i = 1; i < nr; ++i) CHECK(I->xr[i] < I->xr[i - 1]);
     if (nr > 0u) {
         CHECK(I->xl[nl - 1u] < I->xr[nr - 1u]);
-        CHECK(I->xr[0] <= S->curve.hi);
+        CHECK(I->xr[0] <= S->hi.HYST_R);
     }
-    CHECK(hyst_input(S) >= S->curve.lo && hyst_input(S) <= S->curve.hi);
+    CHECK(hyst_input(S) >= S->lo.HYST_R && hyst_input(S) <= S->hi.HYST_R);
     if (nl > nr) {
         CHECK(hyst_input(S) >= I->xl[nl - 1u] && (nr == 0u || hyst_input(S) < I->xr[nr - 1u]));
     } else {
@@ -133,7 +137,9 @@ static void restore_forged(reader_t *r, int fix)
         if (keep_id) memcpy(forged + 12, id, 4u);
         nl = 1u + forged[16] % MAX_CAP;
         nr = nl - (forged[20] & 1u);
-        len = 36u + 2u * HYST_SNAPSHOT_REAL_OCTETS * (1u + nl + nr);
+        /* L = 40 + (X + R)(1 + n_ltp + n_rtp) + 2R + X (snapshot.h), X = R
+         * = sizeof(hyst_real_t) for a real variant */
+        len = 40u + 2u * sizeof(hyst_real_t) * (1u + nl + nr) + 3u * sizeof(hyst_real_t);
         if (len > SNAP_MAX) return;
         memset(forged + 16, 0, 4);
         memset(forged + 20, 0, 4);
@@ -152,20 +158,21 @@ static void restore_forged(reader_t *r, int fix)
         CHECK(memcmp(&keep, &C, sizeof(C)) == 0); /* untouched */
     } else { /* accepted: a reachable state, and it keeps running sanely */
         check_invariants(&C);
-        (void)hyst_step(&C.S, C.S.curve.lo + 0.5 * (C.S.curve.hi - C.S.curve.lo));
+        (void)hyst_step(&C.S, C.S.lo.HYST_R + 0.5 * (C.S.hi.HYST_R - C.S.lo.HYST_R));
         check_invariants(&C);
-        (void)hyst_step(&C.S, C.S.curve.lo);
+        (void)hyst_step(&C.S, C.S.lo.HYST_R);
         check_invariants(&C);
     }
 }
 
 static int init_instance(inst_t *I, const hyst_poly_t *f, size_t cap, int via_curve)
 {
-    if (via_curve) {
-        hyst_curve_t curve;
-        hyst_status_t st = hyst_curve_from_poly(&curve, f);
+    if (via_curve) { /* A only: the curve must outlive the instance */
+        hyst_status_t st;
+        CHECK(I == &A);
+        st = hyst_curve_from_poly(&curve_a, f);
         if (st != HYST_OK) return st;
-        return hyst_init_curve(&I->S, &curve, I->xl, I->yl, I->xr, I->yr, cap);
+        return hyst_init_curve(&I->S, &curve_a, I->xl, I->yl, I->xr, I->yr, cap);
     }
     return hyst_init(&I->S, f, I->xl, I->yl, I->xr, I->yr, cap);
 }
@@ -181,6 +188,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     double range, tol0;
     unsigned n;
     hyst_real_t xs[64], ys[64];
+    hyst_curve_t curve; /* A's curve: its own (bit1) or the same polynomial's */
 
     read_config(&r, (int)(flags & 1u), &f);
     (void)hyst_status_str((int)(signed char)flags);
@@ -197,18 +205,26 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         return 0;
     }
     CHECK(cap >= 2u);
-    CHECK(hyst_curve_g(&A.S.curve, 0.0) == 0.0); /* documented: exactly 0 */
+    /* the instance points at the caller's curve; a polynomial init keeps none */
+    CHECK(A.S.curve == ((flags & 2u) ? &curve_a : NULL));
+    if (A.S.curve != NULL) {
+        curve = *A.S.curve;
+    } else {
+        CHECK(hyst_curve_from_poly(&curve, &f) == HYST_OK); /* init accepted f */
+    }
+    CHECK(hyst_curve_g(&curve, 0.0) == 0.0); /* documented: exactly 0 */
     check_invariants(&A);
     if (flags & 4u) { /* NULL probes: refused, never dereferenced */
         CHECK(hyst_init(NULL, &f, A.xl, A.yl, A.xr, A.yr, cap) == HYST_ERR_NULL);
         CHECK(hyst_init(&B.S, &f, A.xl, NULL, A.xr, A.yr, cap) == HYST_ERR_NULL);
         CHECK(hyst_process(&A.S, NULL, ys, 1u) == HYST_ERR_NULL);
         CHECK(hyst_process(&A.S, NULL, NULL, 0u) == HYST_OK);
+        CHECK(hyst_step(NULL, f.lo) == 0.0); /* per-sample calls: 0 for NULL */
         CHECK(hyst_snapshot_save(&A.S, NULL, 1u, NULL) == HYST_ERR_NULL);
         CHECK(hyst_snapshot_restore(&A.S, NULL, 0u) == HYST_ERR_NULL);
     }
     if (flags & 8u) { /* a curve not made by hyst_curve_*: refused */
-        hyst_curve_t bad = A.S.curve;
+        hyst_curve_t bad = curve;
         bad.kind = 0x5A;
         CHECK(hyst_init_curve(&B.S, &bad, B.xl, B.yl, B.xr, B.yr, cap) == HYST_ERR_ARG);
     }
@@ -220,7 +236,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
      * conditioned that the reference itself is wrong. */
     compare = !(flags & 1u);
     ref_init(&ref, f.coeffs, f.degree, f.lo, f.hi);
-    range = fabs(A.S.curve.y_hi - A.S.curve.y_lo);
+    range = fabs(A.S.y_hi.HYST_R - A.S.y_lo.HYST_R);
     tol0 = horner_bound(&f);
 
     for (n = 0; n < MAX_SAMPLES && r.at < r.n; ++n) {
@@ -254,7 +270,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                     CHECK(memcmp(&ys[k], &yb, sizeof(yb)) == 0);
                     if (isfinite(xs[k])) (void)ref_step(&ref, xs[k]);
                 }
-                CHECK(m == 0u || memcmp(&ys[m - 1u], &A.S.y_prev, sizeof(hyst_real_t)) == 0);
+                CHECK(m == 0u || memcmp(&ys[m - 1u], &A.S.y_prev.HYST_R, sizeof(hyst_real_t)) == 0);
                 if (st == HYST_WARN_FULL || (hyst_events(&A.S) & HYST_EVENT_FULL)) full = 1;
                 break;
             }
@@ -284,7 +300,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             CHECK(memcmp(&y, &yb, sizeof(y)) == 0); /* twin: bit-identical */
             if (!isfinite(x)) {
                 CHECK(hyst_status(&A.S) == HYST_ERR_NONFINITE);
-                CHECK(y == A.S.y_prev);
+                CHECK(y == A.S.y_prev.HYST_R);
             } else {
                 const double yr = ref_step(&ref, x);
                 if (hyst_status(&A.S) == HYST_WARN_FULL) full = 1;

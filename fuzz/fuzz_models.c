@@ -81,7 +81,25 @@ typedef struct {
     hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
 } tcm_t;
 
-static tcm_t T, Ti, keep_t;
+static tcm_t T, Ti, G, keep_t;
+/* Storage of the compensator's inverse curve (hyst_init_inverse writes it;
+ * Ti points at it, so it outlives Ti). */
+static hyst_curve_t ti_curve;
+
+/* The engine's own evaluation of g (what hyst_curve_g_unit() and
+ * hyst_curve_g_unit_other() exposed before the curve became a tagged union):
+ * from A0, one step to x in the domain gives y_lo + g(x - lo), computed by
+ * the instance's per-sample path (G.S, initialised on c). It must equal
+ * hyst_curve_g bit for bit. */
+static int engine_g_matches(const hyst_curve_t *c, double x)
+{
+    const double xc = x < c->lo.HYST_R ? c->lo.HYST_R : (x > c->hi.HYST_R ? c->hi.HYST_R : x);
+    double y, want;
+    hyst_reset(&G.S);
+    y = hyst_step(&G.S, x);
+    want = c->y_lo.HYST_R + hyst_curve_g(c, xc - c->lo.HYST_R);
+    return y == want;
+}
 
 static int init_on(tcm_t *I, const hyst_curve_t *c, size_t cap)
 {
@@ -320,8 +338,8 @@ static void fuzz_pi(reader_t *rd, unsigned flags)
     }
     if (st == HYST_OK) {
         have_curve = 1;
-        CHECK(curve.kind == HYST_CURVE_PWL && curve.lo == 0.0 && curve.hi == hi);
-        range = curve.y_hi - curve.y_lo;
+        CHECK(curve.kind == HYST_CURVE_PWL && curve.lo.HYST_R == 0.0 && curve.hi.HYST_R == hi);
+        range = curve.y_hi.HYST_R - curve.y_lo.HYST_R;
         for (i = 0; i <= n; ++i) { /* f_PI at the breakpoints: gamma_n again */
             double mag;
             const double fr = f_pi(n, bx[i], &mag);
@@ -579,15 +597,15 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
         return;
     }
     CHECK(hyst_curve_check(&c) == HYST_OK);
-    CHECK(c.kind == HYST_CURVE_PWL && c.lo == qx[0] && c.hi == qx[n - 1u] && c.y_lo == qy[0] &&
-          c.y_hi == qy[n - 1u]);
+    CHECK(c.kind == HYST_CURVE_PWL && c.lo.HYST_R == qx[0] && c.hi.HYST_R == qx[n - 1u] && c.y_lo.HYST_R == qy[0] &&
+          c.y_hi.HYST_R == qy[n - 1u]);
     if (flags & 8u) {
         CHECK(hyst_curve_inverse(NULL, &c) == HYST_ERR_NULL);
         back = c;
         back.kind = 0x5A; /* not a prepared curve */
         CHECK(hyst_curve_check(&back) == HYST_ERR_ARG && hyst_curve_inverse(&inv, &back) == HYST_ERR_ARG);
         back = c;
-        back.n_points = 1u;
+        back.u.pwl.n = 1u;
         CHECK(hyst_curve_check(&back) == HYST_ERR_ARG);
     }
     R = qy[n - 1u] - qy[0];
@@ -603,6 +621,7 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
         if (i > 0u) strict &= qy[i] > qy[i - 1u];
     }
     CHECK(hyst_curve_g(&c, 0.0) == 0.0);
+    CHECK(init_on(&G, &c, 2u) == HYST_OK); /* probe of the engine's g */
     /* Interpolation between breakpoints lies between the neighbours' values
      * (so f is monotone), up to the rounding of (x - x_k) dy / dx (the
      * quotient can exceed dy by 2 ulps) and of eval's y_lo + (interp - y_lo):
@@ -614,8 +633,7 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
         const double slack = 4.0 * EPS * (fabs(qy[0]) + fabs(qy[i]) + fabs(qy[i + 1u])) +
                              x_rounding(qx, qy, n, i, x);
         CHECK(v >= qy[i] - slack && v <= qy[i + 1u] + slack);
-        CHECK(hyst_curve_g_unit_other(&c, x - c.lo) == hyst_curve_g(&c, x - c.lo));
-        CHECK(hyst_curve_g_unit(&c, x - c.lo) == hyst_curve_g(&c, x - c.lo));
+        CHECK(engine_g_matches(&c, x)); /* per-sample g == hyst_curve_g */
     }
 
     memset(&inv, 0x6B, sizeof(inv));
@@ -625,9 +643,10 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
         return;
     }
     CHECK(st == HYST_OK && inv.kind == HYST_CURVE_PWL_INV && hyst_curve_check(&inv) == HYST_OK);
-    CHECK(inv.lo == c.y_lo && inv.hi == c.y_hi && inv.y_lo == c.lo && inv.y_hi == c.hi);
+    CHECK(inv.lo.HYST_R == c.y_lo.HYST_R && inv.hi.HYST_R == c.y_hi.HYST_R && inv.y_lo.HYST_R == c.lo.HYST_R && inv.y_hi.HYST_R == c.hi.HYST_R);
     CHECK(hyst_curve_inverse(&back, &inv) == HYST_OK && back.kind == HYST_CURVE_PWL);
-    CHECK(back.px == qx && back.py == qy && back.lo == c.lo && back.hi == c.hi);
+    CHECK(back.u.pwl.x.HYST_R == qx && back.u.pwl.y.HYST_R == qy && back.lo.HYST_R == c.lo.HYST_R &&
+          back.hi.HYST_R == c.hi.HYST_R);
     for (i = 0; i < n; ++i) CHECK(at_breakpoint(&inv, qy, qx, n, i)); /* swapped axes: exact */
     /* Round trip f(f^-1(v)) = v. Per point: the drive's rounding (a few eps
      * of max|x|) times the steepest slope L, plus a few eps of |v|; with
@@ -638,7 +657,7 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
     for (i = 0; i + 1u < n; ++i) {
         const double v = qy[i] + (double)rd_u8(rd) / 255.0 * (qy[i + 1u] - qy[i]);
         const double xv = hyst_curve_eval(&inv, v);
-        CHECK(in_domain(xv, c.lo, c.hi));
+        CHECK(in_domain(xv, c.lo.HYST_R, c.hi.HYST_R));
         /* the drive's rounding through f, as x_rounding() bounds it: the
          * slope term above underflows for spans like 1e-149 over 1e303 */
         CHECK(xv >= qx[seg(n, xv)] &&
@@ -679,8 +698,8 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
                 continue;
             }
             if (hyst_status(&Ti.S) == HYST_WARN_FULL) run_ok = 0;
-            CHECK(in_domain(xd, c.lo, c.hi)); /* see fuzz_inverse() */
-            CHECK((hyst_status(&Ti.S) == HYST_WARN_CLAMPED) == (yd < c.y_lo || yd > c.y_hi) ||
+            CHECK(in_domain(xd, c.lo.HYST_R, c.hi.HYST_R)); /* see fuzz_inverse() */
+            CHECK((hyst_status(&Ti.S) == HYST_WARN_CLAMPED) == (yd < c.y_lo.HYST_R || yd > c.y_hi.HYST_R) ||
                   hyst_status(&Ti.S) == HYST_WARN_FULL);
             {
                 const double yf = hyst_step(&T.S, xd);
@@ -689,7 +708,7 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
                  * hangs on carry their own rounding (as in fuzz_hyst.c). */
                 if (run_ok) {
                     const double depth = (double)hyst_tp_count(&T.S) + 2.0;
-                    CLOSE("pwl_tcm_round_trip", fabs(yf - clampd(yd, c.y_lo, c.y_hi)), depth * tol);
+                    CLOSE("pwl_tcm_round_trip", fabs(yf - clampd(yd, c.y_lo.HYST_R, c.y_hi.HYST_R)), depth * tol);
                 }
             }
         }
@@ -746,24 +765,29 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         exp = cst != HYST_OK ? cst : (cap < 2u ? HYST_ERR_CAPACITY : HYST_OK);
     }
     if (flags & 8u) {
-        CHECK(hyst_init_inverse(&Ti.S, NULL, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) == HYST_ERR_NULL);
+        CHECK(hyst_init_inverse(&Ti.S, &ti_curve, NULL, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) ==
+              HYST_ERR_NULL);
+        CHECK(hyst_init_inverse(&Ti.S, NULL, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) == HYST_ERR_NULL);
         if (cst == HYST_OK) {
-            CHECK(hyst_init_inverse(NULL, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) == HYST_ERR_NULL);
-            CHECK(hyst_init_inverse(&Ti.S, &f, Ti.xl, NULL, Ti.xr, Ti.yr, cap) == HYST_ERR_NULL);
+            CHECK(hyst_init_inverse(NULL, &ti_curve, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) ==
+                  HYST_ERR_NULL);
+            CHECK(hyst_init_inverse(&Ti.S, &ti_curve, &f, Ti.xl, NULL, Ti.xr, Ti.yr, cap) ==
+                  HYST_ERR_NULL);
         }
     }
     memset(&Ti, 0x77, sizeof(Ti));
     memcpy(&keep_t, &Ti, sizeof(Ti));
-    st = hyst_init_inverse(&Ti.S, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap);
+    st = hyst_init_inverse(&Ti.S, &ti_curve, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap);
     CHECK(st == exp);
     if (st != HYST_OK) {
         CHECK(memcmp(&Ti, &keep_t, sizeof(Ti)) == 0);
         return;
     }
-    CHECK(Ti.S.curve.kind == HYST_CURVE_POLY_INV && hyst_curve_check(&ci) == HYST_OK);
-    CHECK(memcmp(&Ti.S.curve, &ci, sizeof(ci)) == 0); /* same as the two calls */
+    CHECK(Ti.S.curve == &ti_curve); /* the instance points at the caller's storage */
+    CHECK(Ti.S.curve->kind == HYST_CURVE_POLY_INV && hyst_curve_check(&ci) == HYST_OK);
+    CHECK(memcmp(Ti.S.curve, &ci, sizeof(ci)) == 0); /* same as the two calls */
     CHECK(hyst_curve_inverse(&back, &ci) == HYST_OK && back.kind == HYST_CURVE_POLY);
-    R = cf.y_hi - cf.y_lo;
+    R = cf.y_hi.HYST_R - cf.y_lo.HYST_R;
     M = fmax(fabs(f.lo), fabs(f.hi));
     /* g(g^-1(e)) = e: the product's 1e-9 of the range, plus the drive's
      * rounding (8 eps M) times the steepest slope and Horner's bound (raw
@@ -790,21 +814,22 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         for (j = 0; j <= 64u; ++j) {
             const double e = R * ((double)j / 64.0);
             const double d = hyst_curve_g(&ci, e), g = hyst_curve_g(&cf, d);
-            CHECK(d >= 0.0 && d <= cf.hi - cf.lo && d >= prev_d); /* monotone here too */
+            CHECK(d >= 0.0 && d <= cf.hi.HYST_R - cf.lo.HYST_R && d >= prev_d); /* monotone here too */
             prev_d = d;
             if (isfinite(g)) CLOSE("poly_inv_near_dbl_max", fabs(g - e), R / HYST_INV_KNOTS * (1.0 + 1e-9));
         }
         return;
     }
+    CHECK(init_on(&G, &ci, 2u) == HYST_OK); /* probe of the engine's g^-1 */
     for (j = 0; j <= 64u; ++j) { /* curve level: g(g^-1(e)) = e */
         const double e = R * ((double)j / 64.0); /* no overflow near DBL_MAX */
         const double d = hyst_curve_g(&ci, e);
-        CHECK(d >= 0.0 && d <= cf.hi - cf.lo);
+        CHECK(d >= 0.0 && d <= cf.hi.HYST_R - cf.lo.HYST_R);
         /* g^-1 non-decreasing (monotone bisection): grid and neighbouring doubles */
         CHECK(d >= prev_d && hyst_curve_g(&ci, nextafter(e, -INFINITY)) <= d &&
               hyst_curve_g(&ci, nextafter(e, INFINITY)) >= d);
         prev_d = d;
-        CHECK(hyst_curve_g_unit_other(&ci, e) == d);
+        CHECK(engine_g_matches(&ci, ci.lo.HYST_R + e)); /* per-sample g == hyst_curve_g */
         CLOSE(flat ? "poly_inv_curve_flat" : "poly_inv_curve_round_trip", fabs(hyst_curve_g(&cf, d) - e), tol);
         CLOSE("poly_inv_of_inv", fabs(hyst_curve_g(&back, d) - hyst_curve_g(&cf, d)), 4.0 * EPS * R + horner_bound(&f));
     }
@@ -824,13 +849,13 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
             continue;
         }
         {
-            const double yd = next_pos(rd, op, cf.y_lo, R);
+            const double yd = next_pos(rd, op, cf.y_lo.HYST_R, R);
             const double xd = hyst_step(&Ti.S, yd);
             if (!isfinite(yd)) continue;
             if (hyst_status(&Ti.S) == HYST_WARN_FULL) run_ok = 0;
             /* The drive stays in [lo, hi], after a merge too (the output clamp after a full array,
              * regress_full_drive_overrange, fixed: the engine clamps). */
-            CHECK(in_domain(xd, cf.lo, cf.hi));
+            CHECK(in_domain(xd, cf.lo.HYST_R, cf.hi.HYST_R));
             {
                 const double yf = hyst_step(&T.S, xd);
                 if (hyst_status(&T.S) == HYST_WARN_FULL) run_ok = 0;
@@ -840,7 +865,7 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
                  * model missed yd by 1.2e-5 of the range). */
                 if (run_ok) {
                     const double depth = (double)hyst_tp_count(&T.S) + 2.0;
-                    CLOSE("poly_inv_tcm_round_trip", fabs(yf - clampd(yd, cf.y_lo, cf.y_hi)), depth * tol);
+                    CLOSE("poly_inv_tcm_round_trip", fabs(yf - clampd(yd, cf.y_lo.HYST_R, cf.y_hi.HYST_R)), depth * tol);
                 }
             }
         }

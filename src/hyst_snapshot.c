@@ -95,10 +95,10 @@ typedef union {
 
 static void put_num(unsigned char *p, const hyst_num_t *v, num_type_t t)
 {
-    unsigned k;
 #if HYST_ENABLE_F64
     if (t == NUM_F64) {
         bits64_t b;
+        unsigned k;
         b.r = v->f64;
         for (k = 0u; k < 8u; ++k) {
             p[k] = (unsigned char)((b.u >> (8u * k)) & 0xFFu);
@@ -113,16 +113,15 @@ static void put_num(unsigned char *p, const hyst_num_t *v, num_type_t t)
         return;
     }
     put_u32(p, (unsigned long)v->code);
-    (void)k;
 }
 
 /* The number at p; 0 if it cannot be one of type t (a code too wide). */
 static int get_num(const unsigned char *p, hyst_num_t *v, num_type_t t)
 {
-    unsigned k;
 #if HYST_ENABLE_F64
     if (t == NUM_F64) {
         bits64_t b;
+        unsigned k;
         b.u = 0u;
         for (k = 0u; k < 8u; ++k) {
             b.u |= (uint64_t)(p[k] & 0xFFu) << (8u * k);
@@ -131,7 +130,6 @@ static int get_num(const unsigned char *p, hyst_num_t *v, num_type_t t)
         return 1;
     }
 #endif
-    (void)k;
     if (t == NUM_F32) {
         bits32_t b;
         b.u = (uint32_t)get_u32(p);
@@ -139,6 +137,7 @@ static int get_num(const unsigned char *p, hyst_num_t *v, num_type_t t)
         return 1;
     }
     if (get_u32(p) > (unsigned long)HYST_CODE_MAX) {
+        v->code = 0u; /* defined, though refused */
         return 0;
     }
     v->code = (hyst_code_word_t)get_u32(p);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bounded memory: a small capacity and the noise deadband against the
  * unbounded double-precision reference (support/ref_tcm.c), on both engines
  * (real inputs and 16-bit codes), over long random and adversarial inputs.

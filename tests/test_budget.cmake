@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Per-sample instruction budgets of hyst_step on the Cortex-M4F:
 # exact counts under QEMU, never time. Needs the bench_budget image
 # (bench/CMakeLists.txt) and Python 3.

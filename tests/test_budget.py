@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """ctest: per-sample instruction budgets of hyst_step on the Cortex-M4F.
 
 Runs bench_budget (bench/bench_target.c) under QEMU through

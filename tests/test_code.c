@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The integer-code variant (hyst/code.h). Its engine is the float variant's
  * engine source, so the rules proven in test_tcm_rules.c carry over if the
  * two agree: they are run side by side on the same histories (random,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Identification of f0: the paper's Simulation Example 1, the Eq. 20 cubic
  * simulated and fitted back, raw units at degree 9, the options (skip,
  * delay, domain), the monotonicity report, errors, and the measured piezo

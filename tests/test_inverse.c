@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The inverse TCM (docs/theory.md, the inverse model): inverse curves, the bounded,
  * monotone polynomial inverse, the round trip H(H^-1(y_d)) = y_d, clamping, and the inverse PI
  * against the inverse TCM with f0 = f_PI. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Prandtl-Ishlinskii model: parameter checks, the operator rules, the
  * analytic inverse, and the paper's result that TCM with f0 = f_PI
  * reproduces PI exactly (docs/theory.md). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Snapshot/restore: octet format, round trip, and refusal of every damaged
  * snapshot (each bit flipped once, each truncation) with the instance untouched. */
 #include "support.h"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The nm check (ctest "symbols"): the library archive must not reference the
 # heap, stdio, process exit or assert, and must define no writable global data
 # (no global state); its public functions are named hyst_*, and no static

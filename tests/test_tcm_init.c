@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Configuration checks at init and bad samples at run time. */
 #include "support.h"
 #include "unity.h"

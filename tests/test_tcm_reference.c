@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The library against the simple reference (support/ref_tcm.c) over random
  * walks, random jumps and quantised codes, on the paper's curve and on random
  * increasing curves of every degree. */

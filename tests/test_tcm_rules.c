@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Madelung's rules as properties over random inputs, quantised inputs, the
  * paper's experiment shape, the full-array policy and independent instances. */
 #include "ref_tcm.h"

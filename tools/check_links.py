@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Checks the links of the repository's Markdown files; Python 3, no dependencies.
 
     tools/check_links.py [FILE.md ...]

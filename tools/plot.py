@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Pictures of an identification made with the `hyst` tool (PNG files).
 
 Reads the measured record, the output of `hyst fit` (coefficients on line 1,

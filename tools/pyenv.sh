@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Prints the path of a Python with numpy + matplotlib, creating a venv under
 # build/pyenv from PyPI the first time. Only the figure scripts need it; the C
 # build and the tests never do.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Turns the target's printout (examples/paper_report.c) into a report.
 
 usage: report.py FIRMWARE_OUTPUT OUT_DIR [--timing CSV] [--bench SUMMARY]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bounded memory, measured (docs/memory.md): the integer-code TCM with K
  * entries per array against the unbounded double-precision reference
  * (tests/support/ref_tcm.c), on

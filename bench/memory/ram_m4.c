@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* RAM of one integer-code instance (struct + 4 arrays) for K = 8..128, as
  * the target's compiler lays it out: compile with -S, read the .word table. */
 #include "hyst/code.h"

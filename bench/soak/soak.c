@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Soak benchmark (host, not in CI): N samples (default 10^9) of mixed
  * signals through one float TCM instance (the target's type), with
  *  - per-sample checks: output continuous (|dy| <= max slope * |dx| + tol),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "piezo_data.h"
 
 #include "hyst_port.h"

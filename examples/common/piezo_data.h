@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Loader of the measured piezo record (tests/data/piezo_major_loop.dat, MIT,
  * from yan9a/DiscreteBacklashOperator; see tests/data/README.md): column 1 =
  * drive voltage, column 5 = displacement sensor. Reads through the port's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "plant_bw.h"
 
 void plant_bw_init_piezo(plant_bw_t *p)

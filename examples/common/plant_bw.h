@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A simulated piezo actuator that is NOT a TCM: the rate-independent
  * Bouc-Wen model (Low & Guo form), in double precision.
  *   y = d x - h + y0,   dh = alpha d dx - beta |dx| h - gamma dx |h|

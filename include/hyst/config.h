@@ -12,7 +12,7 @@
  * | option              | default | meaning                                                    | layout |
  * |---------------------|---------|------------------------------------------------------------|--------|
  * | HYST_USE_DOUBLE     | off     | the unsuffixed names (hyst_step, hyst_t...) mean f64, not f32 | no  |
- * | HYST_ENABLE_F64     | 1       | the f64 variant exists (0: numbers are 4 bytes, no double) | yes    |
+ * | HYST_ENABLE_F64     | 1 if double has 53 bits | the f64 variant exists (0: numbers are 4 bytes) | yes |
  * | HYST_MAX_DEGREE     | 9       | highest polynomial degree of a curve (>= 1)                | yes    |
  * | HYST_INV_KNOTS      | 16      | intervals of the start table of an inverted polynomial      | yes    |
  * | HYST_INV_MAX_ITER   | 12      | bound on the work of an inverted polynomial per sample      | no     |
@@ -34,7 +34,12 @@
 #endif
 
 #ifndef HYST_ENABLE_F64
+#include <float.h>
+#if DBL_MANT_DIG >= 53 /* a real double: not where double is float (AVR, C28x without fpu64) */
 #define HYST_ENABLE_F64 1
+#else
+#define HYST_ENABLE_F64 0
+#endif
 #endif
 
 #ifndef HYST_MAX_DEGREE

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # ctest driver: installs hyst into a scratch prefix and builds + runs a consumer
 # with find_package, or builds one that uses add_subdirectory.
 # -DMODE=find_package|subdirectory -DHYST_SOURCE_DIR= -DHYST_BINARY_DIR= -DWORK_DIR=

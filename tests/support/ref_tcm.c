@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "ref_tcm.h"
 
 void ref_init(ref_tcm_t *r, const double *c, unsigned degree, double lo, double hi)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Deliberately simple TCM reference for tests: double precision, one flat
  * list of turning points scanned linearly, f0 evaluated on raw coefficients.
  * Shares no code with the library, so agreement means something. */

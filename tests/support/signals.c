@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "signals.h"
 
 const char *const signal_name[SIG_KINDS] = {"random walk", "random jumps", "paper triangle"};

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Test input sequences on [lo, hi] that start from lo: random walks, random
  * jumps and the paper's shrinking/growing triangle, sample by sample. */
 #ifndef HYST_TEST_SIGNALS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "support.h"
 
 const double paper_eq20_coeffs[4] = {-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1};

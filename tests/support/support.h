@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the tests: a seeded PRNG, test signals and the paper's curve. */
 #ifndef HYST_TEST_SUPPORT_H
 #define HYST_TEST_SUPPORT_H
