@@ -64,6 +64,8 @@ typedef struct {
 } f32inst_t;
 
 static cinst_t C, T, Z, keepc;
+/* snapshots: of T (code), and of F (double) for the refusal probe */
+static unsigned char snap[HYST_SNAPSHOT_SIZE(MAX_CAP)], snapf[HYST_SNAPSHOT_SIZE(MAX_CAP)];
 static f32inst_t F32;
 /* C's curve when it is initialised through hyst_code_init_curve (flag bit1):
  * an f32 curve, which C points at, so it outlives C */
@@ -117,6 +119,33 @@ static facts_t curve_facts(const hyst_poly_t *f)
     q.slope_max = fmax(s0, s1);
     q.slope_min = fmin(s0, s1);
     return q;
+}
+
+/* Rounding of the code variant, whose outputs are float (in every build,
+ * HYST_USE_DOUBLE or not): per turning point an output hangs on, the engine
+ * evaluates the normalised branch shape G(u) = f0(lo + u (hi - lo)) - f0(lo)
+ * = a_1 u + ... + a_n u^n in float, at a float u (the code difference, exact,
+ * times a float scale), and adds it to a stored float output. Horner's bound
+ * in float on those coefficients (as horner_bound() in double on the raw
+ * ones), plus the rounding of the sum y_k +- G: FLT_EPSILON (8 (n + 1) sum |a_k|
+ * + 2 max |f0|). The turning-point inputs are codes, exact, so these errors
+ * only add up along the stack, as the double ones do (depth factor). The
+ * a_k are computed here, in double, from the raw coefficients (Taylor
+ * shift), independently of the library's normalisation. */
+static double float_bound(const hyst_poly_t *f, double y_lo, double y_hi)
+{
+    double p[HYST_MAX_DEGREE + 1], scale = 1.0, sum = 0.0;
+    const unsigned n = f->degree;
+    unsigned i, j;
+    for (j = 0; j <= n; ++j) p[j] = f->coeffs[j];
+    for (i = 0; i < n; ++i) { /* p(lo + t), highest power first */
+        for (j = 1; j <= n - i; ++j) p[j] += f->lo * p[j - 1u];
+    }
+    for (j = n; j-- > 0u;) { /* p[j] multiplies t^(n - j); t = u (hi - lo) */
+        scale *= f->hi - f->lo;
+        sum += fabs(p[j]) * scale;
+    }
+    return FLT_EPSILON * (8.0 * (double)(n + 1u) * sum + 2.0 * fmax(fabs(y_lo), fabs(y_hi)));
 }
 
 /* all entries when whole is set or the stack is shallow; else the top four
@@ -277,7 +306,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     const int via_curve = (int)(flags & 2u);
     hyst_status_t st;
     unsigned long dbc = 0;
-    double dbv = 0.0, range, tol0, resid, step_v;
+    double dbv = 0.0, range, tol0, fl0, resid, step_v;
     facts_t q;
     track_t tc, tf;
     int compare, proven;
@@ -378,6 +407,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     ref_init(&ref, f.coeffs, f.degree, f.lo, f.hi);
     range = fabs(F.S.y_hi.HYST_R - F.S.y_lo.HYST_R);
     tol0 = horner_bound(&f);
+    fl0 = compare ? float_bound(&f, F.S.y_lo.HYST_R, F.S.y_hi.HYST_R) : 0.0;
     resid = (q.slope_max - q.slope_min) * step_v; /* a merged TP rounded to a code */
     last_code = clo;
     memset(&tc, 0, sizeof(tc));
@@ -410,9 +440,31 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             last_code = clo;
             continue;
         }
+        if (op == 0xF3u) { /* snapshot twin: T saved, restored into C, both go on */
+            const size_t len = hyst_snapshot_size(&T.S);
+            size_t got = 0, lenf = 0;
+            CHECK(len > 0u && len <= HYST_SNAPSHOT_SIZE(cap));
+            CHECK(hyst_snapshot_save(&T.S, snap, len - 1u, NULL) == HYST_ERR_NOSPACE);
+            CHECK(hyst_snapshot_save(&T.S, snap, sizeof(snap), &got) == HYST_OK && got == len);
+            CHECK(snap[6] == 4u && snap[7] == HYST_VARIANT_CODE); /* float outputs, codes */
+            /* a snapshot of a real (double) instance is not one of codes */
+            CHECK(hyst_snapshot_save(&F.S, snapf, sizeof(snapf), &lenf) == HYST_OK);
+            memcpy(&keepc, &C, sizeof(C));
+            CHECK(hyst_snapshot_restore(&C.S, snapf, lenf) == HYST_ERR_VERSION);
+            CHECK(memcmp(&keepc, &C, sizeof(C)) == 0);
+            /* C, initialised as T (maybe through its own f32 curve), moved away
+             * from T's state first so that the restore has to do the work */
+            hyst_reset(&C.S);
+            CHECK(hyst_snapshot_restore(&C.S, snap, len) == HYST_OK);
+            CHECK(same_code(&C, &T) && hyst_code_input(&C.S) == hyst_code_input(&T.S));
+            CHECK(hyst_code_error_bound(&C.S) == hyst_code_error_bound(&T.S));
+            continue; /* every later sample compares C with T bit for bit */
+        }
         if (op > 0xF2u) { /* accessors, clear events */
             (void)hyst_status(&C.S);
             (void)hyst_rising(&C.S);
+            CHECK(hyst_capacity(&C.S) == cap && hyst_ltp_count(&C.S) + hyst_rtp_count(&C.S) ==
+                                                    hyst_tp_count(&C.S));
             hyst_clear_events(&C.S);
             hyst_clear_events(&T.S);
             hyst_clear_events(&Z.S);
@@ -447,7 +499,10 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 const hyst_real_t yf = hyst_step(&F.S, x);
                 const hyst_real_t yf0 = hyst_step(&F0.S, x);
                 const double yr = ref_step(&ref, x);
-                const double tol = 1e-9 * range + ((double)ref_tp_count(&ref) + 2.0) * tol0;
+                const double depth = (double)ref_tp_count(&ref) + 2.0;
+                const double tol = 1e-9 * range + depth * tol0;
+                /* where a code-variant (float) output is compared */
+                const double ftol = tol + depth * fl0;
                 last_code = cc;
                 if (clamped) {
                     CHECK(hyst_status(&T.S) == HYST_WARN_CLAMPED ||
@@ -466,7 +521,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 }
                 if (compare && !tc.forgot) { /* exact: TCM over codes = reference */
                     CHECK(hyst_tp_count(&T.S) == (size_t)ref_tp_count(&ref));
-                    CHECK(fabs(y - yr) <= tol);
+                    CHECK(fabs(y - yr) <= ftol);
                     CHECK(hyst_code_error_bound(&T.S) == 0.0);
                     ++n_exact;
                 }
@@ -477,29 +532,29 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 }
                 if (compare && !tc.forgot && !tf.forgot) { /* code vs real engine */
                     CHECK(hyst_tp_count(&T.S) == hyst_tp_count(&F.S));
-                    CHECK(fabs(y - yf) <= tol);
+                    CHECK(fabs(y - yf) <= ftol);
                     ++n_vs_real;
                 }
                 if (proven) {
                     const double bc = hyst_code_error_bound(&T.S), bf = hyst_error_bound(&F.S);
-                    check_bounded(&tc, x, y, yr, bc, &q, tol, resid);
+                    check_bounded(&tc, x, y, yr, bc, &q, ftol, resid);
                     check_bounded(&tf, x, yf, yr, bf, &q, tol, 0.0);
                     ++n_bounded;
                     n_nonzero += bc > 0.0;
                     if (bc > tc.b_prev && hyst_status(&T.S) == HYST_WARN_FULL) {
                         /* a merge of L1, R1 and P: second order in w = x_R1 - x_L1 */
                         const double w = xr1 - xl1;
-                        CHECK(bc - tc.b_prev <= q.curv_max * w * w / 4.0 + resid + tol);
+                        CHECK(bc - tc.b_prev <= q.curv_max * w * w / 4.0 + resid + ftol);
                         ++n_merge;
                     } else if (bc > tc.b_prev) { /* a deadband window opened or widened */
-                        CHECK(bc - tc.b_prev <= q.curv_max * dbv * dbv / 4.0 + resid + tol);
+                        CHECK(bc - tc.b_prev <= q.curv_max * dbv * dbv / 4.0 + resid + ftol);
                         ++n_window;
                     }
                     if (bf > tf.b_prev && hyst_status(&F.S) != HYST_WARN_FULL) {
                         CHECK(bf - tf.b_prev <= q.curv_max * dbv * dbv / 4.0 + tol);
                     }
                     if (!tc.full) { /* no merge: only the open window counts */
-                        CHECK(bc <= q.curv_max * dbv * dbv / 4.0 + tol);
+                        CHECK(bc <= q.curv_max * dbv * dbv / 4.0 + ftol);
                     }
                     if (!tf.full) {
                         CHECK(bf <= q.curv_max * dbv * dbv / 4.0 + tol);

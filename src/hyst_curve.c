@@ -90,7 +90,7 @@ static int unit_increasing(const hyst_wide_t *g, unsigned n, hyst_wide_t *turn_u
 
     for (k = 0u; k <= m; ++k) {
         d[k] = (hyst_wide_t)(k + 1u) * g[k + 1u];
-        bound += d[k] < 0 ? -d[k] : d[k];
+        bound += hyst_wide_abs(d[k]);
     }
     /* Slopes within rounding of zero count as zero (x^3 at 0 is increasing). */
     tol = bound * (hyst_wide_t)(sizeof(hyst_wide_t) >= 8u ? 1e-12 : 1e-5);

@@ -7,12 +7,10 @@
 
 #include <math.h>
 
-#if defined(HYST_NO_DOUBLE) && !defined(HYST_USE_DOUBLE)
+#if defined(HYST_NO_DOUBLE)
 #define WIDE_SQRT(v) sqrtf(v) /* no double math linked */
-#define WIDE_EPS ((hyst_wide_t)1.2e-7)
 #else
 #define WIDE_SQRT(v) sqrt(v)
-#define WIDE_EPS ((hyst_wide_t)2.3e-16)
 #endif
 
 
@@ -288,7 +286,7 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
         big = d > big ? d : big;
     }
     for (i = 0u; i <= n; ++i) {
-        if (!(hyst_wide_abs(id->r[row_at(i, m)]) > big * WIDE_EPS * (hyst_wide_t)1000)) {
+        if (!(hyst_wide_abs(id->r[row_at(i, m)]) > big * HYST_WIDE_EPS * (hyst_wide_t)1000)) {
             return HYST_ERR_SINGULAR;
         }
     }

@@ -4,8 +4,17 @@
 #ifndef HYST_UTIL_H
 #define HYST_UTIL_H
 
+#include <float.h>
+
 #include "hyst/curve.h"
 #include "hyst/tcm.h"
+
+/* Rounding unit of hyst_wide_t. */
+#ifdef HYST_NO_DOUBLE
+#define HYST_WIDE_EPS ((hyst_wide_t)FLT_EPSILON)
+#else
+#define HYST_WIDE_EPS ((hyst_wide_t)DBL_EPSILON)
+#endif
 
 /* Finite test without libm: NaN fails v == v, +-Inf gives Inf - Inf = NaN. */
 HYST_INLINE int hyst_wide_is_finite(hyst_wide_t v)

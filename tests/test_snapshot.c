@@ -366,6 +366,65 @@ static void test_negative_zero_turning_point_restores_as_zero(void)
     }
 }
 
+/* Values the model cannot produce, written with a recomputed CRC: an output
+ * far outside f0's range, an unknown status, a huge error bound. */
+static void test_forged_values_with_a_valid_crc_are_refused(void)
+{
+    const size_t ltp = 32u + 2u * R; /* LTP 0 = A0 */
+    size_t book;
+    unsigned char v[8];
+    take_snapshot();
+    book = ltp + 2u * R * (A.S.n_ltp + A.S.n_rtp);
+    set_real(v, HYST_REAL_C(1e30));
+    /* the output of LTP 1 */
+    memcpy(work, snap, snap_len);
+    memcpy(work + ltp + 2u * R + R, v, R);
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&B.S, work, snap_len));
+    /* the last output */
+    memcpy(work, snap, snap_len);
+    memcpy(work + 32u + R, v, R);
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&B.S, work, snap_len));
+    /* the error bound of the live merges */
+    memcpy(work, snap, snap_len);
+    memcpy(work + book + 4u, v, R);
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&B.S, work, snap_len));
+    /* a status no sample leaves */
+    memcpy(work, snap, snap_len);
+    work[28] = 0x34u;
+    work[29] = 0x12u;
+    refix_crc(work, snap_len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&B.S, work, snap_len));
+    assert_untouched(&B);
+}
+
+/* Two piecewise-linear curves with the same ends but another shape are two
+ * curves: a snapshot of one does not restore into the other. */
+static void test_piecewise_linear_curve_identity_covers_every_point(void)
+{
+    static const hyst_real_t x[3] = {0, HYST_REAL_C(20.0), HYST_REAL_C(40.0)};
+    static const hyst_real_t y1[3] = {0, HYST_REAL_C(1.0), HYST_REAL_C(6.0)};
+    static const hyst_real_t y2[3] = {0, HYST_REAL_C(2.0), HYST_REAL_C(6.0)};
+    static hyst_curve_t c1, c2;
+    size_t len = 0u;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&c1, x, y1, 3u));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&c2, x, y2, 3u));
+    memset(&A, 0, sizeof A);
+    memset(&B, 0, sizeof B);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&A.S, &c1, A.xl, A.yl, A.xr, A.yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&B.S, &c2, B.xl, B.yl, B.xr, B.yr, CAP));
+    (void)hyst_step(&A.S, HYST_REAL_C(30.0));
+    (void)hyst_step(&A.S, HYST_REAL_C(10.0));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&A.S, work, sizeof work, &len));
+    keep(&B);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&B.S, work, len));
+    assert_untouched(&B);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&B.S, &c1, B.xl, B.yl, B.xr, B.yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, work, len));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -382,5 +441,7 @@ int main(void)
     RUN_TEST(test_impossible_state_with_valid_crc_is_refused);
     RUN_TEST(test_save_refuses_small_buffers_and_null);
     RUN_TEST(test_negative_zero_turning_point_restores_as_zero);
+    RUN_TEST(test_forged_values_with_a_valid_crc_are_refused);
+    RUN_TEST(test_piecewise_linear_curve_identity_covers_every_point);
     return UNITY_END();
 }
