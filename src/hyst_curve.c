@@ -195,7 +195,8 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
     }
     lo = f0->lo;
     hi = f0->hi;
-    if (!hyst_wide_is_finite(lo) || !hyst_wide_is_finite(hi) || !(lo < hi)) {
+    if (!hyst_wide_is_finite(lo) || !hyst_wide_is_finite(hi) || !(lo < hi) ||
+        !hyst_wide_is_finite(hi - lo)) {
         return HYST_ERR_DOMAIN;
     }
     for (k = 0u; k <= n; ++k) {
@@ -224,6 +225,25 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
     }
     if (!finite) {
         return HYST_ERR_COEFF;
+    }
+    /* Every per-sample quantity must be finite in the variant's type: an
+     * input difference (up to hi - lo), Horner's partial sums (at most
+     * sum |a_k| on [0, 1]) and an output (|y| + the output span). */
+    {
+        hyst_num_t probe;
+        hyst_wide_t bound = 0, ymax = hyst_wide_abs(g[0]) > hyst_wide_abs(y_hi)
+                                         ? hyst_wide_abs(g[0])
+                                         : hyst_wide_abs(y_hi);
+        for (k = 1u; k <= n; ++k) {
+            bound += hyst_wide_abs(g[k]);
+        }
+        if (!hyst_num_set(&probe, variant, hi - lo)) {
+            return HYST_ERR_DOMAIN;
+        }
+        if (!hyst_wide_is_finite(bound) || !hyst_num_set(&probe, variant, bound) ||
+            !hyst_num_set(&probe, variant, 2 * ymax + bound)) {
+            return HYST_ERR_COEFF;
+        }
     }
     if (!hyst_poly_is_increasing(c, n, lo, hi, NULL)) {
         return HYST_ERR_NOT_INCREASING;

@@ -9,7 +9,7 @@ const char *hyst_status_str(int status)
     case HYST_WARN_CLAMPED: return "input clamped to the domain";
     case HYST_WARN_FULL: return "turning-point memory full, innermost loop forgotten";
     case HYST_ERR_NULL: return "null pointer";
-    case HYST_ERR_DOMAIN: return "domain not finite or lo >= hi";
+    case HYST_ERR_DOMAIN: return "domain not finite, lo >= hi, or hi - lo overflows";
     case HYST_ERR_DEGREE: return "degree out of range";
     case HYST_ERR_CAPACITY: return "capacity too small";
     case HYST_ERR_COEFF: return "coefficient not finite or curve overflows";

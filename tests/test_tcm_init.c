@@ -332,6 +332,26 @@ static void test_status_strings_are_distinct(void)
     TEST_ASSERT_EQUAL_STRING("unknown status", hyst_status_str(42));
 }
 
+/* A curve whose per-sample arithmetic would overflow the variant's type is
+ * refused at init (it used to pass and return inf and NaN with status OK). */
+static void test_domain_or_outputs_that_overflow_the_type_are_refused(void)
+{
+    static const hyst_poly_t wide32 = {1u, -3e38, 3e38, {1e-10, 0.0}};     /* hi - lo > FLT_MAX */
+    static const hyst_poly_t wide64 = {1u, -1e308, 1e308, {1e-10, 0.0}};   /* hi - lo > DBL_MAX */
+    static const hyst_poly_t tall32 = {1u, 0.0, 1.0, {3e38, 3e38}};       /* outputs to 6e38 */
+    static float a[4][CAP];
+    static double b[4][CAP];
+    hyst_tcm_t T;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_f32_init(&T, &wide32, a[0], a[1], a[2], a[3], CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_init(&T, &wide32, b[0], b[1], b[2], b[3], CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_f64_init(&T, &wide64, b[0], b[1], b[2], b[3], CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_f32_init(&T, &tall32, a[0], a[1], a[2], a[3], CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_init(&T, &tall32, b[0], b[1], b[2], b[3], CAP));
+    /* what the f64 instance accepted stays finite over the whole domain */
+    TEST_ASSERT_TRUE(hyst_f64_step(&T, 1.0) == 6e38 && hyst_status(&T) == HYST_OK);
+    TEST_ASSERT_TRUE(hyst_f64_step(&T, 0.0) == 3e38 && hyst_status(&T) == HYST_OK);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -355,5 +375,6 @@ int main(void)
     RUN_TEST(test_overlapping_arrays_are_refused);
     RUN_TEST(test_null_policy_every_entry_point);
     RUN_TEST(test_variants_coexist);
+    RUN_TEST(test_domain_or_outputs_that_overflow_the_type_are_refused);
     return UNITY_END();
 }

@@ -105,8 +105,11 @@ typedef struct hyst_curve {
  * @brief Validates a polynomial f0 and prepares its branch shape.
  *
  * Checks, in this order: NULL pointers, degree in 1..HYST_MAX_DEGREE, finite
- * lo < hi, finite coefficients (and a finite f0 over the domain, in the
- * variant's type), and that f0 is increasing on [lo, hi] (its slope is never
+ * lo < hi with a finite span hi - lo in the variant's type (HYST_ERR_DOMAIN),
+ * finite coefficients and every per-sample quantity finite in the variant's
+ * type: outputs, their span, Horner's partial sums (HYST_ERR_COEFF; a curve
+ * that would make a sample overflow is refused here, not at the sample),
+ * and that f0 is increasing on [lo, hi] (its slope is never
  * negative; isolated zeros such as x^2 at 0 are accepted). @p curve is
  * written only on success. Arguments: curve (out), f0 (highest power first).
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT, HYST_ERR_DEGREE,
