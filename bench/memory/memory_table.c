@@ -36,8 +36,8 @@
 #define MAXN 200000L
 
 static hyst_code_word_t xs[2][MAXK];
-static hyst_real_t ys[2][MAXK];
-static hyst_code_t S;
+static float ys[2][MAXK]; /* the code variant's outputs are float */
+static hyst_tcm_t S;
 static ref_tcm_t ref;
 static uint_least32_t codes[MAXN];
 static double data[MAXN];
@@ -159,8 +159,8 @@ static void measure(unsigned bits, size_t k, unsigned long deadband, const char 
         worst = e > worst ? e : worst;
         sum2 += e * e;
         peak = ref_tp_count(&ref) > peak ? ref_tp_count(&ref) : peak;
-        fulls += hyst_code_status(&S) == HYST_WARN_FULL;
-        own = hyst_code_tp_count(&S) > own ? hyst_code_tp_count(&S) : own;
+        fulls += hyst_status(&S) == HYST_WARN_FULL;
+        own = hyst_tp_count(&S) > own ? hyst_tp_count(&S) : own;
     }
     printf("%u %u %s %.6f %.6f %ld %u %ld\n", bits, (unsigned)k, name, 100.0 * worst / range,
            100.0 * sqrt(sum2 / (double)n) / range, peak, (unsigned)own, fulls);

@@ -5,4 +5,4 @@
 
 const unsigned long hyst_mem_ram[5] = {HYST_CODE_RAM(8), HYST_CODE_RAM(16), HYST_CODE_RAM(32),
                                        HYST_CODE_RAM(64), HYST_CODE_RAM(128)};
-const unsigned long hyst_mem_struct = sizeof(hyst_code_t);
+const unsigned long hyst_mem_struct = sizeof(hyst_tcm_t);

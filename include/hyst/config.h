@@ -12,7 +12,7 @@
  * | option              | default | meaning                                                    | layout |
  * |---------------------|---------|------------------------------------------------------------|--------|
  * | HYST_USE_DOUBLE     | off     | the unsuffixed names (hyst_step, hyst_t...) mean f64, not f32 | no  |
- * | HYST_ENABLE_F64     | 1 if double has 53 bits | the f64 variant exists (0: numbers are 4 bytes) | yes |
+ * | HYST_ENABLE_F64     | see below | the f64 variant exists (0: numbers are 4 bytes)         | yes    |
  * | HYST_MAX_DEGREE     | 9       | highest polynomial degree of a curve (>= 1)                | yes    |
  * | HYST_INV_KNOTS      | 16      | intervals of the start table of an inverted polynomial      | yes    |
  * | HYST_INV_MAX_ITER   | 12      | bound on the work of an inverted polynomial per sample      | no     |
@@ -20,6 +20,11 @@
  * | HYST_MONOTONE_DEPTH | 20      | dyadic depth of the monotonicity proof at init              | no     |
  * | HYST_NO_DOUBLE      | off     | init-time arithmetic in float (targets without double)     | no     |
  * | HYST_KEYED_SEARCH   | 1       | search turning points by IEEE bit patterns (0 under -ffast-math) | no |
+ *
+ * HYST_ENABLE_F64 defaults to 1 where double is a 64-bit type with hardware
+ * support or on hosts, and to 0 on 32-bit Arm cores without a double FPU
+ * (Cortex-M0..M4F: instances and curves then hold 4-byte numbers) and where
+ * double is a float (AVR, C28x without fpu64).
  *
  * "layout" options change the size of public structs. Every translation
  * unit that includes hyst and the library itself must agree on them; the
@@ -35,10 +40,12 @@
 
 #ifndef HYST_ENABLE_F64
 #include <float.h>
-#if DBL_MANT_DIG >= 53 /* a real double: not where double is float (AVR, C28x without fpu64) */
-#define HYST_ENABLE_F64 1
+#if DBL_MANT_DIG < 53
+#define HYST_ENABLE_F64 0 /* double is a float here (AVR, C28x without fpu64) */
+#elif defined(__arm__) && !(defined(__ARM_FP) && (__ARM_FP & 8))
+#define HYST_ENABLE_F64 0 /* 32-bit Arm without a double FPU: 4-byte numbers (set 1 for f64) */
 #else
-#define HYST_ENABLE_F64 0
+#define HYST_ENABLE_F64 1
 #endif
 #endif
 
