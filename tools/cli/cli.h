@@ -60,7 +60,8 @@ int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, si
 /* Unknown option or stray argument: message, returns 1. */
 int cli_unknown(const cli_args_t *a);
 
-/* Whole string as a finite double; 1 on success. */
+/* Whole string as a finite double (denormals included: only overflow to
+ * infinity and NaN are refused); 1 on success. */
 int cli_parse_double(const char *s, double *out);
 
 /* ---- data files: columns separated by whitespace, ',' or ';' ---- */

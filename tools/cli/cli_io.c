@@ -109,7 +109,9 @@ int cli_parse_double(const char *s, double *out)
     while (*end == ' ' || *end == '\t') {
         ++end;
     }
-    if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v)) {
+    /* strtod sets ERANGE on underflow too, for denormals (1e-320) and values
+     * that round to 0: those are finite numbers. Overflow gives HUGE_VAL. */
+    if (end == s || *end != '\0' || !isfinite(v)) {
         return 0;
     }
     *out = v;
