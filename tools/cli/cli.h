@@ -24,6 +24,16 @@ int cli_fail(const char *cmd, const char *fmt, ...)
 #endif
     ;
 
+/* Text from input or arguments, made safe for a message: in single quotes,
+ * bytes other than printable ASCII as \xNN (\\ and \' for those two), and
+ * beyond the first CLI_QUOTE_MAX bytes "..." and the length in bytes:
+ * '7777...' (1048577 bytes). cli_quote_n() takes @p len bytes of @p s, NULs
+ * included. Both write into @p buf (CLI_QUOTE_SIZE chars) and return it. */
+#define CLI_QUOTE_MAX 40
+#define CLI_QUOTE_SIZE (4 * CLI_QUOTE_MAX + 40)
+const char *cli_quote(char *buf, const char *s);
+const char *cli_quote_n(char *buf, const char *s, size_t len);
+
 /* ---- options: --name VALUE, --name=VALUE, -- ends them, - is a file ---- */
 
 enum { CLI_END = 0, CLI_OPT = 1, CLI_POS = 2, CLI_HELP = 3 };
@@ -85,7 +95,8 @@ int cli_read_columns(const char *cmd, const char *path, const unsigned long *col
 
 void cli_table_free(cli_table_t *t);
 
-/* Name of @p path for messages: "<stdin>" for "-". */
+/* Name of @p path for messages: "<stdin>" for "-"; bytes other than
+ * printable ASCII as \xNN (then in a static buffer, cut after 200 bytes). */
 const char *cli_file_name(const char *path);
 
 /* A number printed as a C floating literal (always a '.' or an exponent). */

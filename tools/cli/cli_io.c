@@ -21,9 +21,68 @@ int cli_fail(const char *cmd, const char *fmt, ...)
     return 1;
 }
 
+/* Appends byte @p c to @p out, escaped unless printable ASCII; returns the
+ * new end. At most 4 chars. */
+static char *put_escaped(char *out, unsigned char c)
+{
+    static const char hex[] = "0123456789abcdef";
+    if (c == '\\' || c == '\'') {
+        *out++ = '\\';
+        *out++ = (char)c;
+    } else if (c >= 0x20u && c < 0x7fu) {
+        *out++ = (char)c;
+    } else {
+        *out++ = '\\';
+        *out++ = 'x';
+        *out++ = hex[c >> 4];
+        *out++ = hex[c & 0xfu];
+    }
+    return out;
+}
+
+const char *cli_quote_n(char *buf, const char *s, size_t len)
+{
+    char *out = buf;
+    size_t i;
+    *out++ = '\'';
+    for (i = 0u; i < len && i < CLI_QUOTE_MAX; ++i) {
+        out = put_escaped(out, (unsigned char)s[i]);
+    }
+    if (len > CLI_QUOTE_MAX) {
+        (void)sprintf(out, "...' (%lu bytes)", (unsigned long)len);
+    } else {
+        *out++ = '\'';
+        *out = '\0';
+    }
+    return buf;
+}
+
+const char *cli_quote(char *buf, const char *s) { return cli_quote_n(buf, s, strlen(s)); }
+
 const char *cli_file_name(const char *path)
 {
-    return (path == NULL || strcmp(path, "-") == 0) ? "<stdin>" : path;
+    static char buf[4u * 200u + 8u];
+    const char *p;
+    char *out = buf;
+    if (path == NULL || strcmp(path, "-") == 0) {
+        return "<stdin>";
+    }
+    for (p = path; *p != '\0' && *p != '\\' && (unsigned char)*p >= 0x20u &&
+                   (unsigned char)*p < 0x7fu;
+         ++p) {
+    }
+    if (*p == '\0') {
+        return path; /* nothing to escape */
+    }
+    for (p = path; *p != '\0' && p - path < 200; ++p) {
+        if (*p == '\'') {
+            *out++ = *p; /* the name is not quoted: no need to escape a quote */
+        } else {
+            out = put_escaped(out, (unsigned char)*p);
+        }
+    }
+    (void)strcpy(out, *p != '\0' ? "..." : "");
+    return buf;
 }
 
 /* ---- options ---- */
@@ -45,7 +104,9 @@ int cli_args_next(cli_args_t *a, const char **pos)
     const char *arg, *eq;
     size_t len;
     if (!a->value_taken && a->inline_v != NULL) {
-        return -cli_fail(a->cmd, "option %s takes no value (got '%s')", a->opt, a->inline_v);
+        char q[CLI_QUOTE_SIZE];
+        return -cli_fail(a->cmd, "option %s takes no value (got %s)", a->opt,
+                         cli_quote(q, a->inline_v));
     }
     a->opt[0] = '\0';
     a->inline_v = NULL;
@@ -91,7 +152,9 @@ const char *cli_value(cli_args_t *a)
 
 int cli_unknown(const cli_args_t *a)
 {
-    return cli_fail(a->cmd, "unknown option '%s' (see 'hyst %s --help')", a->opt, a->cmd);
+    char q[CLI_QUOTE_SIZE];
+    return cli_fail(a->cmd, "unknown option %s (see 'hyst %s --help')", cli_quote(q, a->opt),
+                    a->cmd);
 }
 
 int cli_parse_double(const char *s, double *out)
@@ -126,8 +189,9 @@ int cli_opt_ulong(const cli_args_t *a, const char *v, unsigned long min, unsigne
     errno = 0;
     u = (v[0] >= '0' && v[0] <= '9') ? strtoul(v, &end, 10) : 0ul;
     if (!(v[0] >= '0' && v[0] <= '9') || *end != '\0' || errno == ERANGE || u < min || u > max) {
-        return !cli_fail(a->cmd, "option %s: '%s' is not an integer in %lu..%lu", a->opt, v, min,
-                         max);
+        char q[CLI_QUOTE_SIZE];
+        return !cli_fail(a->cmd, "option %s: %s is not an integer in %lu..%lu", a->opt,
+                         cli_quote(q, v), min, max);
     }
     *out = u;
     return 1;
@@ -136,25 +200,24 @@ int cli_opt_ulong(const cli_args_t *a, const char *v, unsigned long min, unsigne
 int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, size_t max,
                  size_t *n)
 {
-    char item[128];
+    char item[128], q[CLI_QUOTE_SIZE];
     const char *p = v;
     size_t count = 0u;
     for (;;) {
         const char *comma = strchr(p, ',');
         const size_t len = comma != NULL ? (size_t)(comma - p) : strlen(p);
         if (count == max) {
-            return !cli_fail(a->cmd, "option %s: more than %lu numbers in '%s'", a->opt,
-                             (unsigned long)max, v);
+            return !cli_fail(a->cmd, "option %s: more than %lu numbers in %s", a->opt,
+                             (unsigned long)max, cli_quote(q, v));
         }
-        if (len >= sizeof item) {
-            return !cli_fail(a->cmd, "option %s: number %lu too long", a->opt,
-                             (unsigned long)count + 1ul);
+        /* a number of 128 characters or more is not one either */
+        if (len < sizeof item) {
+            memcpy(item, p, len);
+            item[len] = '\0';
         }
-        memcpy(item, p, len);
-        item[len] = '\0';
-        if (!cli_parse_double(item, &out[count])) {
-            return !cli_fail(a->cmd, "option %s: item %lu '%s' is not a finite number", a->opt,
-                             (unsigned long)count + 1ul, item);
+        if (len >= sizeof item || !cli_parse_double(item, &out[count])) {
+            return !cli_fail(a->cmd, "option %s: item %lu %s is not a finite number", a->opt,
+                             (unsigned long)count + 1ul, cli_quote_n(q, p, len));
         }
         ++count;
         if (comma == NULL) {
@@ -163,8 +226,8 @@ int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, si
         p = comma + 1;
     }
     if (count < min) {
-        return !cli_fail(a->cmd, "option %s: '%s' has %lu numbers, needs at least %lu", a->opt, v,
-                         (unsigned long)count, (unsigned long)min);
+        return !cli_fail(a->cmd, "option %s: %s has %lu numbers, needs at least %lu", a->opt,
+                         cli_quote(q, v), (unsigned long)count, (unsigned long)min);
     }
     *n = count;
     return 1;
@@ -330,8 +393,9 @@ int cli_read_columns(const char *cmd, const char *path, const unsigned long *col
                 rc = -cli_fail(cmd, "%s:%lu: field %lu is missing (the line has %ld field%s)",
                                name, lineno, cols[c], nf, nf == 1 ? "" : "s");
             } else if (!cli_parse_double(field[cols[c] - 1u], &v[c])) {
-                rc = -cli_fail(cmd, "%s:%lu: field %lu: '%s' is not a finite number", name,
-                               lineno, cols[c], field[cols[c] - 1u]);
+                char q[CLI_QUOTE_SIZE];
+                rc = -cli_fail(cmd, "%s:%lu: field %lu: %s is not a finite number", name,
+                               lineno, cols[c], cli_quote(q, field[cols[c] - 1u]));
             }
         }
         if (rc == 0 && table_push(t, v, ncols, lineno) != 0) {
@@ -382,7 +446,9 @@ int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help)
         }
         if (kind == CLI_POS) {
             if (s->file != NULL) {
-                return -cli_fail(a->cmd, "more than one input file ('%s', '%s')", s->file, pos);
+                char q1[CLI_QUOTE_SIZE], q2[CLI_QUOTE_SIZE];
+                return -cli_fail(a->cmd, "more than one input file (%s, %s)",
+                                 cli_quote(q1, s->file), cli_quote(q2, pos));
             }
             s->file = pos;
         } else if (cli_is(a, "--help") || cli_is(a, "-h")) {

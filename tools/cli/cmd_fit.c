@@ -62,6 +62,7 @@ static int parse(fit_opts_t *o, int argc, char **argv)
 {
     cli_args_t a;
     const char *pos = NULL, *v;
+    char q[CLI_QUOTE_SIZE];
     unsigned long u;
     double dom[2];
     size_t nd;
@@ -77,7 +78,9 @@ static int parse(fit_opts_t *o, int argc, char **argv)
         }
         if (kind == CLI_POS) {
             if (o->file != NULL) {
-                return cli_fail(a.cmd, "more than one input file ('%s', '%s')", o->file, pos);
+                char q2[CLI_QUOTE_SIZE];
+                return cli_fail(a.cmd, "more than one input file (%s, %s)", cli_quote(q, o->file),
+                                cli_quote(q2, pos));
             }
             o->file = pos;
             continue;
@@ -111,20 +114,23 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             } else if (strcmp(v, "reflect") == 0) {
                 o->cfg.method = HYST_IDENT_REFLECT;
             } else {
-                return cli_fail(a.cmd, "option --method: '%s' is neither joint nor reflect", v);
+                return cli_fail(a.cmd, "option --method: %s is neither joint nor reflect",
+                                cli_quote(q, v));
             }
         } else if (cli_is(&a, "--domain")) {
             if (!cli_opt_list(&a, v, dom, 2u, 2u, &nd)) {
                 return 1;
             }
             if (!(dom[0] < dom[1])) {
-                return cli_fail(a.cmd, "option --domain: LO must be below HI in '%s'", v);
+                return cli_fail(a.cmd, "option --domain: LO must be below HI in %s",
+                                cli_quote(q, v));
             }
             o->cfg.lo = dom[0];
             o->cfg.hi = dom[1];
         } else if (cli_is(&a, "--header")) {
             if (!valid_identifier(v)) {
-                return cli_fail(a.cmd, "option --header: '%s' is not a C identifier", v);
+                return cli_fail(a.cmd, "option --header: %s is not a C identifier",
+                                cli_quote(q, v));
             }
             o->header = v;
         } else {

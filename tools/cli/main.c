@@ -32,6 +32,7 @@ static void usage(FILE *out)
 
 int main(int argc, char **argv)
 {
+    char q[CLI_QUOTE_SIZE];
     size_t i;
     if (argc < 2) {
         usage(stderr);
@@ -47,7 +48,7 @@ int main(int argc, char **argv)
             return commands[i].run(argc - 1, argv + 1);
         }
     }
-    (void)fprintf(stderr, "hyst: unknown command '%s'\n", argv[1]);
+    (void)fprintf(stderr, "hyst: unknown command %s\n", cli_quote(q, argv[1]));
     usage(stderr);
     return 1;
 }
