@@ -48,6 +48,11 @@ long_field) # a 1 MB field: its first 40 characters, "..." and its length
         pi --weights "$(head -c 1000 /dev/zero | tr '\0' 7)x" --thresholds 0 long.txt
     [ "$(wc -c < err.txt)" -lt 300 ] || fail "message of $(wc -c < err.txt) bytes"
     ;;
+nul_byte) # a NUL byte would end the line early, silently: refused with its place
+    printf '0 1\n1 2\0 junk\n2 3\n' > nul.txt
+    expect_fail "nul.txt:2: NUL byte at column 4" fit --degree 1 nul.txt
+    printf '0\n\0\n1\n' | expect_fail "<stdin>:2: NUL byte at column 1" sim --poly 1,0 --range 0,1
+    ;;
 *)
     fail "unknown case '$case'"
     ;;

@@ -235,12 +235,15 @@ int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, si
 
 /* ---- data files ---- */
 
-/* One line of any length into *buf (grown); 0 at end of file, -1 out of memory. */
-static int read_line(FILE *f, char **buf, size_t *cap)
+/* One line of any length into *buf (grown); 0 at end of file, -1 out of
+ * memory. *nul: 0, or the 1-based column of the line's first NUL byte (the
+ * line is then cut there as a C string). */
+static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
 {
     size_t len = 0u;
     int c;
-    while ((c = fgetc(f)) != EOF) {
+    *nul = 0u;
+    while ((c = getc(f)) != EOF) {
         if (len + 1u >= *cap) {
             const size_t ncap = *cap ? 2u * *cap : 256u;
             char *nb = (char *)realloc(*buf, ncap);
@@ -252,6 +255,9 @@ static int read_line(FILE *f, char **buf, size_t *cap)
         }
         if (c == '\n') {
             break;
+        }
+        if (c == '\0' && *nul == 0u) {
+            *nul = len + 1u;
         }
         (*buf)[len++] = (char)c;
     }
@@ -358,7 +364,7 @@ int cli_read_columns(const char *cmd, const char *path, const unsigned long *col
     const int use_stdin = path == NULL || strcmp(path, "-") == 0;
     FILE *f = use_stdin ? stdin : fopen(path, "r");
     char *line = NULL;
-    size_t cap = 0u;
+    size_t cap = 0u, nul;
     unsigned long lineno = 0ul;
     int rc = 0, got;
     unsigned c;
@@ -367,7 +373,7 @@ int cli_read_columns(const char *cmd, const char *path, const unsigned long *col
     if (f == NULL) {
         return -cli_fail(cmd, "%s: cannot open: %s", name, strerror(errno));
     }
-    while (rc == 0 && (got = read_line(f, &line, &cap)) != 0) {
+    while (rc == 0 && (got = read_line(f, &line, &cap, &nul)) != 0) {
         char *field[CLI_MAX_FIELD];
         double v[CLI_MAX_COLS];
         const char *p = line;
@@ -375,6 +381,11 @@ int cli_read_columns(const char *cmd, const char *path, const unsigned long *col
         ++lineno;
         if (got < 0) {
             rc = -cli_fail(cmd, "%s:%lu: out of memory", name, lineno);
+            break;
+        }
+        if (nul != 0u) {
+            rc = -cli_fail(cmd, "%s:%lu: NUL byte at column %lu (not a text file?)", name,
+                           lineno, (unsigned long)nul);
             break;
         }
         while (is_space(*p)) {
