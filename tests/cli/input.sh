@@ -53,6 +53,10 @@ nul_byte) # a NUL byte would end the line early, silently: refused with its plac
     expect_fail "nul.txt:2: NUL byte at column 4" fit --degree 1 nul.txt
     printf '0\n\0\n1\n' | expect_fail "<stdin>:2: NUL byte at column 1" sim --poly 1,0 --range 0,1
     ;;
+stdin_directory) # a directory as standard input: named as such, not "read error"
+    expect_fail "<stdin>: is a directory" inv --poly 1,0 --range 0,1 < .
+    expect_fail "<stdin>: is a directory" fit --degree 1 - < .
+    ;;
 *)
     fail "unknown case '$case'"
     ;;

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 int cli_fail(const char *cmd, const char *fmt, ...)
 {
@@ -368,10 +369,18 @@ int cli_read_columns(const char *cmd, const char *path, const unsigned long *col
     unsigned long lineno = 0ul;
     int rc = 0, got;
     unsigned c;
+    struct stat st;
 
     memset(t, 0, sizeof *t);
     if (f == NULL) {
         return -cli_fail(cmd, "%s: cannot open: %s", name, strerror(errno));
+    }
+    /* fopen() opens a directory for reading; the first read fails (EISDIR) */
+    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        if (!use_stdin) {
+            (void)fclose(f);
+        }
+        return -cli_fail(cmd, "%s: is a directory", name);
     }
     while (rc == 0 && (got = read_line(f, &line, &cap, &nul)) != 0) {
         char *field[CLI_MAX_FIELD];
@@ -414,7 +423,7 @@ int cli_read_columns(const char *cmd, const char *path, const unsigned long *col
         }
     }
     if (rc == 0 && ferror(f)) {
-        rc = -cli_fail(cmd, "%s: read error", name);
+        rc = -cli_fail(cmd, "%s: read error: %s", name, strerror(errno));
     }
     if (rc == 0 && t->n == 0u) {
         rc = -cli_fail(cmd, "%s: no data (the file is empty or holds only comments and blank "
