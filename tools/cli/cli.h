@@ -8,6 +8,7 @@
 #define HYST_CLI_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* Subcommands (one file each). */
 int cmd_fit(int argc, char **argv);
@@ -74,10 +75,46 @@ int cli_unknown(const cli_args_t *a);
  * infinity and NaN are refused); 1 on success. */
 int cli_parse_double(const char *s, double *out);
 
-/* ---- data files: columns separated by whitespace, ',' or ';' ---- */
+/* ---- data files (cli_read.c): columns separated by blanks, ',' or ';' ---- */
 
 #define CLI_MAX_COLS 2
 #define CLI_MAX_FIELD 64 /* highest column number accepted */
+
+/* A data file read one line at a time (fields: see cli_read.c). */
+typedef struct cli_reader {
+    const char *cmd;  /* for messages */
+    const char *name; /* cli_file_name() of the path */
+    FILE *f;
+    int own;          /* f was opened here */
+    char *line;       /* the current line, grown to the longest one */
+    size_t cap;
+    unsigned long lineno; /* of the current line, 1-based */
+    unsigned long cols[CLI_MAX_COLS]; /* requested columns, 1-based */
+    unsigned ncols;
+    int decimal_comma; /* ',' is the decimal mark, ';' and blanks separate */
+    size_t rows;       /* data lines read */
+    /* decimal comma detection (cli_read.c) */
+    long first_nf;               /* fields of the first data line */
+    unsigned long first_line;    /* its suspect field, if any */
+    long first_field;
+    char first_tok[CLI_QUOTE_SIZE];
+    int seen_dot;                /* some data line has a '.' */
+    unsigned long alone_line;    /* first line that is a suspect field alone */
+    char alone_tok[CLI_QUOTE_SIZE];
+} cli_reader_t;
+
+/* Opens @p path ("-" or NULL = standard input) to read the 1-based columns
+ * cols[0..ncols). 0, or -1 after a message (nothing to close then). */
+int cli_reader_open(cli_reader_t *r, const char *cmd, const char *path,
+                    const unsigned long *cols, unsigned ncols, int decimal_comma);
+
+/* The requested columns of the next data line into v[0..ncols): 1; lines
+ * starting with '#' and blank lines are skipped. 0 at the end of the data,
+ * after the checks that need the whole file (no data, ...). -1 after a
+ * message naming file, line and field. r->lineno is the line of v. */
+int cli_reader_next(cli_reader_t *r, double *v);
+
+void cli_reader_close(cli_reader_t *r);
 
 typedef struct cli_table {
     double *col[CLI_MAX_COLS]; /* requested columns, n entries each */
@@ -86,12 +123,11 @@ typedef struct cli_table {
     size_t cap;
 } cli_table_t;
 
-/* Reads the 1-based columns cols[0..ncols) of every data line of @p path
- * ("-" = standard input); lines starting with '#' and blank lines are
- * skipped. 0 on success; on error a message naming file, line and field,
- * and -1 (the table is then empty). */
+/* Reads the requested columns of every data line of @p path into @p t, as
+ * cli_reader_next() does. 0 on success; on error a message naming file, line
+ * and field, and -1 (the table is then empty). */
 int cli_read_columns(const char *cmd, const char *path, const unsigned long *cols,
-                     unsigned ncols, cli_table_t *t);
+                     unsigned ncols, int decimal_comma, cli_table_t *t);
 
 void cli_table_free(cli_table_t *t);
 
@@ -108,6 +144,10 @@ void cli_c_literal(char *buf, size_t len, double v);
 #define CLI_HELP_XCOL                                                                 \
     "  --xcol I          input column, 1-based (default 1); columns are separated\n" \
     "                    by blanks, ',' or ';'; '#' lines and blank lines are skipped\n"
+#define CLI_HELP_DECIMAL                                                              \
+    "  --decimal-comma   ',' is the decimal mark (1,5 is 1.5): fields are then\n"  \
+    "                    separated by blanks or ';'. Without it, a number that\n"  \
+    "                    looks written with one is refused\n"
 #define CLI_HELP_EXIT                                                                 \
     "Exit status: 0 success, 1 bad option or input (nothing is printed then).\n"
 
@@ -118,13 +158,14 @@ void cli_c_literal(char *buf, size_t len, double v);
 typedef struct cli_samples {
     const char *file;   /* NULL or "-": standard input */
     unsigned long xcol; /* input column, 1-based */
+    int decimal_comma;  /* --decimal-comma */
 } cli_samples_t;
 
 void cli_samples_init(cli_samples_t *s);
 
 /* Next option of a sample command, handling the common ones itself (FILE,
- * --xcol, --help/-h: prints @p help): CLI_OPT (the caller's, name in a->opt),
- * CLI_END, CLI_HELP (exit 0) or -1 after a message (exit 1). */
+ * --xcol, --decimal-comma, --help/-h: prints @p help): CLI_OPT (the caller's,
+ * name in a->opt), CLI_END, CLI_HELP (exit 0) or -1 after a message (exit 1). */
 int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help);
 
 /* What a sample command does per sample. */

@@ -1,5 +1,5 @@
 /* Shared by the subcommands of `hyst`: messages, option parsing, number
- * parsing, the column reader for data files, and the sample-to-line runner. */
+ * parsing and the sample-to-line runner (the data file reader is cli_read.c). */
 #include "cli.h"
 
 #include <errno.h>
@@ -8,7 +8,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 int cli_fail(const char *cmd, const char *fmt, ...)
 {
@@ -234,212 +233,6 @@ int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, si
     return 1;
 }
 
-/* ---- data files ---- */
-
-/* One line of any length into *buf (grown); 0 at end of file, -1 out of
- * memory. *nul: 0, or the 1-based column of the line's first NUL byte (the
- * line is then cut there as a C string). */
-static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
-{
-    size_t len = 0u;
-    int c;
-    *nul = 0u;
-    while ((c = getc(f)) != EOF) {
-        if (len + 1u >= *cap) {
-            const size_t ncap = *cap ? 2u * *cap : 256u;
-            char *nb = (char *)realloc(*buf, ncap);
-            if (nb == NULL) {
-                return -1;
-            }
-            *buf = nb;
-            *cap = ncap;
-        }
-        if (c == '\n') {
-            break;
-        }
-        if (c == '\0' && *nul == 0u) {
-            *nul = len + 1u;
-        }
-        (*buf)[len++] = (char)c;
-    }
-    if (c == EOF && len == 0u) {
-        return 0;
-    }
-    if (len > 0u && (*buf)[len - 1u] == '\r') {
-        --len;
-    }
-    (*buf)[len] = '\0';
-    return 1;
-}
-
-static int is_space(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-static int is_delim(char c) { return c == ',' || c == ';'; }
-
-/* Splits a data line into fields, in place: runs of blanks separate, and so
- * does one ',' or ';' with optional blanks around it. Returns the count, or
- * -(k) when field k is empty (two delimiters in a row, or one at an end). */
-static long split_fields(char *line, char **field, long max)
-{
-    char *p = line;
-    long n = 0;
-    for (;;) {
-        char *start;
-        while (is_space(*p)) {
-            ++p;
-        }
-        if (*p == '\0') {
-            return (n > 0 && p > line && is_delim(p[-1])) ? -(n + 1) : n;
-        }
-        if (is_delim(*p)) {
-            return -(n + 1);
-        }
-        start = p;
-        while (*p != '\0' && !is_space(*p) && !is_delim(*p)) {
-            ++p;
-        }
-        if (n < max) {
-            field[n] = start;
-        }
-        ++n;
-        while (is_space(*p)) {
-            *p++ = '\0';
-        }
-        if (is_delim(*p)) {
-            *p++ = '\0';
-            while (is_space(*p)) {
-                ++p;
-            }
-            if (*p == '\0' || is_delim(*p)) {
-                return -(n + 1);
-            }
-        } else if (*p != '\0') {
-            continue; /* blank-separated */
-        }
-    }
-}
-
-static int table_push(cli_table_t *t, const double *v, unsigned ncols, unsigned long lineno)
-{
-    unsigned c;
-    if (t->n == t->cap) {
-        const size_t ncap = t->cap ? 2u * t->cap : 1024u;
-        unsigned long *nl;
-        for (c = 0u; c < ncols; ++c) {
-            double *nb = (double *)realloc(t->col[c], ncap * sizeof(double));
-            if (nb == NULL) {
-                return -1;
-            }
-            t->col[c] = nb;
-        }
-        nl = (unsigned long *)realloc(t->line, ncap * sizeof(unsigned long));
-        if (nl == NULL) {
-            return -1;
-        }
-        t->line = nl;
-        t->cap = ncap;
-    }
-    for (c = 0u; c < ncols; ++c) {
-        t->col[c][t->n] = v[c];
-    }
-    t->line[t->n] = lineno;
-    ++t->n;
-    return 0;
-}
-
-void cli_table_free(cli_table_t *t)
-{
-    unsigned c;
-    for (c = 0u; c < CLI_MAX_COLS; ++c) {
-        free(t->col[c]);
-        t->col[c] = NULL;
-    }
-    free(t->line);
-    t->line = NULL;
-    t->n = t->cap = 0u;
-}
-
-int cli_read_columns(const char *cmd, const char *path, const unsigned long *cols,
-                     unsigned ncols, cli_table_t *t)
-{
-    const char *name = cli_file_name(path);
-    const int use_stdin = path == NULL || strcmp(path, "-") == 0;
-    FILE *f = use_stdin ? stdin : fopen(path, "r");
-    char *line = NULL;
-    size_t cap = 0u, nul;
-    unsigned long lineno = 0ul;
-    int rc = 0, got;
-    unsigned c;
-    struct stat st;
-
-    memset(t, 0, sizeof *t);
-    if (f == NULL) {
-        return -cli_fail(cmd, "%s: cannot open: %s", name, strerror(errno));
-    }
-    /* fopen() opens a directory for reading; the first read fails (EISDIR) */
-    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
-        if (!use_stdin) {
-            (void)fclose(f);
-        }
-        return -cli_fail(cmd, "%s: is a directory", name);
-    }
-    while (rc == 0 && (got = read_line(f, &line, &cap, &nul)) != 0) {
-        char *field[CLI_MAX_FIELD];
-        double v[CLI_MAX_COLS];
-        const char *p = line;
-        long nf;
-        ++lineno;
-        if (got < 0) {
-            rc = -cli_fail(cmd, "%s:%lu: out of memory", name, lineno);
-            break;
-        }
-        if (nul != 0u) {
-            rc = -cli_fail(cmd, "%s:%lu: NUL byte at column %lu (not a text file?)", name,
-                           lineno, (unsigned long)nul);
-            break;
-        }
-        while (is_space(*p)) {
-            ++p;
-        }
-        if (*p == '\0' || *p == '#') {
-            continue;
-        }
-        nf = split_fields(line, field, CLI_MAX_FIELD);
-        if (nf < 0) {
-            rc = -cli_fail(cmd, "%s:%lu: field %ld is empty", name, lineno, -nf);
-            break;
-        }
-        for (c = 0u; c < ncols && rc == 0; ++c) {
-            if ((unsigned long)nf < cols[c]) {
-                rc = -cli_fail(cmd, "%s:%lu: field %lu is missing (the line has %ld field%s)",
-                               name, lineno, cols[c], nf, nf == 1 ? "" : "s");
-            } else if (!cli_parse_double(field[cols[c] - 1u], &v[c])) {
-                char q[CLI_QUOTE_SIZE];
-                rc = -cli_fail(cmd, "%s:%lu: field %lu: %s is not a finite number", name,
-                               lineno, cols[c], cli_quote(q, field[cols[c] - 1u]));
-            }
-        }
-        if (rc == 0 && table_push(t, v, ncols, lineno) != 0) {
-            rc = -cli_fail(cmd, "%s:%lu: out of memory", name, lineno);
-        }
-    }
-    if (rc == 0 && ferror(f)) {
-        rc = -cli_fail(cmd, "%s: read error: %s", name, strerror(errno));
-    }
-    if (rc == 0 && t->n == 0u) {
-        rc = -cli_fail(cmd, "%s: no data (the file is empty or holds only comments and blank "
-                            "lines)",
-                       name);
-    }
-    free(line);
-    if (!use_stdin) {
-        (void)fclose(f);
-    }
-    if (rc != 0) {
-        cli_table_free(t);
-    }
-    return rc;
-}
-
 void cli_c_literal(char *buf, size_t len, double v)
 {
     (void)snprintf(buf, len, "%.17g", v);
@@ -454,6 +247,7 @@ void cli_samples_init(cli_samples_t *s)
 {
     s->file = NULL;
     s->xcol = 1ul;
+    s->decimal_comma = 0;
 }
 
 int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help)
@@ -474,6 +268,8 @@ int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help)
         } else if (cli_is(a, "--help") || cli_is(a, "-h")) {
             (void)fputs(help, stdout);
             return CLI_HELP;
+        } else if (cli_is(a, "--decimal-comma")) {
+            s->decimal_comma = 1;
         } else if (cli_is(a, "--xcol")) {
             if ((v = cli_value(a)) == NULL ||
                 !cli_opt_ulong(a, v, 1ul, CLI_MAX_FIELD, &s->xcol)) {
@@ -492,7 +288,7 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
     size_t i, nclamped = 0u;
     unsigned long first = 0ul;
     int rc;
-    if (cli_read_columns(cmd, s->file, &s->xcol, 1u, &t) != 0) {
+    if (cli_read_columns(cmd, s->file, &s->xcol, 1u, s->decimal_comma, &t) != 0) {
         return 1;
     }
     rc = m->begin != NULL ? m->begin(m->ctx, t.n) : 0;

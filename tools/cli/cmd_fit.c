@@ -8,7 +8,8 @@
 
 static const char help[] =
     "usage: hyst fit --degree N [--skip S] [--delay D] [--xcol I --ycol J]\n"
-    "                [--method joint|reflect] [--domain LO,HI] [--header NAME] FILE\n"
+    "                [--method joint|reflect] [--domain LO,HI] [--header NAME]\n"
+    "                [--decimal-comma] FILE\n"
     "\n"
     "Fits the major ascending curve f0 (polynomial of degree N) of a hysteresis\n"
     "loop to the input/output record in FILE ('-' = standard input), excited by a\n"
@@ -25,6 +26,9 @@ static const char help[] =
     "                 the outputs measured at the extreme inputs\n"
     "  --domain LO,HI domain of f0 (default: the range of the inputs used);\n"
     "                 samples outside it are ignored\n"
+    "  --decimal-comma ',' is the decimal mark (1,5 is 1.5): fields are then\n"
+    "                 separated by blanks or ';'. Without it, a number that looks\n"
+    "                 written with one is refused\n"
     "  --header NAME  also write NAME.h holding\n"
     "                 'static const hyst_poly_t NAME = {...};' for firmware\n"
     "  --help         this text\n"
@@ -41,6 +45,7 @@ typedef struct fit_opts {
     const char *file;
     const char *header;
     int have_degree;
+    int decimal_comma;
 } fit_opts_t;
 
 static int valid_identifier(const char *s)
@@ -88,6 +93,10 @@ static int parse(fit_opts_t *o, int argc, char **argv)
         if (cli_is(&a, "--help") || cli_is(&a, "-h")) {
             (void)fputs(help, stdout);
             return -1;
+        }
+        if (cli_is(&a, "--decimal-comma")) {
+            o->decimal_comma = 1;
+            continue;
         }
         if ((v = cli_value(&a)) == NULL) {
             return 1;
@@ -206,7 +215,7 @@ int cmd_fit(int argc, char **argv)
         return rc < 0 ? 0 : rc;
     }
     name = cli_file_name(o.file);
-    if (cli_read_columns("fit", o.file, o.cols, 2u, &t) != 0) {
+    if (cli_read_columns("fit", o.file, o.cols, 2u, o.decimal_comma, &t) != 0) {
         return 1;
     }
     nread = t.n;

@@ -7,7 +7,7 @@
 #define PI_MAX_OPERATORS 512u
 
 static const char help[] =
-    "usage: hyst pi --weights w1,...,wN --thresholds r1,...,rN [--xcol I] [FILE]\n"
+    "usage: hyst pi --weights w1,...,wN --thresholds r1,...,rN [--xcol I] [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the Prandtl-Ishlinskii model of N one-sided play operators (METHOD.md\n"
     "section 7, Eq. 15) over the input samples of FILE (standard input if FILE is\n"
@@ -21,6 +21,7 @@ static const char help[] =
     "  --thresholds R    r1,...,rN, one per weight: r1 = 0, strictly increasing\n"
     "                    (N <= 512)\n"
     CLI_HELP_XCOL
+    CLI_HELP_DECIMAL
     "  --help            this text\n"
     "\n"
     CLI_HELP_EXIT;

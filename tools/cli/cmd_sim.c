@@ -2,7 +2,7 @@
 #include "cli.h"
 
 static const char help[] =
-    "usage: hyst sim --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp] [FILE]\n"
+    "usage: hyst sim --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--decimal-comma] [--tp] [FILE]\n"
     "\n"
     "Runs the hysteresis model (TCM) with major ascending curve\n"
     "f0(x) = cN x^N + ... + c1 x + c0 on [LO, HI] over the input samples of FILE\n"
@@ -14,6 +14,7 @@ static const char help[] =
     "                    warning on stderr (count, first line) unless within 1e-9\n"
     "                    relative (9-digit rounding); exit status stays 0\n"
     CLI_HELP_XCOL
+    CLI_HELP_DECIMAL
     "  --tp              add the turning-point count as a second column: y,tp\n"
     "  --help            this text\n"
     "\n"
