@@ -200,6 +200,22 @@ static int write_header(const fit_opts_t *o, const hyst_ident_result_t *r)
     return 0;
 }
 
+/* 1 after a message if the @p n values @p v of column @p col are all equal:
+ * nothing to fit, and the fit would only report a flat curve's slope. */
+static int constant_column(const char *name, unsigned long col, const double *v, size_t n,
+                           const char *what, const char *option)
+{
+    size_t i;
+    for (i = 1u; i < n && v[i] == v[0]; ++i) {
+    }
+    if (n == 0u || i < n) {
+        return 0;
+    }
+    return cli_fail("fit", "%s: column %lu is constant (%.9g on every one of the %lu lines "
+                           "used): choose the %s column with %s",
+                    name, col, v[0], (unsigned long)n, what, option);
+}
+
 int cmd_fit(int argc, char **argv)
 {
     fit_opts_t o;
@@ -220,6 +236,13 @@ int cmd_fit(int argc, char **argv)
     }
     nread = t.n;
     pairs = t.n > o.cfg.skip + o.cfg.delay ? t.n - o.cfg.skip - o.cfg.delay : 0u;
+    if (pairs > 0u &&
+        (constant_column(name, o.cols[0], t.col[0] + o.cfg.skip, pairs, "input", "--xcol") ||
+         constant_column(name, o.cols[1], t.col[1] + o.cfg.skip + o.cfg.delay, pairs, "output",
+                         "--ycol"))) {
+        cli_table_free(&t);
+        return 1;
+    }
     st = pairs == 0u ? HYST_ERR_ARG : hyst_ident_fit(&o.cfg, t.col[0], t.col[1], t.n, &work, &r);
     cli_table_free(&t);
     switch (st) {
