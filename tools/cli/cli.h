@@ -2,8 +2,9 @@
  *
  * A subcommand is a function cmd_<name>(argc, argv) (argv[0] is its name)
  * listed in main.c's table; it reads its input completely and checks it
- * before printing anything, reports errors through cli_fail() and returns
- * the process exit status (0 success, 1 bad input or option). */
+ * before printing anything (sim, inv and pi one line at a time, holding their
+ * output back in a cli_spool_t), reports errors through cli_fail() and
+ * returns the process exit status (0 success, 1 bad input or option). */
 #ifndef HYST_CLI_H
 #define HYST_CLI_H
 
@@ -118,14 +119,14 @@ void cli_reader_close(cli_reader_t *r);
 
 typedef struct cli_table {
     double *col[CLI_MAX_COLS]; /* requested columns, n entries each */
-    unsigned long *line;       /* file line number of each entry */
     size_t n;                  /* data lines read */
     size_t cap;
 } cli_table_t;
 
 /* Reads the requested columns of every data line of @p path into @p t, as
- * cli_reader_next() does. 0 on success; on error a message naming file, line
- * and field, and -1 (the table is then empty). */
+ * cli_reader_next() does: 8 bytes per column and line in memory (`hyst fit`
+ * only; the other commands stream). 0 on success; on error a message naming
+ * file, line and field, and -1 (the table is then empty). */
 int cli_read_columns(const char *cmd, const char *path, const unsigned long *cols,
                      unsigned ncols, int decimal_comma, cli_table_t *t);
 
@@ -171,22 +172,49 @@ int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help);
 /* What a sample command does per sample. */
 typedef struct cli_map {
     void *ctx;
-    /* Before the first sample, with the count: 0, or 1 after a message. May be NULL. */
-    int (*begin)(void *ctx, size_t n);
-    /* One sample: returns the output, sets *clamped if the input was clamped. */
-    double (*step)(void *ctx, double x, int *clamped);
+    /* Before the first sample: 0, or 1 after a message. May be NULL. */
+    int (*begin)(void *ctx);
+    /* One sample: the output into *y, *clamped set if the input was clamped;
+     * 0, or 1 after a message (the command stops). */
+    int (*step)(void *ctx, double x, double *y, int *clamped);
     /* Second output column ("y,c") after each step, or NULL. */
     unsigned long (*col2)(void *ctx);
     const char *clamp_what; /* for the clamp warning: "inputs", ... */
     double lo, hi;          /* the interval inputs are clamped to */
 } cli_map_t;
 
-/* Reads the samples completely (a malformed one stops everything, nothing
- * printed), then prints one output per line with 9 significant digits. Clamped
- * inputs are not an error: one warning on stderr gives their count and the
- * first line (those beyond lo/hi by more than CLI_PRINT_TOL relative), and
- * the exit status stays 0. Returns the exit status. */
+/* Reads the samples one line at a time and runs them through @p m, in
+ * constant memory; the output lines (9 significant digits) wait in a
+ * cli_spool_t until the whole input was read and checked: a malformed sample
+ * stops everything with nothing printed. Clamped inputs are not an error: one
+ * warning on stderr gives their count and the first line (those beyond lo/hi
+ * by more than CLI_PRINT_TOL relative), and the exit status stays 0. Returns
+ * the exit status. */
 int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m);
+
+/* ---- output held back until the command succeeds ---- */
+
+/* The first CLI_SPOOL_MEM bytes in memory, the rest in a temporary file in
+ * $TMPDIR (default /tmp), unlinked as soon as it is created. */
+#define CLI_SPOOL_MEM (1u << 20)
+
+typedef struct cli_spool {
+    const char *cmd; /* for messages */
+    char *buf;       /* CLI_SPOOL_MEM bytes, allocated on the first write */
+    size_t len;      /* bytes in buf */
+    FILE *file;      /* everything, once buf overflowed; else NULL */
+} cli_spool_t;
+
+void cli_spool_init(cli_spool_t *sp, const char *cmd);
+
+/* Appends @p n bytes: 0, or 1 after a message (temporary file not created,
+ * disk full, ...). */
+int cli_spool_write(cli_spool_t *sp, const char *s, size_t n);
+
+/* Copies everything to @p out and flushes it: 0, or 1 after a message. */
+int cli_spool_copy(cli_spool_t *sp, FILE *out);
+
+void cli_spool_free(cli_spool_t *sp);
 
 /* ---- sim and inv (cli_tcm.c) ---- */
 

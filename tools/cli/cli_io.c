@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 int cli_fail(const char *cmd, const char *fmt, ...)
 {
@@ -284,30 +285,40 @@ int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help)
 
 int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
 {
-    cli_table_t t;
-    size_t i, nclamped = 0u;
+    cli_reader_t rd;
+    cli_spool_t sp;
+    size_t nclamped = 0u;
     unsigned long first = 0ul;
-    int rc;
-    if (cli_read_columns(cmd, s->file, &s->xcol, 1u, s->decimal_comma, &t) != 0) {
+    double x, y;
+    int rc, got = 0;
+    if (cli_reader_open(&rd, cmd, s->file, &s->xcol, 1u, s->decimal_comma) != 0) {
         return 1;
     }
-    rc = m->begin != NULL ? m->begin(m->ctx, t.n) : 0;
-    for (i = 0u; rc == 0 && i < t.n; ++i) {
-        int clamped = 0;
-        const double x = t.col[0][i];
-        const double y = m->step(m->ctx, x, &clamped);
+    cli_spool_init(&sp, cmd);
+    rc = m->begin != NULL ? m->begin(m->ctx) : 0;
+    while (rc == 0 && (got = cli_reader_next(&rd, &x)) > 0) {
+        char out[64];
+        int clamped = 0, len;
+        if ((rc = m->step(m->ctx, x, &y, &clamped)) != 0) {
+            break;
+        }
         /* A bound printed with 9 digits (sim's f0(lo) fed to inv) may land just
          * outside: rounding, not an unreachable target, so not warned. */
         if (clamped && (x < m->lo - CLI_PRINT_TOL * fabs(m->lo) ||
                         x > m->hi + CLI_PRINT_TOL * fabs(m->hi)) &&
             nclamped++ == 0u) {
-            first = t.line[i];
+            first = rd.lineno;
         }
-        if (m->col2 != NULL) {
-            (void)printf("%.9g,%lu\n", y, m->col2(m->ctx));
-        } else {
-            (void)printf("%.9g\n", y);
-        }
+        len = m->col2 != NULL ? sprintf(out, "%.9g,%lu\n", y, m->col2(m->ctx))
+                              : sprintf(out, "%.9g\n", y);
+        rc = cli_spool_write(&sp, out, (size_t)len);
+    }
+    if (got < 0) {
+        rc = 1;
+    }
+    cli_reader_close(&rd);
+    if (rc == 0) {
+        rc = cli_spool_copy(&sp, stdout);
     }
     if (rc == 0 && nclamped > 0u) {
         (void)fprintf(stderr,
@@ -316,9 +327,108 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
                       cmd, cli_file_name(s->file), (unsigned long)nclamped, m->clamp_what,
                       m->lo, m->hi, first);
     }
-    cli_table_free(&t);
-    if (rc == 0 && fflush(stdout) != 0) {
-        rc = cli_fail(cmd, "write error on standard output");
-    }
+    cli_spool_free(&sp);
     return rc;
+}
+
+/* ---- output held back ---- */
+
+void cli_spool_init(cli_spool_t *sp, const char *cmd)
+{
+    sp->cmd = cmd;
+    sp->buf = NULL;
+    sp->len = 0u;
+    sp->file = NULL;
+}
+
+/* An anonymous temporary file: created in $TMPDIR (or /tmp), unlinked at once. */
+static FILE *temp_file(const char *cmd)
+{
+    const char *dir = getenv("TMPDIR");
+    char path[4096];
+    int fd;
+    FILE *f;
+    if (dir == NULL || dir[0] == '\0') {
+        dir = "/tmp";
+    }
+    if (strlen(dir) + sizeof "/hyst-XXXXXX" > sizeof path) {
+        (void)cli_fail(cmd, "TMPDIR too long");
+        return NULL;
+    }
+    (void)sprintf(path, "%s/hyst-XXXXXX", dir);
+    fd = mkstemp(path);
+    if (fd < 0) {
+        (void)cli_fail(cmd, "cannot create a temporary file for the output in %s: %s (set TMPDIR)",
+                       cli_file_name(dir), strerror(errno));
+        return NULL;
+    }
+    (void)unlink(path); /* gone with the process, whatever happens */
+    f = fdopen(fd, "w+b");
+    if (f == NULL) {
+        (void)cli_fail(cmd, "temporary file: %s", strerror(errno));
+        (void)close(fd);
+    }
+    return f;
+}
+
+int cli_spool_write(cli_spool_t *sp, const char *s, size_t n)
+{
+    if (sp->file == NULL) {
+        if (sp->buf == NULL && (sp->buf = (char *)malloc(CLI_SPOOL_MEM)) == NULL) {
+            return cli_fail(sp->cmd, "out of memory");
+        }
+        if (n <= CLI_SPOOL_MEM - sp->len) {
+            memcpy(sp->buf + sp->len, s, n);
+            sp->len += n;
+            return 0;
+        }
+        if ((sp->file = temp_file(sp->cmd)) == NULL) {
+            return 1;
+        }
+        if (fwrite(sp->buf, 1u, sp->len, sp->file) != sp->len) {
+            return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
+        }
+    }
+    if (fwrite(s, 1u, n, sp->file) != n) {
+        return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
+    }
+    return 0;
+}
+
+int cli_spool_copy(cli_spool_t *sp, FILE *out)
+{
+    if (sp->file == NULL) {
+        if (sp->len > 0u && fwrite(sp->buf, 1u, sp->len, out) != sp->len) {
+            return cli_fail(sp->cmd, "write error on standard output: %s", strerror(errno));
+        }
+    } else {
+        size_t n;
+        if (fflush(sp->file) != 0 || fseek(sp->file, 0L, SEEK_SET) != 0) {
+            return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
+        }
+        /* sp->buf is free for the copy: the file holds everything */
+        while ((n = fread(sp->buf, 1u, CLI_SPOOL_MEM, sp->file)) > 0u) {
+            if (fwrite(sp->buf, 1u, n, out) != n) {
+                return cli_fail(sp->cmd, "write error on standard output: %s", strerror(errno));
+            }
+        }
+        if (ferror(sp->file)) {
+            return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
+        }
+    }
+    if (fflush(out) != 0 || ferror(out)) {
+        return cli_fail(sp->cmd, "write error on standard output: %s", strerror(errno));
+    }
+    return 0;
+}
+
+void cli_spool_free(cli_spool_t *sp)
+{
+    if (sp->file != NULL) {
+        (void)fclose(sp->file);
+        sp->file = NULL;
+    }
+    free(sp->buf);
+    sp->buf = NULL;
+    sp->len = 0u;
 }

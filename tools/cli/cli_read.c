@@ -364,12 +364,14 @@ int cli_reader_next(cli_reader_t *r, double *v)
 
 /* ---- whole columns in memory ---- */
 
-static int table_push(cli_table_t *t, const double *v, unsigned ncols, unsigned long lineno)
+static int table_push(cli_table_t *t, const double *v, unsigned ncols)
 {
     unsigned c;
     if (t->n == t->cap) {
         const size_t ncap = t->cap ? 2u * t->cap : 1024u;
-        unsigned long *nl;
+        if (ncap > (size_t)-1 / sizeof(double)) {
+            return -1;
+        }
         for (c = 0u; c < ncols; ++c) {
             double *nb = (double *)realloc(t->col[c], ncap * sizeof(double));
             if (nb == NULL) {
@@ -377,17 +379,11 @@ static int table_push(cli_table_t *t, const double *v, unsigned ncols, unsigned 
             }
             t->col[c] = nb;
         }
-        nl = (unsigned long *)realloc(t->line, ncap * sizeof(unsigned long));
-        if (nl == NULL) {
-            return -1;
-        }
-        t->line = nl;
         t->cap = ncap;
     }
     for (c = 0u; c < ncols; ++c) {
         t->col[c][t->n] = v[c];
     }
-    t->line[t->n] = lineno;
     ++t->n;
     return 0;
 }
@@ -399,8 +395,6 @@ void cli_table_free(cli_table_t *t)
         free(t->col[c]);
         t->col[c] = NULL;
     }
-    free(t->line);
-    t->line = NULL;
     t->n = t->cap = 0u;
 }
 
@@ -415,7 +409,7 @@ int cli_read_columns(const char *cmd, const char *path, const unsigned long *col
         return -1;
     }
     while ((got = cli_reader_next(&r, v)) > 0) {
-        if (table_push(t, v, r.ncols, r.lineno) != 0) {
+        if (table_push(t, v, r.ncols) != 0) {
             got = -cli_fail(cmd, "%s:%lu: out of memory", r.name, r.lineno);
             break;
         }

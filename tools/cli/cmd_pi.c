@@ -31,10 +31,11 @@ typedef struct pi_run {
     hyst_pi_t P;
 } pi_run_t;
 
-static double pi_step(void *ctx, double x, int *clamped)
+static int pi_step(void *ctx, double x, double *y, int *clamped)
 {
     *clamped = 0;
-    return (double)hyst_pi_step(&((pi_run_t *)ctx)->P, (hyst_real_t)x);
+    *y = (double)hyst_pi_step(&((pi_run_t *)ctx)->P, (hyst_real_t)x);
+    return 0;
 }
 
 /* Which parameter hyst_pi_check() refused, named by option and index. */
