@@ -302,6 +302,12 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
         if ((rc = m->step(m->ctx, x, &y, &clamped)) != 0) {
             break;
         }
+        if (!isfinite(y)) {
+            rc = cli_fail(cmd, "%s:%lu: the output is not finite (%g): the numbers are too "
+                               "large, rescale them",
+                          rd.name, rd.lineno, y);
+            break;
+        }
         /* A bound printed with 9 digits (sim's f0(lo) fed to inv) may land just
          * outside: rounding, not an unreachable target, so not warned. */
         if (clamped && (x < m->lo - CLI_PRINT_TOL * fabs(m->lo) ||

@@ -3,6 +3,7 @@
 #include "hyst/hyst.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -216,6 +217,30 @@ static int constant_column(const char *name, unsigned long col, const double *v,
                     name, col, v[0], (unsigned long)n, what, option);
 }
 
+/* 1 after a message if a number of the result overflowed (the library sums
+ * squared residuals: outputs near 1e154 are enough). */
+static int not_finite(const char *name, const hyst_ident_result_t *r)
+{
+    static const char *const names[4] = {"domain LO", "domain HI", "RMS residual",
+                                         "max residual"};
+    const double more[4] = {(double)r->lo, (double)r->hi, (double)r->rms, (double)r->max_abs};
+    static const char advice[] = "the numbers are too large, rescale them";
+    unsigned k;
+    for (k = 0u; k <= r->degree; ++k) {
+        if (!isfinite((double)r->coeffs[k])) {
+            return cli_fail("fit", "%s: the result is not finite (coefficient c%u %g): %s", name,
+                            r->degree - k, (double)r->coeffs[k], advice);
+        }
+    }
+    for (k = 0u; k < 4u; ++k) {
+        if (!isfinite(more[k])) {
+            return cli_fail("fit", "%s: the result is not finite (%s %g): %s", name, names[k],
+                            more[k], advice);
+        }
+    }
+    return 0;
+}
+
 int cmd_fit(int argc, char **argv)
 {
     fit_opts_t o;
@@ -258,6 +283,9 @@ int cmd_fit(int argc, char **argv)
         return cli_fail("fit", "%s: the inputs do not span a range (all equal?)", name);
     default:
         return cli_fail("fit", "%s: %s", name, hyst_status_str(st));
+    }
+    if (not_finite(name, &r)) {
+        return 1;
     }
     if (r.increasing && o.header != NULL && write_header(&o, &r) != 0) {
         return 1;
