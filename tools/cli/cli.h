@@ -188,8 +188,8 @@ typedef struct cli_map {
  * cli_spool_t until the whole input was read and checked: a malformed sample
  * stops everything with nothing printed. Clamped inputs are not an error: one
  * warning on stderr gives their count and the first line (those beyond lo/hi
- * by more than CLI_PRINT_TOL relative), and the exit status stays 0. Returns
- * the exit status. */
+ * by more than CLI_PRINT_TOL relative), and the exit status stays 0, unless
+ * every sample was clamped: then it is an error. Returns the exit status. */
 int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m);
 
 /* ---- output held back until the command succeeds ---- */

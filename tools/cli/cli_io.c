@@ -323,6 +323,12 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
         rc = 1;
     }
     cli_reader_close(&rd);
+    if (rc == 0 && nclamped == rd.rows) {
+        /* not one sample in the domain: a wrong range or column, not data */
+        rc = cli_fail(cmd, "%s: all %lu %s are outside [%.9g, %.9g] (all clamped): check --range "
+                           "and --xcol",
+                      rd.name, (unsigned long)nclamped, m->clamp_what, m->lo, m->hi);
+    }
     if (rc == 0) {
         rc = cli_spool_copy(&sp, stdout);
     }

@@ -16,7 +16,8 @@ static const char help[] =
     "                    unreachable: they are clamped to it (the drive saturates at\n"
     "                    LO or HI), with a warning on stderr (count, first line)\n"
     "                    unless within 1e-9 relative (9-digit rounding of a bound);\n"
-    "                    exit status stays 0, as for 'hyst sim'\n"
+    "                    exit status stays 0 unless every target was clamped\n"
+    "                    (then an error), as for 'hyst sim'\n"
     CLI_HELP_XCOL
     CLI_HELP_DECIMAL
     "  --tp              add the turning-point count as a second column: x,tp\n"

@@ -12,7 +12,8 @@ static const char help[] =
     "  --poly cN,...,c0  coefficients, highest power first (degree 1..9)\n"
     "  --range LO,HI     domain of f0; inputs outside it are clamped to it, with a\n"
     "                    warning on stderr (count, first line) unless within 1e-9\n"
-    "                    relative (9-digit rounding); exit status stays 0\n"
+    "                    relative (9-digit rounding); exit status stays 0 unless\n"
+    "                    every input was clamped (then an error)\n"
     CLI_HELP_XCOL
     CLI_HELP_DECIMAL
     "  --tp              add the turning-point count as a second column: y,tp\n"
