@@ -47,6 +47,10 @@ long_field) # a 1 MB field: its first 40 characters, "..." and its length
     expect_fail "option --weights: item 1 '7777777777777777777777777777777777777777...' (1001 bytes) is not a finite number" \
         pi --weights "$(head -c 1000 /dev/zero | tr '\0' 7)x" --thresholds 0 long.txt
     [ "$(wc -c < err.txt)" -lt 300 ] || fail "message of $(wc -c < err.txt) bytes"
+    # a line of 16 MB or more (a binary file without newlines): refused, memory bounded
+    head -c 17000000 /dev/zero | tr '\0' 7 > huge.txt
+    expect_fail "<stdin>:1: line of 16 MB or more" sim --poly 1,0 --range 0,1 - < huge.txt
+    rm huge.txt
     ;;
 nul_byte) # a NUL byte would end the line early, silently: refused with its place
     printf '0 1\n1 2\0 junk\n2 3\n' > nul.txt

@@ -17,9 +17,13 @@ static int is_digit(char c) { return c >= '0' && c <= '9'; }
 /* Column delimiters besides blanks: ',' is the decimal mark with --decimal-comma. */
 static int is_delim(char c, int dc) { return c == ';' || (c == ',' && !dc); }
 
-/* One line of any length into *buf (grown); 0 at end of file, -1 out of
- * memory. *nul: 0, or the 1-based column of the line's first NUL byte (the
- * line is then cut there as a C string). */
+/* Longest line read: memory stays bounded whatever the input (a binary file
+ * without newlines). */
+#define CLI_MAX_LINE (16ul << 20)
+
+/* One line into *buf (grown); 0 at end of file, -1 out of memory, -2 not
+ * shorter than CLI_MAX_LINE. *nul: 0, or the 1-based column of the line's first NUL
+ * byte (the line is then cut there as a C string). */
 static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
 {
     size_t len = 0u;
@@ -28,7 +32,11 @@ static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
     while ((c = getc(f)) != EOF) {
         if (len + 1u >= *cap) {
             const size_t ncap = *cap ? 2u * *cap : 256u;
-            char *nb = (char *)realloc(*buf, ncap);
+            char *nb;
+            if (ncap > CLI_MAX_LINE) {
+                return -2;
+            }
+            nb = (char *)realloc(*buf, ncap);
             if (nb == NULL) {
                 return -1;
             }
@@ -281,6 +289,10 @@ int cli_reader_next(cli_reader_t *r, double *v)
         long nf;
         unsigned c;
         ++r->lineno;
+        if (got == -2) {
+            return -cli_fail(r->cmd, "%s:%lu: line of %lu MB or more (not a text file?)",
+                             r->name, r->lineno, CLI_MAX_LINE >> 20);
+        }
         if (got < 0) {
             return -cli_fail(r->cmd, "%s:%lu: out of memory", r->name, r->lineno);
         }

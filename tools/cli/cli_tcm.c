@@ -97,7 +97,8 @@ static int tcm_grow(tcm_run_t *r)
     const size_t old_cap = r->cap;
     const size_t size = hyst_snapshot_size(&r->S);
     unsigned char *snap = (unsigned char *)malloc(size);
-    hyst_status_t st = snap != NULL ? hyst_snapshot_save(&r->S, snap, size, NULL) : HYST_ERR_NOSPACE;
+    hyst_status_t st =
+        snap != NULL ? hyst_snapshot_save(&r->S, snap, size, NULL) : HYST_ERR_NOSPACE;
     if (st == HYST_OK) {
         st = tcm_init(r, 2u * old_cap); /* on error r->S and r->mem are untouched */
         if (st == HYST_OK) {

@@ -2,7 +2,8 @@
 #include "cli.h"
 
 static const char help[] =
-    "usage: hyst inv --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--decimal-comma] [--tp] [FILE]\n"
+    "usage: hyst inv --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp]\n"
+    "                [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the compensator of the model 'hyst sim' runs with the same --poly and\n"
     "--range: for each desired output in FILE (standard input if FILE is absent\n"

@@ -7,7 +7,8 @@
 #define PI_MAX_OPERATORS 512u
 
 static const char help[] =
-    "usage: hyst pi --weights w1,...,wN --thresholds r1,...,rN [--xcol I] [--decimal-comma] [FILE]\n"
+    "usage: hyst pi --weights w1,...,wN --thresholds r1,...,rN [--xcol I]\n"
+    "               [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the Prandtl-Ishlinskii model of N one-sided play operators (METHOD.md\n"
     "section 7, Eq. 15) over the input samples of FILE (standard input if FILE is\n"

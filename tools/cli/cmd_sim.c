@@ -2,7 +2,8 @@
 #include "cli.h"
 
 static const char help[] =
-    "usage: hyst sim --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--decimal-comma] [--tp] [FILE]\n"
+    "usage: hyst sim --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp]\n"
+    "                [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the hysteresis model (TCM) with major ascending curve\n"
     "f0(x) = cN x^N + ... + c1 x + c0 on [LO, HI] over the input samples of FILE\n"
