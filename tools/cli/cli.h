@@ -194,15 +194,16 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
 
 /* ---- output held back until the command succeeds ---- */
 
-/* The first CLI_SPOOL_MEM bytes in memory, the rest in a temporary file in
- * $TMPDIR (default /tmp), unlinked as soon as it is created. */
+/* A buffer of CLI_SPOOL_MEM bytes in memory; when it overflows, it goes to a
+ * temporary file in $TMPDIR (default /tmp), unlinked as soon as it is
+ * created, and starts again. */
 #define CLI_SPOOL_MEM (1u << 20)
 
 typedef struct cli_spool {
     const char *cmd; /* for messages */
     char *buf;       /* CLI_SPOOL_MEM bytes, allocated on the first write */
-    size_t len;      /* bytes in buf */
-    FILE *file;      /* everything, once buf overflowed; else NULL */
+    size_t len;      /* bytes in buf, after those in file */
+    FILE *file;      /* what came before, once buf overflowed; else NULL */
 } cli_spool_t;
 
 void cli_spool_init(cli_spool_t *sp, const char *cmd);

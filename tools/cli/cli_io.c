@@ -383,27 +383,36 @@ static FILE *temp_file(const char *cmd)
     return f;
 }
 
-int cli_spool_write(cli_spool_t *sp, const char *s, size_t n)
+/* The buffer appended to the temporary file (created on the first call). */
+static int spool_spill(cli_spool_t *sp)
 {
-    if (sp->file == NULL) {
-        if (sp->buf == NULL && (sp->buf = (char *)malloc(CLI_SPOOL_MEM)) == NULL) {
-            return cli_fail(sp->cmd, "out of memory");
-        }
-        if (n <= CLI_SPOOL_MEM - sp->len) {
-            memcpy(sp->buf + sp->len, s, n);
-            sp->len += n;
-            return 0;
-        }
-        if ((sp->file = temp_file(sp->cmd)) == NULL) {
-            return 1;
-        }
-        if (fwrite(sp->buf, 1u, sp->len, sp->file) != sp->len) {
-            return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
-        }
+    if (sp->file == NULL && (sp->file = temp_file(sp->cmd)) == NULL) {
+        return 1;
     }
-    if (fwrite(s, 1u, n, sp->file) != n) {
+    if (fwrite(sp->buf, 1u, sp->len, sp->file) != sp->len) {
         return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
     }
+    sp->len = 0u;
+    return 0;
+}
+
+int cli_spool_write(cli_spool_t *sp, const char *s, size_t n)
+{
+    if (sp->buf == NULL && (sp->buf = (char *)malloc(CLI_SPOOL_MEM)) == NULL) {
+        return cli_fail(sp->cmd, "out of memory");
+    }
+    if (n > CLI_SPOOL_MEM - sp->len) {
+        if (spool_spill(sp) != 0) {
+            return 1;
+        }
+        if (n > CLI_SPOOL_MEM) {
+            return fwrite(s, 1u, n, sp->file) == n
+                       ? 0
+                       : cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
+        }
+    }
+    memcpy(sp->buf + sp->len, s, n);
+    sp->len += n;
     return 0;
 }
 
@@ -415,6 +424,9 @@ int cli_spool_copy(cli_spool_t *sp, FILE *out)
         }
     } else {
         size_t n;
+        if (spool_spill(sp) != 0) {
+            return 1;
+        }
         if (fflush(sp->file) != 0 || fseek(sp->file, 0L, SEEK_SET) != 0) {
             return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
         }

@@ -29,7 +29,7 @@ static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
     size_t len = 0u;
     int c;
     *nul = 0u;
-    while ((c = getc(f)) != EOF) {
+    while ((c = getc_unlocked(f)) != EOF) { /* POSIX; one thread: no lock per byte */
         if (len + 1u >= *cap) {
             const size_t ncap = *cap ? 2u * *cap : 256u;
             char *nb;
@@ -306,7 +306,10 @@ int cli_reader_next(cli_reader_t *r, double *v)
         if (*p == '\0' || *p == '#') {
             continue;
         }
-        if (!r->decimal_comma) {
+        if (!r->decimal_comma && strchr(p, ',') == NULL) {
+            cs.field = 0; /* nothing to suspect, and the usual case: skip the scan */
+            r->seen_dot |= strchr(p, '.') != NULL;
+        } else if (!r->decimal_comma) {
             scan_commas(r->line, &cs);
             r->seen_dot |= strchr(r->line, '.') != NULL;
             if (cs.field != 0) {
