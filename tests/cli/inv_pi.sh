@@ -5,7 +5,8 @@
 #  - unreachable targets: clamped, warned with count and first line, exit 0;
 #  - pi equals hand-computed values of Eq. 15 (docs/theory.md, the PI section)
 #    for two operators, and the closed-form branches for the paper's Table 1
-#    model.
+#    model;
+#  - 6000 nested turning points are all kept (the engine's memory grows).
 #   inv_pi.sh <hyst> <work dir>
 set -euo pipefail
 tool=$1 work=$2
@@ -81,4 +82,17 @@ paste ramp.txt pi.txt | awk -v w="$w" -v r="$r" '
       if (e > m) { m = e; at = NR } }
     END { printf "max abs error %.3g at line %d (%d lines)\n", m, at, NR; exit !(m <= 1e-8 && NR == 301) }' > pi_err.txt ||
     fail "pi Table 1: $(cat pi_err.txt)"
+# ---- (5) deep nesting: every sample a turning point inside the last ----
+# 0, then 6000 reversals of shrinking amplitude around 20: the stored turning
+# points grow by one per sample (the engine's memory must grow with them, never
+# merge loops), and inv still undoes sim exactly.
+awk 'BEGIN { n = 6000; print 0; for (k = 1; k <= n; k++) printf "%.9g\n", 20 + 20 * (k % 2 ? 1 : -1) * (1 - k / (n + 1)) }' > deep.txt
+"$tool" sim --poly "$poly" --range 0,40 --tp deep.txt > deep_y.txt
+awk -F, 'NR > 2 && $2 != NR - 2 { print "line " NR ": tp " $2; bad = 1; exit } END { exit bad }' deep_y.txt ||
+    fail "sim --tp on nested reversals: $(tail -1 deep_y.txt)"
+cut -d, -f1 deep_y.txt | "$tool" inv --poly "$poly" --range 0,40 --tp > deep_x.txt
+[ "$(tail -1 deep_x.txt | cut -d, -f2)" = 5999 ] || fail "inv --tp on nested reversals: $(tail -1 deep_x.txt)"
+paste -d, deep.txt deep_x.txt | awk -F, '{ e = $2 - $1; if (e < 0) e = -e; if (e > m) m = e }
+    END { exit !(m <= 1e-6) }' || fail "inv(sim(x)) != x on nested reversals"
+
 echo "inv round trip: $(cat rt.txt), sim(inv(y)) max relative error $(cat rt2.txt); pi Table 1: $(cat pi_err.txt)"

@@ -2,12 +2,14 @@
  *
  * A subcommand is a function cmd_<name>(argc, argv) (argv[0] is its name)
  * listed in main.c's table; it reads its input completely and checks it
- * before printing anything, reports errors through cli_fail() and returns
- * the process exit status (0 success, 1 bad input or option). */
+ * before printing anything (sim, inv and pi one line at a time, holding their
+ * output back in a cli_spool_t), reports errors through cli_fail() and
+ * returns the process exit status (0 success, 1 bad input or option). */
 #ifndef HYST_CLI_H
 #define HYST_CLI_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* Subcommands (one file each). */
 int cmd_fit(int argc, char **argv);
@@ -23,6 +25,16 @@ int cli_fail(const char *cmd, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+
+/* Text from input or arguments, made safe for a message: in single quotes,
+ * bytes other than printable ASCII as \xNN (\\ and \' for those two), and
+ * beyond the first CLI_QUOTE_MAX bytes "..." and the length in bytes:
+ * '7777...' (1048577 bytes). cli_quote_n() takes @p len bytes of @p s, NULs
+ * included. Both write into @p buf (CLI_QUOTE_SIZE chars) and return it. */
+#define CLI_QUOTE_MAX 40
+#define CLI_QUOTE_SIZE (4 * CLI_QUOTE_MAX + 40)
+const char *cli_quote(char *buf, const char *s);
+const char *cli_quote_n(char *buf, const char *s, size_t len);
 
 /* ---- options: --name VALUE, --name=VALUE, -- ends them, - is a file ---- */
 
@@ -60,31 +72,68 @@ int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, si
 /* Unknown option or stray argument: message, returns 1. */
 int cli_unknown(const cli_args_t *a);
 
-/* Whole string as a finite double; 1 on success. */
+/* Whole string as a finite double (denormals included: only overflow to
+ * infinity and NaN are refused); 1 on success. */
 int cli_parse_double(const char *s, double *out);
 
-/* ---- data files: columns separated by whitespace, ',' or ';' ---- */
+/* ---- data files (cli_read.c): columns separated by blanks, ',' or ';' ---- */
 
 #define CLI_MAX_COLS 2
 #define CLI_MAX_FIELD 64 /* highest column number accepted */
 
+/* A data file read one line at a time (fields: see cli_read.c). */
+typedef struct cli_reader {
+    const char *cmd;  /* for messages */
+    const char *name; /* cli_file_name() of the path */
+    FILE *f;
+    int own;          /* f was opened here */
+    char *line;       /* the current line, grown to the longest one */
+    size_t cap;
+    unsigned long lineno; /* of the current line, 1-based */
+    unsigned long cols[CLI_MAX_COLS]; /* requested columns, 1-based */
+    unsigned ncols;
+    int decimal_comma; /* ',' is the decimal mark, ';' and blanks separate */
+    size_t rows;       /* data lines read */
+    /* decimal comma detection (cli_read.c) */
+    long first_nf;               /* fields of the first data line */
+    unsigned long first_line;    /* its suspect field, if any */
+    long first_field;
+    char first_tok[CLI_QUOTE_SIZE];
+    int seen_dot;                /* some data line has a '.' */
+    unsigned long alone_line;    /* first line that is a suspect field alone */
+    char alone_tok[CLI_QUOTE_SIZE];
+} cli_reader_t;
+
+/* Opens @p path ("-" or NULL = standard input) to read the 1-based columns
+ * cols[0..ncols). 0, or -1 after a message (nothing to close then). */
+int cli_reader_open(cli_reader_t *r, const char *cmd, const char *path,
+                    const unsigned long *cols, unsigned ncols, int decimal_comma);
+
+/* The requested columns of the next data line into v[0..ncols): 1; lines
+ * starting with '#' and blank lines are skipped. 0 at the end of the data,
+ * after the checks that need the whole file (no data, ...). -1 after a
+ * message naming file, line and field. r->lineno is the line of v. */
+int cli_reader_next(cli_reader_t *r, double *v);
+
+void cli_reader_close(cli_reader_t *r);
+
 typedef struct cli_table {
     double *col[CLI_MAX_COLS]; /* requested columns, n entries each */
-    unsigned long *line;       /* file line number of each entry */
     size_t n;                  /* data lines read */
     size_t cap;
 } cli_table_t;
 
-/* Reads the 1-based columns cols[0..ncols) of every data line of @p path
- * ("-" = standard input); lines starting with '#' and blank lines are
- * skipped. 0 on success; on error a message naming file, line and field,
- * and -1 (the table is then empty). */
+/* Reads the requested columns of every data line of @p path into @p t, as
+ * cli_reader_next() does: 8 bytes per column and line in memory (`hyst fit`
+ * only; the other commands stream). 0 on success; on error a message naming
+ * file, line and field, and -1 (the table is then empty). */
 int cli_read_columns(const char *cmd, const char *path, const unsigned long *cols,
-                     unsigned ncols, cli_table_t *t);
+                     unsigned ncols, int decimal_comma, cli_table_t *t);
 
 void cli_table_free(cli_table_t *t);
 
-/* Name of @p path for messages: "<stdin>" for "-". */
+/* Name of @p path for messages: "<stdin>" for "-"; bytes other than
+ * printable ASCII as \xNN (then in a static buffer, cut after 200 bytes). */
 const char *cli_file_name(const char *path);
 
 /* A number printed as a C floating literal (always a '.' or an exponent). */
@@ -96,6 +145,10 @@ void cli_c_literal(char *buf, size_t len, double v);
 #define CLI_HELP_XCOL                                                                 \
     "  --xcol I          input column, 1-based (default 1); columns are separated\n" \
     "                    by blanks, ',' or ';'; '#' lines and blank lines are skipped\n"
+#define CLI_HELP_DECIMAL                                                              \
+    "  --decimal-comma   ',' is the decimal mark (1,5 is 1.5): fields are then\n"  \
+    "                    separated by blanks or ';'. Without it, a number that\n"  \
+    "                    looks written with one is refused\n"
 #define CLI_HELP_EXIT                                                                 \
     "Exit status: 0 success, 1 bad option or input (nothing is printed then).\n"
 
@@ -106,34 +159,63 @@ void cli_c_literal(char *buf, size_t len, double v);
 typedef struct cli_samples {
     const char *file;   /* NULL or "-": standard input */
     unsigned long xcol; /* input column, 1-based */
+    int decimal_comma;  /* --decimal-comma */
 } cli_samples_t;
 
 void cli_samples_init(cli_samples_t *s);
 
 /* Next option of a sample command, handling the common ones itself (FILE,
- * --xcol, --help/-h: prints @p help): CLI_OPT (the caller's, name in a->opt),
- * CLI_END, CLI_HELP (exit 0) or -1 after a message (exit 1). */
+ * --xcol, --decimal-comma, --help/-h: prints @p help): CLI_OPT (the caller's,
+ * name in a->opt), CLI_END, CLI_HELP (exit 0) or -1 after a message (exit 1). */
 int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help);
 
 /* What a sample command does per sample. */
 typedef struct cli_map {
     void *ctx;
-    /* Before the first sample, with the count: 0, or 1 after a message. May be NULL. */
-    int (*begin)(void *ctx, size_t n);
-    /* One sample: returns the output, sets *clamped if the input was clamped. */
-    double (*step)(void *ctx, double x, int *clamped);
+    /* Before the first sample: 0, or 1 after a message. May be NULL. */
+    int (*begin)(void *ctx);
+    /* One sample: the output into *y, *clamped set if the input was clamped;
+     * 0, or 1 after a message (the command stops). */
+    int (*step)(void *ctx, double x, double *y, int *clamped);
     /* Second output column ("y,c") after each step, or NULL. */
     unsigned long (*col2)(void *ctx);
     const char *clamp_what; /* for the clamp warning: "inputs", ... */
     double lo, hi;          /* the interval inputs are clamped to */
 } cli_map_t;
 
-/* Reads the samples completely (a malformed one stops everything, nothing
- * printed), then prints one output per line with 9 significant digits. Clamped
- * inputs are not an error: one warning on stderr gives their count and the
- * first line (those beyond lo/hi by more than CLI_PRINT_TOL relative), and
- * the exit status stays 0. Returns the exit status. */
+/* Reads the samples one line at a time and runs them through @p m, in
+ * constant memory; the output lines (9 significant digits) wait in a
+ * cli_spool_t until the whole input was read and checked: a malformed sample
+ * stops everything with nothing printed. Clamped inputs are not an error: one
+ * warning on stderr gives their count and the first line (those beyond lo/hi
+ * by more than CLI_PRINT_TOL relative), and the exit status stays 0, unless
+ * every sample was clamped: then it is an error. Returns the exit status. */
 int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m);
+
+/* ---- output held back until the command succeeds ---- */
+
+/* A buffer of CLI_SPOOL_MEM bytes in memory; when it overflows, it goes to a
+ * temporary file in $TMPDIR (default /tmp), unlinked as soon as it is
+ * created, and starts again. */
+#define CLI_SPOOL_MEM (1u << 20)
+
+typedef struct cli_spool {
+    const char *cmd; /* for messages */
+    char *buf;       /* CLI_SPOOL_MEM bytes, allocated on the first write */
+    size_t len;      /* bytes in buf, after those in file */
+    FILE *file;      /* what came before, once buf overflowed; else NULL */
+} cli_spool_t;
+
+void cli_spool_init(cli_spool_t *sp, const char *cmd);
+
+/* Appends @p n bytes: 0, or 1 after a message (temporary file not created,
+ * disk full, ...). */
+int cli_spool_write(cli_spool_t *sp, const char *s, size_t n);
+
+/* Copies everything to @p out and flushes it: 0, or 1 after a message. */
+int cli_spool_copy(cli_spool_t *sp, FILE *out);
+
+void cli_spool_free(cli_spool_t *sp);
 
 /* ---- sim and inv (cli_tcm.c) ---- */
 

@@ -1,5 +1,5 @@
 /* Shared by the subcommands of `hyst`: messages, option parsing, number
- * parsing, the column reader for data files, and the sample-to-line runner. */
+ * parsing and the sample-to-line runner (the data file reader is cli_read.c). */
 #include "cli.h"
 
 #include <errno.h>
@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 int cli_fail(const char *cmd, const char *fmt, ...)
 {
@@ -21,9 +22,68 @@ int cli_fail(const char *cmd, const char *fmt, ...)
     return 1;
 }
 
+/* Appends byte @p c to @p out, escaped unless printable ASCII; returns the
+ * new end. At most 4 chars. */
+static char *put_escaped(char *out, unsigned char c)
+{
+    static const char hex[] = "0123456789abcdef";
+    if (c == '\\' || c == '\'') {
+        *out++ = '\\';
+        *out++ = (char)c;
+    } else if (c >= 0x20u && c < 0x7fu) {
+        *out++ = (char)c;
+    } else {
+        *out++ = '\\';
+        *out++ = 'x';
+        *out++ = hex[c >> 4];
+        *out++ = hex[c & 0xfu];
+    }
+    return out;
+}
+
+const char *cli_quote_n(char *buf, const char *s, size_t len)
+{
+    char *out = buf;
+    size_t i;
+    *out++ = '\'';
+    for (i = 0u; i < len && i < CLI_QUOTE_MAX; ++i) {
+        out = put_escaped(out, (unsigned char)s[i]);
+    }
+    if (len > CLI_QUOTE_MAX) {
+        (void)sprintf(out, "...' (%lu bytes)", (unsigned long)len);
+    } else {
+        *out++ = '\'';
+        *out = '\0';
+    }
+    return buf;
+}
+
+const char *cli_quote(char *buf, const char *s) { return cli_quote_n(buf, s, strlen(s)); }
+
 const char *cli_file_name(const char *path)
 {
-    return (path == NULL || strcmp(path, "-") == 0) ? "<stdin>" : path;
+    static char buf[4u * 200u + 8u];
+    const char *p;
+    char *out = buf;
+    if (path == NULL || strcmp(path, "-") == 0) {
+        return "<stdin>";
+    }
+    for (p = path; *p != '\0' && *p != '\\' && (unsigned char)*p >= 0x20u &&
+                   (unsigned char)*p < 0x7fu;
+         ++p) {
+    }
+    if (*p == '\0') {
+        return path; /* nothing to escape */
+    }
+    for (p = path; *p != '\0' && p - path < 200; ++p) {
+        if (*p == '\'') {
+            *out++ = *p; /* the name is not quoted: no need to escape a quote */
+        } else {
+            out = put_escaped(out, (unsigned char)*p);
+        }
+    }
+    (void)strcpy(out, *p != '\0' ? "..." : "");
+    return buf;
 }
 
 /* ---- options ---- */
@@ -45,7 +105,9 @@ int cli_args_next(cli_args_t *a, const char **pos)
     const char *arg, *eq;
     size_t len;
     if (!a->value_taken && a->inline_v != NULL) {
-        return -cli_fail(a->cmd, "option %s takes no value (got '%s')", a->opt, a->inline_v);
+        char q[CLI_QUOTE_SIZE];
+        return -cli_fail(a->cmd, "option %s takes no value (got %s)", a->opt,
+                         cli_quote(q, a->inline_v));
     }
     a->opt[0] = '\0';
     a->inline_v = NULL;
@@ -91,7 +153,9 @@ const char *cli_value(cli_args_t *a)
 
 int cli_unknown(const cli_args_t *a)
 {
-    return cli_fail(a->cmd, "unknown option '%s' (see 'hyst %s --help')", a->opt, a->cmd);
+    char q[CLI_QUOTE_SIZE];
+    return cli_fail(a->cmd, "unknown option %s (see 'hyst %s --help')", cli_quote(q, a->opt),
+                    a->cmd);
 }
 
 int cli_parse_double(const char *s, double *out)
@@ -109,7 +173,9 @@ int cli_parse_double(const char *s, double *out)
     while (*end == ' ' || *end == '\t') {
         ++end;
     }
-    if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v)) {
+    /* strtod sets ERANGE on underflow too, for denormals (1e-320) and values
+     * that round to 0: those are finite numbers. Overflow gives HUGE_VAL. */
+    if (end == s || *end != '\0' || !isfinite(v)) {
         return 0;
     }
     *out = v;
@@ -124,8 +190,9 @@ int cli_opt_ulong(const cli_args_t *a, const char *v, unsigned long min, unsigne
     errno = 0;
     u = (v[0] >= '0' && v[0] <= '9') ? strtoul(v, &end, 10) : 0ul;
     if (!(v[0] >= '0' && v[0] <= '9') || *end != '\0' || errno == ERANGE || u < min || u > max) {
-        return !cli_fail(a->cmd, "option %s: '%s' is not an integer in %lu..%lu", a->opt, v, min,
-                         max);
+        char q[CLI_QUOTE_SIZE];
+        return !cli_fail(a->cmd, "option %s: %s is not an integer in %lu..%lu", a->opt,
+                         cli_quote(q, v), min, max);
     }
     *out = u;
     return 1;
@@ -134,25 +201,24 @@ int cli_opt_ulong(const cli_args_t *a, const char *v, unsigned long min, unsigne
 int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, size_t max,
                  size_t *n)
 {
-    char item[128];
+    char item[128], q[CLI_QUOTE_SIZE];
     const char *p = v;
     size_t count = 0u;
     for (;;) {
         const char *comma = strchr(p, ',');
         const size_t len = comma != NULL ? (size_t)(comma - p) : strlen(p);
         if (count == max) {
-            return !cli_fail(a->cmd, "option %s: more than %lu numbers in '%s'", a->opt,
-                             (unsigned long)max, v);
+            return !cli_fail(a->cmd, "option %s: more than %lu numbers in %s", a->opt,
+                             (unsigned long)max, cli_quote(q, v));
         }
-        if (len >= sizeof item) {
-            return !cli_fail(a->cmd, "option %s: number %lu too long", a->opt,
-                             (unsigned long)count + 1ul);
+        /* a number of 128 characters or more is not one either */
+        if (len < sizeof item) {
+            memcpy(item, p, len);
+            item[len] = '\0';
         }
-        memcpy(item, p, len);
-        item[len] = '\0';
-        if (!cli_parse_double(item, &out[count])) {
-            return !cli_fail(a->cmd, "option %s: item %lu '%s' is not a finite number", a->opt,
-                             (unsigned long)count + 1ul, item);
+        if (len >= sizeof item || !cli_parse_double(item, &out[count])) {
+            return !cli_fail(a->cmd, "option %s: item %lu %s is not a finite number", a->opt,
+                             (unsigned long)count + 1ul, cli_quote_n(q, p, len));
         }
         ++count;
         if (comma == NULL) {
@@ -161,197 +227,11 @@ int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, si
         p = comma + 1;
     }
     if (count < min) {
-        return !cli_fail(a->cmd, "option %s: '%s' has %lu numbers, needs at least %lu", a->opt, v,
-                         (unsigned long)count, (unsigned long)min);
+        return !cli_fail(a->cmd, "option %s: %s has %lu numbers, needs at least %lu", a->opt,
+                         cli_quote(q, v), (unsigned long)count, (unsigned long)min);
     }
     *n = count;
     return 1;
-}
-
-/* ---- data files ---- */
-
-/* One line of any length into *buf (grown); 0 at end of file, -1 out of memory. */
-static int read_line(FILE *f, char **buf, size_t *cap)
-{
-    size_t len = 0u;
-    int c;
-    while ((c = fgetc(f)) != EOF) {
-        if (len + 1u >= *cap) {
-            const size_t ncap = *cap ? 2u * *cap : 256u;
-            char *nb = (char *)realloc(*buf, ncap);
-            if (nb == NULL) {
-                return -1;
-            }
-            *buf = nb;
-            *cap = ncap;
-        }
-        if (c == '\n') {
-            break;
-        }
-        (*buf)[len++] = (char)c;
-    }
-    if (c == EOF && len == 0u) {
-        return 0;
-    }
-    if (len > 0u && (*buf)[len - 1u] == '\r') {
-        --len;
-    }
-    (*buf)[len] = '\0';
-    return 1;
-}
-
-static int is_space(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-static int is_delim(char c) { return c == ',' || c == ';'; }
-
-/* Splits a data line into fields, in place: runs of blanks separate, and so
- * does one ',' or ';' with optional blanks around it. Returns the count, or
- * -(k) when field k is empty (two delimiters in a row, or one at an end). */
-static long split_fields(char *line, char **field, long max)
-{
-    char *p = line;
-    long n = 0;
-    for (;;) {
-        char *start;
-        while (is_space(*p)) {
-            ++p;
-        }
-        if (*p == '\0') {
-            return (n > 0 && p > line && is_delim(p[-1])) ? -(n + 1) : n;
-        }
-        if (is_delim(*p)) {
-            return -(n + 1);
-        }
-        start = p;
-        while (*p != '\0' && !is_space(*p) && !is_delim(*p)) {
-            ++p;
-        }
-        if (n < max) {
-            field[n] = start;
-        }
-        ++n;
-        while (is_space(*p)) {
-            *p++ = '\0';
-        }
-        if (is_delim(*p)) {
-            *p++ = '\0';
-            while (is_space(*p)) {
-                ++p;
-            }
-            if (*p == '\0' || is_delim(*p)) {
-                return -(n + 1);
-            }
-        } else if (*p != '\0') {
-            continue; /* blank-separated */
-        }
-    }
-}
-
-static int table_push(cli_table_t *t, const double *v, unsigned ncols, unsigned long lineno)
-{
-    unsigned c;
-    if (t->n == t->cap) {
-        const size_t ncap = t->cap ? 2u * t->cap : 1024u;
-        unsigned long *nl;
-        for (c = 0u; c < ncols; ++c) {
-            double *nb = (double *)realloc(t->col[c], ncap * sizeof(double));
-            if (nb == NULL) {
-                return -1;
-            }
-            t->col[c] = nb;
-        }
-        nl = (unsigned long *)realloc(t->line, ncap * sizeof(unsigned long));
-        if (nl == NULL) {
-            return -1;
-        }
-        t->line = nl;
-        t->cap = ncap;
-    }
-    for (c = 0u; c < ncols; ++c) {
-        t->col[c][t->n] = v[c];
-    }
-    t->line[t->n] = lineno;
-    ++t->n;
-    return 0;
-}
-
-void cli_table_free(cli_table_t *t)
-{
-    unsigned c;
-    for (c = 0u; c < CLI_MAX_COLS; ++c) {
-        free(t->col[c]);
-        t->col[c] = NULL;
-    }
-    free(t->line);
-    t->line = NULL;
-    t->n = t->cap = 0u;
-}
-
-int cli_read_columns(const char *cmd, const char *path, const unsigned long *cols,
-                     unsigned ncols, cli_table_t *t)
-{
-    const char *name = cli_file_name(path);
-    const int use_stdin = path == NULL || strcmp(path, "-") == 0;
-    FILE *f = use_stdin ? stdin : fopen(path, "r");
-    char *line = NULL;
-    size_t cap = 0u;
-    unsigned long lineno = 0ul;
-    int rc = 0, got;
-    unsigned c;
-
-    memset(t, 0, sizeof *t);
-    if (f == NULL) {
-        return -cli_fail(cmd, "%s: cannot open: %s", name, strerror(errno));
-    }
-    while (rc == 0 && (got = read_line(f, &line, &cap)) != 0) {
-        char *field[CLI_MAX_FIELD];
-        double v[CLI_MAX_COLS];
-        const char *p = line;
-        long nf;
-        ++lineno;
-        if (got < 0) {
-            rc = -cli_fail(cmd, "%s:%lu: out of memory", name, lineno);
-            break;
-        }
-        while (is_space(*p)) {
-            ++p;
-        }
-        if (*p == '\0' || *p == '#') {
-            continue;
-        }
-        nf = split_fields(line, field, CLI_MAX_FIELD);
-        if (nf < 0) {
-            rc = -cli_fail(cmd, "%s:%lu: field %ld is empty", name, lineno, -nf);
-            break;
-        }
-        for (c = 0u; c < ncols && rc == 0; ++c) {
-            if ((unsigned long)nf < cols[c]) {
-                rc = -cli_fail(cmd, "%s:%lu: field %lu is missing (the line has %ld field%s)",
-                               name, lineno, cols[c], nf, nf == 1 ? "" : "s");
-            } else if (!cli_parse_double(field[cols[c] - 1u], &v[c])) {
-                rc = -cli_fail(cmd, "%s:%lu: field %lu: '%s' is not a finite number", name,
-                               lineno, cols[c], field[cols[c] - 1u]);
-            }
-        }
-        if (rc == 0 && table_push(t, v, ncols, lineno) != 0) {
-            rc = -cli_fail(cmd, "%s:%lu: out of memory", name, lineno);
-        }
-    }
-    if (rc == 0 && ferror(f)) {
-        rc = -cli_fail(cmd, "%s: read error", name);
-    }
-    if (rc == 0 && t->n == 0u) {
-        rc = -cli_fail(cmd, "%s: no data (the file is empty or holds only comments and blank "
-                            "lines)",
-                       name);
-    }
-    free(line);
-    if (!use_stdin) {
-        (void)fclose(f);
-    }
-    if (rc != 0) {
-        cli_table_free(t);
-    }
-    return rc;
 }
 
 void cli_c_literal(char *buf, size_t len, double v)
@@ -368,6 +248,7 @@ void cli_samples_init(cli_samples_t *s)
 {
     s->file = NULL;
     s->xcol = 1ul;
+    s->decimal_comma = 0;
 }
 
 int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help)
@@ -380,12 +261,16 @@ int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help)
         }
         if (kind == CLI_POS) {
             if (s->file != NULL) {
-                return -cli_fail(a->cmd, "more than one input file ('%s', '%s')", s->file, pos);
+                char q1[CLI_QUOTE_SIZE], q2[CLI_QUOTE_SIZE];
+                return -cli_fail(a->cmd, "more than one input file (%s, %s)",
+                                 cli_quote(q1, s->file), cli_quote(q2, pos));
             }
             s->file = pos;
         } else if (cli_is(a, "--help") || cli_is(a, "-h")) {
             (void)fputs(help, stdout);
             return CLI_HELP;
+        } else if (cli_is(a, "--decimal-comma")) {
+            s->decimal_comma = 1;
         } else if (cli_is(a, "--xcol")) {
             if ((v = cli_value(a)) == NULL ||
                 !cli_opt_ulong(a, v, 1ul, CLI_MAX_FIELD, &s->xcol)) {
@@ -400,30 +285,52 @@ int cli_samples_next(cli_args_t *a, cli_samples_t *s, const char *help)
 
 int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
 {
-    cli_table_t t;
-    size_t i, nclamped = 0u;
+    cli_reader_t rd;
+    cli_spool_t sp;
+    size_t nclamped = 0u;
     unsigned long first = 0ul;
-    int rc;
-    if (cli_read_columns(cmd, s->file, &s->xcol, 1u, &t) != 0) {
+    double x, y;
+    int rc, got = 0;
+    if (cli_reader_open(&rd, cmd, s->file, &s->xcol, 1u, s->decimal_comma) != 0) {
         return 1;
     }
-    rc = m->begin != NULL ? m->begin(m->ctx, t.n) : 0;
-    for (i = 0u; rc == 0 && i < t.n; ++i) {
-        int clamped = 0;
-        const double x = t.col[0][i];
-        const double y = m->step(m->ctx, x, &clamped);
+    cli_spool_init(&sp, cmd);
+    rc = m->begin != NULL ? m->begin(m->ctx) : 0;
+    while (rc == 0 && (got = cli_reader_next(&rd, &x)) > 0) {
+        char out[64];
+        int clamped = 0, len;
+        if ((rc = m->step(m->ctx, x, &y, &clamped)) != 0) {
+            break;
+        }
+        if (!isfinite(y)) {
+            rc = cli_fail(cmd, "%s:%lu: the output is not finite (%g): the numbers are too "
+                               "large, rescale them",
+                          rd.name, rd.lineno, y);
+            break;
+        }
         /* A bound printed with 9 digits (sim's f0(lo) fed to inv) may land just
          * outside: rounding, not an unreachable target, so not warned. */
         if (clamped && (x < m->lo - CLI_PRINT_TOL * fabs(m->lo) ||
                         x > m->hi + CLI_PRINT_TOL * fabs(m->hi)) &&
             nclamped++ == 0u) {
-            first = t.line[i];
+            first = rd.lineno;
         }
-        if (m->col2 != NULL) {
-            (void)printf("%.9g,%lu\n", y, m->col2(m->ctx));
-        } else {
-            (void)printf("%.9g\n", y);
-        }
+        len = m->col2 != NULL ? sprintf(out, "%.9g,%lu\n", y, m->col2(m->ctx))
+                              : sprintf(out, "%.9g\n", y);
+        rc = cli_spool_write(&sp, out, (size_t)len);
+    }
+    if (got < 0) {
+        rc = 1;
+    }
+    cli_reader_close(&rd);
+    if (rc == 0 && nclamped == rd.rows) {
+        /* not one sample in the domain: a wrong range or column, not data */
+        rc = cli_fail(cmd, "%s: all %lu %s are outside [%.9g, %.9g] (all clamped): check --range "
+                           "and --xcol",
+                      rd.name, (unsigned long)nclamped, m->clamp_what, m->lo, m->hi);
+    }
+    if (rc == 0) {
+        rc = cli_spool_copy(&sp, stdout);
     }
     if (rc == 0 && nclamped > 0u) {
         (void)fprintf(stderr,
@@ -432,9 +339,120 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
                       cmd, cli_file_name(s->file), (unsigned long)nclamped, m->clamp_what,
                       m->lo, m->hi, first);
     }
-    cli_table_free(&t);
-    if (rc == 0 && fflush(stdout) != 0) {
-        rc = cli_fail(cmd, "write error on standard output");
-    }
+    cli_spool_free(&sp);
     return rc;
+}
+
+/* ---- output held back ---- */
+
+void cli_spool_init(cli_spool_t *sp, const char *cmd)
+{
+    sp->cmd = cmd;
+    sp->buf = NULL;
+    sp->len = 0u;
+    sp->file = NULL;
+}
+
+/* An anonymous temporary file: created in $TMPDIR (or /tmp), unlinked at once. */
+static FILE *temp_file(const char *cmd)
+{
+    const char *dir = getenv("TMPDIR");
+    char path[4096];
+    int fd;
+    FILE *f;
+    if (dir == NULL || dir[0] == '\0') {
+        dir = "/tmp";
+    }
+    if (strlen(dir) + sizeof "/hyst-XXXXXX" > sizeof path) {
+        (void)cli_fail(cmd, "TMPDIR too long");
+        return NULL;
+    }
+    (void)sprintf(path, "%s/hyst-XXXXXX", dir);
+    fd = mkstemp(path);
+    if (fd < 0) {
+        (void)cli_fail(cmd, "cannot create a temporary file for the output in %s: %s (set TMPDIR)",
+                       cli_file_name(dir), strerror(errno));
+        return NULL;
+    }
+    (void)unlink(path); /* gone with the process, whatever happens */
+    f = fdopen(fd, "w+b");
+    if (f == NULL) {
+        (void)cli_fail(cmd, "temporary file: %s", strerror(errno));
+        (void)close(fd);
+    }
+    return f;
+}
+
+/* The buffer appended to the temporary file (created on the first call). */
+static int spool_spill(cli_spool_t *sp)
+{
+    if (sp->file == NULL && (sp->file = temp_file(sp->cmd)) == NULL) {
+        return 1;
+    }
+    if (fwrite(sp->buf, 1u, sp->len, sp->file) != sp->len) {
+        return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
+    }
+    sp->len = 0u;
+    return 0;
+}
+
+int cli_spool_write(cli_spool_t *sp, const char *s, size_t n)
+{
+    if (sp->buf == NULL && (sp->buf = (char *)malloc(CLI_SPOOL_MEM)) == NULL) {
+        return cli_fail(sp->cmd, "out of memory");
+    }
+    if (n > CLI_SPOOL_MEM - sp->len) {
+        if (spool_spill(sp) != 0) {
+            return 1;
+        }
+        if (n > CLI_SPOOL_MEM) {
+            return fwrite(s, 1u, n, sp->file) == n
+                       ? 0
+                       : cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
+        }
+    }
+    memcpy(sp->buf + sp->len, s, n);
+    sp->len += n;
+    return 0;
+}
+
+int cli_spool_copy(cli_spool_t *sp, FILE *out)
+{
+    if (sp->file == NULL) {
+        if (sp->len > 0u && fwrite(sp->buf, 1u, sp->len, out) != sp->len) {
+            return cli_fail(sp->cmd, "write error on standard output: %s", strerror(errno));
+        }
+    } else {
+        size_t n;
+        if (spool_spill(sp) != 0) {
+            return 1;
+        }
+        if (fflush(sp->file) != 0 || fseek(sp->file, 0L, SEEK_SET) != 0) {
+            return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
+        }
+        /* sp->buf is free for the copy: the file holds everything */
+        while ((n = fread(sp->buf, 1u, CLI_SPOOL_MEM, sp->file)) > 0u) {
+            if (fwrite(sp->buf, 1u, n, out) != n) {
+                return cli_fail(sp->cmd, "write error on standard output: %s", strerror(errno));
+            }
+        }
+        if (ferror(sp->file)) {
+            return cli_fail(sp->cmd, "temporary file: %s", strerror(errno));
+        }
+    }
+    if (fflush(out) != 0 || ferror(out)) {
+        return cli_fail(sp->cmd, "write error on standard output: %s", strerror(errno));
+    }
+    return 0;
+}
+
+void cli_spool_free(cli_spool_t *sp)
+{
+    if (sp->file != NULL) {
+        (void)fclose(sp->file);
+        sp->file = NULL;
+    }
+    free(sp->buf);
+    sp->buf = NULL;
+    sp->len = 0u;
 }

@@ -10,13 +10,17 @@ typedef struct tcm_run {
     const hyst_poly_t *f0;
     int inverse;
     const char *cmd;
-    hyst_real_t *mem;
+    hyst_real_t *mem; /* the four turning-point arrays, cap entries each */
+    size_t cap;
     hyst_t S;
     hyst_curve_t inv; /* the compensator's curve, kept by S */
 } tcm_run_t;
 
-/* --poly and --range into *f0; 1 after a message. The curve is checked here,
- * before any input is read. */
+/* Turning points the engine starts with; doubled whenever one array is
+ * nearly full, so it never has to merge loops (the output is the full
+ * model's) and holds what the trajectory needs, not one per sample. */
+#define TCM_CAP0 256u
+
 static int make_poly(const char *cmd, const double *coeffs, size_t ncoef, const double *range,
                      size_t nrange, hyst_poly_t *f0)
 {
@@ -55,29 +59,78 @@ static int make_poly(const char *cmd, const double *coeffs, size_t ncoef, const 
     return 0;
 }
 
-static int tcm_begin(void *ctx, size_t n)
+/* r->S on fresh arrays of @p cap entries, into r->mem (the caller frees the old). */
+static hyst_status_t tcm_init(tcm_run_t *r, size_t cap)
+{
+    hyst_real_t *mem;
+    hyst_status_t st;
+    if (cap > (size_t)-1 / (4u * sizeof(hyst_real_t)) ||
+        (mem = (hyst_real_t *)malloc(4u * cap * sizeof(hyst_real_t))) == NULL) {
+        return HYST_ERR_NOSPACE;
+    }
+    st = r->inverse
+             ? hyst_init_inverse(&r->S, &r->inv, r->f0, mem, mem + cap, mem + 2u * cap,
+                                 mem + 3u * cap, cap)
+             : hyst_init(&r->S, r->f0, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap);
+    if (st != HYST_OK) {
+        free(mem);
+        return st;
+    }
+    r->mem = mem;
+    r->cap = cap;
+    return HYST_OK;
+}
+
+static int tcm_begin(void *ctx)
 {
     tcm_run_t *r = (tcm_run_t *)ctx;
-    /* n samples make at most n turning points: the memory never overflows. */
-    const size_t cap = n / 2u + 2u;
-    hyst_status_t st;
-    r->mem = (hyst_real_t *)malloc(4u * cap * sizeof(hyst_real_t));
-    if (r->mem == NULL) {
+    const hyst_status_t st = tcm_init(r, TCM_CAP0);
+    if (st == HYST_ERR_NOSPACE) {
         return cli_fail(r->cmd, "out of memory");
     }
-    st = r->inverse ? hyst_init_inverse(&r->S, &r->inv, r->f0, r->mem, r->mem + cap, r->mem + 2u * cap,
-                                        r->mem + 3u * cap, cap)
-                    : hyst_init(&r->S, r->f0, r->mem, r->mem + cap, r->mem + 2u * cap,
-                                r->mem + 3u * cap, cap);
     return st == HYST_OK ? 0 : cli_fail(r->cmd, "%s", hyst_status_str(st));
 }
 
-static double tcm_step(void *ctx, double x, int *clamped)
+/* Twice the turning-point memory, the state carried over bit for bit by a
+ * snapshot (hyst/snapshot.h: the capacity may differ on restore). */
+static int tcm_grow(tcm_run_t *r)
+{
+    hyst_real_t *old = r->mem;
+    const size_t old_cap = r->cap;
+    const size_t size = hyst_snapshot_size(&r->S);
+    unsigned char *snap = (unsigned char *)malloc(size);
+    hyst_status_t st =
+        snap != NULL ? hyst_snapshot_save(&r->S, snap, size, NULL) : HYST_ERR_NOSPACE;
+    if (st == HYST_OK) {
+        st = tcm_init(r, 2u * old_cap); /* on error r->S and r->mem are untouched */
+        if (st == HYST_OK) {
+            st = hyst_snapshot_restore(&r->S, snap, size);
+            free(old);
+        }
+    }
+    free(snap);
+    if (st == HYST_ERR_NOSPACE) {
+        return cli_fail(r->cmd, "out of memory (%lu turning points stored)",
+                        (unsigned long)hyst_tp_count(&r->S));
+    }
+    return st == HYST_OK ? 0 : cli_fail(r->cmd, "growing the turning-point memory: %s",
+                                        hyst_status_str(st));
+}
+
+static int tcm_step(void *ctx, double x, double *y, int *clamped)
 {
     tcm_run_t *r = (tcm_run_t *)ctx;
-    const hyst_real_t y = hyst_step(&r->S, (hyst_real_t)x);
+    /* a sample stores at most one turning point: grow before an array is full */
+    if ((hyst_ltp_count(&r->S) + 2u >= r->cap || hyst_rtp_count(&r->S) + 1u >= r->cap) &&
+        tcm_grow(r) != 0) {
+        return 1;
+    }
+    *y = (double)hyst_step(&r->S, (hyst_real_t)x);
+    if ((hyst_events(&r->S) & HYST_EVENT_FULL) != 0u) {
+        return cli_fail(r->cmd, "internal error: turning-point memory full");
+    }
     *clamped = hyst_status(&r->S) == HYST_WARN_CLAMPED;
-    return (double)y;
+    return 0;
 }
 
 static unsigned long tcm_tp(void *ctx)
@@ -125,6 +178,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     r.inverse = inverse;
     r.cmd = cmd;
     r.mem = NULL;
+    r.cap = 0u;
     m.ctx = &r;
     m.begin = tcm_begin;
     m.step = tcm_step;

@@ -3,12 +3,21 @@
 #include "hyst/hyst.h"
 
 #include <ctype.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 static const char help[] =
     "usage: hyst fit --degree N [--skip S] [--delay D] [--xcol I --ycol J]\n"
-    "                [--method joint|reflect] [--domain LO,HI] [--header NAME] FILE\n"
+    "                [--method joint|reflect] [--domain LO,HI] [--header NAME]\n"
+    "                [--decimal-comma] FILE\n"
     "\n"
     "Fits the major ascending curve f0 (polynomial of degree N) of a hysteresis\n"
     "loop to the input/output record in FILE ('-' = standard input), excited by a\n"
@@ -25,6 +34,9 @@ static const char help[] =
     "                 the outputs measured at the extreme inputs\n"
     "  --domain LO,HI domain of f0 (default: the range of the inputs used);\n"
     "                 samples outside it are ignored\n"
+    "  --decimal-comma ',' is the decimal mark (1,5 is 1.5): fields are then\n"
+    "                 separated by blanks or ';'. Without it, a number that looks\n"
+    "                 written with one is refused\n"
     "  --header NAME  also write NAME.h holding\n"
     "                 'static const hyst_poly_t NAME = {...};' for firmware\n"
     "  --help         this text\n"
@@ -41,6 +53,7 @@ typedef struct fit_opts {
     const char *file;
     const char *header;
     int have_degree;
+    int decimal_comma;
 } fit_opts_t;
 
 static int valid_identifier(const char *s)
@@ -62,6 +75,7 @@ static int parse(fit_opts_t *o, int argc, char **argv)
 {
     cli_args_t a;
     const char *pos = NULL, *v;
+    char q[CLI_QUOTE_SIZE];
     unsigned long u;
     double dom[2];
     size_t nd;
@@ -77,7 +91,9 @@ static int parse(fit_opts_t *o, int argc, char **argv)
         }
         if (kind == CLI_POS) {
             if (o->file != NULL) {
-                return cli_fail(a.cmd, "more than one input file ('%s', '%s')", o->file, pos);
+                char q2[CLI_QUOTE_SIZE];
+                return cli_fail(a.cmd, "more than one input file (%s, %s)", cli_quote(q, o->file),
+                                cli_quote(q2, pos));
             }
             o->file = pos;
             continue;
@@ -85,6 +101,10 @@ static int parse(fit_opts_t *o, int argc, char **argv)
         if (cli_is(&a, "--help") || cli_is(&a, "-h")) {
             (void)fputs(help, stdout);
             return -1;
+        }
+        if (cli_is(&a, "--decimal-comma")) {
+            o->decimal_comma = 1;
+            continue;
         }
         if ((v = cli_value(&a)) == NULL) {
             return 1;
@@ -111,20 +131,23 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             } else if (strcmp(v, "reflect") == 0) {
                 o->cfg.method = HYST_IDENT_REFLECT;
             } else {
-                return cli_fail(a.cmd, "option --method: '%s' is neither joint nor reflect", v);
+                return cli_fail(a.cmd, "option --method: %s is neither joint nor reflect",
+                                cli_quote(q, v));
             }
         } else if (cli_is(&a, "--domain")) {
             if (!cli_opt_list(&a, v, dom, 2u, 2u, &nd)) {
                 return 1;
             }
             if (!(dom[0] < dom[1])) {
-                return cli_fail(a.cmd, "option --domain: LO must be below HI in '%s'", v);
+                return cli_fail(a.cmd, "option --domain: LO must be below HI in %s",
+                                cli_quote(q, v));
             }
             o->cfg.lo = dom[0];
             o->cfg.hi = dom[1];
         } else if (cli_is(&a, "--header")) {
             if (!valid_identifier(v)) {
-                return cli_fail(a.cmd, "option --header: '%s' is not a C identifier", v);
+                return cli_fail(a.cmd, "option --header: %s is not a C identifier",
+                                cli_quote(q, v));
             }
             o->header = v;
         } else {
@@ -142,46 +165,208 @@ static int parse(fit_opts_t *o, int argc, char **argv)
 
 static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflect" : "joint"; }
 
-static int write_header(const fit_opts_t *o, const hyst_ident_result_t *r)
+/* ---- the header: replaced whole, or not at all ----
+ *
+ * NAME.h is written to a temporary file beside it (NAME.h.XXXXXX), synced and
+ * closed, each step checked; the results are printed; only then is it renamed
+ * over NAME.h (an atomic replacement on POSIX file systems). Any failure
+ * before the rename removes the temporary file and leaves NAME.h as it was. */
+
+typedef struct header_file {
+    char path[256]; /* NAME.h */
+    char tmp[272];  /* NAME.h.XXXXXX, "" when there is none */
+} header_file_t;
+
+/* Appends printf output to buf[*len..size); 1 when it did not fit. */
+static int append(char *buf, size_t size, size_t *len, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+static int append(char *buf, size_t size, size_t *len, const char *fmt, ...)
 {
-    char path[256], lit[40], guard[256];
-    size_t i;
+    va_list ap;
+    int n;
+    va_start(ap, fmt);
+    n = vsnprintf(buf + *len, size - *len, fmt, ap);
+    va_end(ap);
+    if (n < 0 || (size_t)n >= size - *len) {
+        return 1;
+    }
+    *len += (size_t)n;
+    return 0;
+}
+
+/* The header's text into buf; its length, or 0 if it did not fit. */
+static size_t header_text(const fit_opts_t *o, const hyst_ident_result_t *r, char *buf,
+                          size_t size)
+{
+    char lit[40], guard[256], source[1024];
+    const char *name = cli_file_name(o->file);
+    size_t i, j, len = 0u;
     unsigned k;
-    FILE *f;
-    (void)snprintf(path, sizeof path, "%s.h", o->header);
+    int over;
     for (i = 0u; o->header[i] != '\0' && i + 3u < sizeof guard; ++i) {
         guard[i] = (char)toupper((unsigned char)o->header[i]);
     }
     memcpy(guard + i, "_H", 3u);
-    f = fopen(path, "w");
-    if (f == NULL) {
-        return cli_fail("fit", "%s: cannot write the header", path);
+    /* the file name goes into a comment: "*" "/" in it would end the comment */
+    for (i = j = 0u; name[i] != '\0' && j + 3u < sizeof source; ++i) {
+        source[j++] = name[i];
+        if (name[i] == '*' && name[i + 1u] == '/') {
+            source[j++] = ' ';
+        }
     }
-    (void)fprintf(f,
+    source[j] = '\0';
+    over = append(buf, size, &len,
                   "/* Generated by 'hyst fit': major ascending curve f0 identified from\n"
                   " * %s (x column %lu, y column %lu, skip %lu, delay %lu),\n"
                   " * degree %u, %s estimator, domain [%.9g, %.9g].\n"
                   " * Residual against the major loop over %lu samples:\n"
                   " * RMS %.4g, max %.4g (output units). */\n",
-                  cli_file_name(o->file), o->cols[0], o->cols[1], (unsigned long)o->cfg.skip,
-                  (unsigned long)o->cfg.delay, r->degree, method_name(r->method),
-                  (double)r->lo, (double)r->hi, (unsigned long)r->used, (double)r->rms,
-                  (double)r->max_abs);
-    (void)fprintf(f, "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n\n", guard, guard);
-    (void)fprintf(f, "static const hyst_poly_t %s = {\n    %uu, ", o->header, r->degree);
+                  source, o->cols[0], o->cols[1], (unsigned long)o->cfg.skip,
+                  (unsigned long)o->cfg.delay, r->degree, method_name(r->method), (double)r->lo,
+                  (double)r->hi, (unsigned long)r->used, (double)r->rms, (double)r->max_abs);
+    over |= append(buf, size, &len, "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n\n",
+                   guard, guard);
+    over |= append(buf, size, &len, "static const hyst_poly_t %s = {\n    %uu, ", o->header,
+                   r->degree);
     cli_c_literal(lit, sizeof lit, (double)r->lo);
-    (void)fprintf(f, "HYST_REAL_C(%s), ", lit);
+    over |= append(buf, size, &len, "HYST_REAL_C(%s), ", lit);
     cli_c_literal(lit, sizeof lit, (double)r->hi);
-    (void)fprintf(f, "HYST_REAL_C(%s),\n    {", lit);
+    over |= append(buf, size, &len, "HYST_REAL_C(%s),\n    {", lit);
     for (k = 0u; k <= r->degree; ++k) {
         cli_c_literal(lit, sizeof lit, (double)r->coeffs[k]);
-        (void)fprintf(f, "%sHYST_REAL_C(%s)", k ? ",\n     " : "", lit);
+        over |= append(buf, size, &len, "%sHYST_REAL_C(%s)", k ? ",\n     " : "", lit);
     }
-    (void)fprintf(f, "}};\n\n#endif /* %s */\n", guard);
+    over |= append(buf, size, &len, "}};\n\n#endif /* %s */\n", guard);
+    return over ? 0u : len;
+}
+
+/* Before anything is computed or printed: a NAME.h that cannot be replaced. */
+static int header_check(const fit_opts_t *o, header_file_t *h)
+{
+    struct stat st;
+    (void)sprintf(h->path, "%s.h", o->header); /* NAME: a C identifier, < 200 chars */
+    h->tmp[0] = '\0';
+    if (stat(h->path, &st) == 0 && S_ISDIR(st.st_mode)) {
+        return cli_fail("fit", "%s: is a directory: cannot write the header", h->path);
+    }
+    return 0;
+}
+
+static void header_discard(header_file_t *h)
+{
+    if (h->tmp[0] != '\0') {
+        (void)remove(h->tmp);
+        h->tmp[0] = '\0';
+    }
+}
+
+/* The header into h->tmp, synced and closed: 0, or 1 after a message (and no
+ * temporary file left). */
+static int header_write(const fit_opts_t *o, const hyst_ident_result_t *r, header_file_t *h)
+{
+    char text[8192];
+    const size_t len = header_text(o, r, text, sizeof text);
+    struct stat st;
+    mode_t mode, mask;
+    FILE *f;
+    int fd, err;
+    if (len == 0u) {
+        return cli_fail("fit", "%s: header text too long", h->path);
+    }
+    /* the mode NAME.h has, or a new file's (0666 less the umask; mkstemp gives 0600) */
+    mask = umask(0);
+    (void)umask(mask);
+    mode = stat(h->path, &st) == 0 ? (mode_t)(st.st_mode & 07777) : (mode_t)(0666 & ~mask);
+    (void)sprintf(h->tmp, "%s.XXXXXX", h->path);
+    if ((fd = mkstemp(h->tmp)) < 0) {
+        err = errno;
+        h->tmp[0] = '\0';
+        return cli_fail("fit", "%s: cannot write the header: %s (creating a temporary file "
+                               "beside it)",
+                        h->path, strerror(err));
+    }
+    if (fchmod(fd, mode) != 0 || (f = fdopen(fd, "w")) == NULL) {
+        err = errno;
+        (void)close(fd);
+        header_discard(h);
+        return cli_fail("fit", "%s: cannot write the header: %s", h->path, strerror(err));
+    }
+    errno = 0;
+    if (fwrite(text, 1u, len, f) != len || fflush(f) != 0 || fsync(fileno(f)) != 0) {
+        err = errno;
+        (void)fclose(f);
+        header_discard(h);
+        return cli_fail("fit", "%s: cannot write the header: %s", h->path, strerror(err));
+    }
     if (fclose(f) != 0) {
-        return cli_fail("fit", "%s: write error", path);
+        err = errno;
+        header_discard(h);
+        return cli_fail("fit", "%s: cannot write the header: %s", h->path, strerror(err));
     }
-    (void)fprintf(stderr, "hyst fit: wrote %s\n", path);
+    return 0;
+}
+
+/* h->tmp renamed over NAME.h: 0, or 1 after a message. */
+static int header_commit(header_file_t *h)
+{
+    int fd;
+    if (rename(h->tmp, h->path) != 0) {
+        const int err = errno;
+        header_discard(h);
+        return cli_fail("fit", "%s: cannot replace the header: %s (the results above are "
+                               "valid, the header was not written)",
+                        h->path, strerror(err));
+    }
+    h->tmp[0] = '\0';
+    /* the rename itself to disk: best effort */
+    if ((fd = open(".", O_RDONLY)) >= 0) {
+        (void)fsync(fd);
+        (void)close(fd);
+    }
+    (void)fprintf(stderr, "hyst fit: wrote %s\n", h->path);
+    return 0;
+}
+
+/* 1 after a message if the @p n values @p v of column @p col are all equal:
+ * nothing to fit, and the fit would only report a flat curve's slope. */
+static int constant_column(const char *name, unsigned long col, const double *v, size_t n,
+                           const char *what, const char *option)
+{
+    size_t i;
+    for (i = 1u; i < n && v[i] == v[0]; ++i) {
+    }
+    if (n == 0u || i < n) {
+        return 0;
+    }
+    return cli_fail("fit", "%s: column %lu is constant (%.9g on every one of the %lu lines "
+                           "used): choose the %s column with %s",
+                    name, col, v[0], (unsigned long)n, what, option);
+}
+
+/* 1 after a message if a number of the result overflowed (the library sums
+ * squared residuals: outputs near 1e154 are enough). */
+static int not_finite(const char *name, const hyst_ident_result_t *r)
+{
+    static const char *const names[4] = {"domain LO", "domain HI", "RMS residual",
+                                         "max residual"};
+    const double more[4] = {(double)r->lo, (double)r->hi, (double)r->rms, (double)r->max_abs};
+    static const char advice[] = "the numbers are too large, rescale them";
+    unsigned k;
+    for (k = 0u; k <= r->degree; ++k) {
+        if (!isfinite((double)r->coeffs[k])) {
+            return cli_fail("fit", "%s: the result is not finite (coefficient c%u %g): %s", name,
+                            r->degree - k, (double)r->coeffs[k], advice);
+        }
+    }
+    for (k = 0u; k < 4u; ++k) {
+        if (!isfinite(more[k])) {
+            return cli_fail("fit", "%s: the result is not finite (%s %g): %s", name, names[k],
+                            more[k], advice);
+        }
+    }
     return 0;
 }
 
@@ -192,6 +377,7 @@ int cmd_fit(int argc, char **argv)
     hyst_ident_t work;
     hyst_ident_result_t r;
     hyst_status_t st;
+    header_file_t h;
     const char *name;
     size_t pairs, nread;
     unsigned k;
@@ -199,12 +385,22 @@ int cmd_fit(int argc, char **argv)
     if (rc != 0) {
         return rc < 0 ? 0 : rc;
     }
+    if (o.header != NULL && header_check(&o, &h) != 0) {
+        return 1;
+    }
     name = cli_file_name(o.file);
-    if (cli_read_columns("fit", o.file, o.cols, 2u, &t) != 0) {
+    if (cli_read_columns("fit", o.file, o.cols, 2u, o.decimal_comma, &t) != 0) {
         return 1;
     }
     nread = t.n;
     pairs = t.n > o.cfg.skip + o.cfg.delay ? t.n - o.cfg.skip - o.cfg.delay : 0u;
+    if (pairs > 0u &&
+        (constant_column(name, o.cols[0], t.col[0] + o.cfg.skip, pairs, "input", "--xcol") ||
+         constant_column(name, o.cols[1], t.col[1] + o.cfg.skip + o.cfg.delay, pairs, "output",
+                         "--ycol"))) {
+        cli_table_free(&t);
+        return 1;
+    }
     st = pairs == 0u ? HYST_ERR_ARG : hyst_ident_fit(&o.cfg, t.col[0], t.col[1], t.n, &work, &r);
     cli_table_free(&t);
     switch (st) {
@@ -221,8 +417,15 @@ int cmd_fit(int argc, char **argv)
     default:
         return cli_fail("fit", "%s: %s", name, hyst_status_str(st));
     }
-    if (r.increasing && o.header != NULL && write_header(&o, &r) != 0) {
+    if (not_finite(name, &r)) {
         return 1;
+    }
+    if (r.increasing && o.header != NULL) {
+        if (header_write(&o, &r, &h) != 0) {
+            return 1;
+        }
+        /* a closed pipe must not kill the process with the temporary file left */
+        (void)signal(SIGPIPE, SIG_IGN);
     }
     for (k = 0u; k <= r.degree; ++k) {
         (void)printf("%s%.15g", k ? "," : "", (double)r.coeffs[k]);
@@ -242,8 +445,16 @@ int cmd_fit(int argc, char **argv)
     } else {
         (void)printf("# f0 NOT increasing: slope negative at x = %.9g\n", (double)r.turn);
     }
-    if (fflush(stdout) != 0) {
-        return cli_fail("fit", "write error on standard output");
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        const int err = errno;
+        if (o.header != NULL) {
+            header_discard(&h);
+        }
+        return cli_fail("fit", "write error on standard output: %s%s", strerror(err),
+                        o.header != NULL && r.increasing ? " (no header written)" : "");
+    }
+    if (r.increasing && o.header != NULL && header_commit(&h) != 0) {
+        return 1;
     }
     if (!r.increasing) {
         (void)fprintf(stderr,

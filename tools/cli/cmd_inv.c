@@ -2,7 +2,8 @@
 #include "cli.h"
 
 static const char help[] =
-    "usage: hyst inv --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp] [FILE]\n"
+    "usage: hyst inv --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp]\n"
+    "                [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the compensator of the model 'hyst sim' runs with the same --poly and\n"
     "--range: for each desired output in FILE (standard input if FILE is absent\n"
@@ -16,8 +17,10 @@ static const char help[] =
     "                    unreachable: they are clamped to it (the drive saturates at\n"
     "                    LO or HI), with a warning on stderr (count, first line)\n"
     "                    unless within 1e-9 relative (9-digit rounding of a bound);\n"
-    "                    exit status stays 0, as for 'hyst sim'\n"
+    "                    exit status stays 0 unless every target was clamped\n"
+    "                    (then an error), as for 'hyst sim'\n"
     CLI_HELP_XCOL
+    CLI_HELP_DECIMAL
     "  --tp              add the turning-point count as a second column: x,tp\n"
     "  --help            this text\n"
     "\n"

@@ -7,7 +7,8 @@
 #define PI_MAX_OPERATORS 512u
 
 static const char help[] =
-    "usage: hyst pi --weights w1,...,wN --thresholds r1,...,rN [--xcol I] [FILE]\n"
+    "usage: hyst pi --weights w1,...,wN --thresholds r1,...,rN [--xcol I]\n"
+    "               [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the Prandtl-Ishlinskii model of N one-sided play operators (the paper's\n"
     "Eq. 15; docs/theory.md) over the input samples of FILE (standard input if FILE is\n"
@@ -21,6 +22,7 @@ static const char help[] =
     "  --thresholds R    r1,...,rN, one per weight: r1 = 0, strictly increasing\n"
     "                    (N <= 512)\n"
     CLI_HELP_XCOL
+    CLI_HELP_DECIMAL
     "  --help            this text\n"
     "\n"
     CLI_HELP_EXIT;
@@ -30,10 +32,11 @@ typedef struct pi_run {
     hyst_pi_t P;
 } pi_run_t;
 
-static double pi_step(void *ctx, double x, int *clamped)
+static int pi_step(void *ctx, double x, double *y, int *clamped)
 {
     *clamped = 0;
-    return (double)hyst_pi_step(&((pi_run_t *)ctx)->P, (hyst_real_t)x);
+    *y = (double)hyst_pi_step(&((pi_run_t *)ctx)->P, (hyst_real_t)x);
+    return 0;
 }
 
 /* Which parameter hyst_pi_check() refused, named by option and index. */

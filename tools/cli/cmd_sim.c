@@ -2,7 +2,8 @@
 #include "cli.h"
 
 static const char help[] =
-    "usage: hyst sim --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp] [FILE]\n"
+    "usage: hyst sim --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp]\n"
+    "                [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the hysteresis model (TCM) with major ascending curve\n"
     "f0(x) = cN x^N + ... + c1 x + c0 on [LO, HI] over the input samples of FILE\n"
@@ -12,8 +13,10 @@ static const char help[] =
     "  --poly cN,...,c0  coefficients, highest power first (degree 1..9)\n"
     "  --range LO,HI     domain of f0; inputs outside it are clamped to it, with a\n"
     "                    warning on stderr (count, first line) unless within 1e-9\n"
-    "                    relative (9-digit rounding); exit status stays 0\n"
+    "                    relative (9-digit rounding); exit status stays 0 unless\n"
+    "                    every input was clamped (then an error)\n"
     CLI_HELP_XCOL
+    CLI_HELP_DECIMAL
     "  --tp              add the turning-point count as a second column: y,tp\n"
     "  --help            this text\n"
     "\n"

@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "hyst/hyst.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -32,7 +33,13 @@ static void usage(FILE *out)
 
 int main(int argc, char **argv)
 {
+    char q[CLI_QUOTE_SIZE];
     size_t i;
+#ifdef SIGXFSZ
+    /* beyond a file-size limit (ulimit -f) a write fails with EFBIG, reported
+     * and cleaned up, instead of the process being killed mid-file */
+    (void)signal(SIGXFSZ, SIG_IGN);
+#endif
     if (argc < 2) {
         usage(stderr);
         return 1;
@@ -47,7 +54,7 @@ int main(int argc, char **argv)
             return commands[i].run(argc - 1, argv + 1);
         }
     }
-    (void)fprintf(stderr, "hyst: unknown command '%s'\n", argv[1]);
+    (void)fprintf(stderr, "hyst: unknown command %s\n", cli_quote(q, argv[1]));
     usage(stderr);
     return 1;
 }
