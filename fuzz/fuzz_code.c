@@ -3,6 +3,7 @@
  * the deadband) of both engines. Arbitrary bytes -> a curve, a code range, a
  * capacity, a deadband and a code sequence, fed to:
  *   C  code instance (deadband set), gets the blocks (hyst_code_process)
+ *      and restores of T's snapshots
  *   T  its twin, sample by sample: C and T must stay bit-identical
  *   Z  code instance never given a deadband: bit-identical to C when the
  *      deadband is 0 (explicitly set)
@@ -23,16 +24,23 @@
  * times the depth of TPs an output hangs on: the double core, the double
  * reference and the code-to-volt conversion (one rounding of x, times
  * max f0') are all far below it; it is 1e-9 of what the bounds measure.
+ * The code variant's outputs are float in every build (types.h): where one
+ * is compared (with the reference or with F), TOL grows by
+ * the same depth times float_bound() (Horner's bound in float on the
+ * normalised curve the code engine evaluates, below); the continuity check
+ * also allows the previous output's own float allowance.
  *
  * Input layout (reads past the end yield zeros):
- *   [0] flags: bit0 raw config, bit1 init through hyst_code_init_curve,
+ *   [0] flags: bit0 raw config, bit1 init through hyst_code_init_curve (f32 curve),
  *       bit2 NULL probes, bit3 corrupted curve kind, bit4 raw code range
  *       (24-bit numbers: DOMAIN errors), bit5 deadband on, bit6 invalid
  *       deadband probes, bit7 with [1] >= 240: capacity 4100 (deep stacks)
  *   [1] capacity (byte % 20: 0 and 1 invalid, 2..19 the bounded use)
  *   config (fuzz_common.h), code range, deadband, then opcodes:
  *   0xF0 reset all, 0xF1 block through hyst_code_process, 0xF2 n nested
- *   reversals (16 n deep, n % 40 else; converging on the middle), 0xF3.. accessors;
+ *   reversals (16 n deep, n % 40 else; converging on the middle), 0xF3
+ *   snapshot twin (T saved, C reset and restored from it, then both go on
+ *   bit for bit; a double instance's snapshot refused), 0xF4.. accessors;
  *   any other byte one code of kind op & 7 (next_code). */
 #include "hyst/hyst.h"
 #include "ref_tcm.h"
@@ -273,6 +281,12 @@ static hyst_status_t init_code(cinst_t *I, const hyst_poly_t *f, size_t cap, int
 
 typedef struct {
     double y_prev, x_prev, b_prev;
+    /* rounding allowance of y_prev beyond that of the current output: 0 for
+     * the double engine (1e-9 of the range dominates both); for the code
+     * variant the float allowance of the previous sample, which grows with
+     * its depth (a deep stack wiped to A0 in one sample: the previous output
+     * carried the rounding of thousands of TPs, the new one none) */
+    double tol_prev;
     int forgot; /* full or deadband: exact comparison off */
     int full;   /* a merge happened since the last reset */
 } track_t;
@@ -283,7 +297,7 @@ static void check_bounded(track_t *t, double x, double y, double yr, double boun
 {
     const double dx = fabs(x - t->x_prev), dy = fabs(y - t->y_prev);
     CHECK(fabs(y - yr) <= bound + tol);
-    CHECK(dy <= q->slope_max * dx + resid + tol);
+    CHECK(dy <= q->slope_max * dx + resid + tol + t->tol_prev);
 }
 
 int LLVMFuzzerInitialize(int *argc, char ***argv)
@@ -416,6 +430,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     tc.forgot = dbc != 0u;
     tf = tc;
     tc.y_prev = T.S.y_lo.f32; /* the code variant's own f0(lo), in float */
+    tc.tol_prev = 1e-9 * range + 2.0 * (tol0 + fl0); /* A0: depth 0 */
 
     for (n = 0; done < MAX_SAMPLES && r.at < r.n; ++n) {
         const unsigned op = rd_u8(&r);
@@ -437,6 +452,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             tc.forgot = tf.forgot = dbc != 0u;
             tc.full = tf.full = 0;
             tc.b_prev = tf.b_prev = 0.0;
+            tc.tol_prev = 1e-9 * range + 2.0 * (tol0 + fl0);
             last_code = clo;
             continue;
         }
@@ -563,6 +579,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                     tf.b_prev = bf;
                 }
                 tc.x_prev = tf.x_prev = x;
+                tc.tol_prev = ftol;
                 tc.y_prev = y;
                 tf.y_prev = yf;
                 if (op != 0xF1u) CHECK(memcmp(&ys[0], &y, sizeof(y)) == 0 && same_code(&C, &T));

@@ -254,6 +254,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 size_t len = 0;
                 CHECK(hyst_snapshot_save(&A.S, snap, sizeof(snap), &len) == HYST_OK);
                 CHECK(len == hyst_snapshot_size(&A.S) && len <= HYST_SNAPSHOT_SIZE(cap));
+                /* format v3: octets per real, then the variant */
+                CHECK(snap[4] == HYST_SNAPSHOT_VERSION && snap[6] == sizeof(hyst_real_t) &&
+                      snap[7] == HYST_DEFAULT_VARIANT);
                 CHECK(hyst_snapshot_restore(&B.S, snap, len) == HYST_OK);
                 CHECK(memcmp(B.xl, A.xl, A.S.n_ltp * sizeof(hyst_real_t)) == 0);
                 CHECK(hyst_snapshot_save(&A.S, snap, len - 1u, NULL) == HYST_ERR_NOSPACE);

@@ -597,8 +597,8 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
         return;
     }
     CHECK(hyst_curve_check(&c) == HYST_OK);
-    CHECK(c.kind == HYST_CURVE_PWL && c.lo.HYST_R == qx[0] && c.hi.HYST_R == qx[n - 1u] && c.y_lo.HYST_R == qy[0] &&
-          c.y_hi.HYST_R == qy[n - 1u]);
+    CHECK(c.kind == HYST_CURVE_PWL && c.lo.HYST_R == qx[0] && c.hi.HYST_R == qx[n - 1u] &&
+          c.y_lo.HYST_R == qy[0] && c.y_hi.HYST_R == qy[n - 1u]);
     if (flags & 8u) {
         CHECK(hyst_curve_inverse(NULL, &c) == HYST_ERR_NULL);
         back = c;
@@ -643,7 +643,8 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
         return;
     }
     CHECK(st == HYST_OK && inv.kind == HYST_CURVE_PWL_INV && hyst_curve_check(&inv) == HYST_OK);
-    CHECK(inv.lo.HYST_R == c.y_lo.HYST_R && inv.hi.HYST_R == c.y_hi.HYST_R && inv.y_lo.HYST_R == c.lo.HYST_R && inv.y_hi.HYST_R == c.hi.HYST_R);
+    CHECK(inv.lo.HYST_R == c.y_lo.HYST_R && inv.hi.HYST_R == c.y_hi.HYST_R &&
+          inv.y_lo.HYST_R == c.lo.HYST_R && inv.y_hi.HYST_R == c.hi.HYST_R);
     CHECK(hyst_curve_inverse(&back, &inv) == HYST_OK && back.kind == HYST_CURVE_PWL);
     CHECK(back.u.pwl.x.HYST_R == qx && back.u.pwl.y.HYST_R == qy && back.lo.HYST_R == c.lo.HYST_R &&
           back.hi.HYST_R == c.hi.HYST_R);
@@ -699,7 +700,8 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
             }
             if (hyst_status(&Ti.S) == HYST_WARN_FULL) run_ok = 0;
             CHECK(in_domain(xd, c.lo.HYST_R, c.hi.HYST_R)); /* see fuzz_inverse() */
-            CHECK((hyst_status(&Ti.S) == HYST_WARN_CLAMPED) == (yd < c.y_lo.HYST_R || yd > c.y_hi.HYST_R) ||
+            CHECK((hyst_status(&Ti.S) == HYST_WARN_CLAMPED) ==
+                      (yd < c.y_lo.HYST_R || yd > c.y_hi.HYST_R) ||
                   hyst_status(&Ti.S) == HYST_WARN_FULL);
             {
                 const double yf = hyst_step(&T.S, xd);
@@ -708,7 +710,8 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
                  * hangs on carry their own rounding (as in fuzz_hyst.c). */
                 if (run_ok) {
                     const double depth = (double)hyst_tp_count(&T.S) + 2.0;
-                    CLOSE("pwl_tcm_round_trip", fabs(yf - clampd(yd, c.y_lo.HYST_R, c.y_hi.HYST_R)), depth * tol);
+                    CLOSE("pwl_tcm_round_trip", fabs(yf - clampd(yd, c.y_lo.HYST_R, c.y_hi.HYST_R)),
+                          depth * tol);
                 }
             }
         }
@@ -865,7 +868,8 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
                  * model missed yd by 1.2e-5 of the range). */
                 if (run_ok) {
                     const double depth = (double)hyst_tp_count(&T.S) + 2.0;
-                    CLOSE("poly_inv_tcm_round_trip", fabs(yf - clampd(yd, cf.y_lo.HYST_R, cf.y_hi.HYST_R)), depth * tol);
+                    CLOSE("poly_inv_tcm_round_trip",
+                          fabs(yf - clampd(yd, cf.y_lo.HYST_R, cf.y_hi.HYST_R)), depth * tol);
                 }
             }
         }

@@ -237,8 +237,9 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
         for (k = 1u; k <= n; ++k) {
             bound += hyst_wide_abs(g[k]);
         }
-        if (!hyst_num_set(&probe, variant, hi - lo)) {
-            return HYST_ERR_DOMAIN;
+        if (!hyst_num_set(&probe, variant, hi - lo) ||
+            !(hyst_num_get(&out.lo, variant) < hyst_num_get(&out.hi, variant))) {
+            return HYST_ERR_DOMAIN; /* the span overflows, or lo and hi round together */
         }
         if (!hyst_wide_is_finite(bound) || !hyst_num_set(&probe, variant, bound) ||
             !hyst_num_set(&probe, variant, 2 * ymax + bound)) {

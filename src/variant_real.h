@@ -94,13 +94,14 @@ hyst_status_t NUM_NAME(init_inverse_)(hyst_tcm_t *S, hyst_curve_t *inv, const hy
                                       size_t capacity, unsigned long layout)
 {
     hyst_curve_t curve;
+    /* curve errors first, then the instance's (inverse.h) */
     hyst_status_t st = inv == NULL ? HYST_ERR_NULL : hyst_curve_poly_(&curve, f0, NUM_VARIANT, layout);
+    if (st == HYST_OK) {
+        st = hyst_curve_inverse(&curve, &curve);
+    }
     if (st == HYST_OK) {
         st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T), sizeof(NUM_T),
                                layout);
-    }
-    if (st == HYST_OK) {
-        st = hyst_curve_inverse(&curve, &curve);
     }
     if (st != HYST_OK) {
         return st;

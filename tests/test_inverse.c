@@ -411,6 +411,14 @@ static void test_init_inverse_checks(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(&Hinv, &Cinv, NULL, il, jl, ir, jr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(&Hinv, &Cinv, &f, il, jl, NULL, jr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_CAPACITY, hyst_init_inverse(&Hinv, &Cinv, &f, il, jl, ir, jr, 1u));
+    {   /* a curve error is reported before an instance error: this f0's slope
+         * underflows in float, so its inverse does not exist there */
+        static const hyst_poly_t flat32 = {1u, 0.0, 1.0, {1e-300, 0.0}};
+        static float fl[4][CAP];
+        hyst_curve_t keep;
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_INVERTIBLE,
+                              hyst_f32_init_inverse(&Hinv, &keep, &flat32, fl[0], fl[1], fl[2], fl[3], 1u));
+    }
     f.coeffs[0] = HYST_REAL_C(-1.0); /* -x^3 + ...: falls on [0, 40] */
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_INCREASING, hyst_init_inverse(&Hinv, &Cinv, &f, il, jl, ir, jr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, &paper_eq20, il, jl, ir, jr, CAP));

@@ -346,6 +346,11 @@ static void test_domain_or_outputs_that_overflow_the_type_are_refused(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_init(&T, &wide32, b[0], b[1], b[2], b[3], CAP));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_f64_init(&T, &wide64, b[0], b[1], b[2], b[3], CAP));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_f32_init(&T, &tall32, a[0], a[1], a[2], a[3], CAP));
+    {   /* lo and hi that round to one float: an empty domain in f32, fine in f64 */
+        static const hyst_poly_t narrow = {1u, 1.0, 1.0 + 1e-10, {1.0, 0.0}};
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_f32_init(&T, &narrow, a[0], a[1], a[2], a[3], CAP));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_init(&T, &narrow, b[0], b[1], b[2], b[3], CAP));
+    }
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_init(&T, &tall32, b[0], b[1], b[2], b[3], CAP));
     /* what the f64 instance accepted stays finite over the whole domain */
     TEST_ASSERT_TRUE(hyst_f64_step(&T, 1.0) == 6e38 && hyst_status(&T) == HYST_OK);
