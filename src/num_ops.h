@@ -9,10 +9,10 @@
 #error "num_ops.h: include a number type descriptor (src/num_f32.h, src/num_f64.h) first"
 #endif
 
-static inline NUM_T NUM_NAME(abs)(NUM_T v) { return v < 0 ? -v : v; }
+HYST_INLINE NUM_T NUM_NAME(abs)(NUM_T v) { return v < 0 ? -v : v; }
 
 /* Finite without libm. */
-static inline int NUM_NAME(is_finite)(NUM_T v)
+HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
 {
     const NUM_T z = v - v;
     return z == z;

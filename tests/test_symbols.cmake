@@ -37,7 +37,8 @@ foreach(lib IN ITEMS ${LIB} ${LIB2})
         elseif(line MATCHES "^[0-9a-fA-F]+ T _?hyst_")
             math(EXPR defined_hyst "${defined_hyst} + 1")
         endif()
-        if(line MATCHES "^[0-9a-fA-F]+ t _?([A-Za-z_][A-Za-z0-9_]*)")
+        if(line MATCHES "^[0-9a-fA-F]+ t _?([A-Za-z_][A-Za-z0-9_]*)" AND
+           NOT CMAKE_MATCH_1 MATCHES "^(sub_[DI]_|_GLOBAL_)") # sanitizer module constructors
             if(CMAKE_MATCH_1 IN_LIST statics)
                 list(APPEND twice ${CMAKE_MATCH_1})
             endif()
