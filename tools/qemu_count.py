@@ -28,7 +28,7 @@ instruction; later pulses get net = raw - cal_raw + 1, the instructions of
 the measured callee from its first instruction to its return.
 
 Machines: the image runs on the QEMU MPS2 machine of its core (BOARDS), read
-from the ELF's build attributes (Tag_CPU_name, arm-none-eabi-readelf -A):
+from the ELF's build attributes (arm-none-eabi-readelf -A; machine_of()):
 mps2-an385 for a Cortex-M3, mps2-an386 for a Cortex-M4 (also the default
 when the attributes cannot be read), mps2-an500 for a Cortex-M7; --machine
 overrides it.
@@ -116,8 +116,6 @@ TRACE_PC_RE = re.compile(rb"\[[0-9a-fA-F]+/([0-9a-fA-F]+)/")
 UNDONE = (b"cpu_io_recompile: rewound", b"Stopped execution of TB chain")
 # -d in_asm (capstone): "0x00001a84:  f8d2 3d88  ldr.w    r3, [r2, #0xd88]"
 IN_ASM_RE = re.compile(rb"^0x([0-9a-fA-F]+):\s+((?:[0-9a-fA-F]{4} )*[0-9a-fA-F]{4})\s+(\S+)[ \t]*(.*?)\s*$")
-
-
 
 
 class Pulse:
@@ -286,7 +284,7 @@ def main(argv=None):
     ap.add_argument("--profile-out", help="index<TAB>address<TAB>count for --profile")
     ap.add_argument("--quiet", action="store_true", help="no per-pulse lines")
     ap.add_argument("--machine", choices=sorted(BOARDS),
-                    help="QEMU machine (default: from the ELF's Tag_CPU_name)")
+                    help="QEMU machine (default: from the ELF's build attributes)")
     args = ap.parse_args(argv)
     try:
         wanted = [int(i) for i in args.profile.split(",") if i.strip()]
