@@ -3,7 +3,7 @@
  * @brief Board contract used by hyst tests and benchmarks (not the library).
  *
  * The library itself needs none of this; tests and benchmarks do. Each port
- * (port/mps2-an386, port/host, port/template) implements every function.
+ * (port/mps2, port/host, port/template) implements every function.
  */
 #ifndef HYST_PORT_H
 #define HYST_PORT_H

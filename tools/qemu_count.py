@@ -27,8 +27,23 @@ the same rank. Calibration: a pulse whose first label field starts with
 instruction; later pulses get net = raw - cal_raw + 1, the instructions of
 the measured callee from its first instruction to its return.
 
+Machines: the image runs on the QEMU MPS2 machine of its core (BOARDS), read
+from the ELF's build attributes (arm-none-eabi-readelf -A; machine_of()):
+mps2-an385 for a Cortex-M3, mps2-an386 for a Cortex-M4 (also the default
+when the attributes cannot be read), mps2-an500 for a Cortex-M7; --machine
+overrides it.
+
+Instruction hook (used by tools/cycle_model.py): measure(..., hook=h) also
+logs QEMU's disassembly of each translated instruction (-d in_asm; with
+-singlestep one per block) into Run.disasm {pc: (bytes, mnemonic,
+operands)} and calls h.begin(index) at each rising edge, h.insn(pc, disasm)
+for each instruction of the pulse in execution order (an instruction QEMU
+rewound or stopped is withdrawn before it is passed on), and h.end(pulse)
+at the falling edge, with the same instructions the counts include.
+
 Usage:
   qemu_count.py ELF [--csv out.csv] [--profile N,M --profile-out f.tsv]
+                [--machine mps2-an385|mps2-an386|mps2-an500]
 Prints one line per pulse: index raw net label... ; exit status is the
 firmware's, or 2 on a tool error. Import: measure(elf, ...) -> Run.
 """
@@ -39,12 +54,58 @@ import subprocess
 import sys
 import threading
 
-QEMU_ARGS = ["-M", "mps2-an386", "-cpu", "cortex-m4", "-nographic",
-             "-monitor", "none", "-serial", "none",
-             "-semihosting-config", "enable=on,target=native",
-             "-icount", "shift=0",
-             "-d", "exec,nochain", "-singlestep",
-             "-trace", "mps2_fpgaio_write"]
+
+class ToolError(Exception):
+    pass
+
+
+# QEMU MPS2 machine -> the only CPU it accepts.
+BOARDS = {"mps2-an385": "cortex-m3", "mps2-an386": "cortex-m4", "mps2-an500": "cortex-m7"}
+DEFAULT_MACHINE = "mps2-an386"
+# ELF Tag_CPU_name (lower case) -> machine.
+_CPU_TO_MACHINE = {"cortex-m3": "mps2-an385", "cortex-m4": "mps2-an386",
+                   "cortex-m7": "mps2-an500"}
+
+
+def qemu_args(machine=DEFAULT_MACHINE, in_asm=False):
+    """QEMU options (without the program and -kernel) for machine."""
+    if machine not in BOARDS:
+        raise ToolError("unknown machine %s (expected one of %s)"
+                        % (machine, ", ".join(sorted(BOARDS))))
+    return ["-M", machine, "-cpu", BOARDS[machine], "-nographic",
+            "-monitor", "none", "-serial", "none",
+            "-semihosting-config", "enable=on,target=native",
+            "-icount", "shift=0",
+            "-d", "exec,nochain,in_asm" if in_asm else "exec,nochain", "-singlestep",
+            "-trace", "mps2_fpgaio_write"]
+
+
+QEMU_ARGS = qemu_args()  # the default machine's options (kept for importers)
+
+
+def machine_of(elf, readelf="arm-none-eabi-readelf"):
+    """The MPS2 machine for elf's core, from its build attributes
+    (readelf -A); DEFAULT_MACHINE when they cannot be read.
+
+    A linked image often carries the architecture as Tag_CPU_name ("7E-M",
+    merged from newlib's objects), so the architecture and the FPU decide:
+    ARMv7-M -> Cortex-M3, ARMv7E-M with FPv5 -> Cortex-M7, other ARMv7E-M ->
+    Cortex-M4."""
+    try:
+        out = subprocess.run([readelf, "-A", elf], capture_output=True, text=True,
+                             check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return DEFAULT_MACHINE
+    m = re.search(r'Tag_CPU_name:\s*"?([A-Za-z0-9-]+)', out)
+    if m and m.group(1).lower() in _CPU_TO_MACHINE:
+        return _CPU_TO_MACHINE[m.group(1).lower()]
+    arch = re.search(r"Tag_CPU_arch:\s*(\S+)", out)
+    fp = re.search(r"Tag_FP_arch:\s*(.*)", out)
+    if arch and arch.group(1) == "v7":
+        return "mps2-an385"
+    if arch and arch.group(1) == "v7E-M":
+        return "mps2-an500" if fp and "FPv5" in fp.group(1) else "mps2-an386"
+    return DEFAULT_MACHINE
 
 # "mps2_fpgaio_write MPS2 FPGAIO write: offset 0x0 data 0x1 size 4", maybe
 # prefixed by "pid@time:" depending on the QEMU version.
@@ -53,10 +114,8 @@ FPGAIO_RE = re.compile(rb"mps2_fpgaio_write.*offset 0x([0-9a-fA-F]+) data 0x([0-
 TRACE_PC_RE = re.compile(rb"\[[0-9a-fA-F]+/([0-9a-fA-F]+)/")
 # -d exec lines saying the block logged last did not execute (QEMU 7.2).
 UNDONE = (b"cpu_io_recompile: rewound", b"Stopped execution of TB chain")
-
-
-class ToolError(Exception):
-    pass
+# -d in_asm (capstone): "0x00001a84:  f8d2 3d88  ldr.w    r3, [r2, #0xd88]"
+IN_ASM_RE = re.compile(rb"^0x([0-9a-fA-F]+):\s+((?:[0-9a-fA-F]{4} )*[0-9a-fA-F]{4})\s+(\S+)[ \t]*(.*?)\s*$")
 
 
 class Pulse:
@@ -74,25 +133,35 @@ class Run:
         self.exit_code = None
         self.instructions = 0
         self.profile = {}
+        self.machine = DEFAULT_MACHINE
+        self.disasm = {}
 
 
-def _parse_log(stream, run, profile):
+def _parse_log(stream, run, profile, hook=None):
     led = 0
     count = 0
     total = 0
     last_key = None
     prof = run.profile
+    disasm = run.disasm
+    pending = None  # hook: the pc logged last inside the pulse, not yet passed on
     for line in stream:
         if line.startswith(b"Trace"):
             total += 1
             if led:
                 count += 1
                 last_key = None
-                if len(run.pulses) in profile:
+                if hook is not None or len(run.pulses) in profile:
                     m = TRACE_PC_RE.search(line)
                     if m:
-                        last_key = (len(run.pulses), int(m.group(1), 16))
-                        prof[last_key] = prof.get(last_key, 0) + 1
+                        pc = int(m.group(1), 16)
+                        if len(run.pulses) in profile:
+                            last_key = (len(run.pulses), pc)
+                            prof[last_key] = prof.get(last_key, 0) + 1
+                        if hook is not None:
+                            if pending is not None:
+                                hook.insn(pending, disasm.get(pending))
+                            pending = pc
             continue
         if line.startswith(UNDONE):
             # The block just logged did not run: an I/O access rewound it to
@@ -102,33 +171,55 @@ def _parse_log(stream, run, profile):
             total -= 1
             if led:
                 count -= 1
+                pending = None
                 if last_key is not None:
                     prof[last_key] -= 1
                     last_key = None
             continue
+        if hook is not None and line.startswith(b"0x"):
+            m = IN_ASM_RE.match(line)
+            if m:
+                disasm[int(m.group(1), 16)] = (
+                    len(m.group(2).replace(b" ", b"")) // 2,
+                    m.group(3).decode("ascii", "replace"),
+                    m.group(4).decode("ascii", "replace"))
+                continue
         m = FPGAIO_RE.search(line)
         if m is None or int(m.group(1), 16) != 0:
             continue
         bit = int(m.group(2), 16) & 1
         if bit and not led:
             count = 0
+            pending = None
+            if hook is not None:
+                hook.begin(len(run.pulses))
         elif led and not bit:
-            run.pulses.append(Pulse(len(run.pulses), count))
+            pulse = Pulse(len(run.pulses), count)
+            run.pulses.append(pulse)
+            if hook is not None:
+                if pending is not None:
+                    hook.insn(pending, disasm.get(pending))
+                    pending = None
+                hook.end(pulse)
         led = bit
     run.instructions = total
     if led:
         raise ToolError("the pin was still high when the firmware ended")
 
 
-def measure(elf, qemu="qemu-system-arm", timeout=900, profile=()):
+def measure(elf, qemu="qemu-system-arm", timeout=900, profile=(), machine=None, hook=None):
     """Runs elf under QEMU; returns a Run with labelled pulses.
 
     profile: pulse indices whose instructions are also counted per address,
-    in Run.profile[(index, pc)]."""
+    in Run.profile[(index, pc)]. machine: the QEMU MPS2 machine (BOARDS);
+    None reads it from the ELF (machine_of). hook: see the module text."""
     if not os.path.isfile(elf):
         raise ToolError("no such firmware image: %s" % elf)
-    cmd = [qemu] + QEMU_ARGS + ["-kernel", elf]
+    if machine is None:
+        machine = machine_of(elf)
+    cmd = [qemu] + qemu_args(machine, in_asm=hook is not None) + ["-kernel", elf]
     run = Run()
+    run.machine = machine
     try:
         proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                 stdin=subprocess.DEVNULL)
@@ -140,7 +231,7 @@ def measure(elf, qemu="qemu-system-arm", timeout=900, profile=()):
     timer = threading.Timer(timeout, proc.kill)
     timer.start()
     try:
-        _parse_log(proc.stderr, run, frozenset(profile))
+        _parse_log(proc.stderr, run, frozenset(profile), hook)
     finally:
         proc.stderr.close()
         run.exit_code = proc.wait()
@@ -192,10 +283,12 @@ def main(argv=None):
                     help="comma-separated pulse indices to count per address")
     ap.add_argument("--profile-out", help="index<TAB>address<TAB>count for --profile")
     ap.add_argument("--quiet", action="store_true", help="no per-pulse lines")
+    ap.add_argument("--machine", choices=sorted(BOARDS),
+                    help="QEMU machine (default: from the ELF's build attributes)")
     args = ap.parse_args(argv)
     try:
         wanted = [int(i) for i in args.profile.split(",") if i.strip()]
-        run = measure(args.elf, args.qemu, args.timeout, wanted)
+        run = measure(args.elf, args.qemu, args.timeout, wanted, machine=args.machine)
     except ToolError as e:
         print("qemu_count: %s" % e, file=sys.stderr)
         return 2

@@ -1,6 +1,6 @@
 /**
  * @file semihost.h
- * @brief Arm semihosting calls (bkpt 0xAB) used by the mps2-an386 port.
+ * @brief Arm semihosting calls (bkpt 0xAB) used by port/mps2.
  *
  * Semihosting needs QEMU (-semihosting-config enable=on) or a debugger:
  * on bare hardware without one, bkpt escalates to HardFault.

@@ -1,7 +1,7 @@
 /**
  * @file hyst_port_mps2.c
- * @brief hyst_port.h for mps2-an386 under QEMU: semihosting console and
- * files, FPGAIO LED0 as the timing pin.
+ * @brief hyst_port.h for the MPS2 boards under QEMU (mps2-an385, -an386,
+ * -an500): semihosting console and files, FPGAIO LED0 as the timing pin.
  */
 #include "hyst_port.h"
 #include "semihost.h"
@@ -11,8 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* FPGAIO LED register: bit 0 is LED0. QEMU logs writes with
- * -trace mps2_fpgaio_write, which makes the timed regions visible. */
+/* FPGAIO LED register: bit 0 is LED0, at the same address on AN385, AN386
+ * and AN500. QEMU logs writes with -trace mps2_fpgaio_write, which makes the
+ * timed regions visible. */
 #define FPGAIO_LED (*(volatile uint32_t *)0x40028000u)
 
 void hyst_port_init(void) { FPGAIO_LED = 0u; }

@@ -1,16 +1,25 @@
 /**
  * @file startup.c
- * @brief Vector table and reset code for mps2-an386 (Cortex-M4F) under QEMU.
+ * @brief Vector table and reset code for the MPS2 boards of port/mps2
+ * (AN385 Cortex-M3, AN386 Cortex-M4F, AN500 Cortex-M7) under QEMU.
  *
- * Replaces crt0 (link with -nostartfiles). Reset order matters: the FPU is
- * enabled before anything that might touch an FP register.
+ * Replaces crt0 (link with -nostartfiles). Reset order matters: with an FPU
+ * (__ARM_FP: -mfpu=... with a hard or softfp float ABI) it is enabled before
+ * anything that might touch an FP register. Without one (Cortex-M3, or a
+ * -mfloat-abi=soft build) no FP instruction is ever emitted and CPACR is
+ * left alone. The fault handler uses Thumb-2 (IT, MRS with a condition): the
+ * port needs ARMv7-M or ARMv7E-M; ARMv6-M (Cortex-M0/M0+) has no port here.
  */
 #include "semihost.h"
+
+#if !defined(__ARM_ARCH_7M__) && !defined(__ARM_ARCH_7EM__)
+#error "port/mps2 needs an ARMv7-M/ARMv7E-M core (cortex-m3, cortex-m4f, cortex-m7)"
+#endif
 
 #include <stdint.h>
 #include <stdlib.h>
 
-/* Linker script symbols (mps2_an386.ld). */
+/* Linker script symbols (mps2_sections.ld). */
 extern uint32_t __stack_top[];
 extern uint32_t __data_load[], __data_start[], __data_end[];
 extern uint32_t __bss_start[], __bss_end[];
@@ -56,18 +65,23 @@ static const vector_t vectors[16 + 32] = {
     {0},
     {PendSV_Handler},
     {SysTick_Handler},
-    /* AN386 has 32 external interrupts; none is used, all are reported. */
+    /* AN385, AN386 and AN500 have 32 external interrupts; none is used,
+     * all are reported. */
     IRQ4, IRQ4, IRQ4, IRQ4, IRQ4, IRQ4, IRQ4, IRQ4
 };
 
+#if defined(__ARM_FP)
 #define SCB_CPACR (*(volatile uint32_t *)0xE000ED88u)
+#endif
 
 void Reset_Handler(void)
 {
+#if defined(__ARM_FP)
     /* Full access to CP10/CP11 (the FPU); the barriers make it take effect
      * before the next instruction. */
     SCB_CPACR |= 0xFu << 20;
     __asm__ volatile("dsb\n\tisb" ::: "memory");
+#endif
 
     const uint32_t *src = __data_load;
     for (uint32_t *dst = __data_start; dst < __data_end; ++dst) {

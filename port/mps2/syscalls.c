@@ -24,7 +24,7 @@ int _getpid(void);
 void *_sbrk(ptrdiff_t incr);
 void _exit(int status);
 
-/* mps2_an386.ld */
+/* mps2_sections.ld */
 extern char __heap_start[], __heap_end[];
 
 int _write(int fd, const void *buf, size_t len)
