@@ -344,7 +344,7 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t
 /* Bit-identical numbers. */
 static int same_num(const hyst_num_t *a, const hyst_num_t *b, num_type_t t)
 {
-    unsigned char p[8], q[8];
+    unsigned char p[8] = {0}, q[8] = {0};
     unsigned k, n = t == NUM_F64 ? 8u : 4u;
     put_num(p, a, t);
     put_num(q, b, t);
