@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Toolchain: bare-metal Arm Cortex-M (arm-none-eabi-gcc, newlib). HYST_CPU
 # picks the core; the tests run in the QEMU MPS2 machine of that core.
 #   cmake -B build-m4 -DCMAKE_TOOLCHAIN_FILE=cmake/arm-none-eabi.cmake

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Toolchain: 8-bit AVR (avr-gcc, Debian gcc-avr + avr-libc), compile-only
 # portability check of the core: 16-bit int, 16-bit size_t, and double is
 # 32 bits there (double == float). Used by tools/portability.

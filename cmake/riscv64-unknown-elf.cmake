@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Toolchain: bare-metal RISC-V (riscv64-unknown-elf-gcc, Debian
 # gcc-riscv64-unknown-elf), compile-only portability check of the core for a
 # 32-bit MCU with a single-precision FPU (rv32imafc/ilp32f; HYST_RISCV_ARCH

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Size step of the size presets (m0-size, m7-size): injected into the hyst
 # project with CMAKE_PROJECT_hyst_INCLUDE (the presets set it), so that the
 # root CMakeLists.txt needs no size logic. Adds the target hyst_size, built

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Provides the target `unity` (Unity 2.6.1, ThrowTheSwitch, MIT).
 # Either -DUNITY_ROOT=<checkout> (a folder holding unity.c, or src/unity.c), or
 # the pinned PyPI wheel vyperling==0.0.4, whose vyperling/c/ ships Unity 2.6.1:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer harness for the integer-code variant (hyst/code.h) and the
  * bounded-memory features (capacity overflow merges, hyst_error_bound,
  * the deadband) of both engines. Arbitrary bytes -> a curve, a code range, a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the fuzz harnesses: a byte reader that yields zeros past the
  * end (so every input is valid), CHECK (abort, which libFuzzer reports as a
  * crash), the configuration reader and Horner's rounding bound. Static

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer harness: arbitrary bytes -> a configuration, a capacity and a
  * sample sequence, fed to every public entry point; on valid configurations
  * the core (built with HYST_USE_DOUBLE) is compared with the linear-scan

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer harness for the modules around the TCM core: the PI model and
  * its inverse, piecewise-linear curves, inverse curves and the compensator,
  * and the identification. fuzz_hyst.c covers the core, polynomial curves and

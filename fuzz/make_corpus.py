@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes the seed corpora (small, committed): fuzz/corpus/ for fuzz_hyst.c,
 fuzz/corpus_models/ for fuzz_models.c and fuzz/corpus_code/ for fuzz_code.c (layouts in their header comments).
 regress_* files are fuzzer finds, kept by hand, never written here."""

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file hyst_port.h
  * @brief Board contract used by hyst tests and benchmarks (not the library).

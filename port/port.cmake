@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Selects the port that tests, benchmarks and examples link (never the core):
 # sets HYST_PORT_TARGET. Included by the root CMakeLists.txt only when tests
 # or benchmarks are built: a firmware that add_subdirectory()s hyst with

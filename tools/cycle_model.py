@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Estimated Cortex-M3/M4 cycles of the exact instruction traces QEMU gives.
 
 tools/qemu_count.py counts the instructions between two edges of the timing

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Exact instruction counts between GPIO edges of a firmware image under QEMU.
 
 Runs an mps2-an386 ELF with one instruction per translation block

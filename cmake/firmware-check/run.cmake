@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Builds cmake/firmware-check for each core without a test port (Cortex-M0,
 # Cortex-M0+) and for the Cortex-M3 (a port exists, but must not be built).
 #   cmake -P cmake/firmware-check/run.cmake        (from the repository root)

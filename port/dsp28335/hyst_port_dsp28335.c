@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file hyst_port_dsp28335.c
  * @brief hyst_port.h for a TI TMS320F28335 (C28x + FPU, 150 MHz): a GPIO pin

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file hyst_port_host.c
  * @brief hyst_port.h for a POSIX host: stdio console, fopen() files, and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file hyst_port_host.h
  * @brief Host-only additions to hyst_port.h.

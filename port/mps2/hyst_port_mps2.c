@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file hyst_port_mps2.c
  * @brief hyst_port.h for the MPS2 boards under QEMU (mps2-an385, -an386,

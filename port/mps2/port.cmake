@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Port for QEMU's MPS2 boards: mps2-an385 (Cortex-M3), mps2-an386
 # (Cortex-M4F), mps2-an500 (Cortex-M7). Use with cmake/arm-none-eabi.cmake:
 #   set(HYST_MPS2_BOARD mps2-an386)        # the QEMU machine; default an386

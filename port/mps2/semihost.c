@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file semihost.c
  * @brief Arm semihosting (v2) over bkpt 0xAB for Thumb M-profile cores.

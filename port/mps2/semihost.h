@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file semihost.h
  * @brief Arm semihosting calls (bkpt 0xAB) used by port/mps2.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file startup.c
  * @brief Vector table and reset code for the MPS2 boards of port/mps2

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file syscalls.c
  * @brief The newlib system calls printf/exit need, over semihosting.

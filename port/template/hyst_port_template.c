@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /**
  * @file hyst_port_template.c
  * @brief Starting point for a new board: copy it to port/<board>/ and fill

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Runs `hyst` with bad input and checks that it fails properly: non-zero exit,
 # nothing on standard output, and a message on standard error matching EXPECT.
 #   cmake -DTOOL=<hyst> -DARGS="fit|--degree|0|file" -DEXPECT=<regex> -P expect_fail.cmake

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Runs `hyst` on good input and checks that it succeeds: exit status 0 and
 # standard output matching EXPECT (standard error is shown, not checked).
 #   cmake -DTOOL=<hyst> -DARGS="pi|--weights|1|file" -DEXPECT=<regex> -P expect_ok.cmake

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # `hyst fit --header NAME` replaces NAME.h only when the whole command
 # succeeds: the header goes to a temporary file in the same directory,
 # synced, then renamed over NAME.h. A failure (header write error, file-size

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Input that cannot be a committed text file (raw bytes, NUL, 1 MB lines, ...):
 # generated here, then `hyst` must fail as expect_fail.cmake checks (exit
 # status != 0, nothing on standard output, the expected message on standard

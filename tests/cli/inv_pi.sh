@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # `hyst inv` and `hyst pi` against things known independently of them:
 #  - inv undoes sim: sim of an input sequence, then inv of its outputs, gives
 #    the inputs back (relative 1e-6), on smooth nested loops and random jumps;

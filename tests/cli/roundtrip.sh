@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Round trip: `hyst sim` through the paper's Eq. 20 cubic, then `hyst fit`
 # must return the coefficients (both estimators), and the generated header
 # must compile cleanly in float and double builds.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # sim, inv and pi read one line at a time, in constant memory: one million
 # samples (a whole-file reader needs 16 bytes per sample, and an engine sized
 # for the sample count 16 more) go through with 24 MB of address space, from

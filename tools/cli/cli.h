@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The `hyst` host tool: subcommands and the helpers they share.
  *
  * A subcommand is a function cmd_<name>(argc, argv) (argv[0] is its name)

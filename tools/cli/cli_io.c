@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the subcommands of `hyst`: messages, option parsing, number
  * parsing and the sample-to-line runner (the data file reader is cli_read.c). */
 #include "cli.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The data file reader of `hyst`, one line at a time: columns separated by
  * blanks, ',' or ';' (with --decimal-comma: blanks or ';', and ',' is the
  * decimal mark); '#' lines and blank lines skipped. Whatever would be read

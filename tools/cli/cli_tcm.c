@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by `hyst sim` and `hyst inv`: the same options (--poly, --range,
  * --xcol, --tp, FILE) and the same engine, forward or on the inverse curve. */
 #include "cli.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hyst fit: identify f0 from measured input/output columns. */
 #include "cli.h"
 #include "hyst/hyst.h"

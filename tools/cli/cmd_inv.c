@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hyst inv: the compensator (inverse TCM), one drive input per desired output. */
 #include "cli.h"
 

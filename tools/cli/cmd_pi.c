@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hyst pi: a Prandtl-Ishlinskii model over input samples, one output per line. */
 #include "cli.h"
 #include "hyst/hyst.h"

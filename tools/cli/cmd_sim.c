@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hyst sim: the TCM model over input samples, one output per line. */
 #include "cli.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `hyst`: command-line front end of the hyst library (host only).
  * Subcommands live in cmd_<name>.c; add one by adding a row to the table. */
 #include "cli.h"
