@@ -141,6 +141,27 @@ def engine_flash(build_m4, opt, nm_tool, variant="hyst_f32"):
     return total
 
 
+def m4_cycles(elf, qemu):
+    """Largest estimated cycles of the typical and of the wipe-out/clamped
+    samples, from tools/cycle_model.py --summary (kind count insns cycles ratio)."""
+    tool = os.path.join(HERE, "..", "tools", "cycle_model.py")
+    out = subprocess.run([sys.executable, tool, elf, "--summary", "--qemu", qemu],
+                         capture_output=True, text=True, check=True).stdout
+    typical = worst = 0
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) != 5 or line.startswith("#"):
+            continue
+        cycles = int(parts[3].split("-")[-1])
+        if parts[0] in ("typ_fall", "typ_rise"):
+            typical = max(typical, cycles)
+        elif re.match(r"(exh_|show_)?wipe_|clamp", parts[0]):
+            worst = max(worst, cycles)
+    if not typical or not worst:
+        raise RuntimeError("cycle_model: no typical or worst samples in its summary")
+    return typical, worst
+
+
 def deepest_pulse(run):
     """Index of the costliest wipe-out or clamped pulse of a run."""
     cands = [i for i, p in enumerate(run.pulses)
@@ -294,6 +315,12 @@ def main():
             worst_text = annotate(elf, prof, [idx], objdump)
     with open(os.path.join(args.out, "worst_path.txt"), "w") as f:
         f.write(worst_text + annotate(tcm_elf, tcm, SHOWCASE, objdump))
+
+    # Estimated cycles (tools/cycle_model.py: Cortex-M4 pipeline model, zero
+    # wait states) of the budget image's typical and worst samples.
+    typ_c, worst_c = m4_cycles(os.path.join(args.m4, "bench", "bench_budget"), qemu)
+    put("m4_typical_cycles", typ_c)
+    put("m4_worst_cycles_nu4096", worst_c)
 
     with open(os.path.join(args.out, "summary.txt"), "w") as f:
         for k, v in summary:
