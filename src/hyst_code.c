@@ -40,18 +40,14 @@ static int hyst_code_admit(hyst_tcm_t *S, uint_least32_t code, hyst_code_word_t 
 #define TCM_G_OTHER(c, d) hyst_f32_curve_g_other_((c), (d))
 #include "tcm_engine.h"
 
-hyst_status_t hyst_code_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve,
-                                    uint_least32_t code_lo, uint_least32_t code_hi,
-                                    hyst_code_word_t *xltp, float *yltp, hyst_code_word_t *xrtp,
-                                    float *yrtp, size_t capacity, unsigned long layout)
+/* Checked set-up of an instance whose memory and curve were checked: the
+ * code range (HYST_ERR_DOMAIN) and the unit of G, then attach. */
+static hyst_status_t hyst_code_attach_range(hyst_tcm_t *S, const hyst_curve_t *curve,
+                                            uint_least32_t code_lo, uint_least32_t code_hi,
+                                            hyst_code_word_t *xltp, float *yltp,
+                                            hyst_code_word_t *xrtp, float *yrtp, size_t capacity)
 {
-    const hyst_status_t st =
-        hyst_check_init(S, curve, HYST_VARIANT_F32, xltp, yltp, xrtp, yrtp, capacity,
-                        sizeof(hyst_code_word_t), sizeof(float), layout);
     hyst_wide_t unit;
-    if (st != HYST_OK) {
-        return st;
-    }
     if (!(code_lo < code_hi) || code_hi > HYST_CODE_MAX) {
         return HYST_ERR_DOMAIN;
     }
@@ -62,6 +58,19 @@ hyst_status_t hyst_code_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve,
     hyst_code_attach(S, curve, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, (float)unit,
                      xltp, yltp, xrtp, yrtp, capacity);
     return HYST_OK;
+}
+
+hyst_status_t hyst_code_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve,
+                                    uint_least32_t code_lo, uint_least32_t code_hi,
+                                    hyst_code_word_t *xltp, float *yltp, hyst_code_word_t *xrtp,
+                                    float *yrtp, size_t capacity, unsigned long layout)
+{
+    const hyst_status_t st =
+        hyst_check_init(S, curve, HYST_VARIANT_F32, xltp, yltp, xrtp, yrtp, capacity,
+                        sizeof(hyst_code_word_t), sizeof(float), layout);
+    return st != HYST_OK ? st
+                         : hyst_code_attach_range(S, curve, code_lo, code_hi, xltp, yltp, xrtp,
+                                                  yrtp, capacity);
 }
 
 hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
@@ -76,8 +85,8 @@ hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32
         st = hyst_curve_poly_(&curve, f0, HYST_VARIANT_F32, layout);
     }
     if (st == HYST_OK) {
-        st = hyst_code_init_curve_(S, &curve, code_lo, code_hi, xltp, yltp, xrtp, yrtp, capacity,
-                                   layout);
+        st = hyst_code_attach_range(S, &curve, code_lo, code_hi, xltp, yltp, xrtp, yrtp,
+                                    capacity);
     }
     if (st == HYST_OK) {
         S->curve = NULL; /* a polynomial is copied whole into the instance */

@@ -523,16 +523,16 @@ hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf, siz
     (void)get_num(buf + HEADER_OCTETS, &x, f.xt);
     (void)get_num(buf + HEADER_OCTETS + f.x, &y, f.yt);
     switch (S->variant) {
-    case HYST_VARIANT_F32: hyst_f32_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), &book); break;
+    case HYST_VARIANT_F32:
+        hyst_f32_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book);
+        break;
 #if HYST_ENABLE_F64
-    case HYST_VARIANT_F64: hyst_f64_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), &book); break;
+    case HYST_VARIANT_F64:
+        hyst_f64_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book);
+        break;
 #endif
-    default: hyst_code_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), &book); break;
+    default: hyst_code_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book); break;
     }
     S->events = (unsigned)events;
-    S->status = status;
-    if (status != HYST_OK) { /* as after the sample that set it */
-        S->window[1u - S->moving_end] = S->window[S->moving_end];
-    }
     return HYST_OK;
 }

@@ -90,14 +90,17 @@ typedef struct {
 /* Per-variant entry points the modules written once dispatch to (generated
  * by src/tcm_engine.h): reset, and resume after a snapshot restore
  * (re-derives the per-sample cache from the arrays and counts, with x, y as
- * the last valid sample and the saved bookkeeping). */
+ * the last valid sample, its status and the saved bookkeeping). */
 void hyst_f32_reset_(hyst_tcm_t *S);
-void hyst_f32_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, const hyst_tcm_book_t *book);
+void hyst_f32_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+                      const hyst_tcm_book_t *book);
 void hyst_code_reset_(hyst_tcm_t *S);
-void hyst_code_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, const hyst_tcm_book_t *book);
+void hyst_code_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+                      const hyst_tcm_book_t *book);
 #if HYST_ENABLE_F64
 void hyst_f64_reset_(hyst_tcm_t *S);
-void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, const hyst_tcm_book_t *book);
+void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+                      const hyst_tcm_book_t *book);
 #endif
 
 /* The kinds of g evaluated out of line (src/curve_eval.h), per real type:

@@ -133,6 +133,15 @@ HYST_INLINE void TCM_NAME(settle_falling)(hyst_tcm_t *S, TCM_X x)
     S->moving_end = 1u;
 }
 
+/* Empties the fast-path window (its far end onto the last input), so the
+ * next sample takes the slow path. Used when every sample must be slow, and
+ * after a sample whose status is not HYST_OK: the fast path does not store
+ * the status, the slow path resets it. */
+static void TCM_NAME(close_window)(hyst_tcm_t *S)
+{
+    XV(S->window[1u - S->moving_end]) = XV(S->window[S->moving_end]);
+}
+
 /* Derives the fast-path cache from the arrays and the last input, then
  * empties the window if every sample must be slow. */
 static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x)
@@ -143,18 +152,8 @@ static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x)
         TCM_NAME(settle_falling)(S, x);
     }
     if ((S->detour & TCM_SLOW_ONLY) != 0u) {
-        XV(S->window[1u - S->moving_end]) = x;
+        TCM_NAME(close_window)(S);
     }
-}
-
-/* A sample ended with a status other than HYST_OK: the fast path, which does
- * not store the status, is closed for the next sample (it takes the slow
- * path, which resets the status). */
-static void TCM_NAME(flag)(hyst_tcm_t *S, int status, unsigned event)
-{
-    S->status = status;
-    S->events |= event;
-    XV(S->window[1u - S->moving_end]) = XV(S->window[S->moving_end]);
 }
 
 void TCM_NAME(reset_)(hyst_tcm_t *S)
@@ -174,7 +173,8 @@ void TCM_NAME(reset_)(hyst_tcm_t *S)
     YV(S->y_prev) = YV(S->y_lo);
 }
 
-void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, const hyst_tcm_book_t *book)
+void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+                       const hyst_tcm_book_t *book)
 {
     size_t i;
     /* The keyed search needs +0 where a TP is zero. */
@@ -191,6 +191,10 @@ void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, const hyst_t
     TCM_NAME(set_detour)(S);
     TCM_NAME(settle)(S, TCM_NORM((TCM_X)x));
     YV(S->y_prev) = (TCM_Y)y;
+    S->status = status;
+    if (status != HYST_OK) { /* as after the sample that left it */
+        TCM_NAME(close_window)(S);
+    }
 }
 
 /* Validated set-up shared by every init: the curve's numbers, the arrays,
@@ -489,7 +493,7 @@ static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x)
     y = (S->detour & TCM_SLOW_ONLY) != 0u ? TCM_NAME(slow_only)(S, x) : TCM_NAME(branch_y_poly)(S, x);
     YV(S->y_prev) = y;
     if (S->status != HYST_OK) {
-        XV(S->window[1u - S->moving_end]) = x;
+        TCM_NAME(close_window)(S);
     }
     return y;
 }
@@ -502,7 +506,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
     TCM_X x;
     if (!TCM_ADMIT(S, x_in, &x) || x == XV(S->window[S->moving_end])) {
         if (S->status != HYST_OK) {
-            TCM_NAME(flag)(S, S->status, 0u);
+            TCM_NAME(close_window)(S);
         }
         return YV(S->y_prev);
     }
@@ -632,9 +636,7 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
     /* Always true for integer codes; false for a NaN real input: */
     /* cppcheck-suppress knownConditionTrueFalse */
     else if (x_in == x_prev) { /* repeated samples create no TP */
-        /* the window was closed only by a status to reset: reopen it */
-        TCM_NAME(settle)(S, x_prev);
-        return YV(S->y_prev);
+        return YV(S->y_prev); /* a closed window stays closed: the next move reopens it */
     } else {
         return TCM_NAME(step_edge)(S, x_in); /* NaN */
     }

@@ -106,8 +106,10 @@ hyst_status_t NUM_NAME(init_inverse_)(hyst_tcm_t *S, hyst_curve_t *inv, const hy
     if (st != HYST_OK) {
         return st;
     }
-    *inv = curve;
-    return NUM_NAME(init_curve_)(S, inv, xltp, yltp, xrtp, yrtp, capacity, layout);
+    *inv = curve; /* checked above: attach without checking again */
+    NUM_NAME(attach)(S, inv, inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F, xltp, yltp, xrtp,
+                     yrtp, capacity);
+    return HYST_OK;
 }
 
 hyst_status_t NUM_NAME(set_deadband)(hyst_tcm_t *S, NUM_T width)
