@@ -48,21 +48,8 @@ static hyst_status_t pwl_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
     hyst_curve_t out = *fwd;
     size_t i;
     for (i = 1u; i < fwd->u.pwl.n; ++i) { /* strictly increasing values */
-        const hyst_wide_t prev = fwd->variant == (unsigned)HYST_VARIANT_F32
-                                     ? (hyst_wide_t)fwd->u.pwl.y.f32[i - 1u]
-#if HYST_ENABLE_F64
-                                     : (hyst_wide_t)fwd->u.pwl.y.f64[i - 1u];
-#else
-                                     : 0;
-#endif
-        const hyst_wide_t here = fwd->variant == (unsigned)HYST_VARIANT_F32
-                                     ? (hyst_wide_t)fwd->u.pwl.y.f32[i]
-#if HYST_ENABLE_F64
-                                     : (hyst_wide_t)fwd->u.pwl.y.f64[i];
-#else
-                                     : 0;
-#endif
-        if (!(here > prev)) {
+        if (!(hyst_cptr_get(fwd->u.pwl.y, i, fwd->variant) >
+              hyst_cptr_get(fwd->u.pwl.y, i - 1u, fwd->variant))) {
             return HYST_ERR_NOT_INVERTIBLE;
         }
     }

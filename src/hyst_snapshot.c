@@ -236,17 +236,9 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
         size_t i;
         crc = crc_word(crc, (unsigned long)c->u.pwl.n);
         for (i = 0u; i < c->u.pwl.n; ++i) { /* interior points shape the curve too */
-            hyst_num_t px, py;
-#if HYST_ENABLE_F64
-            if (c->variant == (unsigned)HYST_VARIANT_F64) {
-                px.f64 = c->u.pwl.x.f64[i];
-                py.f64 = c->u.pwl.y.f64[i];
-            } else
-#endif
-            {
-                px.f32 = c->u.pwl.x.f32[i];
-                py.f32 = c->u.pwl.y.f32[i];
-            }
+            hyst_num_t px, py; /* exact: the points have the curve's type */
+            (void)hyst_num_set(&px, c->variant, hyst_cptr_get(c->u.pwl.x, i, c->variant));
+            (void)hyst_num_set(&py, c->variant, hyst_cptr_get(c->u.pwl.y, i, c->variant));
             crc = crc_num(crc, &px, f->yt);
             crc = crc_num(crc, &py, f->yt);
         }

@@ -39,6 +39,20 @@ HYST_INLINE hyst_wide_t hyst_num_get(const hyst_num_t *v, unsigned variant)
     return (hyst_wide_t)v->f32;
 }
 
+/* Entry i of a caller's read-only real array of variant `variant`, as
+ * hyst_wide_t (exact). */
+HYST_INLINE hyst_wide_t hyst_cptr_get(hyst_cptr_t a, size_t i, unsigned variant)
+{
+#if HYST_ENABLE_F64
+    if (variant == (unsigned)HYST_VARIANT_F64) {
+        return (hyst_wide_t)a.f64[i];
+    }
+#else
+    (void)variant;
+#endif
+    return (hyst_wide_t)a.f32[i];
+}
+
 /* Stores w rounded to the variant's real type; returns 0 if the result is
  * not finite (overflow). */
 HYST_INLINE int hyst_num_set(hyst_num_t *v, unsigned variant, hyst_wide_t w)
