@@ -94,7 +94,8 @@ hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32
     return st;
 }
 
-hyst_status_t hyst_code_set_deadband(hyst_tcm_t *S, uint_least32_t codes)
+/* The deadband checks shared by the immediate call and the request. */
+static hyst_status_t deadband_check(const hyst_tcm_t *S, uint_least32_t codes)
 {
     if (S == NULL) {
         return HYST_ERR_NULL;
@@ -103,9 +104,29 @@ hyst_status_t hyst_code_set_deadband(hyst_tcm_t *S, uint_least32_t codes)
         codes > (uint_least32_t)(S->hi.code - S->lo.code)) {
         return HYST_ERR_ARG;
     }
+    return HYST_OK;
+}
+
+hyst_status_t hyst_code_set_deadband(hyst_tcm_t *S, uint_least32_t codes)
+{
+    const hyst_status_t st = deadband_check(S, codes);
+    if (st != HYST_OK) {
+        return st;
+    }
     S->deadband.code = (hyst_code_word_t)codes;
     hyst_code_set_detour(S);
+    ++S->seq;
     return HYST_OK;
+}
+
+hyst_status_t hyst_code_request_deadband(hyst_tcm_t *S, uint_least32_t codes)
+{
+    const hyst_status_t st = deadband_check(S, codes);
+    if (st != HYST_OK) {
+        return st;
+    }
+    S->req_width.code = (hyst_code_word_t)codes; /* before the counter */
+    return hyst_post_request_(S, &S->req_deadband);
 }
 
 float hyst_code_step(hyst_tcm_t *S, uint_least32_t code) { return hyst_code_sample(S, code); }
@@ -115,14 +136,14 @@ hyst_status_t hyst_code_process(hyst_tcm_t *S, const hyst_code_word_t *x, float 
     return hyst_code_block(S, x, y, n);
 }
 
-float hyst_code_output(const hyst_tcm_t *S) { return S != NULL ? S->y_prev.f32 : 0; }
+float hyst_code_output(const hyst_tcm_t *S) { return S != NULL ? hyst_code_view(S).y : 0; }
 
 uint_least32_t hyst_code_input(const hyst_tcm_t *S)
 {
-    return S != NULL ? S->window[S->moving_end].code : 0u;
+    return S != NULL ? hyst_code_view(S).x : 0u;
 }
 
 float hyst_code_error_bound(const hyst_tcm_t *S)
 {
-    return S != NULL ? S->forgot.f32 + S->db_err.f32 : 0;
+    return S != NULL ? hyst_code_view(S).bound : 0;
 }

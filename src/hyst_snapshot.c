@@ -210,13 +210,13 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
     unsigned k;
     crc = crc_word(0ul, S->variant);
     crc = crc_word(crc, c != NULL ? c->kind : (unsigned long)HYST_CURVE_POLY);
-    crc = crc_word(crc, S->horner);
+    crc = crc_word(crc, S->degree);
     crc = crc_num(crc, &S->lo, f->xt);
     crc = crc_num(crc, &S->hi, f->xt);
     crc = crc_num(crc, &S->y_lo, f->yt);
     crc = crc_num(crc, &S->y_hi, f->yt);
     crc = crc_num(crc, &S->unit, f->yt);
-    for (k = 0u; k < S->horner && k < HYST_MAX_DEGREE; ++k) {
+    for (k = 0u; k < S->degree && k < HYST_MAX_DEGREE; ++k) {
         crc = crc_num(crc, &S->coef[k], f->yt);
     }
     if (c == NULL) {
@@ -277,62 +277,6 @@ size_t hyst_snapshot_size(const hyst_tcm_t *S)
     return size_for(&f, S->n_ltp, S->n_rtp);
 }
 
-hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t size,
-                                 size_t *len)
-{
-    format_t f;
-    size_t need, i, at, nl, nr;
-    hyst_num_t v;
-    if (S == NULL || buf == NULL) {
-        return HYST_ERR_NULL;
-    }
-    if (S->layout != HYST_LAYOUT || !format_of(S->variant, &f)) {
-        return HYST_ERR_ARG;
-    }
-    /* The counts are read once: the size and the copy agree. */
-    nl = S->n_ltp;
-    nr = S->n_rtp;
-    need = size_for(&f, nl, nr);
-    if (need == 0u || size < need) {
-        return HYST_ERR_NOSPACE;
-    }
-    buf[0] = MAGIC0;
-    buf[1] = MAGIC1;
-    buf[2] = MAGIC2;
-    buf[3] = MAGIC3;
-    put_u16(buf + 4, HYST_SNAPSHOT_VERSION);
-    buf[6] = (unsigned char)f.r;
-    buf[7] = (unsigned char)S->variant;
-    put_u32(buf + 8, (unsigned long)need);
-    put_u32(buf + 12, curve_id(S, &f));
-    put_u32(buf + 16, (unsigned long)nl);
-    put_u32(buf + 20, (unsigned long)nr);
-    put_u32(buf + 24, (unsigned long)S->events);
-    put_u16(buf + 28, (unsigned)S->status & 0xFFFFu); /* two's complement */
-    put_u16(buf + 30, 0u);
-    put_num(buf + HEADER_OCTETS, &S->window[S->moving_end], f.xt);
-    put_num(buf + HEADER_OCTETS + f.x, &S->y_prev, f.yt);
-    at = HEADER_OCTETS + f.x + f.r;
-    for (i = 0u; i < nl + nr; ++i, at += f.x + f.r) {
-        const int left = i < nl;
-        const size_t k = left ? i : i - nl;
-        v = elem(left ? S->xltp : S->xrtp, k, f.xt);
-        put_num(buf + at, &v, f.xt);
-        v = elem(left ? S->yltp : S->yrtp, k, f.yt);
-        put_num(buf + at + f.x, &v, f.yt);
-    }
-    put_u32(buf + at, S->forgot_level == (size_t)-1 ? NO_LEVEL : (unsigned long)S->forgot_level);
-    put_num(buf + at + 4u, &S->forgot, f.yt);
-    put_num(buf + at + 4u + f.r, &S->db_reach, f.xt);
-    put_num(buf + at + 4u + f.r + f.x, &S->db_err, f.yt);
-    at += 4u + 2u * f.r + f.x;
-    put_u32(buf + at, hyst_crc32(0ul, buf, at));
-    if (len != NULL) {
-        *len = need;
-    }
-    return HYST_OK;
-}
-
 /* Bit-identical numbers. */
 static int same_num(const hyst_num_t *a, const hyst_num_t *b, num_type_t t)
 {
@@ -346,6 +290,104 @@ static int same_num(const hyst_num_t *a, const hyst_num_t *b, num_type_t t)
         }
     }
     return 1;
+}
+
+/* The part of a snapshot that only slow samples change (tcm.h: they
+ * change seq): everything but the last sample, read with counts nl, nr
+ * into buf. Returns the offset of the CRC. */
+static size_t put_body(const hyst_tcm_t *S, const format_t *f, unsigned char *buf,
+                       size_t need, size_t nl, size_t nr)
+{
+    size_t i, at;
+    hyst_num_t v;
+    buf[0] = MAGIC0;
+    buf[1] = MAGIC1;
+    buf[2] = MAGIC2;
+    buf[3] = MAGIC3;
+    put_u16(buf + 4, HYST_SNAPSHOT_VERSION);
+    buf[6] = (unsigned char)f->r;
+    buf[7] = (unsigned char)S->variant;
+    put_u32(buf + 8, (unsigned long)need);
+    put_u32(buf + 12, curve_id(S, f));
+    put_u32(buf + 16, (unsigned long)nl);
+    put_u32(buf + 20, (unsigned long)nr);
+    put_u32(buf + 24, (unsigned long)S->events);
+    put_u16(buf + 28, (unsigned)S->status & 0xFFFFu); /* two's complement */
+    put_u16(buf + 30, 0u);
+    at = HEADER_OCTETS + f->x + f->r;
+    for (i = 0u; i < nl + nr; ++i, at += f->x + f->r) {
+        const int left = i < nl;
+        const size_t k = left ? i : i - nl;
+        v = elem(left ? S->xltp : S->xrtp, k, f->xt);
+        put_num(buf + at, &v, f->xt);
+        v = elem(left ? S->yltp : S->yrtp, k, f->yt);
+        put_num(buf + at + f->x, &v, f->yt);
+    }
+    put_u32(buf + at, S->forgot_level == (size_t)-1 ? NO_LEVEL : (unsigned long)S->forgot_level);
+    put_num(buf + at + 4u, &S->forgot, f->yt);
+    put_num(buf + at + 4u + f->r, &S->db_reach, f->xt);
+    put_num(buf + at + 4u + f->r + f->x, &S->db_err, f->yt);
+    return at + 4u + f->r + f->r + f->x;
+}
+
+/* Consistency with a stepping context that may preempt this one (tcm.h,
+ * "Concurrency"): the body is copied between two reads of seq; the last
+ * sample, which fast-path samples change without seq, is read after it as
+ * one pair (the engine's view: x moves strictly along a branch). Equal seq
+ * around both proves that the octets describe one state. Bounded attempts,
+ * then HYST_ERR_BUSY with the magic cleared: never a torn snapshot. */
+hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t size,
+                                 size_t *len)
+{
+    const volatile hyst_tcm_t *V = S;
+    format_t f;
+    size_t need = 0u, at;
+    unsigned attempt;
+    if (S == NULL || buf == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (S->layout != HYST_LAYOUT || !format_of(S->variant, &f)) {
+        return HYST_ERR_ARG;
+    }
+    for (attempt = 0u; attempt < HYST_READ_ATTEMPTS; ++attempt) {
+        const unsigned long seq = V->seq;
+        size_t nl, nr;
+        hyst_num_t x, y, x_again;
+        HYST_BARRIER();
+        /* The counts are read once: the size and the copy agree, whatever
+         * the step does meanwhile. */
+        nl = V->n_ltp;
+        nr = V->n_rtp;
+        need = size_for(&f, nl, nr);
+        if (need == 0u || size < need) {
+            HYST_BARRIER();
+            if (V->seq != seq) {
+                continue; /* counts of two states: read them again */
+            }
+            if (attempt > 0u) {
+                buf[0] = 0u; /* an earlier attempt's body: not a snapshot */
+            }
+            return HYST_ERR_NOSPACE;
+        }
+        at = put_body(S, &f, buf, need, nl, nr);
+        HYST_BARRIER();
+        x = V->window[V->moving_end];
+        y = V->y_prev;
+        HYST_BARRIER();
+        x_again = V->window[V->moving_end];
+        if (V->seq != seq || !same_num(&x, &x_again, f.xt)) {
+            continue;
+        }
+        put_num(buf + HEADER_OCTETS, &x, f.xt);
+        put_num(buf + HEADER_OCTETS + f.x, &y, f.yt);
+        put_u32(buf + at, hyst_crc32(0ul, buf, at));
+        if (len != NULL) {
+            *len = need;
+        }
+        return HYST_OK;
+    }
+    buf[0] = 0u;
+    return HYST_ERR_BUSY;
 }
 
 /* Reads entry `at` of the body as (x, y) into wide values; 0 if a number is

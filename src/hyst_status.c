@@ -27,6 +27,7 @@ const char *hyst_status_str(int status)
     case HYST_ERR_NOT_INVERTIBLE: return "curve not strictly increasing, no inverse";
     case HYST_ERR_LAYOUT: return "layout options or variant differ from the library's";
     case HYST_ERR_OVERLAP: return "caller arrays overlap";
+    case HYST_ERR_BUSY: return "state kept changing during the copy; try again";
     default: return "unknown status";
     }
 }

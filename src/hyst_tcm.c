@@ -80,6 +80,52 @@ void hyst_reset(hyst_tcm_t *S)
     }
 }
 
+#if !(defined(__GNUC__) || defined(__clang__))
+void hyst_barrier_(void) {}
+#endif
+
+hyst_status_t hyst_post_request_(hyst_tcm_t *S, unsigned *counter)
+{
+    ++*counter; /* written by this context only */
+    HYST_BARRIER(); /* the request's data before the flag that routes the step to it */
+    ((volatile hyst_tcm_t *)S)->horner = HYST_HORNER_REQUEST_;
+    return HYST_OK;
+}
+
+/* An instance whose variant's engine can serve requests. */
+static int initialised(const hyst_tcm_t *S)
+{
+    return S->layout == HYST_LAYOUT &&
+           (S->variant == (unsigned)HYST_VARIANT_F32 || S->variant == (unsigned)HYST_VARIANT_CODE
+#if HYST_ENABLE_F64
+            || S->variant == (unsigned)HYST_VARIANT_F64
+#endif
+           );
+}
+
+hyst_status_t hyst_request_reset(hyst_tcm_t *S)
+{
+    if (S == NULL) {
+        return HYST_ERR_NULL;
+    }
+    return initialised(S) ? hyst_post_request_(S, &S->req_reset) : HYST_ERR_ARG;
+}
+
+hyst_status_t hyst_request_clear_events(hyst_tcm_t *S)
+{
+    if (S == NULL) {
+        return HYST_ERR_NULL;
+    }
+    return initialised(S) ? hyst_post_request_(S, &S->req_clear) : HYST_ERR_ARG;
+}
+
+int hyst_request_pending(const hyst_tcm_t *S)
+{
+    const volatile hyst_tcm_t *V = S;
+    return S != NULL && (V->req_reset != V->done_reset || V->req_clear != V->done_clear ||
+                         V->req_deadband != V->done_deadband);
+}
+
 int hyst_status(const hyst_tcm_t *S) { return S != NULL ? S->status : HYST_ERR_NULL; }
 
 unsigned hyst_events(const hyst_tcm_t *S) { return S != NULL ? S->events : 0u; }
@@ -88,6 +134,25 @@ void hyst_clear_events(hyst_tcm_t *S)
 {
     if (S != NULL) {
         S->events = 0u;
+        ++S->seq;
+    }
+}
+
+/* n_ltp and n_rtp as one consistent pair, read from any context: the step
+ * changes them only with seq. */
+static void counts(const hyst_tcm_t *S, size_t *nl, size_t *nr)
+{
+    const volatile hyst_tcm_t *V = S;
+    unsigned attempt;
+    for (attempt = 0u; attempt < HYST_READ_ATTEMPTS; ++attempt) {
+        const unsigned long seq = V->seq;
+        HYST_BARRIER();
+        *nl = V->n_ltp;
+        *nr = V->n_rtp;
+        HYST_BARRIER();
+        if (seq == V->seq) {
+            break;
+        }
     }
 }
 
@@ -95,8 +160,22 @@ size_t hyst_ltp_count(const hyst_tcm_t *S) { return S != NULL ? S->n_ltp - 1u : 
 
 size_t hyst_rtp_count(const hyst_tcm_t *S) { return S != NULL ? S->n_rtp : 0u; }
 
-size_t hyst_tp_count(const hyst_tcm_t *S) { return S != NULL ? S->n_ltp - 1u + S->n_rtp : 0u; }
+size_t hyst_tp_count(const hyst_tcm_t *S)
+{
+    size_t nl = 1u, nr = 0u;
+    if (S != NULL) {
+        counts(S, &nl, &nr);
+    }
+    return nl - 1u + nr;
+}
 
-int hyst_rising(const hyst_tcm_t *S) { return S != NULL && S->n_ltp > S->n_rtp; }
+int hyst_rising(const hyst_tcm_t *S)
+{
+    size_t nl = 1u, nr = 1u;
+    if (S != NULL) {
+        counts(S, &nl, &nr);
+    }
+    return nl > nr;
+}
 
 size_t hyst_capacity(const hyst_tcm_t *S) { return S != NULL ? S->capacity : 0u; }

@@ -69,6 +69,29 @@ HYST_INLINE int hyst_num_set(hyst_num_t *v, unsigned variant, hyst_wide_t w)
     return hyst_wide_is_finite((hyst_wide_t)v->f32);
 }
 
+/* Concurrency (tcm.h): the compiler must not move memory accesses across
+ * these points of the readers and of the request functions. One core: no
+ * hardware fence is needed, the stepping context runs whole between two
+ * instructions of the other one. Compilers without GNU inline assembly get
+ * an out-of-line call, which they cannot move accesses across. */
+#if defined(__GNUC__) || defined(__clang__)
+#define HYST_BARRIER() __asm__ __volatile__("" ::: "memory")
+#else
+void hyst_barrier_(void);
+#define HYST_BARRIER() hyst_barrier_()
+#endif
+
+/* Attempts of a reader before it gives up (snapshot: HYST_ERR_BUSY; an
+ * accessor returns its last read). */
+#define HYST_READ_ATTEMPTS 4u
+
+/* S->horner while a request is pending: above every degree. */
+#define HYST_HORNER_REQUEST_ ((unsigned)HYST_MAX_DEGREE + 1u)
+
+/* Posts a request from another context: increments *counter, then routes
+ * the next per-sample evaluation to the engine's serve(). */
+hyst_status_t hyst_post_request_(hyst_tcm_t *S, unsigned *counter);
+
 /* 1 if [a, a + na) and [b, b + nb) (byte ranges) overlap. */
 int hyst_ranges_overlap(const void *a, size_t na, const void *b, size_t nb);
 

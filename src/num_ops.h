@@ -18,38 +18,53 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
     return z == z;
 }
 
-/* G(u) = u (a[0] u^(n-1) + ... + a[n-1]): Horner's rule unrolled by a
- * switch on the degree, one multiply-add per coefficient, no loop and no
- * call (the per-sample path). n >= 1. */
+/* The cases 0..8 of Horner's rule unrolled by a switch on the degree n:
+ * acc = a[0] u^(n-1) + ... + a[n-1], one multiply-add per coefficient, no
+ * loop and no call (the per-sample path). The caller writes the switch and
+ * its default (n >= 9), so that the engine can route other values there. */
+#define NUM_HORNER_CASES_(a, u, acc)                                                         \
+    case 0: acc = 0; break; /* never called so; the jump table starts at 0 */                \
+    case 1: acc = a[0].NUM_F; break;                                                          \
+    case 2: acc = NUM_HORNER_(a, u, a[0].NUM_F, 1); break;                                    \
+    case 3: acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, a[0].NUM_F, 1), 2); break;              \
+    case 4: acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER_(a, u, a[0].NUM_F, 1), 2), 3); \
+        break;                                                                                \
+    case 5: acc = NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4); break;                            \
+    case 6: acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4), 5); break;      \
+    case 7:                                                                                   \
+        acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4), 5), 6); \
+        break;                                                                                \
+    case 8:                                                                                   \
+        acc = NUM_HORNER_(a, u,                                                               \
+                          NUM_HORNER_(a, u,                                                   \
+                                      NUM_HORNER_(a, u,                                       \
+                                                  NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4), 5), \
+                                      6),                                                     \
+                          7);                                                                 \
+        break
+#define NUM_HORNER_(a, u, acc_, k_) ((acc_) * (u) + (a)[k_].NUM_F)
+#define NUM_HORNER4_(a, u) \
+    NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER_(a, u, (a)[0].NUM_F, 1), 2), 3)
+
+/* Horner's loop over a[0..n), any n >= 1: the rare degrees. */
+HYST_INLINE NUM_T NUM_NAME(horner_loop)(const hyst_num_t *a, unsigned n, NUM_T u)
+{
+    NUM_T acc = a[0].NUM_F;
+    unsigned k;
+    for (k = 1u; k < n; ++k) {
+        acc = NUM_HORNER_(a, u, acc, k);
+    }
+    return acc;
+}
+
+/* G(u) = u (a[0] u^(n-1) + ... + a[n-1]), n >= 1. */
 HYST_INLINE NUM_T NUM_NAME(horner)(const hyst_num_t *a, unsigned n, NUM_T u)
 {
     NUM_T acc;
-#define HORNER_(acc_, k_) ((acc_) * u + a[k_].NUM_F)
     switch (n) { /* independent cases: no register merges */
-    case 0: acc = 0; break; /* never called so; lets the jump table start at 0 (one subtraction fewer) */
-    case 1: acc = a[0].NUM_F; break;
-    case 2: acc = HORNER_(a[0].NUM_F, 1); break;
-    case 3: acc = HORNER_(HORNER_(a[0].NUM_F, 1), 2); break;
-    case 4: acc = HORNER_(HORNER_(HORNER_(a[0].NUM_F, 1), 2), 3); break;
-    case 5: acc = HORNER_(HORNER_(HORNER_(HORNER_(a[0].NUM_F, 1), 2), 3), 4); break;
-    case 6: acc = HORNER_(HORNER_(HORNER_(HORNER_(HORNER_(a[0].NUM_F, 1), 2), 3), 4), 5); break;
-    case 7:
-        acc = HORNER_(HORNER_(HORNER_(HORNER_(HORNER_(HORNER_(a[0].NUM_F, 1), 2), 3), 4), 5), 6);
-        break;
-    case 8:
-        acc = HORNER_(
-            HORNER_(HORNER_(HORNER_(HORNER_(HORNER_(HORNER_(a[0].NUM_F, 1), 2), 3), 4), 5), 6), 7);
-        break;
-    default: { /* 9 and above: Horner's loop */
-        unsigned k;
-        acc = a[0].NUM_F;
-        for (k = 1u; k < n; ++k) {
-            acc = HORNER_(acc, k);
-        }
-        break;
+    NUM_HORNER_CASES_(a, u, acc);
+    default: acc = NUM_NAME(horner_loop)(a, n, u); break;
     }
-    }
-#undef HORNER_
     return acc * u;
 }
 

@@ -65,10 +65,10 @@
                           * or an open deadband excursion */
 #define TCM_DEADBAND 4u  /* reversals need the deadband test */
 
-/* G at u, any kind: Horner inline for polynomials, else out of line. */
+/* G at u, any kind: Horner for polynomials, else out of line. */
 HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
 {
-    return S->horner != 0u ? NUM_NAME(horner)(S->coef, S->horner, u)
+    return S->degree != 0u ? NUM_NAME(horner)(S->coef, S->degree, u)
                            : TCM_G_OTHER(S->curve, u);
 }
 
@@ -88,12 +88,28 @@ HYST_INLINE TCM_Y TCM_NAME(branch_y)(const hyst_tcm_t *S, TCM_X x)
            YV(S->sign) * TCM_NAME(g_unit)(S, (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale));
 }
 
-/* branch_y() for the fast path: polynomial curves only, no call. */
-HYST_INLINE TCM_Y TCM_NAME(branch_y_poly)(const hyst_tcm_t *S, TCM_X x)
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int fast);
+
+/* The end of a sample on a polynomial branch: its output, stored as y_prev
+ * (and as the moving window end on the fast path). Degrees up to 8 inline;
+ * every other value of S->horner (degree 9 and up, or a pending request:
+ * HYST_HORNER_REQUEST_) leaves by a tail call, so a request costs the
+ * per-sample paths nothing (the jump table's range check was there anyway)
+ * and the fast path needs no stack frame. */
+HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int fast)
 {
-    return YV(S->y_ctp) + YV(S->sign) * NUM_NAME(horner)(S->coef, S->horner,
-                                                         (TCM_R(x) - YV(S->x_ctp)) *
-                                                             YV(S->u_scale));
+    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
+    TCM_Y acc, y;
+    switch (S->horner) {
+    NUM_HORNER_CASES_(S->coef, u, acc);
+    default: return TCM_NAME(emit_rare)(S, x, fast);
+    }
+    y = YV(S->y_ctp) + YV(S->sign) * (acc * u);
+    if (fast) {
+        XV(S->window[S->moving_end]) = x;
+    }
+    YV(S->y_prev) = y;
+    return y;
 }
 
 /* Derives S->detour from the state it summarises; called wherever that
@@ -102,7 +118,7 @@ HYST_INLINE TCM_Y TCM_NAME(branch_y_poly)(const hyst_tcm_t *S, TCM_X x)
 static void TCM_NAME(set_detour)(hyst_tcm_t *S)
 {
     const unsigned merged = S->forgot_level != TCM_NO_LEVEL ? TCM_SLOW_ONLY | TCM_BOOK : 0u;
-    S->detour = merged | (S->horner == 0u ? TCM_SLOW_ONLY : 0u) |
+    S->detour = merged | (S->degree == 0u ? TCM_SLOW_ONLY : 0u) |
                 (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
                 (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u);
 }
@@ -158,6 +174,7 @@ static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x)
 
 void TCM_NAME(reset_)(hyst_tcm_t *S)
 {
+    ++S->seq;
     XV(S->xltp)[0] = XV(S->lo);
     YV(S->yltp)[0] = YV(S->y_lo);
     S->n_ltp = 1u;
@@ -177,6 +194,7 @@ void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
                        const hyst_tcm_book_t *book)
 {
     size_t i;
+    ++S->seq;
     /* The keyed search needs +0 where a TP is zero. */
     for (i = 0u; i < S->n_ltp; ++i) {
         XV(S->xltp)[i] = TCM_NORM(XV(S->xltp)[i]);
@@ -212,10 +230,16 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
     YV(S->y_lo) = YV(curve->y_lo);
     YV(S->y_hi) = YV(curve->y_hi);
     YV(S->unit) = unit;
-    S->horner = curve->kind == (unsigned)HYST_CURVE_POLY ? curve->u.poly.degree : 0u;
+    S->degree = curve->kind == (unsigned)HYST_CURVE_POLY ? curve->u.poly.degree : 0u;
+    S->horner = S->degree;
     for (k = 0u; k < HYST_MAX_DEGREE; ++k) {
-        YV(S->coef[k]) = S->horner != 0u && k < S->horner ? YV(curve->u.poly.a[k]) : 0;
+        YV(S->coef[k]) = S->degree != 0u && k < S->degree ? YV(curve->u.poly.a[k]) : 0;
     }
+    S->seq = 0u;
+    S->req_reset = S->done_reset = 0u;
+    S->req_clear = S->done_clear = 0u;
+    S->req_deadband = S->done_deadband = 0u;
+    XV(S->req_width) = 0;
     XV(S->xltp) = xltp;
     YV(S->yltp) = yltp;
     XV(S->xrtp) = xrtp;
@@ -465,6 +489,31 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X d)
     }
 }
 
+/* Applies the requests another context posted (tcm.h, "Concurrency"), in
+ * the stepping context, at the end of a sample: as if set_deadband(),
+ * clear_events() and reset() were called, in this order, between that
+ * sample and the next. Each request is a counter the other context
+ * increments; done_* keeps the value applied, so a request posted twice
+ * before a step applies once. */
+static TCM_NOINLINE void TCM_NAME(serve)(hyst_tcm_t *S)
+{
+    S->horner = S->degree;
+    if (S->req_deadband != S->done_deadband) {
+        S->done_deadband = S->req_deadband;
+        XV(S->deadband) = XV(S->req_width);
+        TCM_NAME(set_detour)(S);
+    }
+    if (S->req_clear != S->done_clear) {
+        S->done_clear = S->req_clear;
+        S->events = 0u;
+    }
+    if (S->req_reset != S->done_reset) {
+        S->done_reset = S->req_reset;
+        TCM_NAME(reset_)(S);
+    }
+    ++S->seq;
+}
+
 /* A slow sample with TCM_SLOW_ONLY (its window left empty by settle(): the
  * next sample is slow too): while a merge is alive the output is clamped to
  * the major loop's range [y_lo, y_hi]. The merged LTP V's branches are not
@@ -490,10 +539,17 @@ static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x)
 {
     TCM_Y y;
     TCM_NAME(settle)(S, x);
-    y = (S->detour & TCM_SLOW_ONLY) != 0u ? TCM_NAME(slow_only)(S, x) : TCM_NAME(branch_y_poly)(S, x);
-    YV(S->y_prev) = y;
+    if ((S->detour & TCM_SLOW_ONLY) == 0u) {
+        y = TCM_NAME(emit)(S, x, 0); /* serves a pending request */
+    } else {
+        y = TCM_NAME(slow_only)(S, x);
+        YV(S->y_prev) = y;
+    }
     if (S->status != HYST_OK) {
         TCM_NAME(close_window)(S);
+    }
+    if (S->horner != S->degree) { /* SLOW_ONLY, or a request posted meanwhile: none */
+        TCM_NAME(serve)(S);
     }
     return y;
 }
@@ -578,8 +634,8 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
 {
     TCM_X x, x_prev;
     size_t nl, nr;
-    TCM_Y y;
 
+    ++S->seq; /* every change but a fast-path sample's (snapshot.c) */
     S->status = HYST_OK;
     x_prev = XV(S->window[S->moving_end]);
     nl = S->n_ltp;
@@ -636,12 +692,29 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
     /* Always true for integer codes; false for a NaN real input: */
     /* cppcheck-suppress knownConditionTrueFalse */
     else if (x_in == x_prev) { /* repeated samples create no TP */
+        if (S->horner != S->degree) {
+            return TCM_NAME(emit_rare)(S, x_prev, 2);
+        }
         return YV(S->y_prev); /* a closed window stays closed: the next move reopens it */
     } else {
         return TCM_NAME(step_edge)(S, x_in); /* NaN */
     }
-    y = TCM_NAME(branch_y_poly)(S, x);
+    return TCM_NAME(emit)(S, x, 0);
+}
+
+/* emit() for the other values of S->horner: the output by Horner's loop
+ * (fast: 1 on the fast path, 0 on a slow one, 2 for a repeated sample,
+ * whose output stays), then the pending requests. */
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int fast)
+{
+    const TCM_Y y = fast == 2 ? YV(S->y_prev) : TCM_NAME(branch_y)(S, x);
+    if (fast == 1) {
+        XV(S->window[S->moving_end]) = x;
+    }
     YV(S->y_prev) = y;
+    if (S->horner != S->degree) {
+        TCM_NAME(serve)(S);
+    }
     return y;
 }
 
@@ -654,7 +727,6 @@ static TCM_NOINLINE TCM_Y TCM_NAME(no_instance)(void) { return 0; }
  * closes the window, so the next one goes through step_slow(), which sets it. */
 HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
 {
-    TCM_Y y;
     if (S == NULL) {
         return TCM_NAME(no_instance)();
     }
@@ -663,16 +735,13 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
     if (!(x > XV(S->window[0]) && x < XV(S->window[1]))) {
         return TCM_NAME(step_slow)(S, x);
     }
-    y = TCM_NAME(branch_y_poly)(S, (TCM_X)x); /* the window is empty for other curve kinds */
-    XV(S->window[S->moving_end]) = (TCM_X)x;
-    YV(S->y_prev) = y;
-    return y;
+    return TCM_NAME(emit)(S, (TCM_X)x, 1); /* the window is empty for other curve kinds */
 }
 
 /* The block call's inner loop: the samples from i on that stay inside the
  * fast-path window, with the window in registers and the branch in locals
  * (sample() keeps them in S: a store and a reload per sample). The same
- * arithmetic as step() (branch_y_poly), so outputs are identical. Returns
+ * arithmetic as step() (emit), so outputs are identical. Returns
  * the first sample that leaves the window, n if none. */
 static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, size_t n)
 {
@@ -681,6 +750,9 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
     const TCM_Y u_scale = YV(S->u_scale);
     const unsigned deg = S->horner;
     TCM_X w0 = XV(S->window[0]), w1 = XV(S->window[1]);
+    if (deg != S->degree) { /* a pending request: step_slow() serves it */
+        return i;
+    }
     /* One loop per direction: a selected update of w0 or w1 in one loop put
      * a select on the loop-carried compare (measured 0.41 vs 0.36 of
      * PI-10's time on the host). */
@@ -735,6 +807,34 @@ static hyst_status_t TCM_NAME(block)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, s
         ++i;
     }
     return failed ? HYST_ERR_NONFINITE : (hyst_status_t)worst;
+}
+
+/* The last sample and the error bound as one consistent view, read from
+ * any context (tcm.h, "Concurrency"). A fast-path sample changes x and y
+ * without changing seq but moves x strictly: the same x and seq before and
+ * after the reads prove that y and the bound belong to that x. */
+typedef struct {
+    TCM_X x;
+    TCM_Y y, bound;
+} TCM_NAME(view_t);
+
+static TCM_NAME(view_t) TCM_NAME(view)(const hyst_tcm_t *S)
+{
+    const volatile hyst_tcm_t *V = S;
+    TCM_NAME(view_t) v;
+    unsigned attempt;
+    for (attempt = 0u; attempt < HYST_READ_ATTEMPTS; ++attempt) {
+        const unsigned long seq = V->seq;
+        HYST_BARRIER();
+        v.x = XV(V->window[V->moving_end]);
+        v.y = YV(V->y_prev);
+        v.bound = YV(V->forgot) + YV(V->db_err);
+        HYST_BARRIER();
+        if (v.x == XV(V->window[V->moving_end]) && seq == V->seq) {
+            break;
+        }
+    }
+    return v;
 }
 
 #undef XV

@@ -112,7 +112,8 @@ hyst_status_t NUM_NAME(init_inverse_)(hyst_tcm_t *S, hyst_curve_t *inv, const hy
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(set_deadband)(hyst_tcm_t *S, NUM_T width)
+/* The deadband checks shared by the immediate call and the request. */
+static hyst_status_t NUM_NAME(deadband_check)(const hyst_tcm_t *S, NUM_T width)
 {
     if (S == NULL) {
         return HYST_ERR_NULL;
@@ -120,9 +121,29 @@ hyst_status_t NUM_NAME(set_deadband)(hyst_tcm_t *S, NUM_T width)
     if (S->variant != (unsigned)NUM_VARIANT || !(width >= 0 && NUM_NAME(is_finite)(width))) {
         return HYST_ERR_ARG;
     }
+    return HYST_OK;
+}
+
+hyst_status_t NUM_NAME(set_deadband)(hyst_tcm_t *S, NUM_T width)
+{
+    const hyst_status_t st = NUM_NAME(deadband_check)(S, width);
+    if (st != HYST_OK) {
+        return st;
+    }
     S->deadband.NUM_F = width;
     NUM_NAME(set_detour)(S);
+    ++S->seq;
     return HYST_OK;
+}
+
+hyst_status_t NUM_NAME(request_deadband)(hyst_tcm_t *S, NUM_T width)
+{
+    const hyst_status_t st = NUM_NAME(deadband_check)(S, width);
+    if (st != HYST_OK) {
+        return st;
+    }
+    S->req_width.NUM_F = width; /* before the counter: the step reads it after */
+    return hyst_post_request_(S, &S->req_deadband);
 }
 
 NUM_T NUM_NAME(step)(hyst_tcm_t *S, NUM_T x) { return NUM_NAME(sample)(S, x); }
@@ -132,16 +153,13 @@ hyst_status_t NUM_NAME(process)(hyst_tcm_t *S, const NUM_T *x, NUM_T *y, size_t 
     return NUM_NAME(block)(S, x, y, n);
 }
 
-NUM_T NUM_NAME(output)(const hyst_tcm_t *S) { return S != NULL ? S->y_prev.NUM_F : 0; }
+NUM_T NUM_NAME(output)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).y : 0; }
 
-NUM_T NUM_NAME(input)(const hyst_tcm_t *S)
-{
-    return S != NULL ? S->window[S->moving_end].NUM_F : 0;
-}
+NUM_T NUM_NAME(input)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).x : 0; }
 
 NUM_T NUM_NAME(error_bound)(const hyst_tcm_t *S)
 {
-    return S != NULL ? S->forgot.NUM_F + S->db_err.NUM_F : 0;
+    return S != NULL ? NUM_NAME(view)(S).bound : 0;
 }
 
 #include "pi_model.h"

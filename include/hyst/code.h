@@ -95,6 +95,10 @@ hyst_status_t hyst_code_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve,
  */
 hyst_status_t hyst_code_set_deadband(hyst_tcm_t *S, uint_least32_t codes);
 
+/** @brief hyst_code_set_deadband() as a request from another context (tcm.h,
+ *         "Concurrency"): applied by the stepping context at its next step. */
+hyst_status_t hyst_code_request_deadband(hyst_tcm_t *S, uint_least32_t codes);
+
 /**
  * @brief Advances the model by one code.
  *

@@ -86,8 +86,17 @@ size_t hyst_snapshot_size(const hyst_tcm_t *S);
  * @param[in]  S    initialised instance (not modified).
  * @param[out] buf  @p size elements; each receives one octet (0..255).
  * @param[in]  size elements available in @p buf.
+ * May be called from a context that the stepping context preempts (tcm.h,
+ * "Concurrency"): the copy is checked against the state's sequence counter
+ * and retried, so the octets always describe one state the model was in,
+ * and never go past @p size, whatever the steps do meanwhile.
+ *
  * @param[out] len  if not NULL: octets written (hyst_snapshot_size(S)).
- * @return HYST_OK, HYST_ERR_NULL, or HYST_ERR_NOSPACE (nothing written).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (not initialised),
+ *         HYST_ERR_NOSPACE (nothing written, or an earlier attempt's octets
+ *         with the magic cleared), or HYST_ERR_BUSY (slow samples changed
+ *         the state during every attempt; the magic is cleared, so the
+ *         buffer restores as nothing).
  */
 hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf,
                                  size_t size, size_t *len);

@@ -41,7 +41,8 @@ typedef enum hyst_status {
     HYST_ERR_LAYOUT = -18,       /**< the caller was compiled with other layout options
                                       (HYST_LAYOUT, config.h) or passed a curve or
                                       instance of another variant */
-    HYST_ERR_OVERLAP = -19       /**< caller arrays overlap */
+    HYST_ERR_OVERLAP = -19,      /**< caller arrays overlap */
+    HYST_ERR_BUSY = -20          /**< the stepping context kept changing the state (snapshot) */
 } hyst_status_t;
 
 /** @name Sticky event flags (hyst_events()): set by samples, cleared by the caller. */

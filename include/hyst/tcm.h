@@ -50,6 +50,29 @@
  * an accessor given NULL returns 0 (or does nothing).
  *
  * Instances share nothing: several may run side by side (multi-axis stages).
+ *
+ * Concurrency (docs/reliability.md). The usual firmware pattern is
+ * supported without masking interrupts: one STEPPING context (a sampling
+ * interrupt, or the highest-priority task) calls step/process on an
+ * instance, and OTHER contexts that it preempts on the same core (the main
+ * loop, lower-priority tasks) may at any time call:
+ *  - hyst_snapshot_save(): a consistent copy of one state the model was in
+ *    (retried if a step changed the turning points meanwhile; at worst
+ *    HYST_ERR_BUSY, never a torn snapshot, never a write past the buffer);
+ *  - hyst_request_reset(), hyst_*_request_deadband(),
+ *    hyst_request_clear_events(): requests applied by the stepping context
+ *    at its next step (at the latest at the next sample that changes the
+ *    input: a block call applies them at its next slow sample or next
+ *    call), before that step's output is computed; hyst_request_pending();
+ *  - every read: hyst_status(), hyst_events(), the counts, hyst_rising(),
+ *    hyst_capacity(), hyst_*_output(), hyst_*_input(),
+ *    hyst_*_error_bound() (multi-field reads are re-read until consistent).
+ * Only the stepping context (or any context while no step can run: before
+ * the interrupt is enabled, or with it masked) may call init, step,
+ * process, hyst_reset(), hyst_*_set_deadband(), hyst_clear_events() and
+ * hyst_snapshot_restore(). Not supported: two contexts stepping one
+ * instance, or contexts running at the same time on two cores (use a lock).
+ * The cost: one increment per slow sample (none on the fast path).
  */
 #ifndef HYST_TCM_H
 #define HYST_TCM_H
@@ -89,9 +112,13 @@ typedef struct hyst_tcm {
     hyst_num_t u_scale;      /**< sign * unit */
     hyst_num_t y_prev;       /**< output for the last valid input */
     unsigned moving_end;     /**< 0 rising (the lower end follows x), 1 falling */
-    /** degree of the inline Horner path (polynomial curves), 0: the curve is
-     *  evaluated out of line and every sample is slow */
+    /** degree of the per-sample Horner path, or a value above every degree
+     *  while a request is pending (posted by another context: the per-sample
+     *  paths then serve it at no cost of their own) */
     unsigned horner;
+    /** degree of the polynomial curve; 0: the curve is evaluated out of line
+     *  and every sample is slow */
+    unsigned degree;
     hyst_num_t coef[HYST_MAX_DEGREE]; /**< branch shape G, a copy of the curve's */
     int status;              /**< hyst_status_t of the last sample */
     unsigned events;         /**< sticky HYST_EVENT_* flags */
@@ -115,6 +142,16 @@ typedef struct hyst_tcm {
     hyst_num_t db_err;       /**< error bound of that skipped reversal */
     hyst_num_t forgot;       /**< error bound: misses of live merges */
     size_t forgot_level;     /**< all live while stack depth > this */
+    /* Concurrency ("Concurrency" above). */
+    unsigned long seq;       /**< changed by every state change but a fast-path
+                              *   sample's; written by the stepping context only */
+    unsigned req_reset;      /**< requests: counters incremented by the other context */
+    unsigned req_clear;
+    unsigned req_deadband;
+    hyst_num_t req_width;    /**< deadband width of the last deadband request */
+    unsigned done_reset;     /**< the request counters applied, by the stepping context */
+    unsigned done_clear;
+    unsigned done_deadband;
 } hyst_tcm_t;
 
 /**
@@ -292,6 +329,27 @@ double hyst_f64_error_bound(const hyst_tcm_t *S);
  */
 void hyst_reset(hyst_tcm_t *S);
 
+/**
+ * @name Requests from another context (see "Concurrency" above)
+ * @brief Safe while the stepping context may preempt the caller: the
+ *        request is recorded now and applied by the stepping context at its
+ *        next step, before that step's output. Posting one again before it
+ *        is applied applies it once (a deadband request: the last width).
+ * @return HYST_OK, HYST_ERR_NULL, or HYST_ERR_ARG (an uninitialised
+ *         instance; a deadband as hyst_*_set_deadband() refuses it).
+ */
+/**@{*/
+hyst_status_t hyst_request_reset(hyst_tcm_t *S);
+hyst_status_t hyst_request_clear_events(hyst_tcm_t *S);
+hyst_status_t hyst_f32_request_deadband(hyst_tcm_t *S, float width);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_request_deadband(hyst_tcm_t *S, double width);
+#endif
+/**@}*/
+
+/** @brief 1 while a posted request has not been applied yet; 0 after (and for NULL). */
+int hyst_request_pending(const hyst_tcm_t *S);
+
 /** @brief Status of the last sample (hyst_status_t); NULL: HYST_ERR_NULL. */
 int hyst_status(const hyst_tcm_t *S);
 
@@ -324,6 +382,7 @@ typedef hyst_tcm_t hyst_t; /**< an instance (the struct is the same for every va
 #define hyst_step HYST_DEFAULT_NAME_(step)
 #define hyst_process HYST_DEFAULT_NAME_(process)
 #define hyst_set_deadband HYST_DEFAULT_NAME_(set_deadband)
+#define hyst_request_deadband HYST_DEFAULT_NAME_(request_deadband)
 #define hyst_output HYST_DEFAULT_NAME_(output)
 #define hyst_input HYST_DEFAULT_NAME_(input)
 #define hyst_error_bound HYST_DEFAULT_NAME_(error_bound)
