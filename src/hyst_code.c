@@ -143,6 +143,8 @@ uint_least32_t hyst_code_input(const hyst_tcm_t *S)
     return S != NULL ? hyst_code_view(S).x : 0u;
 }
 
+float hyst_code_rounding_bound(const hyst_tcm_t *S) { return S != NULL ? S->rounding.f32 : 0; }
+
 float hyst_code_error_bound(const hyst_tcm_t *S)
 {
     return S != NULL ? hyst_code_view(S).bound : 0;

@@ -38,7 +38,7 @@ static void normalise(hyst_wide_t *q, const hyst_wide_t *c, unsigned n,
 static void bernstein_on(hyst_wide_t *beta, const hyst_wide_t *d, unsigned m,
                          hyst_wide_t a, hyst_wide_t w)
 {
-    hyst_wide_t q[HYST_MAX_DEGREE];
+    hyst_wide_t q[HYST_MAX_DEGREE + 1]; /* m <= HYST_MAX_DEGREE */
     hyst_wide_t scale = 1;
     unsigned i, k;
     for (k = 0u; k <= m; ++k) { /* highest power first for taylor_shift */
@@ -173,6 +173,48 @@ int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
     return ok;
 }
 
+/* Rounding bound of one branch evaluation in the variant's type, from the
+ * normalised coefficients g (lowest power first; G(u) = sum g_k u^k, k >= 1,
+ * u in [0, 1]). u = (x - x_k) * (+-unit) carries a relative error of at
+ * most gamma(2) (the difference, the product), which moves G by at most
+ * gamma(2) max |u G'(u)|, bounded by the largest Bernstein coefficient of
+ * u G'(u) on [0, 1] (no cancellation counted twice). Horner's rule with n
+ * multiply-adds and the final product errs by at most gamma(2n + 1)
+ * sum |g_k| (the classical a-priori bound of Horner's rule; it is this term
+ * that grows with cancelling coefficients). The sum y_k +- G rounds once
+ * more: eps max |y|. gamma(m) = m eps / (1 - m eps), eps the unit roundoff.
+ * Stores the bound, 1 % above, in curve->rounding; returns 0 if it exceeds
+ * HYST_MAX_ROUNDING of the output range. */
+static int rounding_bound(hyst_curve_t *curve, const hyst_wide_t *g, unsigned n,
+                          unsigned variant)
+{
+    const hyst_wide_t eps = variant == (unsigned)HYST_VARIANT_F64
+                                ? (hyst_wide_t)DBL_EPSILON / 2
+                                : (hyst_wide_t)FLT_EPSILON / 2;
+    hyst_wide_t ug[HYST_MAX_DEGREE + 1], beta[HYST_MAX_DEGREE + 1];
+    hyst_wide_t sum = 0, range = 0, slope = 0, bound, y_max, y_hi;
+    unsigned k;
+    for (k = 0u; k <= n; ++k) {
+        ug[k] = (hyst_wide_t)k * g[k]; /* u G'(u), lowest power first */
+    }
+    bernstein_on(beta, ug, n, 0, 1);
+    for (k = 0u; k <= n; ++k) {
+        slope = hyst_wide_abs(beta[k]) > slope ? hyst_wide_abs(beta[k]) : slope;
+        if (k > 0u) {
+            sum += hyst_wide_abs(g[k]);
+            range += g[k];
+        }
+    }
+    y_hi = hyst_wide_abs(g[0] + range);
+    y_max = y_hi > hyst_wide_abs(g[0]) ? y_hi : hyst_wide_abs(g[0]);
+    bound = (2 * eps / (1 - 2 * eps)) * slope +
+            ((hyst_wide_t)(2u * n + 1u) * eps / (1 - (hyst_wide_t)(2u * n + 1u) * eps)) * sum +
+            eps * y_max;
+    bound *= (hyst_wide_t)1.01; /* the bound's own rounding, in hyst_wide_t */
+    (void)hyst_num_set(&curve->rounding, variant, bound);
+    return bound <= (hyst_wide_t)HYST_MAX_ROUNDING * range;
+}
+
 hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsigned variant,
                                unsigned long layout)
 {
@@ -248,6 +290,9 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
     }
     if (!hyst_poly_is_increasing(c, n, lo, hi, NULL)) {
         return HYST_ERR_NOT_INCREASING;
+    }
+    if (!rounding_bound(&out, g, n, variant)) {
+        return HYST_ERR_ILL_CONDITIONED;
     }
     *curve = out;
     return HYST_OK;

@@ -28,6 +28,8 @@ const char *hyst_status_str(int status)
     case HYST_ERR_LAYOUT: return "layout options or variant differ from the library's";
     case HYST_ERR_OVERLAP: return "caller arrays overlap";
     case HYST_ERR_BUSY: return "state kept changing during the copy; try again";
+    case HYST_ERR_ILL_CONDITIONED:
+        return "curve too ill-conditioned for this number type (use f64 or a lower degree)";
     default: return "unknown status";
     }
 }

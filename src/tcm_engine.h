@@ -230,6 +230,7 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
     YV(S->y_lo) = YV(curve->y_lo);
     YV(S->y_hi) = YV(curve->y_hi);
     YV(S->unit) = unit;
+    YV(S->rounding) = YV(curve->rounding);
     S->degree = curve->kind == (unsigned)HYST_CURVE_POLY ? curve->u.poly.degree : 0u;
     S->horner = S->degree;
     for (k = 0u; k < HYST_MAX_DEGREE; ++k) {

@@ -157,6 +157,8 @@ NUM_T NUM_NAME(output)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(
 
 NUM_T NUM_NAME(input)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).x : 0; }
 
+NUM_T NUM_NAME(rounding_bound)(const hyst_tcm_t *S) { return S != NULL ? S->rounding.NUM_F : 0; }
+
 NUM_T NUM_NAME(error_bound)(const hyst_tcm_t *S)
 {
     return S != NULL ? NUM_NAME(view)(S).bound : 0;

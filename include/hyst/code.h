@@ -126,6 +126,9 @@ uint_least32_t hyst_code_input(const hyst_tcm_t *S);
 /** @brief As hyst_f32_error_bound(): bound on the error caused by forgetting. */
 float hyst_code_error_bound(const hyst_tcm_t *S);
 
+/** @brief As hyst_f32_rounding_bound(): the curve's rounding bound in float. */
+float hyst_code_rounding_bound(const hyst_tcm_t *S);
+
 #ifdef __cplusplus
 }
 #endif

@@ -16,6 +16,7 @@
  * | HYST_MAX_DEGREE     | 9       | highest polynomial degree of a curve (>= 1)                | yes    |
  * | HYST_INV_KNOTS      | 16      | intervals of the start table of an inverted polynomial      | yes    |
  * | HYST_INV_MAX_ITER   | 12      | bound on the work of an inverted polynomial per sample      | no     |
+ * | HYST_MAX_ROUNDING   | 1e-4    | largest rounding bound of a branch evaluation init accepts, of the output range | no |
  * | HYST_CODE_BITS      | 16      | widest DAC code of the code variant (1..24)                 | yes    |
  * | HYST_MONOTONE_DEPTH | 20      | dyadic depth of the monotonicity proof at init              | no     |
  * | HYST_NO_DOUBLE      | off     | init-time arithmetic in float (targets without double)     | no     |
@@ -54,6 +55,12 @@
 #endif
 #if HYST_MAX_DEGREE < 1 || HYST_MAX_DEGREE > 63
 #error "HYST_MAX_DEGREE must be 1..63"
+#endif
+
+/* Largest rounding bound of a polynomial branch evaluation that init
+ * accepts, as a fraction of the output range (curve.h, "rounding"). */
+#ifndef HYST_MAX_ROUNDING
+#define HYST_MAX_ROUNDING 1e-4
 #endif
 
 #ifndef HYST_INV_KNOTS

@@ -83,6 +83,13 @@ typedef struct hyst_curve {
     /** argument scale of g: 1 / (hi - lo) for POLY (g takes u), 1 for the
      *  other kinds (g takes d itself) */
     hyst_num_t unit;
+    /** POLY: bound on |computed - exact| of one branch evaluation
+     *  y_k +- g(x - x_k) in the variant's type (output units; the rounding
+     *  of y_k itself adds one such bound per stored turning point below the
+     *  current one); at most HYST_MAX_ROUNDING of the output range, else the
+     *  constructor refuses the curve (HYST_ERR_ILL_CONDITIONED). 0 for the
+     *  other kinds (not computed). */
+    hyst_num_t rounding;
     union {
         hyst_curve_poly_t poly; /**< POLY */
         struct {

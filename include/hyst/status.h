@@ -42,7 +42,9 @@ typedef enum hyst_status {
                                       (HYST_LAYOUT, config.h) or passed a curve or
                                       instance of another variant */
     HYST_ERR_OVERLAP = -19,      /**< caller arrays overlap */
-    HYST_ERR_BUSY = -20          /**< the stepping context kept changing the state (snapshot) */
+    HYST_ERR_BUSY = -20,         /**< the stepping context kept changing the state (snapshot) */
+    HYST_ERR_ILL_CONDITIONED = -21 /**< the curve's rounding bound in this variant's type
+                                        exceeds HYST_MAX_ROUNDING of its output range */
 } hyst_status_t;
 
 /** @name Sticky event flags (hyst_events()): set by samples, cleared by the caller. */

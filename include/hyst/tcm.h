@@ -136,6 +136,7 @@ typedef struct hyst_tcm {
     hyst_num_t lo, hi;       /**< domain, in the stored input type */
     hyst_num_t y_lo, y_hi;   /**< curve values at lo and hi */
     hyst_num_t unit;         /**< scale from an input difference to G's argument */
+    hyst_num_t rounding;     /**< the curve's rounding bound (curve.h) */
     /* Bounded memory (docs/memory.md), off the fast path. */
     hyst_num_t deadband;     /**< reversals narrower than this: not stored */
     hyst_num_t db_reach;     /**< widest skipped reversal, open window */
@@ -308,15 +309,23 @@ hyst_status_t hyst_f64_set_deadband(hyst_tcm_t *S, double width);
  *        deadband: the sum of the misses of the full-array merges whose
  *        outer turning point is still stored, plus the bound of the open
  *        deadband excursion (docs/memory.md; rounding not included).
+ *        rounding_bound: for polynomial curves, the bound on the rounding
+ *        error of one branch evaluation in the variant's type (curve.h,
+ *        "rounding": at most HYST_MAX_ROUNDING of the output range, checked
+ *        at init); an output after d stored turning points differs from
+ *        exact arithmetic on the same inputs by at most (d + 1) times it.
+ *        0 for other curve kinds.
  */
 /**@{*/
 float hyst_f32_output(const hyst_tcm_t *S);
 float hyst_f32_input(const hyst_tcm_t *S);
 float hyst_f32_error_bound(const hyst_tcm_t *S);
+float hyst_f32_rounding_bound(const hyst_tcm_t *S);
 #if HYST_ENABLE_F64
 double hyst_f64_output(const hyst_tcm_t *S);
 double hyst_f64_input(const hyst_tcm_t *S);
 double hyst_f64_error_bound(const hyst_tcm_t *S);
+double hyst_f64_rounding_bound(const hyst_tcm_t *S);
 #endif
 /**@}*/
 
@@ -386,6 +395,7 @@ typedef hyst_tcm_t hyst_t; /**< an instance (the struct is the same for every va
 #define hyst_output HYST_DEFAULT_NAME_(output)
 #define hyst_input HYST_DEFAULT_NAME_(input)
 #define hyst_error_bound HYST_DEFAULT_NAME_(error_bound)
+#define hyst_rounding_bound HYST_DEFAULT_NAME_(rounding_bound)
 /**@}*/
 
 #ifdef __cplusplus
