@@ -69,7 +69,7 @@ class Fit:
         """Outputs of a fresh model (at A0) for the inputs x; ``model`` is untouched."""
         m = Model(self.coeffs, self.lo, self.hi, dtype=self.model.dtype,
                   capacity=self.model.capacity)
-        return m.process(np.asarray(x, dtype=self.model.dtype))
+        return m.process(np.ascontiguousarray(x, dtype=self.model.dtype))
 
     def __repr__(self):
         c = ", ".join(f"{v:.9g}" for v in self.coeffs)

@@ -14,6 +14,7 @@
 
 #include <cstring>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "hyst/hyst.h"
@@ -309,8 +310,11 @@ template <class X, class C, class Cls> void def_process(Cls &cls)
     cls.def(
         "process",
         [](C &self, nb::handle x, nb::handle out) {
+            const char *dtype = std::is_floating_point_v<X>
+                                    ? (sizeof(X) == 4u ? "float32" : "float64")
+                                    : (sizeof(X) == 2u ? "uint16" : "uint32");
             nb::object a = nb::module_::import_("numpy").attr("ascontiguousarray")(
-                x, "dtype"_a = nb::dtype<X>());
+                x, "dtype"_a = dtype);
             return self.process(nb::cast<In<X>>(a), out);
         },
         "x"_a, "out"_a = nb::none());
