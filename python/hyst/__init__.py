@@ -1,0 +1,40 @@
+# SPDX-License-Identifier: MIT
+"""hyst: hysteresis models (trajectory construction method) for actuators.
+
+Every number is computed by the C library that runs on the target (the
+extension ``hyst._hyst`` is built from the repository's ``src/``): identify
+f0 on a PC, check the model against measurements, deploy the coefficients.
+
+>>> import numpy as np, hyst
+>>> m = hyst.Model([-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1], lo=0, hi=40)
+>>> y = m.process(np.array([0.0, 20.0, 10.0, 40.0]))
+
+See docs/python.md in the repository.
+"""
+from ._errors import HystError
+from ._hyst import (
+    CODE_MAX,
+    EVENT_CLAMPED,
+    EVENT_FULL,
+    EVENT_NONFINITE,
+    MAX_DEGREE,
+    SNAPSHOT_VERSION,
+    CodeModel,
+    ModelF32,
+    ModelF64,
+    PIF32,
+    PIF64,
+    Status,
+    Tcm,
+    __version__,
+    status_str,
+)
+from ._api import DEFAULT_CAPACITY, PI, Compensator, Fit, Model, fit
+from ._plot import plot
+
+__all__ = [
+    "CODE_MAX", "EVENT_CLAMPED", "EVENT_FULL", "EVENT_NONFINITE", "MAX_DEGREE",
+    "SNAPSHOT_VERSION", "DEFAULT_CAPACITY", "CodeModel", "Compensator", "Fit", "HystError",
+    "Model", "ModelF32", "ModelF64", "PI", "PIF32", "PIF64", "Status", "Tcm", "__version__",
+    "fit", "plot", "status_str",
+]

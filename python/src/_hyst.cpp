@@ -1,0 +1,434 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * hyst._hyst: the C library as Python objects (nanobind). Every number is
+ * computed by the library in src/; this file only owns the memory (the
+ * instances, their turning-point arrays, curves, PI parameters), maps numpy
+ * arrays onto the library's pointers without copies, and turns error codes
+ * into hyst.HystError. The friendly layer (dtype choice, fit(), plot()) is
+ * python/hyst/.
+ */
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+#include <nanobind/stl/unique_ptr.h>
+#include <nanobind/stl/vector.h>
+
+#include <cstring>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+#include "hyst/hyst.h"
+#include "hyst/version.h"
+
+namespace nb = nanobind;
+using namespace nb::literals;
+
+namespace {
+
+/* Raises hyst.HystError(status, context); the class lives in Python. */
+[[noreturn]] void raise_status(int status, const char *context)
+{
+    nb::object cls = nb::module_::import_("hyst._errors").attr("HystError");
+    PyErr_SetObject(cls.ptr(), nb::make_tuple(status, context).ptr());
+    throw nb::python_error();
+}
+
+/* Errors (negative codes) raise; OK and warnings are returned. */
+int check(int status, const char *context)
+{
+    if (status < 0) {
+        raise_status(status, context);
+    }
+    return status;
+}
+
+/* A polynomial f0 from its coefficients, highest power first. */
+hyst_poly_t make_poly(const std::vector<double> &coeffs, double lo, double hi)
+{
+    hyst_poly_t f0{};
+    if (coeffs.size() < 2u || coeffs.size() > HYST_MAX_DEGREE + 1u) {
+        raise_status(HYST_ERR_DEGREE, "f0 needs 2 .. HYST_MAX_DEGREE + 1 coefficients");
+    }
+    f0.degree = static_cast<unsigned>(coeffs.size() - 1u);
+    f0.lo = lo;
+    f0.hi = hi;
+    std::memcpy(f0.coeffs, coeffs.data(), coeffs.size() * sizeof(double));
+    return f0;
+}
+
+/* The library's functions of one real variant, by number type. */
+template <class T> struct Ops;
+#define HYST_PY_OPS(T, P, NAME)                                             \
+    template <> struct Ops<T> {                                             \
+        static constexpr auto init = hyst_##P##_init_;                      \
+        static constexpr auto init_inverse = hyst_##P##_init_inverse_;      \
+        static constexpr auto step = hyst_##P##_step;                       \
+        static constexpr auto process = hyst_##P##_process;                 \
+        static constexpr auto set_deadband = hyst_##P##_set_deadband;       \
+        static constexpr auto output = hyst_##P##_output;                   \
+        static constexpr auto input = hyst_##P##_input;                     \
+        static constexpr auto error_bound = hyst_##P##_error_bound;         \
+        static constexpr auto pi_init = hyst_##P##_pi_init;                 \
+        static constexpr auto pi_init_inverse = hyst_##P##_pi_init_inverse; \
+        static constexpr auto pi_step = hyst_##P##_pi_step;                 \
+        static constexpr auto pi_process = hyst_##P##_pi_process;           \
+        static constexpr auto pi_output = hyst_##P##_pi_output;             \
+        static constexpr const char *dtype = NAME;                          \
+    };
+HYST_PY_OPS(float, f32, "float32")
+HYST_PY_OPS(double, f64, "float64")
+#undef HYST_PY_OPS
+
+template <class T> using In = nb::ndarray<const T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+template <class T>
+using Out = nb::ndarray<nb::numpy, T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+
+/*
+ * Runs a block call fn(x, y, n) over x into `out` (an array of the output
+ * type, written in place and returned) or into a new array.
+ */
+template <class X, class Y, class Fn> nb::object block(const In<X> &x, nb::handle out, Fn fn)
+{
+    const size_t n = x.shape(0);
+    if (!out.is_none()) {
+        Out<Y> o;
+        if (!nb::try_cast(out, o, false)) {
+            throw nb::type_error("out must be a contiguous 1-d numpy array of the output dtype");
+        }
+        if (o.shape(0) != n) {
+            throw nb::value_error("out must have as many entries as the input");
+        }
+        fn(x.data(), o.data(), n);
+        return nb::borrow(out);
+    }
+    std::unique_ptr<Y[]> y(new Y[n > 0u ? n : 1u]);
+    fn(x.data(), y.get(), n);
+    Y *p = y.release();
+    nb::capsule owner(p, [](void *q) noexcept { delete[] static_cast<Y *>(q); });
+    return nb::cast(Out<Y>(p, {n}, owner));
+}
+
+/* What every TCM variant shares: one instance and the calls written once. */
+struct Tcm {
+    hyst_tcm_t S{};
+    int block_status = HYST_OK; /* returned by the last process() */
+    std::vector<double> coeffs; /* f0, highest power first */
+    double lo = 0.0, hi = 0.0;
+
+    Tcm() = default;
+    Tcm(const Tcm &) = delete;
+    Tcm &operator=(const Tcm &) = delete;
+
+    nb::bytes save() const
+    {
+        std::vector<unsigned char> buf(HYST_SNAPSHOT_SIZE(hyst_capacity(&S)));
+        size_t len = 0u;
+        check(hyst_snapshot_save(&S, buf.data(), buf.size(), &len), "snapshot save");
+        return nb::bytes(reinterpret_cast<const char *>(buf.data()), len);
+    }
+    void restore(const nb::bytes &b)
+    {
+        check(hyst_snapshot_restore(&S, reinterpret_cast<const unsigned char *>(b.c_str()),
+                                    b.size()),
+              "snapshot restore");
+    }
+};
+
+/* An instance with its own four turning-point arrays (X inputs, Y outputs). */
+template <class X, class Y> struct Owned : Tcm {
+    std::vector<X> xl, xr;
+    std::vector<Y> yl, yr;
+    explicit Owned(size_t capacity)
+        : xl(capacity > 0u ? capacity : 1u), xr(xl.size()), yl(xl.size()), yr(xl.size())
+    {
+    }
+};
+
+/* Model or compensator of a real variant. */
+template <class T> struct Real : Owned<T, T> {
+    using O = Ops<T>;
+    hyst_curve_t inv{}; /* the compensator's inverse curve (the instance points at it) */
+    bool inverse;
+    double deadband = 0.0;
+
+    Real(const std::vector<double> &c, double lo_, double hi_, size_t capacity, bool inverse_)
+        : Owned<T, T>(capacity), inverse(inverse_)
+    {
+        const hyst_poly_t f0 = make_poly(c, lo_, hi_);
+        int st;
+        if (inverse) {
+            st = O::init_inverse(&this->S, &inv, &f0, this->xl.data(), this->yl.data(),
+                                 this->xr.data(), this->yr.data(), capacity, HYST_LAYOUT);
+        } else {
+            st = O::init(&this->S, &f0, this->xl.data(), this->yl.data(), this->xr.data(),
+                         this->yr.data(), capacity, HYST_LAYOUT);
+        }
+        check(st, inverse ? "compensator init" : "model init");
+        this->coeffs = c;
+        this->lo = lo_;
+        this->hi = hi_;
+    }
+    T step(T x) { return O::step(&this->S, x); }
+    nb::object process(const In<T> &x, nb::handle out)
+    {
+        return block<T, T>(x, out, [this](const T *px, T *py, size_t n) {
+            this->block_status = O::process(&this->S, px, py, n);
+        });
+    }
+    void set_deadband(double w)
+    {
+        check(O::set_deadband(&this->S, static_cast<T>(w)), "deadband");
+        deadband = static_cast<double>(static_cast<T>(w));
+    }
+};
+
+/* The code variant: integer DAC codes in, float out. */
+struct Code : Owned<hyst_code_word_t, float> {
+    unsigned long code_lo, code_hi;
+    unsigned long deadband = 0u;
+    Code(const std::vector<double> &c, double lo_, double hi_, unsigned long clo,
+         unsigned long chi, size_t capacity)
+        : Owned(capacity), code_lo(clo), code_hi(chi)
+    {
+        const hyst_poly_t f0 = make_poly(c, lo_, hi_);
+        if (clo > HYST_CODE_MAX || chi > HYST_CODE_MAX) {
+            raise_status(HYST_ERR_DOMAIN, "codes wider than HYST_CODE_BITS");
+        }
+        check(hyst_code_init_(&S, &f0, static_cast<uint_least32_t>(clo),
+                              static_cast<uint_least32_t>(chi), xl.data(), yl.data(), xr.data(),
+                              yr.data(), capacity, HYST_LAYOUT),
+              "code model init");
+        coeffs = c;
+        lo = lo_;
+        hi = hi_;
+    }
+    float step(unsigned long code)
+    {
+        return hyst_code_step(&S, static_cast<uint_least32_t>(code > HYST_CODE_MAX ? HYST_CODE_MAX : code));
+    }
+    nb::object process(const In<hyst_code_word_t> &x, nb::handle out)
+    {
+        return block<hyst_code_word_t, float>(
+            x, out, [this](const hyst_code_word_t *px, float *py, size_t n) {
+                block_status = hyst_code_process(&S, px, py, n);
+            });
+    }
+    void set_deadband(unsigned long codes)
+    {
+        if (codes > HYST_CODE_MAX) {
+            raise_status(HYST_ERR_ARG, "deadband wider than HYST_CODE_BITS");
+        }
+        check(hyst_code_set_deadband(&S, static_cast<uint_least32_t>(codes)), "deadband");
+        deadband = codes;
+    }
+};
+
+/* The Prandtl-Ishlinskii model of a real variant, owning its parameters. */
+template <class T> struct Pi {
+    using O = Ops<T>;
+    hyst_pi_t P{};
+    std::vector<T> r, w, z;
+    int block_status = HYST_OK;
+
+    explicit Pi(size_t n) : r(n > 0u ? n : 1u), w(r.size()), z(r.size()) {}
+    Pi(const std::vector<double> &r_, const std::vector<double> &w_) : Pi(r_.size())
+    {
+        if (r_.size() != w_.size()) {
+            raise_status(HYST_ERR_ARG, "thresholds and weights differ in length");
+        }
+        for (size_t i = 0; i < r_.size(); ++i) {
+            r[i] = static_cast<T>(r_[i]);
+            w[i] = static_cast<T>(w_[i]);
+        }
+        check(O::pi_init(&P, r.data(), w.data(), z.data(), r_.size()), "PI init");
+    }
+    Pi(const Pi &) = delete;
+    Pi &operator=(const Pi &) = delete;
+
+    std::unique_ptr<Pi> inverse() const
+    {
+        std::unique_ptr<Pi> inv(new Pi(P.n));
+        check(O::pi_init_inverse(&inv->P, &P, inv->r.data(), inv->w.data(), inv->z.data()),
+              "PI inverse");
+        return inv;
+    }
+    T step(T x) { return O::pi_step(&P, x); }
+    nb::object process(const In<T> &x, nb::handle out)
+    {
+        return block<T, T>(x, out, [this](const T *px, T *py, size_t n) {
+            block_status = O::pi_process(&P, px, py, n);
+        });
+    }
+    std::vector<double> thresholds() const { return std::vector<double>(r.begin(), r.begin() + static_cast<long>(P.n)); }
+    std::vector<double> weights() const { return std::vector<double>(w.begin(), w.begin() + static_cast<long>(P.n)); }
+};
+
+/* Identification of f0 from recorded arrays (hyst_ident_fit()). */
+nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int method, double lo,
+             double hi, size_t skip, size_t delay)
+{
+    if (x.shape(0) != y.shape(0)) {
+        raise_status(HYST_ERR_ARG, "x and y differ in length");
+    }
+    hyst_ident_config_t cfg{};
+    cfg.degree = degree;
+    cfg.method = method;
+    cfg.lo = lo;
+    cfg.hi = hi;
+    cfg.skip = skip;
+    cfg.delay = delay;
+    hyst_ident_t work;
+    hyst_ident_result_t res;
+    check(hyst_ident_fit(&cfg, x.data(), y.data(), x.shape(0), &work, &res), "fit");
+    nb::dict d;
+    d["coeffs"] = std::vector<double>(res.coeffs, res.coeffs + res.degree + 1u);
+    d["degree"] = res.degree;
+    d["method"] = res.method;
+    d["lo"] = res.lo;
+    d["hi"] = res.hi;
+    d["rms"] = res.rms;
+    d["max_abs"] = res.max_abs;
+    d["y_lo_est"] = res.y_lo_est;
+    d["y_hi_est"] = res.y_hi_est;
+    d["used"] = res.used;
+    d["rising"] = res.rising;
+    d["falling"] = res.falling;
+    d["increasing"] = res.increasing != 0;
+    d["turn"] = res.turn;
+    return d;
+}
+
+/*
+ * Binds process(x, out=None) of class C: numpy arrays of the input dtype map
+ * without a copy, other arrays and sequences go through numpy.asarray.
+ */
+template <class X, class C, class Cls> void def_process(Cls &cls)
+{
+    cls.def("process", &C::process, "x"_a, "out"_a = nb::none(),
+            "A block of samples (bit-identical to step()); returns the outputs, in `out` if "
+            "given. The status the block call returned is `block_status`.");
+    cls.def(
+        "process",
+        [](C &self, nb::handle x, nb::handle out) {
+            const char *dtype = std::is_floating_point_v<X>
+                                    ? (sizeof(X) == 4u ? "float32" : "float64")
+                                    : (sizeof(X) == 2u ? "uint16" : "uint32");
+            nb::object a = nb::module_::import_("numpy").attr("ascontiguousarray")(
+                x, "dtype"_a = dtype);
+            return self.process(nb::cast<In<X>>(a), out);
+        },
+        "x"_a, "out"_a = nb::none());
+}
+
+template <class T> void bind_real(nb::module_ &m, const char *model, const char *pi)
+{
+    using R = Real<T>;
+    nb::class_<R, Tcm> model_cls(m, model);
+    model_cls
+        .def(nb::init<const std::vector<double> &, double, double, size_t, bool>(), "coeffs"_a,
+             "lo"_a, "hi"_a, "capacity"_a, "inverse"_a)
+        .def("step", &R::step, "x"_a, "One sample in, one output out.")
+        .def_prop_rw("deadband", [](const R &s) { return s.deadband; }, &R::set_deadband)
+        .def_prop_ro("output", [](const R &s) { return Ops<T>::output(&s.S); })
+        .def_prop_ro("input", [](const R &s) { return Ops<T>::input(&s.S); })
+        .def_prop_ro("error_bound", [](const R &s) { return Ops<T>::error_bound(&s.S); })
+        .def_ro("inverse", &R::inverse)
+        .def_prop_ro("dtype", [](const R &) { return Ops<T>::dtype; });
+    def_process<T, R>(model_cls);
+
+    using P = Pi<T>;
+    nb::class_<P> pi_cls(m, pi);
+    pi_cls
+        .def(nb::init<const std::vector<double> &, const std::vector<double> &>(),
+             "thresholds"_a, "weights"_a)
+        .def("inverse", &P::inverse, "The inverse PI model (maps outputs back to inputs).")
+        .def("step", &P::step, "x"_a)
+        .def("reset", [](P &s) { hyst_pi_reset(&s.P); })
+        .def("clear_events", [](P &s) { hyst_pi_clear_events(&s.P); })
+        .def_prop_ro("status", [](const P &s) { return hyst_pi_status(&s.P); })
+        .def_prop_ro("events", [](const P &s) { return hyst_pi_events(&s.P); })
+        .def_prop_ro("output", [](const P &s) { return Ops<T>::pi_output(&s.P); })
+        .def_prop_ro("size", [](const P &s) { return hyst_pi_size(&s.P); })
+        .def_prop_ro("thresholds", &P::thresholds)
+        .def_prop_ro("weights", &P::weights)
+        .def_ro("block_status", &P::block_status)
+        .def_prop_ro("dtype", [](const P &) { return Ops<T>::dtype; });
+    def_process<T, P>(pi_cls);
+}
+
+} // namespace
+
+NB_MODULE(_hyst, m)
+{
+    m.doc() = "The hyst C library (instances owning their memory); see the package hyst.";
+    m.attr("__version__") = HYST_VERSION_STRING;
+    m.attr("MAX_DEGREE") = HYST_MAX_DEGREE;
+    m.attr("CODE_MAX") = static_cast<unsigned long>(HYST_CODE_MAX);
+    m.attr("SNAPSHOT_VERSION") = HYST_SNAPSHOT_VERSION;
+    m.attr("EVENT_NONFINITE") = HYST_EVENT_NONFINITE;
+    m.attr("EVENT_CLAMPED") = HYST_EVENT_CLAMPED;
+    m.attr("EVENT_FULL") = HYST_EVENT_FULL;
+    m.def("status_str", &hyst_status_str, "status"_a, "The library's name of a status code.");
+
+    nb::enum_<hyst_status_t>(m, "Status", nb::is_arithmetic())
+        .value("OK", HYST_OK)
+        .value("WARN_CLAMPED", HYST_WARN_CLAMPED)
+        .value("WARN_FULL", HYST_WARN_FULL)
+        .value("ERR_NULL", HYST_ERR_NULL)
+        .value("ERR_DOMAIN", HYST_ERR_DOMAIN)
+        .value("ERR_DEGREE", HYST_ERR_DEGREE)
+        .value("ERR_CAPACITY", HYST_ERR_CAPACITY)
+        .value("ERR_COEFF", HYST_ERR_COEFF)
+        .value("ERR_NOT_INCREASING", HYST_ERR_NOT_INCREASING)
+        .value("ERR_NONFINITE", HYST_ERR_NONFINITE)
+        .value("ERR_ARG", HYST_ERR_ARG)
+        .value("ERR_NOSPACE", HYST_ERR_NOSPACE)
+        .value("ERR_SINGULAR", HYST_ERR_SINGULAR)
+        .value("ERR_FORMAT", HYST_ERR_FORMAT)
+        .value("ERR_CRC", HYST_ERR_CRC)
+        .value("ERR_VERSION", HYST_ERR_VERSION)
+        .value("ERR_CURVE", HYST_ERR_CURVE)
+        .value("ERR_BREAKPOINTS", HYST_ERR_BREAKPOINTS)
+        .value("ERR_WEIGHTS", HYST_ERR_WEIGHTS)
+        .value("ERR_NOT_INVERTIBLE", HYST_ERR_NOT_INVERTIBLE)
+        .value("ERR_LAYOUT", HYST_ERR_LAYOUT)
+        .value("ERR_OVERLAP", HYST_ERR_OVERLAP);
+
+    nb::class_<Tcm>(m, "Tcm", "What every TCM instance has (model, compensator, code model).")
+        .def("reset", [](Tcm &s) { hyst_reset(&s.S); }, "Back at A0 = (lo, f0(lo)).")
+        .def("clear_events", [](Tcm &s) { hyst_clear_events(&s.S); })
+        .def("save", &Tcm::save, "Snapshot of the memory (bytes, the library's format).")
+        .def("restore", &Tcm::restore, "b"_a, "Restores a snapshot taken with the same curve.")
+        .def_prop_ro("status", [](const Tcm &s) { return hyst_status(&s.S); })
+        .def_prop_ro("events", [](const Tcm &s) { return hyst_events(&s.S); })
+        .def_prop_ro("tp_count", [](const Tcm &s) { return hyst_tp_count(&s.S); })
+        .def_prop_ro("ltp_count", [](const Tcm &s) { return hyst_ltp_count(&s.S); })
+        .def_prop_ro("rtp_count", [](const Tcm &s) { return hyst_rtp_count(&s.S); })
+        .def_prop_ro("rising", [](const Tcm &s) { return hyst_rising(&s.S) != 0; })
+        .def_prop_ro("capacity", [](const Tcm &s) { return hyst_capacity(&s.S); })
+        .def_ro("block_status", &Tcm::block_status)
+        .def_ro("coeffs", &Tcm::coeffs)
+        .def_ro("lo", &Tcm::lo)
+        .def_ro("hi", &Tcm::hi);
+
+    bind_real<float>(m, "ModelF32", "PIF32");
+    bind_real<double>(m, "ModelF64", "PIF64");
+
+    nb::class_<Code, Tcm> code_cls(m, "CodeModel");
+    code_cls
+        .def(nb::init<const std::vector<double> &, double, double, unsigned long, unsigned long,
+                      size_t>(),
+             "coeffs"_a, "lo"_a, "hi"_a, "code_lo"_a, "code_hi"_a, "capacity"_a)
+        .def("step", &Code::step, "code"_a)
+        .def_prop_rw("deadband", [](const Code &s) { return s.deadband; }, &Code::set_deadband)
+        .def_prop_ro("output", [](const Code &s) { return hyst_code_output(&s.S); })
+        .def_prop_ro("input", [](const Code &s) { return hyst_code_input(&s.S); })
+        .def_prop_ro("error_bound", [](const Code &s) { return hyst_code_error_bound(&s.S); })
+        .def_ro("code_lo", &Code::code_lo)
+        .def_ro("code_hi", &Code::code_hi)
+        .def_prop_ro("dtype", [](const Code &) { return "float32"; });
+    def_process<hyst_code_word_t, Code>(code_cls);
+
+    m.def("fit", &fit, "x"_a, "y"_a, "degree"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
+          "delay"_a);
+}
