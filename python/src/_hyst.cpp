@@ -68,6 +68,7 @@ template <class T> struct Ops;
         static constexpr auto output = hyst_##P##_output;                   \
         static constexpr auto input = hyst_##P##_input;                     \
         static constexpr auto error_bound = hyst_##P##_error_bound;         \
+        static constexpr auto rounding_bound = hyst_##P##_rounding_bound;   \
         static constexpr auto pi_init = hyst_##P##_pi_init;                 \
         static constexpr auto pi_init_inverse = hyst_##P##_pi_init_inverse; \
         static constexpr auto pi_step = hyst_##P##_pi_step;                 \
@@ -332,6 +333,7 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
         .def_prop_ro("output", [](const R &s) { return Ops<T>::output(&s.S); })
         .def_prop_ro("input", [](const R &s) { return Ops<T>::input(&s.S); })
         .def_prop_ro("error_bound", [](const R &s) { return Ops<T>::error_bound(&s.S); })
+        .def_prop_ro("rounding_bound", [](const R &s) { return Ops<T>::rounding_bound(&s.S); })
         .def_ro("inverse", &R::inverse)
         .def_prop_ro("dtype", [](const R &) { return Ops<T>::dtype; });
     def_process<T, R>(model_cls);
@@ -392,7 +394,9 @@ NB_MODULE(_hyst, m)
         .value("ERR_WEIGHTS", HYST_ERR_WEIGHTS)
         .value("ERR_NOT_INVERTIBLE", HYST_ERR_NOT_INVERTIBLE)
         .value("ERR_LAYOUT", HYST_ERR_LAYOUT)
-        .value("ERR_OVERLAP", HYST_ERR_OVERLAP);
+        .value("ERR_OVERLAP", HYST_ERR_OVERLAP)
+        .value("ERR_BUSY", HYST_ERR_BUSY)
+        .value("ERR_ILL_CONDITIONED", HYST_ERR_ILL_CONDITIONED);
 
     nb::class_<Tcm>(m, "Tcm", "What every TCM instance has (model, compensator, code model).")
         .def("reset", [](Tcm &s) { hyst_reset(&s.S); }, "Back at A0 = (lo, f0(lo)).")
@@ -424,6 +428,7 @@ NB_MODULE(_hyst, m)
         .def_prop_ro("output", [](const Code &s) { return hyst_code_output(&s.S); })
         .def_prop_ro("input", [](const Code &s) { return hyst_code_input(&s.S); })
         .def_prop_ro("error_bound", [](const Code &s) { return hyst_code_error_bound(&s.S); })
+        .def_prop_ro("rounding_bound", [](const Code &s) { return hyst_code_rounding_bound(&s.S); })
         .def_ro("code_lo", &Code::code_lo)
         .def_ro("code_hi", &Code::code_hi)
         .def_prop_ro("dtype", [](const Code &) { return "float32"; });

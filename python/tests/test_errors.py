@@ -37,6 +37,15 @@ def test_init_errors(dtype):
         hyst.Model(PAPER_F0, 0, 40, dtype=np.int32)
 
 
+def test_ill_conditioned_curve_refused_in_float32_only():
+    x9 = [1.0] + [0.0] * 9  # x^9 on [-1, 1]: about 1e-2 of the range lost in float
+    raises(hyst.Status.ERR_ILL_CONDITIONED, hyst.Model, x9, -1, 1, dtype=np.float32)
+    m = hyst.Model(x9, -1, 1, dtype=np.float64)
+    assert 0 < m.rounding_bound < 1e-9 * 2
+    p = hyst.Model(PAPER_F0, 0, 40, dtype=np.float32)
+    assert 0 < p.rounding_bound < 1e-5 * 5
+
+
 def test_code_model_errors():
     raises(hyst.Status.ERR_DOMAIN, hyst.CodeModel, PAPER_F0, 0, 40, 100, 100, 16)
     raises(hyst.Status.ERR_DOMAIN, hyst.CodeModel, PAPER_F0, 0, 40, 0, hyst.CODE_MAX + 1, 16)
