@@ -123,28 +123,28 @@ static void TCM_NAME(set_detour)(hyst_tcm_t *S)
                 (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u);
 }
 
-/* The fast-path cache of a rising branch from LTP n_ltp - 1, last input x. */
-HYST_INLINE void TCM_NAME(settle_rising)(hyst_tcm_t *S, TCM_X x)
+/* The fast-path cache of a rising branch from LTP `top` (n_ltp - 1), nr
+ * RTPs stored, last input x. The callers pass the index they know: computing
+ * n_ltp - 1 in size_t costs two instructions more per array on Thumb-2. */
+HYST_INLINE void TCM_NAME(settle_rising)(hyst_tcm_t *S, TCM_X x, size_t top, size_t nr)
 {
-    const size_t nl = S->n_ltp, nr = S->n_rtp;
-    YV(S->x_ctp) = TCM_R(XV(S->xltp)[nl - 1u]);
-    YV(S->y_ctp) = YV(S->yltp)[nl - 1u];
+    YV(S->x_ctp) = TCM_R(XV(S->xltp)[top]);
+    YV(S->y_ctp) = YV(S->yltp)[top];
     YV(S->sign) = 1;
     YV(S->u_scale) = YV(S->unit);
     XV(S->window[0]) = x;
-    XV(S->window[1]) = nr > 0u ? XV(S->xrtp)[nr - 1u] : XV(S->hi);
+    XV(S->window[1]) = nr > 0u ? (XV(S->xrtp) + nr)[-1] : XV(S->hi);
     S->moving_end = 0u;
 }
 
-/* The same for a falling branch from RTP n_rtp - 1. */
-HYST_INLINE void TCM_NAME(settle_falling)(hyst_tcm_t *S, TCM_X x)
+/* The same for a falling branch from RTP `top` (n_rtp - 1), nl LTPs. */
+HYST_INLINE void TCM_NAME(settle_falling)(hyst_tcm_t *S, TCM_X x, size_t nl, size_t top)
 {
-    const size_t nl = S->n_ltp, nr = S->n_rtp;
-    YV(S->x_ctp) = TCM_R(XV(S->xrtp)[nr - 1u]);
-    YV(S->y_ctp) = YV(S->yrtp)[nr - 1u];
+    YV(S->x_ctp) = TCM_R(XV(S->xrtp)[top]);
+    YV(S->y_ctp) = YV(S->yrtp)[top];
     YV(S->sign) = -1;
     YV(S->u_scale) = -YV(S->unit);
-    XV(S->window[0]) = XV(S->xltp)[nl - 1u];
+    XV(S->window[0]) = (XV(S->xltp) + nl)[-1];
     XV(S->window[1]) = x;
     S->moving_end = 1u;
 }
@@ -163,9 +163,9 @@ static void TCM_NAME(close_window)(hyst_tcm_t *S)
 static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x)
 {
     if (S->n_ltp > S->n_rtp) {
-        TCM_NAME(settle_rising)(S, x);
+        TCM_NAME(settle_rising)(S, x, S->n_ltp - 1u, S->n_rtp);
     } else {
-        TCM_NAME(settle_falling)(S, x);
+        TCM_NAME(settle_falling)(S, x, S->n_ltp, S->n_rtp - 1u);
     }
     if ((S->detour & TCM_SLOW_ONLY) != 0u) {
         TCM_NAME(close_window)(S);
@@ -656,6 +656,7 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK)) != 0u) {
                 return TCM_NAME(wiped_detour)(S, x, 2u * nr + 1u);
             }
+            nl = nr; /* the current LTP's index */
         } else if (nl == nr && S->detour == 0u && nl < S->capacity) {
             /* reversal on a falling branch: (x_prev, y_prev) becomes LTP nl */
             XV(S->xltp)[nl] = TCM_NORM(x_prev);
@@ -664,7 +665,7 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
         } else {
             return nl == nr ? TCM_NAME(reverse_up)(S, x, x_prev) : TCM_NAME(finish)(S, x);
         }
-        TCM_NAME(settle_rising)(S, x);
+        TCM_NAME(settle_rising)(S, x, nl, nr);
     } else if (x_in < x_prev) {
         if (!(x_in > XV(S->lo))) {
             return TCM_NAME(step_edge)(S, x_in);
@@ -679,6 +680,7 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK)) != 0u) {
                 return TCM_NAME(wiped_detour)(S, x, 2u * nl);
             }
+            nr = nl - 1u; /* the current RTP's index (nl >= 1: A0) */
         } else if (nl > nr && S->detour == 0u) {
             /* reversal on a rising branch: (x_prev, y_prev) becomes RTP nr
              * (nr < nl <= capacity: always room) */
@@ -688,7 +690,7 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
         } else {
             return nl > nr ? TCM_NAME(reverse_down)(S, x, x_prev) : TCM_NAME(finish)(S, x);
         }
-        TCM_NAME(settle_falling)(S, x);
+        TCM_NAME(settle_falling)(S, x, nl, nr);
     }
     /* Always true for integer codes; false for a NaN real input: */
     /* cppcheck-suppress knownConditionTrueFalse */

@@ -23,7 +23,7 @@
  * A sample that moves on along its branch without reaching a stored TP takes
  * a constant fast path: two comparisons against a cached window, one
  * evaluation of g (35 Cortex-M4F instructions for a cubic). A sample that
- * passes TPs costs one binary search more (at most 149 instructions at
+ * passes TPs costs one binary search more (at most 147 instructions at
  * Nu = 4096; docs/timing.md). The block call runs the samples that stay on
  * their branch in a loop of its own, with bit-identical results.
  *
