@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* hyst fit: identify f0 from measured input/output columns. */
 #include "cli.h"
+#include "fit_select.h"
 #include "hyst/hyst.h"
 
 #include <ctype.h>
@@ -16,7 +17,7 @@
 #include <unistd.h>
 
 static const char help[] =
-    "usage: hyst fit --degree N [--skip S] [--delay D] [--xcol I --ycol J]\n"
+    "usage: hyst fit [--degree N] [--skip S] [--delay D] [--xcol I --ycol J]\n"
     "                [--method joint|reflect] [--domain LO,HI] [--header NAME]\n"
     "                [--decimal-comma] FILE\n"
     "\n"
@@ -25,9 +26,15 @@ static const char help[] =
     "full-range periodic wave. Columns are separated by blanks, ',' or ';';\n"
     "'#' lines and blank lines are skipped.\n"
     "\n"
-    "  --degree N     polynomial degree, 1..9 (required)\n"
+    "  --degree N     polynomial degree, 1..9. Without it, the degree (and the\n"
+    "                 delay, unless --delay is given) is chosen by hold-out: each\n"
+    "                 degree 1..9 and delay 0..8 is fitted on the first two thirds\n"
+    "                 of the record and the model predicts the last third; of the\n"
+    "                 candidates within 1 % of the lowest RMS prediction error, the\n"
+    "                 lowest degree wins (every candidate is printed as a\n"
+    "                 '# candidate' line)\n"
     "  --skip S       drop the first S data lines (settling; default 0)\n"
-    "  --delay D      the output lags the input by D samples (default 0)\n"
+    "  --delay D      the output lags the input by D samples (default 0, or chosen)\n"
     "  --xcol I       input column, 1-based (default 1)\n"
     "  --ycol J       output column, 1-based (default 2)\n"
     "  --method M     joint (default): both branches in one least-squares problem;\n"
@@ -54,6 +61,7 @@ typedef struct fit_opts {
     const char *file;
     const char *header;
     int have_degree;
+    int have_delay;
     int decimal_comma;
 } fit_opts_t;
 
@@ -121,6 +129,7 @@ static int parse(fit_opts_t *o, int argc, char **argv)
                 return 1;
             }
             *(cli_is(&a, "--skip") ? &o->cfg.skip : &o->cfg.delay) = (size_t)u;
+            o->have_delay |= cli_is(&a, "--delay");
         } else if (cli_is(&a, "--xcol") || cli_is(&a, "--ycol")) {
             if (!cli_opt_ulong(&a, v, 1ul, CLI_MAX_FIELD, &u)) {
                 return 1;
@@ -155,9 +164,6 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             return cli_unknown(&a);
         }
     }
-    if (!o->have_degree) {
-        return cli_fail(a.cmd, "--degree is required (see 'hyst fit --help')");
-    }
     if (o->file == NULL) {
         return cli_fail(a.cmd, "no input FILE (use '-' for standard input)");
     }
@@ -165,6 +171,50 @@ static int parse(fit_opts_t *o, int argc, char **argv)
 }
 
 static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflect" : "joint"; }
+
+/* ---- the automatic choice (fit_select.c) ---- */
+
+#define MAX_CANDIDATES (HYST_MAX_DEGREE * (FIT_MAX_DELAY + 1u))
+static fit_candidate_t candidates[MAX_CANDIDATES];
+static size_t n_candidates, best_candidate;
+
+/* Sets o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
+static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
+{
+    n_candidates = fit_select(&o->cfg, t->col[0], t->col[1], t->n,
+                              o->have_delay ? o->cfg.delay : FIT_MAX_DELAY, candidates,
+                              MAX_CANDIDATES, &best_candidate);
+    if (best_candidate == (size_t)-1) {
+        return cli_fail("fit", "%s: no candidate degree gave an increasing f0 that could "
+                               "predict the last third of the record (give --degree)",
+                        name);
+    }
+    o->cfg.degree = candidates[best_candidate].degree;
+    o->cfg.delay = candidates[best_candidate].delay;
+    return 0;
+}
+
+static void print_candidates(const fit_opts_t *o)
+{
+    size_t i;
+    (void)printf("# chosen by hold-out: degree %u, delay %lu (the lowest degree within 1 %% "
+                 "of the lowest RMS prediction error on the last third of the record, "
+                 "fitted on the first two thirds)\n",
+                 o->cfg.degree, (unsigned long)o->cfg.delay);
+    for (i = 0u; i < n_candidates; ++i) {
+        const fit_candidate_t *c = &candidates[i];
+        if (isfinite(c->holdout_rms)) {
+            (void)printf("# candidate degree %u delay %lu: hold-out rms %.6g, fit rms %.6g%s\n",
+                         c->degree, (unsigned long)c->delay, c->holdout_rms, (double)c->fit.rms,
+                         i == best_candidate ? " (chosen)" : "");
+        } else {
+            (void)printf("# candidate degree %u delay %lu: not scored (%s)\n", c->degree,
+                         (unsigned long)c->delay,
+                         c->status != HYST_OK ? hyst_status_str(c->status)
+                                              : "f0 not increasing");
+        }
+    }
+}
 
 /* ---- the header: replaced whole, or not at all ----
  *
@@ -402,6 +452,10 @@ int cmd_fit(int argc, char **argv)
         cli_table_free(&t);
         return 1;
     }
+    if (pairs > 0u && !o.have_degree && choose(&o, name, &t) != 0) {
+        cli_table_free(&t);
+        return 1;
+    }
     st = pairs == 0u ? HYST_ERR_ARG : hyst_ident_fit(&o.cfg, t.col[0], t.col[1], t.n, &work, &r);
     cli_table_free(&t);
     switch (st) {
@@ -437,6 +491,11 @@ int cmd_fit(int argc, char **argv)
                  "(%lu rising, %lu falling)\n",
                  method_name(r.method), r.degree, (unsigned long)r.used, (unsigned long)pairs,
                  (unsigned long)r.rising, (unsigned long)r.falling);
+    if (!o.have_degree) {
+        print_candidates(&o);
+    }
+    (void)printf("# delay %lu samples\n# parameters %u\n", (unsigned long)o.cfg.delay,
+                 r.degree + 1u);
     if (r.method == HYST_IDENT_REFLECT) {
         (void)printf("# y(lo), y(hi) measured for Eq. 14: %.9g, %.9g\n", (double)r.y_lo_est,
                      (double)r.y_hi_est);
