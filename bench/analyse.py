@@ -141,7 +141,7 @@ def engine_flash(build_m4, opt, nm_tool, variant="hyst_f32"):
     return total
 
 
-def m4_cycles(elf, qemu):
+def budget_cycles(elf, qemu):
     """Largest estimated cycles of the typical and of the wipe-out/clamped
     samples, from tools/cycle_model.py --summary (kind count insns cycles ratio)."""
     tool = os.path.join(HERE, "..", "tools", "cycle_model.py")
@@ -318,7 +318,7 @@ def main():
 
     # Estimated cycles (tools/cycle_model.py: Cortex-M4 pipeline model, zero
     # wait states) of the budget image's typical and worst samples.
-    typ_c, worst_c = m4_cycles(os.path.join(args.m4, "bench", "bench_budget"), qemu)
+    typ_c, worst_c = budget_cycles(os.path.join(args.m4, "bench", "bench_budget"), qemu)
     put("m4_typical_cycles", typ_c)
     put("m4_worst_cycles_nu4096", worst_c)
 
