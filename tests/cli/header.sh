@@ -83,6 +83,33 @@ header_is_directory) # NAME.h is a directory: said before anything is printed
     rm out.txt
     only_files f0.h f1.h
     ;;
+header_dir) # --header-dir DIR: DIR/NAME.h, the same text; nothing in the current directory
+    "$tool" fit --degree 2 --header f1 loop.txt > /dev/null 2>&1 || fail "fit --header f1"
+    mv f1.h want.h
+    mkdir out
+    "$tool" fit --degree 2 --header f1 --header-dir out loop.txt > /dev/null 2> err.txt ||
+        fail "fit --header-dir: $(cat err.txt)"
+    grep -qF "wrote out/f1.h" err.txt || fail "message: $(cat err.txt)"
+    rm err.txt
+    cmp -s out/f1.h want.h || fail "out/f1.h differs from the header written without --header-dir"
+    [ "$(ls -A out)" = f1.h ] || fail "files in out: $(ls -A out)"
+    "$tool" fit --degree 2 --header f0 --header-dir "$PWD/out/" loop.txt > /dev/null 2>&1 ||
+        fail "fit --header-dir with an absolute path and a trailing /"
+    cmp -s out/f0.h good.h || fail "out/f0.h differs from ./f0.h"
+    rm -r out want.h
+    only_files f0.h
+    ;;
+header_dir_errors) # a missing directory, a file, no --header: refused before anything is printed
+    failing "option --header-dir: 'nodir': No such file or directory" \
+        "$tool" fit --degree 2 --header f1 --header-dir nodir loop.txt > out.txt
+    failing "option --header-dir: 'loop.txt': not a directory" \
+        "$tool" fit --degree 2 --header f1 --header-dir loop.txt loop.txt >> out.txt
+    failing "option --header-dir needs --header NAME" \
+        "$tool" fit --degree 2 --header-dir . loop.txt >> out.txt
+    [ ! -s out.txt ] || fail "results printed: $(cat out.txt)"
+    rm out.txt
+    only_files f0.h
+    ;;
 *)
     fail "unknown case '$case'"
     ;;

@@ -16,10 +16,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+/* Longest --header-dir accepted (the header's path is built in a fixed buffer). */
+#define CLI_HEADER_DIR_MAX 4096u
+
 static const char help[] =
     "usage: hyst fit [--degree N] [--skip S] [--delay D] [--xcol I --ycol J]\n"
     "                [--method joint|reflect] [--domain LO,HI] [--header NAME]\n"
-    "                [--decimal-comma] FILE\n"
+    "                [--header-dir DIR] [--decimal-comma] FILE\n"
     "\n"
     "Fits the major ascending curve f0 (polynomial of degree N) of a hysteresis\n"
     "loop to the input/output record in FILE ('-' = standard input), excited by a\n"
@@ -47,6 +50,8 @@ static const char help[] =
     "                 written with one is refused\n"
     "  --header NAME  also write NAME.h holding\n"
     "                 'static const hyst_poly_t NAME = {...};' for firmware\n"
+    "                 (in the current directory, or in DIR with --header-dir)\n"
+    "  --header-dir DIR  directory of NAME.h (an existing directory; needs --header)\n"
     "  --help         this text\n"
     "\n"
     "Output: line 1 the coefficients cN,...,c0 (highest power first), line 2 LO,HI,\n"
@@ -60,6 +65,7 @@ typedef struct fit_opts {
     unsigned long cols[2];
     const char *file;
     const char *header;
+    const char *header_dir; /* NULL: the current directory */
     int have_degree;
     int have_delay;
     int decimal_comma;
@@ -160,12 +166,21 @@ static int parse(fit_opts_t *o, int argc, char **argv)
                                 cli_quote(q, v));
             }
             o->header = v;
+        } else if (cli_is(&a, "--header-dir")) {
+            if (v[0] == '\0' || strlen(v) > CLI_HEADER_DIR_MAX) {
+                return cli_fail(a.cmd, "option --header-dir: %s is empty or longer than %u bytes",
+                                cli_quote(q, v), (unsigned)CLI_HEADER_DIR_MAX);
+            }
+            o->header_dir = v;
         } else {
             return cli_unknown(&a);
         }
     }
     if (o->file == NULL) {
         return cli_fail(a.cmd, "no input FILE (use '-' for standard input)");
+    }
+    if (o->header_dir != NULL && o->header == NULL) {
+        return cli_fail(a.cmd, "option --header-dir needs --header NAME");
     }
     return 0;
 }
@@ -224,8 +239,8 @@ static void print_candidates(const fit_opts_t *o)
  * before the rename removes the temporary file and leaves NAME.h as it was. */
 
 typedef struct header_file {
-    char path[256]; /* NAME.h */
-    char tmp[272];  /* NAME.h.XXXXXX, "" when there is none */
+    char path[CLI_HEADER_DIR_MAX + 256]; /* [DIR/]NAME.h */
+    char tmp[CLI_HEADER_DIR_MAX + 272];  /* [DIR/]NAME.h.XXXXXX, "" when there is none */
 } header_file_t;
 
 /* Appends printf output to buf[*len..size); 1 when it did not fit. */
@@ -298,8 +313,24 @@ static size_t header_text(const fit_opts_t *o, const hyst_ident_result_t *r, cha
 static int header_check(const fit_opts_t *o, header_file_t *h)
 {
     struct stat st;
-    (void)sprintf(h->path, "%s.h", o->header); /* NAME: a C identifier, < 200 chars */
+    char q[CLI_QUOTE_SIZE];
     h->tmp[0] = '\0';
+    if (o->header_dir != NULL) {
+        if (stat(o->header_dir, &st) != 0) {
+            const int err = errno;
+            return cli_fail("fit", "option --header-dir: %s: %s", cli_quote(q, o->header_dir),
+                            strerror(err));
+        }
+        if (!S_ISDIR(st.st_mode)) {
+            return cli_fail("fit", "option --header-dir: %s: not a directory",
+                            cli_quote(q, o->header_dir));
+        }
+        /* DIR: at most CLI_HEADER_DIR_MAX bytes, NAME: a C identifier, < 200 chars */
+        (void)sprintf(h->path, "%s%s%s.h", o->header_dir,
+                      o->header_dir[strlen(o->header_dir) - 1u] == '/' ? "" : "/", o->header);
+    } else {
+        (void)sprintf(h->path, "%s.h", o->header);
+    }
     if (stat(h->path, &st) == 0 && S_ISDIR(st.st_mode)) {
         return cli_fail("fit", "%s: is a directory: cannot write the header", h->path);
     }
@@ -361,7 +392,7 @@ static int header_write(const fit_opts_t *o, const hyst_ident_result_t *r, heade
 }
 
 /* h->tmp renamed over NAME.h: 0, or 1 after a message. */
-static int header_commit(header_file_t *h)
+static int header_commit(const fit_opts_t *o, header_file_t *h)
 {
     int fd;
     if (rename(h->tmp, h->path) != 0) {
@@ -373,7 +404,7 @@ static int header_commit(header_file_t *h)
     }
     h->tmp[0] = '\0';
     /* the rename itself to disk: best effort */
-    if ((fd = open(".", O_RDONLY)) >= 0) {
+    if ((fd = open(o->header_dir != NULL ? o->header_dir : ".", O_RDONLY)) >= 0) {
         (void)fsync(fd);
         (void)close(fd);
     }
@@ -513,7 +544,7 @@ int cmd_fit(int argc, char **argv)
         return cli_fail("fit", "write error on standard output: %s%s", strerror(err),
                         o.header != NULL && r.increasing ? " (no header written)" : "");
     }
-    if (r.increasing && o.header != NULL && header_commit(&h) != 0) {
+    if (r.increasing && o.header != NULL && header_commit(&o, &h) != 0) {
         return 1;
     }
     if (!r.increasing) {

@@ -28,7 +28,8 @@ static void usage(FILE *out)
     for (i = 0u; i < sizeof commands / sizeof commands[0]; ++i) {
         (void)fprintf(out, "  %-6s %s\n", commands[i].name, commands[i].summary);
     }
-    (void)fprintf(out, "\n'hyst <command> --help' describes a command. hyst %d.%d.%d\n",
+    (void)fprintf(out, "\n'hyst <command> --help' describes a command; 'hyst --version' prints\n"
+                        "the version. hyst %d.%d.%d\n",
                   HYST_VERSION_MAJOR, HYST_VERSION_MINOR, HYST_VERSION_PATCH);
 }
 
@@ -44,6 +45,10 @@ int main(int argc, char **argv)
     if (argc < 2) {
         usage(stderr);
         return 1;
+    }
+    if (strcmp(argv[1], "--version") == 0 || strcmp(argv[1], "-V") == 0) {
+        (void)printf("hyst %s\n", HYST_VERSION_STRING);
+        return fflush(stdout) == 0 && !ferror(stdout) ? 0 : 1;
     }
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
         strcmp(argv[1], "help") == 0) {

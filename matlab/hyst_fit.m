@@ -1,0 +1,44 @@
+% SPDX-License-Identifier: MIT
+function f = hyst_fit(x, y, varargin)
+% HYST_FIT  Identifies f0, the major ascending curve, from measured x, y.
+%   F = HYST_FIT(X, Y) fits a cubic f0 to the record (X drive, Y measured
+%   output) of a full-range periodic excitation, by hyst_ident_fit()
+%   (include/hyst/ident.h, docs/identification.md). F is a model for
+%   HYST_SIM, HYST_INV and HYST_MODEL_SAVE, with the fields
+%     coeffs      f0's coefficients, highest power first (as polyfit)
+%     lo, hi      the domain
+%     rms, max_abs  residuals of the samples against the fitted major loop
+%     used, rising, falling  samples used, by branch
+%     increasing  true if f0 increases on [lo, hi] (else turn: where not)
+%     degree, method
+%
+%   Options (name/value): 'degree' (default 3), 'skip' samples dropped at
+%   the start (default 0), 'delay' samples the output lags the input
+%   (default 0), 'method' 'joint' (default) or 'reflect', 'domain' [LO HI]
+%   (default: the range of the inputs).
+%   A library error raises hyst:<status name>, e.g. hyst:ERR_SINGULAR.
+  opts = hyst_options(varargin, struct('degree', 3, 'skip', 0, 'delay', 0, ...
+                                       'method', 'joint', 'domain', []), 'hyst_fit');
+  switch lower(opts.method)
+    case 'joint'
+      method = 1;
+    case 'reflect'
+      method = 2;
+    otherwise
+      error('hyst:usage', 'hyst_fit: method is ''joint'' or ''reflect''');
+  end
+  if isempty(opts.domain)
+    domain = [0 0];  % lo == hi: from the data
+  elseif numel(opts.domain) == 2 && opts.domain(1) < opts.domain(2)
+    domain = double(opts.domain);
+  else
+    error('hyst:usage', 'hyst_fit: domain is [LO HI] with LO < HI');
+  end
+  f = hyst_mex('fit', double(x(:)), double(y(:)), double(opts.degree), method, ...
+               domain(1), domain(2), double(opts.skip), double(opts.delay));
+  if ~f.increasing
+    warning('hyst:not_increasing', ...
+            'hyst_fit: the fitted f0 is not increasing on [%g, %g] (slope negative at %g): try another degree', ...
+            f.lo, f.hi, f.turn);
+  end
+end

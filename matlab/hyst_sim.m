@@ -1,0 +1,24 @@
+% SPDX-License-Identifier: MIT
+function [y, status, tp_count] = hyst_sim(model, x, varargin)
+% HYST_SIM  Runs the hysteresis model (TCM) over the samples X.
+%   Y = HYST_SIM(MODEL, X) is the model's output for the input sequence X,
+%   from the start state (lo, f0(lo)), by one block call of the C library:
+%   X of class double runs hyst_f64_process, single runs hyst_f32_process
+%   (what a Cortex-M4F computes). Y has the class and the shape of X.
+%   MODEL is a struct with fields coeffs (f0, highest power first), lo, hi:
+%   what HYST_FIT and HYST_MODEL_LOAD return.
+%
+%   Options (name/value): 'capacity' turning points per array (default
+%   2048: never full for inputs taking at most 4096 distinct values),
+%   'deadband' noise deadband (default 0).
+%
+%   [Y, STATUS, TP_COUNT] = HYST_SIM(...) also returns the status of the block
+%   call (0; 1 an input was clamped to [lo, hi]; 2 memory full; -7 a NaN/Inf
+%   sample was ignored) and the turning points stored at the end.
+%   An invalid model raises an error hyst:<status name>, e.g.
+%   hyst:ERR_NOT_INCREASING (docs/matlab.md).
+  opts = hyst_options(varargin, struct('capacity', 2048, 'deadband', 0), 'hyst_sim');
+  [c, lo, hi] = hyst_model_parts(model, 'hyst_sim');
+  [y, status, tp_count] = hyst_mex('sim', c, lo, hi, x, double(opts.capacity), ...
+                                   double(opts.deadband));
+end

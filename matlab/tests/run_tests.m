@@ -1,0 +1,317 @@
+% SPDX-License-Identifier: MIT
+function failed = run_tests(root, ref, cli)
+% RUN_TESTS  Tests of the MATLAB/Octave wrappers (tools/test_octave runs them).
+%   FAILED = RUN_TESTS(ROOT, REF, CLI): ROOT the repository, REF the C
+%   program hyst_ref (python/tests/ref: the library's block calls on raw
+%   arrays), CLI the host tool hyst. Prints one line per test and the summary
+%   'octave: N passed, M failed'; returns M.
+  addpath(fullfile(root, 'matlab'));
+  ctx = struct('root', root, 'ref', ref, 'cli', cli, 'tmp', tempname());
+  mkdir(ctx.tmp);
+  tests = {@t_sim_f64_bitexact, @t_sim_f32_bitexact, @t_inv_bitexact, ...
+           @t_bounded_memory_bitexact, @t_inv_undoes_sim, @t_fit_measured, ...
+           @t_fit_equals_cli, @t_errors_status_names, @t_usage_errors, ...
+           @t_save_load_roundtrip, @t_load_rejects, @t_readme_block};
+  passed = 0;
+  failed = 0;
+  for k = 1:numel(tests)
+    name = func2str(tests{k});
+    try
+      tests{k}(ctx);
+      passed = passed + 1;
+      printf('PASS %s\n', name);
+    catch err
+      failed = failed + 1;
+      printf('FAIL %s: %s\n', name, err.message);
+    end
+  end
+  confirm_recursive_rmdir(false, 'local');
+  rmdir(ctx.tmp, 's');
+  printf('octave: %d passed, %d failed\n', passed, failed);
+end
+
+% ---- helpers ----
+
+function check(cond, varargin)
+  if ~cond
+    error('check:failed', varargin{:});
+  end
+end
+
+function f0 = paper_f0()
+  % the paper's Eq. 20 on [0, 40] V, highest power first
+  f0 = struct('coeffs', [-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1], 'lo', 0, 'hi', 40);
+end
+
+function x = signal(n, lo, hi, seed)
+  % nested minor loops (a damped oscillation), then sweeps between random
+  % ends, repeated samples, a few samples outside [lo, hi]; deterministic
+  rand('state', seed);
+  t = (0:n - 1)';
+  mid = (lo + hi) / 2;
+  a = mid + (hi - lo) / 2 * exp(-t / (n / 6)) .* cos(t * 0.37);
+  ends = lo + (hi - lo) * rand(ceil(n / 40), 1);
+  b = interp1(1:numel(ends), ends, linspace(1, numel(ends), n)');
+  x = [a; b];
+  x(5:97:end) = x(4:97:end - 1);      % repeated samples
+  x(250) = hi + 1;                    % clamped
+  x(600) = lo - 1;
+end
+
+function [y, status] = run_ref(ctx, kind, cls, model, x, varargin)
+  % hyst_ref over x (raw numbers of class cls); extra key=value arguments
+  fin = fullfile(ctx.tmp, 'in.raw');
+  fout = fullfile(ctx.tmp, 'out.raw');
+  fid = fopen(fin, 'w');
+  fwrite(fid, x, cls);
+  fclose(fid);
+  type = 'f64';
+  if strcmp(cls, 'single')
+    type = 'f32';
+  end
+  coeffs = strjoin(arrayfun(@(c) sprintf('%.17g', c), model.coeffs, 'UniformOutput', false), ',');
+  cmd = sprintf('"%s" %s type=%s lo=%.17g hi=%.17g coeffs=%s in="%s" out="%s" %s', ctx.ref, ...
+                kind, type, model.lo, model.hi, coeffs, fin, fout, strjoin(varargin, ' '));
+  [rc, out] = system(cmd);
+  check(rc == 0, 'hyst_ref failed: %s', out);
+  status = str2double(out);
+  fid = fopen(fout, 'r');
+  y = fread(fid, Inf, ['*' cls]);
+  fclose(fid);
+end
+
+function out = run_cli(ctx, args)
+  [rc, out] = system(sprintf('"%s" %s', ctx.cli, args));
+  check(rc == 0, 'hyst %s failed: %s', args, out);
+end
+
+function expect_error(id, fn)
+  % fn() must raise an error with identifier id; returns its message
+  try
+    fn();
+  catch err
+    check(strcmp(err.identifier, id), 'identifier %s, expected %s (%s)', err.identifier, id, ...
+          err.message);
+    return;
+  end
+  error('check:failed', 'no error, expected %s', id);
+end
+
+function msg = error_message(fn)
+  msg = '';
+  try
+    fn();
+  catch err
+    msg = err.message;
+  end
+end
+
+% ---- tests ----
+
+function t_sim_f64_bitexact(ctx)
+  % double: hyst_f64_process, bit for bit and the same status as the C program
+  m = paper_f0();
+  x = signal(4000, m.lo, m.hi, 1);
+  [y, st] = hyst_sim(m, x);
+  [yc, stc] = run_ref(ctx, 'sim', 'double', m, x);
+  check(strcmp(class(y), 'double') && isequal(size(y), size(x)), 'class or shape');
+  check(isequal(typecast(y, 'uint64'), typecast(yc, 'uint64')), 'outputs differ from hyst_ref');
+  check(st == stc && st == 1, 'status %d, hyst_ref %d (1 expected: clamped samples)', st, stc);
+  % a row in gives a row out, the same numbers
+  check(isequal(hyst_sim(m, x'), y'), 'a row vector');
+end
+
+function t_sim_f32_bitexact(ctx)
+  % single: hyst_f32_process (what a Cortex-M4F computes), bit for bit
+  m = paper_f0();
+  x = single(signal(4000, m.lo, m.hi, 2));
+  x(1234) = NaN;                      % ignored, as in firmware
+  [y, st] = hyst_sim(m, x);
+  [yc, stc] = run_ref(ctx, 'sim', 'single', m, x);
+  check(strcmp(class(y), 'single'), 'class %s', class(y));
+  check(isequal(typecast(y, 'uint32'), typecast(yc, 'uint32')), 'outputs differ from hyst_ref');
+  check(st == stc, 'status %d, hyst_ref %d', st, stc);
+  check(y(1234) == y(1233), 'a NaN sample returns the previous output');
+  % float and double differ (otherwise the test above proves nothing about f32)
+  check(any(double(y) ~= hyst_sim(m, double(x))), 'single equals double everywhere');
+end
+
+function t_inv_bitexact(ctx)
+  % the compensator: hyst_*_init_inverse, bit for bit
+  m = paper_f0();
+  lo = polyval(m.coeffs, m.lo);
+  hi = polyval(m.coeffs, m.hi);
+  yd = signal(3000, lo, hi, 3);
+  [x, st] = hyst_inv(m, yd);
+  [xc, stc] = run_ref(ctx, 'inv', 'double', m, yd);
+  check(isequal(typecast(x, 'uint64'), typecast(xc, 'uint64')) && st == stc, 'f64 differs');
+  [x, st] = hyst_inv(m, single(yd));
+  [xc, stc] = run_ref(ctx, 'inv', 'single', m, single(yd));
+  check(isequal(typecast(x, 'uint32'), typecast(xc, 'uint32')) && st == stc, 'f32 differs');
+end
+
+function t_bounded_memory_bitexact(ctx)
+  % few turning points (loops merge: status 2) and a deadband, as the C program
+  m = paper_f0();
+  x = signal(3000, m.lo, m.hi, 4);
+  [y, st, ntp] = hyst_sim(m, x, 'capacity', 4, 'deadband', 0.05);
+  [yc, stc] = run_ref(ctx, 'sim', 'double', m, x, 'cap=4', 'deadband=0.05');
+  check(isequal(typecast(y, 'uint64'), typecast(yc, 'uint64')), 'outputs differ');
+  check(st == stc && st > 0, 'status %d, hyst_ref %d', st, stc);
+  check(ntp <= 8, '%d turning points with capacity 4', ntp);
+  check(any(y ~= hyst_sim(m, x)), 'bounded memory changed nothing');
+end
+
+function t_inv_undoes_sim(~)
+  % hyst_sim(hyst_inv(y)) = y and hyst_inv(hyst_sim(x)) = x, within rounding
+  m = paper_f0();
+  x = signal(5000, m.lo, m.hi, 5);
+  x = min(max(x, m.lo), m.hi);
+  y = hyst_sim(m, x);
+  err = max(abs(hyst_inv(m, y) - x));
+  check(err <= 1e-9 * (m.hi - m.lo), 'double: |inv(sim(x)) - x| up to %g', err);
+  xs = single(x);
+  err = max(abs(double(hyst_inv(m, hyst_sim(m, xs))) - x));
+  check(err <= 1e-3 * (m.hi - m.lo), 'single: |inv(sim(x)) - x| up to %g', err);
+  span = polyval(m.coeffs, m.hi) - polyval(m.coeffs, m.lo);
+  err = max(abs(hyst_sim(m, hyst_inv(m, y)) - y));
+  check(err <= 1e-9 * span, 'double: |sim(inv(y)) - y| up to %g', err);
+end
+
+function t_fit_measured(ctx)
+  % the measured piezo record: an increasing f0 that predicts the second
+  % half from the first within 3 % of the output range, better than a line
+  d = load(fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat'));
+  x = d(:, 1);
+  y = d(:, 5);
+  half = floor(numel(x) / 2);
+  f = hyst_fit(x(1:half), y(1:half), 'degree', 3, 'skip', 350, 'delay', 1);
+  check(f.increasing && numel(f.coeffs) == 4 && f.degree == 3, 'not an increasing cubic');
+  check(f.used > 0.9 * (half - 351) && f.rising > 0 && f.falling > 0, 'used %d', f.used);
+  range = max(y) - min(y);
+  check(f.rms > 0 && f.rms < 0.03 * range, 'rms %g of range %g', f.rms, range);
+  model = struct('coeffs', f.coeffs, 'lo', min(x), 'hi', max(x));
+  p = hyst_sim(model, x);             % from A0: compare after the settling
+  e3 = max(abs(p(half + 1:end - 1) - y(half + 2:end)));
+  g = hyst_fit(x(1:half), y(1:half), 'degree', 1, 'skip', 350, 'delay', 1);
+  p1 = hyst_sim(struct('coeffs', g.coeffs, 'lo', min(x), 'hi', max(x)), x);
+  e1 = max(abs(p1(half + 1:end - 1) - y(half + 2:end)));
+  check(e3 < 0.03 * range, 'prediction error %g of range %g', e3, range);
+  check(e3 < e1 / 2, 'cubic %g is not far better than a line %g', e3, e1);
+  r = hyst_fit(x, y, 'method', 'reflect', 'skip', 350, 'delay', 1, 'domain', [min(x) max(x)]);
+  check(strcmp(r.method, 'reflect') && r.increasing, 'reflect estimator');
+end
+
+function t_fit_equals_cli(ctx)
+  % hyst fit prints the same coefficients (15 digits) and domain
+  data = fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat');
+  f = hyst_fit(load(data)(:, 1), load(data)(:, 5), 'degree', 4, 'skip', 350, 'delay', 1);
+  out = strsplit(run_cli(ctx, ['fit --degree 4 --skip 350 --delay 1 --xcol 1 --ycol 5 "' data '"']), "\n");
+  c = str2double(strsplit(out{1}, ','));
+  dom = str2double(strsplit(out{2}, ','));
+  check(numel(c) == 5 && all(abs(c - f.coeffs) <= 1e-14 * abs(f.coeffs) + 1e-300), ...
+        'coefficients %s vs %s', out{1}, mat2str(f.coeffs, 15));
+  check(all(abs(dom - [f.lo f.hi]) <= 1e-14 * abs([f.lo f.hi])), 'domain %s', out{2});
+end
+
+function t_errors_status_names(~)
+  % a library error raises hyst:<name> with hyst_status_str() in the message
+  cases = {
+    -6, 'ERR_NOT_INCREASING', @() hyst_sim(struct('coeffs', [-1 0], 'lo', 0, 'hi', 1), 0)
+    -2, 'ERR_DOMAIN', @() hyst_inv(struct('coeffs', [1 0], 'lo', 1, 'hi', 1), 0)
+    -4, 'ERR_CAPACITY', @() hyst_sim(paper_f0(), 0, 'capacity', 1)
+    -21, 'ERR_ILL_CONDITIONED', @() hyst_sim(struct('coeffs', [1 0 0 0 0 0 0 0 0 0], 'lo', -1, 'hi', 1), single(0))
+    -10, 'ERR_SINGULAR', @() hyst_fit([0 1 0 1 0 1], [0 1 0 1 0 1], 'degree', 3)
+    -3, 'ERR_DEGREE', @() hyst_fit(0:9, 0:9, 'degree', 0)
+  };
+  for k = 1:size(cases, 1)
+    [text, name] = hyst_mex('status_str', cases{k, 1});
+    check(strcmp(name, cases{k, 2}), 'status %d is %s', cases{k, 1}, name);
+    expect_error(['hyst:' name], cases{k, 3});
+    msg = error_message(cases{k, 3});
+    check(~isempty(strfind(msg, text)) && ~isempty(strfind(msg, name)), ...
+          '%s: message ''%s'' lacks ''%s''', name, msg, text);
+  end
+  % x^9 on [-1, 1] is refused in float32 only: double runs it
+  hyst_sim(struct('coeffs', [1 0 0 0 0 0 0 0 0 0], 'lo', -1, 'hi', 1), 0);
+  % a warning is not an error: clamped samples return status 1
+  [~, st] = hyst_sim(paper_f0(), [0 50 20]);
+  check(st == 1, 'status %d for a clamped sample', st);
+end
+
+function t_usage_errors(~)
+  m = paper_f0();
+  expect_error('hyst:usage', @() hyst_sim(m, int16([1 2])));
+  expect_error('hyst:usage', @() hyst_sim(m, [1 2], 'capcity', 4));
+  expect_error('hyst:usage', @() hyst_sim(struct('coeffs', [1 0]), 0));
+  expect_error('hyst:usage', @() hyst_sim(struct('coeffs', 1:11, 'lo', 0, 'hi', 1), 0));
+  expect_error('hyst:usage', @() hyst_fit(1:3, 1:4));
+  expect_error('hyst:usage', @() hyst_fit(1:3, 1:3, 'method', 'other'));
+  expect_error('hyst:usage', @() hyst_mex('nosuchcommand'));
+  check(strcmp(hyst_mex('version'), regexprep(hyst_mex('version'), '[^0-9.]', '')) && ...
+        numel(strsplit(hyst_mex('version'), '.')) == 3, 'version %s', hyst_mex('version'));
+end
+
+function t_save_load_roundtrip(ctx)
+  d = load(fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat'));
+  f = hyst_fit(d(:, 1), d(:, 5), 'degree', 5, 'skip', 350, 'delay', 1);
+  file = fullfile(ctx.tmp, 'model.txt');
+  hyst_model_save(file, f);
+  m = hyst_model_load(file);
+  check(isequal(m.coeffs, f.coeffs) && m.lo == f.lo && m.hi == f.hi, 'not the same doubles');
+  check(isequal(fieldnames(m), {'coeffs'; 'lo'; 'hi'}), 'fields');
+  check(isequal(hyst_sim(m, d(:, 1)), hyst_sim(f, d(:, 1))), 'simulations differ');
+  text = fileread(file);
+  check(strncmp(text, sprintf('hyst-model-text 1\n'), 18), 'first line: %s', text);
+end
+
+function t_load_rejects(ctx)
+  file = fullfile(ctx.tmp, 'bad.txt');
+  good = {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 2'};
+  bad = {
+    {'hyst-model-text 2', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 2'}, 'hyst-model-text 1'
+    {'kind poly', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':1:'
+    [good {'gain 3'}], 'unknown key ''gain'''
+    [good {'lo 1'}], 'given twice'
+    good([1 2 3 5]), 'key ''hi'' is missing'
+    {'hyst-model-text 1', 'kind pwl', 'lo 0', 'hi 40', 'coeffs 1 2'}, 'is not poly'
+    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi Inf', 'coeffs 1 2'}, 'hi needs one finite number'
+    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 x'}, 'coeffs needs'
+  };
+  write_lines(file, [good {'', '# a comment'}]);
+  m = hyst_model_load(file);
+  check(isequal(m.coeffs, [1 2]) && m.lo == 0 && m.hi == 40, 'the good file');
+  for k = 1:size(bad, 1)
+    write_lines(file, bad{k, 1});
+    msg = error_message(@() hyst_model_load(file));
+    expect_error('hyst:model_file', @() hyst_model_load(file));
+    check(~isempty(strfind(msg, bad{k, 2})), 'case %d: message ''%s''', k, msg);
+  end
+  expect_error('hyst:model_file', @() hyst_model_load(fullfile(ctx.tmp, 'nosuchfile')));
+end
+
+function write_lines(file, lines)
+  fid = fopen(file, 'w');
+  fprintf(fid, '%s\n', lines{:});
+  fclose(fid);
+end
+
+function t_readme_block(ctx)
+  % the README's MATLAB/Octave quick start runs as written from the root
+  text = fileread(fullfile(ctx.root, 'README.md'));
+  parts = strsplit(text, sprintf('\n## MATLAB / Octave\n'));
+  check(numel(parts) == 2, 'README: one section ''## MATLAB / Octave''');
+  section = strsplit(parts{2}, sprintf('\n## ')){1};
+  blocks = regexp(section, '```matlab\n(.*?)```', 'tokens');
+  check(numel(blocks) == 1, 'README: one ```matlab block in that section');
+  here = pwd();
+  cd(ctx.root);
+  try
+    out = evalc(blocks{1}{1});
+  catch err
+    cd(here);
+    rethrow(err);
+  end
+  cd(here);
+  check(~isempty(strtrim(out)), 'the quick start prints nothing');
+end
