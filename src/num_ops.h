@@ -42,7 +42,10 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
                                       6),                                                     \
                           7);                                                                 \
         break
-#define NUM_HORNER_(a, u, acc_, k_) ((acc_) * (u) + (a)[k_].NUM_F)
+/* a[k] for k < HYST_MAX_DEGREE; the cases above it cannot run (degrees
+ * are at most HYST_MAX_DEGREE) and read a[0], not past the array. */
+#define NUM_HORNER_(a, u, acc_, k_) \
+    ((acc_) * (u) + (a)[(k_) < HYST_MAX_DEGREE ? (k_) : 0].NUM_F)
 #define NUM_HORNER4_(a, u) \
     NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER_(a, u, (a)[0].NUM_F, 1), 2), 3)
 
