@@ -2,10 +2,13 @@
 function model = hyst_model_load(file)
 % HYST_MODEL_LOAD  Reads a model written by HYST_MODEL_SAVE.
 %   MODEL = HYST_MODEL_LOAD(FILE) returns a struct with fields coeffs (a row,
-%   highest power first), lo, hi, for HYST_SIM and HYST_INV. FILE must be in
+%   highest power first), lo, hi and delay (samples; 0 when the file has
+%   none), for HYST_SIM and HYST_INV. FILE must be in
 %   the format hyst-model-text 1 (docs/matlab.md): its first line is exactly
 %   that; then lines 'key value...', blank lines and '#' comment lines; the
-%   keys kind (poly), lo, hi, coeffs, each once. Anything else (another
+%   keys kind (poly), lo, hi, coeffs, each once, and optionally delay (the
+%   output follows its input this many samples later; written by 'hyst fit
+%   --save'). Anything else (another
 %   format or version, an unknown or repeated key, a number that is not
 %   finite) raises hyst:model_file naming the file and the line.
   [fid, msg] = fopen(file, 'r');
@@ -32,7 +35,7 @@ function model = hyst_model_load(file)
     end
     [key, rest] = strtok(line);
     where = sprintf('hyst_model_load: %s:%d', file, k);
-    if ~any(strcmp(key, {'kind', 'lo', 'hi', 'coeffs'}))
+    if ~any(strcmp(key, {'kind', 'lo', 'hi', 'coeffs', 'delay'}))
       error('hyst:model_file', '%s: unknown key ''%s''', where, key);
     end
     if isfield(seen, key)
@@ -51,6 +54,9 @@ function model = hyst_model_load(file)
       error('hyst:model_file', '%s: %s needs %s finite number%s', where, key, ...
             ifelse_(strcmp(key, 'coeffs'), 'one or more', 'one'), ifelse_(strcmp(key, 'coeffs'), 's', ''));
     end
+    if strcmp(key, 'delay') && (v < 0 || v ~= round(v))
+      error('hyst:model_file', '%s: delay %g is not a whole number of samples', where, v);
+    end
     seen.(key) = v;
   end
   for key = {'kind', 'lo', 'hi', 'coeffs'}
@@ -58,7 +64,11 @@ function model = hyst_model_load(file)
       error('hyst:model_file', 'hyst_model_load: %s: key ''%s'' is missing', file, key{1});
     end
   end
-  model = struct('coeffs', seen.coeffs, 'lo', seen.lo, 'hi', seen.hi);
+  delay = 0;
+  if isfield(seen, 'delay')
+    delay = seen.delay;
+  end
+  model = struct('coeffs', seen.coeffs, 'lo', seen.lo, 'hi', seen.hi, 'delay', delay);
 end
 
 function r = ifelse_(c, a, b)

@@ -2,7 +2,8 @@
 function hyst_model_save(file, model)
 % HYST_MODEL_SAVE  Writes a model (f0 and its domain) to a text file.
 %   HYST_MODEL_SAVE(FILE, MODEL) writes MODEL.coeffs (highest power first),
-%   MODEL.lo and MODEL.hi in the format hyst-model-text 1 (docs/matlab.md):
+%   MODEL.lo and MODEL.hi (and MODEL.delay, samples, when it is not 0) in
+%   the format hyst-model-text 1 (docs/matlab.md):
 %
 %     hyst-model-text 1
 %     # ... comment lines
@@ -28,7 +29,11 @@ function hyst_model_save(file, model)
   fprintf(fid, 'hyst-model-text 1\n');
   fprintf(fid, '# hyst model: f0 on [lo, hi], coefficients highest power first (docs/matlab.md)\n');
   fprintf(fid, 'kind poly\n');
-  fprintf(fid, 'lo %.17g\nhi %.17g\ncoeffs', lo, hi);
+  fprintf(fid, 'lo %.17g\nhi %.17g\n', lo, hi);
+  if isstruct(model) && isfield(model, 'delay') && model.delay ~= 0
+    fprintf(fid, 'delay %d\n', model.delay);
+  end
+  fprintf(fid, 'coeffs');
   fprintf(fid, ' %.17g', c);
   fprintf(fid, '\n');
   if fclose(fid) ~= 0

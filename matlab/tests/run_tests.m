@@ -259,7 +259,16 @@ function t_save_load_roundtrip(ctx)
   hyst_model_save(file, f);
   m = hyst_model_load(file);
   check(isequal(m.coeffs, f.coeffs) && m.lo == f.lo && m.hi == f.hi, 'not the same doubles');
-  check(isequal(fieldnames(m), {'coeffs'; 'lo'; 'hi'}), 'fields');
+  check(isequal(fieldnames(m), {'coeffs'; 'lo'; 'hi'; 'delay'}) && m.delay == 0, 'fields');
+  % the host tool's model file (hyst fit --save), delay included
+  cli_file = fullfile(ctx.tmp, 'cli.hyst');
+  run_cli(ctx, ['fit --degree 4 --skip 350 --delay 2 --xcol 1 --ycol 5 --save "' cli_file '" "' ...
+                fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat') '"']);
+  c = hyst_model_load(cli_file);
+  check(c.delay == 2 && numel(c.coeffs) == 5, 'hyst fit --save read back: delay %g', c.delay);
+  c.delay = 3;
+  hyst_model_save(file, c);
+  check(hyst_model_load(file).delay == 3, 'delay written and read');
   check(isequal(hyst_sim(m, d(:, 1)), hyst_sim(f, d(:, 1))), 'simulations differ');
   text = fileread(file);
   check(strncmp(text, sprintf('hyst-model-text 1\n'), 18), 'first line: %s', text);
@@ -277,6 +286,7 @@ function t_load_rejects(ctx)
     {'hyst-model-text 1', 'kind pwl', 'lo 0', 'hi 40', 'coeffs 1 2'}, 'is not poly'
     {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi Inf', 'coeffs 1 2'}, 'hi needs one finite number'
     {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 x'}, 'coeffs needs'
+    [good {'delay 2.5'}], 'not a whole number of samples'
   };
   write_lines(file, [good {'', '# a comment'}]);
   m = hyst_model_load(file);

@@ -32,4 +32,18 @@ grep -q '^# candidate degree 3 delay 3: .*(chosen)$' fit.txt || fail "chosen mar
 "$tool" fit --delay 2 rec.txt > fit2.txt || fail "fit --delay 2"
 grep -q '^# chosen by hold-out: degree [0-9], delay 2 ' fit2.txt || fail "fixed delay: $(grep chosen fit2.txt)"
 [ "$(grep -c '^# candidate degree' fit2.txt)" -eq 9 ] || fail "candidates with --delay"
+# the model file: what fit chose, read back by sim (the delay applied) and inv
+"$tool" fit --save m.hyst rec.txt > /dev/null 2>&1 || fail "fit --save"
+head -n 1 m.hyst | grep -qx 'hyst-model-text 1' || fail "model file magic"
+grep -qx 'delay 3' m.hyst || fail "model file delay"
+coeffs="$(sed -n 's/^coeffs //p' m.hyst | tr ' ' ',')"
+"$tool" sim --model m.hyst x.txt > sim_model.txt || fail "sim --model"
+"$tool" sim --poly "$coeffs" --range 0,40 x.txt > sim_poly.txt || fail "sim --poly"
+# line k of sim --model is line k - 3 of sim --poly; the first 3 are f0(0)
+[ "$(tail -n +4 sim_model.txt | wc -l)" -eq "$(($(wc -l < sim_poly.txt) - 3))" ] || fail "sim --model: line count"
+cmp <(tail -n +4 sim_model.txt) <(head -n -3 sim_poly.txt) || fail "sim --model: not the delayed sim --poly"
+[ "$(head -n 3 sim_model.txt | sort -u | wc -l)" -eq 1 ] || fail "sim --model: the first lines at rest"
+"$tool" inv --model m.hyst y.txt > inv_model.txt 2> inv_err.txt || fail "inv --model"
+grep -q 'delay of 3 samples is not compensated' inv_err.txt || fail "inv --model: the delay note"
+cmp inv_model.txt <("$tool" inv --poly "$coeffs" --range 0,40 y.txt) || fail "inv --model differs from inv --poly"
 echo "select: degree 3, delay 3 recovered; $(grep -c '^# candidate' fit.txt) candidates"

@@ -77,6 +77,44 @@ int cli_unknown(const cli_args_t *a);
  * infinity and NaN are refused); 1 on success. */
 int cli_parse_double(const char *s, double *out);
 
+/* ---- files replaced whole, or not at all (cli_replace.c) ---- */
+
+/* Longest path of a file the tool writes. */
+#define CLI_PATH_MAX 4352u
+
+typedef struct cli_replace {
+    const char *cmd;  /* for messages */
+    const char *what; /* "header", "model file": for messages */
+    char path[CLI_PATH_MAX];
+    char tmp[CLI_PATH_MAX + 8u]; /* path.XXXXXX, "" when there is none */
+    char dir[CLI_PATH_MAX];      /* synced after the rename */
+} cli_replace_t;
+
+/* Before anything is computed or printed: a target that cannot be replaced
+ * (too long a path, a directory). 0, or 1 after a message. */
+int cli_replace_check(cli_replace_t *r, const char *cmd, const char *what, const char *path);
+/* The text into the temporary file, synced and closed: 0, or 1 after a
+ * message (and no temporary file left). */
+int cli_replace_write(cli_replace_t *r, const char *text, size_t len);
+/* The temporary file renamed over the target: 0, or 1 after a message. */
+int cli_replace_commit(cli_replace_t *r);
+/* Removes the temporary file, if any. */
+void cli_replace_discard(cli_replace_t *r);
+
+/* ---- model files, hyst-model-text 1 (model_file.c) ---- */
+
+typedef struct cli_model {
+    double coeffs[10]; /* c_n ... c_0, highest power first */
+    size_t ncoef;      /* degree + 1 */
+    double lo, hi;     /* domain of f0 */
+    unsigned long delay; /* the output follows its input this many samples later */
+} cli_model_t;
+
+/* Reads a model file; 0, or 1 after a message naming file, line and field. */
+int cli_model_read(const char *cmd, const char *path, cli_model_t *m);
+/* The file's text into buf; its length, or 0 if it did not fit. */
+size_t cli_model_text(const cli_model_t *m, char *buf, size_t size);
+
 /* ---- data files (cli_read.c): columns separated by blanks, ',' or ';' ---- */
 
 #define CLI_MAX_COLS 2

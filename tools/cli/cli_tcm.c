@@ -6,6 +6,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 typedef struct tcm_run {
     const hyst_poly_t *f0;
@@ -15,15 +16,20 @@ typedef struct tcm_run {
     size_t cap;
     hyst_t S;
     hyst_curve_t inv; /* the compensator's curve, kept by S */
+    double *late;     /* sim --model with a delay: the last `delay` outputs, a ring */
+    unsigned long delay, at;
 } tcm_run_t;
+
+/* Longest delay a model file may give sim (outputs held in memory). */
+#define TCM_MAX_DELAY 1000000ul
 
 /* Turning points the engine starts with; doubled whenever one array is
  * nearly full, so it never has to merge loops (the output is the full
  * model's) and holds what the trajectory needs, not one per sample. */
 #define TCM_CAP0 256u
 
-static int make_poly(const char *cmd, const double *coeffs, size_t ncoef, const double *range,
-                     size_t nrange, hyst_poly_t *f0)
+static int make_poly(const char *cmd, const char *model_path, const double *coeffs, size_t ncoef,
+                     const double *range, size_t nrange, hyst_poly_t *f0)
 {
     hyst_curve_t curve;
     hyst_status_t st;
@@ -50,12 +56,13 @@ static int make_poly(const char *cmd, const double *coeffs, size_t ncoef, const 
             c[i] = (hyst_wide_t)coeffs[i];
         }
         (void)hyst_poly_is_increasing(c, f0->degree, range[0], range[1], &turn);
-        return cli_fail(cmd, "option --poly: f0 is not increasing on [%g, %g] "
-                             "(slope negative at x = %.6g)",
-                        range[0], range[1], (double)turn);
+        return cli_fail(cmd, "%s%s: f0 is not increasing on [%g, %g] (slope negative at x = %.6g)",
+                        model_path != NULL ? "model file " : "option --poly",
+                        model_path != NULL ? model_path : "", range[0], range[1], (double)turn);
     }
     if (st != HYST_OK) {
-        return cli_fail(cmd, "options --poly/--range: %s", hyst_status_str(st));
+        return cli_fail(cmd, "%s%s: %s", model_path != NULL ? "model file " : "options --poly/--range",
+                        model_path != NULL ? model_path : "", hyst_status_str(st));
     }
     return 0;
 }
@@ -85,11 +92,23 @@ static hyst_status_t tcm_init(tcm_run_t *r, size_t cap)
 static int tcm_begin(void *ctx)
 {
     tcm_run_t *r = (tcm_run_t *)ctx;
+    unsigned long i;
     const hyst_status_t st = tcm_init(r, TCM_CAP0);
     if (st == HYST_ERR_NOSPACE) {
         return cli_fail(r->cmd, "out of memory");
     }
-    return st == HYST_OK ? 0 : cli_fail(r->cmd, "%s", hyst_status_str(st));
+    if (st != HYST_OK) {
+        return cli_fail(r->cmd, "%s", hyst_status_str(st));
+    }
+    if (r->delay > 0u) { /* before the first input arrives: the model at rest, f0(lo) */
+        if ((r->late = (double *)malloc(r->delay * sizeof(double))) == NULL) {
+            return cli_fail(r->cmd, "out of memory");
+        }
+        for (i = 0u; i < r->delay; ++i) {
+            r->late[i] = (double)hyst_output(&r->S);
+        }
+    }
+    return 0;
 }
 
 /* Twice the turning-point memory, the state carried over bit for bit by a
@@ -127,6 +146,12 @@ static int tcm_step(void *ctx, double x, double *y, int *clamped)
         return 1;
     }
     *y = (double)hyst_step(&r->S, (hyst_real_t)x);
+    if (r->late != NULL) { /* the sensor's reading now is the output `delay` samples ago */
+        const double now = *y;
+        *y = r->late[r->at];
+        r->late[r->at] = now;
+        r->at = r->at + 1u == r->delay ? 0u : r->at + 1u;
+    }
     if ((hyst_events(&r->S) & HYST_EVENT_FULL) != 0u) {
         return cli_fail(r->cmd, "internal error: turning-point memory full");
     }
@@ -148,6 +173,8 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     const char *v;
     double coeffs[HYST_MAX_DEGREE + 1], range[2];
     size_t ncoef = 0u, nrange = 0u;
+    cli_model_t model;
+    const char *model_path = NULL;
     int tp = 0, kind, rc;
     hyst_poly_t f0;
 
@@ -165,6 +192,10 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
             if ((v = cli_value(&a)) == NULL || !cli_opt_list(&a, v, range, 2u, 2u, &nrange)) {
                 return 1;
             }
+        } else if (cli_is(&a, "--model")) {
+            if ((model_path = cli_value(&a)) == NULL) {
+                return 1;
+            }
         } else {
             return cli_unknown(&a);
         }
@@ -172,7 +203,34 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     if (kind != CLI_END) {
         return kind == CLI_HELP ? 0 : 1;
     }
-    if (make_poly(cmd, coeffs, ncoef, range, nrange, &f0) != 0) {
+    memset(&model, 0, sizeof model);
+    if (model_path != NULL) {
+        size_t i;
+        if (ncoef > 0u || nrange > 0u) {
+            return cli_fail(cmd, "--model replaces --poly and --range: give one or the other");
+        }
+        if (cli_model_read(cmd, model_path, &model) != 0) {
+            return 1;
+        }
+        if (!inverse && model.delay > TCM_MAX_DELAY) {
+            return cli_fail(cmd, "%s: delay %lu above %lu samples", model_path, model.delay,
+                            TCM_MAX_DELAY);
+        }
+        for (i = 0u; i < model.ncoef; ++i) {
+            coeffs[i] = model.coeffs[i];
+        }
+        ncoef = model.ncoef;
+        range[0] = model.lo;
+        range[1] = model.hi;
+        nrange = 2u;
+        if (inverse && model.delay > 0u) {
+            (void)fprintf(stderr, "hyst %s: %s: the model's delay of %lu samples is not "
+                                  "compensated (a pure delay has no causal inverse): line k "
+                                  "is the drive for desired output k\n",
+                          cmd, model_path, model.delay);
+        }
+    }
+    if (make_poly(cmd, model_path, coeffs, ncoef, range, nrange, &f0) != 0) {
         return 1;
     }
     r.f0 = &f0;
@@ -180,6 +238,9 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     r.cmd = cmd;
     r.mem = NULL;
     r.cap = 0u;
+    r.late = NULL;
+    r.delay = inverse ? 0u : model.delay;
+    r.at = 0u;
     m.ctx = &r;
     m.begin = tcm_begin;
     m.step = tcm_step;
@@ -195,5 +256,6 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     }
     rc = cli_map_samples(cmd, &s, &m);
     free(r.mem);
+    free(r.late);
     return rc;
 }

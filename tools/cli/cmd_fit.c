@@ -6,7 +6,6 @@
 
 #include <ctype.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -14,7 +13,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 /* Longest --header-dir accepted (the header's path is built in a fixed buffer). */
 #define CLI_HEADER_DIR_MAX 4096u
@@ -22,7 +20,7 @@
 static const char help[] =
     "usage: hyst fit [--degree N] [--skip S] [--delay D] [--xcol I --ycol J]\n"
     "                [--method joint|reflect] [--domain LO,HI] [--header NAME]\n"
-    "                [--header-dir DIR] [--decimal-comma] FILE\n"
+    "                [--header-dir DIR] [--save MODEL] [--decimal-comma] FILE\n"
     "\n"
     "Fits the major ascending curve f0 (polynomial of degree N) of a hysteresis\n"
     "loop to the input/output record in FILE ('-' = standard input), excited by a\n"
@@ -52,6 +50,9 @@ static const char help[] =
     "                 'static const hyst_poly_t NAME = {...};' for firmware\n"
     "                 (in the current directory, or in DIR with --header-dir)\n"
     "  --header-dir DIR  directory of NAME.h (an existing directory; needs --header)\n"
+    "  --save MODEL   also write the model file MODEL (format hyst-model-text 1:\n"
+    "                 f0, its domain and the delay), which 'hyst sim --model' and\n"
+    "                 'hyst inv --model' read\n"
     "  --help         this text\n"
     "\n"
     "Output: line 1 the coefficients cN,...,c0 (highest power first), line 2 LO,HI,\n"
@@ -66,6 +67,7 @@ typedef struct fit_opts {
     const char *file;
     const char *header;
     const char *header_dir; /* NULL: the current directory */
+    const char *save;       /* model file, or NULL */
     int have_degree;
     int have_delay;
     int decimal_comma;
@@ -166,6 +168,8 @@ static int parse(fit_opts_t *o, int argc, char **argv)
                                 cli_quote(q, v));
             }
             o->header = v;
+        } else if (cli_is(&a, "--save")) {
+            o->save = v;
         } else if (cli_is(&a, "--header-dir")) {
             if (v[0] == '\0' || strlen(v) > CLI_HEADER_DIR_MAX) {
                 return cli_fail(a.cmd, "option --header-dir: %s is empty or longer than %u bytes",
@@ -238,11 +242,6 @@ static void print_candidates(const fit_opts_t *o)
  * over NAME.h (an atomic replacement on POSIX file systems). Any failure
  * before the rename removes the temporary file and leaves NAME.h as it was. */
 
-typedef struct header_file {
-    char path[CLI_HEADER_DIR_MAX + 256]; /* [DIR/]NAME.h */
-    char tmp[CLI_HEADER_DIR_MAX + 272];  /* [DIR/]NAME.h.XXXXXX, "" when there is none */
-} header_file_t;
-
 /* Appends printf output to buf[*len..size); 1 when it did not fit. */
 static int append(char *buf, size_t size, size_t *len, const char *fmt, ...)
 #if defined(__GNUC__)
@@ -310,11 +309,10 @@ static size_t header_text(const fit_opts_t *o, const hyst_ident_result_t *r, cha
 }
 
 /* Before anything is computed or printed: a NAME.h that cannot be replaced. */
-static int header_check(const fit_opts_t *o, header_file_t *h)
+static int header_check(const fit_opts_t *o, cli_replace_t *h)
 {
     struct stat st;
-    char q[CLI_QUOTE_SIZE];
-    h->tmp[0] = '\0';
+    char q[CLI_QUOTE_SIZE], path[CLI_PATH_MAX];
     if (o->header_dir != NULL) {
         if (stat(o->header_dir, &st) != 0) {
             const int err = errno;
@@ -326,90 +324,45 @@ static int header_check(const fit_opts_t *o, header_file_t *h)
                             cli_quote(q, o->header_dir));
         }
         /* DIR: at most CLI_HEADER_DIR_MAX bytes, NAME: a C identifier, < 200 chars */
-        (void)sprintf(h->path, "%s%s%s.h", o->header_dir,
+        (void)sprintf(path, "%s%s%s.h", o->header_dir,
                       o->header_dir[strlen(o->header_dir) - 1u] == '/' ? "" : "/", o->header);
     } else {
-        (void)sprintf(h->path, "%s.h", o->header);
+        (void)sprintf(path, "%s.h", o->header);
     }
-    if (stat(h->path, &st) == 0 && S_ISDIR(st.st_mode)) {
-        return cli_fail("fit", "%s: is a directory: cannot write the header", h->path);
-    }
-    return 0;
+    return cli_replace_check(h, "fit", "header", path);
 }
 
-static void header_discard(header_file_t *h)
+/* The model file into its temporary file: 0, or 1 after a message. */
+static int model_write(const fit_opts_t *o, const hyst_ident_result_t *r, cli_replace_t *ms)
 {
-    if (h->tmp[0] != '\0') {
-        (void)remove(h->tmp);
-        h->tmp[0] = '\0';
+    cli_model_t m;
+    char text[1024];
+    size_t len;
+    unsigned k;
+    memset(&m, 0, sizeof m);
+    m.ncoef = r->degree + 1u;
+    for (k = 0u; k < m.ncoef; ++k) {
+        m.coeffs[k] = (double)r->coeffs[k];
     }
+    m.lo = (double)r->lo;
+    m.hi = (double)r->hi;
+    m.delay = (unsigned long)o->cfg.delay;
+    len = cli_model_text(&m, text, sizeof text);
+    if (len == 0u) {
+        return cli_fail("fit", "%s: model text too long", ms->path);
+    }
+    return cli_replace_write(ms, text, len);
 }
 
-/* The header into h->tmp, synced and closed: 0, or 1 after a message (and no
- * temporary file left). */
-static int header_write(const fit_opts_t *o, const hyst_ident_result_t *r, header_file_t *h)
+/* The header into its temporary file: 0, or 1 after a message. */
+static int header_write(const fit_opts_t *o, const hyst_ident_result_t *r, cli_replace_t *h)
 {
     char text[8192];
     const size_t len = header_text(o, r, text, sizeof text);
-    struct stat st;
-    mode_t mode, mask;
-    FILE *f;
-    int fd, err;
     if (len == 0u) {
         return cli_fail("fit", "%s: header text too long", h->path);
     }
-    /* the mode NAME.h has, or a new file's (0666 less the umask; mkstemp gives 0600) */
-    mask = umask(0);
-    (void)umask(mask);
-    mode = stat(h->path, &st) == 0 ? (mode_t)(st.st_mode & 07777) : (mode_t)(0666 & ~mask);
-    (void)sprintf(h->tmp, "%s.XXXXXX", h->path);
-    if ((fd = mkstemp(h->tmp)) < 0) {
-        err = errno;
-        h->tmp[0] = '\0';
-        return cli_fail("fit", "%s: cannot write the header: %s (creating a temporary file "
-                               "beside it)",
-                        h->path, strerror(err));
-    }
-    if (fchmod(fd, mode) != 0 || (f = fdopen(fd, "w")) == NULL) {
-        err = errno;
-        (void)close(fd);
-        header_discard(h);
-        return cli_fail("fit", "%s: cannot write the header: %s", h->path, strerror(err));
-    }
-    errno = 0;
-    if (fwrite(text, 1u, len, f) != len || fflush(f) != 0 || fsync(fileno(f)) != 0) {
-        err = errno;
-        (void)fclose(f);
-        header_discard(h);
-        return cli_fail("fit", "%s: cannot write the header: %s", h->path, strerror(err));
-    }
-    if (fclose(f) != 0) {
-        err = errno;
-        header_discard(h);
-        return cli_fail("fit", "%s: cannot write the header: %s", h->path, strerror(err));
-    }
-    return 0;
-}
-
-/* h->tmp renamed over NAME.h: 0, or 1 after a message. */
-static int header_commit(const fit_opts_t *o, header_file_t *h)
-{
-    int fd;
-    if (rename(h->tmp, h->path) != 0) {
-        const int err = errno;
-        header_discard(h);
-        return cli_fail("fit", "%s: cannot replace the header: %s (the results above are "
-                               "valid, the header was not written)",
-                        h->path, strerror(err));
-    }
-    h->tmp[0] = '\0';
-    /* the rename itself to disk: best effort */
-    if ((fd = open(o->header_dir != NULL ? o->header_dir : ".", O_RDONLY)) >= 0) {
-        (void)fsync(fd);
-        (void)close(fd);
-    }
-    (void)fprintf(stderr, "hyst fit: wrote %s\n", h->path);
-    return 0;
+    return cli_replace_write(h, text, len);
 }
 
 /* 1 after a message if the @p n values @p v of column @p col are all equal:
@@ -459,7 +412,7 @@ int cmd_fit(int argc, char **argv)
     hyst_ident_t work;
     hyst_ident_result_t r;
     hyst_status_t st;
-    header_file_t h;
+    cli_replace_t h, ms;
     const char *name;
     size_t pairs, nread;
     unsigned k;
@@ -468,6 +421,9 @@ int cmd_fit(int argc, char **argv)
         return rc < 0 ? 0 : rc;
     }
     if (o.header != NULL && header_check(&o, &h) != 0) {
+        return 1;
+    }
+    if (o.save != NULL && cli_replace_check(&ms, "fit", "model file", o.save) != 0) {
         return 1;
     }
     name = cli_file_name(o.file);
@@ -513,6 +469,15 @@ int cmd_fit(int argc, char **argv)
         /* a closed pipe must not kill the process with the temporary file left */
         (void)signal(SIGPIPE, SIG_IGN);
     }
+    if (r.increasing && o.save != NULL) {
+        if (model_write(&o, &r, &ms) != 0) {
+            if (o.header != NULL) {
+                cli_replace_discard(&h);
+            }
+            return 1;
+        }
+        (void)signal(SIGPIPE, SIG_IGN);
+    }
     for (k = 0u; k <= r.degree; ++k) {
         (void)printf("%s%.15g", k ? "," : "", (double)r.coeffs[k]);
     }
@@ -539,12 +504,23 @@ int cmd_fit(int argc, char **argv)
     if (fflush(stdout) != 0 || ferror(stdout)) {
         const int err = errno;
         if (o.header != NULL) {
-            header_discard(&h);
+            cli_replace_discard(&h);
+        }
+        if (o.save != NULL) {
+            cli_replace_discard(&ms);
         }
         return cli_fail("fit", "write error on standard output: %s%s", strerror(err),
-                        o.header != NULL && r.increasing ? " (no header written)" : "");
+                        (o.header != NULL || o.save != NULL) && r.increasing
+                            ? " (no header or model file written)"
+                            : "");
     }
-    if (r.increasing && o.header != NULL && header_commit(&o, &h) != 0) {
+    if (r.increasing && o.header != NULL && cli_replace_commit(&h) != 0) {
+        if (o.save != NULL) {
+            cli_replace_discard(&ms);
+        }
+        return 1;
+    }
+    if (r.increasing && o.save != NULL && cli_replace_commit(&ms) != 0) {
         return 1;
     }
     if (!r.increasing) {
@@ -552,7 +528,8 @@ int cmd_fit(int argc, char **argv)
                       "hyst fit: %s: the fitted f0 is not increasing on [%.9g, %.9g] (slope "
                       "negative at x = %.9g): try another degree%s\n",
                       name, (double)r.lo, (double)r.hi, (double)r.turn,
-                      o.header != NULL ? "; no header written" : "");
+                      o.header != NULL || o.save != NULL ? "; no header or model file written"
+                                                         : "");
         return 2;
     }
     return 0;

@@ -3,8 +3,8 @@
 #include "cli.h"
 
 static const char help[] =
-    "usage: hyst inv --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp]\n"
-    "                [--decimal-comma] [FILE]\n"
+    "usage: hyst inv (--poly cN,...,c1,c0 --range LO,HI | --model MODEL) [--xcol I]\n"
+    "                [--tp] [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the compensator of the model 'hyst sim' runs with the same --poly and\n"
     "--range: for each desired output in FILE (standard input if FILE is absent\n"
@@ -22,6 +22,9 @@ static const char help[] =
     "                    (then an error), as for 'hyst sim'\n"
     CLI_HELP_XCOL
     CLI_HELP_DECIMAL
+    "  --model MODEL     f0 and its domain from a model file ('hyst fit --save');\n"
+    "                    its delay is not compensated (a pure delay has no causal\n"
+    "                    inverse): line k is the drive for desired output k\n"
     "  --tp              add the turning-point count as a second column: x,tp\n"
     "  --help            this text\n"
     "\n"

@@ -3,8 +3,8 @@
 #include "cli.h"
 
 static const char help[] =
-    "usage: hyst sim --poly cN,...,c1,c0 --range LO,HI [--xcol I] [--tp]\n"
-    "                [--decimal-comma] [FILE]\n"
+    "usage: hyst sim (--poly cN,...,c1,c0 --range LO,HI | --model MODEL) [--xcol I]\n"
+    "                [--tp] [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the hysteresis model (TCM) with major ascending curve\n"
     "f0(x) = cN x^N + ... + c1 x + c0 on [LO, HI] over the input samples of FILE\n"
@@ -18,6 +18,9 @@ static const char help[] =
     "                    every input was clamped (then an error)\n"
     CLI_HELP_XCOL
     CLI_HELP_DECIMAL
+    "  --model MODEL     f0, its domain and the delay from a model file ('hyst fit\n"
+    "                    --save'): line k is then the output for input k - delay\n"
+    "                    (the model at rest, f0(LO), for the first delay lines)\n"
     "  --tp              add the turning-point count as a second column: y,tp\n"
     "  --help            this text\n"
     "\n"

@@ -1,0 +1,111 @@
+/* SPDX-License-Identifier: MIT */
+/* A file replaced whole or not at all (cli.h, "files replaced whole"): the
+ * text goes to a temporary file beside the target (TARGET.XXXXXX), synced
+ * and closed, each step checked; only the caller's commit renames it over
+ * the target (atomic on POSIX file systems) and syncs the directory. Any
+ * failure before removes the temporary file and leaves the target as it was. */
+#include "cli.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+int cli_replace_check(cli_replace_t *r, const char *cmd, const char *what, const char *path)
+{
+    struct stat st;
+    const char *slash;
+    size_t n = strlen(path);
+    r->cmd = cmd;
+    r->what = what;
+    r->tmp[0] = '\0';
+    if (n == 0u || n + 8u > sizeof r->path) {
+        return cli_fail(cmd, "%s path empty or longer than %u bytes", what,
+                        (unsigned)(sizeof r->path - 8u));
+    }
+    memcpy(r->path, path, n + 1u);
+    /* the directory to sync after the rename: the path's, or "." */
+    slash = strrchr(path, '/');
+    if (slash == NULL) {
+        (void)strcpy(r->dir, ".");
+    } else if (slash == path) {
+        (void)strcpy(r->dir, "/");
+    } else {
+        memcpy(r->dir, path, (size_t)(slash - path));
+        r->dir[slash - path] = '\0';
+    }
+    if (stat(r->path, &st) == 0 && S_ISDIR(st.st_mode)) {
+        return cli_fail(cmd, "%s: is a directory: cannot write the %s", r->path, what);
+    }
+    return 0;
+}
+
+void cli_replace_discard(cli_replace_t *r)
+{
+    if (r->tmp[0] != '\0') {
+        (void)remove(r->tmp);
+        r->tmp[0] = '\0';
+    }
+}
+
+int cli_replace_write(cli_replace_t *r, const char *text, size_t len)
+{
+    struct stat st;
+    mode_t mode, mask;
+    FILE *f;
+    int fd, err;
+    /* the mode the target has, or a new file's (0666 less the umask; mkstemp gives 0600) */
+    mask = umask(0);
+    (void)umask(mask);
+    mode = stat(r->path, &st) == 0 ? (mode_t)(st.st_mode & 07777) : (mode_t)(0666 & ~mask);
+    (void)sprintf(r->tmp, "%s.XXXXXX", r->path);
+    if ((fd = mkstemp(r->tmp)) < 0) {
+        err = errno;
+        r->tmp[0] = '\0';
+        return cli_fail(r->cmd, "%s: cannot write the %s: %s (creating a temporary file "
+                                "beside it)",
+                        r->path, r->what, strerror(err));
+    }
+    if (fchmod(fd, mode) != 0 || (f = fdopen(fd, "w")) == NULL) {
+        err = errno;
+        (void)close(fd);
+        cli_replace_discard(r);
+        return cli_fail(r->cmd, "%s: cannot write the %s: %s", r->path, r->what, strerror(err));
+    }
+    errno = 0;
+    if (fwrite(text, 1u, len, f) != len || fflush(f) != 0 || fsync(fileno(f)) != 0) {
+        err = errno;
+        (void)fclose(f);
+        cli_replace_discard(r);
+        return cli_fail(r->cmd, "%s: cannot write the %s: %s", r->path, r->what, strerror(err));
+    }
+    if (fclose(f) != 0) {
+        err = errno;
+        cli_replace_discard(r);
+        return cli_fail(r->cmd, "%s: cannot write the %s: %s", r->path, r->what, strerror(err));
+    }
+    return 0;
+}
+
+int cli_replace_commit(cli_replace_t *r)
+{
+    int fd;
+    if (rename(r->tmp, r->path) != 0) {
+        const int err = errno;
+        cli_replace_discard(r);
+        return cli_fail(r->cmd, "%s: cannot replace the %s: %s (the results above are "
+                                "valid, the %s was not written)",
+                        r->path, r->what, strerror(err), r->what);
+    }
+    r->tmp[0] = '\0';
+    /* the rename itself to disk: best effort */
+    if ((fd = open(r->dir, O_RDONLY)) >= 0) {
+        (void)fsync(fd);
+        (void)close(fd);
+    }
+    (void)fprintf(stderr, "hyst %s: wrote %s\n", r->cmd, r->path);
+    return 0;
+}

@@ -1,0 +1,156 @@
+/* SPDX-License-Identifier: MIT */
+/* Model files, format hyst-model-text 1 (docs/cli.md, "Model files"): the
+ * same text the MATLAB/Octave functions read and write. */
+#include "cli.h"
+#include "hyst/hyst.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAGIC "hyst-model-text 1"
+
+/* Number of blank-separated fields of s into f (pointers into s, which is
+ * cut at the blanks); at most max. */
+static size_t split(char *s, char **f, size_t max)
+{
+    size_t n = 0u;
+    char *p = s;
+    for (;;) {
+        while (*p == ' ' || *p == '\t' || *p == '\r') {
+            *p++ = '\0';
+        }
+        if (*p == '\0' || *p == '\n') {
+            *p = '\0';
+            return n;
+        }
+        if (n == max) {
+            return max + 1u;
+        }
+        f[n++] = p;
+        while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
+            ++p;
+        }
+    }
+}
+
+int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
+{
+    enum { K_KIND, K_LO, K_HI, K_COEFFS, K_DELAY, K_COUNT };
+    static const char *const keys[K_COUNT] = {"kind", "lo", "hi", "coeffs", "delay"};
+    char line[1024], *f[HYST_MAX_DEGREE + 3];
+    int seen[K_COUNT] = {0, 0, 0, 0, 0};
+    unsigned long no = 0ul;
+    size_t n, i;
+    int k;
+    FILE *in = fopen(path, "r");
+    if (in == NULL) {
+        return cli_fail(cmd, "%s: cannot open the model file", path);
+    }
+    memset(m, 0, sizeof *m);
+    while (fgets(line, (int)sizeof line, in) != NULL) {
+        ++no;
+        if (strchr(line, '\n') == NULL && !feof(in)) {
+            (void)fclose(in);
+            return cli_fail(cmd, "%s:%lu: line longer than %u bytes", path, no,
+                            (unsigned)sizeof line - 2u);
+        }
+        if (no == 1ul) {
+            line[strcspn(line, "\r\n")] = '\0';
+            if (strcmp(line, MAGIC) != 0) {
+                char q[CLI_QUOTE_SIZE];
+                (void)fclose(in);
+                return cli_fail(cmd, "%s:1: %s is not '" MAGIC "' (another format or version)",
+                                path, cli_quote(q, line));
+            }
+            continue;
+        }
+        n = split(line, f, HYST_MAX_DEGREE + 2u);
+        if (n == 0u || f[0][0] == '#') {
+            continue;
+        }
+        for (k = 0; k < K_COUNT && strcmp(f[0], keys[k]) != 0; ++k) {
+        }
+        if (k == K_COUNT || seen[k]) {
+            char q[CLI_QUOTE_SIZE];
+            (void)fclose(in);
+            return cli_fail(cmd, "%s:%lu: field 1: %s %s", path, no, cli_quote(q, f[0]),
+                            k == K_COUNT ? "is not a key (kind, lo, hi, coeffs, delay)"
+                                         : "given twice");
+        }
+        seen[k] = 1;
+        if (k == K_KIND) {
+            if (n != 2u || strcmp(f[1], "poly") != 0) {
+                (void)fclose(in);
+                return cli_fail(cmd, "%s:%lu: field 2: kind must be 'poly'", path, no);
+            }
+            continue;
+        }
+        if (k == K_COEFFS ? (n < 3u || n > HYST_MAX_DEGREE + 2u) : n != 2u) {
+            (void)fclose(in);
+            return cli_fail(cmd, "%s:%lu: %s needs %s", path, no, keys[k],
+                            k == K_COEFFS ? "2 to 10 numbers (c_n ... c_0)" : "one value");
+        }
+        for (i = 1u; i < n; ++i) {
+            double v;
+            if (!cli_parse_double(f[i], &v) ||
+                (k == K_DELAY && !(v >= 0.0 && v <= 1e9 && v == (double)(unsigned long)v))) {
+                char q[CLI_QUOTE_SIZE];
+                (void)fclose(in);
+                return cli_fail(cmd, "%s:%lu: field %lu: %s is not %s", path, no,
+                                (unsigned long)(i + 1u), cli_quote(q, f[i]),
+                                k == K_DELAY ? "a whole number of samples" : "a finite number");
+            }
+            if (k == K_LO) {
+                m->lo = v;
+            } else if (k == K_HI) {
+                m->hi = v;
+            } else if (k == K_DELAY) {
+                m->delay = (unsigned long)v;
+            } else {
+                m->coeffs[i - 1u] = v;
+            }
+        }
+        if (k == K_COEFFS) {
+            m->ncoef = n - 1u;
+        }
+    }
+    (void)fclose(in);
+    if (no == 0ul) {
+        return cli_fail(cmd, "%s: empty model file", path);
+    }
+    for (k = 0; k < K_DELAY; ++k) {
+        if (!seen[k]) {
+            return cli_fail(cmd, "%s: the key %s is missing", path, keys[k]);
+        }
+    }
+    return 0;
+}
+
+size_t cli_model_text(const cli_model_t *m, char *buf, size_t size)
+{
+    size_t len;
+    unsigned i;
+    int w = snprintf(buf, size,
+                     MAGIC "\n# hyst model: f0 on [lo, hi], coefficients highest power first, "
+                           "the output %lu samples after its input (docs/cli.md)\n"
+                           "kind poly\nlo %.17g\nhi %.17g\ndelay %lu\ncoeffs",
+                     m->delay, m->lo, m->hi, m->delay);
+    if (w < 0 || (size_t)w >= size) {
+        return 0u;
+    }
+    len = (size_t)w;
+    for (i = 0u; i < m->ncoef; ++i) {
+        w = snprintf(buf + len, size - len, " %.17g", m->coeffs[i]);
+        if (w < 0 || (size_t)w >= size - len) {
+            return 0u;
+        }
+        len += (size_t)w;
+    }
+    if (len + 2u > size) {
+        return 0u;
+    }
+    buf[len++] = '\n';
+    buf[len] = '\0';
+    return len;
+}
