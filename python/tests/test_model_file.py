@@ -51,3 +51,67 @@ def test_malformed_model_files(tmp_path, lines, message):
     path.write_text("\n".join(lines) + "\n")
     with pytest.raises(hyst.ModelFileError, match=message):
         hyst.load_model(path)
+
+
+def test_fit_chooses_as_the_cli_and_the_header_reproduces_it(c_build, tmp_path):
+    """Python fits the measured record with degree and delay chosen (the
+    CLI's rule, the same candidates), saves the model and the header: the
+    CLI (17 digits) and a C program built on the header give the package's
+    outputs to the last bit, in double."""
+    d = np.loadtxt(DATA)
+    x, y = d[:, 0], d[:, 4]
+    f = hyst.fit(x, y, degree=None, delay=None, skip=350)
+    assert f.degree <= 5 and len(f.candidates) == 81
+    cli = subprocess.run([str(c_build["cli"]), "fit", "--skip", "350", "--xcol", "1",
+                          "--ycol", "5", DATA], check=True, capture_output=True,
+                         text=True).stdout
+    assert f"# chosen by hold-out: degree {f.degree}, delay {f.delay} " in cli
+    scored = [c for c in f.candidates if np.isfinite(c["holdout_rms"])]
+    for c in scored:  # the same scores, printed by the CLI with 6 digits
+        assert f"# candidate degree {c['degree']} delay {c['delay']}: hold-out rms " \
+               f"{c['holdout_rms']:.6g}," in cli
+
+    model = tmp_path / "m.hyst"
+    f.save(model)
+    xs = x[350:2350]
+    want = hyst.Model(f.coeffs, f.lo, f.hi).process(xs)
+    inp = tmp_path / "x.txt"
+    np.savetxt(inp, xs, fmt="%.17g")
+    out = subprocess.run([str(c_build["cli"]), "sim", "--model", str(model), "--digits", "17",
+                          str(inp)], check=True, capture_output=True, text=True).stdout.split()
+    got = np.array([float(v) for v in out])
+    assert np.array_equal(got[f.delay:], want[:len(want) - f.delay])  # bit for bit
+
+    (tmp_path / "f0_fit.h").write_text(f.header("f0_fit"))
+    (tmp_path / "run.c").write_text(RUN_C)
+    root = os.path.join(os.path.dirname(__file__), "..", "..")
+    srcs = sorted(os.path.join(root, "src", s) for s in os.listdir(os.path.join(root, "src"))
+                  if s.endswith(".c"))
+    exe = tmp_path / "run"
+    subprocess.run(["cc", "-std=c99", "-O2", "-DHYST_USE_DOUBLE", "-I", str(tmp_path),
+                    "-I", os.path.join(root, "include"), str(tmp_path / "run.c"), *srcs,
+                    "-lm", "-o", str(exe)], check=True)
+    out = subprocess.run([str(exe), str(inp)], check=True, capture_output=True,
+                         text=True).stdout.split()
+    assert np.array_equal(np.array([float(v) for v in out]), want)  # bit for bit
+
+
+RUN_C = r"""
+#include <stdio.h>
+#include "hyst/hyst.h"
+#include "f0_fit.h"
+static double xl[4096], yl[4096], xr[4096], yr[4096];
+int main(int argc, char **argv)
+{
+    hyst_t S;
+    double x;
+    FILE *in = argc > 1 ? fopen(argv[1], "r") : NULL;
+    if (in == NULL || hyst_init(&S, &f0_fit, xl, yl, xr, yr, 4096) != HYST_OK) {
+        return 1;
+    }
+    while (fscanf(in, "%lf", &x) == 1) {
+        printf("%.17g\n", hyst_step(&S, x));
+    }
+    return fclose(in) != 0;
+}
+"""

@@ -220,6 +220,7 @@ typedef struct cli_map {
     unsigned long (*col2)(void *ctx);
     const char *clamp_what; /* for the clamp warning: "inputs", ... */
     double lo, hi;          /* the interval inputs are clamped to */
+    int digits;             /* significant digits printed (9; 17 gives the doubles exactly) */
 } cli_map_t;
 
 /* Reads the samples one line at a time and runs them through @p m, in

@@ -316,8 +316,8 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
             nclamped++ == 0u) {
             first = rd.lineno;
         }
-        len = m->col2 != NULL ? sprintf(out, "%.9g,%lu\n", y, m->col2(m->ctx))
-                              : sprintf(out, "%.9g\n", y);
+        len = m->col2 != NULL ? sprintf(out, "%.*g,%lu\n", m->digits, y, m->col2(m->ctx))
+                              : sprintf(out, "%.*g\n", m->digits, y);
         rc = cli_spool_write(&sp, out, (size_t)len);
     }
     if (got < 0) {

@@ -176,6 +176,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     cli_model_t model;
     const char *model_path = NULL;
     int tp = 0, kind, rc;
+    unsigned long digits = 9ul;
     hyst_poly_t f0;
 
     cli_args_init(&a, cmd, argc, argv);
@@ -190,6 +191,10 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
             }
         } else if (cli_is(&a, "--range")) {
             if ((v = cli_value(&a)) == NULL || !cli_opt_list(&a, v, range, 2u, 2u, &nrange)) {
+                return 1;
+            }
+        } else if (cli_is(&a, "--digits")) {
+            if ((v = cli_value(&a)) == NULL || !cli_opt_ulong(&a, v, 1ul, 17ul, &digits)) {
                 return 1;
             }
         } else if (cli_is(&a, "--model")) {
@@ -245,6 +250,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     m.begin = tcm_begin;
     m.step = tcm_step;
     m.col2 = tp ? tcm_tp : NULL;
+    m.digits = (int)digits;
     if (inverse) {
         m.clamp_what = "desired outputs";
         m.lo = (double)hyst_poly_eval(&f0, f0.lo);

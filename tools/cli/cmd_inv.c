@@ -4,14 +4,14 @@
 
 static const char help[] =
     "usage: hyst inv (--poly cN,...,c1,c0 --range LO,HI | --model MODEL) [--xcol I]\n"
-    "                [--tp] [--decimal-comma] [FILE]\n"
+    "                [--tp] [--digits N] [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the compensator of the model 'hyst sim' runs with the same --poly and\n"
     "--range: for each desired output in FILE (standard input if FILE is absent\n"
     "or '-'), the input that makes the model produce it, given the history. It is\n"
     "the same engine on the inverse curve f0^-1, starting from (f0(LO), LO), so\n"
     "'hyst sim' of the printed inputs gives back the desired outputs.\n"
-    "Prints one input per line with 9 significant digits.\n"
+    "Prints one input per line with 9 significant digits (--digits).\n"
     "\n"
     "  --poly cN,...,c0  coefficients of f0, highest power first (degree 1..9)\n"
     "  --range LO,HI     domain of f0; desired outputs outside [f0(LO), f0(HI)] are\n"
@@ -26,6 +26,8 @@ static const char help[] =
     "                    its delay is not compensated (a pure delay has no causal\n"
     "                    inverse): line k is the drive for desired output k\n"
     "  --tp              add the turning-point count as a second column: x,tp\n"
+    "  --digits N        significant digits printed, 1..17 (default 9; 17 prints\n"
+    "                    the double-precision results exactly)\n"
     "  --help            this text\n"
     "\n"
     CLI_HELP_EXIT;

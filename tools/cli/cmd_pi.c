@@ -126,6 +126,7 @@ int cmd_pi(int argc, char **argv)
     m.begin = NULL;
     m.step = pi_step;
     m.col2 = NULL;
+    m.digits = 9;
     m.clamp_what = "inputs";
     m.lo = m.hi = 0.0;
     return cli_map_samples(a.cmd, &s, &m);
