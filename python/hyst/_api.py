@@ -45,6 +45,14 @@ def Compensator(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
         list(map(float, coeffs)), float(lo), float(hi), int(capacity), True)
 
 
+def ModelFromPoints(xs, ys, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inverse=False):
+    """A TCM model whose f0 is piecewise linear through the points (xs, ys),
+    xs strictly increasing, ys increasing (the library's PWL curve kind);
+    ``inverse=True`` gives its compensator."""
+    return _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
+        list(map(float, xs)), list(map(float, ys)), int(capacity), bool(inverse))
+
+
 def PI(thresholds, weights, *, dtype=np.float64):
     """A Prandtl-Ishlinskii model; ``.inverse()`` gives its inverse."""
     return _variant(dtype, _hyst.PIF32, _hyst.PIF64)(

@@ -62,6 +62,8 @@ template <class T> struct Ops;
     template <> struct Ops<T> {                                             \
         static constexpr auto init = hyst_##P##_init_;                      \
         static constexpr auto init_inverse = hyst_##P##_init_inverse_;      \
+        static constexpr auto init_curve = hyst_##P##_init_curve_;          \
+        static constexpr auto curve_from_pwl = hyst_##P##_curve_from_pwl_;  \
         static constexpr auto step = hyst_##P##_step;                       \
         static constexpr auto process = hyst_##P##_process;                 \
         static constexpr auto set_deadband = hyst_##P##_set_deadband;       \
@@ -149,8 +151,32 @@ template <class X, class Y> struct Owned : Tcm {
 template <class T> struct Real : Owned<T, T> {
     using O = Ops<T>;
     hyst_curve_t inv{}; /* the compensator's inverse curve (the instance points at it) */
+    hyst_curve_t fwd{}; /* a piecewise-linear f0 (the instance or inv points at it) */
+    std::vector<T> bx, by; /* its breakpoints (fwd points at them) */
     bool inverse;
     double deadband = 0.0;
+
+    /* A piecewise-linear f0 through (xs, ys): its own copies of the points. */
+    Real(const std::vector<double> &xs, const std::vector<double> &ys, size_t capacity,
+         bool inverse_)
+        : Owned<T, T>(capacity), bx(xs.begin(), xs.end()), by(ys.begin(), ys.end()),
+          inverse(inverse_)
+    {
+        if (xs.size() != ys.size()) {
+            raise_status(HYST_ERR_ARG, "xs and ys differ in length");
+        }
+        check(O::curve_from_pwl(&fwd, bx.data(), by.data(), bx.size(), HYST_LAYOUT), "curve");
+        const hyst_curve_t *c = &fwd;
+        if (inverse) {
+            check(hyst_curve_inverse(&inv, &fwd), "inverse curve");
+            c = &inv;
+        }
+        check(O::init_curve(&this->S, c, this->xl.data(), this->yl.data(), this->xr.data(),
+                            this->yr.data(), capacity, HYST_LAYOUT),
+              inverse ? "compensator init" : "model init");
+        this->lo = xs.empty() ? 0.0 : xs.front();
+        this->hi = xs.empty() ? 0.0 : xs.back();
+    }
 
     Real(const std::vector<double> &c, double lo_, double hi_, size_t capacity, bool inverse_)
         : Owned<T, T>(capacity), inverse(inverse_)
@@ -328,6 +354,8 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
     model_cls
         .def(nb::init<const std::vector<double> &, double, double, size_t, bool>(), "coeffs"_a,
              "lo"_a, "hi"_a, "capacity"_a, "inverse"_a)
+        .def(nb::init<const std::vector<double> &, const std::vector<double> &, size_t, bool>(),
+             "xs"_a, "ys"_a, "capacity"_a, "inverse"_a)
         .def("step", &R::step, "x"_a, "One sample in, one output out.")
         .def_prop_rw("deadband", [](const R &s) { return s.deadband; }, &R::set_deadband)
         .def_prop_ro("output", [](const R &s) { return Ops<T>::output(&s.S); })
