@@ -46,4 +46,11 @@ cmp <(tail -n +4 sim_model.txt) <(head -n -3 sim_poly.txt) || fail "sim --model:
 "$tool" inv --model m.hyst y.txt > inv_model.txt 2> inv_err.txt || fail "inv --model"
 grep -q 'delay of 3 samples is not compensated' inv_err.txt || fail "inv --model: the delay note"
 cmp inv_model.txt <("$tool" inv --poly "$coeffs" --range 0,40 y.txt) || fail "inv --model differs from inv --poly"
+# the firmware header of the model file: f0 as saved, compiled with the library's header
+"$tool" header --model m.hyst --dir . f0_sel 2> /dev/null || fail "header --model"
+grep -q 'static const hyst_poly_t f0_sel = {' f0_sel.h || fail "header content"
+grep -q 'follows its input$' f0_sel.h && grep -q '^ \* 3 samples later' f0_sel.h || fail "header: the delay comment"
+for c in $(sed -n 's/^coeffs //p' m.hyst); do grep -q "HYST_REAL_C($c)" f0_sel.h || fail "header: coefficient $c"; done
+"$tool" header --model m.hyst '9x' 2> err.txt && fail "header: a bad NAME accepted"
+grep -q "NAME '9x' is not a C identifier" err.txt || fail "header: message $(cat err.txt)"
 echo "select: degree 3, delay 3 recovered; $(grep -c '^# candidate' fit.txt) candidates"

@@ -17,6 +17,7 @@ int cmd_fit(int argc, char **argv);
 int cmd_sim(int argc, char **argv);
 int cmd_inv(int argc, char **argv);
 int cmd_pi(int argc, char **argv);
+int cmd_header(int argc, char **argv);
 
 /* ---- messages ---- */
 
@@ -114,6 +115,20 @@ typedef struct cli_model {
 int cli_model_read(const char *cmd, const char *path, cli_model_t *m);
 /* The file's text into buf; its length, or 0 if it did not fit. */
 size_t cli_model_text(const cli_model_t *m, char *buf, size_t size);
+/* Appends the firmware header's declaration of f0 (include guard,
+ * 'static const hyst_poly_t NAME = {...};') to buf[*len..size); 1 when it
+ * did not fit. */
+int cli_header_poly(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m);
+
+/* 1 if s is a C identifier of fewer than 200 characters (a header's NAME). */
+int cli_c_identifier(const char *s);
+
+/* Appends printf output to buf[*len..size); 1 when it did not fit. */
+int cli_append(char *buf, size_t size, size_t *len, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
 
 /* ---- data files (cli_read.c): columns separated by blanks, ',' or ';' ---- */
 

@@ -4,6 +4,8 @@
 #include "cli.h"
 #include "hyst/hyst.h"
 
+#include <ctype.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -153,4 +155,57 @@ size_t cli_model_text(const cli_model_t *m, char *buf, size_t size)
     buf[len++] = '\n';
     buf[len] = '\0';
     return len;
+}
+
+int cli_append(char *buf, size_t size, size_t *len, const char *fmt, ...)
+{
+    va_list ap;
+    int n;
+    va_start(ap, fmt);
+    n = vsnprintf(buf + *len, size - *len, fmt, ap);
+    va_end(ap);
+    if (n < 0 || (size_t)n >= size - *len) {
+        return 1;
+    }
+    *len += (size_t)n;
+    return 0;
+}
+
+int cli_header_poly(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m)
+{
+    char lit[40], guard[256];
+    size_t i;
+    int over;
+    for (i = 0u; name[i] != '\0' && i + 3u < sizeof guard; ++i) {
+        guard[i] = (char)toupper((unsigned char)name[i]);
+    }
+    memcpy(guard + i, "_H", 3u);
+    over = cli_append(buf, size, len, "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n\n",
+                      guard, guard);
+    over |= cli_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu, ", name,
+                       (unsigned)(m->ncoef - 1u));
+    cli_c_literal(lit, sizeof lit, m->lo);
+    over |= cli_append(buf, size, len, "HYST_REAL_C(%s), ", lit);
+    cli_c_literal(lit, sizeof lit, m->hi);
+    over |= cli_append(buf, size, len, "HYST_REAL_C(%s),\n    {", lit);
+    for (i = 0u; i < m->ncoef; ++i) {
+        cli_c_literal(lit, sizeof lit, m->coeffs[i]);
+        over |= cli_append(buf, size, len, "%sHYST_REAL_C(%s)", i ? ",\n     " : "", lit);
+    }
+    over |= cli_append(buf, size, len, "}};\n\n#endif /* %s */\n", guard);
+    return over;
+}
+
+int cli_c_identifier(const char *s)
+{
+    size_t i;
+    if (!(isalpha((unsigned char)s[0]) || s[0] == '_')) {
+        return 0;
+    }
+    for (i = 1u; s[i] != '\0'; ++i) {
+        if (!(isalnum((unsigned char)s[i]) || s[i] == '_')) {
+            return 0;
+        }
+    }
+    return i < 200u;
 }
