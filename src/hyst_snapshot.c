@@ -341,7 +341,6 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t
 {
     const volatile hyst_tcm_t *V = S;
     format_t f;
-    size_t need = 0u, at;
     unsigned attempt;
     if (S == NULL || buf == NULL) {
         return HYST_ERR_NULL;
@@ -351,7 +350,7 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t
     }
     for (attempt = 0u; attempt < HYST_READ_ATTEMPTS; ++attempt) {
         const unsigned long seq = V->seq;
-        size_t nl, nr;
+        size_t nl, nr, need, at;
         hyst_num_t x, y, x_again;
         HYST_BARRIER();
         /* The counts are read once: the size and the copy agree, whatever
@@ -361,6 +360,9 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t
         need = size_for(&f, nl, nr);
         if (need == 0u || size < need) {
             HYST_BARRIER();
+            /* A volatile re-read: the stepping context may have changed it (cppcheck
+             * takes it for the value read above). */
+            /* cppcheck-suppress knownConditionTrueFalse */
             if (V->seq != seq) {
                 continue; /* counts of two states: read them again */
             }
@@ -375,6 +377,8 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t
         y = V->y_prev;
         HYST_BARRIER();
         x_again = V->window[V->moving_end];
+        /* volatile re-reads, as above */
+        /* cppcheck-suppress knownConditionTrueFalse */
         if (V->seq != seq || !same_num(&x, &x_again, f.xt)) {
             continue;
         }

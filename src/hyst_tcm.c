@@ -150,6 +150,9 @@ static void counts(const hyst_tcm_t *S, size_t *nl, size_t *nr)
         *nl = V->n_ltp;
         *nr = V->n_rtp;
         HYST_BARRIER();
+        /* a volatile re-read: the stepping context may have changed it
+         * (cppcheck takes it for the value read above) */
+        /* cppcheck-suppress knownConditionTrueFalse */
         if (seq == V->seq) {
             break;
         }
