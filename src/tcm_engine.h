@@ -545,12 +545,12 @@ static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x)
     } else {
         y = TCM_NAME(slow_only)(S, x);
         YV(S->y_prev) = y;
+        if (S->horner != S->degree) { /* emit() serves the other curves' requests */
+            TCM_NAME(serve)(S);
+        }
     }
     if (S->status != HYST_OK) {
         TCM_NAME(close_window)(S);
-    }
-    if (S->horner != S->degree) { /* SLOW_ONLY, or a request posted meanwhile: none */
-        TCM_NAME(serve)(S);
     }
     return y;
 }

@@ -91,6 +91,11 @@ typedef struct cli_replace {
     char dir[CLI_PATH_MAX];      /* synced after the rename */
 } cli_replace_t;
 
+/* A header's path, [DIR/]NAME.h, into path (CLI_PATH_MAX chars): DIR, if
+ * not NULL, must be an existing directory. 0, or 1 after a message naming
+ * @p option. */
+int cli_header_path(const char *cmd, const char *option, const char *dir, const char *name,
+                    char *path);
 /* Before anything is computed or printed: a target that cannot be replaced
  * (too long a path, a directory). 0, or 1 after a message. */
 int cli_replace_check(cli_replace_t *r, const char *cmd, const char *what, const char *path);

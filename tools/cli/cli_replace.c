@@ -14,6 +14,29 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+int cli_header_path(const char *cmd, const char *option, const char *dir, const char *name,
+                    char *path)
+{
+    struct stat st;
+    char q[CLI_QUOTE_SIZE];
+    if (dir == NULL) {
+        (void)sprintf(path, "%s.h", name); /* NAME: a C identifier, < 200 chars */
+        return 0;
+    }
+    if (strlen(dir) + strlen(name) + 4u > CLI_PATH_MAX) {
+        return cli_fail(cmd, "option %s: %s: too long a path", option, cli_quote(q, dir));
+    }
+    if (stat(dir, &st) != 0) {
+        const int err = errno;
+        return cli_fail(cmd, "option %s: %s: %s", option, cli_quote(q, dir), strerror(err));
+    }
+    if (!S_ISDIR(st.st_mode)) {
+        return cli_fail(cmd, "option %s: %s: not a directory", option, cli_quote(q, dir));
+    }
+    (void)sprintf(path, "%s%s%s.h", dir, dir[strlen(dir) - 1u] == '/' ? "" : "/", name);
+    return 0;
+}
+
 int cli_replace_check(cli_replace_t *r, const char *cmd, const char *what, const char *path)
 {
     struct stat st;

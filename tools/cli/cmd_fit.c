@@ -10,7 +10,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 /* Longest --header-dir accepted (the header's path is built in a fixed buffer). */
 #define CLI_HEADER_DIR_MAX 4096u
@@ -277,25 +276,9 @@ static size_t header_text(const fit_opts_t *o, const hyst_ident_result_t *r, cha
 /* Before anything is computed or printed: a NAME.h that cannot be replaced. */
 static int header_check(const fit_opts_t *o, cli_replace_t *h)
 {
-    struct stat st;
-    char q[CLI_QUOTE_SIZE], path[CLI_PATH_MAX];
-    if (o->header_dir != NULL) {
-        if (stat(o->header_dir, &st) != 0) {
-            const int err = errno;
-            return cli_fail("fit", "option --header-dir: %s: %s", cli_quote(q, o->header_dir),
-                            strerror(err));
-        }
-        if (!S_ISDIR(st.st_mode)) {
-            return cli_fail("fit", "option --header-dir: %s: not a directory",
-                            cli_quote(q, o->header_dir));
-        }
-        /* DIR: at most CLI_HEADER_DIR_MAX bytes, NAME: a C identifier, < 200 chars */
-        (void)sprintf(path, "%s%s%s.h", o->header_dir,
-                      o->header_dir[strlen(o->header_dir) - 1u] == '/' ? "" : "/", o->header);
-    } else {
-        (void)sprintf(path, "%s.h", o->header);
-    }
-    return cli_replace_check(h, "fit", "header", path);
+    char path[CLI_PATH_MAX];
+    return cli_header_path("fit", "--header-dir", o->header_dir, o->header, path) != 0 ||
+           cli_replace_check(h, "fit", "header", path) != 0;
 }
 
 /* The model file into its temporary file: 0, or 1 after a message. */

@@ -57,12 +57,8 @@ int cmd_header(int argc, char **argv)
         return cli_fail(a.cmd, "NAME %s is not a C identifier",
                         name != NULL ? cli_quote(q, name) : "(missing)");
     }
-    if (dir != NULL && strlen(dir) + strlen(name) + 4u > sizeof path) {
-        return cli_fail(a.cmd, "option --dir: too long a path");
-    }
-    (void)sprintf(path, "%s%s%s.h", dir != NULL ? dir : "",
-                  dir != NULL && dir[0] != '\0' && dir[strlen(dir) - 1u] != '/' ? "/" : "", name);
-    if (cli_model_read(a.cmd, model, &m) != 0 || cli_replace_check(&h, a.cmd, "header", path) != 0) {
+    if (cli_header_path(a.cmd, "--dir", dir, name, path) != 0 ||
+        cli_model_read(a.cmd, model, &m) != 0 || cli_replace_check(&h, a.cmd, "header", path) != 0) {
         return 1;
     }
     if (cli_append(text, sizeof text, &len,
