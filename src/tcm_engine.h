@@ -225,8 +225,10 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
     S->variant = (unsigned)TCM_VARIANT;
     S->layout = HYST_LAYOUT;
     S->curve = curve;
-    XV(S->lo) = lo;
-    XV(S->hi) = hi;
+    /* -0 made +0: the anchor A0 = lo is a stored TP, and a restore
+     * normalises every stored TP (resume_): one bit pattern either way */
+    XV(S->lo) = TCM_NORM(lo);
+    XV(S->hi) = TCM_NORM(hi);
     YV(S->y_lo) = YV(curve->y_lo);
     YV(S->y_hi) = YV(curve->y_hi);
     YV(S->unit) = unit;

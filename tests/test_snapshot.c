@@ -149,6 +149,22 @@ static void test_round_trip_continues_bit_identically(void)
     TEST_ASSERT_EQUAL_UINT(hyst_events(&A.S), hyst_events(&B.S));
 }
 
+/* A domain that starts at -0.0: the anchor A0 = (lo, f0(lo)) is a stored TP
+ * and must have the bit pattern a restore gives it (+0), or a restored
+ * instance is not the saved one bit for bit (found by fuzz_hyst). */
+static void test_negative_zero_lo_round_trips_bit_identically(void)
+{
+    hyst_poly_t f = paper_eq20;
+    f.lo = -0.0;
+    init_inst(&A, &f, CAP);
+    drive(&A, 3u, 4);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&A.S, snap, sizeof(snap), &snap_len));
+    init_inst(&B, &f, CAP);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, snap, snap_len));
+    TEST_ASSERT_EQUAL_MEMORY(A.xl, B.xl, A.S.n_ltp * sizeof(hyst_real_t));
+    TEST_ASSERT_EQUAL_MEMORY(A.xr, B.xr, A.S.n_rtp * sizeof(hyst_real_t));
+}
+
 static void test_status_and_events_survive(void)
 {
     init_inst(&A, &paper_eq20, CAP);
@@ -431,6 +447,7 @@ int main(void)
     RUN_TEST(test_crc32_matches_the_standard_check_value);
     RUN_TEST(test_layout_is_octets_little_endian_ieee);
     RUN_TEST(test_round_trip_continues_bit_identically);
+    RUN_TEST(test_negative_zero_lo_round_trips_bit_identically);
     RUN_TEST(test_status_and_events_survive);
     RUN_TEST(test_every_bit_flip_is_refused_and_leaves_the_instance_untouched);
     RUN_TEST(test_every_truncation_is_refused);
