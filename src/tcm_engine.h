@@ -64,6 +64,8 @@
 #define TCM_BOOK 2u      /* bookkeeping when the stack changes: a live merge
                           * or an open deadband excursion */
 #define TCM_DEADBAND 4u  /* reversals need the deadband test */
+#define TCM_STALE 8u     /* the last sample's status is not OK: the next one
+                          * resets it (off the plain path, which never sees it) */
 
 /* G at u, any kind: Horner for polynomials, else out of line. */
 HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
@@ -79,35 +81,91 @@ static TCM_NOINLINE TCM_Y TCM_NAME(g)(const hyst_tcm_t *S, TCM_Y d)
     return TCM_NAME(g_unit)(S, d * YV(S->unit));
 }
 
+/* How a sample ends (emit()): on the fast path, or a slow sample whose
+ * input rose or fell (its direction orients the monotone guard: against the
+ * branch's own after a deadband skip), or a repeated input. */
+#define TCM_FAST 1
+#define TCM_ROSE 2
+#define TCM_FELL 3
+#define TCM_REPEAT 4
+
+/* y_ctp +- g on the current branch: + rising, - falling. Adding g or
+ * subtracting it rounds like y_ctp + sign g with sign = +-1. */
+HYST_INLINE TCM_Y TCM_NAME(on_branch)(const hyst_tcm_t *S, TCM_Y g)
+{
+    return S->moving_end == 0u ? YV(S->y_ctp) + g : YV(S->y_ctp) - g;
+}
+
+/* G at the input x of the current branch, any kind. */
+HYST_INLINE TCM_Y TCM_NAME(branch_g)(const hyst_tcm_t *S, TCM_X x)
+{
+    return TCM_NAME(g_unit)(S, (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale));
+}
+
 /* Output on the current branch. One formula for both paths (the fast path
  * sees only polynomials, the same Horner code), so that a loop that closes
  * returns to its starting output bit for bit. */
 HYST_INLINE TCM_Y TCM_NAME(branch_y)(const hyst_tcm_t *S, TCM_X x)
 {
-    return YV(S->y_ctp) +
-           YV(S->sign) * TCM_NAME(g_unit)(S, (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale));
+    return TCM_NAME(on_branch)(S, TCM_NAME(branch_g)(S, x));
 }
 
-static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int fast);
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how);
+static void TCM_NAME(close_window)(hyst_tcm_t *S);
+
+/* Float evaluation of an increasing G is not monotone at the rounding level
+ * (src/hyst_curve.c bounds the error, not its sign), so the output of a
+ * monotone input could step back. Guards, both off the arithmetic:
+ * - fast path: G never below g_prev, its value at the last input of the
+ *   branch (y = y_ctp +- G is then monotone: rounding is monotone);
+ * - slow sample: the output never behind y_prev in the input's direction;
+ *   where it would be, y_prev is kept and the window closed, so the next
+ *   sample is slow too. An open window thus always has
+ *   y_prev == y_ctp +- g_prev, which is all the fast guard needs (and what
+ *   a restore re-derives: resume_()). */
+HYST_INLINE TCM_Y TCM_NAME(slow_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
+{
+    TCM_Y y = TCM_NAME(on_branch)(S, g);
+    YV(S->g_prev) = g;
+    if (how == TCM_ROSE ? y < YV(S->y_prev) : y > YV(S->y_prev)) {
+        y = YV(S->y_prev);
+        TCM_NAME(close_window)(S);
+    }
+    return y;
+}
+
+/* The fast path's end: guarded G, the moving window end, the output. */
+HYST_INLINE TCM_Y TCM_NAME(fast_end)(hyst_tcm_t *S, TCM_X x, TCM_Y g)
+{
+    if (g < YV(S->g_prev)) {
+        g = YV(S->g_prev);
+    }
+    YV(S->g_prev) = g;
+    if (S->moving_end == 0u) {
+        XV(S->window[0]) = x;
+        return YV(S->y_ctp) + g;
+    }
+    XV(S->window[1]) = x;
+    return YV(S->y_ctp) - g;
+}
 
 /* The end of a sample on a polynomial branch: its output, stored as y_prev
  * (and as the moving window end on the fast path). Degrees up to 8 inline;
  * every other value of S->horner (degree 9 and up, or a pending request:
  * HYST_HORNER_REQUEST_) leaves by a tail call, so a request costs the
  * per-sample paths nothing (the jump table's range check was there anyway)
- * and the fast path needs no stack frame. */
-HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int fast)
+ * and the fast path
+ * needs no stack frame. how: TCM_FAST, TCM_ROSE, TCM_FELL. */
+HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
 {
     const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
-    TCM_Y acc, y;
+    TCM_Y acc, g, y;
     switch (S->horner) {
     NUM_HORNER_CASES_(S->coef, u, acc);
-    default: return TCM_NAME(emit_rare)(S, x, fast);
+    default: return TCM_NAME(emit_rare)(S, x, how);
     }
-    y = YV(S->y_ctp) + YV(S->sign) * (acc * u);
-    if (fast) {
-        XV(S->window[S->moving_end]) = x;
-    }
+    g = acc * u;
+    y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
     YV(S->y_prev) = y;
     return y;
 }
@@ -120,7 +178,15 @@ static void TCM_NAME(set_detour)(hyst_tcm_t *S)
     const unsigned merged = S->forgot_level != TCM_NO_LEVEL ? TCM_SLOW_ONLY | TCM_BOOK : 0u;
     S->detour = merged | (S->degree == 0u ? TCM_SLOW_ONLY : 0u) |
                 (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
-                (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u);
+                (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u) |
+                (S->status != HYST_OK ? TCM_STALE : 0u);
+}
+
+/* A sample that leaves the plain path starts with the status OK. */
+HYST_INLINE void TCM_NAME(fresh)(hyst_tcm_t *S)
+{
+    S->status = HYST_OK;
+    S->detour &= ~TCM_STALE;
 }
 
 /* The fast-path cache of a rising branch from LTP `top` (n_ltp - 1), nr
@@ -130,7 +196,6 @@ HYST_INLINE void TCM_NAME(settle_rising)(hyst_tcm_t *S, TCM_X x, size_t top, siz
 {
     YV(S->x_ctp) = TCM_R(XV(S->xltp)[top]);
     YV(S->y_ctp) = YV(S->yltp)[top];
-    YV(S->sign) = 1;
     YV(S->u_scale) = YV(S->unit);
     XV(S->window[0]) = x;
     XV(S->window[1]) = nr > 0u ? (XV(S->xrtp) + nr)[-1] : XV(S->hi);
@@ -142,7 +207,6 @@ HYST_INLINE void TCM_NAME(settle_falling)(hyst_tcm_t *S, TCM_X x, size_t nl, siz
 {
     YV(S->x_ctp) = TCM_R(XV(S->xrtp)[top]);
     YV(S->y_ctp) = YV(S->yrtp)[top];
-    YV(S->sign) = -1;
     YV(S->u_scale) = -YV(S->unit);
     XV(S->window[0]) = (XV(S->xltp) + nl)[-1];
     XV(S->window[1]) = x;
@@ -151,11 +215,21 @@ HYST_INLINE void TCM_NAME(settle_falling)(hyst_tcm_t *S, TCM_X x, size_t nl, siz
 
 /* Empties the fast-path window (its far end onto the last input), so the
  * next sample takes the slow path. Used when every sample must be slow, and
- * after a sample whose status is not HYST_OK: the fast path does not store
- * the status, the slow path resets it. */
+ * after a guarded sample (emit()). */
 static void TCM_NAME(close_window)(hyst_tcm_t *S)
 {
     XV(S->window[1u - S->moving_end]) = XV(S->window[S->moving_end]);
+}
+
+/* Ends a sample whose status is not OK: neither path stores an OK status
+ * (the fast path stores none), so the next sample must be slow and leave
+ * the plain path (TCM_STALE), where fresh() resets it. */
+static void TCM_NAME(ended_not_ok)(hyst_tcm_t *S)
+{
+    if (S->status != HYST_OK) {
+        TCM_NAME(close_window)(S);
+        S->detour |= TCM_STALE;
+    }
 }
 
 /* Derives the fast-path cache from the arrays and the last input, then
@@ -188,6 +262,7 @@ void TCM_NAME(reset_)(hyst_tcm_t *S)
     TCM_NAME(set_detour)(S);
     TCM_NAME(settle)(S, XV(S->lo));
     YV(S->y_prev) = YV(S->y_lo);
+    YV(S->g_prev) = 0; /* G(0) */
 }
 
 void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
@@ -206,11 +281,14 @@ void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
     S->forgot_level = book->forgot_level;
     XV(S->db_reach) = (TCM_X)book->db_reach;
     YV(S->db_err) = (TCM_Y)book->db_err;
+    S->status = status;
     TCM_NAME(set_detour)(S);
     TCM_NAME(settle)(S, TCM_NORM((TCM_X)x));
     YV(S->y_prev) = (TCM_Y)y;
-    S->status = status;
-    if (status != HYST_OK) { /* as after the sample that left it */
+    YV(S->g_prev) = TCM_NAME(branch_g)(S, XV(S->window[S->moving_end]));
+    /* as after the sample that left it; and where y is not the branch's
+     * value at x (a guarded sample), the next one checks it again */
+    if (status != HYST_OK || TCM_NAME(on_branch)(S, YV(S->g_prev)) != YV(S->y_prev)) {
         TCM_NAME(close_window)(S);
     }
 }
@@ -523,7 +601,7 @@ static TCM_NOINLINE void TCM_NAME(serve)(hyst_tcm_t *S)
  * the full model's and can leave that range (x^3's compensator: a drive of
  * 1.07 > hi). The full model's output always lies in the range, so clamping
  * never moves y away from it: |y - y_full| <= error_bound still holds. */
-static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x)
+static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x, int how)
 {
     TCM_Y y = TCM_NAME(branch_y)(S, x);
     if (S->forgot_level != TCM_NO_LEVEL) {
@@ -533,27 +611,30 @@ static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x)
             y = YV(S->y_lo);
         }
     }
+    /* monotone as emit()'s slow guard; the window stays closed */
+    if (how == TCM_ROSE ? y < YV(S->y_prev) : y > YV(S->y_prev)) {
+        y = YV(S->y_prev);
+    }
     return y;
 }
 
-/* Ends a slow sample: caches the branch now current and evaluates it. A
- * status other than OK closes the fast path for the next sample. */
-static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x)
+/* Ends a slow sample whose input rose or fell (how: TCM_ROSE, TCM_FELL):
+ * caches the branch now current and evaluates it. A status other than OK
+ * closes the fast path for the next sample. */
+static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x, int how)
 {
     TCM_Y y;
     TCM_NAME(settle)(S, x);
     if ((S->detour & TCM_SLOW_ONLY) == 0u) {
-        y = TCM_NAME(emit)(S, x, 0); /* serves a pending request */
+        y = TCM_NAME(emit)(S, x, how); /* serves a pending request */
     } else {
-        y = TCM_NAME(slow_only)(S, x);
+        y = TCM_NAME(slow_only)(S, x, how);
         YV(S->y_prev) = y;
         if (S->horner != S->degree) { /* emit() serves the other curves' requests */
             TCM_NAME(serve)(S);
         }
     }
-    if (S->status != HYST_OK) {
-        TCM_NAME(close_window)(S);
-    }
+    TCM_NAME(ended_not_ok)(S);
     return y;
 }
 
@@ -562,17 +643,17 @@ static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x)
  * search. */
 static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
 {
+    const TCM_X x_prev = XV(S->window[S->moving_end]);
     TCM_X x;
-    if (!TCM_ADMIT(S, x_in, &x) || x == XV(S->window[S->moving_end])) {
-        if (S->status != HYST_OK) {
-            TCM_NAME(close_window)(S);
-        }
+    TCM_NAME(fresh)(S);
+    if (!TCM_ADMIT(S, x_in, &x) || x == x_prev) {
+        TCM_NAME(ended_not_ok)(S);
         return YV(S->y_prev);
     }
     S->n_ltp = 1u;
     S->n_rtp = 0u;
     TCM_NAME(wiped)(S, 0u);
-    return TCM_NAME(finish)(S, x);
+    return TCM_NAME(finish)(S, x, x > x_prev ? TCM_ROSE : TCM_FELL);
 }
 
 /* Reversal on a falling branch without a wipe-out, with a detour (a flag
@@ -581,6 +662,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
 static TCM_NOINLINE TCM_Y TCM_NAME(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
 {
     size_t nl = S->n_ltp, nr = S->n_rtp;
+    TCM_NAME(fresh)(S);
     if ((TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev) < XV(S->deadband)) {
         TCM_NAME(skip)(S, (TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev)); /* keep falling */
     } else {
@@ -598,7 +680,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_p
         S->n_rtp = nr;
         TCM_NAME(window_closed)(S);
     }
-    return TCM_NAME(finish)(S, x);
+    return TCM_NAME(finish)(S, x, TCM_ROSE);
 }
 
 /* Reversal on a rising branch without a wipe-out, with a detour:
@@ -607,6 +689,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_p
 static TCM_NOINLINE TCM_Y TCM_NAME(reverse_down)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
 {
     const size_t nl = S->n_ltp, nr = S->n_rtp;
+    TCM_NAME(fresh)(S);
     if ((TCM_X)(x_prev - XV(S->xltp)[nl - 1u]) < XV(S->deadband)) {
         TCM_NAME(skip)(S, (TCM_X)(x_prev - XV(S->xltp)[nl - 1u])); /* keep rising */
     } else {
@@ -615,15 +698,23 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_down)(hyst_tcm_t *S, TCM_X x, TCM_X x
         S->n_rtp = nr + 1u;
         TCM_NAME(window_closed)(S);
     }
-    return TCM_NAME(finish)(S, x);
+    return TCM_NAME(finish)(S, x, TCM_FELL);
 }
 
 /* A wipe-out down to stack depth `depth` with a detour: bookkeeping, then
  * the output. */
-static TCM_NOINLINE TCM_Y TCM_NAME(wiped_detour)(hyst_tcm_t *S, TCM_X x, size_t depth)
+static TCM_NOINLINE TCM_Y TCM_NAME(wiped_detour)(hyst_tcm_t *S, TCM_X x, size_t depth, int how)
 {
+    TCM_NAME(fresh)(S);
     TCM_NAME(wiped)(S, depth);
-    return TCM_NAME(finish)(S, x);
+    return TCM_NAME(finish)(S, x, how);
+}
+
+/* A slow sample that stays on its branch (the window was closed). */
+static TCM_NOINLINE TCM_Y TCM_NAME(carry_on)(hyst_tcm_t *S, TCM_X x, int how)
+{
+    TCM_NAME(fresh)(S);
+    return TCM_NAME(finish)(S, x, how);
 }
 
 /* Everything but the fast path, for an input strictly inside (lo, hi):
@@ -639,7 +730,6 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
     size_t nl, nr;
 
     ++S->seq; /* every change but a fast-path sample's (snapshot.c) */
-    S->status = HYST_OK;
     x_prev = XV(S->window[S->moving_end]);
     nl = S->n_ltp;
     nr = S->n_rtp;
@@ -655,8 +745,8 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             nr = TCM_RTP_ABOVE(XV(S->xrtp), nr - 1u, x);
             S->n_ltp = nr + 1u;
             S->n_rtp = nr;
-            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK)) != 0u) {
-                return TCM_NAME(wiped_detour)(S, x, 2u * nr + 1u);
+            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE)) != 0u) {
+                return TCM_NAME(wiped_detour)(S, x, 2u * nr + 1u, TCM_ROSE);
             }
             nl = nr; /* the current LTP's index */
         } else if (nl == nr && S->detour == 0u && nl < S->capacity) {
@@ -665,9 +755,11 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             YV(S->yltp)[nl] = YV(S->y_prev);
             S->n_ltp = nl + 1u;
         } else {
-            return nl == nr ? TCM_NAME(reverse_up)(S, x, x_prev) : TCM_NAME(finish)(S, x);
+            return nl == nr ? TCM_NAME(reverse_up)(S, x, x_prev) : TCM_NAME(carry_on)(S, x, TCM_ROSE);
         }
         TCM_NAME(settle_rising)(S, x, nl, nr);
+        /* one emit per direction: its guard's direction is then a constant */
+        return TCM_NAME(emit)(S, x, TCM_ROSE);
     } else if (x_in < x_prev) {
         if (!(x_in > XV(S->lo))) {
             return TCM_NAME(step_edge)(S, x_in);
@@ -679,8 +771,8 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             nl = TCM_LTP_BELOW(XV(S->xltp), nl - 1u, x);
             S->n_ltp = nl;
             S->n_rtp = nl;
-            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK)) != 0u) {
-                return TCM_NAME(wiped_detour)(S, x, 2u * nl);
+            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE)) != 0u) {
+                return TCM_NAME(wiped_detour)(S, x, 2u * nl, TCM_FELL);
             }
             nr = nl - 1u; /* the current RTP's index (nl >= 1: A0) */
         } else if (nl > nr && S->detour == 0u) {
@@ -690,31 +782,33 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             YV(S->yrtp)[nr] = YV(S->y_prev);
             S->n_rtp = nr + 1u;
         } else {
-            return nl > nr ? TCM_NAME(reverse_down)(S, x, x_prev) : TCM_NAME(finish)(S, x);
+            return nl > nr ? TCM_NAME(reverse_down)(S, x, x_prev) : TCM_NAME(carry_on)(S, x, TCM_FELL);
         }
         TCM_NAME(settle_falling)(S, x, nl, nr);
+        return TCM_NAME(emit)(S, x, TCM_FELL);
     }
     /* Always true for integer codes; false for a NaN real input: */
     /* cppcheck-suppress knownConditionTrueFalse */
     else if (x_in == x_prev) { /* repeated samples create no TP */
+        TCM_NAME(fresh)(S);
         if (S->horner != S->degree) {
-            return TCM_NAME(emit_rare)(S, x_prev, 2);
+            return TCM_NAME(emit_rare)(S, x_prev, TCM_REPEAT);
         }
         return YV(S->y_prev); /* a closed window stays closed: the next move reopens it */
-    } else {
-        return TCM_NAME(step_edge)(S, x_in); /* NaN */
     }
-    return TCM_NAME(emit)(S, x, 0);
+    return TCM_NAME(step_edge)(S, x_in); /* NaN */
 }
 
 /* emit() for the other values of S->horner: the output by Horner's loop
- * (fast: 1 on the fast path, 0 on a slow one, 2 for a repeated sample,
- * whose output stays), then the pending requests. */
-static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int fast)
+ * (how: as emit(), or TCM_REPEAT for a repeated sample, whose output
+ * stays), then the pending requests. */
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
 {
-    const TCM_Y y = fast == 2 ? YV(S->y_prev) : TCM_NAME(branch_y)(S, x);
-    if (fast == 1) {
-        XV(S->window[S->moving_end]) = x;
+    TCM_Y y = YV(S->y_prev);
+    if (how == TCM_FAST) {
+        y = TCM_NAME(fast_end)(S, x, TCM_NAME(branch_g)(S, x));
+    } else if (how != TCM_REPEAT) {
+        y = TCM_NAME(slow_guard)(S, TCM_NAME(branch_g)(S, x), how);
     }
     YV(S->y_prev) = y;
     if (S->horner != S->degree) {
@@ -740,7 +834,14 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
     if (!(x > XV(S->window[0]) && x < XV(S->window[1]))) {
         return TCM_NAME(step_slow)(S, x);
     }
-    return TCM_NAME(emit)(S, (TCM_X)x, 1); /* the window is empty for other curve kinds */
+    return TCM_NAME(emit)(S, (TCM_X)x, TCM_FAST); /* the window is empty for other curve kinds */
+}
+
+/* G at u guarded as fast_end() does: never below the last sample's. */
+HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u, TCM_Y g_prev)
+{
+    const TCM_Y g = NUM_NAME(horner)(S->coef, deg, u);
+    return g < g_prev ? g_prev : g;
 }
 
 /* The block call's inner loop: the samples from i on that stay inside the
@@ -751,10 +852,11 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
 static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, size_t n)
 {
     const size_t first = i;
-    const TCM_Y x_ctp = YV(S->x_ctp), y_ctp = YV(S->y_ctp), sign = YV(S->sign);
+    const TCM_Y x_ctp = YV(S->x_ctp), y_ctp = YV(S->y_ctp);
     const TCM_Y u_scale = YV(S->u_scale);
     const unsigned deg = S->horner;
     TCM_X w0 = XV(S->window[0]), w1 = XV(S->window[1]);
+    TCM_Y g_prev = YV(S->g_prev);
     if (deg != S->degree) { /* a pending request: step_slow() serves it */
         return i;
     }
@@ -767,7 +869,8 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
             if (!(xi > w0 && xi < w1)) {
                 break;
             }
-            y[i] = y_ctp + sign * NUM_NAME(horner)(S->coef, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            g_prev = TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale, g_prev);
+            y[i] = y_ctp + g_prev;
             w0 = xi;
         }
     } else {
@@ -776,13 +879,15 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
             if (!(xi > w0 && xi < w1)) {
                 break;
             }
-            y[i] = y_ctp + sign * NUM_NAME(horner)(S->coef, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            g_prev = TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale, g_prev);
+            y[i] = y_ctp - g_prev;
             w1 = xi;
         }
     }
     if (i > first) {
         XV(S->window[0]) = w0;
         XV(S->window[1]) = w1;
+        YV(S->g_prev) = g_prev;
         YV(S->y_prev) = y[i - 1u];
     }
     return i;
