@@ -44,6 +44,11 @@
  * @endcode
  * Host, data in arrays: hyst_ident_fit() does it all, with skip, sensor
  * delay and the domain taken from the data.
+ *
+ * Also here, to compare with the TCM on the same record: the weights of a
+ * Prandtl-Ishlinskii model (include/hyst/pi.h) by non-negative least
+ * squares, hyst_pi_fit_*() below, in a caller workspace of
+ * HYST_PI_FIT_WORK(N) entries.
  */
 #ifndef HYST_IDENT_H
 #define HYST_IDENT_H
