@@ -65,7 +65,7 @@ seeds = {
 
 # ---- fuzz_models.c: [module % 4][flags] then the module's bytes ----
 PI, PWL, INV, IDENT = 0, 1, 2, 3
-RAW, CORRUPT, NULLS, KNOWN = 2, 4, 8, 16
+RAW, CORRUPT, NULLS, KNOWN, PIFIT = 2, 4, 8, 16, 32
 
 def pi(flags, steps, weights, hi, ops=b"", r0=None):
     """steps: r_i - r_(i-1) in 1/16 (i >= 1); weights: w_1 in (1..64)/32 as a
@@ -117,6 +117,7 @@ def add(u, yb=0x10, check=False):  # one sample at position u of the domain
 
 SOLVE, RESID, POLY, REINIT = 0xC0, 0xC1, 0xC2, 0xC3
 ramp = [i / 6 for i in range(7)]
+loops = [0, 1, 0.25, 0.75, 0.4, 0.6, 0.1, 0.9, 0] + [i / 8 for i in range(9)]  # nested minor loops
 wave = ramp + ramp[::-1][1:] + ramp[1:]
 table1 = [3, 15, 12, 13, 13, 13, 13, 13, 13, 13]  # paper Table 1 weights, about
 cubic_c = [-1 / 64, 8 / 64, 32 / 64, 36 / 64]
@@ -153,6 +154,15 @@ models = {
     "ident_known_joint": poly(IDENT, KNOWN, 3, 0.0, 3.9, cubic_c, 2, bytes([5])),
     "ident_known_reflect": poly(IDENT, KNOWN | CORRUPT | NULLS, 5, -1.0, 2.5, [0.1, 0.0, -0.3, 0.2, 0.5, 0.1], 3, bytes([0])),
     "ident_known_deg9": poly(IDENT, KNOWN, 9, 0.5, 1.0, [0.1] * 10, 40, bytes([31])),
+    # PI weights by NNLS (flag PIFIT): n, threshold mode (bit0 given), span, samples, SOLVE
+    "pifit_uniform_loops": bytes([IDENT, PIFIT, 4, 0, 31]) + b"".join(add(u) for u in loops) + bytes([SOLVE, 1, 2]),
+    "pifit_given_nulls": bytes([IDENT, PIFIT | NULLS, 3, 1, 31, 0, 8, 8]) + b"".join(add(u) for u in loops)
+        + bytes([SOLVE, REINIT]) + add(0.5) + bytes([0x00, 5]) + bytes([SOLVE, 0, 0]),
+    "pifit_bad_r1": bytes([IDENT, PIFIT, 2, 1, 31, 0x84, 8]),
+    "pifit_short_work": bytes([IDENT, PIFIT | CORRUPT, 2, 0, 31]) + add(0.5),
+    "pifit_n0": bytes([IDENT, PIFIT, 0, 0, 31]),
+    "pifit_n65": bytes([IDENT, PIFIT, 65, 0, 31]),
+    "pifit_few_samples": bytes([IDENT, PIFIT, 5, 0, 31]) + add(0.1) + add(0.9) + bytes([SOLVE]),
 }
 
 # ---- fuzz_code.c: [flags][cap % 20] config, code range, [deadband], ops ----
