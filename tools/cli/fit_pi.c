@@ -117,11 +117,19 @@ void fit_pi_compare(const cli_table_t *t, size_t ops, size_t skip, size_t delay,
     pi = fit_pi_holdout(&cfg, t->col[0], t->col[1], t->n, &st, &res, r, w);
     (void)cli_append(line, size, &len,
                      "# compare on the last third (both fitted on the first two thirds, delay "
-                     "%lu): hold-out rms TCM degree %u (%u parameters) %.6g, ",
-                     (unsigned long)delay, degree, degree + 1u, tcm_holdout);
-    if (isfinite(pi)) {
+                     "%lu): hold-out rms TCM degree %u (%u parameters) ",
+                     (unsigned long)delay, degree, degree + 1u);
+    if (isfinite(tcm_holdout)) {
+        (void)cli_append(line, size, &len, "%.6g, ", tcm_holdout);
+    } else {
+        (void)cli_append(line, size, &len, "not scored, ");
+    }
+    if (isfinite(pi) && isfinite(tcm_holdout)) {
         (void)cli_append(line, size, &len, "PI %lu operators (%lu parameters) %.6g; PI/TCM %.3g\n",
                          (unsigned long)ops, (unsigned long)ops + 1ul, pi, pi / tcm_holdout);
+    } else if (isfinite(pi)) {
+        (void)cli_append(line, size, &len, "PI %lu operators (%lu parameters) %.6g\n",
+                         (unsigned long)ops, (unsigned long)ops + 1ul, pi);
     } else {
         (void)cli_append(line, size, &len, "PI %lu operators not scored (%s)\n",
                          (unsigned long)ops, st != HYST_OK ? hyst_status_str(st) : "w1 = 0");
