@@ -8,8 +8,10 @@
  *   [0]  module (byte % 4): 0 PI, 1 PWL curve, 2 polynomial inverse, 3 ident
  *   [1]  flags: bit1 raw parameters (arbitrary doubles) else structured
  *        grids; bit2 a module-specific corruption (ident: REFLECT, or the
- *        domain from the data); bit3 NULL-pointer probes (ident known f0:
- *        explicit domain); bit4 (ident) a known f0 through the TCM
+ *        domain from the data; PI fit: a workspace one entry short); bit3
+ *        NULL-pointer probes (ident known f0: explicit domain); bit4 (ident)
+ *        a known f0 through the TCM; bit5 (ident) the PI weights by NNLS
+ *        instead (fuzz_pi_fit())
  *   then the module's parameters, then opcodes until the input ends (see
  *   each fuzz_* function). 0xF0..0xFF are control opcodes in the PI, PWL
  *   and inverse modules; any other byte is one sample of kind op & 7
@@ -993,6 +995,8 @@ static void ident_known(reader_t *rd, unsigned flags)
  * (op & 3: solve, residuals, ident_poly, re-init). Every return code is
  * predicted from ident.h; init errors write nothing. Then hyst_ident_domain
  * and hyst_ident_fit on the recorded samples. */
+static void fuzz_pi_fit(reader_t *rd, unsigned flags);
+
 static void fuzz_ident(reader_t *rd, unsigned flags)
 {
     hyst_ident_config_t cfg;
@@ -1004,6 +1008,10 @@ static void fuzz_ident(reader_t *rd, unsigned flags)
     int phase = 0, have_res = 0, ok;
     unsigned ops;
 
+    if (flags & 32u) {
+        fuzz_pi_fit(rd, flags);
+        return;
+    }
     if (flags & 16u) {
         ident_known(rd, flags);
         return;
@@ -1151,6 +1159,229 @@ static void fuzz_ident(reader_t *rd, unsigned flags)
         }
         CHECK(st == s2);
         if (st == HYST_OK) CHECK(memcmp(res.coeffs, r2.coeffs, sizeof(res.coeffs)) == 0);
+    }
+}
+
+/* ------------------------------------------- PI weights by NNLS (ident.h) --- */
+
+static hyst_wide_t fit_work[HYST_PI_FIT_WORK(HYST_PI_FIT_MAX_OPERATORS)];
+static hyst_wide_t fit_work2[HYST_PI_FIT_WORK(HYST_PI_FIT_MAX_OPERATORS)];
+static hyst_wide_t fit_r[HYST_PI_FIT_MAX_OPERATORS + 6u], fit_w[HYST_PI_FIT_MAX_OPERATORS + 6u];
+static hyst_wide_t fit_r2[HYST_PI_FIT_MAX_OPERATORS + 6u], fit_w2[HYST_PI_FIT_MAX_OPERATORS + 6u];
+static double fit_z[HYST_PI_FIT_MAX_OPERATORS], fit_g[HYST_PI_FIT_MAX_OPERATORS];
+
+static hyst_status_t pi_fit_init_expected(const hyst_wide_t *r, size_t n, size_t len)
+{
+    size_t i;
+    if (n < 1u || n > HYST_PI_FIT_MAX_OPERATORS) return HYST_ERR_ARG;
+    if (len < HYST_PI_FIT_WORK(n)) return HYST_ERR_NOSPACE;
+    if (r[0] != 0.0) return HYST_ERR_BREAKPOINTS;
+    for (i = 1; i < n; ++i) {
+        if (!isfinite(r[i]) || !(r[i] > r[i - 1u])) return HYST_ERR_BREAKPOINTS;
+    }
+    return HYST_OK;
+}
+
+/* KKT of the solved fit against the samples recx/recy[0..m) (all of them
+ * added since init, in order), with the operators written out here: the
+ * objective's gradient -Z'e is ~0 on positive weights and >= ~0 on zero
+ * ones, e = y - offset - Z w. The bound: rounding of the normal equations,
+ * relative to |Z| |e| + |Z|^2 sum w (Cauchy-Schwarz on each entry), and
+ * the Cholesky's rejection of near-dependent columns (1e4 eps of a pivot). */
+static void pi_fit_kkt(size_t n, const hyst_pi_fit_result_t *res, size_t m)
+{
+    double z2 = 0.0, e2 = 0.0, wsum = 0.0, tol;
+    size_t i, k;
+    for (k = 0; k < m; ++k) { /* raw doubles among the samples: the bound means nothing */
+        if ((isfinite(recx[k]) && fabs(recx[k]) > 1e6) || (isfinite(recy[k]) && fabs(recy[k]) > 1e6)) {
+            return;
+        }
+    }
+    for (i = 0; i < n; ++i) {
+        fit_z[i] = 0.0;
+        fit_g[i] = 0.0;
+        wsum += fit_w[i];
+    }
+    for (k = 0; k < m; ++k) {
+        double e = recy[k] - res->offset;
+        if (!isfinite(recx[k])) continue;
+        for (i = 0; i < n; ++i) {
+            const double low = fmin(recx[k], fit_z[i]);
+            fit_z[i] = fmax(recx[k] - fit_r[i], low);
+        }
+        if (!isfinite(recy[k])) continue;
+        for (i = 0; i < n; ++i) e -= fit_w[i] * fit_z[i];
+        for (i = 0; i < n; ++i) {
+            fit_g[i] -= fit_z[i] * e;
+            z2 += fit_z[i] * fit_z[i];
+        }
+        e2 += e * e;
+    }
+    tol = 1e-8 * (sqrt(z2 * e2) + z2 * wsum) + 1e-300;
+    for (i = 0; i < n; ++i) {
+        if (fit_w[i] > 0.0) {
+            CLOSE("pi fit KKT positive", fabs(fit_g[i]), tol);
+        } else {
+            CLOSE("pi fit KKT zero", fmax(-fit_g[i], 0.0), tol);
+        }
+    }
+}
+
+/* Layout after the flags: n (byte % 70: 0 and above 64 are refused),
+ * thresholds (byte bit0: given as increments on a 1/16 grid, a first byte
+ * with bit7 set making r1 != 0; raw: doubles; else uniform over [0, span]),
+ * the span (grid), then opcodes: op >> 6 < 3 one sample (x in [0, span] by
+ * next_pos(), y from one byte as in fuzz_ident()), else op & 3: 0 solve,
+ * 1 re-init, 2-3 nothing. At the end hyst_pi_fit_record() on the samples
+ * kept, against the streaming calls made by hand. */
+static void fuzz_pi_fit(reader_t *rd, unsigned flags)
+{
+    const size_t n = rd_u8(rd) % 70u;
+    const unsigned mode = rd_u8(rd);
+    const int raw = (flags & 2u) != 0;
+    const size_t len = HYST_PI_FIT_WORK(HYST_PI_FIT_MAX_OPERATORS) - ((flags & 4u) ? 1u : 0u);
+    const size_t need = n <= HYST_PI_FIT_MAX_OPERATORS ? HYST_PI_FIT_WORK(n) : 0u;
+    double span = raw ? rd_f64(rd) : (double)(rd_u8(rd) % 64u + 1u) / 16.0;
+    hyst_pi_fit_t fit, fit2;
+    hyst_pi_fit_result_t res, res2;
+    hyst_status_t st, exp;
+    size_t used = 0, m = 0, i, ops;
+    double xmin = INFINITY, xmax = -INFINITY;
+    int phase = 0, ok;
+    const size_t work_len = (flags & 4u) && need > 0u ? need - 1u : len;
+
+    for (i = 0; i < HYST_PI_FIT_MAX_OPERATORS + 6u; ++i) fit_r[i] = 0.0;
+    if (mode & 1u) { /* given thresholds */
+        const size_t cnt = n < HYST_PI_FIT_MAX_OPERATORS + 6u ? n : HYST_PI_FIT_MAX_OPERATORS + 6u;
+        for (i = 0; i < cnt; ++i) {
+            const unsigned b = rd_u8(rd);
+            if (raw) {
+                fit_r[i] = rd_f64(rd);
+            } else if (i == 0) {
+                fit_r[0] = (b & 0x80u) ? (double)(b & 0x7Fu) / 16.0 : 0.0;
+            } else {
+                fit_r[i] = fit_r[i - 1u] + (double)(b % 32u) / 16.0;
+            }
+        }
+    } else {
+        st = hyst_pi_fit_thresholds(0.0, span, n, fit_r);
+        if (n < 1u || n > HYST_PI_FIT_MAX_OPERATORS) {
+            CHECK(st == HYST_ERR_ARG);
+        } else if (!isfinite(span) || !(span > 0.0)) {
+            CHECK(st == HYST_ERR_DOMAIN);
+        } else {
+            CHECK(st == HYST_OK);
+            for (i = 0; i < n; ++i) CHECK(fit_r[i] == span * (double)i / (double)n);
+        }
+    }
+    if (!isfinite(span) || !(span > 0.0)) span = 1.0; /* the samples' range */
+    if (flags & 8u) {
+        CHECK(hyst_pi_fit_init(NULL, fit_r, 1u, fit_work, len) == HYST_ERR_NULL);
+        CHECK(hyst_pi_fit_init(&fit, NULL, 1u, fit_work, len) == HYST_ERR_NULL);
+        CHECK(hyst_pi_fit_init(&fit, fit_r, 1u, NULL, len) == HYST_ERR_NULL);
+        CHECK(hyst_pi_fit_add(NULL, 0.0, 0.0) == HYST_ERR_NULL);
+        CHECK(hyst_pi_fit_solve(NULL, fit_w, &res) == HYST_ERR_NULL);
+        CHECK(hyst_pi_fit_thresholds(0.0, 1.0, 1u, NULL) == HYST_ERR_NULL);
+        CHECK(hyst_pi_fit_record(NULL, recx, recy, 1u, fit_work, len, fit_r, fit_w, &res) ==
+              HYST_ERR_NULL);
+    }
+    exp = pi_fit_init_expected(fit_r, n, work_len);
+    st = hyst_pi_fit_init(&fit, fit_r, n, fit_work, work_len);
+    CHECK(st == exp);
+    ok = st == HYST_OK;
+    if (ok && (flags & 8u)) CHECK(hyst_pi_fit_solve(&fit, NULL, &res) == HYST_ERR_NULL);
+
+    for (ops = 0; ops < MAX_OPS && rd->at < rd->n && ok; ++ops) {
+        const unsigned op = rd_u8(rd);
+        if ((op >> 6) < 3u) {
+            const unsigned yb = rd_u8(rd);
+            const double x = next_pos(rd, op, 0.0, span);
+            const double y = yb == 0u ? NAN : yb == 1u ? INFINITY : yb == 2u ? rd_f64(rd)
+                                                                           : (double)(signed char)yb / 8.0 + x;
+            st = hyst_pi_fit_add(&fit, x, y);
+            exp = phase != 0 ? HYST_ERR_ARG : (isfinite(x) && isfinite(y) ? HYST_OK : HYST_ERR_NONFINITE);
+            CHECK(st == exp);
+            if (phase == 0) {
+                if (isfinite(x)) {
+                    xmin = fmin(xmin, x);
+                    xmax = fmax(xmax, x);
+                }
+                used += st == HYST_OK;
+                if (m < MAX_REC) {
+                    recx[m] = x;
+                    recy[m] = y;
+                }
+                ++m;
+            }
+            continue;
+        }
+        if ((op & 3u) == 0u) {
+            st = hyst_pi_fit_solve(&fit, fit_w, &res);
+            if (phase != 0) {
+                CHECK(st == HYST_ERR_ARG);
+            } else if (used < n + 1u) {
+                CHECK(st == HYST_ERR_SINGULAR);
+            } else if (!(xmax > xmin)) {
+                CHECK(st == HYST_ERR_DOMAIN);
+            } else {
+                /* DOMAIN also when the input moved only in samples not used */
+                CHECK(st == HYST_OK || st == HYST_ERR_DOMAIN);
+            }
+            if (st == HYST_OK) {
+                size_t pos = 0;
+                phase = 1;
+                CHECK(res.used == used && res.operators == n && res.max_abs < 0.0);
+                for (i = 0; i < n; ++i) {
+                    CHECK(!(fit_w[i] < 0.0));
+                    pos += fit_w[i] > 0.0;
+                }
+                CHECK(res.positive == pos && res.invertible == (fit_w[0] > 0.0));
+                if (!raw && m <= MAX_REC) pi_fit_kkt(n, &res, m);
+            }
+        } else if ((op & 3u) == 1u) {
+            CHECK(hyst_pi_fit_init(&fit, fit_r, n, fit_work, work_len) == HYST_OK);
+            phase = 0;
+            used = 0;
+            m = 0;
+            xmin = INFINITY;
+            xmax = -INFINITY;
+        }
+    }
+    if (!ok || m > MAX_REC) return;
+    /* hyst_pi_fit_record (thresholds given: those above) against the streaming calls by hand */
+    {
+        hyst_pi_fit_config_t cfg;
+        size_t count;
+        int finite = 1;
+        memset(&cfg, 0, sizeof(cfg));
+        cfg.operators = n;
+        cfg.thresholds = fit_r;
+        cfg.skip = rd_u8(rd) % 4u;
+        cfg.delay = rd_u8(rd) % 4u;
+        st = hyst_pi_fit_record(&cfg, recx, recy, m, fit_work, work_len, fit_r2, fit_w2, &res);
+        if (cfg.skip >= m || cfg.delay >= m - cfg.skip) {
+            CHECK(st == HYST_ERR_ARG);
+            return;
+        }
+        count = m - cfg.skip - cfg.delay;
+        for (i = 0; i < count; ++i) {
+            finite &= isfinite(recx[cfg.skip + i]) && isfinite(recy[cfg.skip + cfg.delay + i]);
+        }
+        if (!finite) {
+            CHECK(st == HYST_ERR_NONFINITE);
+            return;
+        }
+        CHECK(hyst_pi_fit_init(&fit2, fit_r, n, fit_work2, work_len) == HYST_OK);
+        for (i = 0; i < count; ++i) {
+            CHECK(hyst_pi_fit_add(&fit2, recx[cfg.skip + i], recy[cfg.skip + cfg.delay + i]) == HYST_OK);
+        }
+        CHECK(st == hyst_pi_fit_solve(&fit2, fit_w, &res2));
+        if (st == HYST_OK) {
+            CHECK(memcmp(fit_w, fit_w2, n * sizeof(fit_w[0])) == 0);
+            CHECK(memcmp(fit_r, fit_r2, n * sizeof(fit_r[0])) == 0);
+            CHECK(memcmp(&res.offset, &res2.offset, sizeof(res.offset)) == 0);
+            CHECK(res.used == count && !(res.max_abs < 0.0));
+        }
     }
 }
 

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """Writes the seed corpora (small, committed): fuzz/corpus/ for fuzz_hyst.c,
-fuzz/corpus_models/ for fuzz_models.c and fuzz/corpus_code/ for fuzz_code.c (layouts in their header comments).
+fuzz/corpus_models/ for fuzz_models.c, fuzz/corpus_code/ for fuzz_code.c (layouts in their header comments)
+and fuzz/corpus_model_file/ for fuzz_model_file.c (model files: tests/cli/models/*.hyst, a valid one
+in several spellings, and malformed variants of it).
 regress_* files are fuzzer finds, kept by hand, never written here."""
 import os, struct, math
 
@@ -63,7 +65,7 @@ seeds = {
 
 # ---- fuzz_models.c: [module % 4][flags] then the module's bytes ----
 PI, PWL, INV, IDENT = 0, 1, 2, 3
-RAW, CORRUPT, NULLS, KNOWN = 2, 4, 8, 16
+RAW, CORRUPT, NULLS, KNOWN, PIFIT = 2, 4, 8, 16, 32
 
 def pi(flags, steps, weights, hi, ops=b"", r0=None):
     """steps: r_i - r_(i-1) in 1/16 (i >= 1); weights: w_1 in (1..64)/32 as a
@@ -115,6 +117,7 @@ def add(u, yb=0x10, check=False):  # one sample at position u of the domain
 
 SOLVE, RESID, POLY, REINIT = 0xC0, 0xC1, 0xC2, 0xC3
 ramp = [i / 6 for i in range(7)]
+loops = [0, 1, 0.25, 0.75, 0.4, 0.6, 0.1, 0.9, 0] + [i / 8 for i in range(9)]  # nested minor loops
 wave = ramp + ramp[::-1][1:] + ramp[1:]
 table1 = [3, 15, 12, 13, 13, 13, 13, 13, 13, 13]  # paper Table 1 weights, about
 cubic_c = [-1 / 64, 8 / 64, 32 / 64, 36 / 64]
@@ -151,6 +154,15 @@ models = {
     "ident_known_joint": poly(IDENT, KNOWN, 3, 0.0, 3.9, cubic_c, 2, bytes([5])),
     "ident_known_reflect": poly(IDENT, KNOWN | CORRUPT | NULLS, 5, -1.0, 2.5, [0.1, 0.0, -0.3, 0.2, 0.5, 0.1], 3, bytes([0])),
     "ident_known_deg9": poly(IDENT, KNOWN, 9, 0.5, 1.0, [0.1] * 10, 40, bytes([31])),
+    # PI weights by NNLS (flag PIFIT): n, threshold mode (bit0 given), span, samples, SOLVE
+    "pifit_uniform_loops": bytes([IDENT, PIFIT, 4, 0, 31]) + b"".join(add(u) for u in loops) + bytes([SOLVE, 1, 2]),
+    "pifit_given_nulls": bytes([IDENT, PIFIT | NULLS, 3, 1, 31, 0, 8, 8]) + b"".join(add(u) for u in loops)
+        + bytes([SOLVE, REINIT]) + add(0.5) + bytes([0x00, 5]) + bytes([SOLVE, 0, 0]),
+    "pifit_bad_r1": bytes([IDENT, PIFIT, 2, 1, 31, 0x84, 8]),
+    "pifit_short_work": bytes([IDENT, PIFIT | CORRUPT, 2, 0, 31]) + add(0.5),
+    "pifit_n0": bytes([IDENT, PIFIT, 0, 0, 31]),
+    "pifit_n65": bytes([IDENT, PIFIT, 65, 0, 31]),
+    "pifit_few_samples": bytes([IDENT, PIFIT, 5, 0, 31]) + add(0.1) + add(0.9) + bytes([SOLVE]),
 }
 
 # ---- fuzz_code.c: [flags][cap % 20] config, code range, [deadband], ops ----
@@ -205,11 +217,48 @@ code_seeds = {
     "bad_curve_and_range": code_raw_range(0, 8, (2, -1.0, 2.0, [1.0, 0.0, 0.0], 0), 9, 3),
     "bad_degree0": code_cfg(VIACURVE, 8, (0, 0.0, 1.0, [1.0], 0)),
 }
+# Model files (hyst-model-text 1): the CLI tests' malformed files as they are,
+# a valid model in several spellings, and one defect each.
+models_dir = os.path.join(here, "..", "tests", "cli", "models")
+model_files = {}
+for name in sorted(os.listdir(models_dir)):
+    if name.endswith(".hyst"):
+        with open(os.path.join(models_dir, name), "rb") as f:
+            model_files["cli_" + name[:-5]] = f.read()
+MAGIC = b"hyst-model-text 1\n"
+valid = MAGIC + b"# a comment\nkind poly\nlo 0\nhi 40\ndelay 3\ncoeffs -6.1876e-06 0.0011949 0.086444 0.58517\n"
+model_files.update({
+    "valid": valid,
+    "valid_written": MAGIC + b"# hyst model: f0 on [lo, hi]\nkind poly\nlo 0\nhi 3.6000000000000001\n"
+        b"delay 4\ncoeffs -0.035382239014971698 0.15731673924940101 0.65908169990876799 9.7436721940450303 -118.40773443033701\n",
+    "valid_crlf_tabs": valid.replace(b"\n", b"\r\n").replace(b" ", b"\t"),
+    "valid_no_delay_no_newline": MAGIC + b"kind poly\nhi 1\nlo -0\ncoeffs 1 0",
+    "valid_ten_coeffs": MAGIC + b"kind poly\nlo -1e-300\nhi 1e300\ncoeffs" + b" 4.9e-324" * 9 + b" -0\n",
+    "valid_blank_lines": MAGIC + b"\n   \n\tkind   poly  \n\nlo 1e-5\nhi 0x1p4\ncoeffs 1 2 3\n#\n",
+    "bad_empty": b"",
+    "bad_magic_only": MAGIC,
+    "bad_magic_crlf_space": b"hyst-model-text 1 \r\n",
+    "bad_nul": valid.replace(b"hi 40", b"hi 4\x000"),
+    "bad_nul_magic": b"hyst\x00model-text 1\n",
+    "bad_long_line": MAGIC + b"kind poly\nlo 0\nhi 1\ncoeffs 1 " + b"0" * 1100 + b"\n",
+    "bad_eleven_coeffs": MAGIC + b"kind poly\nlo 0\nhi 1\ncoeffs" + b" 1" * 11 + b"\n",
+    "bad_one_coeff": MAGIC + b"kind poly\nlo 0\nhi 1\ncoeffs 1\n",
+    "bad_lo_two_values": valid.replace(b"lo 0", b"lo 0 1"),
+    "bad_hi_no_value": valid.replace(b"hi 40", b"hi"),
+    "bad_overflow": valid.replace(b"hi 40", b"hi 1e999"),
+    "bad_nan": valid.replace(b"lo 0", b"lo nan"),
+    "bad_delay_negative": valid.replace(b"delay 3", b"delay -1"),
+    "bad_delay_huge": valid.replace(b"delay 3", b"delay 1e10"),
+    "bad_kind_missing": valid.replace(b"kind poly\n", b""),
+    "bad_kind_extra": valid.replace(b"kind poly", b"kind poly pwl"),
+    "bad_binary": bytes(range(256)),
+})
 for d, group in ((out, seeds), (os.path.join(here, "corpus_models"), models),
-                 (os.path.join(here, "corpus_code"), code_seeds)):
+                 (os.path.join(here, "corpus_code"), code_seeds),
+                 (os.path.join(here, "corpus_model_file"), model_files)):
     os.makedirs(d, exist_ok=True)
     for name, data in group.items():
-        assert len(data) < 300, name
+        assert len(data) < (1300 if group is model_files else 300), name
         with open(os.path.join(d, name), "wb") as f:
             f.write(data)
     print(f"{len(group)} seeds in {d}")

@@ -480,3 +480,445 @@ hyst_status_t hyst_ident_poly(const hyst_ident_result_t *res, hyst_poly_t *f0)
     *f0 = out;
     return HYST_OK;
 }
+
+/* ---- Prandtl-Ishlinskii weights by non-negative least squares ----
+ *
+ * The workspace (HYST_PI_FIT_WORK(n) entries) holds, n = operators:
+ *   [0, n)      thresholds          [n, 2n)     operator states z
+ *   [2n, 3n)    means of z          [3n, 4n)    co-moments of z with y
+ *   [4n, 5n)    weights w           [5n, 6n)    the passive set's solution s
+ *   [6n, 7n)    gradient of the LS objective    [7n, 8n)  set flags
+ *   [8n, 9n)    right-hand side / solution of the passive set, compressed
+ *   [9n, 9n+5)  mean of y, co-moment of y, smallest and largest x, x seen
+ *   then the n x n co-moments of z (upper triangle) and the n x n Cholesky
+ *   factor of the passive set (compressed, lower triangle).
+ * Co-moments about the running means (Welford) keep the offset out of the
+ * normal equations: it is the free intercept, recovered from the means. */
+
+enum { PI_R, PI_Z, PI_MZ, PI_CY, PI_W, PI_S, PI_G, PI_SET, PI_B, PI_VECTORS };
+enum { PI_MY, PI_SYY, PI_XMIN, PI_XMAX, PI_XSEEN, PI_SCALARS };
+
+#define PI_PASSIVE ((hyst_wide_t)1)  /* weight free (positive) */
+#define PI_REJECTED ((hyst_wide_t)-1) /* column dependent on the passive ones */
+
+static hyst_wide_t *pi_vec(const hyst_pi_fit_t *f, unsigned which)
+{
+    return f->work + (size_t)which * f->n;
+}
+
+static hyst_wide_t *pi_scalar(const hyst_pi_fit_t *f, unsigned which)
+{
+    return f->work + (size_t)PI_VECTORS * f->n + which;
+}
+
+static hyst_wide_t *pi_gram(const hyst_pi_fit_t *f)
+{
+    return pi_scalar(f, 0u) + PI_SCALARS;
+}
+
+/* Co-moment of operators i and j (upper triangle stored). */
+static hyst_wide_t pi_c(const hyst_pi_fit_t *f, size_t i, size_t j)
+{
+    return i <= j ? pi_gram(f)[i * f->n + j] : pi_gram(f)[j * f->n + i];
+}
+
+hyst_status_t hyst_pi_fit_thresholds(hyst_wide_t lo, hyst_wide_t hi, size_t n, hyst_wide_t *r)
+{
+    size_t i;
+    if (r == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (n < 1u || n > HYST_PI_FIT_MAX_OPERATORS) {
+        return HYST_ERR_ARG;
+    }
+    if (!hyst_wide_is_finite(lo) || !hyst_wide_is_finite(hi) || !(lo < hi) ||
+        !hyst_wide_is_finite(hi - lo)) {
+        return HYST_ERR_DOMAIN;
+    }
+    for (i = 0u; i < n; ++i) {
+        r[i] = (hi - lo) * (hyst_wide_t)i / (hyst_wide_t)n;
+    }
+    return HYST_OK;
+}
+
+hyst_status_t hyst_pi_fit_init(hyst_pi_fit_t *fit, const hyst_wide_t *r, size_t n,
+                               hyst_wide_t *work, size_t work_len)
+{
+    size_t i;
+    if (fit == NULL || r == NULL || work == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (n < 1u || n > HYST_PI_FIT_MAX_OPERATORS) {
+        return HYST_ERR_ARG;
+    }
+    if (work_len < HYST_PI_FIT_WORK(n)) {
+        return HYST_ERR_NOSPACE;
+    }
+    if (r[0] != 0) {
+        return HYST_ERR_BREAKPOINTS;
+    }
+    for (i = 1u; i < n; ++i) {
+        if (!hyst_wide_is_finite(r[i]) || !(r[i] > r[i - 1u])) {
+            return HYST_ERR_BREAKPOINTS;
+        }
+    }
+    fit->n = n;
+    fit->used = fit->ignored = 0u;
+    fit->phase = 0;
+    fit->work = work;
+    for (i = 0u; i < HYST_PI_FIT_WORK(n); ++i) {
+        work[i] = 0;
+    }
+    for (i = 0u; i < n; ++i) {
+        pi_vec(fit, PI_R)[i] = r[i];
+    }
+    return HYST_OK;
+}
+
+/* One step of the play operators, as hyst_pi_step() computes it. */
+static void pi_operators(const hyst_wide_t *r, hyst_wide_t *z, size_t n, hyst_wide_t x)
+{
+    size_t i;
+    for (i = 0u; i < n; ++i) {
+        const hyst_wide_t low = x < z[i] ? x : z[i];
+        const hyst_wide_t up = x - r[i];
+        z[i] = up > low ? up : low;
+    }
+}
+
+hyst_status_t hyst_pi_fit_add(hyst_pi_fit_t *fit, hyst_wide_t x, hyst_wide_t y)
+{
+    hyst_wide_t *z, *mz, *cy, *dz, *c, *xs;
+    hyst_wide_t dy, my_new, keep;
+    size_t i, j, n;
+    if (fit == NULL || fit->work == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (fit->phase != 0) {
+        return HYST_ERR_ARG;
+    }
+    n = fit->n;
+    if (!hyst_wide_is_finite(x)) {
+        ++fit->ignored;
+        return HYST_ERR_NONFINITE;
+    }
+    z = pi_vec(fit, PI_Z);
+    pi_operators(pi_vec(fit, PI_R), z, n, x);
+    xs = pi_scalar(fit, PI_XMIN);
+    if (*pi_scalar(fit, PI_XSEEN) == 0 || x < xs[0]) {
+        xs[0] = x;
+    }
+    if (*pi_scalar(fit, PI_XSEEN) == 0 || x > xs[1]) {
+        xs[1] = x;
+    }
+    *pi_scalar(fit, PI_XSEEN) = 1;
+    if (!hyst_wide_is_finite(y)) {
+        ++fit->ignored;
+        return HYST_ERR_NONFINITE;
+    }
+    ++fit->used;
+    /* Welford: deviations from the old means (kept in the solution area,
+     * unused until solve), then co-moments scaled by (k - 1) / k. */
+    mz = pi_vec(fit, PI_MZ);
+    cy = pi_vec(fit, PI_CY);
+    dz = pi_vec(fit, PI_S);
+    c = pi_gram(fit);
+    keep = (hyst_wide_t)(fit->used - 1u) / (hyst_wide_t)fit->used;
+    dy = y - *pi_scalar(fit, PI_MY);
+    my_new = *pi_scalar(fit, PI_MY) + dy / (hyst_wide_t)fit->used;
+    for (i = 0u; i < n; ++i) {
+        dz[i] = z[i] - mz[i];
+        mz[i] += dz[i] / (hyst_wide_t)fit->used;
+    }
+    for (i = 0u; i < n; ++i) {
+        const hyst_wide_t di = dz[i] * keep;
+        for (j = i; j < n; ++j) {
+            c[i * n + j] += di * dz[j];
+        }
+        cy[i] += di * dy;
+    }
+    *pi_scalar(fit, PI_SYY) += dy * (y - my_new);
+    *pi_scalar(fit, PI_MY) = my_new;
+    return HYST_OK;
+}
+
+/* Solves C_PP s_P = cy_P on the passive set (Cholesky, compressed) into s;
+ * 0 if the set's co-moment matrix is numerically singular. */
+static int pi_passive_solve(const hyst_pi_fit_t *f)
+{
+    const size_t n = f->n;
+    const hyst_wide_t *set = pi_vec(f, PI_SET), *cy = pi_vec(f, PI_CY);
+    hyst_wide_t *s = pi_vec(f, PI_S), *b = pi_vec(f, PI_B), *l = pi_gram(f) + n * n;
+    size_t i, j, a, p = 0u;
+    for (i = 0u; i < n; ++i) {
+        size_t q = 0u;
+        if (set[i] != PI_PASSIVE) {
+            continue;
+        }
+        for (j = 0u; j <= i; ++j) {
+            hyst_wide_t sum;
+            if (set[j] != PI_PASSIVE) {
+                continue;
+            }
+            sum = pi_c(f, i, j);
+            for (a = 0u; a < q; ++a) {
+                sum -= l[p * n + a] * l[q * n + a];
+            }
+            if (q < p) {
+                l[p * n + q] = sum / l[q * n + q];
+            } else {
+                /* a pivot this small: column i lies in the span of the others */
+                if (!(sum > pi_c(f, i, i) * HYST_WIDE_EPS * (hyst_wide_t)1e4)) {
+                    return 0;
+                }
+                l[p * n + p] = WIDE_SQRT(sum);
+            }
+            ++q;
+        }
+        b[p++] = cy[i];
+    }
+    for (i = 0u; i < p; ++i) { /* L u = b */
+        for (a = 0u; a < i; ++a) {
+            b[i] -= l[i * n + a] * b[a];
+        }
+        b[i] /= l[i * n + i];
+    }
+    for (i = p; i-- > 0u;) { /* L' s = u */
+        for (a = i + 1u; a < p; ++a) {
+            b[i] -= l[a * n + i] * b[a];
+        }
+        b[i] /= l[i * n + i];
+    }
+    for (i = 0u, p = 0u; i < n; ++i) {
+        s[i] = set[i] == PI_PASSIVE ? b[p++] : 0;
+    }
+    return 1;
+}
+
+/* Gradient of the objective's negative half: g = cy - C w. */
+static void pi_gradient(const hyst_pi_fit_t *f)
+{
+    const hyst_wide_t *w = pi_vec(f, PI_W), *cy = pi_vec(f, PI_CY);
+    hyst_wide_t *g = pi_vec(f, PI_G);
+    size_t i, j;
+    for (i = 0u; i < f->n; ++i) {
+        hyst_wide_t acc = cy[i];
+        for (j = 0u; j < f->n; ++j) {
+            acc -= pi_c(f, i, j) * w[j];
+        }
+        g[i] = acc;
+    }
+}
+
+/* The zero weight whose gradient is largest above tol, or n if none. */
+static size_t pi_entering(const hyst_pi_fit_t *f, hyst_wide_t tol)
+{
+    const hyst_wide_t *g = pi_vec(f, PI_G), *set = pi_vec(f, PI_SET);
+    size_t i, t = f->n;
+    for (i = 0u; i < f->n; ++i) {
+        if (set[i] == 0 && g[i] > tol && (t == f->n || g[i] > g[t])) {
+            t = i;
+        }
+    }
+    return t;
+}
+
+/* After a passive solve s: 1 if every passive entry is positive (w = s);
+ * else moves w towards s until the first weight reaches 0, frees it (and
+ * any other at 0) and returns 0. */
+static int pi_step_towards(const hyst_pi_fit_t *f)
+{
+    const size_t n = f->n;
+    hyst_wide_t *w = pi_vec(f, PI_W), *s = pi_vec(f, PI_S), *set = pi_vec(f, PI_SET);
+    hyst_wide_t alpha = 1;
+    size_t i, out = n;
+    for (i = 0u; i < n; ++i) {
+        if (set[i] == PI_PASSIVE && !(s[i] > 0)) {
+            const hyst_wide_t a = w[i] / (w[i] - s[i]);
+            if (out == n || a < alpha) {
+                alpha = a;
+                out = i;
+            }
+        }
+    }
+    if (out == n) {
+        for (i = 0u; i < n; ++i) {
+            w[i] = s[i];
+        }
+        return 1;
+    }
+    for (i = 0u; i < n; ++i) {
+        if (set[i] == PI_PASSIVE) {
+            w[i] += alpha * (s[i] - w[i]);
+            if (i == out || !(w[i] > 0)) {
+                w[i] = 0;
+                set[i] = 0;
+            }
+        } else if (set[i] == PI_REJECTED) {
+            set[i] = 0; /* the set changed: worth another try */
+        }
+    }
+    return 0;
+}
+
+/* Lawson-Hanson: grow the passive set by the most promising zero weight;
+ * when its unconstrained solution has a non-positive entry, step back
+ * towards it until a weight reaches 0 and free that weight again. Both
+ * loops are bounded (a rounding-level cycle ends with a feasible w). */
+static void pi_nnls(const hyst_pi_fit_t *f, hyst_wide_t tol)
+{
+    const size_t n = f->n;
+    hyst_wide_t *w = pi_vec(f, PI_W), *s = pi_vec(f, PI_S), *set = pi_vec(f, PI_SET);
+    size_t iter, i;
+    for (i = 0u; i < n; ++i) {
+        w[i] = 0;
+        set[i] = 0;
+    }
+    for (iter = 0u; iter < 3u * n + 3u; ++iter) {
+        size_t t, inner;
+        pi_gradient(f);
+        t = pi_entering(f, tol);
+        if (t == n) {
+            return; /* KKT: no zero weight would lower the residual */
+        }
+        set[t] = PI_PASSIVE;
+        for (inner = 0u; inner <= n; ++inner) {
+            if (!pi_passive_solve(f) || (inner == 0u && !(s[t] > 0))) {
+                set[t] = PI_REJECTED; /* cannot help: w stays as it was */
+                break;
+            }
+            if (pi_step_towards(f)) {
+                break;
+            }
+        }
+    }
+}
+
+hyst_status_t hyst_pi_fit_solve(hyst_pi_fit_t *fit, hyst_wide_t *w, hyst_pi_fit_result_t *res)
+{
+    hyst_wide_t big = 0, syy, tol, rss, offset;
+    const hyst_wide_t *wk, *cy, *mz;
+    size_t i, j, n;
+    hyst_pi_fit_result_t out;
+    if (fit == NULL || fit->work == NULL || w == NULL || res == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (fit->phase != 0) {
+        return HYST_ERR_ARG;
+    }
+    n = fit->n;
+    if (fit->used < n + 1u) {
+        return HYST_ERR_SINGULAR;
+    }
+    if (!(*pi_scalar(fit, PI_XMAX) > *pi_scalar(fit, PI_XMIN))) {
+        return HYST_ERR_DOMAIN;
+    }
+    for (i = 0u; i < n; ++i) {
+        big = pi_c(fit, i, i) > big ? pi_c(fit, i, i) : big;
+    }
+    if (!(big > 0)) {
+        return HYST_ERR_DOMAIN; /* the inputs used never moved */
+    }
+    syy = *pi_scalar(fit, PI_SYY);
+    /* |cy_i| <= sqrt(C_ii syy): a gradient below this share of the bound is rounding */
+    tol = WIDE_SQRT(big * syy) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * n);
+    pi_nnls(fit, tol);
+    wk = pi_vec(fit, PI_W);
+    cy = pi_vec(fit, PI_CY);
+    mz = pi_vec(fit, PI_MZ);
+    out.operators = n;
+    out.positive = 0u;
+    offset = *pi_scalar(fit, PI_MY);
+    rss = syy;
+    for (i = 0u; i < n; ++i) {
+        hyst_wide_t cw = 0;
+        for (j = 0u; j < n; ++j) {
+            cw += pi_c(fit, i, j) * wk[j];
+        }
+        rss += wk[i] * (cw - 2 * cy[i]);
+        offset -= wk[i] * mz[i];
+        out.positive += wk[i] > 0 ? 1u : 0u;
+        w[i] = wk[i];
+    }
+    out.offset = offset;
+    out.rms = WIDE_SQRT((rss > 0 ? rss : 0) / (hyst_wide_t)fit->used);
+    out.max_abs = -1;
+    out.used = fit->used;
+    out.invertible = wk[0] > 0;
+    fit->phase = 1;
+    *res = out;
+    return HYST_OK;
+}
+
+hyst_status_t hyst_pi_fit_record(const hyst_pi_fit_config_t *cfg, const hyst_wide_t *x,
+                                 const hyst_wide_t *y, size_t n, hyst_wide_t *work,
+                                 size_t work_len, hyst_wide_t *r, hyst_wide_t *w,
+                                 hyst_pi_fit_result_t *res)
+{
+    hyst_pi_fit_t fit;
+    hyst_pi_fit_result_t out;
+    hyst_status_t st;
+    hyst_wide_t ss = 0, worst = 0;
+    size_t i, k, count, ops;
+    if (cfg == NULL || x == NULL || y == NULL || work == NULL || r == NULL || w == NULL ||
+        res == NULL) {
+        return HYST_ERR_NULL;
+    }
+    ops = cfg->operators;
+    if (ops < 1u || ops > HYST_PI_FIT_MAX_OPERATORS) {
+        return HYST_ERR_ARG;
+    }
+    if (cfg->skip >= n || cfg->delay >= n - cfg->skip) {
+        return HYST_ERR_ARG;
+    }
+    count = n - cfg->skip - cfg->delay;
+    for (i = 0u; i < count; ++i) {
+        if (!hyst_wide_is_finite(x[cfg->skip + i]) ||
+            !hyst_wide_is_finite(y[cfg->skip + cfg->delay + i])) {
+            return HYST_ERR_NONFINITE;
+        }
+    }
+    if (cfg->thresholds != NULL) {
+        for (i = 0u; i < ops; ++i) {
+            r[i] = cfg->thresholds[i];
+        }
+    } else {
+        hyst_wide_t lo, hi;
+        st = hyst_ident_domain(x + cfg->skip, count, &lo, &hi);
+        if (st == HYST_OK) {
+            st = hyst_pi_fit_thresholds(lo, hi, ops, r);
+        }
+        if (st != HYST_OK) {
+            return st;
+        }
+    }
+    st = hyst_pi_fit_init(&fit, r, ops, work, work_len);
+    if (st != HYST_OK) {
+        return st;
+    }
+    for (i = 0u; i < count; ++i) {
+        (void)hyst_pi_fit_add(&fit, x[cfg->skip + i], y[cfg->skip + cfg->delay + i]);
+    }
+    st = hyst_pi_fit_solve(&fit, w, &out);
+    if (st != HYST_OK) {
+        return st;
+    }
+    /* second pass: the fitted model from reset, as hyst_pi_step() runs it */
+    for (k = 0u; k < ops; ++k) {
+        pi_vec(&fit, PI_Z)[k] = 0;
+    }
+    for (i = 0u; i < count; ++i) {
+        hyst_wide_t e = y[cfg->skip + cfg->delay + i] - out.offset;
+        pi_operators(r, pi_vec(&fit, PI_Z), ops, x[cfg->skip + i]);
+        for (k = 0u; k < ops; ++k) {
+            e -= w[k] * pi_vec(&fit, PI_Z)[k];
+        }
+        ss += e * e;
+        e = hyst_wide_abs(e);
+        worst = e > worst ? e : worst;
+    }
+    out.rms = WIDE_SQRT(ss / (hyst_wide_t)count);
+    out.max_abs = worst;
+    *res = out;
+    return HYST_OK;
+}

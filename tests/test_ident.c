@@ -27,11 +27,7 @@ static rng_t rng;
 void setUp(void) { rng_seed(&rng, 777u); }
 void tearDown(void) {}
 
-static double gauss(void) /* Box-Muller */
-{
-    const double u1 = 1.0 - rng_unit(&rng), u2 = rng_unit(&rng);
-    return sqrt(-2.0 * log(u1)) * cos(6.283185307179586 * u2);
-}
+static double gauss(void) { return rng_gauss(&rng); }
 
 /* Full-range sine from lo (period samples a cycle), through the model of f0,
  * plus Gaussian noise of standard deviation sigma. Returns the count. */

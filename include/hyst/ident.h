@@ -44,6 +44,11 @@
  * @endcode
  * Host, data in arrays: hyst_ident_fit() does it all, with skip, sensor
  * delay and the domain taken from the data.
+ *
+ * Also here, to compare with the TCM on the same record: the weights of a
+ * Prandtl-Ishlinskii model (include/hyst/pi.h) by non-negative least
+ * squares, hyst_pi_fit_*() below, in a caller workspace of
+ * HYST_PI_FIT_WORK(N) entries.
  */
 #ifndef HYST_IDENT_H
 #define HYST_IDENT_H
@@ -215,6 +220,126 @@ hyst_status_t hyst_ident_fit_(const hyst_ident_config_t *cfg, const hyst_wide_t 
  *         fit hyst_real_t).
  */
 hyst_status_t hyst_ident_poly(const hyst_ident_result_t *res, hyst_poly_t *f0);
+
+/* ---- Prandtl-Ishlinskii weights by non-negative least squares ---- */
+
+/** Most play operators hyst_pi_fit_init() accepts. */
+#define HYST_PI_FIT_MAX_OPERATORS 64u
+
+/**
+ * hyst_wide_t entries of the workspace of a PI fit with @p n operators:
+ * thresholds, operator states, the centred normal equations (n x n) and the
+ * active-set solver's factor and vectors. O(n^2), whatever the record length:
+ * @code
+ * static hyst_wide_t work[HYST_PI_FIT_WORK(10)];
+ * @endcode
+ */
+#define HYST_PI_FIT_WORK(n) (2u * (size_t)(n) * (size_t)(n) + 9u * (size_t)(n) + 5u)
+
+/**
+ * @brief A PI fit in progress. Fields are private; the numbers live in the
+ *        caller's workspace.
+ */
+typedef struct hyst_pi_fit {
+    size_t n;          /**< operators */
+    size_t used;       /**< samples in the normal equations */
+    size_t ignored;    /**< non-finite samples */
+    int phase;         /**< 0 adding, 1 solved */
+    hyst_wide_t *work; /**< HYST_PI_FIT_WORK(n) entries of the caller */
+} hyst_pi_fit_t;
+
+/**
+ * @brief A fitted PI model: y = offset + w_1 z_1 + ... + w_N z_N, the z_i
+ *        the play operators of include/hyst/pi.h run from the reset state.
+ *        The weights are the caller's array (hyst_pi_fit_solve()).
+ */
+typedef struct hyst_pi_fit_result {
+    size_t operators;   /**< N */
+    hyst_wide_t offset; /**< output offset (hyst_pi_t has none: add it to its output) */
+    /** RMS of y - model over the samples used: after hyst_pi_fit_solve() from
+     *  the normal equations; after hyst_pi_fit_record() from a second pass. */
+    hyst_wide_t rms;
+    hyst_wide_t max_abs; /**< max |y - model|; negative until a second pass */
+    size_t used;         /**< samples in the fit */
+    size_t positive;     /**< weights above 0 (the others are exactly 0) */
+    /** 1 if w_1 > 0: every partial sum is then positive, so hyst_pi_init()
+     *  accepts the weights and the model has an inverse. */
+    int invertible;
+} hyst_pi_fit_result_t;
+
+/**
+ * @brief What hyst_pi_fit_record() fits.
+ */
+typedef struct hyst_pi_fit_config {
+    size_t operators; /**< N, 1..HYST_PI_FIT_MAX_OPERATORS */
+    /** N thresholds (r_1 = 0, strictly increasing), or NULL: uniform over the
+     *  inputs' range, hyst_pi_fit_thresholds(). */
+    const hyst_wide_t *thresholds;
+    size_t skip;  /**< samples dropped at the start (settling) */
+    size_t delay; /**< output lags the input by this many samples */
+} hyst_pi_fit_config_t;
+
+/**
+ * @brief Uniform thresholds r_i = (i - 1) (hi - lo) / N, i = 1..N, for an
+ *        input moving over [lo, hi].
+ *
+ * A one-sided play operator's loop is as wide as its threshold: one with
+ * r >= hi - lo never turns inside the range, so the thresholds cover
+ * [0, hi - lo) evenly.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (N outside
+ *         1..HYST_PI_FIT_MAX_OPERATORS) or HYST_ERR_DOMAIN (lo, hi not
+ *         finite or lo >= hi).
+ */
+hyst_status_t hyst_pi_fit_thresholds(hyst_wide_t lo, hyst_wide_t hi, size_t n, hyst_wide_t *r);
+
+/**
+ * @brief Starts a PI fit with @p n operators of thresholds @p r (copied).
+ * @param[out] fit      instance.
+ * @param[in]  r        n thresholds: r_1 = 0, finite, strictly increasing.
+ * @param[in]  n        1..HYST_PI_FIT_MAX_OPERATORS.
+ * @param[in]  work     workspace of @p work_len entries (any content).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (n), HYST_ERR_NOSPACE
+ *         (work_len < HYST_PI_FIT_WORK(n)), HYST_ERR_BREAKPOINTS.
+ */
+hyst_status_t hyst_pi_fit_init(hyst_pi_fit_t *fit, const hyst_wide_t *r, size_t n,
+                               hyst_wide_t *work, size_t work_len);
+
+/**
+ * @brief Runs the operators over input @p x and adds (z(x), y) to the
+ *        normal equations. O(N^2) time, no memory.
+ * @return HYST_OK; HYST_ERR_NONFINITE (x or y NaN/Inf: not used; a finite x
+ *         still moves the operators, as hyst_pi_step() would); HYST_ERR_ARG
+ *         after hyst_pi_fit_solve(); HYST_ERR_NULL.
+ */
+hyst_status_t hyst_pi_fit_add(hyst_pi_fit_t *fit, hyst_wide_t x, hyst_wide_t y);
+
+/**
+ * @brief Solves min ||y - offset - sum w_i z_i|| subject to w_i >= 0 (offset
+ *        free) by the Lawson-Hanson active-set method on the normal
+ *        equations, centred so that the offset drops out of them.
+ * @param[out] w   N weights; every one >= 0.
+ * @param[out] res offset, RMS, counts.
+ * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_ARG (solved already);
+ *         HYST_ERR_SINGULAR (fewer than N + 1 samples); HYST_ERR_DOMAIN
+ *         (the input never moved: every operator output is constant).
+ */
+hyst_status_t hyst_pi_fit_solve(hyst_pi_fit_t *fit, hyst_wide_t *w, hyst_pi_fit_result_t *res);
+
+/**
+ * @brief Fits a PI model to recorded arrays: sample i (skip <= i < n -
+ *        delay) pairs x[i] with y[i + delay]. Thresholds as given in @p cfg,
+ *        or uniform over the range of those x. One pass to fit, a second
+ *        one (the model run again from reset) for res->rms and res->max_abs.
+ * @param[out] r, w N thresholds and N weights.
+ * @return as hyst_pi_fit_init() and hyst_pi_fit_solve(); HYST_ERR_ARG when
+ *         skip + delay leaves no sample; HYST_ERR_NONFINITE if a sample used
+ *         is NaN or infinite (nothing fitted); HYST_ERR_DOMAIN if the inputs
+ *         are all equal.
+ */
+hyst_status_t hyst_pi_fit_record(const hyst_pi_fit_config_t *cfg, const hyst_wide_t *x,
+                                 const hyst_wide_t *y, size_t n, hyst_wide_t *work,
+                                 size_t work_len, hyst_wide_t *r, hyst_wide_t *w,
+                                 hyst_pi_fit_result_t *res);
 
 #ifdef __cplusplus
 }

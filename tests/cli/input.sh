@@ -57,6 +57,8 @@ nul_byte) # a NUL byte would end the line early, silently: refused with its plac
     printf '0 1\n1 2\0 junk\n2 3\n' > nul.txt
     expect_fail "nul.txt:2: NUL byte at column 4" fit --degree 1 nul.txt
     printf '0\n\0\n1\n' | expect_fail "<stdin>:2: NUL byte at column 1" sim --poly 1,0 --range 0,1
+    printf 'hyst-model-text 1\nkind poly\nlo 0\nhi 4\0\ncoeffs 1 0\n' > nul.hyst
+    expect_fail "nul.hyst:4: field 2: NUL byte at column 5" sim --model nul.hyst nul.txt
     ;;
 stdin_directory) # a directory as standard input: named as such, not "read error"
     expect_fail "<stdin>: is a directory" inv --poly 1,0 --range 0,1 < .

@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 #include "support.h"
 
+#include <math.h>
+
 const double paper_eq20_coeffs[4] = {-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1};
 
 const hyst_poly_t paper_eq20 = {
@@ -36,6 +38,12 @@ double rng_range(rng_t *r, double a, double b)
 uint32_t rng_below(rng_t *r, uint32_t n)
 {
     return (uint32_t)(rng_unit(r) * (double)n);
+}
+
+double rng_gauss(rng_t *r)
+{
+    const double u1 = 1.0 - rng_unit(r), u2 = rng_unit(r);
+    return sqrt(-2.0 * log(u1)) * cos(6.283185307179586 * u2);
 }
 
 int paper_levels(double lo, double hi, double *levels)

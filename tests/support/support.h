@@ -26,6 +26,7 @@ uint32_t rng_u32(rng_t *r);
 double rng_unit(rng_t *r);                  /* [0, 1) */
 double rng_range(rng_t *r, double a, double b);
 uint32_t rng_below(rng_t *r, uint32_t n);   /* [0, n) */
+double rng_gauss(rng_t *r);                 /* standard normal (Box-Muller) */
 
 /* The paper's test signal: a triangle from lo whose amplitude shrinks around
  * the centre for 7 peaks and 7 valleys, then grows back to the full range and

@@ -118,6 +118,8 @@ typedef struct cli_model {
 
 /* Reads a model file; 0, or 1 after a message naming file, line and field. */
 int cli_model_read(const char *cmd, const char *path, cli_model_t *m);
+/* The same from an open stream (path names it in messages); not closed. */
+int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m);
 /* The file's text into buf; its length, or 0 if it did not fit. */
 size_t cli_model_text(const cli_model_t *m, char *buf, size_t size);
 /* Appends the firmware header's declaration of f0 (include guard,

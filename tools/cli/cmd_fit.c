@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* hyst fit: identify f0 from measured input/output columns. */
 #include "cli.h"
+#include "fit_pi.h"
 #include "fit_select.h"
 #include "hyst/hyst.h"
 
@@ -14,10 +15,16 @@
 /* Longest --header-dir accepted (the header's path is built in a fixed buffer). */
 #define CLI_HEADER_DIR_MAX 4096u
 
+/* --kind pi without --operators: the size of the paper's Table 1 model. */
+#define FIT_PI_DEFAULT_OPERATORS 10u
+
 static const char help[] =
     "usage: hyst fit [--degree N] [--skip S] [--delay D] [--xcol I --ycol J]\n"
     "                [--method joint|reflect] [--domain LO,HI] [--header NAME]\n"
-    "                [--header-dir DIR] [--save MODEL] [--decimal-comma] FILE\n"
+    "                [--header-dir DIR] [--save MODEL] [--compare-pi N]\n"
+    "                [--decimal-comma] FILE\n"
+    "       hyst fit --kind pi [--operators N] [--skip S] [--delay D]\n"
+    "                [--xcol I --ycol J] [--decimal-comma] FILE\n"
     "\n"
     "Fits the major ascending curve f0 (polynomial of degree N) of a hysteresis\n"
     "loop to the input/output record in FILE ('-' = standard input), excited by a\n"
@@ -50,13 +57,26 @@ static const char help[] =
     "  --save MODEL   also write the model file MODEL (format hyst-model-text 1:\n"
     "                 f0, its domain and the delay), which 'hyst sim --model' and\n"
     "                 'hyst inv --model' read\n"
+    "  --compare-pi N also fit a Prandtl-Ishlinskii model of N operators (see\n"
+    "                 --kind pi) on the same first two thirds, with the same skip\n"
+    "                 and delay, and print both models' hold-out RMS on the last\n"
+    "                 third as a '# compare' line\n"
+    "  --kind K       tcm (default): f0 of the TCM, as above; pi: the weights\n"
+    "                 w1..wN >= 0 and an output offset of a Prandtl-Ishlinskii\n"
+    "                 model of N one-sided play operators with thresholds\n"
+    "                 r_i = (i - 1) (max - min) / N over the inputs' range, by\n"
+    "                 non-negative least squares\n"
+    "  --operators N  --kind pi: the number of operators, 1..64 (default 10)\n"
     "  --help         this text\n"
     "\n"
     "Output: line 1 the coefficients cN,...,c0 (highest power first), line 2 LO,HI,\n"
     "line 3 the RMS and max residual against the fitted major loop (output units),\n"
-    "then '#' comment lines.\n"
+    "then '#' comment lines. --kind pi: line 1 the weights, line 2 the thresholds,\n"
+    "line 3 the offset, line 4 the RMS and max residual, then '#' comment lines,\n"
+    "one of them the 'hyst pi' options that run the model.\n"
     "Exit status: 0 success; 1 bad option or input (nothing printed); 2 the fitted\n"
-    "f0 is not increasing on the domain (results printed, no header written).\n";
+    "f0 is not increasing on the domain (results printed, no header written), or\n"
+    "the fitted PI weight w1 is 0 ('hyst pi' would refuse the weights).\n";
 
 typedef struct fit_opts {
     hyst_ident_config_t cfg;
@@ -68,6 +88,10 @@ typedef struct fit_opts {
     int have_degree;
     int have_delay;
     int decimal_comma;
+    int kind_pi;          /* --kind pi */
+    size_t operators;     /* --operators, 0 when not given */
+    size_t compare_pi;    /* --compare-pi N, 0 when not given */
+    char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
 } fit_opts_t;
 
 /* 0 on success, 1 after a message, -1 after --help. */
@@ -109,7 +133,21 @@ static int parse(fit_opts_t *o, int argc, char **argv)
         if ((v = cli_value(&a)) == NULL) {
             return 1;
         }
-        if (cli_is(&a, "--degree")) {
+        if (!cli_is(&a, "--skip") && !cli_is(&a, "--delay") && !cli_is(&a, "--xcol") &&
+            !cli_is(&a, "--ycol") && !cli_is(&a, "--kind") && !cli_is(&a, "--operators")) {
+            (void)snprintf(o->tcm_only, sizeof o->tcm_only, "%s", a.opt);
+        }
+        if (cli_is(&a, "--kind")) {
+            if (strcmp(v, "tcm") != 0 && strcmp(v, "pi") != 0) {
+                return cli_fail(a.cmd, "option --kind: %s is neither tcm nor pi", cli_quote(q, v));
+            }
+            o->kind_pi = strcmp(v, "pi") == 0;
+        } else if (cli_is(&a, "--operators") || cli_is(&a, "--compare-pi")) {
+            if (!cli_opt_ulong(&a, v, 1ul, HYST_PI_FIT_MAX_OPERATORS, &u)) {
+                return 1;
+            }
+            *(cli_is(&a, "--operators") ? &o->operators : &o->compare_pi) = (size_t)u;
+        } else if (cli_is(&a, "--degree")) {
             if (!cli_opt_ulong(&a, v, 1ul, HYST_MAX_DEGREE, &u)) {
                 return 1;
             }
@@ -168,6 +206,15 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     }
     if (o->header_dir != NULL && o->header == NULL) {
         return cli_fail(a.cmd, "option --header-dir needs --header NAME");
+    }
+    if (o->kind_pi && o->tcm_only[0] != '\0') {
+        return cli_fail(a.cmd, "option %s does not apply to --kind pi", o->tcm_only);
+    }
+    if (!o->kind_pi && o->operators != 0u) {
+        return cli_fail(a.cmd, "option --operators needs --kind pi (or use --compare-pi N)");
+    }
+    if (o->operators == 0u) {
+        o->operators = FIT_PI_DEFAULT_OPERATORS;
     }
     return 0;
 }
@@ -357,6 +404,7 @@ int cmd_fit(int argc, char **argv)
     const char *name;
     size_t pairs, nread;
     unsigned k;
+    char compare[512] = "";
     int rc = parse(&o, argc, argv);
     if (rc != 0) {
         return rc < 0 ? 0 : rc;
@@ -380,11 +428,25 @@ int cmd_fit(int argc, char **argv)
         cli_table_free(&t);
         return 1;
     }
+    if (o.kind_pi) {
+        rc = fit_pi_report(name, &t, o.operators, o.cfg.skip, o.cfg.delay);
+        cli_table_free(&t);
+        return rc;
+    }
     if (pairs > 0u && !o.have_degree && choose(&o, name, &t) != 0) {
         cli_table_free(&t);
         return 1;
     }
     st = pairs == 0u ? HYST_ERR_ARG : hyst_ident_fit(&o.cfg, t.col[0], t.col[1], t.n, &work, &r);
+    if (st == HYST_OK && o.compare_pi != 0u) {
+        hyst_ident_result_t train;
+        hyst_status_t st_train;
+        const double tcm = o.have_degree ? fit_tcm_holdout(&o.cfg, t.col[0], t.col[1], t.n,
+                                                           &st_train, &train)
+                                         : candidates[best_candidate].holdout_rms;
+        fit_pi_compare(&t, o.compare_pi, o.cfg.skip, o.cfg.delay, o.cfg.degree, tcm, compare,
+                       sizeof compare);
+    }
     cli_table_free(&t);
     switch (st) {
     case HYST_OK:
@@ -433,6 +495,7 @@ int cmd_fit(int argc, char **argv)
     }
     (void)printf("# delay %lu samples\n# parameters %u\n", (unsigned long)o.cfg.delay,
                  r.degree + 1u);
+    (void)fputs(compare, stdout);
     if (r.method == HYST_IDENT_REFLECT) {
         (void)printf("# y(lo), y(hi) measured for Eq. 14: %.9g, %.9g\n", (double)r.y_lo_est,
                      (double)r.y_hi_est);

@@ -8,13 +8,13 @@
 #define PI_MAX_OPERATORS 512u
 
 static const char help[] =
-    "usage: hyst pi --weights w1,...,wN --thresholds r1,...,rN [--xcol I]\n"
-    "               [--decimal-comma] [FILE]\n"
+    "usage: hyst pi --weights w1,...,wN --thresholds r1,...,rN [--offset C]\n"
+    "               [--xcol I] [--decimal-comma] [FILE]\n"
     "\n"
     "Runs the Prandtl-Ishlinskii model of N one-sided play operators (the paper's\n"
     "Eq. 15; docs/theory.md) over the input samples of FILE (standard input if FILE is\n"
     "absent or '-'), from the reset state (every operator at 0):\n"
-    "  z_i = max(x - r_i, min(x, z_i before)),  y = w1 z_1 + ... + wN z_N.\n"
+    "  z_i = max(x - r_i, min(x, z_i before)),  y = C + w1 z_1 + ... + wN z_N.\n"
     "Prints one output per line with 9 significant digits. The model has no domain:\n"
     "every input is used as is (nothing is clamped).\n"
     "\n"
@@ -22,6 +22,8 @@ static const char help[] =
     "                    w1 + ... + wi must be positive (the loading curve rises)\n"
     "  --thresholds R    r1,...,rN, one per weight: r1 = 0, strictly increasing\n"
     "                    (N <= 512)\n"
+    "  --offset C        added to every output (default 0), as 'hyst fit --kind pi'\n"
+    "                    prints it\n"
     CLI_HELP_XCOL
     CLI_HELP_DECIMAL
     "  --help            this text\n"
@@ -31,12 +33,14 @@ static const char help[] =
 typedef struct pi_run {
     hyst_real_t r[PI_MAX_OPERATORS], w[PI_MAX_OPERATORS], z[PI_MAX_OPERATORS];
     hyst_pi_t P;
+    double offset;
 } pi_run_t;
 
 static int pi_step(void *ctx, double x, double *y, int *clamped)
 {
     *clamped = 0;
-    *y = (double)hyst_pi_step(&((pi_run_t *)ctx)->P, (hyst_real_t)x);
+    pi_run_t *run = (pi_run_t *)ctx;
+    *y = (double)hyst_pi_step(&run->P, (hyst_real_t)x) + run->offset;
     return 0;
 }
 
@@ -75,8 +79,8 @@ static int explain(const char *cmd, hyst_status_t st, const double *r, const dou
 int cmd_pi(int argc, char **argv)
 {
     static pi_run_t run; /* large: keep it off the stack */
-    double r[PI_MAX_OPERATORS], w[PI_MAX_OPERATORS];
-    size_t nr = 0u, nw = 0u, i;
+    double r[PI_MAX_OPERATORS], w[PI_MAX_OPERATORS], offset = 0.0;
+    size_t nr = 0u, no = 0u, nw = 0u, i;
     cli_args_t a;
     cli_samples_t s;
     cli_map_t m;
@@ -93,6 +97,10 @@ int cmd_pi(int argc, char **argv)
             }
         } else if (cli_is(&a, "--thresholds")) {
             if ((v = cli_value(&a)) == NULL || !cli_opt_list(&a, v, r, 1u, PI_MAX_OPERATORS, &nr)) {
+                return 1;
+            }
+        } else if (cli_is(&a, "--offset")) {
+            if ((v = cli_value(&a)) == NULL || !cli_opt_list(&a, v, &offset, 1u, 1u, &no)) {
                 return 1;
             }
         } else {
@@ -118,6 +126,7 @@ int cmd_pi(int argc, char **argv)
         run.r[i] = (hyst_real_t)r[i];
         run.w[i] = (hyst_real_t)w[i];
     }
+    run.offset = offset;
     st = hyst_pi_init(&run.P, run.r, run.w, run.z, nr);
     if (st != HYST_OK) {
         return explain(a.cmd, st, r, w, nr);

@@ -50,6 +50,61 @@ static double holdout_rms(const hyst_ident_result_t *r, const double *x, const d
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
+/* Samples of the training part: the first two thirds of those the model sees. */
+static size_t train_count(size_t n, size_t skip, size_t delay)
+{
+    return (2u * (n - skip - delay)) / 3u;
+}
+
+double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
+                       size_t n, hyst_status_t *status, hyst_ident_result_t *fit)
+{
+    hyst_ident_t work;
+    size_t train;
+    if (n <= cfg->skip + cfg->delay) {
+        *status = HYST_ERR_ARG;
+        return NAN;
+    }
+    train = train_count(n, cfg->skip, cfg->delay);
+    /* the training part: samples skip .. skip + train of x, their y delay later */
+    *status = hyst_ident_fit(cfg, x, y, cfg->skip + train + cfg->delay, &work, fit);
+    if (*status != HYST_OK || !fit->increasing) {
+        return NAN;
+    }
+    return holdout_rms(fit, x, y, n, cfg->skip, cfg->delay, cfg->skip + train);
+}
+
+double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const double *y,
+                      size_t n, hyst_status_t *status, hyst_pi_fit_result_t *fit, double *r,
+                      double *w)
+{
+    static double work[HYST_PI_FIT_WORK(HYST_PI_FIT_MAX_OPERATORS)];
+    static double z[HYST_PI_FIT_MAX_OPERATORS];
+    hyst_pi_t P;
+    double ss = 0.0;
+    size_t train, k, used = 0u;
+    if (n <= cfg->skip + cfg->delay) {
+        *status = HYST_ERR_ARG;
+        return NAN;
+    }
+    train = train_count(n, cfg->skip, cfg->delay);
+    *status = hyst_pi_fit_record(cfg, x, y, cfg->skip + train + cfg->delay, work,
+                                 sizeof work / sizeof work[0], r, w, fit);
+    /* hyst_pi_init() refuses w1 = 0 (a flat start of the loading curve) */
+    if (*status != HYST_OK || hyst_f64_pi_init(&P, r, w, z, cfg->operators) != HYST_OK) {
+        return NAN;
+    }
+    /* the model from reset at the first sample used, scored on the last third */
+    for (k = cfg->skip; k + cfg->delay < n; ++k) {
+        const double e = hyst_f64_pi_step(&P, x[k]) + (double)fit->offset - y[k + cfg->delay];
+        if (k >= cfg->skip + train) {
+            ss += e * e;
+            ++used;
+        }
+    }
+    return used > 0u ? sqrt(ss / (double)used) : NAN;
+}
+
 size_t fit_select(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
                   size_t max_delay, fit_candidate_t *cand, size_t max_cand, size_t *best)
 {
@@ -57,28 +112,18 @@ size_t fit_select(const hyst_ident_config_t *base, const double *x, const double
     unsigned deg;
     *best = (size_t)-1;
     for (d = base->delay; d <= max_delay; ++d) {
-        size_t m, train;
         if (n <= base->skip + d) {
             break;
         }
-        m = n - base->skip - d;
-        train = (2u * m) / 3u;
         for (deg = 1u; deg <= HYST_MAX_DEGREE && count < max_cand; ++deg) {
             hyst_ident_config_t cfg = *base;
-            hyst_ident_t work;
             fit_candidate_t *c = &cand[count];
             memset(c, 0, sizeof *c);
             cfg.degree = deg;
             cfg.delay = d;
             c->degree = deg;
             c->delay = d;
-            c->holdout_rms = NAN;
-            /* the training part: samples skip .. skip + train of x, their y d later */
-            c->status = hyst_ident_fit(&cfg, x, y, base->skip + train + d, &work, &c->fit);
-            if (c->status == HYST_OK && c->fit.increasing) {
-                c->holdout_rms =
-                    holdout_rms(&c->fit, x, y, n, base->skip, d, base->skip + train);
-            }
+            c->holdout_rms = fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit);
             if (isfinite(c->holdout_rms) &&
                 (*best == (size_t)-1 || c->holdout_rms < cand[*best].holdout_rms)) {
                 *best = count;

@@ -36,32 +36,89 @@ static size_t split(char *s, char **f, size_t max)
     }
 }
 
-int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
+/* Reads one line, its '\n' dropped, into line[0..size): 1, or 0 at the end
+ * of the file. *nul: 1-based column of the line's first NUL byte (0: none),
+ * which would otherwise end the line early, silently; *longer: more than
+ * size - 2 bytes (the rest of the line is read and dropped). */
+static int model_line(FILE *in, char *line, size_t size, unsigned long *nul, int *longer)
+{
+    size_t len = 0u;
+    unsigned long col = 0ul;
+    int c;
+    *nul = 0ul;
+    *longer = 0;
+    while ((c = getc(in)) != EOF && c != '\n') {
+        ++col;
+        if (c == '\0' && *nul == 0ul) {
+            *nul = col;
+        }
+        if (len + 2u < size) {
+            line[len++] = (char)c;
+        } else {
+            *longer = 1;
+        }
+    }
+    line[len] = '\0';
+    return c != EOF || col > 0ul;
+}
+
+/* 1-based field of line that holds its 1-based column col (a NUL byte is not
+ * a blank, so it is in a field). */
+static unsigned long field_at(const char *line, unsigned long col)
+{
+    unsigned long i, field = 0ul;
+    int blank = 1;
+    for (i = 0ul; i < col; ++i) {
+        const char c = line[i];
+        const int b = c == ' ' || c == '\t' || c == '\r';
+        field += blank && !b ? 1ul : 0ul;
+        blank = b;
+    }
+    return field;
+}
+
+/* What a key's line needs: 0 if n fields are right, else a message. */
+static int model_count(const char *cmd, const char *path, unsigned long no, const char *key,
+                       int coeffs, size_t n)
+{
+    const size_t most = coeffs ? HYST_MAX_DEGREE + 2u : 2u;
+    const size_t least = coeffs ? 3u : 2u;
+    const char *needs = coeffs ? "2 to 10 numbers (c_n ... c_0)" : "one value";
+    if (n < least) {
+        return cli_fail(cmd, "%s:%lu: field %lu is missing: %s needs %s", path, no,
+                        (unsigned long)n + 1ul, key, needs);
+    }
+    if (n > most) {
+        return cli_fail(cmd, "%s:%lu: field %lu: one too many: %s needs %s", path, no,
+                        (unsigned long)most + 1ul, key, needs);
+    }
+    return 0;
+}
+
+int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
 {
     enum { K_KIND, K_LO, K_HI, K_COEFFS, K_DELAY, K_COUNT };
     static const char *const keys[K_COUNT] = {"kind", "lo", "hi", "coeffs", "delay"};
     char line[1024], *f[HYST_MAX_DEGREE + 3];
+    char q[CLI_QUOTE_SIZE];
     int seen[K_COUNT] = {0, 0, 0, 0, 0};
-    unsigned long no = 0ul;
+    unsigned long no = 0ul, nul;
     size_t n, i;
-    int k;
-    FILE *in = fopen(path, "r");
-    if (in == NULL) {
-        return cli_fail(cmd, "%s: cannot open the model file", path);
-    }
+    int k, longer;
     memset(m, 0, sizeof *m);
-    while (fgets(line, (int)sizeof line, in) != NULL) {
+    while (model_line(in, line, sizeof line, &nul, &longer)) {
         ++no;
-        if (strchr(line, '\n') == NULL && !feof(in)) {
-            (void)fclose(in);
+        if (longer) {
             return cli_fail(cmd, "%s:%lu: line longer than %u bytes", path, no,
                             (unsigned)sizeof line - 2u);
         }
+        if (nul != 0ul) {
+            return cli_fail(cmd, "%s:%lu: field %lu: NUL byte at column %lu (not a text file?)",
+                            path, no, field_at(line, nul), nul);
+        }
         if (no == 1ul) {
-            line[strcspn(line, "\r\n")] = '\0';
+            line[strcspn(line, "\r")] = '\0';
             if (strcmp(line, MAGIC) != 0) {
-                char q[CLI_QUOTE_SIZE];
-                (void)fclose(in);
                 return cli_fail(cmd, "%s:1: %s is not '" MAGIC "' (another format or version)",
                                 path, cli_quote(q, line));
             }
@@ -74,8 +131,6 @@ int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
         for (k = 0; k < K_COUNT && strcmp(f[0], keys[k]) != 0; ++k) {
         }
         if (k == K_COUNT || seen[k]) {
-            char q[CLI_QUOTE_SIZE];
-            (void)fclose(in);
             return cli_fail(cmd, "%s:%lu: field 1: %s %s", path, no, cli_quote(q, f[0]),
                             k == K_COUNT ? "is not a key (kind, lo, hi, coeffs, delay)"
                                          : "given twice");
@@ -83,22 +138,17 @@ int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
         seen[k] = 1;
         if (k == K_KIND) {
             if (n != 2u || strcmp(f[1], "poly") != 0) {
-                (void)fclose(in);
                 return cli_fail(cmd, "%s:%lu: field 2: kind must be 'poly'", path, no);
             }
             continue;
         }
-        if (k == K_COEFFS ? (n < 3u || n > HYST_MAX_DEGREE + 2u) : n != 2u) {
-            (void)fclose(in);
-            return cli_fail(cmd, "%s:%lu: %s needs %s", path, no, keys[k],
-                            k == K_COEFFS ? "2 to 10 numbers (c_n ... c_0)" : "one value");
+        if (model_count(cmd, path, no, keys[k], k == K_COEFFS, n) != 0) {
+            return 1;
         }
         for (i = 1u; i < n; ++i) {
             double v;
             if (!cli_parse_double(f[i], &v) ||
                 (k == K_DELAY && !(v >= 0.0 && v <= 1e9 && v == (double)(unsigned long)v))) {
-                char q[CLI_QUOTE_SIZE];
-                (void)fclose(in);
                 return cli_fail(cmd, "%s:%lu: field %lu: %s is not %s", path, no,
                                 (unsigned long)(i + 1u), cli_quote(q, f[i]),
                                 k == K_DELAY ? "a whole number of samples" : "a finite number");
@@ -117,7 +167,6 @@ int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
             m->ncoef = n - 1u;
         }
     }
-    (void)fclose(in);
     if (no == 0ul) {
         return cli_fail(cmd, "%s: empty model file", path);
     }
@@ -127,6 +176,21 @@ int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
         }
     }
     return 0;
+}
+
+int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
+{
+    int rc;
+    FILE *in = fopen(path, "r");
+    if (in == NULL) {
+        return cli_fail(cmd, "%s: cannot open the model file", path);
+    }
+    rc = cli_model_parse(cmd, path, in, m);
+    if (rc == 0 && ferror(in)) {
+        rc = cli_fail(cmd, "%s: read error", path);
+    }
+    (void)fclose(in);
+    return rc;
 }
 
 size_t cli_model_text(const cli_model_t *m, char *buf, size_t size)

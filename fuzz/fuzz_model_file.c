@@ -1,0 +1,172 @@
+/* SPDX-License-Identifier: MIT */
+/* libFuzzer harness of the model-file reader of `hyst` (tools/cli/model_file.c,
+ * format hyst-model-text 1, docs/cli.md): the input is the file's bytes.
+ * Checks, besides ASan/UBSan (no crash, no over-read):
+ *  - an accepted model is sound (2..10 finite coefficients, a finite domain)
+ *    and round-trips: written by cli_model_text() and read back it is the
+ *    same model bit for bit, and writing that gives the same text again;
+ *  - a refusal places itself: "FILE:LINE: field K: ..." with LINE a line of
+ *    the input and K at most one past that line's fields, or one of the
+ *    messages about a whole line (too long; line 1 not the format's first
+ *    line) or the whole file (empty; a key missing).
+ * Seeds: fuzz/corpus_model_file (fuzz/make_corpus.py). */
+#define _POSIX_C_SOURCE 200809L /* fmemopen */
+#include "cli.h"
+#include "hyst/hyst.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CHECK(cond)                                                                       \
+    do {                                                                                  \
+        if (!(cond)) {                                                                    \
+            fprintf(stderr, "fuzz: %s:%d: check failed: %s\nmessage: %s\n", __FILE__,   \
+                    __LINE__, #cond, msg);                                                \
+            abort();                                                                      \
+        }                                                                                 \
+    } while (0)
+
+#define PATH "fuzz.hyst"
+#define PREFIX "hyst fuzz: " PATH
+#define LINE_MAX_BYTES 1022u /* the reader's limit, without the '\n' */
+
+static char msg[2048]; /* the message of the last refusal */
+
+/* Reads data[0..n) as a model file, its message (if any) into msg. */
+static int parse(const unsigned char *data, size_t n, cli_model_t *m)
+{
+    unsigned char *copy = (unsigned char *)malloc(n + 1u); /* fmemopen wants it writable */
+    FILE *in, *err, *saved = stderr;
+    int rc;
+    CHECK(copy != NULL);
+    if (n > 0u) {
+        memcpy(copy, data, n);
+    }
+    memset(msg, 0, sizeof msg);
+    in = fmemopen(copy, n, "r");
+    err = fmemopen(msg, sizeof msg - 1u, "w");
+    CHECK(in != NULL && err != NULL);
+    stderr = err; /* cli_fail() writes there */
+    rc = cli_model_parse("fuzz", PATH, in, m);
+    stderr = saved;
+    (void)fclose(err);
+    (void)fclose(in);
+    free(copy);
+    return rc;
+}
+
+/* Lines of the input (a last line without '\n' counts). */
+static unsigned long lines_of(const unsigned char *d, size_t n)
+{
+    unsigned long lines = 0ul;
+    size_t i;
+    for (i = 0u; i < n; ++i) {
+        lines += d[i] == '\n';
+    }
+    return lines + (n > 0u && d[n - 1u] != '\n');
+}
+
+/* Start and length of 1-based line no. */
+static const unsigned char *line_at(const unsigned char *d, size_t n, unsigned long no,
+                                    size_t *len)
+{
+    size_t i = 0u, start;
+    unsigned long at = 1ul;
+    while (at < no && i < n) {
+        at += d[i++] == '\n';
+    }
+    for (start = i; i < n && d[i] != '\n'; ++i) {
+    }
+    *len = i - start;
+    return d + start;
+}
+
+/* Blank-separated fields of a line (blanks: space, tab, CR; NUL is not one). */
+static unsigned long fields_of(const unsigned char *s, size_t len)
+{
+    unsigned long fields = 0ul;
+    int blank = 1;
+    size_t i;
+    for (i = 0u; i < len; ++i) {
+        const int b = s[i] == ' ' || s[i] == '\t' || s[i] == '\r';
+        fields += blank && !b;
+        blank = b;
+    }
+    return fields;
+}
+
+static void check_refusal(const unsigned char *d, size_t n)
+{
+    const char *p = msg + strlen(PREFIX);
+    const unsigned char *text;
+    unsigned long no, field;
+    size_t len;
+    char *end;
+    CHECK(strncmp(msg, PREFIX, strlen(PREFIX)) == 0);
+    CHECK(strchr(msg, '\n') == msg + strlen(msg) - 1u); /* one line */
+    if (strcmp(p, ": empty model file\n") == 0) {
+        CHECK(n == 0u);
+        return;
+    }
+    if (strncmp(p, ": the key ", 10u) == 0) {
+        CHECK(strstr(p, " is missing\n") != NULL);
+        return;
+    }
+    CHECK(p[0] == ':' && p[1] >= '1' && p[1] <= '9');
+    no = strtoul(p + 1, &end, 10);
+    CHECK(*end == ':' && no >= 1ul && no <= lines_of(d, n));
+    text = line_at(d, n, no, &len);
+    p = end + 1;
+    if (strncmp(p, " line longer than ", 18u) == 0) {
+        CHECK(len > LINE_MAX_BYTES);
+        return;
+    }
+    CHECK(len <= LINE_MAX_BYTES);
+    if (no == 1ul && strstr(p, " is not 'hyst-model-text 1'") != NULL) {
+        return;
+    }
+    CHECK(strncmp(p, " field ", 7u) == 0 && p[7] >= '1' && p[7] <= '9');
+    field = strtoul(p + 7, &end, 10);
+    CHECK(field <= fields_of(text, len) + 1ul);
+}
+
+static int same_bits(const double *a, const double *b, size_t n)
+{
+    return memcmp(a, b, n * sizeof *a) == 0;
+}
+
+static void check_round_trip(const cli_model_t *m)
+{
+    static char text[4096], again[4096];
+    cli_model_t back;
+    size_t len, len2, i;
+    CHECK(m->ncoef >= 2u && m->ncoef <= HYST_MAX_DEGREE + 1u);
+    CHECK(isfinite(m->lo) && isfinite(m->hi));
+    for (i = 0u; i < m->ncoef; ++i) {
+        CHECK(isfinite(m->coeffs[i]));
+    }
+    len = cli_model_text(m, text, sizeof text);
+    CHECK(len > 0u);
+    CHECK(parse((const unsigned char *)text, len, &back) == 0);
+    CHECK(back.ncoef == m->ncoef && back.delay == m->delay);
+    CHECK(same_bits(&back.lo, &m->lo, 1u) && same_bits(&back.hi, &m->hi, 1u));
+    CHECK(same_bits(back.coeffs, m->coeffs, sizeof m->coeffs / sizeof m->coeffs[0]));
+    len2 = cli_model_text(&back, again, sizeof again);
+    CHECK(len2 == len && memcmp(again, text, len) == 0);
+}
+
+int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
+{
+    cli_model_t m;
+    if (parse(data, size, &m) == 0) {
+        CHECK(msg[0] == '\0');
+        check_round_trip(&m);
+    } else {
+        check_refusal(data, size);
+    }
+    return 0;
+}
