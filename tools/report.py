@@ -294,6 +294,44 @@ def compensation(sec, md, out):
         md.append(f"![compensation]({save(fig, out, 'compensation.png')})\n")
 
 
+def asymmetric(sec, md, out):
+    v = sec["values"]
+    md.append("## Asymmetric plant with a lagging sensor\n")
+    md.append("A plant that is not a TCM (`examples/common/plant_everett.c`): Madelung's rules with a "
+              "non-polynomial, non-separable branch function whose loops grow with their centre (rising and "
+              "falling branches are not point reflections), read through a first-order sensor lag of 3 "
+              "samples, noise 0.1 % of the range. Identified on the target from 6 major loops (the first "
+              "dropped): the symmetric TCM's degree and delay chosen by hold-out (fit on two thirds, score "
+              "the prediction of the last third, the fewest parameters within 1 % of the best), PI-10's "
+              "weights by non-negative least squares at the same delay. Then both predict the sensor's "
+              "reading of the paper's test signal (delay applied). Errors in µm.\n")
+    md.append("| model | parameters | hold-out RMS | test signal RMS | test signal max |\n|---|---|---|---|---|")
+    md.append(f"| symmetric TCM, degree {int(v['tcm_degree'])}, delay {int(v['tcm_delay'])} | "
+              f"{int(v['tcm_params'])} | {fmt(v['tcm_holdout_rms'])} | {fmt(v['tcm_predict_rms'])} | "
+              f"{fmt(v['tcm_predict_max'])} |")
+    md.append(f"| PI-10 (NNLS) | {int(v['pi_params'])} | {fmt(v['pi_holdout_rms'])} | "
+              f"{fmt(v['pi_predict_rms'])} | {fmt(v['pi_predict_max'])} |")
+    md.append("")
+    md.append("Both models are point-symmetric (rule 4; a PI model is too), so neither can follow the plant's "
+              "asymmetry: that, not their parameter count, bounds their error here. The same limits the "
+              "compensator: the inverse of the symmetric TCM drives the actuator along the test signal's "
+              "shape (5-95 % of the stroke) with RMS tracking error "
+              f"{fmt(v['comp_rms'])} µm against {fmt(v['open_rms'])} open loop (linear scaling): "
+              f"**comp_rms_ratio {v['comp_rms_ratio']:.2f}** (max {fmt(v['comp_max'])} vs "
+              f"{fmt(v['open_max'])}).\n")
+    t = sec["tables"].get("prediction")
+    if t is not None and len(t["data"]):
+        fig, ax = plt.subplots(figsize=(7, 4))
+        x = col(t, "x_V")
+        ax.plot(x, col(t, "y_sensor"), lw=2.5, label="plant (sensor)")
+        ax.plot(x, col(t, "y_tcm"), lw=1, label="symmetric TCM")
+        ax.plot(x, col(t, "y_pi"), lw=1, ls="--", label="PI-10")
+        ax.set_xlabel("input (V)")
+        ax.set_ylabel("output (µm)")
+        ax.legend()
+        md.append(f"![asymmetric plant]({save(fig, out, 'asymmetric.png')})\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("firmware_output")
@@ -321,6 +359,8 @@ def main():
         memory(secs["memory"], md, read_summary(args.bench))
     if "compensation" in secs:
         compensation(secs["compensation"], md, args.out_dir)
+    if "asymmetric" in secs:
+        asymmetric(secs["asymmetric"], md, args.out_dir)
     failures = meta.get("failures", "?")
     md.append(f"---\nChecks that failed on the target: {failures}.\n")
     with open(os.path.join(args.out_dir, "README.md"), "w", encoding="utf-8") as fh:
