@@ -290,14 +290,20 @@ static double everett_step(void *plant, double x)
  * (0..40) mapped onto 5 %..95 % of [y_lo, y_hi]: one copy of the plant
  * driven open loop by a linear scaling of [y_lo, y_hi] onto 0..40 V, the
  * other through the compensator `model` (initialised by the caller).
- * Prints the tracking table and open_/comp_ RMS and max errors; returns the
- * squared-sum ratio open / compensated. */
-static double track(const hyst_real_t *xs, long n, double y_lo, double y_hi, plant_step_t step,
-                    void *open_plant, void *comp_plant)
+ * Prints open_/comp_ RMS and max errors, their keys prefixed by `tag` if
+ * not NULL, else with the tracking table; returns the squared-sum ratio
+ * open / compensated. */
+static double track(const char *tag, const hyst_real_t *xs, long n, double y_lo, double y_hi,
+                    plant_step_t step, void *open_plant, void *comp_plant)
 {
-    double ss_open = 0.0, ss_comp = 0.0, max_open = 0.0, max_comp = 0.0;
+    static const char *const keys[4] = {"open_rms", "open_max", "comp_rms", "comp_max"};
+    double ss_open = 0.0, ss_comp = 0.0, max_open = 0.0, max_comp = 0.0, figures[4];
+    char key[48];
     long i;
-    printf("@table tracking i,y_ref,y_open,y_comp\n");
+    int k;
+    if (tag == NULL) {
+        printf("@table tracking i,y_ref,y_open,y_comp\n");
+    }
     for (i = 0; i < n; ++i) {
         const double y_ref = y_lo + (y_hi - y_lo) * (0.05 + 0.9 * (double)xs[i] / 40.0);
         const double x_open = 40.0 * (y_ref - y_lo) / (y_hi - y_lo);
@@ -308,14 +314,29 @@ static double track(const hyst_real_t *xs, long n, double y_lo, double y_hi, pla
         ss_comp += (yc - y_ref) * (yc - y_ref);
         max_open = fabs(yo - y_ref) > max_open ? fabs(yo - y_ref) : max_open;
         max_comp = fabs(yc - y_ref) > max_comp ? fabs(yc - y_ref) : max_comp;
-        printf("%ld,%.6f,%.6f,%.6f\n", i, y_ref, yo, yc);
+        if (tag == NULL) {
+            printf("%ld,%.6f,%.6f,%.6f\n", i, y_ref, yo, yc);
+        }
     }
-    value("open_rms", sqrt(ss_open / (double)n));
-    value("open_max", max_open);
-    value("comp_rms", sqrt(ss_comp / (double)n));
-    value("comp_max", max_comp);
+    figures[0] = sqrt(ss_open / (double)n);
+    figures[1] = max_open;
+    figures[2] = sqrt(ss_comp / (double)n);
+    figures[3] = max_comp;
+    for (k = 0; k < 4; ++k) {
+        (void)snprintf(key, sizeof key, "%s%s%s", tag != NULL ? tag : "", tag != NULL ? "_" : "",
+                       keys[k]);
+        value(key, figures[k]);
+    }
     check(ss_comp < ss_open && max_comp < max_open, "compensation_better");
     return ss_open / ss_comp;
+}
+
+/* The desired displacement of full major loops only (0..40 twice, the
+ * test signal's step), to tell the major loop's fit from minor loops. */
+static long major_loops(hyst_real_t *xs, long max)
+{
+    static const double levels[4] = {40.0, 0.0, 40.0, 0.0};
+    return ramp_path(0.0, levels, 4, 0.1, xs, max);
 }
 
 /* Feedforward compensation of the same Bouc-Wen plant: the desired
@@ -333,7 +354,14 @@ static void compensation(void)
     plant_bw_init_piezo(&open_plant);
     plant_bw_init_piezo(&comp_plant);
     n = ramp_path(0.0, levels, paper_levels(0.0, 40.0, levels), 0.1, xs, 8192);
-    (void)track(xs, n, (double)hyst_poly_eval(&plant_f0, plant_f0.lo),
+    (void)track(NULL, xs, n, (double)hyst_poly_eval(&plant_f0, plant_f0.lo),
+                (double)hyst_poly_eval(&plant_f0, plant_f0.hi), bw_step, &open_plant, &comp_plant);
+    /* the same compensator along major loops only */
+    check(HYST_INIT_INVERSE(model, &plant_f0) == HYST_OK, "compensation_init");
+    plant_bw_init_piezo(&open_plant);
+    plant_bw_init_piezo(&comp_plant);
+    n = major_loops(xs, 8192);
+    (void)track("major", xs, n, (double)hyst_poly_eval(&plant_f0, plant_f0.lo),
                 (double)hyst_poly_eval(&plant_f0, plant_f0.hi), bw_step, &open_plant, &comp_plant);
     end();
 }
@@ -494,9 +522,16 @@ static void asymmetric(void)
         plant_everett_init_piezo(&open_plant);
         plant_everett_init_piezo(&comp_plant);
         value("comp_rms_ratio",
-              sqrt(track(xs, n, (double)hyst_poly_eval(&best_f0, best_f0.lo),
+              sqrt(track(NULL, xs, n, (double)hyst_poly_eval(&best_f0, best_f0.lo),
                          (double)hyst_poly_eval(&best_f0, best_f0.hi), everett_step, &open_plant,
                          &comp_plant)));
+        check(HYST_INIT_INVERSE(model, &best_f0) == HYST_OK, "asymmetric_inverse");
+        plant_everett_init_piezo(&open_plant);
+        plant_everett_init_piezo(&comp_plant);
+        n = major_loops(xs, 8192);
+        (void)track("major", xs, n, (double)hyst_poly_eval(&best_f0, best_f0.lo),
+                    (double)hyst_poly_eval(&best_f0, best_f0.hi), everett_step, &open_plant,
+                    &comp_plant);
     }
     end();
 }
