@@ -316,6 +316,17 @@ NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
     if (curve->kind == (unsigned)HYST_CURVE_POLY_INV) {
         return NUM_NAME(poly_inv_g)(curve, d);
     }
+    if (curve->kind == (unsigned)HYST_CURVE_EVERETT) { /* E(lo + d, lo): rising from A0 */
+        const unsigned n = curve->u.everett.degree;
+        const NUM_T w = d * curve->unit.NUM_F;
+        NUM_T acc = 0;
+        unsigned i, at = 0u;
+        for (i = 0u; i < n; ++i) { /* row i ends with its anchor^0 entry */
+            at += i + 1u;
+            acc = acc * w + curve->u.everett.rise[at - 1u].NUM_F;
+        }
+        return acc * w;
+    }
     /* PWL, PWL_INV: the difference of two interpolations; exactly 0 at d = 0 */
     return NUM_NAME(pwl_eval)(curve, curve->lo.NUM_F + d) - curve->y_lo.NUM_F;
 }

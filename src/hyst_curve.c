@@ -354,6 +354,11 @@ hyst_status_t hyst_curve_check(const hyst_curve_t *curve)
                        curve->u.poly_inv.fwd.degree <= HYST_MAX_DEGREE
                    ? HYST_OK
                    : HYST_ERR_ARG;
+    case HYST_CURVE_EVERETT:
+        return curve->u.everett.degree >= 1u &&
+                       curve->u.everett.degree <= (unsigned)HYST_EVERETT_MAX_DEGREE
+                   ? HYST_OK
+                   : HYST_ERR_ARG;
     case HYST_CURVE_PWL:
     case HYST_CURVE_PWL_INV:
         return curve->u.pwl.x.f32 != NULL && curve->u.pwl.y.f32 != NULL && curve->u.pwl.n >= 2u

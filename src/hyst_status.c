@@ -30,6 +30,8 @@ const char *hyst_status_str(int status)
     case HYST_ERR_BUSY: return "state kept changing during the copy; try again";
     case HYST_ERR_ILL_CONDITIONED:
         return "curve too ill-conditioned for this number type (use f64 or a lower degree)";
+    case HYST_ERR_NOT_MONOTONE:
+        return "branch function E not increasing in a and decreasing in b on the triangle";
     default: return "unknown status";
     }
 }

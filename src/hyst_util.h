@@ -113,6 +113,11 @@ hyst_status_t hyst_check_init(const hyst_tcm_t *S, const hyst_curve_t *curve,
 hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsigned variant,
                                unsigned long layout);
 
+/* The asymmetric curve of a branch function E in the variant's type
+ * (src/hyst_everett.c; curve.h, hyst_*_curve_from_everett()). */
+hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, unsigned variant,
+                                  unsigned long layout);
+
 /* What bounded memory keeps besides the TPs, in wide numbers (snapshots):
  * the stack level of the shallowest live merge ((size_t)-1: none), its
  * error bound, and the deadband window (widest skipped reversal and its

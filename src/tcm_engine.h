@@ -66,6 +66,8 @@
 #define TCM_DEADBAND 4u  /* reversals need the deadband test */
 #define TCM_STALE 8u     /* the last sample's status is not OK: the next one
                           * resets it (off the plain path, which never sees it) */
+#define TCM_PER_BRANCH 16u /* the branch's coefficients depend on its turning
+                            * point (asymmetric kind): settle() derives them */
 
 /* G at u, any kind: Horner for polynomials, else out of line. */
 HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
@@ -100,6 +102,30 @@ HYST_INLINE TCM_Y TCM_NAME(on_branch)(const hyst_tcm_t *S, TCM_Y g)
 HYST_INLINE TCM_Y TCM_NAME(branch_g)(const hyst_tcm_t *S, TCM_X x)
 {
     return TCM_NAME(g_unit)(S, (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale));
+}
+
+/* E(a, b), a >= b: g(a - b) for the symmetric kinds; the asymmetric
+ * kind's from its rising table (rare paths: merges, the deadband). */
+static TCM_NOINLINE TCM_Y TCM_NAME(e)(const hyst_tcm_t *S, TCM_X a, TCM_X b)
+{
+    if ((S->detour & TCM_PER_BRANCH) != 0u) {
+        const unsigned n = S->curve->u.everett.degree;
+        const hyst_num_t *row = S->curve->u.everett.rise;
+        const TCM_Y t = (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit);
+        const TCM_Y w = TCM_D(a, b) * YV(S->unit);
+        TCM_Y acc = 0;
+        unsigned i, k;
+        for (i = 0u; i < n; ++i) {
+            TCM_Y c = YV(row[0]);
+            for (k = 1u; k <= i; ++k) {
+                c = c * t + YV(row[k]);
+            }
+            acc = acc * w + c;
+            row += i + 1u;
+        }
+        return acc * w;
+    }
+    return TCM_NAME(g_unit)(S, TCM_D(a, b) * YV(S->unit));
 }
 
 /* Output on the current branch. One formula for both paths (the fast path
@@ -179,7 +205,10 @@ static void TCM_NAME(set_detour)(hyst_tcm_t *S)
     S->detour = merged | (S->degree == 0u ? TCM_SLOW_ONLY : 0u) |
                 (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
                 (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u) |
-                (S->status != HYST_OK ? TCM_STALE : 0u);
+                (S->status != HYST_OK ? TCM_STALE : 0u) |
+                (S->curve != NULL && S->curve->kind == (unsigned)HYST_CURVE_EVERETT
+                     ? TCM_PER_BRANCH
+                     : 0u);
 }
 
 /* A sample that leaves the plain path starts with the status OK. */
@@ -232,6 +261,26 @@ static void TCM_NAME(ended_not_ok)(hyst_tcm_t *S)
     }
 }
 
+/* The asymmetric kind: the current branch's G from the curve's table of
+ * its direction (curve.h): coefficient of w^(n - i), a polynomial in the
+ * anchor (the current TP's place in the domain, 0..1), by Horner's rule. */
+static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S)
+{
+    const unsigned n = S->curve->u.everett.degree;
+    const hyst_num_t *row =
+        S->moving_end == 0u ? S->curve->u.everett.rise : S->curve->u.everett.fall;
+    const TCM_Y anchor = (YV(S->x_ctp) - TCM_R(XV(S->lo))) * YV(S->unit);
+    unsigned i, k;
+    for (i = 0u; i < n; ++i) { /* row i: i + 1 entries */
+        TCM_Y acc = YV(row[0]);
+        for (k = 1u; k <= i; ++k) {
+            acc = acc * anchor + YV(row[k]);
+        }
+        YV(S->coef[i]) = acc;
+        row += i + 1u;
+    }
+}
+
 /* Derives the fast-path cache from the arrays and the last input, then
  * empties the window if every sample must be slow. */
 static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x)
@@ -240,6 +289,9 @@ static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x)
         TCM_NAME(settle_rising)(S, x, S->n_ltp - 1u, S->n_rtp);
     } else {
         TCM_NAME(settle_falling)(S, x, S->n_ltp, S->n_rtp - 1u);
+    }
+    if ((S->detour & TCM_PER_BRANCH) != 0u) {
+        TCM_NAME(derive)(S);
     }
     if ((S->detour & TCM_SLOW_ONLY) != 0u) {
         TCM_NAME(close_window)(S);
@@ -311,10 +363,14 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
     YV(S->y_hi) = YV(curve->y_hi);
     YV(S->unit) = unit;
     YV(S->rounding) = YV(curve->rounding);
-    S->degree = curve->kind == (unsigned)HYST_CURVE_POLY ? curve->u.poly.degree : 0u;
+    S->degree = curve->kind == (unsigned)HYST_CURVE_POLY      ? curve->u.poly.degree
+                : curve->kind == (unsigned)HYST_CURVE_EVERETT ? curve->u.everett.degree
+                                                              : 0u;
     S->horner = S->degree;
-    for (k = 0u; k < HYST_MAX_DEGREE; ++k) {
-        YV(S->coef[k]) = S->degree != 0u && k < S->degree ? YV(curve->u.poly.a[k]) : 0;
+    for (k = 0u; k < HYST_MAX_DEGREE; ++k) { /* the asymmetric kind's: per branch, settle() */
+        YV(S->coef[k]) = curve->kind == (unsigned)HYST_CURVE_POLY && k < S->degree
+                             ? YV(curve->u.poly.a[k])
+                             : 0;
     }
     S->seq = 0u;
     S->req_reset = S->done_reset = 0u;
@@ -548,6 +604,13 @@ static TCM_NOINLINE void TCM_NAME(merge)(hyst_tcm_t *S, TCM_X x_prev, size_t *nr
     YV(S->yltp)[l1] = yv;
     *nr = r1;
     YV(S->forgot) += NUM_NAME(abs)(miss) + resid;
+    if ((S->detour & TCM_PER_BRANCH) != 0u) {
+        /* asymmetric kind: branches from V and from the lost L1 differ in
+         * shape, not only in place, so the miss does not bound what
+         * follows; the full model and this one (clamped while a merge is
+         * alive, slow_only()) both stay in the major loop's range */
+        YV(S->forgot) = YV(S->y_hi) - YV(S->y_lo);
+    }
     if (2u * r1 - 1u < S->forgot_level) { /* stack position of R2 */
         S->forgot_level = 2u * r1 - 1u;
     }
@@ -560,12 +623,20 @@ static TCM_NOINLINE void TCM_NAME(merge)(hyst_tcm_t *S, TCM_X x_prev, size_t *nr
  * at most d inside it; its error is at most that loop's height
  * |g(d) - 2 g(d/2)| (docs/memory.md), kept for the widest d until the stack
  * next changes (the full model has then wiped that loop too). */
-static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X d)
+static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
 {
+    const TCM_X d = (TCM_X)(a - b);
     if (d > XV(S->db_reach)) {
         const TCM_Y full = TCM_D(d, (TCM_X)0);
         XV(S->db_reach) = d;
-        YV(S->db_err) = NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_NAME(g)(S, full * NUM_C(0.5)));
+        if ((S->detour & TCM_PER_BRANCH) != 0u) { /* the loop [b, a]'s height at its middle */
+            const TCM_X m = TCM_MID(b, a);
+            YV(S->db_err) = NUM_NAME(abs)(TCM_NAME(e)(S, a, b) - TCM_NAME(e)(S, a, m) -
+                                          TCM_NAME(e)(S, m, b));
+        } else {
+            YV(S->db_err) =
+                NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_NAME(g)(S, full * NUM_C(0.5)));
+        }
         TCM_NAME(set_detour)(S);
     }
 }
@@ -664,7 +735,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_p
     size_t nl = S->n_ltp, nr = S->n_rtp;
     TCM_NAME(fresh)(S);
     if ((TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev) < XV(S->deadband)) {
-        TCM_NAME(skip)(S, (TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev)); /* keep falling */
+        TCM_NAME(skip)(S, x_prev, XV(S->xrtp)[nr - 1u]); /* keep falling */
     } else {
         if (nl == S->capacity) {
             /* Only the LTP array can fill (A0 takes one of its entries). */
@@ -691,7 +762,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_down)(hyst_tcm_t *S, TCM_X x, TCM_X x
     const size_t nl = S->n_ltp, nr = S->n_rtp;
     TCM_NAME(fresh)(S);
     if ((TCM_X)(x_prev - XV(S->xltp)[nl - 1u]) < XV(S->deadband)) {
-        TCM_NAME(skip)(S, (TCM_X)(x_prev - XV(S->xltp)[nl - 1u])); /* keep rising */
+        TCM_NAME(skip)(S, XV(S->xltp)[nl - 1u], x_prev); /* keep rising */
     } else {
         XV(S->xrtp)[nr] = TCM_NORM(x_prev);
         YV(S->yrtp)[nr] = YV(S->y_prev);
@@ -745,7 +816,7 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             nr = TCM_RTP_ABOVE(XV(S->xrtp), nr - 1u, x);
             S->n_ltp = nr + 1u;
             S->n_rtp = nr;
-            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE)) != 0u) {
+            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE | TCM_PER_BRANCH)) != 0u) {
                 return TCM_NAME(wiped_detour)(S, x, 2u * nr + 1u, TCM_ROSE);
             }
             nl = nr; /* the current LTP's index */
@@ -771,7 +842,7 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             nl = TCM_LTP_BELOW(XV(S->xltp), nl - 1u, x);
             S->n_ltp = nl;
             S->n_rtp = nl;
-            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE)) != 0u) {
+            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE | TCM_PER_BRANCH)) != 0u) {
                 return TCM_NAME(wiped_detour)(S, x, 2u * nl, TCM_FELL);
             }
             nr = nl - 1u; /* the current RTP's index (nl >= 1: A0) */

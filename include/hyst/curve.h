@@ -53,8 +53,35 @@ typedef enum hyst_curve_kind {
     HYST_CURVE_POLY = 1,     /**< polynomial f0, Horner's rule (inline) */
     HYST_CURVE_PWL = 2,      /**< piecewise-linear f0, binary search */
     HYST_CURVE_POLY_INV = 3, /**< f0^-1 of a polynomial: monotone bisection */
-    HYST_CURVE_PWL_INV = 4   /**< f0^-1 of a piecewise-linear f0: exact */
+    HYST_CURVE_PWL_INV = 4,  /**< f0^-1 of a piecewise-linear f0: exact */
+    HYST_CURVE_EVERETT = 6   /**< asymmetric: a two-variable branch function E (inline) */
 } hyst_curve_kind_t;
+
+/** Highest total degree of a branch function E (hyst_everett_t). */
+#define HYST_EVERETT_MAX_DEGREE 4
+/** Coefficients of E at that degree: w^i t^j, i >= 1, i + j <= degree. */
+#define HYST_EVERETT_TERMS (HYST_EVERETT_MAX_DEGREE * (HYST_EVERETT_MAX_DEGREE + 1) / 2)
+
+/**
+ * @brief An asymmetric model (docs/theory.md, "Asymmetric hysteresis"): its
+ *        branch function E, a polynomial in the loop's width and lower end.
+ *
+ * Rising from a turning point (b, y_b): y = y_b + E(x, b); falling from
+ * (a, y_a): y = y_a - E(a, x), with, for lo <= b <= a <= hi,
+ *   E(a, b) = sum of e[i - 1][j] w^i t^j over i >= 1, j >= 0, i + j <= degree,
+ *   w = (a - b) / (hi - lo),  t = (b - lo) / (hi - lo).
+ * E(b, b) = 0 by construction; E must increase in a and decrease in b on the
+ * whole triangle (checked). A symmetric TCM is the case e[i - 1][j] = 0 for
+ * j > 0 (E then depends on the width only).
+ */
+typedef struct hyst_everett {
+    unsigned degree; /**< total degree in (w, t), 1..HYST_EVERETT_MAX_DEGREE */
+    hyst_wide_t lo;  /**< domain */
+    hyst_wide_t hi;  /**< upper end, hi > lo */
+    hyst_wide_t y_lo; /**< output at lo after reset */
+    /** e[i - 1][j]: coefficient of w^i t^j; entries with i + j > degree must be 0 */
+    hyst_wide_t e[HYST_EVERETT_MAX_DEGREE][HYST_EVERETT_MAX_DEGREE];
+} hyst_everett_t;
 
 /**
  * @brief Polynomial branch shape on u in [0, 1]:
@@ -100,6 +127,15 @@ typedef struct hyst_curve {
             hyst_num_t knot_u[HYST_INV_KNOTS + 1];
         } poly_inv; /**< POLY_INV */
         struct {
+            unsigned degree; /**< n */
+            /** per branch: the coefficient of w^i is a polynomial in the
+             *  branch's anchor (rising: t of its LTP; falling: s = (a - lo) /
+             *  (hi - lo) of its RTP); row i = n..1 (highest power of w first),
+             *  anchor powers highest first, rows of n - i + 1 entries */
+            hyst_num_t rise[HYST_EVERETT_TERMS];
+            hyst_num_t fall[HYST_EVERETT_TERMS];
+        } everett; /**< EVERETT */
+        struct {
             hyst_cptr_t x;  /**< the curve's breakpoints (caller's array) */
             hyst_cptr_t y;  /**< its values (caller's array) */
             size_t n;       /**< points, >= 2 */
@@ -130,6 +166,35 @@ hyst_status_t hyst_f32_curve_from_poly_(hyst_curve_t *curve, const hyst_poly_t *
 hyst_status_t hyst_f64_curve_from_poly_(hyst_curve_t *curve, const hyst_poly_t *f0,
                                         unsigned long layout);
 #define hyst_f64_curve_from_poly(curve, f0) hyst_f64_curve_from_poly_((curve), (f0), HYST_LAYOUT)
+#endif
+/**@}*/
+
+/**
+ * @name Asymmetric curve
+ * @brief Validates a branch function E (hyst_everett_t) and prepares its
+ *        per-branch tables.
+ *
+ * Checks: NULL pointers, degree in 1..HYST_EVERETT_MAX_DEGREE, the domain
+ * (HYST_ERR_DOMAIN), finite coefficients, zero above the degree
+ * (HYST_ERR_COEFF), and, once, that dE/da >= 0 and dE/db <= 0 on the whole
+ * triangle lo <= b <= a <= hi (Bernstein-Bezier coefficients on the
+ * triangle, subdivided where needed; HYST_ERR_NOT_MONOTONE otherwise), and
+ * the rounding bound in the variant's type (HYST_ERR_ILL_CONDITIONED). The
+ * curve then runs on hyst_*_init_curve() (it must outlive the instance):
+ * the fast path is the polynomial kind's, the branch's coefficients are
+ * derived when the current turning point changes.
+ * @return HYST_OK or the first failed check; @p curve written only on success.
+ */
+/**@{*/
+hyst_status_t hyst_f32_curve_from_everett_(hyst_curve_t *curve, const hyst_everett_t *e,
+                                           unsigned long layout);
+#define hyst_f32_curve_from_everett(curve, e) \
+    hyst_f32_curve_from_everett_((curve), (e), HYST_LAYOUT)
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_from_everett_(hyst_curve_t *curve, const hyst_everett_t *e,
+                                           unsigned long layout);
+#define hyst_f64_curve_from_everett(curve, e) \
+    hyst_f64_curve_from_everett_((curve), (e), HYST_LAYOUT)
 #endif
 /**@}*/
 
@@ -246,6 +311,7 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 /** @name Default variant (f32, or f64 with HYST_USE_DOUBLE) */
 /**@{*/
 #define hyst_curve_from_poly HYST_DEFAULT_NAME_(curve_from_poly)
+#define hyst_curve_from_everett HYST_DEFAULT_NAME_(curve_from_everett)
 #define hyst_curve_from_pwl HYST_DEFAULT_NAME_(curve_from_pwl)
 #define hyst_curve_eval HYST_DEFAULT_NAME_(curve_eval)
 #define hyst_curve_g HYST_DEFAULT_NAME_(curve_g)

@@ -43,8 +43,10 @@ typedef enum hyst_status {
                                       instance of another variant */
     HYST_ERR_OVERLAP = -19,      /**< caller arrays overlap */
     HYST_ERR_BUSY = -20,         /**< the stepping context kept changing the state (snapshot) */
-    HYST_ERR_ILL_CONDITIONED = -21 /**< the curve's rounding bound in this variant's type
+    HYST_ERR_ILL_CONDITIONED = -21, /**< the curve's rounding bound in this variant's type
                                         exceeds HYST_MAX_ROUNDING of its output range */
+    HYST_ERR_NOT_MONOTONE = -22    /**< a branch function E not increasing in a and
+                                        decreasing in b on the triangle b <= a */
 } hyst_status_t;
 
 /** @name Sticky event flags (hyst_events()): set by samples, cleared by the caller. */

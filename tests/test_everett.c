@@ -1,0 +1,400 @@
+/* SPDX-License-Identifier: MIT */
+/* The asymmetric kind (curve.h, hyst_everett_t): branches from a
+ * two-variable function E. Checked against a plain double reference written
+ * here (a list of turning points and the direct formula), for random E that
+ * init accepts; Madelung's rules 2 and 3 bit for bit; rule 4 exactly when E
+ * depends on the width only (then equal to the symmetric kind); the
+ * monotonicity proof against dense sampling; the refusals; block call,
+ * snapshots and bounded memory as for the symmetric kind. */
+#include "support.h"
+#include "unity.h"
+
+#include <math.h>
+#include <string.h>
+
+#define CAP 256
+#define SAMPLES 4000L
+#define N HYST_EVERETT_MAX_DEGREE
+
+static hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
+static hyst_real_t xl2[CAP], yl2[CAP], xr2[CAP], yr2[CAP];
+static hyst_real_t xs[SAMPLES], ys[SAMPLES], ys2[SAMPLES];
+static unsigned char snap[HYST_SNAPSHOT_SIZE(CAP)];
+static hyst_curve_t curve, curve2;
+static hyst_t S, T;
+static rng_t rng;
+
+#ifdef HYST_USE_DOUBLE
+#define AGREE 1e-9 /* of the output range */
+#else
+#define AGREE 1e-5
+#endif
+
+void setUp(void) { rng_seed(&rng, 1312u); }
+void tearDown(void) {}
+
+/* E(a, b) in double, straight from the coefficients. */
+static double e_of(const hyst_everett_t *e, double a, double b)
+{
+    const double span = e->hi - e->lo, w = (a - b) / span, t = (b - e->lo) / span;
+    double sum = 0.0;
+    unsigned i, j;
+    for (i = 1u; i <= e->degree; ++i) {
+        for (j = 0u; i + j <= e->degree; ++j) {
+            sum += e->e[i - 1u][j] * pow(w, (double)i) * pow(t, (double)j);
+        }
+    }
+    return sum;
+}
+
+/* The reference: Madelung's rules on a plain list of turning points. */
+typedef struct {
+    const hyst_everett_t *e;
+    double tx[CAP], ty[CAP];
+    int n;
+    double x, y;
+} ref_t;
+
+static void ref_init(ref_t *r, const hyst_everett_t *e)
+{
+    r->e = e;
+    r->tx[0] = e->lo;
+    r->ty[0] = e->y_lo;
+    r->n = 1;
+    r->x = e->lo;
+    r->y = e->y_lo;
+}
+
+static double ref_step(ref_t *r, double x)
+{
+    const int rising = (r->n - 1) % 2 == 0;
+    if (x > r->x) {
+        if (!rising) {
+            r->tx[r->n] = r->x;
+            r->ty[r->n++] = r->y;
+        }
+        while (r->n >= 3 && x >= r->tx[r->n - 2]) {
+            r->n -= 2;
+        }
+        r->y = r->ty[r->n - 1] + e_of(r->e, x, r->tx[r->n - 1]);
+    } else if (x < r->x) {
+        if (rising) {
+            r->tx[r->n] = r->x;
+            r->ty[r->n++] = r->y;
+        }
+        while (r->n >= 3 && x <= r->tx[r->n - 2]) {
+            r->n -= 2;
+        }
+        r->y = r->ty[r->n - 1] - e_of(r->e, r->tx[r->n - 1], x);
+        if (x <= r->e->lo) { /* every loop closed: back at A0, rising next */
+            r->n = 1;
+            r->y = r->e->y_lo;
+        }
+    }
+    r->x = x;
+    return r->y;
+}
+
+/* A random E of degree 1..N on a random domain: coefficients in
+ * [-1.5, 1] / (i + j) with a dominant positive width term, scaled; about
+ * one in four is not monotone. Init decides. */
+static hyst_everett_t random_e(void)
+{
+    hyst_everett_t e;
+    unsigned i, j;
+    const double scale = rng_range(&rng, 0.5, 20.0);
+    memset(&e, 0, sizeof e);
+    e.degree = 1u + rng_below(&rng, (unsigned)N);
+    /* ends exact in float: the reference's domain is the instance's */
+    e.lo = (double)(float)rng_range(&rng, -50.0, 50.0);
+    e.hi = (double)(float)(e.lo + rng_range(&rng, 1.0, 100.0));
+    e.y_lo = rng_range(&rng, -10.0, 10.0);
+    for (i = 1u; i <= e.degree; ++i) {
+        for (j = 0u; i + j <= e.degree; ++j) {
+            e.e[i - 1u][j] = scale * rng_range(&rng, -1.5, 1.0) / (double)(i + j);
+        }
+    }
+    e.e[0][0] = scale * rng_range(&rng, 1.0, 3.0);
+    return e;
+}
+
+/* dE/da >= 0 and dE/db <= 0 sampled on a grid of the triangle; the
+ * smallest value of both, relative to the range E(hi, lo). */
+static double sampled_slack(const hyst_everett_t *e)
+{
+    const double span = e->hi - e->lo, h = span * 1e-7, range = e_of(e, e->hi, e->lo);
+    double worst = 1e300;
+    int i, j;
+    for (i = 0; i <= 40; ++i) {
+        for (j = 0; i + j <= 40; ++j) {
+            const double b = e->lo + span * (double)j / 40.0, a = b + span * (double)i / 40.0;
+            const double da = (e_of(e, a + (i + j < 40 ? h : 0.0), b) - e_of(e, a - (i > 0 ? h : 0.0), b));
+            const double db = (e_of(e, a, b - (j > 0 ? h : 0.0)) - e_of(e, a, b + (i > 0 ? h : 0.0)));
+            worst = da < worst ? da : worst;
+            worst = db < worst ? db : worst;
+        }
+    }
+    return worst / (h * range / span);
+}
+
+static hyst_status_t init_e(hyst_t *I, hyst_curve_t *c, const hyst_everett_t *e, hyst_real_t *a,
+                            hyst_real_t *b, hyst_real_t *d, hyst_real_t *f, size_t cap)
+{
+    const hyst_status_t st = hyst_curve_from_everett(c, e);
+    return st != HYST_OK ? st : hyst_init_curve(I, c, a, b, d, f, cap);
+}
+
+/* Random walk with jumps over the domain. */
+static void walk(const hyst_everett_t *e, hyst_real_t *x, long n)
+{
+    double v = 0.5 * (e->lo + e->hi);
+    long k;
+    for (k = 0; k < n; ++k) {
+        if (rng_below(&rng, 10u) == 0u) {
+            v = rng_range(&rng, e->lo, e->hi);
+        } else {
+            v += (e->hi - e->lo) * rng_range(&rng, -0.05, 0.05);
+        }
+        v = v < e->lo ? e->lo : (v > e->hi ? e->hi : v);
+        x[k] = (hyst_real_t)v;
+    }
+}
+
+static void test_random_e_agree_with_the_reference(void)
+{
+    int trial, accepted = 0, refused = 0;
+    double worst = 0.0;
+    for (trial = 0; trial < 60; ++trial) {
+        const hyst_everett_t e = random_e();
+        ref_t r;
+        double range;
+        long k;
+        const hyst_status_t st = init_e(&S, &curve, &e, xl, yl, xr, yr, CAP);
+        if (st != HYST_OK) {
+            TEST_ASSERT_TRUE(st == HYST_ERR_NOT_MONOTONE || st == HYST_ERR_ILL_CONDITIONED);
+            if (st == HYST_ERR_NOT_MONOTONE) { /* refused: negative somewhere, or nearly */
+                TEST_ASSERT_TRUE(sampled_slack(&e) < 1e-3);
+            }
+            ++refused;
+            continue;
+        }
+        ++accepted;
+        TEST_ASSERT_TRUE(sampled_slack(&e) > -1e-6); /* the proof holds on samples */
+        range = e_of(&e, e.hi, e.lo);
+        ref_init(&r, &e);
+        walk(&e, xs, SAMPLES);
+        for (k = 0; k < SAMPLES; ++k) {
+            const double y = (double)hyst_step(&S, xs[k]);
+            const double d = fabs(y - ref_step(&r, (double)xs[k])) / range;
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&S));
+            worst = d > worst ? d : worst;
+        }
+        TEST_ASSERT_EQUAL_UINT((unsigned)(r.n - 1), (unsigned)hyst_tp_count(&S));
+    }
+    TEST_PRINTF("random E: %d accepted, %d refused; worst |y - y_ref| %g of the range", accepted,
+                refused, worst);
+    TEST_ASSERT_TRUE(accepted >= 20 && refused >= 1);
+    TEST_ASSERT_TRUE(worst <= AGREE);
+}
+
+/* Rules 2 and 3: an excursion inside the current branch returns to the
+ * same output bit for bit, and continues like a twin that stayed. */
+static void test_minor_loops_close_bit_for_bit(void)
+{
+    int trial, checked = 0;
+    for (trial = 0; trial < 200; ++trial) {
+        hyst_everett_t e = random_e();
+        hyst_real_t xa, ya, xc;
+        double lo, hi;
+        long k;
+        if (init_e(&S, &curve, &e, xl, yl, xr, yr, CAP) != HYST_OK) {
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, CAP));
+        walk(&e, xs, 60L);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_process(&S, xs, ys, 60u));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_process(&T, xs, ys2, 60u));
+        xa = hyst_input(&S);
+        ya = hyst_output(&S);
+        xc = hyst_rising(&S) ? S.xltp.HYST_R[S.n_ltp - 1u] : S.xrtp.HYST_R[S.n_rtp - 1u];
+        lo = (double)(xa < xc ? xa : xc);
+        hi = (double)(xa < xc ? xc : xa);
+        if (hi - lo < 1e-3 * (e.hi - e.lo)) {
+            continue;
+        }
+        for (k = 0; k < 1 + (long)rng_below(&rng, 12u); ++k) {
+            (void)hyst_step(&S, (hyst_real_t)rng_range(&rng, lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo)));
+        }
+        {
+            const hyst_real_t back = hyst_step(&S, xa);
+            TEST_ASSERT_EQUAL_MEMORY(&ya, &back, sizeof ya);
+        }
+        walk(&e, xs, 40L);
+        for (k = 0; k < 40; ++k) {
+            const hyst_real_t y1 = hyst_step(&S, xs[k]), y2 = hyst_step(&T, xs[k]);
+            TEST_ASSERT_EQUAL_MEMORY(&y2, &y1, sizeof y1);
+        }
+        ++checked;
+    }
+    TEST_ASSERT_TRUE(checked >= 50);
+}
+
+/* |reflection of the rising branch at 15 - the falling branch at 25| on
+ * the loop 10..30 V of the reference (0 for a point-symmetric loop). */
+static double loop_asymmetry(const hyst_everett_t *e)
+{
+    ref_t r;
+    double y_up, y_down, y10, y30;
+    ref_init(&r, e);
+    (void)ref_step(&r, 30.0);
+    y10 = ref_step(&r, 10.0);
+    y_up = ref_step(&r, 15.0);
+    y30 = ref_step(&r, 30.0);
+    y_down = ref_step(&r, 25.0);
+    return fabs(y10 + y30 - y_up - y_down);
+}
+
+/* E of the width only is the symmetric kind: the same outputs as
+ * hyst_init() with f0(x) = y_lo + E(x, lo), within rounding; and a loop
+ * is point-symmetric. With a term in t it is not. */
+static void test_width_only_is_the_symmetric_kind(void)
+{
+    hyst_everett_t e;
+    hyst_poly_t f0;
+    double range, worst = 0.0, asym;
+    long k;
+    memset(&e, 0, sizeof e);
+    e.degree = 3u;
+    e.lo = 0.0;
+    e.hi = 40.0;
+    e.y_lo = 0.58517;
+    /* Eq. 20 as a function of w = x / 40 (lo = 0): c1 w + c2 w^2 + c3 w^3 */
+    e.e[0][0] = 8.6444e-2 * 40.0;
+    e.e[1][0] = 1.1949e-3 * 1600.0;
+    e.e[2][0] = -6.1876e-6 * 64000.0;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_e(&S, &curve, &e, xl, yl, xr, yr, CAP));
+    f0 = paper_eq20;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&T, &f0, xl2, yl2, xr2, yr2, CAP));
+    range = e_of(&e, 40.0, 0.0);
+    walk(&e, xs, SAMPLES);
+    for (k = 0; k < SAMPLES; ++k) {
+        const double d = fabs((double)hyst_step(&S, xs[k]) - (double)hyst_step(&T, xs[k])) / range;
+        worst = d > worst ? d : worst;
+    }
+    TEST_PRINTF("width-only E vs the symmetric kind: worst %g of the range", worst);
+    TEST_ASSERT_TRUE(worst <= 4.0 * AGREE);
+    /* rule 4 on the loop 10..30: the rising branch at 15 reflected onto the falling at 25 */
+    {
+        TEST_ASSERT_TRUE(loop_asymmetry(&e) <= 1e-9 * range);
+        e.e[0][1] = 0.3; /* loops grow with their place: asymmetric */
+        asym = loop_asymmetry(&e);
+        TEST_ASSERT_TRUE(asym > 1e-3 * range);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&curve2, &e));
+    }
+}
+
+static void test_bad_e_are_refused(void)
+{
+    hyst_everett_t e;
+    memset(&e, 0, sizeof e);
+    e.degree = 2u;
+    e.lo = 0.0;
+    e.hi = 1.0;
+    e.e[0][0] = 1.0;
+    e.e[1][0] = 0.5;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&curve, &e));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_from_everett(NULL, &e));
+    e.e[1][0] = -0.6; /* dE/da = 1 - 1.2 w < 0 near w = 1 */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_MONOTONE, hyst_curve_from_everett(&curve, &e));
+    e.e[1][0] = 0.0;
+    e.e[0][1] = 2.5; /* dE/db = t-slope 2.5 w - 1: positive for w > 0.4 */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_MONOTONE, hyst_curve_from_everett(&curve, &e));
+    e.e[0][1] = 0.9; /* below 1: still monotone */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&curve, &e));
+    e.e[2][0] = 1.0; /* above the degree */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_curve_from_everett(&curve, &e));
+    e.e[2][0] = 0.0;
+    e.e[0][0] = NAN;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_curve_from_everett(&curve, &e));
+    e.e[0][0] = 1.0;
+    e.degree = 0u;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DEGREE, hyst_curve_from_everett(&curve, &e));
+    e.degree = (unsigned)N + 1u;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DEGREE, hyst_curve_from_everett(&curve, &e));
+    e.degree = 2u;
+    e.hi = e.lo;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_curve_from_everett(&curve, &e));
+}
+
+/* Block call = steps bit for bit; a snapshot restores and continues
+ * identically, and is refused by an instance of another E. */
+static void test_block_and_snapshots(void)
+{
+    hyst_everett_t e;
+    size_t len = 0u;
+    long k;
+    do {
+        e = random_e();
+    } while (init_e(&S, &curve, &e, xl, yl, xr, yr, CAP) != HYST_OK);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, CAP));
+    walk(&e, xs, SAMPLES);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_process(&T, xs, ys2, (size_t)SAMPLES));
+    for (k = 0; k < SAMPLES; ++k) {
+        ys[k] = hyst_step(&S, xs[k]);
+    }
+    TEST_ASSERT_EQUAL_MEMORY(ys, ys2, sizeof ys);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&S, snap, sizeof snap, &len));
+    hyst_reset(&T);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&T, snap, len));
+    walk(&e, xs, 500L);
+    for (k = 0; k < 500; ++k) {
+        const hyst_real_t y1 = hyst_step(&S, xs[k]), y2 = hyst_step(&T, xs[k]);
+        TEST_ASSERT_EQUAL_MEMORY(&y1, &y2, sizeof y1);
+    }
+    e.e[0][0] *= 1.5; /* another E: the snapshot is not its */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_e(&T, &curve2, &e, xl2, yl2, xr2, yr2, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&T, snap, len));
+}
+
+/* Bounded memory: a small capacity merges loops and states a bound that
+ * holds against the unbounded reference. */
+static void test_bounded_memory_keeps_its_bound(void)
+{
+    int trial, merged = 0;
+    double worst_ratio = 0.0;
+    for (trial = 0; trial < 30; ++trial) {
+        const hyst_everett_t e = random_e();
+        ref_t r;
+        long k;
+        if (init_e(&S, &curve, &e, xl, yl, xr, yr, 3u) != HYST_OK) {
+            continue;
+        }
+        ref_init(&r, &e);
+        walk(&e, xs, 2000L);
+        for (k = 0; k < 2000; ++k) {
+            const double y = (double)hyst_step(&S, xs[k]);
+            const double err = fabs(y - ref_step(&r, (double)xs[k]));
+            /* the stated bound plus rounding: (d + 1) bounds, d <= 5 TPs */
+            const double bound = (double)hyst_error_bound(&S) + 6.0 * (double)hyst_rounding_bound(&S);
+            merged += hyst_status(&S) == HYST_WARN_FULL;
+            if (err > 0.0) {
+                worst_ratio = err / bound > worst_ratio ? err / bound : worst_ratio;
+            }
+        }
+    }
+    TEST_PRINTF("bounded memory: %d merges; worst |y - y_ref| / bound %g", merged, worst_ratio);
+    TEST_ASSERT_TRUE(merged > 0);
+    TEST_ASSERT_TRUE(worst_ratio <= 1.0);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_random_e_agree_with_the_reference);
+    RUN_TEST(test_minor_loops_close_bit_for_bit);
+    RUN_TEST(test_width_only_is_the_symmetric_kind);
+    RUN_TEST(test_bad_e_are_refused);
+    RUN_TEST(test_block_and_snapshots);
+    RUN_TEST(test_bounded_memory_keeps_its_bound);
+    return UNITY_END();
+}
