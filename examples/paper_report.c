@@ -23,6 +23,8 @@
 
 #define NU 4096u /* 12-bit DAC, the paper's sizing */
 HYST_DEFINE_INVERSE(model, NU); /* model, then the compensator */
+HYST_DEFINE(asym_model, NU);    /* the asymmetric kind */
+static hyst_curve_t asym_curve;
 
 static int failures;
 
@@ -411,6 +413,38 @@ static int asym_tcm_score(unsigned degree, size_t delay, hyst_poly_t *f0, double
     return 1;
 }
 
+/* The same hold-out score for the asymmetric kind of degree `degree`:
+ * E fitted on the first two thirds (hyst_everett_fit_*), the model run over
+ * the whole record. 0 if the fit is singular or E not monotone. */
+static int asym_everett_score(unsigned degree, size_t delay, hyst_everett_t *e, double *score)
+{
+    static hyst_wide_t work[HYST_EVERETT_FIT_WORK(NU)];
+    static hyst_everett_fit_t fit;
+    const size_t skip = (size_t)ASYM_CYCLE, split = (size_t)(2L * ASYM_RECORD / 3L);
+    double ss = 0.0;
+    size_t i;
+    if (hyst_everett_fit_init(&fit, degree, 0.0, 40.0, work, sizeof work / sizeof work[0]) !=
+        HYST_OK) {
+        return 0;
+    }
+    for (i = 0u; i < split; ++i) { /* the settling cycle moves the input only */
+        (void)hyst_everett_fit_add(&fit, asym_xr[i], i >= skip ? asym_yr[i + delay] : (hyst_wide_t)NAN);
+    }
+    if (hyst_everett_fit_solve(&fit, e, NULL) != HYST_OK ||
+        hyst_curve_from_everett(&asym_curve, e) != HYST_OK ||
+        HYST_INIT_CURVE(asym_model, &asym_curve) != HYST_OK) {
+        return 0;
+    }
+    for (i = 0u; i + delay < (size_t)ASYM_RECORD; ++i) {
+        const double err = (double)hyst_step(&asym_model, asym_x[i]) - asym_yr[i + delay];
+        if (i >= split) {
+            ss += err * err;
+        }
+    }
+    *score = sqrt(ss / (double)((size_t)ASYM_RECORD - delay - split));
+    return 1;
+}
+
 static void asymmetric(void)
 {
     static hyst_wide_t pi_work[HYST_PI_FIT_WORK(ASYM_PI_OPERATORS)];
@@ -488,19 +522,43 @@ static void asymmetric(void)
     }
     value("pi_params", (double)(ASYM_PI_OPERATORS + 1u));
     value("pi_holdout_rms", sqrt(pi_score / (double)((size_t)ASYM_RECORD - best_delay - split)));
+    /* the asymmetric kind at the same delay, its degree by the same rule
+     * (parameters 1 + d (d + 1) / 2 grow with d: the first within 1 %) */
+    {
+        double a_score[HYST_EVERETT_MAX_DEGREE + 1], a_best = 1e300, chosen = 0.0;
+        hyst_everett_t e;
+        unsigned d, a_degree = 0u;
+        printf("@table everett_candidates degree,holdout_rms\n");
+        for (d = 1u; d <= (unsigned)HYST_EVERETT_MAX_DEGREE; ++d) {
+            a_score[d] = asym_everett_score(d, best_delay, &e, &a_score[d]) ? a_score[d] : -1.0;
+            printf("%u,%.6g\n", d, a_score[d]);
+            a_best = a_score[d] >= 0.0 && a_score[d] < a_best ? a_score[d] : a_best;
+        }
+        for (d = 1u; d <= (unsigned)HYST_EVERETT_MAX_DEGREE && a_degree == 0u; ++d) {
+            a_degree = a_score[d] >= 0.0 && a_score[d] <= 1.01 * a_best ? d : 0u;
+        }
+        check(a_degree > 0u && asym_everett_score(a_degree, best_delay, &e, &chosen),
+              "asymmetric_everett");
+        value("everett_degree", (double)a_degree);
+        value("everett_params", (double)(1u + a_degree * (a_degree + 1u) / 2u));
+        value("everett_holdout_rms", chosen);
+    }
     /* the paper's test signal: the sensor's reading predicted (delay applied) */
     plant_everett_init_piezo(&plant);
     check(HYST_INIT(model, &best_f0) == HYST_OK && HYST_PI_INIT(pi, pi_r, pi_w) == HYST_OK,
           "asymmetric_models");
+    hyst_reset(&asym_model);
     n = ramp_path(0.0, levels, paper_levels(0.0, 40.0, levels), 0.1, xs, 8192);
     {
-        static double y_tcm[8192], y_pi[8192], y_sensor[8192];
-        printf("@table prediction i,x_V,y_sensor,y_tcm,y_pi\n");
+        static double y_tcm[8192], y_pi[8192], y_sensor[8192], y_ev[8192];
+        double ss_ev = 0.0, max_ev = 0.0;
+        printf("@table prediction i,x_V,y_sensor,y_tcm,y_pi,y_everett\n");
         for (k = 0; k < n; ++k) {
             (void)plant_everett_step(&plant, (double)xs[k]);
             y_sensor[k] = plant_everett_sensor(&plant);
             y_tcm[k] = (double)hyst_step(&model, xs[k]);
             y_pi[k] = pres.offset + (double)hyst_pi_step(&pi, xs[k]);
+            y_ev[k] = (double)hyst_step(&asym_model, xs[k]);
         }
         for (k = 0; k + (long)best_delay < n; ++k) {
             const double ys = y_sensor[k + (long)best_delay];
@@ -508,8 +566,13 @@ static void asymmetric(void)
             ss_pi += (y_pi[k] - ys) * (y_pi[k] - ys);
             max_tcm = fabs(y_tcm[k] - ys) > max_tcm ? fabs(y_tcm[k] - ys) : max_tcm;
             max_pi = fabs(y_pi[k] - ys) > max_pi ? fabs(y_pi[k] - ys) : max_pi;
-            printf("%ld,%.3f,%.6f,%.6f,%.6f\n", k, (double)xs[k], ys, y_tcm[k], y_pi[k]);
+            ss_ev += (y_ev[k] - ys) * (y_ev[k] - ys);
+            max_ev = fabs(y_ev[k] - ys) > max_ev ? fabs(y_ev[k] - ys) : max_ev;
+            printf("%ld,%.3f,%.6f,%.6f,%.6f,%.6f\n", k, (double)xs[k], ys, y_tcm[k], y_pi[k],
+                   y_ev[k]);
         }
+        value("everett_predict_rms", sqrt(ss_ev / (double)(n - (long)best_delay)));
+        value("everett_predict_max", max_ev);
         value("tcm_predict_rms", sqrt(ss_tcm / (double)(n - (long)best_delay)));
         value("tcm_predict_max", max_tcm);
         value("pi_predict_rms", sqrt(ss_pi / (double)(n - (long)best_delay)));

@@ -387,6 +387,51 @@ static void test_bounded_memory_keeps_its_bound(void)
     TEST_ASSERT_TRUE(worst_ratio <= 1.0);
 }
 
+/* Identification: from noisy records of a random E's model, walked with
+ * minor loops, hyst_everett_fit_* recovers E (outputs of the fitted model
+ * within a few noise levels of the true model's on a new input). */
+static void test_identification_recovers_e(void)
+{
+    static hyst_wide_t work[HYST_EVERETT_FIT_WORK(CAP)];
+    int trial, fitted = 0;
+    double worst = 0.0;
+    for (trial = 0; trial < 20; ++trial) {
+        const hyst_everett_t e = random_e();
+        hyst_everett_fit_t fit;
+        hyst_everett_t got;
+        hyst_wide_t rms = 0;
+        double range, noise;
+        long k;
+        if (init_e(&S, &curve, &e, xl, yl, xr, yr, CAP) != HYST_OK) {
+            continue;
+        }
+        range = e_of(&e, e.hi, e.lo);
+        noise = 1e-3 * range;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_init(&fit, e.degree, e.lo, e.hi, work,
+                                                             sizeof work / sizeof work[0]));
+        walk(&e, xs, SAMPLES);
+        for (k = 0; k < SAMPLES; ++k) {
+            const double y = (double)hyst_step(&S, xs[k]) + noise * (2.0 * rng_unit(&rng) - 1.0);
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_add(&fit, (hyst_wide_t)xs[k], (hyst_wide_t)y));
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve(&fit, &got, &rms));
+        TEST_ASSERT_TRUE((double)rms < 0.7 * noise); /* uniform noise: RMS noise / sqrt(3) */
+        if (init_e(&T, &curve2, &got, xl2, yl2, xr2, yr2, CAP) != HYST_OK) {
+            continue; /* a fit at the edge of monotone */
+        }
+        hyst_reset(&S);
+        walk(&e, xs, SAMPLES);
+        for (k = 0; k < SAMPLES; ++k) {
+            const double d = fabs((double)hyst_step(&S, xs[k]) - (double)hyst_step(&T, xs[k]));
+            worst = d / noise > worst ? d / noise : worst;
+        }
+        ++fitted;
+    }
+    TEST_PRINTF("identification: %d fits, worst model difference %g noise levels", fitted, worst);
+    TEST_ASSERT_TRUE(fitted >= 10);
+    TEST_ASSERT_TRUE(worst < 1.0);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -396,5 +441,6 @@ int main(void)
     RUN_TEST(test_bad_e_are_refused);
     RUN_TEST(test_block_and_snapshots);
     RUN_TEST(test_bounded_memory_keeps_its_bound);
+    RUN_TEST(test_identification_recovers_e);
     return UNITY_END();
 }

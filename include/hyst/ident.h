@@ -341,6 +341,73 @@ hyst_status_t hyst_pi_fit_record(const hyst_pi_fit_config_t *cfg, const hyst_wid
                                  size_t work_len, hyst_wide_t *r, hyst_wide_t *w,
                                  hyst_pi_fit_result_t *res);
 
+/* ---- The asymmetric kind's E by linear least squares ---- */
+
+/** Columns of an E fit: the output at lo, then E's coefficients. */
+#define HYST_EVERETT_FIT_COLS (HYST_EVERETT_TERMS + 1u)
+
+/**
+ * hyst_wide_t entries of the workspace of an E fit whose input record
+ * stacks at most @p capacity turning points (HYST_CAPACITY(Nu) for Nu
+ * distinct inputs): each one's input and its regressors.
+ */
+#define HYST_EVERETT_FIT_WORK(capacity) ((size_t)(capacity) * (HYST_EVERETT_FIT_COLS + 1u))
+
+/**
+ * @brief An E fit in progress (hyst_everett_fit_init()). Fields are
+ *        private. The model's output is y_lo plus a signed sum of E over
+ *        the pairs of stacked turning points (docs/theory.md, "Linear in
+ *        E"): linear in E's coefficients, so each sample adds one row of
+ *        regressors, kept per turning point like the outputs the model keeps.
+ */
+typedef struct hyst_everett_fit {
+    unsigned degree;   /**< total degree of E */
+    size_t cols;       /**< 1 + E's coefficients at this degree */
+    hyst_wide_t lo, hi; /**< domain */
+    hyst_wide_t *tp_x; /**< caller's workspace: TP inputs (capacity) */
+    hyst_wide_t *tp_r; /**< and their regressors (capacity x cols) */
+    size_t capacity;   /**< TPs the workspace holds (A0 included) */
+    size_t n_tp;       /**< stacked, A0 included */
+    hyst_wide_t x_prev; /**< last input */
+    hyst_wide_t r_prev[HYST_EVERETT_FIT_COLS];  /**< its regressors */
+    hyst_wide_t ata[HYST_EVERETT_FIT_COLS * HYST_EVERETT_FIT_COLS]; /**< normal equations */
+    hyst_wide_t aty[HYST_EVERETT_FIT_COLS];
+    hyst_wide_t yy;    /**< sum of y^2 */
+    size_t used;       /**< samples in the normal equations */
+} hyst_everett_fit_t;
+
+/**
+ * @brief Starts an E fit of total degree @p degree on [lo, hi], the input
+ *        record starting at lo (as an instance after reset).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_DEGREE (1..HYST_EVERETT_MAX_DEGREE),
+ *         HYST_ERR_DOMAIN, HYST_ERR_NOSPACE (work_len below
+ *         HYST_EVERETT_FIT_WORK(2)).
+ */
+hyst_status_t hyst_everett_fit_init(hyst_everett_fit_t *fit, unsigned degree, hyst_wide_t lo,
+                                    hyst_wide_t hi, hyst_wide_t *work, size_t work_len);
+
+/**
+ * @brief Moves the record's input to @p x and adds the row (regressors at x,
+ *        y) to the normal equations.
+ * @return HYST_OK; HYST_ERR_NONFINITE (y NaN or infinite: the input still
+ *         moves, the sample is not used; x NaN: ignored); HYST_ERR_DOMAIN (x
+ *         outside [lo, hi]: ignored); HYST_ERR_NOSPACE (the record stacks
+ *         more turning points than the workspace holds: the fit cannot go
+ *         on); HYST_ERR_NULL.
+ */
+hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_wide_t y);
+
+/**
+ * @brief Solves the least-squares problem into @p e (E's coefficients, y_lo,
+ *        the domain) and the residual RMS; E is not checked here: build the
+ *        curve with hyst_*_curve_from_everett(), which refuses an E that is
+ *        not monotone.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_SINGULAR (too few distinct
+ *         turning points for the coefficients).
+ */
+hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
+                                     hyst_wide_t *rms);
+
 #ifdef __cplusplus
 }
 #endif
