@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 #include "bench_models.h"
 
+#include <string.h>
+
 const hyst_real_t bench_pi10_r[BENCH_PI_N] = {
     HYST_REAL_C(0.0), HYST_REAL_C(0.1), HYST_REAL_C(0.2), HYST_REAL_C(0.3),
     HYST_REAL_C(0.4), HYST_REAL_C(0.5), HYST_REAL_C(0.6), HYST_REAL_C(0.7),
@@ -33,4 +35,27 @@ void bench_f0_codes(hyst_poly_t *f0, double offset)
     for (i = 0u; i < 4u; ++i) {
         f0->coeffs[i] = (hyst_real_t)c[i];
     }
+}
+
+void bench_everett_codes(hyst_everett_t *e, double offset)
+{
+    hyst_poly_t f0;
+    double c[4], lo, span;
+    unsigned k;
+    bench_f0_codes(&f0, offset);
+    for (k = 0u; k < 4u; ++k) {
+        c[k] = (double)f0.coeffs[k];
+    }
+    lo = (double)f0.lo;
+    span = (double)f0.hi - lo;
+    memset(e, 0, sizeof *e);
+    e->degree = 3u;
+    e->lo = f0.lo;
+    e->hi = f0.hi;
+    e->y_lo = ((c[0] * lo + c[1]) * lo + c[2]) * lo + c[3];
+    /* g(w) = f0(lo + w span) - f0(lo): Taylor coefficients at lo */
+    e->e[0][0] = (3.0 * c[0] * lo * lo + 2.0 * c[1] * lo + c[2]) * span;
+    e->e[1][0] = (3.0 * c[0] * lo + c[1]) * span * span;
+    e->e[2][0] = c[0] * span * span * span;
+    e->e[0][1] = 0.1 * e->e[0][0];
 }

@@ -18,4 +18,9 @@ extern const hyst_real_t bench_pi10_w[BENCH_PI_N];
  *  then shifted by @p offset: domain offset .. offset + BENCH_NU - 1. */
 void bench_f0_codes(hyst_poly_t *f0, double offset);
 
+/** The asymmetric kind on the same codes: E(a, b) = g(a - b) of
+ *  bench_f0_codes() plus a term growing with the loop's place (0.1 of the
+ *  width term times t), degree 3. */
+void bench_everett_codes(hyst_everett_t *e, double offset);
+
 #endif

@@ -57,6 +57,9 @@ hyst_status_t bench_lin_init_(hyst_tcm_t *S, const hyst_poly_t *f0, float *xltp,
 #ifndef BENCH_OFFSET
 #define BENCH_OFFSET 0
 #endif
+#ifndef BENCH_EVERETT
+#define BENCH_EVERETT 0 /* the asymmetric kind instead of the polynomial */
+#endif
 #ifndef BENCH_BOUNDED
 #define BENCH_BOUNDED 1
 #endif
@@ -316,10 +319,23 @@ static void bench_tcm(void)
     hyst_poly_t f0;
     unsigned i;
     bench_f0_codes(&f0, (double)BENCH_OFFSET);
+#if BENCH_EVERETT
+    {
+        static hyst_curve_t curve; /* the asymmetric kind keeps its curve */
+        hyst_everett_t e;
+        bench_everett_codes(&e, (double)BENCH_OFFSET);
+        if (hyst_curve_from_everett(&curve, &e) != HYST_OK ||
+            HYST_INIT_CURVE(tcm, &curve) != HYST_OK) {
+            failures |= 16;
+            return;
+        }
+    }
+#else
     if (HYST_INIT(tcm, &f0) != HYST_OK) {
         failures |= 16;
         return;
     }
+#endif
     record("cal_tcm", 0u, 0u, 0u);
     timed_tcm(null_tcm, &tcm, HYST_REAL_C(1.0));
     showcase();
