@@ -14,6 +14,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Not every harness uses every helper. */
+#if defined(__GNUC__) || defined(__clang__)
+#define FUZZ_MAYBE_UNUSED __attribute__((unused))
+#else
+#define FUZZ_MAYBE_UNUSED
+#endif
+
 typedef struct {
     const unsigned char *p;
     size_t n, at;
@@ -21,7 +28,7 @@ typedef struct {
 
 static unsigned rd_u8(reader_t *r) { return r->at < r->n ? r->p[r->at++] : 0u; }
 
-static unsigned rd_u16(reader_t *r)
+FUZZ_MAYBE_UNUSED static unsigned rd_u16(reader_t *r)
 {
     const unsigned lo = rd_u8(r);
     return lo | (rd_u8(r) << 8);
@@ -49,7 +56,7 @@ static double rd_f64(reader_t *r)
 /* Configuration from bytes. Structured: lo, hi and coefficients on small
  * grids, so that many curves are valid and well conditioned (differential
  * comparison is meaningful); raw: any doubles, for the init checks. */
-static void read_config(reader_t *r, int raw, hyst_poly_t *f)
+FUZZ_MAYBE_UNUSED static void read_config(reader_t *r, int raw, hyst_poly_t *f)
 {
     unsigned k;
     memset(f, 0, sizeof(*f));
@@ -73,7 +80,7 @@ static void read_config(reader_t *r, int raw, hyst_poly_t *f)
 /* Rounding allowance of the differential comparison: Horner's error bound on
  * the raw coefficients (the reference evaluates those; the core a shifted,
  * scaled copy), times the depth of turning points each output hangs on. */
-static double horner_bound(const hyst_poly_t *f)
+FUZZ_MAYBE_UNUSED static double horner_bound(const hyst_poly_t *f)
 {
     const double m = fmax(fabs(f->lo), fabs(f->hi));
     double acc = 0.0;

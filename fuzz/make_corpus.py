@@ -253,9 +253,27 @@ model_files.update({
     "bad_kind_extra": valid.replace(b"kind poly", b"kind poly pwl"),
     "bad_binary": bytes(range(256)),
 })
+# fuzz_everett.c: flags, degree, capacity, lo, span, y_lo (structured bytes),
+# the coefficients e[i][j] with i + j + 1 <= degree in row order, then samples.
+def everett(flags, degree, cap, lo, span, coeffs, samples):
+    return bytes([flags, degree, cap]) + sbyte(lo * 8) + bytes([span * 4 - 1]) + sbyte(16) + \
+        b"".join(sbyte(c * 32) for c in coeffs) + bytes(samples)
+
+
+zigzag = [0, 255, 40, 200, 80, 160, 100, 140, 120, 130, 125, 250, 5, 128, 64, 192, 32, 224]
+everett_seeds = {
+    "everett_linear": everett(0, 1, 8, 0.0, 10, [0.0], zigzag),
+    "everett_asym_deg2": everett(2, 2, 16, -1.0, 20, [0.5, 0.3, 1.0], zigzag * 3),
+    "everett_deg3_full": everett(2, 3, 3, 0.0, 16, [0.0, 0.5, -0.2, 1.0, 0.2, 0.5], zigzag * 4),
+    "everett_deg4": everett(0, 4, 30, 2.0, 8, [0.2, 0.1, 0.0, -0.1, 0.5, 0.1, 0.0, 0.3, 0.0, 0.1],
+                            zigzag * 2),
+    "everett_not_monotone": everett(0, 2, 8, 0.0, 10, [0.0, 3.5, -3.9], zigzag),
+    "everett_bad_capacity": everett(0, 2, 1, 0.0, 10, [0.0, 0.1, 0.1], zigzag),
+}
 for d, group in ((out, seeds), (os.path.join(here, "corpus_models"), models),
                  (os.path.join(here, "corpus_code"), code_seeds),
-                 (os.path.join(here, "corpus_model_file"), model_files)):
+                 (os.path.join(here, "corpus_model_file"), model_files),
+                 (os.path.join(here, "corpus_everett"), everett_seeds)):
     os.makedirs(d, exist_ok=True)
     for name, data in group.items():
         assert len(data) < (1300 if group is model_files else 300), name

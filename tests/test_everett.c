@@ -6,6 +6,7 @@
  * depends on the width only (then equal to the symmetric kind); the
  * monotonicity proof against dense sampling; the refusals; block call,
  * snapshots and bounded memory as for the symmetric kind. */
+#include "ref_everett.h"
 #include "support.h"
 #include "unity.h"
 
@@ -32,68 +33,6 @@ static rng_t rng;
 
 void setUp(void) { rng_seed(&rng, 1312u); }
 void tearDown(void) {}
-
-/* E(a, b) in double, straight from the coefficients. */
-static double e_of(const hyst_everett_t *e, double a, double b)
-{
-    const double span = e->hi - e->lo, w = (a - b) / span, t = (b - e->lo) / span;
-    double sum = 0.0;
-    unsigned i, j;
-    for (i = 1u; i <= e->degree; ++i) {
-        for (j = 0u; i + j <= e->degree; ++j) {
-            sum += e->e[i - 1u][j] * pow(w, (double)i) * pow(t, (double)j);
-        }
-    }
-    return sum;
-}
-
-/* The reference: Madelung's rules on a plain list of turning points. */
-typedef struct {
-    const hyst_everett_t *e;
-    double tx[CAP], ty[CAP];
-    int n;
-    double x, y;
-} ref_t;
-
-static void ref_init(ref_t *r, const hyst_everett_t *e)
-{
-    r->e = e;
-    r->tx[0] = e->lo;
-    r->ty[0] = e->y_lo;
-    r->n = 1;
-    r->x = e->lo;
-    r->y = e->y_lo;
-}
-
-static double ref_step(ref_t *r, double x)
-{
-    const int rising = (r->n - 1) % 2 == 0;
-    if (x > r->x) {
-        if (!rising) {
-            r->tx[r->n] = r->x;
-            r->ty[r->n++] = r->y;
-        }
-        while (r->n >= 3 && x >= r->tx[r->n - 2]) {
-            r->n -= 2;
-        }
-        r->y = r->ty[r->n - 1] + e_of(r->e, x, r->tx[r->n - 1]);
-    } else if (x < r->x) {
-        if (rising) {
-            r->tx[r->n] = r->x;
-            r->ty[r->n++] = r->y;
-        }
-        while (r->n >= 3 && x <= r->tx[r->n - 2]) {
-            r->n -= 2;
-        }
-        r->y = r->ty[r->n - 1] - e_of(r->e, r->tx[r->n - 1], x);
-        if (x <= r->e->lo) { /* every loop closed: back at A0, rising next */
-            r->n = 1;
-            r->y = r->e->y_lo;
-        }
-    }
-    r->x = x;
-    return r->y;
-}
 
 /* A random E of degree 1..N on a random domain: coefficients in
  * [-1.5, 1] / (i + j) with a dominant positive width term, scaled; about
@@ -122,14 +61,14 @@ static hyst_everett_t random_e(void)
  * smallest value of both, relative to the range E(hi, lo). */
 static double sampled_slack(const hyst_everett_t *e)
 {
-    const double span = e->hi - e->lo, h = span * 1e-7, range = e_of(e, e->hi, e->lo);
+    const double span = e->hi - e->lo, h = span * 1e-7, range = ref_everett_e(e, e->hi, e->lo);
     double worst = 1e300;
     int i, j;
     for (i = 0; i <= 40; ++i) {
         for (j = 0; i + j <= 40; ++j) {
             const double b = e->lo + span * (double)j / 40.0, a = b + span * (double)i / 40.0;
-            const double da = (e_of(e, a + (i + j < 40 ? h : 0.0), b) - e_of(e, a - (i > 0 ? h : 0.0), b));
-            const double db = (e_of(e, a, b - (j > 0 ? h : 0.0)) - e_of(e, a, b + (i > 0 ? h : 0.0)));
+            const double da = (ref_everett_e(e, a + (i + j < 40 ? h : 0.0), b) - ref_everett_e(e, a - (i > 0 ? h : 0.0), b));
+            const double db = (ref_everett_e(e, a, b - (j > 0 ? h : 0.0)) - ref_everett_e(e, a, b + (i > 0 ? h : 0.0)));
             worst = da < worst ? da : worst;
             worst = db < worst ? db : worst;
         }
@@ -166,7 +105,7 @@ static void test_random_e_agree_with_the_reference(void)
     double worst = 0.0;
     for (trial = 0; trial < 60; ++trial) {
         const hyst_everett_t e = random_e();
-        ref_t r;
+        static ref_everett_t r; /* 16 KB: off the stack */
         double range;
         long k;
         const hyst_status_t st = init_e(&S, &curve, &e, xl, yl, xr, yr, CAP);
@@ -180,12 +119,12 @@ static void test_random_e_agree_with_the_reference(void)
         }
         ++accepted;
         TEST_ASSERT_TRUE(sampled_slack(&e) > -1e-6); /* the proof holds on samples */
-        range = e_of(&e, e.hi, e.lo);
-        ref_init(&r, &e);
+        range = ref_everett_e(&e, e.hi, e.lo);
+        ref_everett_init(&r, &e);
         walk(&e, xs, SAMPLES);
         for (k = 0; k < SAMPLES; ++k) {
             const double y = (double)hyst_step(&S, xs[k]);
-            const double d = fabs(y - ref_step(&r, (double)xs[k])) / range;
+            const double d = fabs(y - ref_everett_step(&r, (double)xs[k])) / range;
             TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&S));
             worst = d > worst ? d : worst;
         }
@@ -243,14 +182,14 @@ static void test_minor_loops_close_bit_for_bit(void)
  * the loop 10..30 V of the reference (0 for a point-symmetric loop). */
 static double loop_asymmetry(const hyst_everett_t *e)
 {
-    ref_t r;
+    static ref_everett_t r; /* 16 KB: off the stack */
     double y_up, y_down, y10, y30;
-    ref_init(&r, e);
-    (void)ref_step(&r, 30.0);
-    y10 = ref_step(&r, 10.0);
-    y_up = ref_step(&r, 15.0);
-    y30 = ref_step(&r, 30.0);
-    y_down = ref_step(&r, 25.0);
+    ref_everett_init(&r, e);
+    (void)ref_everett_step(&r, 30.0);
+    y10 = ref_everett_step(&r, 10.0);
+    y_up = ref_everett_step(&r, 15.0);
+    y30 = ref_everett_step(&r, 30.0);
+    y_down = ref_everett_step(&r, 25.0);
     return fabs(y10 + y30 - y_up - y_down);
 }
 
@@ -275,7 +214,7 @@ static void test_width_only_is_the_symmetric_kind(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, init_e(&S, &curve, &e, xl, yl, xr, yr, CAP));
     f0 = paper_eq20;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&T, &f0, xl2, yl2, xr2, yr2, CAP));
-    range = e_of(&e, 40.0, 0.0);
+    range = ref_everett_e(&e, 40.0, 0.0);
     walk(&e, xs, SAMPLES);
     for (k = 0; k < SAMPLES; ++k) {
         const double d = fabs((double)hyst_step(&S, xs[k]) - (double)hyst_step(&T, xs[k])) / range;
@@ -364,16 +303,16 @@ static void test_bounded_memory_keeps_its_bound(void)
     double worst_ratio = 0.0;
     for (trial = 0; trial < 30; ++trial) {
         const hyst_everett_t e = random_e();
-        ref_t r;
+        static ref_everett_t r; /* 16 KB: off the stack */
         long k;
         if (init_e(&S, &curve, &e, xl, yl, xr, yr, 3u) != HYST_OK) {
             continue;
         }
-        ref_init(&r, &e);
+        ref_everett_init(&r, &e);
         walk(&e, xs, 2000L);
         for (k = 0; k < 2000; ++k) {
             const double y = (double)hyst_step(&S, xs[k]);
-            const double err = fabs(y - ref_step(&r, (double)xs[k]));
+            const double err = fabs(y - ref_everett_step(&r, (double)xs[k]));
             /* the stated bound plus rounding: (d + 1) bounds, d <= 5 TPs */
             const double bound = (double)hyst_error_bound(&S) + 6.0 * (double)hyst_rounding_bound(&S);
             merged += hyst_status(&S) == HYST_WARN_FULL;
@@ -405,7 +344,7 @@ static void test_identification_recovers_e(void)
         if (init_e(&S, &curve, &e, xl, yl, xr, yr, CAP) != HYST_OK) {
             continue;
         }
-        range = e_of(&e, e.hi, e.lo);
+        range = ref_everett_e(&e, e.hi, e.lo);
         noise = 1e-3 * range;
         TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_init(&fit, e.degree, e.lo, e.hi, work,
                                                              sizeof work / sizeof work[0]));

@@ -1,0 +1,136 @@
+/* SPDX-License-Identifier: MIT */
+/* libFuzzer harness of the asymmetric kind (curve.h, hyst_everett_t) and
+ * its identification (ident.h, hyst_everett_fit_*), built with
+ * HYST_USE_DOUBLE; any failed CHECK aborts.
+ *
+ * Input layout (reads past the end yield zeros, so every input is valid):
+ *   [0]  flags: bit0 raw coefficients (arbitrary doubles) else small grids;
+ *        bit1 feed the outputs to an E fit and check its solution
+ *   [1]  degree (byte % 6: 0 and 5 are invalid), [2] capacity (byte % 40)
+ *   then lo, hi, y_lo and the coefficients e[i][j], then samples: each byte
+ *   an input on a 256-step grid of the domain.
+ *
+ * Checks: on the structured grids, an accepted E is monotone on sampled
+ * points of its triangle (the proof is sound) and outputs equal the double
+ * reference (tests/support/ref_everett.c) within rounding until memory
+ * fills, then within the stated error bound; always, finite outputs; the block call equals the per-sample call bit for bit; the
+ * fit never fails on a record it accepted, and its RMS is finite. */
+#include "fuzz_common.h"
+#include "ref_everett.h"
+
+#define MAX_CAP 40u
+#define MAX_SAMPLES 512u
+
+static double xl[MAX_CAP], yl[MAX_CAP], xr[MAX_CAP], yr[MAX_CAP];
+static double xl2[MAX_CAP], yl2[MAX_CAP], xr2[MAX_CAP], yr2[MAX_CAP];
+static double xs[MAX_SAMPLES], ys[MAX_SAMPLES], ys2[MAX_SAMPLES];
+static hyst_wide_t fit_work[HYST_EVERETT_FIT_WORK(MAX_SAMPLES + 2u)];
+static ref_everett_t ref;
+
+/* The smallest sampled dE/da and -dE/db over the triangle, relative to
+ * E's scale (finite differences inside the triangle). */
+static double sampled_slack(const hyst_everett_t *e, double scale)
+{
+    const double span = e->hi - e->lo, h = span * 1e-6;
+    double worst = 1e300;
+    int i, j;
+    for (i = 1; i < 24; ++i) {
+        for (j = 1; i + j < 24; ++j) {
+            const double b = e->lo + span * (double)j / 24.0, a = b + span * (double)i / 24.0;
+            const double da = ref_everett_e(e, a + h, b) - ref_everett_e(e, a - h, b);
+            const double db = ref_everett_e(e, a, b - h) - ref_everett_e(e, a, b + h);
+            worst = fmin(worst, fmin(da, db));
+        }
+    }
+    return worst / (2.0 * h * scale / span);
+}
+
+int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
+{
+    reader_t rd = {data, size, 0u};
+    const unsigned flags = rd_u8(&rd);
+    hyst_everett_t e;
+    hyst_curve_t curve;
+    hyst_t S, T;
+    size_t cap, n = 0u, k;
+    double scale = 0.0, range;
+    unsigned i, j;
+    int full = 0;
+    memset(&e, 0, sizeof e);
+    e.degree = rd_u8(&rd) % 6u;
+    cap = rd_u8(&rd) % MAX_CAP;
+    if (flags & 1u) {
+        e.lo = rd_f64(&rd);
+        e.hi = rd_f64(&rd);
+        e.y_lo = rd_f64(&rd);
+    } else {
+        e.lo = ((double)(signed char)rd_u8(&rd)) / 8.0;
+        e.hi = e.lo + (double)(1u + rd_u8(&rd) % 64u) / 4.0;
+        e.y_lo = ((double)(signed char)rd_u8(&rd)) / 16.0;
+    }
+    for (i = 0u; i < (unsigned)HYST_EVERETT_MAX_DEGREE; ++i) {
+        for (j = 0u; j < (unsigned)HYST_EVERETT_MAX_DEGREE; ++j) {
+            if (flags & 1u) {
+                e.e[i][j] = rd_f64(&rd);
+            } else if (i + j + 1u <= e.degree) {
+                e.e[i][j] = ((double)(signed char)rd_u8(&rd)) / 32.0 + (i + j == 0u ? 4.0 : 0.0);
+            }
+            scale += fabs(e.e[i][j]);
+        }
+    }
+    if (hyst_curve_from_everett(&curve, &e) != HYST_OK) {
+        return 0;
+    }
+    CHECK(e.degree >= 1u && e.degree <= (unsigned)HYST_EVERETT_MAX_DEGREE);
+    range = ref_everett_e(&e, e.hi, e.lo);
+    CHECK(range > 0.0);
+    /* accepted: monotone where sampled (on the structured grids: raw
+     * doubles reach subnormal and huge scales where sampling says nothing) */
+    CHECK((flags & 1u) || sampled_slack(&e, scale) > -1e-6);
+    if (hyst_init_curve(&S, &curve, xl, yl, xr, yr, cap) != HYST_OK) {
+        CHECK(cap < 2u);
+        return 0;
+    }
+    CHECK(hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, cap) == HYST_OK);
+    while (rd.at < rd.n && n < MAX_SAMPLES) {
+        xs[n++] = e.lo + (e.hi - e.lo) * (double)rd_u8(&rd) / 255.0;
+    }
+    ref_everett_init(&ref, &e);
+    for (k = 0u; k < n; ++k) {
+        const double x = xs[k] < e.hi ? xs[k] : e.hi;
+        const double y = hyst_step(&S, x), y_ref = ref_everett_step(&ref, x);
+        /* rounding: a few ulps of the scale per stacked TP */
+        const double tol = 64.0 * DBL_EPSILON * (scale + fabs(e.y_lo)) * (double)(ref.n + 1);
+        ys[k] = y;
+        full |= hyst_status(&S) == HYST_WARN_FULL;
+        CHECK(hyst_status(&S) >= 0 && isfinite(y));
+        if (flags & 1u) {
+            continue; /* raw doubles: no differential check */
+        }
+        if (!full) {
+            CHECK(fabs(y - y_ref) <= tol);
+        } else {
+            CHECK(fabs(y - y_ref) <= hyst_error_bound(&S) + tol);
+        }
+    }
+    CHECK(hyst_process(&T, xs, ys2, n) >= 0);
+    CHECK(n == 0u || memcmp(ys, ys2, n * sizeof ys[0]) == 0);
+    if ((flags & 2u) && n > 0u) {
+        hyst_everett_fit_t fit;
+        hyst_everett_t got;
+        hyst_wide_t rms = -1;
+        hyst_status_t st;
+        CHECK(hyst_everett_fit_init(&fit, e.degree, e.lo, e.hi, fit_work,
+                                    sizeof fit_work / sizeof fit_work[0]) == HYST_OK);
+        for (k = 0u; k < n; ++k) {
+            CHECK(hyst_everett_fit_add(&fit, xs[k], ys[k]) == HYST_OK); /* room for every TP */
+        }
+        st = hyst_everett_fit_solve(&fit, &got, &rms);
+        CHECK(st == HYST_OK || st == HYST_ERR_SINGULAR);
+        if (st == HYST_OK) {
+            CHECK(rms >= 0 && isfinite(rms));
+            CHECK(got.degree == e.degree && got.lo == e.lo && got.hi == e.hi);
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,65 @@
+/* SPDX-License-Identifier: MIT */
+#include "ref_everett.h"
+
+#include <math.h>
+
+double ref_everett_e(const hyst_everett_t *e, double a, double b)
+{
+    const double span = (double)e->hi - (double)e->lo;
+    const double w = (a - b) / span, t = (b - (double)e->lo) / span;
+    double sum = 0.0;
+    unsigned i, j;
+    for (i = 1u; i <= e->degree; ++i) {
+        for (j = 0u; i + j <= e->degree; ++j) {
+            sum += (double)e->e[i - 1u][j] * pow(w, (double)i) * pow(t, (double)j);
+        }
+    }
+    return sum;
+}
+
+void ref_everett_init(ref_everett_t *r, const hyst_everett_t *e)
+{
+    r->e = e;
+    r->tx[0] = (double)e->lo;
+    r->ty[0] = (double)e->y_lo;
+    r->n = 1;
+    r->x = (double)e->lo;
+    r->y = (double)e->y_lo;
+}
+
+/* LTPs at even places (A0 first): rising iff the newest is one. */
+static void push(ref_everett_t *r)
+{
+    if (r->n < REF_EVERETT_TPS) {
+        r->tx[r->n] = r->x;
+        r->ty[r->n++] = r->y;
+    }
+}
+
+double ref_everett_step(ref_everett_t *r, double x)
+{
+    const int rising = (r->n - 1) % 2 == 0;
+    if (x > r->x) {
+        if (!rising) {
+            push(r);
+        }
+        while (r->n >= 3 && x >= r->tx[r->n - 2]) {
+            r->n -= 2;
+        }
+        r->y = r->ty[r->n - 1] + ref_everett_e(r->e, x, r->tx[r->n - 1]);
+    } else if (x < r->x) {
+        if (rising) {
+            push(r);
+        }
+        while (r->n >= 3 && x <= r->tx[r->n - 2]) {
+            r->n -= 2;
+        }
+        r->y = r->ty[r->n - 1] - ref_everett_e(r->e, r->tx[r->n - 1], x);
+        if (x <= (double)r->e->lo) { /* every loop closed: back at A0, rising next */
+            r->n = 1;
+            r->y = (double)r->e->y_lo;
+        }
+    }
+    r->x = x;
+    return r->y;
+}
