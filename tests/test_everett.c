@@ -371,6 +371,32 @@ static void test_identification_recovers_e(void)
     TEST_ASSERT_TRUE(worst < 1.0);
 }
 
+#ifndef HYST_USE_DOUBLE
+/* The integer-code variant runs the same curve: on codes 0..4095 of the
+ * domain, bit for bit the f32 variant's outputs. */
+static void test_codes_run_the_asymmetric_kind(void)
+{
+    static hyst_code_word_t cl[CAP], cr[CAP];
+    static float cyl[CAP], cyr[CAP];
+    hyst_everett_t e;
+    hyst_t C;
+    long k;
+    do {
+        e = random_e();
+        e.lo = 0.0;
+        e.hi = 4095.0;
+    } while (init_e(&S, &curve, &e, xl, yl, xr, yr, CAP) != HYST_OK);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init_curve(&C, &curve, 0u, 4095u, cl, cyl, cr, cyr, CAP));
+    walk(&e, xs, SAMPLES);
+    for (k = 0; k < SAMPLES; ++k) {
+        const unsigned long code = (unsigned long)floor((double)xs[k] + 0.5);
+        const float yc = hyst_code_step(&C, (uint_least32_t)code);
+        const float yf = hyst_step(&S, (hyst_real_t)code);
+        TEST_ASSERT_EQUAL_MEMORY(&yf, &yc, sizeof yf);
+    }
+}
+#endif
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -381,5 +407,8 @@ int main(void)
     RUN_TEST(test_block_and_snapshots);
     RUN_TEST(test_bounded_memory_keeps_its_bound);
     RUN_TEST(test_identification_recovers_e);
+#ifndef HYST_USE_DOUBLE
+    RUN_TEST(test_codes_run_the_asymmetric_kind);
+#endif
     return UNITY_END();
 }
