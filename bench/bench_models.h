@@ -18,4 +18,9 @@ extern const hyst_real_t bench_pi10_w[BENCH_PI_N];
  *  then shifted by @p offset: domain offset .. offset + BENCH_NU - 1. */
 void bench_f0_codes(hyst_poly_t *f0, double offset);
 
+/** Paper Eq. 20 over 0..40 V with its output scaled onto offset .. offset +
+ *  BENCH_NU - 1: a compensator of it (inverse.h) takes the desired output
+ *  as BENCH_NU codes, as the forward model takes the drive. */
+void bench_f0_inverse_codes(hyst_poly_t *f0, double offset);
+
 #endif

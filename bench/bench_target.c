@@ -25,7 +25,9 @@
  * BENCH_BOUNDED (bounded memory: every sample of a nesting random signal
  * through 32-entry arrays, with and without a deadband),
  * BENCH_LINEAR (the engine with a linear scan, bench/linear_engine.c:
- * changes the p model).
+ * changes the p model), BENCH_INVERSE (the compensator of Eq. 20, tabulated
+ * (inverse.h, HYST_INIT_INVERSE): the codes are desired outputs; no PI or
+ * bounded-memory pulses).
  */
 #include "hyst/hyst.h"
 #include "hyst/pi.h"
@@ -78,7 +80,15 @@ hyst_status_t bench_lin_init_(hyst_tcm_t *S, const hyst_poly_t *f0, float *xltp,
 #define PI_SAMPLES 256u
 #define MAX_RECORDS 32000u
 
+#ifdef BENCH_INVERSE
+HYST_DEFINE_INVERSE(tcm, NU);
+#define BENCH_MODEL(f0, offset) bench_f0_inverse_codes((f0), (offset))
+#define BENCH_INIT(f0) HYST_INIT_INVERSE(tcm, (f0))
+#else
 HYST_DEFINE(tcm, NU);
+#define BENCH_MODEL(f0, offset) bench_f0_codes((f0), (offset))
+#define BENCH_INIT(f0) HYST_INIT(tcm, (f0))
+#endif
 
 typedef struct {
     const char *kind;
@@ -315,8 +325,8 @@ static void bench_tcm(void)
 {
     hyst_poly_t f0;
     unsigned i;
-    bench_f0_codes(&f0, (double)BENCH_OFFSET);
-    if (HYST_INIT(tcm, &f0) != HYST_OK) {
+    BENCH_MODEL(&f0, (double)BENCH_OFFSET);
+    if (BENCH_INIT(&f0) != HYST_OK) {
         failures |= 16;
         return;
     }

@@ -98,9 +98,16 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int fast);
  * and the fast path needs no stack frame. */
 HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int fast)
 {
-    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
+    TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
     TCM_Y acc, y;
     switch (S->horner) {
+    case 0: /* a tabulated inverse: G = acc; its exact intervals by the tail call */
+        acc = NUM_NAME(table_g)(S->table.TCM_YF, u);
+        if (!(acc >= 0)) {
+            return TCM_NAME(emit_rare)(S, x, fast);
+        }
+        u = 1;
+        break;
     NUM_HORNER_CASES_(S->coef, u, acc);
     default: return TCM_NAME(emit_rare)(S, x, fast);
     }
@@ -118,7 +125,7 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int fast)
 static void TCM_NAME(set_detour)(hyst_tcm_t *S)
 {
     const unsigned merged = S->forgot_level != TCM_NO_LEVEL ? TCM_SLOW_ONLY | TCM_BOOK : 0u;
-    S->detour = merged | (S->degree == 0u ? TCM_SLOW_ONLY : 0u) |
+    S->detour = merged | (S->degree == 0u && S->table.TCM_YF == NULL ? TCM_SLOW_ONLY : 0u) |
                 (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
                 (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u);
 }
@@ -238,6 +245,9 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
     for (k = 0u; k < HYST_MAX_DEGREE; ++k) {
         YV(S->coef[k]) = S->degree != 0u && k < S->degree ? YV(curve->u.poly.a[k]) : 0;
     }
+    S->table.TCM_YF = curve->kind == (unsigned)HYST_CURVE_INV_TABLE
+                          ? curve->u.inv_table.table.TCM_YF
+                          : NULL;
     S->seq = 0u;
     S->req_reset = S->done_reset = 0u;
     S->req_clear = S->done_clear = 0u;
@@ -743,6 +753,17 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
     return TCM_NAME(emit)(S, (TCM_X)x, 1); /* the window is empty for other curve kinds */
 }
 
+/* G on the block call's path: Horner, or a tabulated inverse (degree 0):
+ * the same arithmetic as emit(), whose G * 1 is G. */
+HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u)
+{
+    if (deg == 0u) {
+        const TCM_Y v = NUM_NAME(table_g)(S->table.TCM_YF, u);
+        return v >= 0 ? v : TCM_G_OTHER(S->curve, u);
+    }
+    return NUM_NAME(horner)(S->coef, deg, u);
+}
+
 /* The block call's inner loop: the samples from i on that stay inside the
  * fast-path window, with the window in registers and the branch in locals
  * (sample() keeps them in S: a store and a reload per sample). The same
@@ -767,7 +788,7 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
             if (!(xi > w0 && xi < w1)) {
                 break;
             }
-            y[i] = y_ctp + sign * NUM_NAME(horner)(S->coef, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            y[i] = y_ctp + sign * TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale);
             w0 = xi;
         }
     } else {
@@ -776,7 +797,7 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
             if (!(xi > w0 && xi < w1)) {
                 break;
             }
-            y[i] = y_ctp + sign * NUM_NAME(horner)(S->coef, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            y[i] = y_ctp + sign * TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale);
             w1 = xi;
         }
     }
