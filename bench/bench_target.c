@@ -506,6 +506,11 @@ int main(void)
 #else
     out_kv("linear_search", 0u);
 #endif
+#ifdef BENCH_INVERSE
+    /* the table's worst error against the exact inverse, as init measured
+     * it, in parts per 10^9 of the drive range */
+    out_kv("inv_max_err_rel_ppb", (unsigned long)(hyst_curve_inverse_error(&tcm_curve) * 1e9 + 0.5));
+#endif
     out_kv("failures", (unsigned long)failures);
     out_flush();
     hyst_port_exit(failures != 0 ? 1 : 0);
