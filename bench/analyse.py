@@ -328,6 +328,12 @@ def main():
         put("inv_worst_insns_nu4096", max(r["insns"] for r in inv_rows
                                           if wipe_kind(r["kind"]) or r["kind"].startswith("clamp")))
         put("inv_max_err_rel", "%.3g" % (int(inv.meta["inv_max_err_rel_ppb"]) * 1e-9))
+        # x^3's compensator: samples in the intervals next to its flat
+        # point, evaluated exactly, and in the others
+        for kind in ("inv_exact", "inv_table"):
+            got = [r["insns"] for r in inv_rows if r["kind"] == kind]
+            if got:
+                put("%s_interval_insns" % kind, max(got))
 
     # Estimated cycles (tools/cycle_model.py: Cortex-M4 pipeline model, zero
     # wait states) of the budget image's typical and worst samples.

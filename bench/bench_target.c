@@ -349,6 +349,32 @@ static void bench_tcm(void)
     }
 }
 
+#ifdef BENCH_INVERSE
+/* The intervals of an inverse table evaluated exactly (curve.h): x^3 on
+ * [-1, 1] has a flat point at 0, where the table's cubic misses the
+ * tolerance. Times samples of a rise through it, labelled "inv_exact" if
+ * they land in such an interval (m = interval), else "inv_table". */
+#define FLAT_SAMPLES 64u
+
+static void bench_exact_intervals(void)
+{
+    static const hyst_poly_t cube = {3u, HYST_REAL_C(-1.0), HYST_REAL_C(1.0), {1.0, 0.0, 0.0, 0.0}};
+    HYST_DEFINE_INVERSE(flat, 64u);
+    unsigned t;
+    if (HYST_INIT_INVERSE(flat, &cube) != HYST_OK || flat_curve.u.inv_table.exact == 0u) {
+        failures |= 512;
+        return;
+    }
+    (void)hyst_step(&flat, HYST_REAL_C(-0.05));
+    for (t = 1u; t <= FLAT_SAMPLES; ++t) {
+        const hyst_real_t yd = HYST_REAL_C(-0.05) + HYST_REAL_C(0.1) * (hyst_real_t)t / (hyst_real_t)FLAT_SAMPLES;
+        const unsigned k = (unsigned)((yd - flat_curve.lo.HYST_R) * flat_curve.unit.HYST_R);
+        timed_tcm(hyst_step, &flat, yd);
+        record(flat_curve.u.inv_table.table.HYST_R[4u * k] < 0 ? "inv_exact" : "inv_table", k, 0u, 0u);
+    }
+}
+#endif
+
 #if BENCH_BOUNDED
 /* Bounded memory (docs/memory.md), 32 entries per array on the 12-bit
  * codes: a random walk with nesting zigzags times every sample, labelled
@@ -478,6 +504,9 @@ int main(void)
     unsigned r;
     hyst_port_init();
     bench_tcm();
+#ifdef BENCH_INVERSE
+    bench_exact_intervals();
+#endif
 #if BENCH_BOUNDED
     bench_bounded(HYST_REAL_C(0.0));
     bench_bounded(HYST_REAL_C(4.0)); /* a 4-code deadband */

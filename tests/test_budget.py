@@ -82,6 +82,10 @@ def check(elf, args):
     print("typical sample: %d instructions (budget %d) [%s]" % (worst_typ.net, args.typical, " ".join(worst_typ.label)))
     print("worst sample:   %d instructions (budget %d) [%s]" % (worst.net, args.worst, " ".join(worst.label)))
     print("pi10 sample:    %s instructions; %d wipe-out samples, largest m %d" % (pi_max, len(wipes), m_max))
+    for k in ("inv_table", "inv_exact"):  # x^3's compensator next to its flat point (no budget)
+        got = [p.net for p in samples if kind(p) == k]
+        if got:
+            print("%s samples:  %d, %d..%d instructions" % (k, len(got), min(got), max(got)))
     over_typ = [p for p in typical if p.net > args.typical]
     over = [p for p in wipes + clamped if p.net > args.worst]
     if over_typ:
