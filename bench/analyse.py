@@ -316,6 +316,25 @@ def main():
     with open(os.path.join(args.out, "worst_path.txt"), "w") as f:
         f.write(worst_text + annotate(tcm_elf, tcm, SHOWCASE, objdump))
 
+    # The compensator (tabulated inverse of Eq. 20) on 0..4095: its typical
+    # sample, its worst at Nu = 4096, and its error as init measured it.
+    inv_elf = os.path.join(args.m4, "bench", "bench_budget_inv")
+    inv = qemu_count.measure(inv_elf, qemu)
+    if inv.exit_code != 0 or inv.meta.get("failures") != "0":
+        problems.append("bench_budget_inv: exit %s, failures %s" % (inv.exit_code, inv.meta.get("failures")))
+    else:
+        inv_rows = rows_of(inv, "binary")
+        put("inv_typical_insns", max(r["insns"] for r in inv_rows if r["kind"] in TYPICAL))
+        put("inv_worst_insns_nu4096", max(r["insns"] for r in inv_rows
+                                          if wipe_kind(r["kind"]) or r["kind"].startswith("clamp")))
+        put("inv_max_err_rel", "%.3g" % (int(inv.meta["inv_max_err_rel_ppb"]) * 1e-9))
+        # x^3's compensator: samples in the intervals next to its flat
+        # point, evaluated exactly, and in the others
+        for kind in ("inv_exact", "inv_table"):
+            got = [r["insns"] for r in inv_rows if r["kind"] == kind]
+            if got:
+                put("%s_interval_insns" % kind, max(got))
+
     # Estimated cycles (tools/cycle_model.py: Cortex-M4 pipeline model, zero
     # wait states) of the budget image's typical and worst samples.
     typ_c, worst_c = budget_cycles(os.path.join(args.m4, "bench", "bench_budget"), qemu)

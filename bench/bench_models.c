@@ -59,3 +59,19 @@ void bench_everett_codes(hyst_everett_t *e, double offset)
     e->e[2][0] = c[0] * span * span * span;
     e->e[0][1] = 0.1 * e->e[0][0];
 }
+
+void bench_f0_inverse_codes(hyst_poly_t *f0, double offset)
+{
+    static const double eq20[4] = {-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1};
+    const double hi = 40.0;
+    const double range = ((eq20[0] * hi + eq20[1]) * hi + eq20[2]) * hi; /* f0(hi) - f0(0) */
+    const double s = (double)(BENCH_NU - 1u) / range;
+    unsigned i;
+    f0->degree = 3u;
+    f0->lo = (hyst_real_t)0.0;
+    f0->hi = (hyst_real_t)hi;
+    for (i = 0u; i < 3u; ++i) {
+        f0->coeffs[i] = (hyst_real_t)(eq20[i] * s);
+    }
+    f0->coeffs[3] = (hyst_real_t)offset; /* f0(0) = offset */
+}

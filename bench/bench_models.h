@@ -23,4 +23,9 @@ void bench_f0_codes(hyst_poly_t *f0, double offset);
  *  width term times t), degree 3. */
 void bench_everett_codes(hyst_everett_t *e, double offset);
 
+/** Paper Eq. 20 over 0..40 V with its output scaled onto offset .. offset +
+ *  BENCH_NU - 1: a compensator of it (inverse.h) takes the desired output
+ *  as BENCH_NU codes, as the forward model takes the drive. */
+void bench_f0_inverse_codes(hyst_poly_t *f0, double offset);
+
 #endif

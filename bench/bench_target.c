@@ -25,7 +25,9 @@
  * BENCH_BOUNDED (bounded memory: every sample of a nesting random signal
  * through 32-entry arrays, with and without a deadband),
  * BENCH_LINEAR (the engine with a linear scan, bench/linear_engine.c:
- * changes the p model).
+ * changes the p model), BENCH_INVERSE (the compensator of Eq. 20, tabulated
+ * (inverse.h, HYST_INIT_INVERSE): the codes are desired outputs; no PI or
+ * bounded-memory pulses).
  */
 #include "hyst/hyst.h"
 #include "hyst/pi.h"
@@ -81,7 +83,15 @@ hyst_status_t bench_lin_init_(hyst_tcm_t *S, const hyst_poly_t *f0, float *xltp,
 #define PI_SAMPLES 256u
 #define MAX_RECORDS 32000u
 
+#ifdef BENCH_INVERSE
+HYST_DEFINE_INVERSE(tcm, NU);
+#define BENCH_MODEL(f0, offset) bench_f0_inverse_codes((f0), (offset))
+#define BENCH_INIT(f0) HYST_INIT_INVERSE(tcm, (f0))
+#else
 HYST_DEFINE(tcm, NU);
+#define BENCH_MODEL(f0, offset) bench_f0_codes((f0), (offset))
+#define BENCH_INIT(f0) HYST_INIT(tcm, (f0))
+#endif
 
 typedef struct {
     const char *kind;
@@ -318,7 +328,7 @@ static void bench_tcm(void)
 {
     hyst_poly_t f0;
     unsigned i;
-    bench_f0_codes(&f0, (double)BENCH_OFFSET);
+    BENCH_MODEL(&f0, (double)BENCH_OFFSET);
 #if BENCH_EVERETT
     {
         static hyst_curve_t curve; /* the asymmetric kind keeps its curve */
@@ -331,7 +341,7 @@ static void bench_tcm(void)
         }
     }
 #else
-    if (HYST_INIT(tcm, &f0) != HYST_OK) {
+    if (BENCH_INIT(&f0) != HYST_OK) {
         failures |= 16;
         return;
     }
@@ -354,6 +364,32 @@ static void bench_tcm(void)
         measure_falling(i, i == CAP - 1u);
     }
 }
+
+#ifdef BENCH_INVERSE
+/* The intervals of an inverse table evaluated exactly (curve.h): x^3 on
+ * [-1, 1] has a flat point at 0, where the table's cubic misses the
+ * tolerance. Times samples of a rise through it, labelled "inv_exact" if
+ * they land in such an interval (m = interval), else "inv_table". */
+#define FLAT_SAMPLES 64u
+
+static void bench_exact_intervals(void)
+{
+    static const hyst_poly_t cube = {3u, HYST_REAL_C(-1.0), HYST_REAL_C(1.0), {1.0, 0.0, 0.0, 0.0}};
+    HYST_DEFINE_INVERSE(flat, 64u);
+    unsigned t;
+    if (HYST_INIT_INVERSE(flat, &cube) != HYST_OK || flat_curve.u.inv_table.exact == 0u) {
+        failures |= 512;
+        return;
+    }
+    (void)hyst_step(&flat, HYST_REAL_C(-0.05));
+    for (t = 1u; t <= FLAT_SAMPLES; ++t) {
+        const hyst_real_t yd = HYST_REAL_C(-0.05) + HYST_REAL_C(0.1) * (hyst_real_t)t / (hyst_real_t)FLAT_SAMPLES;
+        const unsigned k = (unsigned)((yd - flat_curve.lo.HYST_R) * flat_curve.unit.HYST_R);
+        timed_tcm(hyst_step, &flat, yd);
+        record(flat_curve.u.inv_table.table.HYST_R[4u * k] < 0 ? "inv_exact" : "inv_table", k, 0u, 0u);
+    }
+}
+#endif
 
 #if BENCH_BOUNDED
 /* Bounded memory (docs/memory.md), 32 entries per array on the 12-bit
@@ -484,6 +520,9 @@ int main(void)
     unsigned r;
     hyst_port_init();
     bench_tcm();
+#ifdef BENCH_INVERSE
+    bench_exact_intervals();
+#endif
 #if BENCH_BOUNDED
     bench_bounded(HYST_REAL_C(0.0));
     bench_bounded(HYST_REAL_C(4.0)); /* a 4-code deadband */
@@ -511,6 +550,11 @@ int main(void)
     out_kv("linear_search", 1u);
 #else
     out_kv("linear_search", 0u);
+#endif
+#ifdef BENCH_INVERSE
+    /* the table's worst error against the exact inverse, as init measured
+     * it, in parts per 10^9 of the drive range */
+    out_kv("inv_max_err_rel_ppb", (unsigned long)(hyst_curve_inverse_error(&tcm_curve) * 1e9 + 0.5));
 #endif
     out_kv("failures", (unsigned long)failures);
     out_flush();

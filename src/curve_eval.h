@@ -21,6 +21,7 @@
 #error "curve_eval.h: include src/num_ops.h first"
 #endif
 
+#include <limits.h>
 #include <string.h>
 
 #include "hyst_util.h"
@@ -311,6 +312,46 @@ static NUM_T NUM_NAME(poly_inv_g)(const hyst_curve_t *c, NUM_T e)
     return r * c->u.poly_inv.span.NUM_F;
 }
 
+/* An interval of a tabulated inverse marked exact (next to a flat point of
+ * f0): bisection on G inside the bracket of the nearest knots the table
+ * evaluates (the end of the range always does). Monotone in s, as
+ * poly_inv_g: the bracket is the same for every s of a run of marked
+ * intervals, each decision is monotone in s, and the answer is the
+ * bracket's lower end. At most ~log2(span / ulp) evaluations of G. */
+static NUM_T NUM_NAME(table_exact)(const hyst_curve_t *c, NUM_T s)
+{
+    const NUM_T *tab = c->u.inv_table.table.NUM_F;
+    const NUM_T u_per_d = c->u.inv_table.u_per_d.NUM_F, scale = c->unit.NUM_F;
+    size_t lo = (size_t)(unsigned long)s, hi = lo + 1u;
+    NUM_T a, b;
+    unsigned it;
+    if (lo > c->u.inv_table.intervals) {
+        lo = c->u.inv_table.intervals; /* unreachable: the table's scale */
+        hi = lo;
+    }
+    while (lo > 0u && tab[4u * lo] < 0) {
+        --lo;
+    }
+    while (hi < c->u.inv_table.intervals && tab[4u * hi] < 0) {
+        ++hi;
+    }
+    a = tab[4u * lo] < 0 ? 0 : tab[4u * lo];
+    b = tab[4u * hi];
+    for (it = 0u; it < 2u * (unsigned)(sizeof(NUM_T) * CHAR_BIT); ++it) {
+        const NUM_T m = (a + b) * NUM_C(0.5);
+        if (!(m > a && m < b)) {
+            break;
+        }
+        if (NUM_NAME(horner)(c->u.inv_table.fwd.a, c->u.inv_table.fwd.degree, m * u_per_d) *
+                scale < s) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    return a;
+}
+
 NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
 {
     if (curve->kind == (unsigned)HYST_CURVE_POLY_INV) {
@@ -327,6 +368,10 @@ NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
         }
         return acc * w;
     }
+    if (curve->kind == (unsigned)HYST_CURVE_INV_TABLE) { /* d is s here */
+        const NUM_T v = NUM_NAME(table_g)(curve->u.inv_table.table.NUM_F, d);
+        return v >= 0 ? v : NUM_NAME(table_exact)(curve, d);
+    }
     /* PWL, PWL_INV: the difference of two interpolations; exactly 0 at d = 0 */
     return NUM_NAME(pwl_eval)(curve, curve->lo.NUM_F + d) - curve->y_lo.NUM_F;
 }
@@ -338,7 +383,15 @@ NUM_T NUM_NAME(curve_g)(const hyst_curve_t *curve, NUM_T d)
     }
     return curve->kind == (unsigned)HYST_CURVE_POLY
                ? NUM_NAME(horner)(curve->u.poly.a, curve->u.poly.degree, d * curve->unit.NUM_F)
-               : NUM_NAME(curve_g_other_)(curve, d);
+               : NUM_NAME(curve_g_other_)(curve, d * curve->unit.NUM_F); /* exact for unit 1 */
+}
+
+hyst_status_t NUM_NAME(curve_inverse_table)(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                            NUM_T *table, size_t intervals)
+{
+    hyst_ptr_t t;
+    t.NUM_F = table;
+    return hyst_curve_inverse_table_(inv, fwd, t, intervals, NUM_VARIANT);
 }
 
 NUM_T NUM_NAME(curve_eval)(const hyst_curve_t *curve, NUM_T x)

@@ -359,6 +359,12 @@ hyst_status_t hyst_curve_check(const hyst_curve_t *curve)
                        curve->u.everett.degree <= (unsigned)HYST_EVERETT_MAX_DEGREE
                    ? HYST_OK
                    : HYST_ERR_ARG;
+    case HYST_CURVE_INV_TABLE:
+        return curve->u.inv_table.fwd.degree >= 1u &&
+                       curve->u.inv_table.fwd.degree <= HYST_MAX_DEGREE &&
+                       curve->u.inv_table.table.f32 != NULL && curve->u.inv_table.intervals >= 1u
+                   ? HYST_OK
+                   : HYST_ERR_ARG;
     case HYST_CURVE_PWL:
     case HYST_CURVE_PWL_INV:
         return curve->u.pwl.x.f32 != NULL && curve->u.pwl.y.f32 != NULL && curve->u.pwl.n >= 2u

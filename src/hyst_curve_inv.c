@@ -1,7 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* Inverse curves f0^-1 for a compensator (docs/theory.md), written once for
  * every variant: the axes swapped, and for a polynomial the start table of
- * its monotone inversion (evaluated per sample by src/curve_eval.h). */
+ * its monotone inversion (evaluated per sample by src/curve_eval.h), or the
+ * table of cubic pieces of the tabulated inverse (evaluated inline by the
+ * engine, src/tcm_engine.h). */
+#include <string.h>
+
 #include "hyst_util.h"
 
 /* G(u) in hyst_wide_t, from the coefficients the samples will use. */
@@ -15,31 +19,266 @@ static hyst_wide_t unit_g(const hyst_curve_poly_t *p, unsigned variant, hyst_wid
     return acc * u;
 }
 
-/* The start table: bisection in hyst_wide_t (init time, cost irrelevant). */
+/* The u in [a, b] where G crosses e (G(a) <= e <= G(b)), by bisection in
+ * hyst_wide_t down to adjacent numbers (init time, cost irrelevant). */
+static hyst_wide_t solve_g(const hyst_curve_poly_t *p, unsigned variant, hyst_wide_t e,
+                           hyst_wide_t a, hyst_wide_t b)
+{
+    unsigned it;
+    for (it = 0u; it < 80u; ++it) {
+        const hyst_wide_t m = (a + b) / 2;
+        if (m <= a || m >= b) {
+            break;
+        }
+        if (unit_g(p, variant, m) < e) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    return a;
+}
+
+/* The start table of POLY_INV. */
 static void fill_knots(hyst_curve_t *c, hyst_wide_t range)
 {
     hyst_wide_t from = 0;
-    unsigned k, it;
+    unsigned k;
     (void)hyst_num_set(&c->u.poly_inv.knot_u[0], c->variant, 0);
     (void)hyst_num_set(&c->u.poly_inv.knot_u[HYST_INV_KNOTS], c->variant, 1);
     for (k = 1u; k < HYST_INV_KNOTS; ++k) {
         /* k / K first: range * k overflows once range > DBL_MAX / K */
         const hyst_wide_t e = range * ((hyst_wide_t)k / (hyst_wide_t)HYST_INV_KNOTS);
-        hyst_wide_t a = from, b = 1;
-        for (it = 0u; it < 80u; ++it) {
-            const hyst_wide_t m = (a + b) / 2;
-            if (m <= a || m >= b) {
-                break;
-            }
-            if (unit_g(&c->u.poly_inv.fwd, c->variant, m) < e) {
-                a = m;
-            } else {
-                b = m;
-            }
-        }
-        from = a;
-        (void)hyst_num_set(&c->u.poly_inv.knot_u[k], c->variant, a);
+        from = solve_g(&c->u.poly_inv.fwd, c->variant, e, from, 1);
+        (void)hyst_num_set(&c->u.poly_inv.knot_u[k], c->variant, from);
     }
+}
+
+/* G'(u) from the coefficients the samples will use. */
+static hyst_wide_t unit_dg(const hyst_curve_poly_t *p, unsigned variant, hyst_wide_t u)
+{
+    hyst_wide_t acc = 0;
+    unsigned i;
+    for (i = 0u; i < p->degree; ++i) {
+        acc = acc * u + (hyst_wide_t)(p->degree - i) * hyst_num_get(&p->a[i], variant);
+    }
+    return acc;
+}
+
+/* As solve_g, from a guess u in [a, b]: Newton steps, each narrowing the
+ * bracket by the sign of G(u) - e, and a bisection instead of a step that
+ * would leave it; stops once a step is at the rounding level. A good guess
+ * (the table's own cubic) needs 2 or 3 evaluations instead of ~45. */
+static hyst_wide_t solve_g_near(const hyst_curve_poly_t *p, unsigned variant, hyst_wide_t e,
+                                hyst_wide_t a, hyst_wide_t b, hyst_wide_t u)
+{
+    unsigned it;
+    for (it = 0u; it < 200u; ++it) {
+        const hyst_wide_t r = unit_g(p, variant, u) - e;
+        const hyst_wide_t dg = unit_dg(p, variant, u);
+        hyst_wide_t next;
+        if (r < 0) {
+            a = u;
+        } else {
+            b = u;
+        }
+        next = dg > 0 ? u - r / dg : a;
+        if (!(next > a && next < b)) {
+            next = (a + b) / 2;
+            if (!(next > a && next < b)) {
+                break; /* adjacent numbers */
+            }
+        } else if (hyst_wide_abs(next - u) <= 4 * HYST_WIDE_EPS * hyst_wide_abs(u)) {
+            return next;
+        }
+        u = next;
+    }
+    return u;
+}
+
+/* Building an inverse table: the curve being built, and a window of four
+ * knots k-1 .. k+2 (the drive d at s = k, and its raw slope dd/ds). */
+typedef struct {
+    hyst_curve_t *c;
+    hyst_ptr_t table;
+    hyst_wide_t span, e_per_s, eps;
+    hyst_wide_t u[4], d[4], m[4];
+} table_build_t;
+
+/* Knot j (0..N) into window slot w: exact u by bisection from the previous
+ * knot's, its drive and slope (infinite at a flat point of f0). */
+static void table_knot(table_build_t *b, size_t j, unsigned w)
+{
+    const hyst_curve_poly_t *p = &b->c->u.inv_table.fwd;
+    const hyst_wide_t from = j > 0u ? b->u[w - 1u] : 0;
+    hyst_wide_t u = solve_g_near(p, b->c->variant, (hyst_wide_t)j * b->e_per_s, from, 1, from);
+    b->u[w] = u;
+    b->d[w] = u * b->span;
+    u = unit_dg(p, b->c->variant, u);
+    b->m[w] = u > 0 ? b->e_per_s * b->span / u : -1; /* -1: infinite */
+}
+
+/* Slope at window slot w (1 or 2), limited to three times the secants on
+ * either side (Fritsch-Carlson: then each piece is monotone). */
+static hyst_wide_t table_slope(const table_build_t *b, unsigned w, int has_left, int has_right)
+{
+    hyst_wide_t m = b->m[w];
+    const hyst_wide_t left = has_left ? 3 * (b->d[w] - b->d[w - 1u]) : -1;
+    const hyst_wide_t right = has_right ? 3 * (b->d[w + 1u] - b->d[w]) : -1;
+    if (left >= 0 && (m < 0 || left < m)) {
+        m = left;
+    }
+    if (right >= 0 && (m < 0 || right < m)) {
+        m = right;
+    }
+    return m < 0 ? 0 : m;
+}
+
+/* Stores entry i of the table in the variant's type; returns it rounded. */
+static hyst_wide_t table_put(hyst_ptr_t table, size_t i, unsigned variant, hyst_wide_t w)
+{
+#if HYST_ENABLE_F64
+    if (variant == (unsigned)HYST_VARIANT_F64) {
+        table.f64[i] = (double)w + 0.0; /* +0: the sign marks exact intervals */
+        return (hyst_wide_t)table.f64[i];
+    }
+#else
+    (void)variant;
+#endif
+    table.f32[i] = (float)w + 0.0f;
+    return (hyst_wide_t)table.f32[i];
+}
+
+/* Points per interval where init measures a piece against the exact inverse. */
+#define TABLE_PROBES 16u
+
+/* Interval k from the knots in window slots 1 and 2: the cubic Hermite
+ * piece, rounded as stored, measured against the exact inverse; stored, or
+ * marked exact (c0 = -1) if it misses HYST_INV_TABLE_TOL. Returns its
+ * error (0 if marked). */
+static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has_right)
+{
+    const hyst_wide_t m0 = table_slope(b, 1u, has_left, 1);
+    const hyst_wide_t m1 = table_slope(b, 2u, 1, has_right);
+    const hyst_wide_t dd = b->d[2] - b->d[1];
+    const hyst_curve_poly_t *p = &b->c->u.inv_table.fwd;
+    hyst_wide_t c[4], worst = 0;
+    unsigned i;
+    c[0] = table_put(b->table, 4u * k, b->c->variant, b->d[1]);
+    c[1] = table_put(b->table, 4u * k + 1u, b->c->variant, m0);
+    c[2] = table_put(b->table, 4u * k + 2u, b->c->variant, 3 * dd - 2 * m0 - m1);
+    c[3] = table_put(b->table, 4u * k + 3u, b->c->variant, m0 + m1 - 2 * dd);
+    for (i = 1u; i < TABLE_PROBES; ++i) {
+        const hyst_wide_t t = (hyst_wide_t)i / (hyst_wide_t)TABLE_PROBES;
+        const hyst_wide_t e = ((hyst_wide_t)k + t) * b->e_per_s;
+        const hyst_wide_t cubic = c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+        const hyst_wide_t guess = cubic / b->span;
+        const hyst_wide_t exact =
+            b->span * solve_g_near(p, b->c->variant, e, b->u[1], b->u[2],
+                                   guess > b->u[1] && guess < b->u[2] ? guess : b->u[1]);
+        const hyst_wide_t err = hyst_wide_abs(cubic - exact);
+        worst = err > worst ? err : worst;
+    }
+    /* the evaluation's own rounding in the variant's type */
+    worst += 4 * b->eps *
+             (hyst_wide_abs(c[0]) + hyst_wide_abs(c[1]) + hyst_wide_abs(c[2]) + hyst_wide_abs(c[3]));
+    if (!(worst <= (hyst_wide_t)HYST_INV_TABLE_TOL * b->span)) {
+        (void)table_put(b->table, 4u * k, b->c->variant, -1);
+        (void)table_put(b->table, 4u * k + 1u, b->c->variant, 0);
+        (void)table_put(b->table, 4u * k + 2u, b->c->variant, 0);
+        (void)table_put(b->table, 4u * k + 3u, b->c->variant, 0);
+        ++b->c->u.inv_table.exact;
+        return 0;
+    }
+    return worst;
+}
+
+/* Largest interval count: s = e N / R keeps its integer part exact in float. */
+#define TABLE_MAX_INTERVALS ((unsigned long)1 << 20)
+
+hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                        hyst_ptr_t table, size_t intervals, unsigned variant)
+{
+    hyst_curve_t out;
+    table_build_t b;
+    hyst_wide_t range, span, worst = 0, err;
+    size_t k;
+    unsigned w;
+    hyst_status_t st = hyst_curve_check(fwd);
+    if (inv == NULL || table.f32 == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    if (fwd->variant != variant) {
+        return HYST_ERR_LAYOUT;
+    }
+    if (fwd->kind != (unsigned)HYST_CURVE_POLY || intervals < 1u ||
+        (unsigned long)intervals > TABLE_MAX_INTERVALS) {
+        return HYST_ERR_ARG;
+    }
+    out = *fwd;
+    out.kind = HYST_CURVE_INV_TABLE;
+    out.lo = fwd->y_lo;
+    out.hi = fwd->y_hi;
+    out.y_lo = fwd->lo;
+    out.y_hi = fwd->hi;
+    (void)hyst_num_set(&out.rounding, variant, 0);
+    out.u.inv_table.fwd = fwd->u.poly;
+    range = unit_g(&fwd->u.poly, variant, 1);
+    span = hyst_num_get(&fwd->hi, variant) - hyst_num_get(&fwd->lo, variant);
+    if (!(range > 0) || !(span > 0)) {
+        return HYST_ERR_NOT_INVERTIBLE;
+    }
+    (void)hyst_num_set(&out.u.inv_table.span, variant, span);
+    (void)hyst_num_set(&out.u.inv_table.u_per_d, variant, 1 / span);
+    /* s = e unit, as the samples compute it: the knots sit where they see them */
+    (void)hyst_num_set(&out.unit, variant, (hyst_wide_t)intervals / range);
+    memset(&b, 0, sizeof b);
+    b.span = span;
+    b.e_per_s = 1 / hyst_num_get(&out.unit, variant);
+    b.eps = variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_EPSILON : HYST_WIDE_EPS;
+    out.u.inv_table.table.f32 = table.f32;
+#if HYST_ENABLE_F64
+    if (variant == (unsigned)HYST_VARIANT_F64) {
+        out.u.inv_table.table.f64 = table.f64;
+    }
+#endif
+    out.u.inv_table.intervals = intervals;
+    out.u.inv_table.exact = 0u;
+    b.c = &out;
+    b.table = table;
+    /* window slots 0..3 = knots k-1 .. k+2 */
+    table_knot(&b, 0u, 1u);
+    table_knot(&b, 1u, 2u);
+    for (k = 0u; k < intervals; ++k) {
+        if (k + 2u <= intervals) {
+            table_knot(&b, k + 2u, 3u);
+        }
+        err = table_piece(&b, k, k > 0u, k + 1u < intervals);
+        worst = err > worst ? err : worst;
+        for (w = 0u; w < 3u; ++w) {
+            b.u[w] = b.u[w + 1u];
+            b.d[w] = b.d[w + 1u];
+            b.m[w] = b.m[w + 1u];
+        }
+    }
+    /* the end of the range: s = N, and above it by rounding */
+    (void)table_put(table, 4u * intervals, variant, b.span);
+    for (w = 1u; w < 4u; ++w) {
+        (void)table_put(table, 4u * intervals + w, variant, 0);
+    }
+    out.u.inv_table.max_err = worst / b.span;
+    *inv = out;
+    return HYST_OK;
+}
+
+hyst_wide_t hyst_curve_inverse_error(const hyst_curve_t *curve)
+{
+    return curve != NULL && curve->kind == (unsigned)HYST_CURVE_INV_TABLE
+               ? curve->u.inv_table.max_err
+               : 0;
 }
 
 /* Inverse of a PWL or PWL_INV curve: the same points, axes swapped (exact). */
@@ -85,8 +324,11 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
     out.y_hi = fwd->hi;
     lo = hyst_num_get(&out.lo, out.variant);
     hi = hyst_num_get(&out.hi, out.variant);
-    if (fwd->kind == (unsigned)HYST_CURVE_POLY_INV) { /* as hyst_curve_poly_() set it */
-        const hyst_curve_poly_t p = fwd->u.poly_inv.fwd;
+    if (fwd->kind == (unsigned)HYST_CURVE_POLY_INV ||
+        fwd->kind == (unsigned)HYST_CURVE_INV_TABLE) { /* as hyst_curve_poly_() set it */
+        const hyst_curve_poly_t p = fwd->kind == (unsigned)HYST_CURVE_POLY_INV
+                                        ? fwd->u.poly_inv.fwd
+                                        : fwd->u.inv_table.fwd;
         out.kind = HYST_CURVE_POLY;
         out.u.poly = p;
         (void)hyst_num_set(&out.unit, out.variant, 1 / (hi - lo));

@@ -241,6 +241,19 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
         for (k = 0u; k <= HYST_INV_KNOTS; ++k) {
             crc = crc_num(crc, &c->u.poly_inv.knot_u[k], f->yt);
         }
+    } else if (c->kind == (unsigned)HYST_CURVE_INV_TABLE) {
+        size_t i;
+        crc = crc_word(crc, c->u.inv_table.fwd.degree);
+        for (k = 0u; k < c->u.inv_table.fwd.degree && k < HYST_MAX_DEGREE; ++k) {
+            crc = crc_num(crc, &c->u.inv_table.fwd.a[k], f->yt);
+        }
+        crc = crc_num(crc, &c->u.inv_table.span, f->yt);
+        crc = crc_word(crc, (unsigned long)c->u.inv_table.intervals);
+        for (i = 0u; i < HYST_INV_TABLE_LEN(c->u.inv_table.intervals); ++i) { /* the pieces */
+            hyst_num_t v; /* exact: the table has the curve's type */
+            (void)hyst_num_set(&v, c->variant, hyst_cptr_get(c->u.inv_table.table, i, c->variant));
+            crc = crc_num(crc, &v, f->yt);
+        }
     } else if (c->kind == (unsigned)HYST_CURVE_PWL || c->kind == (unsigned)HYST_CURVE_PWL_INV) {
         size_t i;
         crc = crc_word(crc, (unsigned long)c->u.pwl.n);

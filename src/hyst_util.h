@@ -145,8 +145,14 @@ void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
                       const hyst_tcm_book_t *book);
 #endif
 
+/* The tabulated inverse of a polynomial curve of a real variant (the work
+ * of the hyst_f32/f64_curve_inverse_table constructors, written once). */
+hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                        hyst_ptr_t table, size_t intervals, unsigned variant);
+
 /* The kinds of g evaluated out of line (src/curve_eval.h), per real type:
- * g(d), d = argument already scaled by the curve's unit (1 for them). */
+ * g at its argument, already scaled by the curve's unit (1 for the kinds
+ * but the inverse table, whose argument is s = e N / (f0(hi) - f0(lo))). */
 float hyst_f32_curve_g_other_(const hyst_curve_t *curve, float d);
 #if HYST_ENABLE_F64
 double hyst_f64_curve_g_other_(const hyst_curve_t *curve, double d);

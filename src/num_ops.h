@@ -18,12 +18,12 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
     return z == z;
 }
 
-/* The cases 0..8 of Horner's rule unrolled by a switch on the degree n:
+/* The cases 1..8 of Horner's rule unrolled by a switch on the degree n:
  * acc = a[0] u^(n-1) + ... + a[n-1], one multiply-add per coefficient, no
- * loop and no call (the per-sample path). The caller writes the switch and
- * its default (n >= 9), so that the engine can route other values there. */
+ * loop and no call (the per-sample path). The caller writes the switch, its
+ * case 0 (the jump table starts there) and its default (n >= 9), so that
+ * the engine can route other values there. */
 #define NUM_HORNER_CASES_(a, u, acc)                                                         \
-    case 0: acc = 0; break; /* never called so; the jump table starts at 0 */                \
     case 1: acc = a[0].NUM_F; break;                                                          \
     case 2: acc = NUM_HORNER_(a, u, a[0].NUM_F, 1); break;                                    \
     case 3: acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, a[0].NUM_F, 1), 2); break;              \
@@ -65,10 +65,23 @@ HYST_INLINE NUM_T NUM_NAME(horner)(const hyst_num_t *a, unsigned n, NUM_T u)
 {
     NUM_T acc;
     switch (n) { /* independent cases: no register merges */
+    case 0: acc = 0; break; /* never called so */
     NUM_HORNER_CASES_(a, u, acc);
     default: acc = NUM_NAME(horner_loop)(a, n, u); break;
     }
     return acc * u;
+}
+
+/* A tabulated inverse (curve.h, HYST_CURVE_INV_TABLE) at s >= 0: interval
+ * k = floor(s), one cubic in t = s - k (exact: k <= s < 2k for k >= 1).
+ * k <= N: s <= N (1 + 2 eps) by construction of the table's scale, and
+ * entry N is the end of the range. An interval marked exact gives -1. */
+HYST_INLINE NUM_T NUM_NAME(table_g)(const NUM_T *tab, NUM_T s)
+{
+    const unsigned long k = (unsigned long)s; /* 16-bit unsigned on C28x */
+    const NUM_T t = s - (NUM_T)k;
+    const NUM_T *c = tab + 4u * k;
+    return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
 }
 
 #endif /* HYST_NUM_OPS_H */

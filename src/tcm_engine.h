@@ -184,9 +184,16 @@ HYST_INLINE TCM_Y TCM_NAME(fast_end)(hyst_tcm_t *S, TCM_X x, TCM_Y g)
  * needs no stack frame. how: TCM_FAST, TCM_ROSE, TCM_FELL. */
 HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
 {
-    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
+    TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
     TCM_Y acc, g, y;
     switch (S->horner) {
+    case 0: /* a tabulated inverse: G = acc; its exact intervals by the tail call */
+        acc = NUM_NAME(table_g)(S->table.TCM_YF, u);
+        if (!(acc >= 0)) {
+            return TCM_NAME(emit_rare)(S, x, how);
+        }
+        u = 1;
+        break;
     NUM_HORNER_CASES_(S->coef, u, acc);
     default: return TCM_NAME(emit_rare)(S, x, how);
     }
@@ -202,7 +209,7 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
 static void TCM_NAME(set_detour)(hyst_tcm_t *S)
 {
     const unsigned merged = S->forgot_level != TCM_NO_LEVEL ? TCM_SLOW_ONLY | TCM_BOOK : 0u;
-    S->detour = merged | (S->degree == 0u ? TCM_SLOW_ONLY : 0u) |
+    S->detour = merged | (S->degree == 0u && S->table.TCM_YF == NULL ? TCM_SLOW_ONLY : 0u) |
                 (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
                 (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u) |
                 (S->status != HYST_OK ? TCM_STALE : 0u) |
@@ -372,6 +379,9 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
                              ? YV(curve->u.poly.a[k])
                              : 0;
     }
+    S->table.TCM_YF = curve->kind == (unsigned)HYST_CURVE_INV_TABLE
+                          ? curve->u.inv_table.table.TCM_YF
+                          : NULL;
     S->seq = 0u;
     S->req_reset = S->done_reset = 0u;
     S->req_clear = S->done_clear = 0u;
@@ -911,7 +921,13 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
 /* G at u guarded as fast_end() does: never below the last sample's. */
 HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u, TCM_Y g_prev)
 {
-    const TCM_Y g = NUM_NAME(horner)(S->coef, deg, u);
+    TCM_Y g;
+    if (deg == 0u) { /* a tabulated inverse: the same arithmetic as emit(), whose G * 1 is G */
+        const TCM_Y v = NUM_NAME(table_g)(S->table.TCM_YF, u);
+        g = v >= 0 ? v : TCM_G_OTHER(S->curve, u);
+    } else {
+        g = NUM_NAME(horner)(S->coef, deg, u);
+    }
     return g < g_prev ? g_prev : g;
 }
 

@@ -89,15 +89,20 @@ hyst_status_t NUM_NAME(init_)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp,
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(init_inverse_)(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
-                                      NUM_T *xltp, NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp,
-                                      size_t capacity, unsigned long layout)
+/* A compensator of f0: its inverse curve into *inv (exact by bisection, or
+ * tabulated into table if `tabulate`), then the instance. */
+static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,
+                                               const hyst_poly_t *f0, int tabulate, NUM_T *table,
+                                               size_t intervals, NUM_T *xltp, NUM_T *yltp,
+                                               NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
+                                               unsigned long layout)
 {
-    hyst_curve_t curve;
+    hyst_curve_t fwd, curve;
     /* curve errors first, then the instance's (inverse.h) */
-    hyst_status_t st = inv == NULL ? HYST_ERR_NULL : hyst_curve_poly_(&curve, f0, NUM_VARIANT, layout);
+    hyst_status_t st = inv == NULL ? HYST_ERR_NULL : hyst_curve_poly_(&fwd, f0, NUM_VARIANT, layout);
     if (st == HYST_OK) {
-        st = hyst_curve_inverse(&curve, &curve);
+        st = tabulate ? NUM_NAME(curve_inverse_table)(&curve, &fwd, table, intervals)
+                      : hyst_curve_inverse(&curve, &fwd);
     }
     if (st == HYST_OK) {
         st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T), sizeof(NUM_T),
@@ -110,6 +115,24 @@ hyst_status_t NUM_NAME(init_inverse_)(hyst_tcm_t *S, hyst_curve_t *inv, const hy
     NUM_NAME(attach)(S, inv, inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F, xltp, yltp, xrtp,
                      yrtp, capacity);
     return HYST_OK;
+}
+
+hyst_status_t NUM_NAME(init_inverse_)(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
+                                      NUM_T *xltp, NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp,
+                                      size_t capacity, unsigned long layout)
+{
+    return NUM_NAME(init_inverse_of)(S, inv, f0, 0, NULL, 0u, xltp, yltp, xrtp, yrtp, capacity,
+                                     layout);
+}
+
+hyst_status_t NUM_NAME(init_inverse_table_)(hyst_tcm_t *S, hyst_curve_t *inv,
+                                            const hyst_poly_t *f0, NUM_T *table,
+                                            size_t intervals, NUM_T *xltp, NUM_T *yltp,
+                                            NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
+                                            unsigned long layout)
+{
+    return NUM_NAME(init_inverse_of)(S, inv, f0, 1, table, intervals, xltp, yltp, xrtp, yrtp,
+                                     capacity, layout);
 }
 
 /* The deadband checks shared by the immediate call and the request. */

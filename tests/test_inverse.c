@@ -90,16 +90,6 @@ static double inverse_residual(const hyst_poly_t *f0, double e_flat)
     return worst;
 }
 
-static hyst_poly_t monomial(unsigned degree, double lo, double hi)
-{
-    hyst_poly_t f = {0};
-    f.degree = degree;
-    f.lo = (hyst_real_t)lo;
-    f.hi = (hyst_real_t)hi;
-    f.coeffs[0] = 1;
-    return f;
-}
-
 /* f0 with slope > 0 everywhere: Eq. 20 and random curves of every degree. */
 static void test_poly_inverse_residual_on_increasing_curves(void)
 {
@@ -108,17 +98,8 @@ static void test_poly_inverse_residual_on_increasing_curves(void)
     TEST_PRINTF("HYST_INV_MAX_ITER %d, HYST_INV_KNOTS %d: Eq. 20: worst |g(g^-1(e)) - e| / range = %g",
                 HYST_INV_MAX_ITER, HYST_INV_KNOTS, worst);
     for (degree = 1u; degree <= HYST_MAX_DEGREE; ++degree) {
-        hyst_poly_t f = {0};
-        double scale = 1.0, res;
-        unsigned j;
-        f.degree = degree;
-        f.lo = (hyst_real_t)rng_range(&rng, 0.0, 5.0);
-        f.hi = (hyst_real_t)((double)f.lo + rng_range(&rng, 1.0, 4000.0));
-        for (j = 0u; j <= degree; ++j) {
-            f.coeffs[degree - j] = (hyst_real_t)(rng_range(&rng, 0.1, 2.0) / scale);
-            scale *= (double)f.hi;
-        }
-        res = inverse_residual(&f, 0.0);
+        const hyst_poly_t f = poly_random_increasing(&rng, degree);
+        const double res = inverse_residual(&f, 0.0);
         TEST_PRINTF("random degree %u: %g", degree, res);
         worst = res > worst ? res : worst;
     }
@@ -136,7 +117,7 @@ static void test_poly_inverse_residual_at_flat_points(void)
     double worst = 0.0;
     int k;
     for (k = 0; k < 5; ++k) {
-        const hyst_poly_t f = monomial((unsigned)spec[k][0], spec[k][1], spec[k][2]);
+        const hyst_poly_t f = poly_monomial((unsigned)spec[k][0], spec[k][1], spec[k][2]);
         const double res = inverse_residual(&f, spec[k][3]);
         TEST_PRINTF("x^%d on [%g, %g]: %g", (int)spec[k][0], spec[k][1], spec[k][2], res);
         worst = res > worst ? res : worst;
@@ -252,7 +233,7 @@ static void test_poly_inverse_is_monotone(void)
     int k;
     reversals = sweep_monotone(&paper_eq20, 0.0, POLY_INV_TOL, "Eq. 20");
     for (k = 0; k < 5; ++k) {
-        const hyst_poly_t f = monomial((unsigned)spec[k][0], spec[k][1], spec[k][2]);
+        const hyst_poly_t f = poly_monomial((unsigned)spec[k][0], spec[k][1], spec[k][2]);
         char name[40];
         (void)snprintf(name, sizeof name, "x^%d on [%g, %g]", (int)spec[k][0], spec[k][1],
                        spec[k][2]);
@@ -607,7 +588,7 @@ static void test_compensator_has_no_false_reversal_at_flat_points(void)
     double worst = 0.0;
     int k;
     for (k = 0; k < 4; ++k) {
-        const hyst_poly_t f = monomial((unsigned)spec[k][0], spec[k][1], spec[k][2]);
+        const hyst_poly_t f = poly_monomial((unsigned)spec[k][0], spec[k][1], spec[k][2]);
         flat_pass(&f, spec[k][3], 1, &worst);
         flat_pass(&f, spec[k][3], 0, &worst);
     }

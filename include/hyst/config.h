@@ -16,6 +16,8 @@
  * | HYST_MAX_DEGREE     | 9       | highest polynomial degree of a curve (>= 1)                | yes    |
  * | HYST_INV_KNOTS      | 16      | intervals of the start table of an inverted polynomial      | yes    |
  * | HYST_INV_MAX_ITER   | 12      | bound on the work of an inverted polynomial per sample      | no     |
+ * | HYST_INV_TABLE      | 256     | intervals of a compensator's inverse table (HYST_DEFINE_INVERSE) | no |
+ * | HYST_INV_TABLE_TOL  | 5e-6    | error of an inverse table's interval, of the drive range, above which it is evaluated exactly | no |
  * | HYST_MAX_ROUNDING   | 1e-4    | largest rounding bound of a branch evaluation init accepts, of the output range | no |
  * | HYST_CODE_BITS      | 16      | widest DAC code of the code variant (1..24)                 | yes    |
  * | HYST_MONOTONE_DEPTH | 20      | dyadic depth of the monotonicity proof at init              | no     |
@@ -75,6 +77,20 @@
 #endif
 #if HYST_INV_MAX_ITER < 1
 #error "HYST_INV_MAX_ITER must be at least 1"
+#endif
+
+/* The compensator's inverse table (curve.h, hyst_*_curve_inverse_table):
+ * intervals of the table HYST_DEFINE_INVERSE declares, and the error, as a
+ * fraction of the drive range, above which an interval is evaluated
+ * exactly instead (docs/pi_and_inverse.md: the size/error trade-off). */
+#ifndef HYST_INV_TABLE
+#define HYST_INV_TABLE 256
+#endif
+#if HYST_INV_TABLE < 1
+#error "HYST_INV_TABLE must be at least 1"
+#endif
+#ifndef HYST_INV_TABLE_TOL
+#define HYST_INV_TABLE_TOL 5e-6
 #endif
 
 #ifndef HYST_CODE_BITS

@@ -54,8 +54,13 @@ typedef enum hyst_curve_kind {
     HYST_CURVE_PWL = 2,      /**< piecewise-linear f0, binary search */
     HYST_CURVE_POLY_INV = 3, /**< f0^-1 of a polynomial: monotone bisection */
     HYST_CURVE_PWL_INV = 4,  /**< f0^-1 of a piecewise-linear f0: exact */
+    HYST_CURVE_INV_TABLE = 5, /**< f0^-1 of a polynomial: cubic pieces on a uniform grid (inline) */
     HYST_CURVE_EVERETT = 6   /**< asymmetric: a two-variable branch function E (inline) */
 } hyst_curve_kind_t;
+
+/** Numbers of the table of an HYST_CURVE_INV_TABLE curve with @p intervals
+ *  intervals: four per interval, and four for the end of the range. */
+#define HYST_INV_TABLE_LEN(intervals) (4u * ((intervals) + 1u))
 
 /** Highest total degree of a branch function E (hyst_everett_t). */
 #define HYST_EVERETT_MAX_DEGREE 4
@@ -135,6 +140,20 @@ typedef struct hyst_curve {
             hyst_num_t rise[HYST_EVERETT_TERMS];
             hyst_num_t fall[HYST_EVERETT_TERMS];
         } everett; /**< EVERETT */
+            hyst_curve_poly_t fwd;  /**< the forward polynomial's G (the exact intervals) */
+            hyst_num_t span;        /**< input span of f0 (the drive range) */
+            hyst_num_t u_per_d;     /**< 1 / span: G's argument per drive step */
+            /** the caller's table, HYST_INV_TABLE_LEN(intervals) numbers:
+             *  interval k holds c0..c3 of d(s) = c0 + t (c1 + t (c2 + t c3)),
+             *  s = e intervals / (f0(hi) - f0(lo)), k = floor(s), t = s - k;
+             *  c0 = -1 marks an interval evaluated exactly */
+            hyst_cptr_t table;
+            size_t intervals;       /**< N */
+            size_t exact;           /**< intervals evaluated exactly (flat points) */
+            /** worst |table - exact inverse| / span measured at init over the
+             *  table-evaluated intervals, rounding of the evaluation included */
+            hyst_wide_t max_err;
+        } inv_table; /**< INV_TABLE */
         struct {
             hyst_cptr_t x;  /**< the curve's breakpoints (caller's array) */
             hyst_cptr_t y;  /**< its values (caller's array) */
@@ -248,6 +267,49 @@ hyst_status_t hyst_f64_curve_from_pwl_(hyst_curve_t *curve, const double *x, con
 hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
 
 /**
+ * @name Tabulated inverse of a polynomial curve
+ * @brief Prepares f0^-1 as a table of cubic pieces, for a compensator whose
+ *        per-sample cost does not depend on the precision: an index and one
+ *        cubic, inline on the fast path like a forward polynomial.
+ *
+ * The inverse branch function d(e) (drive step for an output step e) is
+ * tabulated on @p intervals intervals uniform in e: the exact inverse at the
+ * knots (bisection in hyst_wide_t), its slope there limited as Fritsch and
+ * Carlson do (the pieces are monotone in exact arithmetic), cubic Hermite
+ * pieces between. Init measures every interval against the exact inverse
+ * (15 points each); an interval that misses HYST_INV_TABLE_TOL of the drive
+ * range (next to a flat point of f0, where d has an infinite slope) is
+ * evaluated exactly per sample instead (bisection in the interval's
+ * bracket, out of line). hyst_curve_inverse_error() reports the worst
+ * measured error. The table is caller storage of
+ * HYST_INV_TABLE_LEN(@p intervals) numbers of the variant's type that must
+ * outlive the curve, unchanged; @p inv keeps a pointer to it.
+ * @param[out] inv prepared inverse curve.
+ * @param[in]  fwd a polynomial curve (hyst_*_curve_from_poly()) of the same variant.
+ * @param[out] table HYST_INV_TABLE_LEN(intervals) numbers.
+ * @param[in]  intervals 1 .. 2^20 (HYST_INV_TABLE by default: docs/pi_and_inverse.md
+ *             gives the size/error trade-off).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT (a curve of another variant),
+ *         HYST_ERR_ARG (not a polynomial curve, or intervals out of range) or
+ *         HYST_ERR_NOT_INVERTIBLE.
+ */
+/**@{*/
+hyst_status_t hyst_f32_curve_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                           float *table, size_t intervals);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                           double *table, size_t intervals);
+#endif
+/**@}*/
+
+/**
+ * @brief Worst error of a tabulated inverse (HYST_CURVE_INV_TABLE) measured
+ *        at init, as a fraction of the drive range; 0 for the other kinds
+ *        (exact) and for NULL.
+ */
+hyst_wide_t hyst_curve_inverse_error(const hyst_curve_t *curve);
+
+/**
  * @brief Checks that a curve was prepared by a constructor of this library.
  *
  * A cheap structural check (layout, variant, kind, domain, pointers), not a
@@ -315,6 +377,7 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 #define hyst_curve_from_pwl HYST_DEFAULT_NAME_(curve_from_pwl)
 #define hyst_curve_eval HYST_DEFAULT_NAME_(curve_eval)
 #define hyst_curve_g HYST_DEFAULT_NAME_(curve_g)
+#define hyst_curve_inverse_table HYST_DEFAULT_NAME_(curve_inverse_table)
 /**@}*/
 
 #ifdef __cplusplus

@@ -9,7 +9,7 @@
  * the desired displacement, its output the drive that produces it on the
  * model:
  * @code
- * HYST_DEFINE_INVERSE(comp, 4096);
+ * HYST_DEFINE_INVERSE(comp, 4096);     // instance, TP arrays, inverse table
  * if (HYST_INIT_INVERSE(comp, &f0) != HYST_OK) { handle_error(); }
  * for (;;) { dac_write(hyst_step(&comp, desired_position())); }
  * @endcode
@@ -29,15 +29,17 @@ extern "C" {
 #endif
 
 /**
- * @name Compensator of a polynomial model
- * @brief Initialises @p S as the inverse of the TCM with the polynomial @p f0.
+ * @name Compensator of a polynomial model, exact
+ * @brief Initialises @p S as the inverse of the TCM with the polynomial @p f0,
+ *        evaluated exactly (the reference: tests, host tools).
  *
  * hyst_*_curve_from_poly() and hyst_curve_inverse() into @p inv (caller
  * storage that must outlive the instance), then hyst_*_init_curve(), in this
  * order (a curve error is reported before an instance error). g^-1 costs at
  * most 2 HYST_INV_MAX_ITER evaluations of f0 per sample, and the drive is
- * non-decreasing in the desired output along a branch. For a curve of
- * another kind (piecewise linear, PI loading curve) call
+ * non-decreasing in the desired output along a branch. Firmware wants the
+ * tabulated compensator below (HYST_INIT_INVERSE), about ten times cheaper.
+ * For a curve of another kind (piecewise linear, PI loading curve) call
  * hyst_curve_inverse() and hyst_*_init_curve() directly.
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT, HYST_ERR_CAPACITY,
  *         HYST_ERR_OVERLAP, a curve error or HYST_ERR_NOT_INVERTIBLE.
@@ -60,13 +62,58 @@ hyst_status_t hyst_f64_init_inverse_(hyst_tcm_t *S, hyst_curve_t *inv, const hys
 #define hyst_init_inverse HYST_DEFAULT_NAME_(init_inverse)
 /**@}*/
 
-/** A compensator's instance, arrays and inverse curve, statically (default variant). */
-#define HYST_DEFINE_INVERSE(name, nu) \
-    static hyst_curve_t name##_curve; \
+/**
+ * @name Compensator of a polynomial model, tabulated
+ * @brief As the exact compensator, with the inverse tabulated
+ *        (hyst_*_curve_inverse_table()) into @p table, caller storage of
+ *        HYST_INV_TABLE_LEN(@p intervals) numbers that must outlive the
+ *        instance: a sample costs an index and one cubic, inline (the
+ *        intervals next to a flat point of f0 are evaluated exactly), and
+ *        the error against the exact inverse is at most
+ *        hyst_curve_inverse_error(@p inv) of the drive range.
+ * @return as the exact compensator, and HYST_ERR_ARG for @p intervals
+ *         outside 1 .. 2^20.
+ */
+/**@{*/
+hyst_status_t hyst_f32_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
+                                           const hyst_poly_t *f0, float *table,
+                                           size_t intervals, float *xltp, float *yltp,
+                                           float *xrtp, float *yrtp, size_t capacity,
+                                           unsigned long layout);
+#define hyst_f32_init_inverse_table(S, inv, f0, table, intervals, xltp, yltp, xrtp, yrtp,     \
+                                    capacity)                                                \
+    hyst_f32_init_inverse_table_((S), (inv), (f0), (table), (intervals), (xltp), (yltp),     \
+                                 (xrtp), (yrtp), (capacity), HYST_LAYOUT)
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
+                                           const hyst_poly_t *f0, double *table,
+                                           size_t intervals, double *xltp, double *yltp,
+                                           double *xrtp, double *yrtp, size_t capacity,
+                                           unsigned long layout);
+#define hyst_f64_init_inverse_table(S, inv, f0, table, intervals, xltp, yltp, xrtp, yrtp,     \
+                                    capacity)                                                \
+    hyst_f64_init_inverse_table_((S), (inv), (f0), (table), (intervals), (xltp), (yltp),     \
+                                 (xrtp), (yrtp), (capacity), HYST_LAYOUT)
+#endif
+#define hyst_init_inverse_table HYST_DEFAULT_NAME_(init_inverse_table)
+/**@}*/
+
+/** A compensator's instance, arrays, inverse curve and table of HYST_INV_TABLE
+ *  intervals, statically (default variant). */
+#define HYST_DEFINE_INVERSE(name, nu)                                   \
+    static hyst_curve_t name##_curve;                                   \
+    static hyst_real_t name##_table[HYST_INV_TABLE_LEN(HYST_INV_TABLE)]; \
     HYST_DEFINE(name, nu)
 
-/** hyst_init_inverse() on an instance declared by HYST_DEFINE_INVERSE(). */
-#define HYST_INIT_INVERSE(name, f0) \
+/** The tabulated compensator (hyst_init_inverse_table()) on an instance
+ *  declared by HYST_DEFINE_INVERSE(). */
+#define HYST_INIT_INVERSE(name, f0)                                                        \
+    HYST_DEFAULT_NAME_(init_inverse_table_)(&(name), &name##_curve, (f0), name##_table,   \
+                                            HYST_INV_TABLE, HYST_ARRAYS_(name), HYST_LAYOUT)
+
+/** The exact compensator (hyst_init_inverse()) on an instance declared by
+ *  HYST_DEFINE_INVERSE() (its table unused). */
+#define HYST_INIT_INVERSE_EXACT(name, f0) \
     HYST_DEFAULT_NAME_(init_inverse_)(&(name), &name##_curve, (f0), HYST_ARRAYS_(name), \
                                       HYST_LAYOUT)
 

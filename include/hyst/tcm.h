@@ -120,6 +120,9 @@ typedef struct hyst_tcm {
      *  and every sample is slow */
     unsigned degree;
     hyst_num_t coef[HYST_MAX_DEGREE]; /**< branch shape G, a copy of the curve's */
+    /** the pieces of a tabulated inverse (HYST_CURVE_INV_TABLE, evaluated on
+     *  the per-sample path with degree 0), else NULL */
+    hyst_cptr_t table;
     int status;              /**< hyst_status_t of the last sample */
     unsigned events;         /**< sticky HYST_EVENT_* flags */
     unsigned detour;         /**< why slow samples leave the plain path (flags) */

@@ -84,3 +84,28 @@ long ramp_path(double start, const double *levels, int n_levels, double step,
     }
     return count;
 }
+
+hyst_poly_t poly_monomial(unsigned degree, double lo, double hi)
+{
+    hyst_poly_t f = {0};
+    f.degree = degree;
+    f.lo = (hyst_real_t)lo;
+    f.hi = (hyst_real_t)hi;
+    f.coeffs[0] = 1;
+    return f;
+}
+
+hyst_poly_t poly_random_increasing(rng_t *r, unsigned degree)
+{
+    hyst_poly_t f = {0};
+    double scale = 1.0;
+    unsigned j;
+    f.degree = degree;
+    f.lo = (hyst_real_t)rng_range(r, 0.0, 5.0);
+    f.hi = (hyst_real_t)((double)f.lo + rng_range(r, 1.0, 4000.0));
+    for (j = 0u; j <= degree; ++j) {
+        f.coeffs[degree - j] = (hyst_real_t)(rng_range(r, 0.1, 2.0) / scale);
+        scale *= (double)f.hi;
+    }
+    return f;
+}

@@ -38,4 +38,11 @@ int paper_levels(double lo, double hi, double *levels);
 long ramp_path(double start, const double *levels, int n_levels, double step,
                hyst_real_t *out, long max);
 
+/* f0 = x^degree on [lo, hi]. */
+hyst_poly_t poly_monomial(unsigned degree, double lo, double hi);
+
+/* A random increasing polynomial of the degree: positive coefficients,
+ * lo in [0, 5], hi - lo in [1, 4000], terms of comparable size at hi. */
+hyst_poly_t poly_random_increasing(rng_t *r, unsigned degree);
+
 #endif
