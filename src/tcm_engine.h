@@ -726,7 +726,9 @@ static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
 {
     const TCM_X x_prev = XV(S->window[S->moving_end]);
     TCM_X x;
-    TCM_NAME(fresh)(S);
+    /* not fresh(): a TCM_STALE left set costs the next sample a detour that
+     * clears it, where clearing it here would cost the worst path */
+    S->status = HYST_OK;
     if (!TCM_ADMIT(S, x_in, &x) || x == x_prev) {
         TCM_NAME(ended_not_ok)(S);
         return YV(S->y_prev);

@@ -140,6 +140,7 @@ typedef struct hyst_curve {
             hyst_num_t rise[HYST_EVERETT_TERMS];
             hyst_num_t fall[HYST_EVERETT_TERMS];
         } everett; /**< EVERETT */
+        struct {
             hyst_curve_poly_t fwd;  /**< the forward polynomial's G (the exact intervals) */
             hyst_num_t span;        /**< input span of f0 (the drive range) */
             hyst_num_t u_per_d;     /**< 1 / span: G's argument per drive step */
