@@ -9,19 +9,31 @@ option(HYST_BUDGET_TEST "Assert the per-sample instruction budgets under QEMU" O
 # zero (-2048..2047: the keyed search's other ladder).
 set(HYST_BUDGET_TYPICAL_INSNS 40)  # a sample that stays on its branch (measured: 35)
 set(HYST_BUDGET_WORST_INSNS 150)   # any sample at Nu = 4096 (paper: ~420 DSP cycles)
+# The q31 variant on the Cortex-M3 without an FPU (hyst/q31.h): the same
+# trajectory at Nu = 4096 (measured: typical 46, worst 148).
+set(HYST_BUDGET_Q31_TYPICAL_INSNS 60)
+set(HYST_BUDGET_Q31_WORST_INSNS 200)
+
+# hyst_budget_test(<name> <typical> <worst> <test_budget.py options...>)
+function(hyst_budget_test name typical worst)
+    find_package(Python3 COMPONENTS Interpreter)
+    if(NOT Python3_Interpreter_FOUND)
+        message(WARNING "HYST_BUDGET_TEST: no Python 3, ${name} is not registered")
+        return()
+    endif()
+    add_test(NAME ${name}
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/test_budget.py
+                     ${ARGN} --qemu ${HYST_QEMU} --nm ${CMAKE_NM}
+                     --typical ${typical} --worst ${worst})
+    set_tests_properties(${name} PROPERTIES TIMEOUT 600 LABELS "budget")
+endfunction()
 
 if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
    AND TARGET bench_budget_bipolar)
-    find_package(Python3 COMPONENTS Interpreter)
-    if(Python3_Interpreter_FOUND)
-        add_test(NAME tcm_budget
-                 COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/test_budget.py
-                         --elf $<TARGET_FILE:bench_budget>
-                         --elf $<TARGET_FILE:bench_budget_bipolar> --qemu ${HYST_QEMU} --nm ${CMAKE_NM}
-                         --typical ${HYST_BUDGET_TYPICAL_INSNS}
-                         --worst ${HYST_BUDGET_WORST_INSNS})
-        set_tests_properties(tcm_budget PROPERTIES TIMEOUT 600 LABELS "budget")
-    else()
-        message(WARNING "HYST_BUDGET_TEST: no Python 3, the budget test is not registered")
-    endif()
+    hyst_budget_test(tcm_budget ${HYST_BUDGET_TYPICAL_INSNS} ${HYST_BUDGET_WORST_INSNS}
+                     --elf $<TARGET_FILE:bench_budget> --elf $<TARGET_FILE:bench_budget_bipolar>)
+endif()
+if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an385" AND TARGET bench_q31)
+    hyst_budget_test(q31_budget ${HYST_BUDGET_Q31_TYPICAL_INSNS} ${HYST_BUDGET_Q31_WORST_INSNS}
+                     --elf $<TARGET_FILE:bench_q31> --no-pi)
 endif()
