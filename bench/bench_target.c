@@ -27,7 +27,10 @@
  * BENCH_LINEAR (the engine with a linear scan, bench/linear_engine.c:
  * changes the p model), BENCH_INVERSE (the compensator of Eq. 20, tabulated
  * (inverse.h, HYST_INIT_INVERSE): the codes are desired outputs; no PI or
- * bounded-memory pulses).
+ * bounded-memory pulses),
+ * changes the p model), BENCH_Q31 (the q31 variant, hyst/q31.h, on the
+ * doubled codes 2, 4, ..., 8192: the half codes are the odd ones; with
+ * BENCH_PI=0 and BENCH_BOUNDED=0).
  */
 #include "hyst/hyst.h"
 #include "hyst/pi.h"
@@ -46,6 +49,34 @@ hyst_status_t bench_lin_init_(hyst_tcm_t *S, const hyst_poly_t *f0, float *xltp,
 #endif
 
 #include <stdio.h>
+
+/* The variant measured: input and output types, the step, code c's input
+ * (CODE), k codes (CODES), half a code (HALF). */
+#ifdef BENCH_Q31
+typedef uint_least32_t bench_x_t;
+typedef hyst_q31_t bench_y_t;
+#define bench_step hyst_q31_step
+#define bench_input hyst_q31_input
+#define CODE(c) ((bench_x_t)(2u * (c) + 2u))
+#define CODES(k) ((bench_x_t)(2u * (k)))
+#define HALF 1u
+#define CAL_X 1u
+/* What the calibration callee returns: the value already in the result
+ * register (S), so that its body is one "bx lr" as in the real variants. */
+#define NULL_RESULT(S, x) ((bench_y_t)(uintptr_t)(S))
+#else
+typedef hyst_real_t bench_x_t;
+typedef hyst_real_t bench_y_t;
+#define bench_step hyst_step
+#define bench_input hyst_input
+/* Input value of code c (exact in hyst_real_t, like the half codes). */
+#define OFF ((hyst_real_t)(BENCH_OFFSET))
+#define CODE(c) ((hyst_real_t)(c) + OFF)
+#define CODES(k) ((hyst_real_t)(k))
+#define HALF HYST_REAL_C(0.5)
+#define CAL_X HYST_REAL_C(1.0)
+#define NULL_RESULT(S, x) (x)
+#endif
 
 #ifndef BENCH_SWEEP_ALL
 #define BENCH_SWEEP_ALL 1
@@ -76,17 +107,18 @@ hyst_status_t bench_lin_init_(hyst_tcm_t *S, const hyst_poly_t *f0, float *xltp,
 
 #define NU BENCH_NU
 #define CAP HYST_CAPACITY(NU)
-/* Input value of code c (exact in hyst_real_t, like the half codes). */
-#define OFF ((hyst_real_t)(BENCH_OFFSET))
-#define CODE(c) ((hyst_real_t)(c) + OFF)
 #define CODE_HI CODE(NU - 1u)
 #define PI_SAMPLES 256u
 #define MAX_RECORDS 32000u
 
-#ifdef BENCH_INVERSE
+#if defined(BENCH_INVERSE)
 HYST_DEFINE_INVERSE(tcm, NU);
 #define BENCH_MODEL(f0, offset) bench_f0_inverse_codes((f0), (offset))
 #define BENCH_INIT(f0) HYST_INIT_INVERSE(tcm, (f0))
+#elif defined(BENCH_Q31)
+HYST_Q31_DEFINE(tcm, NU);
+#define BENCH_MODEL(f0, offset) bench_f0_codes((f0), (offset))
+#define BENCH_INIT(f0) HYST_Q31_INIT(tcm, (f0), CODE(0u), CODE_HI)
 #else
 HYST_DEFINE(tcm, NU);
 #define BENCH_MODEL(f0, offset) bench_f0_codes((f0), (offset))
@@ -101,7 +133,7 @@ typedef struct {
 static record_t records[MAX_RECORDS];
 static unsigned n_records;
 static int failures;
-static volatile hyst_real_t sink;
+static volatile bench_y_t sink;
 
 /* BENCH_TIMED(name, type) defines, for a model of instance type `type`:
  *  - null_<name>(): the calibration callee, whose whole body is the return
@@ -111,15 +143,16 @@ static volatile hyst_real_t sink;
  *    calibration pulse (same wrapper, null callee) measures those, and the
  *    analysis subtracts them. */
 #define BENCH_TIMED(name, type)                                               \
-    BENCH_NOIPA static hyst_real_t null_##name(type *S, hyst_real_t x)       \
+    BENCH_NOIPA static bench_y_t null_##name(type *S, bench_x_t x)           \
     {                                                                         \
         (void)S;                                                              \
-        return x;                                                             \
+        (void)x;                                                              \
+        return NULL_RESULT(S, x);                                             \
     }                                                                         \
-    BENCH_NOIPA static void timed_##name(hyst_real_t (*fn)(type *, hyst_real_t), \
-                                         type *S, hyst_real_t x)              \
+    BENCH_NOIPA static void timed_##name(bench_y_t (*fn)(type *, bench_x_t),  \
+                                         type *S, bench_x_t x)                \
     {                                                                         \
-        hyst_real_t y;                                                        \
+        bench_y_t y;                                                          \
         hyst_port_timing_begin();                                             \
         y = fn(S, x);                                                         \
         hyst_port_timing_end();                                               \
@@ -172,11 +205,11 @@ static void expect_counts(size_t ltp, size_t rtp)
 }
 
 /* A sample on the current branch, or a reversal that only pushes a TP. */
-static void time_plain(const char *kind, unsigned m, hyst_real_t x)
+static void time_plain(const char *kind, unsigned m, bench_x_t x)
 {
     const hyst_t snap = tcm;
     const size_t tps = hyst_tp_count(&tcm);
-    timed_tcm(hyst_step, &tcm, x);
+    timed_tcm(bench_step, &tcm, x);
     if (hyst_tp_count(&tcm) < tps) {
         failures |= 4; /* it wiped: not the kind it claims to be */
     }
@@ -186,35 +219,35 @@ static void time_plain(const char *kind, unsigned m, hyst_real_t x)
 
 /* A falling wipe-out (x <= the LTP below): the first k of the n searched LTPs
  * survive; the model is back on the falling branch from RTP k-1, or at A0. */
-static void time_wipe_fall(const char *kind, unsigned n, unsigned k, hyst_real_t x)
+static void time_wipe_fall(const char *kind, unsigned n, unsigned k, bench_x_t x)
 {
     const hyst_t snap = tcm;
-    timed_tcm(hyst_step, &tcm, x);
+    timed_tcm(bench_step, &tcm, x);
     expect_counts(k > 0u ? k - 1u : 0u, k);
     record(kind, n, k, search_probes(n, k));
     tcm = snap;
 }
 
 /* A rising wipe-out: k of n searched RTPs survive, rising from LTP k. */
-static void time_wipe_rise(const char *kind, unsigned n, unsigned k, hyst_real_t x)
+static void time_wipe_rise(const char *kind, unsigned n, unsigned k, bench_x_t x)
 {
     const hyst_t snap = tcm;
-    timed_tcm(hyst_step, &tcm, x);
+    timed_tcm(bench_step, &tcm, x);
     expect_counts(k, k);
     record(kind, n, k, search_probes(n, k));
     tcm = snap;
 }
 
 /* LTP codes are 0, 1, 2, ...: x = k - 0.5 leaves k of them (x = 0 none). */
-static hyst_real_t ltp_target(unsigned k)
+static bench_x_t ltp_target(unsigned k)
 {
-    return k == 0u ? CODE(0u) : CODE(k) - HYST_REAL_C(0.5);
+    return k == 0u ? CODE(0u) : CODE(k) - HALF;
 }
 
 /* RTP codes are 4095, 4094, ...: x = 4095.5 - k leaves k (x = 4095 none). */
-static hyst_real_t rtp_target(unsigned k)
+static bench_x_t rtp_target(unsigned k)
 {
-    return k == 0u ? CODE_HI : CODE_HI + HYST_REAL_C(0.5) - (hyst_real_t)k;
+    return k == 0u ? CODE_HI : CODE_HI + HALF - CODES(k);
 }
 
 static int sparse_m(unsigned m)
@@ -237,11 +270,11 @@ static int in_sweep(unsigned m) { return BENCH_SWEEP_ALL || sparse_m(m); }
 static void measure_falling(unsigned j, int last)
 {
     const unsigned n = j - 1u; /* searched by both wipe kinds */
-    const hyst_real_t xj = CODE(j);
+    const bench_x_t xj = CODE(j);
     unsigned k;
     if (sparse_m(j)) {
-        time_plain("typ_fall", n, xj - HYST_REAL_C(0.5));
-        time_plain("rev_rise", n, xj + HYST_REAL_C(0.5));
+        time_plain("typ_fall", n, xj - HALF);
+        time_plain("rev_rise", n, xj + HALF);
     }
     if (n >= 1u && in_sweep(n)) {
         for (k = 0u; k <= 1u; ++k) { /* to lo or hi, and just short of it */
@@ -255,7 +288,7 @@ static void measure_falling(unsigned j, int last)
             time_wipe_rise("exh_wipe_revrise", n, k, rtp_target(k));
         }
         /* Out of the domain: clamped to hi, then the deepest rising wipe. */
-        time_wipe_rise("clamp_hi", n, 0u, CODE_HI + HYST_REAL_C(1.0));
+        time_wipe_rise("clamp_hi", n, 0u, CODE_HI + CODES(1u));
     }
 }
 
@@ -263,11 +296,11 @@ static void measure_falling(unsigned j, int last)
 static void measure_rising(unsigned i, int last)
 {
     const unsigned n_rise = i - 2u, n_fall = i - 1u;
-    const hyst_real_t xp = hyst_input(&tcm);
+    const bench_x_t xp = bench_input(&tcm);
     unsigned k;
     if (sparse_m(i) && i >= 2u) {
-        time_plain("typ_rise", n_fall, xp + HYST_REAL_C(0.5));
-        time_plain("rev_fall", n_fall, xp - HYST_REAL_C(0.5));
+        time_plain("typ_rise", n_fall, xp + HALF);
+        time_plain("rev_fall", n_fall, xp - HALF);
         time_plain("repeat", n_fall, xp);
     }
     for (k = 0u; k <= 1u; ++k) { /* to lo or hi, and just short of it */
@@ -285,7 +318,8 @@ static void measure_rising(unsigned i, int last)
             }
             time_wipe_fall("exh_wipe_revfall", n_fall, k, ltp_target(k));
         }
-        time_wipe_fall("clamp_lo", n_fall, 0u, CODE(0u) - HYST_REAL_C(1.0));
+        time_wipe_fall("clamp_lo", n_fall, 0u, CODE(0u) - CODES(1u));
+#ifndef BENCH_Q31 /* codes have no NaN */
         {
             const hyst_t snap = tcm;
             volatile hyst_real_t zero = HYST_REAL_C(0.0);
@@ -297,13 +331,14 @@ static void measure_rising(unsigned i, int last)
             record("nan", n_fall, 0u, 0u);
             tcm = snap;
         }
+#endif
     }
 }
 
 /* Next reversal of the trajectory 0, 4095, 1, 4094, ...: peak i leads to
  * R_i, valley i to F_i. */
-static void step_peak(unsigned i) { (void)hyst_step(&tcm, CODE(NU - i)); }
-static void step_valley(unsigned i) { (void)hyst_step(&tcm, CODE(i)); }
+static void step_peak(unsigned i) { (void)bench_step(&tcm, CODE(NU - i)); }
+static void step_valley(unsigned i) { (void)bench_step(&tcm, CODE(i)); }
 
 /* The cheapest and the deepest sample of each kind at the largest m, first
  * in the pulse order (pulses 1..6) so that the analysis can profile them. */
@@ -314,11 +349,11 @@ static void showcase(void)
         step_peak(i);
         step_valley(i);
     }
-    time_plain("show_typ_fall", CAP - 2u, CODE(CAP - 1u) - HYST_REAL_C(0.5));
+    time_plain("show_typ_fall", CAP - 2u, CODE(CAP - 1u) - HALF);
     time_wipe_fall("show_wipe_fall", CAP - 2u, 0u, ltp_target(0u));
     time_wipe_rise("show_wipe_revrise", CAP - 2u, 0u, rtp_target(0u));
     step_peak(CAP);
-    time_plain("show_typ_rise", CAP - 1u, hyst_input(&tcm) + HYST_REAL_C(0.5));
+    time_plain("show_typ_rise", CAP - 1u, bench_input(&tcm) + HALF);
     time_wipe_rise("show_wipe_rise", CAP - 2u, 0u, rtp_target(0u));
     time_wipe_fall("show_wipe_revfall", CAP - 1u, 0u, ltp_target(0u));
     hyst_reset(&tcm);
@@ -347,7 +382,7 @@ static void bench_tcm(void)
     }
 #endif
     record("cal_tcm", 0u, 0u, 0u);
-    timed_tcm(null_tcm, &tcm, HYST_REAL_C(1.0));
+    timed_tcm(null_tcm, &tcm, CAL_X);
     showcase();
 
     for (i = 1u; i <= CAP; ++i) {

@@ -94,22 +94,9 @@ hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32
     return st;
 }
 
-/* The deadband checks shared by the immediate call and the request. */
-static hyst_status_t deadband_check(const hyst_tcm_t *S, uint_least32_t codes)
-{
-    if (S == NULL) {
-        return HYST_ERR_NULL;
-    }
-    if (S->variant != (unsigned)HYST_VARIANT_CODE ||
-        codes > (uint_least32_t)(S->hi.code - S->lo.code)) {
-        return HYST_ERR_ARG;
-    }
-    return HYST_OK;
-}
-
 hyst_status_t hyst_code_set_deadband(hyst_tcm_t *S, uint_least32_t codes)
 {
-    const hyst_status_t st = deadband_check(S, codes);
+    const hyst_status_t st = hyst_codes_deadband_check_(S, (unsigned)HYST_VARIANT_CODE, codes);
     if (st != HYST_OK) {
         return st;
     }
@@ -121,12 +108,7 @@ hyst_status_t hyst_code_set_deadband(hyst_tcm_t *S, uint_least32_t codes)
 
 hyst_status_t hyst_code_request_deadband(hyst_tcm_t *S, uint_least32_t codes)
 {
-    const hyst_status_t st = deadband_check(S, codes);
-    if (st != HYST_OK) {
-        return st;
-    }
-    S->req_width.code = (hyst_code_word_t)codes; /* before the counter */
-    return hyst_post_request_(S, &S->req_deadband);
+    return hyst_codes_request_deadband_(S, (unsigned)HYST_VARIANT_CODE, codes);
 }
 
 float hyst_code_step(hyst_tcm_t *S, uint_least32_t code) { return hyst_code_sample(S, code); }

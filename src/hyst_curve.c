@@ -134,7 +134,7 @@ static int unit_increasing(const hyst_wide_t *g, unsigned n, hyst_wide_t *turn_u
 }
 
 /* Normalised coefficients lowest power first: g[k] multiplies u^k. */
-static void unit_poly(hyst_wide_t *g, const hyst_wide_t *c, unsigned n,
+void hyst_unit_poly_(hyst_wide_t *g, const hyst_wide_t *c, unsigned n,
                       hyst_wide_t lo, hyst_wide_t hi)
 {
     hyst_wide_t q[HYST_MAX_DEGREE + 1];
@@ -153,7 +153,7 @@ int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
     hyst_wide_t turn_u = 0;
     unsigned k;
     int ok;
-    unit_poly(g, coeffs, degree, lo, hi);
+    hyst_unit_poly_(g, coeffs, degree, lo, hi);
     for (k = 1u; k <= degree; ++k) {
         total += g[k];
     }
@@ -247,7 +247,7 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
             return HYST_ERR_COEFF;
         }
     }
-    unit_poly(g, c, n, lo, hi);
+    hyst_unit_poly_(g, c, n, lo, hi);
     y_hi = 0;
     for (k = 0u; k <= n; ++k) {
         y_hi += g[k];

@@ -76,6 +76,7 @@ void hyst_reset(hyst_tcm_t *S)
     case HYST_VARIANT_F64: hyst_f64_reset_(S); break;
 #endif
     case HYST_VARIANT_CODE: hyst_code_reset_(S); break;
+    case HYST_VARIANT_Q31: hyst_q31_reset_(S); break;
     default: break; /* not initialised */
     }
 }
@@ -92,11 +93,34 @@ hyst_status_t hyst_post_request_(hyst_tcm_t *S, unsigned *counter)
     return HYST_OK;
 }
 
+hyst_status_t hyst_codes_deadband_check_(const hyst_tcm_t *S, unsigned variant,
+                                         uint_least32_t codes)
+{
+    if (S == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (S->variant != variant || codes > (uint_least32_t)(S->hi.code - S->lo.code)) {
+        return HYST_ERR_ARG;
+    }
+    return HYST_OK;
+}
+
+hyst_status_t hyst_codes_request_deadband_(hyst_tcm_t *S, unsigned variant, uint_least32_t codes)
+{
+    const hyst_status_t st = hyst_codes_deadband_check_(S, variant, codes);
+    if (st != HYST_OK) {
+        return st;
+    }
+    S->req_width.code = (hyst_code_word_t)codes; /* before the counter */
+    return hyst_post_request_(S, &S->req_deadband);
+}
+
 /* An instance whose variant's engine can serve requests. */
 static int initialised(const hyst_tcm_t *S)
 {
     return S->layout == HYST_LAYOUT &&
-           (S->variant == (unsigned)HYST_VARIANT_F32 || S->variant == (unsigned)HYST_VARIANT_CODE
+           (S->variant == (unsigned)HYST_VARIANT_F32 || S->variant == (unsigned)HYST_VARIANT_CODE ||
+            S->variant == (unsigned)HYST_VARIANT_Q31
 #if HYST_ENABLE_F64
             || S->variant == (unsigned)HYST_VARIANT_F64
 #endif

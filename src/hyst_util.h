@@ -92,6 +92,13 @@ void hyst_barrier_(void);
  * the next per-sample evaluation to the engine's serve(). */
 hyst_status_t hyst_post_request_(hyst_tcm_t *S, unsigned *counter);
 
+/* The deadband of the integer-code variants (code, q31): the checks shared
+ * by the immediate call and the request (an instance of `variant`, a width
+ * within the code range), and the request. */
+hyst_status_t hyst_codes_deadband_check_(const hyst_tcm_t *S, unsigned variant,
+                                         uint_least32_t codes);
+hyst_status_t hyst_codes_request_deadband_(hyst_tcm_t *S, unsigned variant, uint_least32_t codes);
+
 /* 1 if [a, a + na) and [b, b + nb) (byte ranges) overlap. */
 int hyst_ranges_overlap(const void *a, size_t na, const void *b, size_t nb);
 
@@ -118,6 +125,11 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
 hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, unsigned variant,
                                   unsigned long layout);
 
+/* f0 (coefficients c, highest power first, degree n) on [lo, hi] as a
+ * polynomial in u = (x - lo) / (hi - lo): g[k] multiplies u^k. */
+void hyst_unit_poly_(hyst_wide_t *g, const hyst_wide_t *c, unsigned n, hyst_wide_t lo,
+                     hyst_wide_t hi);
+
 /* What bounded memory keeps besides the TPs, in wide numbers (snapshots):
  * the stack level of the shallowest live merge ((size_t)-1: none), its
  * error bound, and the deadband window (widest skipped reversal and its
@@ -138,6 +150,9 @@ void hyst_f32_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
                       const hyst_tcm_book_t *book);
 void hyst_code_reset_(hyst_tcm_t *S);
 void hyst_code_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+                      const hyst_tcm_book_t *book);
+void hyst_q31_reset_(hyst_tcm_t *S);
+void hyst_q31_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
                       const hyst_tcm_book_t *book);
 #if HYST_ENABLE_F64
 void hyst_f64_reset_(hyst_tcm_t *S);

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Arithmetic helpers in one number type, written once: needs a number type
- * descriptor (src/num_f32.h or src/num_f64.h) included before. */
+ * descriptor (src/num_f32.h, src/num_f64.h, src/num_q31.h) included before. */
 #ifndef HYST_NUM_OPS_H
 #define HYST_NUM_OPS_H
 
@@ -11,12 +11,23 @@
 
 HYST_INLINE NUM_T NUM_NAME(abs)(NUM_T v) { return v < 0 ? -v : v; }
 
+#ifndef NUM_FIXED
 /* Finite without libm. */
 HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
 {
     const NUM_T z = v - v;
     return z == z;
 }
+#endif
+
+/* The products of Horner's rule: a multiply-add's (NUM_MUL) and G's final
+ * one (NUM_MUL_G); a fixed-point type rescales them (src/num_q31.h). */
+#ifndef NUM_MUL
+#define NUM_MUL(a, b) ((a) * (b))
+#endif
+#ifndef NUM_MUL_G
+#define NUM_MUL_G(a, b) ((a) * (b))
+#endif
 
 /* The cases 1..8 of Horner's rule unrolled by a switch on the degree n:
  * acc = a[0] u^(n-1) + ... + a[n-1], one multiply-add per coefficient, no
@@ -45,7 +56,7 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
 /* a[k] for k < HYST_MAX_DEGREE; the cases above it cannot run (degrees
  * are at most HYST_MAX_DEGREE) and read a[0], not past the array. */
 #define NUM_HORNER_(a, u, acc_, k_) \
-    ((acc_) * (u) + (a)[(k_) < HYST_MAX_DEGREE ? (k_) : 0].NUM_F)
+    (NUM_MUL(acc_, u) + (a)[(k_) < HYST_MAX_DEGREE ? (k_) : 0].NUM_F)
 #define NUM_HORNER4_(a, u) \
     NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER_(a, u, (a)[0].NUM_F, 1), 2), 3)
 
@@ -69,7 +80,7 @@ HYST_INLINE NUM_T NUM_NAME(horner)(const hyst_num_t *a, unsigned n, NUM_T u)
     NUM_HORNER_CASES_(a, u, acc);
     default: acc = NUM_NAME(horner_loop)(a, n, u); break;
     }
-    return acc * u;
+    return NUM_MUL_G(acc, u);
 }
 
 /* A tabulated inverse (curve.h, HYST_CURVE_INV_TABLE) at s >= 0: interval

@@ -24,7 +24,10 @@
  * TCM_X's size, to search reals by their bit patterns; and
  * TCM_LTP_BELOW(a, n, x), TCM_RTP_ABOVE(a, n, x): another search over the
  * sorted TP arrays than the binary search below (the benchmarks measure a
- * linear scan this way). */
+ * linear scan this way). Fixed-point outputs (src/hyst_q31.c) also define
+ *   TCM_G_HALF(S, d)     g at d / 2 (default: g() of d * 0.5)
+ *   TCM_ADD_BOUND(a, e)  a += e for an error bound (saturating in fixed point)
+ * and the products of Horner's rule (src/num_ops.h: NUM_MUL, NUM_MUL_G). */
 #ifndef HYST_TCM_ENGINE_H
 #define HYST_TCM_ENGINE_H
 
@@ -47,6 +50,13 @@
 #define TCM_NOINLINE __attribute__((noinline))
 #else
 #define TCM_NOINLINE
+#endif
+
+#ifndef TCM_G_HALF
+#define TCM_G_HALF(S, d) TCM_NAME(g)((S), (d) * NUM_C(0.5))
+#endif
+#ifndef TCM_ADD_BOUND
+#define TCM_ADD_BOUND(a, e) ((a) += (e))
 #endif
 
 /* Members of the variant's numbers: inputs and outputs. */
@@ -125,7 +135,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(e)(const hyst_tcm_t *S, TCM_X a, TCM_X b)
         }
         return acc * w;
     }
-    return TCM_NAME(g_unit)(S, TCM_D(a, b) * YV(S->unit));
+    return TCM_NAME(g)(S, TCM_D(a, b));
 }
 
 /* Output on the current branch. One formula for both paths (the fast path
@@ -197,7 +207,7 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
     NUM_HORNER_CASES_(S->coef, u, acc);
     default: return TCM_NAME(emit_rare)(S, x, how);
     }
-    g = acc * u;
+    g = NUM_MUL_G(acc, u);
     y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
     YV(S->y_prev) = y;
     return y;
@@ -613,7 +623,7 @@ static TCM_NOINLINE void TCM_NAME(merge)(hyst_tcm_t *S, TCM_X x_prev, size_t *nr
     XV(S->xltp)[l1] = TCM_NORM(v);
     YV(S->yltp)[l1] = yv;
     *nr = r1;
-    YV(S->forgot) += NUM_NAME(abs)(miss) + resid;
+    TCM_ADD_BOUND(YV(S->forgot), NUM_NAME(abs)(miss) + resid);
     if ((S->detour & TCM_PER_BRANCH) != 0u) {
         /* asymmetric kind: branches from V and from the lost L1 differ in
          * shape, not only in place, so the miss does not bound what
@@ -645,7 +655,7 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
                                           TCM_NAME(e)(S, m, b));
         } else {
             YV(S->db_err) =
-                NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_NAME(g)(S, full * NUM_C(0.5)));
+                NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));
         }
         TCM_NAME(set_detour)(S);
     }

@@ -10,34 +10,42 @@ option(HYST_BUDGET_TEST "Assert the per-sample instruction budgets under QEMU" O
 set(HYST_BUDGET_TYPICAL_INSNS 40)  # a sample that stays on its branch (measured: 35)
 set(HYST_BUDGET_WORST_INSNS 150)   # any sample at Nu = 4096 (paper: ~420 DSP cycles)
 # The compensator (HYST_INIT_INVERSE: the tabulated inverse of Eq. 20).
-set(HYST_BUDGET_INV_TYPICAL_INSNS 50)  # measured: 42
-set(HYST_BUDGET_INV_WORST_INSNS 160)   # measured: 156
+set(HYST_BUDGET_INV_TYPICAL_INSNS 50)
+set(HYST_BUDGET_INV_WORST_INSNS 160)
+# The q31 variant on the Cortex-M3 without an FPU (hyst/q31.h): the same
+# trajectory at Nu = 4096 (measured: typical 46, worst 148).
+set(HYST_BUDGET_Q31_TYPICAL_INSNS 60)
+set(HYST_BUDGET_Q31_WORST_INSNS 200)
+
+# hyst_budget_test(<name> <typical> <worst> <test_budget.py options...>)
+function(hyst_budget_test name typical worst)
+    find_package(Python3 COMPONENTS Interpreter)
+    if(NOT Python3_Interpreter_FOUND)
+        message(WARNING "HYST_BUDGET_TEST: no Python 3, ${name} is not registered")
+        return()
+    endif()
+    add_test(NAME ${name}
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/test_budget.py
+                     ${ARGN} --qemu ${HYST_QEMU} --nm ${CMAKE_NM}
+                     --typical ${typical} --worst ${worst})
+    set_tests_properties(${name} PROPERTIES TIMEOUT 600 LABELS "budget")
+endfunction()
 
 if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
    AND TARGET bench_budget_bipolar)
-    find_package(Python3 COMPONENTS Interpreter)
-    if(Python3_Interpreter_FOUND)
-        add_test(NAME tcm_budget
-                 COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/test_budget.py
-                         --elf $<TARGET_FILE:bench_budget>
-                         --elf $<TARGET_FILE:bench_budget_bipolar> --qemu ${HYST_QEMU} --nm ${CMAKE_NM}
-                         --typical ${HYST_BUDGET_TYPICAL_INSNS}
-                         --worst ${HYST_BUDGET_WORST_INSNS})
-        set_tests_properties(tcm_budget PROPERTIES TIMEOUT 600 LABELS "budget")
-        # One test per image: each runs its own QEMU (ctest -j runs them side by side).
-        foreach(image bench_budget_inv bench_budget_inv_bipolar)
-            if(TARGET ${image})
-                string(REPLACE "bench_budget_inv" "inv_budget" test_name ${image})
-                add_test(NAME ${test_name}
-                         COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/test_budget.py
-                                 --elf $<TARGET_FILE:${image}> --qemu ${HYST_QEMU}
-                                 --nm ${CMAKE_NM} --no-pi
-                                 --typical ${HYST_BUDGET_INV_TYPICAL_INSNS}
-                                 --worst ${HYST_BUDGET_INV_WORST_INSNS})
-                set_tests_properties(${test_name} PROPERTIES TIMEOUT 900 LABELS "budget")
-            endif()
-        endforeach()
-    else()
-        message(WARNING "HYST_BUDGET_TEST: no Python 3, the budget test is not registered")
-    endif()
+    hyst_budget_test(tcm_budget ${HYST_BUDGET_TYPICAL_INSNS} ${HYST_BUDGET_WORST_INSNS}
+                     --elf $<TARGET_FILE:bench_budget> --elf $<TARGET_FILE:bench_budget_bipolar>)
+    # One test per compensator image: each runs its own QEMU (ctest -j runs them side by side).
+    foreach(image bench_budget_inv bench_budget_inv_bipolar)
+        if(TARGET ${image})
+            string(REPLACE "bench_budget_inv" "inv_budget" test_name ${image})
+            hyst_budget_test(${test_name} ${HYST_BUDGET_INV_TYPICAL_INSNS}
+                             ${HYST_BUDGET_INV_WORST_INSNS} --elf $<TARGET_FILE:${image}> --no-pi)
+            set_tests_properties(${test_name} PROPERTIES TIMEOUT 900)
+        endif()
+    endforeach()
+endif()
+if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an385" AND TARGET bench_q31)
+    hyst_budget_test(q31_budget ${HYST_BUDGET_Q31_TYPICAL_INSNS} ${HYST_BUDGET_Q31_WORST_INSNS}
+                     --elf $<TARGET_FILE:bench_q31> --no-pi)
 endif()

@@ -11,6 +11,7 @@
  *  - hyst/curve.h:  the major ascending curve f0;
  *  - hyst/tcm.h:    the TCM instance (init, reset, step, process);
  *  - hyst/code.h:   the same TCM over integer DAC codes;
+ *  - hyst/q31.h:    the same over codes in fixed point (cores without an FPU);
  *  - hyst/ident.h:  identification of f0 from measured data.
  *  - hyst/snapshot.h: save/restore of an instance's memory (CRC-checked);
  *  - hyst/inverse.h: the inverse TCM, a feedforward compensator;
@@ -26,6 +27,7 @@
 #include "hyst/curve.h"
 #include "hyst/tcm.h"
 #include "hyst/code.h"
+#include "hyst/q31.h"
 #include "hyst/ident.h"
 #include "hyst/snapshot.h"
 #include "hyst/inverse.h"

@@ -11,6 +11,7 @@
  * | f32     | hyst_f32_    | float                 | float                  |
  * | f64     | hyst_f64_    | double                | double                 |
  * | code    | hyst_code_   | hyst_code_word_t code | float                  |
+ * | q31     | hyst_q31_    | hyst_code_word_t code | hyst_q31_t (fixed)     |
  *
  * The unsuffixed names (hyst_step, hyst_real_t...) are the default variant:
  * f32, or f64 when HYST_USE_DOUBLE is defined where they are used.
@@ -48,6 +49,10 @@ typedef uint_least16_t hyst_code_word_t;
 typedef uint_least32_t hyst_code_word_t;
 #endif
 
+/** Fixed-point output of the q31 variant (q31.h): at least 32 bits, signed
+ *  (int_least32_t: `long` where int has 16 bits). */
+typedef int_least32_t hyst_q31_t;
+
 /** Largest code: 2^HYST_CODE_BITS - 1. */
 #define HYST_CODE_MAX ((((uint_least32_t)1) << HYST_CODE_BITS) - 1u)
 
@@ -57,7 +62,8 @@ typedef union hyst_num {
 #if HYST_ENABLE_F64
     double f64;             /**< f64 variant */
 #endif
-    hyst_code_word_t code;  /**< inputs of the code variant */
+    hyst_code_word_t code;  /**< inputs of the code and q31 variants */
+    hyst_q31_t q31;         /**< outputs of the q31 variant */
 } hyst_num_t;
 
 /** @brief A caller-owned array of an instance, typed by its variant. */
@@ -67,6 +73,7 @@ typedef union hyst_ptr {
     double *f64;
 #endif
     hyst_code_word_t *code;
+    hyst_q31_t *q31;
 } hyst_ptr_t;
 
 /** @brief A read-only caller-owned array (breakpoints, PI parameters). */
@@ -75,13 +82,15 @@ typedef union hyst_cptr {
 #if HYST_ENABLE_F64
     const double *f64;
 #endif
+    const hyst_q31_t *q31;
 } hyst_cptr_t;
 
 /** @brief The variants (stored in every instance and curve). */
 typedef enum hyst_variant {
     HYST_VARIANT_F32 = 1,  /**< float in, float out */
     HYST_VARIANT_F64 = 2,  /**< double in, double out */
-    HYST_VARIANT_CODE = 3  /**< integer codes in, float out (f32 curves) */
+    HYST_VARIANT_CODE = 3, /**< integer codes in, float out (f32 curves) */
+    HYST_VARIANT_Q31 = 4   /**< integer codes in, fixed point out (q31.h) */
 } hyst_variant_t;
 
 /**

@@ -1,0 +1,133 @@
+/* SPDX-License-Identifier: MIT */
+/**
+ * @file q31.h
+ * @brief The TCM in fixed point, for cores without an FPU (Cortex-M0/M0+/M3,
+ *        fixed-point DSPs): integer codes in, q31 out.
+ *
+ * Same model, rules and engine source as hyst/code.h (hyst_tcm_t): inputs are
+ * unsigned ADC/DAC codes code_lo..code_hi mapped linearly onto f0's domain
+ * [lo, hi], stored as hyst_code_word_t (exact turning-point compares). A
+ * signed q15 or q31 signal is a code once offset: code = q15 + 32768 on
+ * 0..65535. Outputs and stored turning-point outputs are hyst_q31_t:
+ *
+ *     y = y_mid + q * (y_hi - y_lo) / 2^HYST_Q31_SPAN_BITS,
+ *     y_mid = (y_lo + y_hi) / 2, y_lo = f0(lo), y_hi = f0(hi),
+ *
+ * so the output range [y_lo, y_hi] is q in [-2^27, 2^27] (q31 +-1/16):
+ * three bits of headroom, which every intermediate of the engine (a branch
+ * from a merged turning point, the merge's gap and miss, the error bounds)
+ * needs to stay inside 32 bits. Resolution: 2^-28 of the range.
+ *
+ * Per sample, G is evaluated by Horner's rule with 32 x 32 -> 64-bit
+ * products keeping the high part (one SMULL and a shift on Cortex-M3):
+ *  - G's argument is v = (x - x_k) * unit, exact: unit = round(2^30 / N)
+ *    (N = code_hi - code_lo), v in Q30; the scale error of unit is folded
+ *    into the coefficients at init (G(v / c) with c = N unit / 2^30);
+ *  - the coefficients share one format, 2^HYST_Q31_GUARD_BITS coarser than
+ *    the output's, so that Horner's partial sums may reach
+ *    2^(31 - 28 + 4) = 128 times the output range. init proves that no partial sum can
+ *    overflow for v in [0, c] (sum of |coefficient| c^k, plus the rounding
+ *    of each step) and refuses the curve otherwise (HYST_ERR_COEFF).
+ *
+ * Error bound (hyst_q31_rounding_bound(), in output units q): one branch
+ * evaluation y_k +- G errs from the exact real value by at most
+ *     (n / 2 + (n - 1)) c^n 2^HYST_Q31_GUARD_BITS + 1
+ * (n = degree: the coefficients' rounding, the truncation of each Horner
+ * step, the final product's); y_k itself carries one such error per stored
+ * turning point below it, so the output errs by at most
+ * (stored turning points + 1) times the bound, plus 1/2 for the real
+ * reference's rounding to q: 10 q (4e-8 of the output range) at degree 1,
+ * 58 q for the paper's cubic, 202 q (8e-7) at degree 9. Measured against
+ * the double reference: at most 1.9e-7 of the range (tests/test_q31.c).
+ *
+ * Bounded memory (merges, deadband) works as in hyst/code.h; the merge
+ * error bound saturates at HYST_Q31_BOUND_MAX. Snapshots are not supported
+ * yet: hyst_snapshot_*() on a q31 instance return HYST_ERR_ARG.
+ */
+#ifndef HYST_Q31_H
+#define HYST_Q31_H
+
+#include "hyst/tcm.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Output range [y_lo, y_hi] = 2^HYST_Q31_SPAN_BITS units of q. */
+#define HYST_Q31_SPAN_BITS 28
+/** The coefficients' format is 2^HYST_Q31_GUARD_BITS units of q per LSB. */
+#define HYST_Q31_GUARD_BITS 4
+/** Fractional bits of G's argument v (Q30: v in [0, 1] fits with headroom). */
+#define HYST_Q31_U_BITS 30
+/** Saturation of hyst_q31_error_bound() (4 output ranges: "no bound"). */
+#define HYST_Q31_BOUND_MAX ((hyst_q31_t)1 << (HYST_Q31_SPAN_BITS + 2))
+
+/** @brief RAM of one instance with @p capacity entries per array, in bytes. */
+#define HYST_Q31_RAM(capacity) \
+    (sizeof(hyst_tcm_t) + 2u * (size_t)(capacity) * (sizeof(hyst_code_word_t) + sizeof(hyst_q31_t)))
+
+/** @brief Declares an instance for inputs with @p nu distinct codes
+ *         (as HYST_CODE_DEFINE()). */
+#define HYST_Q31_DEFINE(name, nu) HYST_DEFINE_ARRAYS_(name, hyst_code_word_t, hyst_q31_t, nu)
+
+/** hyst_q31_init() on an instance declared by HYST_Q31_DEFINE(). */
+#define HYST_Q31_INIT(name, f0, code_lo, code_hi) \
+    hyst_q31_init_(&(name), (f0), (code_lo), (code_hi), HYST_ARRAYS_(name), HYST_LAYOUT)
+
+/**
+ * @brief Initialises an instance: f0 in user units on [f0->lo, f0->hi],
+ *        codes code_lo..code_hi mapped linearly onto it, caller-owned memory.
+ *
+ * The set-up runs in hyst_wide_t (double): the curve checks of
+ * hyst_f64_curve_from_poly(), the fixed-point coefficients, the overflow
+ * proof and the error bound. On error nothing is written.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT, HYST_ERR_CAPACITY,
+ *         HYST_ERR_OVERLAP, HYST_ERR_DOMAIN (code range empty or wider than
+ *         HYST_CODE_BITS), a curve error, or HYST_ERR_COEFF (Horner's
+ *         partial sums could overflow 32 bits: coefficients that cancel
+ *         beyond 128 times the output range).
+ */
+hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
+                             uint_least32_t code_hi, hyst_code_word_t *xltp, hyst_q31_t *yltp,
+                             hyst_code_word_t *xrtp, hyst_q31_t *yrtp, size_t capacity,
+                             unsigned long layout);
+#define hyst_q31_init(S, f0, code_lo, code_hi, xltp, yltp, xrtp, yrtp, capacity)           \
+    hyst_q31_init_((S), (f0), (code_lo), (code_hi), (xltp), (yltp), (xrtp), (yrtp),       \
+                   (capacity), HYST_LAYOUT)
+
+/** @brief Noise deadband in codes (see hyst_code_set_deadband()). */
+hyst_status_t hyst_q31_set_deadband(hyst_tcm_t *S, uint_least32_t codes);
+
+/** @brief hyst_q31_set_deadband() as a request from another context. */
+hyst_status_t hyst_q31_request_deadband(hyst_tcm_t *S, uint_least32_t codes);
+
+/** @brief Advances the model by one code (as hyst_code_step()); a code
+ *         outside [code_lo, code_hi] is clamped (HYST_WARN_CLAMPED). */
+hyst_q31_t hyst_q31_step(hyst_tcm_t *S, uint_least32_t code);
+
+/** @brief hyst_q31_step() over a block, bit-identically (statuses as
+ *         hyst_code_process()). */
+hyst_status_t hyst_q31_process(hyst_tcm_t *S, const hyst_code_word_t *x, hyst_q31_t *y,
+                               size_t n);
+
+/** @brief Last output (-2^27, f0(lo), after init or reset). */
+hyst_q31_t hyst_q31_output(const hyst_tcm_t *S);
+
+/** @brief Last valid code, after clamping. */
+uint_least32_t hyst_q31_input(const hyst_tcm_t *S);
+
+/** @brief Bound on the error caused by forgetting (merges, deadband), in q. */
+hyst_q31_t hyst_q31_error_bound(const hyst_tcm_t *S);
+
+/** @brief The a-priori bound of one branch evaluation (above), in q. */
+hyst_q31_t hyst_q31_rounding_bound(const hyst_tcm_t *S);
+
+/** @brief An output q of an instance of @p f0 in user units (the mapping
+ *         above); 0 if f0 is NULL. */
+hyst_wide_t hyst_q31_to_real(const hyst_poly_t *f0, hyst_q31_t q);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* HYST_Q31_H */

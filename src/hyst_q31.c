@@ -1,0 +1,224 @@
+/* SPDX-License-Identifier: MIT */
+/* The q31 variant (hyst_q31_*): integer codes in, fixed point out, for cores
+ * without an FPU. The engine over hyst_code_word_t inputs and hyst_q31_t
+ * outputs; the scaling and the error bound are stated in include/hyst/q31.h.
+ * Set-up in hyst_wide_t, per sample integers only. */
+#include <string.h>
+
+#include "hyst/q31.h"
+
+#include "hyst_util.h"
+
+/* Number type descriptor (as src/num_f32.h), for src/num_ops.h. */
+#define NUM_T hyst_q31_t
+#define NUM_F q31
+#define NUM_NAME(n) hyst_q31_##n
+#define NUM_VARIANT HYST_VARIANT_Q31
+#define NUM_C(v) (v)
+#define NUM_EPS 1
+#define NUM_FIXED 1
+/* Horner's step in the coefficients' format (v in Q30): the high part of
+ * a 64-bit product, one SMULL and a shift on Cortex-M3 (>> of a negative
+ * value is arithmetic on every supported compiler). G's final product lands
+ * in the output's format, HYST_Q31_GUARD_BITS finer. */
+#define NUM_MUL(a, b) ((hyst_q31_t)(((int_least64_t)(a) * (b)) >> HYST_Q31_U_BITS))
+#define NUM_MUL_G(a, b) \
+    ((hyst_q31_t)(((int_least64_t)(a) * (b)) >> (HYST_Q31_U_BITS - HYST_Q31_GUARD_BITS)))
+#include "num_ops.h"
+
+/* Out of line: the common path is one compare. */
+static hyst_code_word_t hyst_q31_clamp_slow(hyst_tcm_t *S, uint_least32_t code)
+{
+    S->status = HYST_WARN_CLAMPED;
+    S->events |= HYST_EVENT_CLAMPED;
+    return code < S->lo.code ? S->lo.code : S->hi.code;
+}
+
+static int hyst_q31_admit(hyst_tcm_t *S, uint_least32_t code, hyst_code_word_t *out)
+{
+    *out = code >= S->lo.code && code <= S->hi.code ? (hyst_code_word_t)code
+                                                    : hyst_q31_clamp_slow(S, code);
+    return 1;
+}
+
+/* Only polynomials are prepared for this variant: never called. */
+static hyst_q31_t hyst_q31_no_other(const hyst_curve_t *curve, hyst_q31_t v)
+{
+    (void)curve;
+    (void)v;
+    return 0;
+}
+
+/* An error bound plus e >= 0, saturated at HYST_Q31_BOUND_MAX (merges add
+ * up; each e is below 2^30, so the test cannot overflow). */
+static hyst_q31_t hyst_q31_add_bound(hyst_q31_t a, hyst_q31_t e)
+{
+    return a >= HYST_Q31_BOUND_MAX - e ? HYST_Q31_BOUND_MAX : a + e;
+}
+
+#define TCM_NAME(n) hyst_q31_##n
+#define TCM_VARIANT HYST_VARIANT_Q31
+#define TCM_X hyst_code_word_t
+#define TCM_XF code
+#define TCM_Y hyst_q31_t
+#define TCM_YF q31
+#define TCM_ARG uint_least32_t
+#define TCM_IN hyst_code_word_t
+#define TCM_R(a) ((hyst_q31_t)(a))
+#define TCM_D(a, b) ((hyst_q31_t)(uint_least32_t)((uint_least32_t)(a) - (uint_least32_t)(b)))
+#define TCM_MID(a, b) ((hyst_code_word_t)((a) + ((b) - (a)) / 2u))
+#define TCM_NORM(a) (a)
+#define TCM_ADMIT(S, x, out) hyst_q31_admit((S), (x), (out))
+#define TCM_G_OTHER(c, d) hyst_q31_no_other((c), (d))
+/* d * unit is exact: halve the argument, not the code difference */
+#define TCM_G_HALF(S, d) TCM_NAME(g_unit)((S), (d) * (S)->unit.q31 / 2)
+#define TCM_ADD_BOUND(a, e) ((a) = hyst_q31_add_bound((a), (e)))
+#include "tcm_engine.h"
+
+#define Q31_ONE_U ((hyst_wide_t)((hyst_q31_t)1 << HYST_Q31_U_BITS))
+#define Q31_SPAN ((hyst_wide_t)((hyst_q31_t)1 << HYST_Q31_SPAN_BITS))
+#define Q31_LIMIT ((hyst_wide_t)2147483647L)
+
+/* Rounds w (|w| < 2^31 checked by the caller) to the nearest integer. */
+static hyst_q31_t q31_round(hyst_wide_t w)
+{
+    return (hyst_q31_t)(w < 0 ? w - (hyst_wide_t)0.5 : w + (hyst_wide_t)0.5);
+}
+
+/* The fixed-point curve of f0 (normalised coefficients g, lowest power
+ * first, degree n, range = G(1) > 0) for G's argument v = u c in Q30:
+ * coefficients of G(v / c) in the coefficients' format into q, with the
+ * overflow proof and the error bound. 0 if a partial sum could overflow. */
+static int q31_curve(hyst_curve_t *q, const hyst_wide_t *g, unsigned n, hyst_wide_t range,
+                     hyst_wide_t c)
+{
+    /* q units per real output unit, coefficients 2^GUARD coarser */
+    const hyst_wide_t per_coef =
+        Q31_SPAN / range / (hyst_wide_t)((hyst_q31_t)1 << HYST_Q31_GUARD_BITS);
+    const hyst_wide_t v_max = c > 1 ? c : 1;
+    hyst_wide_t b[HYST_MAX_DEGREE + 1], partial = 0, cmax_n = 1, c_pow = 1, bound;
+    unsigned j, i;
+    for (j = 1u; j <= n; ++j) {
+        c_pow *= c;
+        cmax_n *= v_max;
+        b[j] = g[j] / c_pow * per_coef; /* multiplies v^j */
+        if (!(hyst_wide_abs(b[j]) < Q31_LIMIT)) {
+            return 0;
+        }
+    }
+    /* Partial sum i (i = 0..n-1) of Horner's rule: b_n v^i + ... + b_(n-i),
+     * at most sum |b| v_max^k after rounding each coefficient by 1/2, plus
+     * one truncated step (< 1) per multiply, each grown by v_max. */
+    for (i = 0u; i < n; ++i) {
+        const hyst_wide_t truncated = i > 0u ? 1 : 0;
+        partial = partial * v_max + hyst_wide_abs(b[n - i]) + (hyst_wide_t)0.5 + truncated;
+        if (!(partial < Q31_LIMIT)) {
+            return 0;
+        }
+    }
+    for (j = 1u; j <= n; ++j) {
+        q->u.poly.a[n - j].q31 = q31_round(b[j]);
+    }
+    /* q31.h: (n / 2 + n - 1) v_max^n coefficient LSBs, plus the final
+     * truncation, rounded up */
+    bound = ((hyst_wide_t)n * (hyst_wide_t)1.5 - 1) * cmax_n *
+                (hyst_wide_t)((hyst_q31_t)1 << HYST_Q31_GUARD_BITS) + 2;
+    q->rounding.q31 = (hyst_q31_t)bound;
+    return 1;
+}
+
+hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
+                             uint_least32_t code_hi, hyst_code_word_t *xltp, hyst_q31_t *yltp,
+                             hyst_code_word_t *xrtp, hyst_q31_t *yrtp, size_t capacity,
+                             unsigned long layout)
+{
+    /* The curve's checks (domain, coefficients, monotonicity) in
+     * hyst_wide_t; its rounding bound for double (q31_curve() states this
+     * variant's). Without the f64 variant the numbers it stores are floats,
+     * unused here. */
+    const unsigned checks = (unsigned)HYST_VARIANT_F64;
+    hyst_curve_t real, q;
+    hyst_wide_t g[HYST_MAX_DEGREE + 1], range = 0, c;
+    hyst_q31_t unit;
+    unsigned n, k;
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity,
+                                         sizeof(hyst_code_word_t), sizeof(hyst_q31_t), layout);
+    if (st == HYST_OK) {
+        st = hyst_curve_poly_(&real, f0, checks, layout);
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    if (!(code_lo < code_hi) || code_hi > (uint_least32_t)HYST_CODE_MAX) {
+        return HYST_ERR_DOMAIN;
+    }
+    n = f0->degree;
+    hyst_unit_poly_(g, f0->coeffs, n, f0->lo, f0->hi); /* in hyst_wide_t, not rounded */
+    for (k = 1u; k <= n; ++k) {
+        range += g[k];
+    }
+    /* v = d * unit in Q30 (exact); d = N gives v <= 2^30 + N / 2 < 2^31 */
+    unit = q31_round(Q31_ONE_U / (hyst_wide_t)(code_hi - code_lo));
+    c = (hyst_wide_t)(code_hi - code_lo) * (hyst_wide_t)unit / Q31_ONE_U;
+    memset(&q, 0, sizeof q);
+    q.kind = HYST_CURVE_POLY;
+    q.variant = HYST_VARIANT_Q31;
+    q.layout = HYST_LAYOUT;
+    q.u.poly.degree = n;
+    q.y_lo.q31 = -((hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1));
+    q.y_hi.q31 = (hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1);
+    if (!(range > 0) || !q31_curve(&q, g, n, range, c)) {
+        return HYST_ERR_COEFF;
+    }
+    hyst_q31_attach(S, &q, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit, xltp,
+                    yltp, xrtp, yrtp, capacity);
+    S->curve = NULL; /* the polynomial is copied whole into the instance */
+    return HYST_OK;
+}
+
+hyst_wide_t hyst_q31_to_real(const hyst_poly_t *f0, hyst_q31_t q)
+{
+    hyst_wide_t y_lo, y_hi;
+    if (f0 == NULL) {
+        return 0;
+    }
+    y_lo = hyst_poly_eval(f0, f0->lo);
+    y_hi = hyst_poly_eval(f0, f0->hi);
+    return (y_lo + y_hi) / 2 + (hyst_wide_t)q * (y_hi - y_lo) / Q31_SPAN;
+}
+
+hyst_status_t hyst_q31_set_deadband(hyst_tcm_t *S, uint_least32_t codes)
+{
+    const hyst_status_t st = hyst_codes_deadband_check_(S, (unsigned)HYST_VARIANT_Q31, codes);
+    if (st != HYST_OK) {
+        return st;
+    }
+    S->deadband.code = (hyst_code_word_t)codes;
+    hyst_q31_set_detour(S);
+    ++S->seq;
+    return HYST_OK;
+}
+
+hyst_status_t hyst_q31_request_deadband(hyst_tcm_t *S, uint_least32_t codes)
+{
+    return hyst_codes_request_deadband_(S, (unsigned)HYST_VARIANT_Q31, codes);
+}
+
+hyst_q31_t hyst_q31_step(hyst_tcm_t *S, uint_least32_t code) { return hyst_q31_sample(S, code); }
+
+hyst_status_t hyst_q31_process(hyst_tcm_t *S, const hyst_code_word_t *x, hyst_q31_t *y,
+                               size_t n)
+{
+    return hyst_q31_block(S, x, y, n);
+}
+
+hyst_q31_t hyst_q31_output(const hyst_tcm_t *S) { return S != NULL ? hyst_q31_view(S).y : 0; }
+
+uint_least32_t hyst_q31_input(const hyst_tcm_t *S) { return S != NULL ? hyst_q31_view(S).x : 0u; }
+
+hyst_q31_t hyst_q31_rounding_bound(const hyst_tcm_t *S) { return S != NULL ? S->rounding.q31 : 0; }
+
+hyst_q31_t hyst_q31_error_bound(const hyst_tcm_t *S)
+{
+    return S != NULL ? hyst_q31_view(S).bound : 0;
+}
