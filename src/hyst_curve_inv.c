@@ -196,6 +196,11 @@ static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has
 /* Largest interval count: s = e N / R keeps its integer part exact in float. */
 #define TABLE_MAX_INTERVALS ((unsigned long)1 << 20)
 
+/* n intervals within 1..TABLE_MAX_INTERVALS. A function, not an inline
+ * compare: where size_t is 16 bits the upper test is always true, which
+ * GCC would report (-Wtype-limits). */
+static int table_size_ok(unsigned long n) { return n >= 1ul && n <= TABLE_MAX_INTERVALS; }
+
 hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                         hyst_ptr_t table, size_t intervals, unsigned variant)
 {
@@ -214,8 +219,7 @@ hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *f
     if (fwd->variant != variant) {
         return HYST_ERR_LAYOUT;
     }
-    if (fwd->kind != (unsigned)HYST_CURVE_POLY || intervals < 1u ||
-        (unsigned long)intervals > TABLE_MAX_INTERVALS) {
+    if (fwd->kind != (unsigned)HYST_CURVE_POLY || !table_size_ok((unsigned long)intervals)) {
         return HYST_ERR_ARG;
     }
     out = *fwd;
