@@ -4,6 +4,7 @@
  * delay, domain), the monotonicity report, errors, and the measured piezo
  * data (fit one half, predict the other through the model). */
 #include "support.h"
+#include "piezo_data.h"
 #include "unity.h"
 #include "hyst_port.h"
 
@@ -425,40 +426,15 @@ static void test_bad_arguments_are_refused(void)
 /* Reads columns 1 (x) and 5 (y) of the whitespace-separated data file. */
 static size_t read_piezo(void)
 {
-    static char buf[4096];
-    static char line[256];
-    size_t n = 0u, len = 0u;
-    long h = hyst_port_file_open(HYST_TEST_DATA_DIR "/piezo_major_loop.dat", 0);
-    long got;
-    TEST_ASSERT_TRUE_MESSAGE(h >= 0, "cannot open " HYST_TEST_DATA_DIR "/piezo_major_loop.dat");
-    while ((got = hyst_port_file_read(h, buf, sizeof buf)) > 0) {
-        long i;
-        for (i = 0; i < got; ++i) {
-            if (buf[i] != '\n') {
-                TEST_ASSERT_TRUE(len + 1u < sizeof line);
-                line[len++] = buf[i];
-                continue;
-            }
-            line[len] = '\0';
-            len = 0u;
-            {
-                double v[5];
-                char *p = line, *end;
-                int c;
-                for (c = 0; c < 5; ++c) {
-                    v[c] = strtod(p, &end);
-                    TEST_ASSERT_TRUE_MESSAGE(end != p, "malformed data line");
-                    p = end;
-                }
-                TEST_ASSERT_TRUE(n < MAXN);
-                xs[n] = (hyst_wide_t)v[0];
-                ys[n] = (hyst_wide_t)v[4];
-                ++n;
-            }
-        }
+    static double x[MAXN], y[MAXN];
+    const long n = piezo_data_load(HYST_TEST_DATA_DIR "/piezo_major_loop.dat", x, y, MAXN);
+    long i;
+    TEST_ASSERT_TRUE_MESSAGE(n > 0, "cannot read " HYST_TEST_DATA_DIR "/piezo_major_loop.dat");
+    for (i = 0; i < n; ++i) {
+        xs[i] = (hyst_wide_t)x[i];
+        ys[i] = (hyst_wide_t)y[i];
     }
-    hyst_port_file_close(h);
-    return n;
+    return (size_t)n;
 }
 
 /* Piezo record: cycles of 200 samples with the input at 0 V on rows 150 +

@@ -16,6 +16,7 @@
 #include "ref_tcm.h"
 #include "signals.h"
 #include "support.h"
+#include "piezo_data.h"
 #include "unity.h"
 
 #ifndef HYST_TEST_DATA_DIR
@@ -159,27 +160,10 @@ static void test_paper_signal_agrees_within_1e4_of_range(void)
  * codes over its own range; returns the count. */
 static long read_drive(double *lo, double *hi)
 {
-    static char buf[4096];
-    static char line[256];
-    static double x[MAXN];
-    long n = 0, i, got;
-    size_t len = 0u;
-    long h = hyst_port_file_open(HYST_TEST_DATA_DIR "/piezo_major_loop.dat", 0);
-    TEST_ASSERT_TRUE_MESSAGE(h >= 0, "cannot open " HYST_TEST_DATA_DIR "/piezo_major_loop.dat");
-    while ((got = hyst_port_file_read(h, buf, sizeof buf)) > 0) {
-        for (i = 0; i < got; ++i) {
-            if (buf[i] != '\n') {
-                TEST_ASSERT_TRUE(len + 1u < sizeof line);
-                line[len++] = buf[i];
-                continue;
-            }
-            line[len] = '\0';
-            len = 0u;
-            TEST_ASSERT_TRUE(n < MAXN);
-            x[n++] = strtod(line, NULL);
-        }
-    }
-    hyst_port_file_close(h);
+    static double x[MAXN], y[MAXN];
+    long i;
+    const long n = piezo_data_load(HYST_TEST_DATA_DIR "/piezo_major_loop.dat", x, y, MAXN);
+    TEST_ASSERT_TRUE_MESSAGE(n > 0, "cannot read " HYST_TEST_DATA_DIR "/piezo_major_loop.dat");
     *lo = *hi = x[0];
     for (i = 0; i < n; ++i) {
         *lo = x[i] < *lo ? x[i] : *lo;
