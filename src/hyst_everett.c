@@ -247,7 +247,8 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
         return HYST_ERR_LAYOUT;
     }
     n = e->degree;
-    if (n < 1u || n > (unsigned)HYST_EVERETT_MAX_DEGREE) {
+    /* the branch's coefficients live in the instance's HYST_MAX_DEGREE */
+    if (n < 1u || n > (unsigned)HYST_EVERETT_MAX_DEGREE || n > (unsigned)HYST_MAX_DEGREE) {
         return HYST_ERR_DEGREE;
     }
     if (!hyst_wide_is_finite(e->lo) || !hyst_wide_is_finite(e->hi) || !(e->lo < e->hi) ||

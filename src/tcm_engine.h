@@ -114,26 +114,34 @@ HYST_INLINE TCM_Y TCM_NAME(branch_g)(const hyst_tcm_t *S, TCM_X x)
     return TCM_NAME(g_unit)(S, (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale));
 }
 
+/* The asymmetric kind's G coefficients at `anchor` from a table of the
+ * curve (curve.h): coef[i], of w^(n - i), is row i (i + 1 entries), a
+ * polynomial in the anchor, by Horner's rule. */
+static void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
+                                  hyst_num_t *coef)
+{
+    unsigned i, k;
+    for (i = 0u; i < n; ++i) {
+        TCM_Y acc = YV(row[0]);
+        for (k = 1u; k <= i; ++k) {
+            acc = acc * anchor + YV(row[k]);
+        }
+        YV(coef[i]) = acc;
+        row += i + 1u;
+    }
+}
+
 /* E(a, b), a >= b: g(a - b) for the symmetric kinds; the asymmetric
- * kind's from its rising table (rare paths: merges, the deadband). */
+ * kind's from its rising table, anchored at b (rare paths: merges, the
+ * deadband). */
 static TCM_NOINLINE TCM_Y TCM_NAME(e)(const hyst_tcm_t *S, TCM_X a, TCM_X b)
 {
     if ((S->detour & TCM_PER_BRANCH) != 0u) {
         const unsigned n = S->curve->u.everett.degree;
-        const hyst_num_t *row = S->curve->u.everett.rise;
-        const TCM_Y t = (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit);
-        const TCM_Y w = TCM_D(a, b) * YV(S->unit);
-        TCM_Y acc = 0;
-        unsigned i, k;
-        for (i = 0u; i < n; ++i) {
-            TCM_Y c = YV(row[0]);
-            for (k = 1u; k <= i; ++k) {
-                c = c * t + YV(row[k]);
-            }
-            acc = acc * w + c;
-            row += i + 1u;
-        }
-        return acc * w;
+        hyst_num_t coef[HYST_MAX_DEGREE]; /* n <= HYST_MAX_DEGREE: the curve's check */
+        TCM_NAME(table_coefs)(S->curve->u.everett.rise, n,
+                              (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit), coef);
+        return NUM_NAME(horner)(coef, n, TCM_D(a, b) * YV(S->unit));
     }
     return TCM_NAME(g)(S, TCM_D(a, b));
 }
@@ -279,23 +287,13 @@ static void TCM_NAME(ended_not_ok)(hyst_tcm_t *S)
 }
 
 /* The asymmetric kind: the current branch's G from the curve's table of
- * its direction (curve.h): coefficient of w^(n - i), a polynomial in the
- * anchor (the current TP's place in the domain, 0..1), by Horner's rule. */
+ * its direction, anchored at the current TP's place in the domain (0..1). */
 static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S)
 {
-    const unsigned n = S->curve->u.everett.degree;
-    const hyst_num_t *row =
-        S->moving_end == 0u ? S->curve->u.everett.rise : S->curve->u.everett.fall;
-    const TCM_Y anchor = (YV(S->x_ctp) - TCM_R(XV(S->lo))) * YV(S->unit);
-    unsigned i, k;
-    for (i = 0u; i < n; ++i) { /* row i: i + 1 entries */
-        TCM_Y acc = YV(row[0]);
-        for (k = 1u; k <= i; ++k) {
-            acc = acc * anchor + YV(row[k]);
-        }
-        YV(S->coef[i]) = acc;
-        row += i + 1u;
-    }
+    TCM_NAME(table_coefs)(S->moving_end == 0u ? S->curve->u.everett.rise
+                                              : S->curve->u.everett.fall,
+                          S->curve->u.everett.degree,
+                          (YV(S->x_ctp) - TCM_R(XV(S->lo))) * YV(S->unit), S->coef);
 }
 
 /* Derives the fast-path cache from the arrays and the last input, then

@@ -194,7 +194,8 @@ hyst_status_t hyst_f64_curve_from_poly_(hyst_curve_t *curve, const hyst_poly_t *
  * @brief Validates a branch function E (hyst_everett_t) and prepares its
  *        per-branch tables.
  *
- * Checks: NULL pointers, degree in 1..HYST_EVERETT_MAX_DEGREE, the domain
+ * Checks: NULL pointers, degree in 1..HYST_EVERETT_MAX_DEGREE (and at most
+ * HYST_MAX_DEGREE), the domain
  * (HYST_ERR_DOMAIN), finite coefficients, zero above the degree
  * (HYST_ERR_COEFF), and, once, that dE/da >= 0 and dE/db <= 0 on the whole
  * triangle lo <= b <= a <= hi (Bernstein-Bezier coefficients on the
