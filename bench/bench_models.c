@@ -37,27 +37,41 @@ void bench_f0_codes(hyst_poly_t *f0, double offset)
     }
 }
 
-void bench_everett_codes(hyst_everett_t *e, double offset)
+/* The asymmetric E of a cubic f0 (its Taylor coefficients at lo: the
+ * symmetric kind) with an added lower-end term, 0.1 of the linear one. */
+static void everett_of(hyst_everett_t *e, const hyst_poly_t *f0)
 {
-    hyst_poly_t f0;
     double c[4], lo, span;
     unsigned k;
-    bench_f0_codes(&f0, offset);
     for (k = 0u; k < 4u; ++k) {
-        c[k] = (double)f0.coeffs[k];
+        c[k] = (double)f0->coeffs[k];
     }
-    lo = (double)f0.lo;
-    span = (double)f0.hi - lo;
+    lo = (double)f0->lo;
+    span = (double)f0->hi - lo;
     memset(e, 0, sizeof *e);
     e->degree = 3u;
-    e->lo = f0.lo;
-    e->hi = f0.hi;
+    e->lo = f0->lo;
+    e->hi = f0->hi;
     e->y_lo = ((c[0] * lo + c[1]) * lo + c[2]) * lo + c[3];
     /* g(w) = f0(lo + w span) - f0(lo): Taylor coefficients at lo */
     e->e[0][0] = (3.0 * c[0] * lo * lo + 2.0 * c[1] * lo + c[2]) * span;
     e->e[1][0] = (3.0 * c[0] * lo + c[1]) * span * span;
     e->e[2][0] = c[0] * span * span * span;
     e->e[0][1] = 0.1 * e->e[0][0];
+}
+
+void bench_everett_codes(hyst_everett_t *e, double offset)
+{
+    hyst_poly_t f0;
+    bench_f0_codes(&f0, offset);
+    everett_of(e, &f0);
+}
+
+void bench_everett_inverse_codes(hyst_everett_t *e, double offset)
+{
+    hyst_poly_t f0;
+    bench_f0_inverse_codes(&f0, offset);
+    everett_of(e, &f0);
 }
 
 void bench_f0_inverse_codes(hyst_poly_t *f0, double offset)

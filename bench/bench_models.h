@@ -22,6 +22,9 @@ void bench_f0_codes(hyst_poly_t *f0, double offset);
  *  bench_f0_codes() plus a term growing with the loop's place (0.1 of the
  *  width term times t), degree 3. */
 void bench_everett_codes(hyst_everett_t *e, double offset);
+/** The same asymmetry on bench_f0_inverse_codes()'s f0: the outputs span
+ *  the codes, the asymmetric compensator's desired outputs. */
+void bench_everett_inverse_codes(hyst_everett_t *e, double offset);
 
 /** Paper Eq. 20 over 0..40 V with its output scaled onto offset .. offset +
  *  BENCH_NU - 1: a compensator of it (inverse.h) takes the desired output

@@ -91,7 +91,7 @@ typedef hyst_real_t bench_y_t;
 #define BENCH_OFFSET 0
 #endif
 #ifndef BENCH_EVERETT
-#define BENCH_EVERETT 0 /* the asymmetric kind instead of the polynomial */
+#define BENCH_EVERETT 0 /* 1: the asymmetric kind instead of the polynomial; 2: its compensator */
 #endif
 #ifndef BENCH_BOUNDED
 #define BENCH_BOUNDED 1
@@ -368,9 +368,18 @@ static void bench_tcm(void)
     {
         static hyst_curve_t curve; /* the asymmetric kind keeps its curve */
         hyst_everett_t e;
+        hyst_status_t st;
+#if BENCH_EVERETT == 2 /* its compensator: the codes are desired outputs */
+        bench_everett_inverse_codes(&e, (double)BENCH_OFFSET);
+        st = hyst_curve_from_everett(&curve, &e);
+        if (st == HYST_OK) {
+            st = hyst_curve_inverse(&curve, &curve);
+        }
+#else
         bench_everett_codes(&e, (double)BENCH_OFFSET);
-        if (hyst_curve_from_everett(&curve, &e) != HYST_OK ||
-            HYST_INIT_CURVE(tcm, &curve) != HYST_OK) {
+        st = hyst_curve_from_everett(&curve, &e);
+#endif
+        if (st != HYST_OK || HYST_INIT_CURVE(tcm, &curve) != HYST_OK) {
             failures |= 16;
             return;
         }

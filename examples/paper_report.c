@@ -23,8 +23,8 @@
 
 #define NU 4096u /* 12-bit DAC, the paper's sizing */
 HYST_DEFINE_INVERSE(model, NU); /* model, then the compensator */
-HYST_DEFINE(asym_model, NU);    /* the asymmetric kind */
-static hyst_curve_t asym_curve;
+HYST_DEFINE(asym_model, NU);    /* the asymmetric kind, then its compensator */
+static hyst_curve_t asym_curve, asym_inverse;
 
 static int failures;
 
@@ -291,12 +291,12 @@ static double everett_step(void *plant, double x)
 /* Tracking of a desired displacement, the test signal's levels xs[0..n)
  * (0..40) mapped onto 5 %..95 % of [y_lo, y_hi]: one copy of the plant
  * driven open loop by a linear scaling of [y_lo, y_hi] onto 0..40 V, the
- * other through the compensator `model` (initialised by the caller).
+ * other through the compensator `comp` (initialised by the caller).
  * Prints open_/comp_ RMS and max errors, their keys prefixed by `tag` if
  * not NULL, else with the tracking table; returns the squared-sum ratio
  * open / compensated. */
-static double track(const char *tag, const hyst_real_t *xs, long n, double y_lo, double y_hi,
-                    plant_step_t step, void *open_plant, void *comp_plant)
+static double track(const char *tag, hyst_t *comp, const hyst_real_t *xs, long n, double y_lo,
+                    double y_hi, plant_step_t step, void *open_plant, void *comp_plant)
 {
     static const char *const keys[4] = {"open_rms", "open_max", "comp_rms", "comp_max"};
     double ss_open = 0.0, ss_comp = 0.0, max_open = 0.0, max_comp = 0.0, figures[4];
@@ -309,7 +309,7 @@ static double track(const char *tag, const hyst_real_t *xs, long n, double y_lo,
     for (i = 0; i < n; ++i) {
         const double y_ref = y_lo + (y_hi - y_lo) * (0.05 + 0.9 * (double)xs[i] / 40.0);
         const double x_open = 40.0 * (y_ref - y_lo) / (y_hi - y_lo);
-        const double x_comp = (double)hyst_step(&model, (hyst_real_t)y_ref);
+        const double x_comp = (double)hyst_step(comp, (hyst_real_t)y_ref);
         const double yo = step(open_plant, x_open);
         const double yc = step(comp_plant, x_comp);
         ss_open += (yo - y_ref) * (yo - y_ref);
@@ -356,14 +356,14 @@ static void compensation(void)
     plant_bw_init_piezo(&open_plant);
     plant_bw_init_piezo(&comp_plant);
     n = ramp_path(0.0, levels, paper_levels(0.0, 40.0, levels), 0.1, xs, 8192);
-    (void)track(NULL, xs, n, (double)hyst_poly_eval(&plant_f0, plant_f0.lo),
+    (void)track(NULL, &model, xs, n, (double)hyst_poly_eval(&plant_f0, plant_f0.lo),
                 (double)hyst_poly_eval(&plant_f0, plant_f0.hi), bw_step, &open_plant, &comp_plant);
     /* the same compensator along major loops only */
     check(HYST_INIT_INVERSE(model, &plant_f0) == HYST_OK, "compensation_init");
     plant_bw_init_piezo(&open_plant);
     plant_bw_init_piezo(&comp_plant);
     n = major_loops(xs, 8192);
-    (void)track("major", xs, n, (double)hyst_poly_eval(&plant_f0, plant_f0.lo),
+    (void)track("major", &model, xs, n, (double)hyst_poly_eval(&plant_f0, plant_f0.lo),
                 (double)hyst_poly_eval(&plant_f0, plant_f0.hi), bw_step, &open_plant, &comp_plant);
     end();
 }
@@ -578,22 +578,35 @@ static void asymmetric(void)
         value("pi_predict_rms", sqrt(ss_pi / (double)(n - (long)best_delay)));
         value("pi_predict_max", max_pi);
     }
-    /* compensation of the actuator along the test signal's shape, 5..95 % */
+    /* compensation of the actuator along the test signal's shape, 5..95 %:
+     * the symmetric TCM's inverse, then the asymmetric kind's (the chosen
+     * model: its hold-out score is the better) */
     {
         plant_everett_t open_plant, comp_plant;
+        const double y_lo = (double)hyst_poly_eval(&best_f0, best_f0.lo);
+        const double y_hi = (double)hyst_poly_eval(&best_f0, best_f0.hi);
         check(HYST_INIT_INVERSE(model, &best_f0) == HYST_OK, "asymmetric_inverse");
         plant_everett_init_piezo(&open_plant);
         plant_everett_init_piezo(&comp_plant);
-        value("comp_rms_ratio",
-              sqrt(track(NULL, xs, n, (double)hyst_poly_eval(&best_f0, best_f0.lo),
-                         (double)hyst_poly_eval(&best_f0, best_f0.hi), everett_step, &open_plant,
-                         &comp_plant)));
-        check(HYST_INIT_INVERSE(model, &best_f0) == HYST_OK, "asymmetric_inverse");
+        value("symmetric_comp_rms_ratio", sqrt(track("symmetric", &model, xs, n, y_lo, y_hi,
+                                                     everett_step, &open_plant, &comp_plant)));
+        check(hyst_curve_inverse(&asym_inverse, &asym_curve) == HYST_OK &&
+                  HYST_INIT_CURVE(asym_model, &asym_inverse) == HYST_OK,
+              "asymmetric_compensator");
         plant_everett_init_piezo(&open_plant);
         plant_everett_init_piezo(&comp_plant);
+        value("comp_rms_ratio", sqrt(track(NULL, &asym_model, xs, n, y_lo, y_hi, everett_step,
+                                           &open_plant, &comp_plant)));
         n = major_loops(xs, 8192);
-        (void)track("major", xs, n, (double)hyst_poly_eval(&best_f0, best_f0.lo),
-                    (double)hyst_poly_eval(&best_f0, best_f0.hi), everett_step, &open_plant,
+        check(HYST_INIT_INVERSE(model, &best_f0) == HYST_OK, "asymmetric_inverse");
+        plant_everett_init_piezo(&open_plant);
+        plant_everett_init_piezo(&comp_plant);
+        (void)track("symmetric_major", &model, xs, n, y_lo, y_hi, everett_step, &open_plant,
+                    &comp_plant);
+        hyst_reset(&asym_model);
+        plant_everett_init_piezo(&open_plant);
+        plant_everett_init_piezo(&comp_plant);
+        (void)track("major", &asym_model, xs, n, y_lo, y_hi, everett_step, &open_plant,
                     &comp_plant);
     }
     end();

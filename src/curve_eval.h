@@ -352,21 +352,43 @@ static NUM_T NUM_NAME(table_exact)(const hyst_curve_t *c, NUM_T s)
     return a;
 }
 
+/* E(lo + w span, lo) of an asymmetric curve or its inverse: the branch
+ * rising from A0. */
+static NUM_T NUM_NAME(everett_from_lo)(const hyst_curve_t *curve, NUM_T w)
+{
+    const unsigned n = curve->u.everett.degree;
+    NUM_T acc = 0;
+    unsigned i, at = 0u;
+    for (i = 0u; i < n; ++i) { /* row i ends with its anchor^0 entry */
+        at += i + 1u;
+        acc = acc * w + curve->u.everett.rise[at - 1u].NUM_F;
+    }
+    return acc * w;
+}
+
 NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
 {
     if (curve->kind == (unsigned)HYST_CURVE_POLY_INV) {
         return NUM_NAME(poly_inv_g)(curve, d);
     }
-    if (curve->kind == (unsigned)HYST_CURVE_EVERETT) { /* E(lo + d, lo): rising from A0 */
-        const unsigned n = curve->u.everett.degree;
-        const NUM_T w = d * curve->unit.NUM_F;
-        NUM_T acc = 0;
-        unsigned i, at = 0u;
-        for (i = 0u; i < n; ++i) { /* row i ends with its anchor^0 entry */
-            at += i + 1u;
-            acc = acc * w + curve->u.everett.rise[at - 1u].NUM_F;
+    if (curve->kind == (unsigned)HYST_CURVE_EVERETT) {
+        return NUM_NAME(everett_from_lo)(curve, d * curve->unit.NUM_F);
+    }
+    if (curve->kind == (unsigned)HYST_CURVE_EVERETT_INV) { /* that branch's inverse, bisected */
+        NUM_T a = 0, b = 1;
+        unsigned it;
+        for (it = 0u; it < 2u * (unsigned)(sizeof(NUM_T) * CHAR_BIT); ++it) {
+            const NUM_T m = (a + b) * NUM_C(0.5);
+            if (!(m > a && m < b)) {
+                break;
+            }
+            if (NUM_NAME(everett_from_lo)(curve, m) < d) {
+                a = m;
+            } else {
+                b = m;
+            }
         }
-        return acc * w;
+        return a * curve->u.everett.span.NUM_F;
     }
     if (curve->kind == (unsigned)HYST_CURVE_INV_TABLE) { /* d is s here */
         const NUM_T v = NUM_NAME(table_g)(curve->u.inv_table.table.NUM_F, d);

@@ -355,6 +355,7 @@ hyst_status_t hyst_curve_check(const hyst_curve_t *curve)
                    ? HYST_OK
                    : HYST_ERR_ARG;
     case HYST_CURVE_EVERETT:
+    case HYST_CURVE_EVERETT_INV:
         return curve->u.everett.degree >= 1u &&
                        curve->u.everett.degree <= (unsigned)HYST_EVERETT_MAX_DEGREE &&
                        curve->u.everett.degree <= (unsigned)HYST_MAX_DEGREE

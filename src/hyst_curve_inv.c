@@ -307,6 +307,36 @@ static hyst_status_t pwl_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
     return HYST_OK;
 }
 
+/* The asymmetric kind and its inverse, into each other: out has the axes
+ * swapped already; the tables stay (the compensator solves the forward
+ * branches). Newton's tolerance: 2^-20 of the drive span in float, 2^-40 in
+ * double, well above the rounding of a branch evaluation divided by a
+ * moderate slope, so that steps reach it. */
+static hyst_status_t everett_inverse(hyst_curve_t *inv, hyst_curve_t *out, int to_inverse)
+{
+    const hyst_wide_t lo = hyst_num_get(&out->lo, out->variant);
+    const hyst_wide_t hi = hyst_num_get(&out->hi, out->variant);
+    const hyst_wide_t tol = out->variant == (unsigned)HYST_VARIANT_F32
+                                ? (hyst_wide_t)9.5367431640625e-7
+                                : (hyst_wide_t)9.094947017729282379150390625e-13;
+    if (!(hi > lo)) {
+        return HYST_ERR_NOT_INVERTIBLE;
+    }
+    out->kind = to_inverse ? HYST_CURVE_EVERETT_INV : HYST_CURVE_EVERETT;
+    /* the inverse takes the desired output step itself; the forward w */
+    (void)hyst_num_set(&out->unit, out->variant,
+                       to_inverse ? 1 : hyst_num_get(&out->u.everett.inv_span, out->variant));
+    (void)hyst_num_set(&out->u.everett.tol, out->variant, to_inverse ? tol : 0);
+    /* one solve's error, in the drive: about tol of its span */
+    out->rounding = out->u.everett.branch_rounding;
+    if (to_inverse) {
+        (void)hyst_num_set(&out->rounding, out->variant,
+                           2 * tol * hyst_num_get(&out->u.everett.span, out->variant));
+    }
+    *inv = *out;
+    return HYST_OK;
+}
+
 hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
 {
     hyst_curve_t out;
@@ -328,6 +358,10 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
     out.y_hi = fwd->hi;
     lo = hyst_num_get(&out.lo, out.variant);
     hi = hyst_num_get(&out.hi, out.variant);
+    if (fwd->kind == (unsigned)HYST_CURVE_EVERETT ||
+        fwd->kind == (unsigned)HYST_CURVE_EVERETT_INV) {
+        return everett_inverse(inv, &out, fwd->kind == (unsigned)HYST_CURVE_EVERETT);
+    }
     if (fwd->kind == (unsigned)HYST_CURVE_POLY_INV ||
         fwd->kind == (unsigned)HYST_CURVE_INV_TABLE) { /* as hyst_curve_poly_() set it */
         const hyst_curve_poly_t p = fwd->kind == (unsigned)HYST_CURVE_POLY_INV

@@ -311,6 +311,9 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
             !hyst_num_set(&out.rounding, variant, bound)) {
             return HYST_ERR_COEFF;
         }
+        out.u.everett.branch_rounding = out.rounding;
+        (void)hyst_num_set(&out.u.everett.span, variant, e->hi - e->lo);
+        out.u.everett.inv_span = out.unit;
     }
     if (!(range > 0) || bound > (hyst_wide_t)HYST_MAX_ROUNDING * range) {
         return range > 0 ? HYST_ERR_ILL_CONDITIONED : HYST_ERR_NOT_MONOTONE;

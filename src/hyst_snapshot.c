@@ -216,20 +216,21 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
     crc = crc_num(crc, &S->y_lo, f->yt);
     crc = crc_num(crc, &S->y_hi, f->yt);
     crc = crc_num(crc, &S->unit, f->yt);
-    for (k = 0u; k < S->degree && k < HYST_MAX_DEGREE; ++k) {
-        if (c != NULL && c->kind == (unsigned)HYST_CURVE_EVERETT) {
-            break; /* the branch's coefficients, not the curve's: its tables below */
-        }
-        crc = crc_num(crc, &S->coef[k], f->yt);
-    }
-    if (c == NULL) {
-        return crc;
-    }
-    if (c->kind == (unsigned)HYST_CURVE_EVERETT) {
+    if (c != NULL && (c->kind == (unsigned)HYST_CURVE_EVERETT ||
+                      c->kind == (unsigned)HYST_CURVE_EVERETT_INV)) {
+        /* the branch's coefficients are not the curve's: its tables */
         for (k = 0u; k < (unsigned)HYST_EVERETT_TERMS; ++k) {
             crc = crc_num(crc, &c->u.everett.rise[k], f->yt);
             crc = crc_num(crc, &c->u.everett.fall[k], f->yt);
         }
+        crc = crc_num(crc, &c->u.everett.span, f->yt);
+        return crc_num(crc, &c->u.everett.tol, f->yt);
+    }
+    for (k = 0u; k < S->degree && k < HYST_MAX_DEGREE; ++k) {
+        crc = crc_num(crc, &S->coef[k], f->yt);
+    }
+    if (c == NULL) {
+        return crc;
     }
     if (c->kind == (unsigned)HYST_CURVE_POLY_INV) {
         crc = crc_word(crc, c->u.poly_inv.fwd.degree);

@@ -85,8 +85,14 @@ void hyst_barrier_(void);
  * accessor returns its last read). */
 #define HYST_READ_ATTEMPTS 4u
 
-/* S->horner while a request is pending: above every degree. */
-#define HYST_HORNER_REQUEST_ ((unsigned)HYST_MAX_DEGREE + 1u)
+/* S->horner while a request is pending: above every degree and above the
+ * engine's unrolled Horner cases (1..8, src/num_ops.h), which a build with
+ * HYST_MAX_DEGREE < 8 still compiles. */
+#define HYST_HORNER_REQUEST_ (HYST_MAX_DEGREE > 8 ? (unsigned)HYST_MAX_DEGREE + 1u : 9u)
+
+/* S->degree (and S->horner) of the asymmetric kind's inverse: not a degree,
+ * not a request; its branches are solved (tcm_engine.h, solve()). */
+#define HYST_HORNER_SOLVE_ (HYST_HORNER_REQUEST_ + 1u)
 
 /* Posts a request from another context: increments *counter, then routes
  * the next per-sample evaluation to the engine's serve(). */

@@ -79,9 +79,96 @@
 #define TCM_PER_BRANCH 16u /* the branch's coefficients depend on its turning
                             * point (asymmetric kind): settle() derives them */
 
-/* G at u, any kind: Horner for polynomials, else out of line. */
+/* Evaluations of a branch by the asymmetric compensator's solve(), at most. */
+#define TCM_SOLVE_STEPS 48u
+
+#ifndef NUM_FIXED /* real outputs only */
+/* p(w) = w q(w) and p'(w) on the current branch, q of degree n - 1 <= 3
+ * (HYST_EVERETT_MAX_DEGREE), by Horner's rule unrolled. */
+#define TCM_HORNER_D_(c, n, w, p, dp)                                        \
+    do {                                                                   \
+        TCM_Y q_ = YV((c)[0]), dq_ = 0;                                    \
+        switch (n) {                                                       \
+        case 4u: dq_ = q_; q_ = q_ * (w) + YV((c)[1]);                     \
+            dq_ = dq_ * (w) + q_; q_ = q_ * (w) + YV((c)[2]);              \
+            dq_ = dq_ * (w) + q_; q_ = q_ * (w) + YV((c)[3]); break;       \
+        case 3u: dq_ = q_; q_ = q_ * (w) + YV((c)[1]);                     \
+            dq_ = dq_ * (w) + q_; q_ = q_ * (w) + YV((c)[2]); break;       \
+        case 2u: dq_ = q_; q_ = q_ * (w) + YV((c)[1]); break;              \
+        default: break;                                                    \
+        }                                                                  \
+        (p) = q_ * (w);                                                    \
+        (dp) = q_ + (w) * dq_;                                             \
+    } while (0)
+
+/* The asymmetric compensator's G (HYST_CURVE_EVERETT_INV): the drive step
+ * span w whose output step on the current forward branch, p(w) = w q(w)
+ * (q's coefficients: derive()), is v. Newton's iteration from the last
+ * output's w (a function of what a snapshot keeps, so a restore continues
+ * bit for bit), bracketed: each evaluation's sign narrows [0, w_end] (p
+ * increases), and a step that would leave it (or a zero slope) bisects
+ * instead. A step s from w is taken as the answer once Taylor's bound on
+ * its error, curv s^2 / (2 (p'(w) - 2 curv s)) with curv >= |p''| on the
+ * branch, is at most tol: one evaluation for a sample that moves a little
+ * along its branch. Also once s <= tol (s then estimates the error, or
+ * bounds it where Newton converges fast) or the bracket is that narrow. */
+HYST_INLINE TCM_Y TCM_NAME(solve_inline)(const hyst_tcm_t *S, TCM_Y v, TCM_Y w)
+{
+    const hyst_curve_t *c = S->curve;
+    const unsigned n = c->u.everett.degree;
+    const TCM_Y tol = YV(c->u.everett.tol), curv = YV(S->curv);
+    TCM_Y a = 0, b = YV(S->w_end);
+    unsigned k;
+    w = w > 0 ? (w < b ? w : b) : 0; /* NaN: 0 */
+    for (k = 0u; k < TCM_SOLVE_STEPS; ++k) {
+        TCM_Y p, dp, f, step, next;
+        TCM_HORNER_D_(S->coef, n, w, p, dp);
+        f = p - v;
+        if (f > 0) {
+            b = w;
+        } else {
+            a = w;
+        }
+        step = f / dp;
+        next = w - step;
+        if (!(next >= a && next <= b)) { /* NaN too */
+            next = a + (b - a) * NUM_C(0.5);
+            if (!(b - a > tol)) {
+                w = next;
+                break;
+            }
+        } else {
+            const TCM_Y s = NUM_NAME(abs)(step);
+            if (curv * s * s <= 2 * tol * (dp - 2 * curv * s) || s <= tol) {
+                w = next;
+                break;
+            }
+        }
+        w = next;
+    }
+    return w * YV(c->u.everett.span);
+}
+
+/* The same from the secant's point, out of line, for the rare paths (g()
+ * of a merge, resume_()). */
+static TCM_NOINLINE TCM_Y TCM_NAME(solve)(const hyst_tcm_t *S, TCM_Y v)
+{
+    return TCM_NAME(solve_inline)(S, v, v * YV(S->secant));
+}
+#define TCM_SOLVE(S, v) TCM_NAME(solve)((S), (v))
+#define TCM_SOLVE_INLINE(S, v, w) TCM_NAME(solve_inline)((S), (v), (w))
+#else
+#define TCM_SOLVE(S, v) ((void)(S), (v)) /* never: the variant refuses the kind */
+#define TCM_SOLVE_INLINE(S, v, w) ((void)(w), TCM_SOLVE(S, v))
+#endif
+
+/* G at u, any kind: Horner for polynomials, solved for the asymmetric
+ * compensator, else out of line. */
 HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
 {
+    if (S->degree == HYST_HORNER_SOLVE_) {
+        return TCM_SOLVE(S, u);
+    }
     return S->degree != 0u ? NUM_NAME(horner)(S->coef, S->degree, u)
                            : TCM_G_OTHER(S->curve, u);
 }
@@ -193,6 +280,30 @@ HYST_INLINE TCM_Y TCM_NAME(fast_end)(hyst_tcm_t *S, TCM_X x, TCM_Y g)
     return YV(S->y_ctp) - g;
 }
 
+/* The end of a sample of the asymmetric compensator (how: as emit()). Its
+ * solve() starts from y_prev, so the monotone guard holds y, not G (and no
+ * window closes: a restore re-derives nothing but what a snapshot keeps). */
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    const int up = how == TCM_FAST ? S->moving_end == 0u : how == TCM_ROSE;
+    const TCM_Y v = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
+    TCM_Y y, w = v * YV(S->secant); /* a slow sample: from the secant */
+    if (how == TCM_FAST) { /* from the last output (on this branch) */
+        w = (YV(S->y_prev) - YV(S->y_ctp)) * YV(S->curve->u.everett.inv_span);
+        w = S->moving_end == 0u ? w : -w;
+    }
+    YV(S->g_prev) = TCM_SOLVE_INLINE(S, v, w);
+    y = TCM_NAME(on_branch)(S, YV(S->g_prev));
+    if (up ? y < YV(S->y_prev) : y > YV(S->y_prev)) {
+        y = YV(S->y_prev);
+    }
+    if (how == TCM_FAST) {
+        XV(S->window[S->moving_end]) = x;
+    }
+    YV(S->y_prev) = y;
+    return y;
+}
+
 /* The end of a sample on a polynomial branch: its output, stored as y_prev
  * (and as the moving window end on the fast path). Degrees up to 8 inline;
  * every other value of S->horner (degree 9 and up, or a pending request:
@@ -213,6 +324,7 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
         u = 1;
         break;
     NUM_HORNER_CASES_(S->coef, u, acc);
+    case HYST_HORNER_SOLVE_: return TCM_NAME(emit_solved)(S, x, how);
     default: return TCM_NAME(emit_rare)(S, x, how);
     }
     g = NUM_MUL_G(acc, u);
@@ -231,7 +343,8 @@ static void TCM_NAME(set_detour)(hyst_tcm_t *S)
                 (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
                 (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u) |
                 (S->status != HYST_OK ? TCM_STALE : 0u) |
-                (S->curve != NULL && S->curve->kind == (unsigned)HYST_CURVE_EVERETT
+                (S->curve != NULL && (S->curve->kind == (unsigned)HYST_CURVE_EVERETT ||
+                                      S->curve->kind == (unsigned)HYST_CURVE_EVERETT_INV)
                      ? TCM_PER_BRANCH
                      : 0u);
 }
@@ -287,13 +400,34 @@ static void TCM_NAME(ended_not_ok)(hyst_tcm_t *S)
 }
 
 /* The asymmetric kind: the current branch's G from the curve's table of
- * its direction, anchored at the current TP's place in the domain (0..1). */
+ * its direction, anchored at the current TP's place in the domain (0..1):
+ * its input's, or for the compensator its output's (the drive). */
 static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S)
 {
-    TCM_NAME(table_coefs)(S->moving_end == 0u ? S->curve->u.everett.rise
-                                              : S->curve->u.everett.fall,
-                          S->curve->u.everett.degree,
-                          (YV(S->x_ctp) - TCM_R(XV(S->lo))) * YV(S->unit), S->coef);
+    const hyst_curve_t *c = S->curve;
+    const TCM_Y anchor = S->degree == HYST_HORNER_SOLVE_
+                             ? (YV(S->y_ctp) - YV(S->y_lo)) * YV(c->u.everett.inv_span)
+                             : (YV(S->x_ctp) - TCM_R(XV(S->lo))) * YV(S->unit);
+    const unsigned n = c->u.everett.degree;
+    TCM_NAME(table_coefs)(S->moving_end == 0u ? c->u.everett.rise : c->u.everett.fall, n,
+                          anchor, S->coef);
+    if (S->degree == HYST_HORNER_SOLVE_) {
+        /* the branch ends at its parent TP (loop closure): a bracket, and
+         * the secant from the TP to it, solve()'s start on a slow sample */
+        const int up = S->moving_end == 0u;
+        const size_t at = up ? S->n_rtp : S->n_ltp;
+        const TCM_X x_end = !up ? XV(S->xltp)[at - 1u] : at > 0u ? XV(S->xrtp)[at - 1u] : XV(S->hi);
+        const TCM_Y y_end = !up ? YV(S->yltp)[at - 1u] : at > 0u ? YV(S->yrtp)[at - 1u] : YV(S->y_hi);
+        const TCM_Y v_end = NUM_NAME(abs)(TCM_R(x_end) - YV(S->x_ctp)) * YV(S->unit);
+        unsigned i;
+        YV(S->w_end) = NUM_NAME(abs)(y_end - YV(S->y_ctp)) * YV(c->u.everett.inv_span);
+        YV(S->secant) = v_end > 0 ? YV(S->w_end) / v_end : 0;
+        YV(S->curv) = 0; /* |p''| <= sum k (k - 1) |a_k| on w in [0, 1] */
+        for (i = 0u; i + 2u <= n; ++i) {
+            const unsigned k = n - i; /* coef[i] multiplies w^k in p */
+            YV(S->curv) += (TCM_Y)(k * (k - 1u)) * NUM_NAME(abs)(YV(S->coef[i]));
+        }
+    }
 }
 
 /* Derives the fast-path cache from the arrays and the last input, then
@@ -354,8 +488,11 @@ void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
     YV(S->y_prev) = (TCM_Y)y;
     YV(S->g_prev) = TCM_NAME(branch_g)(S, XV(S->window[S->moving_end]));
     /* as after the sample that left it; and where y is not the branch's
-     * value at x (a guarded sample), the next one checks it again */
-    if (status != HYST_OK || TCM_NAME(on_branch)(S, YV(S->g_prev)) != YV(S->y_prev)) {
+     * value at x (a guarded sample), the next one checks it again (not the
+     * asymmetric compensator's: its guard holds y, and its next sample
+     * must take the path it took in the run saved, emit_solved()) */
+    if (status != HYST_OK || (S->degree != HYST_HORNER_SOLVE_ &&
+                              TCM_NAME(on_branch)(S, YV(S->g_prev)) != YV(S->y_prev))) {
         TCM_NAME(close_window)(S);
     }
 }
@@ -378,10 +515,14 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
     YV(S->y_hi) = YV(curve->y_hi);
     YV(S->unit) = unit;
     YV(S->rounding) = YV(curve->rounding);
-    S->degree = curve->kind == (unsigned)HYST_CURVE_POLY      ? curve->u.poly.degree
-                : curve->kind == (unsigned)HYST_CURVE_EVERETT ? curve->u.everett.degree
-                                                              : 0u;
+    S->degree = curve->kind == (unsigned)HYST_CURVE_POLY          ? curve->u.poly.degree
+                : curve->kind == (unsigned)HYST_CURVE_EVERETT     ? curve->u.everett.degree
+                : curve->kind == (unsigned)HYST_CURVE_EVERETT_INV ? HYST_HORNER_SOLVE_
+                                                                  : 0u;
     S->horner = S->degree;
+    YV(S->curv) = 0; /* solved branches: derive() */
+    YV(S->w_end) = 0;
+    YV(S->secant) = 0;
     for (k = 0u; k < HYST_MAX_DEGREE; ++k) { /* the asymmetric kind's: per branch, settle() */
         YV(S->coef[k]) = curve->kind == (unsigned)HYST_CURVE_POLY && k < S->degree
                              ? YV(curve->u.poly.a[k])
@@ -647,7 +788,9 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
     if (d > XV(S->db_reach)) {
         const TCM_Y full = TCM_D(d, (TCM_X)0);
         XV(S->db_reach) = d;
-        if ((S->detour & TCM_PER_BRANCH) != 0u) { /* the loop [b, a]'s height at its middle */
+        if (S->degree == HYST_HORNER_SOLVE_) { /* no E of the desired output: the drive range */
+            YV(S->db_err) = YV(S->y_hi) - YV(S->y_lo);
+        } else if ((S->detour & TCM_PER_BRANCH) != 0u) { /* the loop [b, a]'s height at its middle */
             const TCM_X m = TCM_MID(b, a);
             YV(S->db_err) = NUM_NAME(abs)(TCM_NAME(e)(S, a, b) - TCM_NAME(e)(S, a, m) -
                                           TCM_NAME(e)(S, m, b));
@@ -896,7 +1039,9 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
 static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
 {
     TCM_Y y = YV(S->y_prev);
-    if (how == TCM_FAST) {
+    if (S->degree == HYST_HORNER_SOLVE_ && how != TCM_REPEAT) { /* a request pending */
+        y = TCM_NAME(emit_solved)(S, x, how);
+    } else if (how == TCM_FAST) {
         y = TCM_NAME(fast_end)(S, x, TCM_NAME(branch_g)(S, x));
     } else if (how != TCM_REPEAT) {
         y = TCM_NAME(slow_guard)(S, TCM_NAME(branch_g)(S, x), how);
@@ -954,7 +1099,8 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
     const unsigned deg = S->horner;
     TCM_X w0 = XV(S->window[0]), w1 = XV(S->window[1]);
     TCM_Y g_prev = YV(S->g_prev);
-    if (deg != S->degree) { /* a pending request: step_slow() serves it */
+    if (deg != S->degree || deg == HYST_HORNER_SOLVE_) { /* a pending request: step_slow()
+                                                           * serves it; solved: step by step */
         return i;
     }
     /* One loop per direction: a selected update of w0 or w1 in one loop put
@@ -1005,7 +1151,10 @@ static hyst_status_t TCM_NAME(block)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, s
         if (i == n) {
             break;
         }
-        y[i] = TCM_NAME(step_slow)(S, x[i]); /* x[i] left the window */
+        /* x[i] left the window, or the branch is solved (sample(): the
+         * same arithmetic as step()) */
+        y[i] = S->degree == HYST_HORNER_SOLVE_ ? TCM_NAME(sample)(S, x[i])
+                                               : TCM_NAME(step_slow)(S, x[i]);
         if (S->status < 0) {
             failed = 1;
         } else if (S->status > worst) {

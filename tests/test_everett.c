@@ -34,28 +34,7 @@ static rng_t rng;
 void setUp(void) { rng_seed(&rng, 1312u); }
 void tearDown(void) {}
 
-/* A random E of degree 1..N on a random domain: coefficients in
- * [-1.5, 1] / (i + j) with a dominant positive width term, scaled; about
- * one in four is not monotone. Init decides. */
-static hyst_everett_t random_e(void)
-{
-    hyst_everett_t e;
-    unsigned i, j;
-    const double scale = rng_range(&rng, 0.5, 20.0);
-    memset(&e, 0, sizeof e);
-    e.degree = 1u + rng_below(&rng, (unsigned)N);
-    /* ends exact in float: the reference's domain is the instance's */
-    e.lo = (double)(float)rng_range(&rng, -50.0, 50.0);
-    e.hi = (double)(float)(e.lo + rng_range(&rng, 1.0, 100.0));
-    e.y_lo = rng_range(&rng, -10.0, 10.0);
-    for (i = 1u; i <= e.degree; ++i) {
-        for (j = 0u; i + j <= e.degree; ++j) {
-            e.e[i - 1u][j] = scale * rng_range(&rng, -1.5, 1.0) / (double)(i + j);
-        }
-    }
-    e.e[0][0] = scale * rng_range(&rng, 1.0, 3.0);
-    return e;
-}
+static hyst_everett_t random_e(void) { return ref_everett_random(&rng); }
 
 /* dE/da >= 0 and dE/db <= 0 sampled on a grid of the triangle; the
  * smallest value of both, relative to the range E(hi, lo). */
@@ -83,19 +62,12 @@ static hyst_status_t init_e(hyst_t *I, hyst_curve_t *c, const hyst_everett_t *e,
     return st != HYST_OK ? st : hyst_init_curve(I, c, a, b, d, f, cap);
 }
 
-/* Random walk with jumps over the domain. */
 static void walk(const hyst_everett_t *e, hyst_real_t *x, long n)
 {
     double v = 0.5 * (e->lo + e->hi);
     long k;
     for (k = 0; k < n; ++k) {
-        if (rng_below(&rng, 10u) == 0u) {
-            v = rng_range(&rng, e->lo, e->hi);
-        } else {
-            v += (e->hi - e->lo) * rng_range(&rng, -0.05, 0.05);
-        }
-        v = v < e->lo ? e->lo : (v > e->hi ? e->hi : v);
-        x[k] = (hyst_real_t)v;
+        x[k] = (hyst_real_t)ref_everett_walk(&rng, &v, e->lo, e->hi);
     }
 }
 

@@ -55,7 +55,8 @@ typedef enum hyst_curve_kind {
     HYST_CURVE_POLY_INV = 3, /**< f0^-1 of a polynomial: monotone bisection */
     HYST_CURVE_PWL_INV = 4,  /**< f0^-1 of a piecewise-linear f0: exact */
     HYST_CURVE_INV_TABLE = 5, /**< f0^-1 of a polynomial: cubic pieces on a uniform grid (inline) */
-    HYST_CURVE_EVERETT = 6   /**< asymmetric: a two-variable branch function E (inline) */
+    HYST_CURVE_EVERETT = 6,  /**< asymmetric: a two-variable branch function E (inline) */
+    HYST_CURVE_EVERETT_INV = 7 /**< the asymmetric kind's inverse: Newton per branch, bracketed */
 } hyst_curve_kind_t;
 
 /** Numbers of the table of an HYST_CURVE_INV_TABLE curve with @p intervals
@@ -139,7 +140,13 @@ typedef struct hyst_curve {
              *  anchor powers highest first, rows of n - i + 1 entries */
             hyst_num_t rise[HYST_EVERETT_TERMS];
             hyst_num_t fall[HYST_EVERETT_TERMS];
-        } everett; /**< EVERETT */
+            hyst_num_t span;     /**< the drive's span hi - lo (of the forward curve) */
+            hyst_num_t inv_span; /**< 1 / span */
+            /** EVERETT_INV: Newton's last step, in w, at which the drive is
+             *  taken (2^-20 in float, 2^-40 in double); 0 for EVERETT */
+            hyst_num_t tol;
+            hyst_num_t branch_rounding; /**< the forward curve's rounding bound */
+        } everett; /**< EVERETT and EVERETT_INV */
         struct {
             hyst_curve_poly_t fwd;  /**< the forward polynomial's G (the exact intervals) */
             hyst_num_t span;        /**< input span of f0 (the drive range) */
@@ -256,6 +263,14 @@ hyst_status_t hyst_f64_curve_from_pwl_(hyst_curve_t *curve, const double *x, con
  *  - polynomial: g^-1 by bisection, <= 2 HYST_INV_MAX_ITER steps, monotone;
  *  - piecewise linear: exact (the same points with the axes swapped; the
  *    inverse keeps pointing at the caller's arrays);
+ *  - asymmetric (HYST_CURVE_EVERETT): HYST_CURVE_EVERETT_INV, stored turning
+ *    points (desired output, drive) and, per branch, the drive step whose
+ *    output step on the forward branch p(w) = E(...) is the desired one:
+ *    Newton's iteration from the last drive, bracketed by the branch's ends
+ *    (bisection where a step would leave the bracket); monotone, error in
+ *    the drive about tol (curve.h) of its span, restores bit for bit.
+ *    Deadband and bounded memory on it state the drive range as their bound
+ *    (docs/pi_and_inverse.md). Real variants and integer codes, not q31;
  *  - an inverse curve: gives back the forward curve.
  * The forward curve must be strictly increasing: a PWL f0 with a flat piece,
  * or a polynomial with a flat stretch wider than rounding, is refused.

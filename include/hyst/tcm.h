@@ -120,6 +120,11 @@ typedef struct hyst_tcm {
      *  and every sample is slow */
     unsigned degree;
     hyst_num_t coef[HYST_MAX_DEGREE]; /**< branch shape G, a copy of the curve's */
+    /** the asymmetric compensator: a bound on the current branch's |G''| in
+     *  its unit argument, for Newton's error bound (tcm_engine.h, solve()) */
+    hyst_num_t curv;
+    hyst_num_t w_end;  /**< the asymmetric compensator: its branch's end (the parent TP), as w */
+    hyst_num_t secant; /**< the same: w per unit of G's argument from the TP to that end */
     /** the pieces of a tabulated inverse (HYST_CURVE_INV_TABLE, evaluated on
      *  the per-sample path with degree 0), else NULL */
     hyst_cptr_t table;

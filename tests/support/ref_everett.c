@@ -2,6 +2,7 @@
 #include "ref_everett.h"
 
 #include <math.h>
+#include <string.h>
 
 double ref_everett_e(const hyst_everett_t *e, double a, double b)
 {
@@ -62,4 +63,35 @@ double ref_everett_step(ref_everett_t *r, double x)
     }
     r->x = x;
     return r->y;
+}
+
+hyst_everett_t ref_everett_random(rng_t *rng)
+{
+    hyst_everett_t e;
+    unsigned i, j;
+    const double scale = rng_range(rng, 0.5, 20.0);
+    memset(&e, 0, sizeof e);
+    e.degree = 1u + rng_below(rng, (unsigned)HYST_EVERETT_MAX_DEGREE);
+    /* ends exact in float: the reference's domain is the instance's */
+    e.lo = (double)(float)rng_range(rng, -50.0, 50.0);
+    e.hi = (double)(float)(e.lo + rng_range(rng, 1.0, 100.0));
+    e.y_lo = rng_range(rng, -10.0, 10.0);
+    for (i = 1u; i <= e.degree; ++i) {
+        for (j = 0u; i + j <= e.degree; ++j) {
+            e.e[i - 1u][j] = scale * rng_range(rng, -1.5, 1.0) / (double)(i + j);
+        }
+    }
+    e.e[0][0] = scale * rng_range(rng, 1.0, 3.0);
+    return e;
+}
+
+double ref_everett_walk(rng_t *rng, double *v, double lo, double hi)
+{
+    if (rng_below(rng, 10u) == 0u) {
+        *v = rng_range(rng, lo, hi);
+    } else {
+        *v += (hi - lo) * rng_range(rng, -0.05, 0.05);
+    }
+    *v = *v < lo ? lo : (*v > hi ? hi : *v);
+    return *v;
 }

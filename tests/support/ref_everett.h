@@ -7,6 +7,7 @@
 #define REF_EVERETT_H
 
 #include "hyst/hyst.h"
+#include "support.h"
 
 #define REF_EVERETT_TPS 1024
 
@@ -22,5 +23,13 @@ double ref_everett_e(const hyst_everett_t *e, double a, double b);
 void ref_everett_init(ref_everett_t *r, const hyst_everett_t *e);
 /* The output at x (inside [lo, hi]); stacked TPs: r->n - 1. */
 double ref_everett_step(ref_everett_t *r, double x);
+
+/* A random E of degree 1..HYST_EVERETT_MAX_DEGREE on a random domain:
+ * coefficients in [-1.5, 1] / (i + j) with a dominant positive width term,
+ * scaled; about one in four is not monotone (init decides). */
+hyst_everett_t ref_everett_random(rng_t *rng);
+/* The next sample of a random walk over [lo, hi] with jumps (one in ten);
+ * *v: the walk's state, start it at any point of the domain. */
+double ref_everett_walk(rng_t *rng, double *v, double lo, double hi);
 
 #endif

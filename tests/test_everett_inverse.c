@@ -1,0 +1,229 @@
+/* SPDX-License-Identifier: MIT */
+/* The asymmetric kind's compensator (hyst_curve_inverse() of an
+ * HYST_CURVE_EVERETT curve): for random E that init accepts, the drive it
+ * gives for a desired output agrees with the exact inverse of a plain double
+ * reference (the reference's response to the next input bisected); the
+ * model driven by it reproduces the desired output; the drive never goes
+ * back while the desired output moves on; block call = steps and restores
+ * bit for bit; the inverse of the inverse is the forward curve. */
+#include "ref_everett.h"
+#include "support.h"
+#include "unity.h"
+
+#include <math.h>
+#include <string.h>
+
+#define CAP 256
+#define SAMPLES 3000L
+
+static hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
+static hyst_real_t xl2[CAP], yl2[CAP], xr2[CAP], yr2[CAP];
+static hyst_real_t xl3[CAP], yl3[CAP], xr3[CAP], yr3[CAP];
+static hyst_real_t yd[SAMPLES], drive[SAMPLES], drive2[SAMPLES];
+static unsigned char snap[HYST_SNAPSHOT_SIZE(CAP)];
+static hyst_curve_t fwd, inv;
+static hyst_t C, M, T;
+static ref_everett_t ref, probe; /* 16 KB each: off the stack */
+static rng_t rng;
+
+#ifdef HYST_USE_DOUBLE
+#define DRIVE_AGREE 1e-9 /* of the drive span */
+#else
+#define DRIVE_AGREE 1e-5
+#endif
+
+#ifdef HYST_USE_DOUBLE
+#define NEXT(v, to) nextafter((v), (to))
+#define CURVE_NUM(n) ((n).f64)
+#else
+#define NEXT(v, to) nextafterf((v), (to))
+#define CURVE_NUM(n) ((n).f32)
+#endif
+
+void setUp(void) { rng_seed(&rng, 2718u); }
+void tearDown(void) {}
+
+/* The reference's output if its next input were x; r unchanged. */
+static double response(const ref_everett_t *r, double x)
+{
+    probe.e = r->e;
+    probe.n = r->n;
+    probe.x = r->x;
+    probe.y = r->y;
+    memcpy(probe.tx, r->tx, (size_t)r->n * sizeof r->tx[0]);
+    memcpy(probe.ty, r->ty, (size_t)r->n * sizeof r->ty[0]);
+    return ref_everett_step(&probe, x);
+}
+
+/* The exact inverse: the input whose response is y (the response increases
+ * with x from y_lo at lo to y_hi at hi, whatever the state). */
+static double exact_drive(const ref_everett_t *r, double y)
+{
+    double a = r->e->lo, b = r->e->hi;
+    int k;
+    for (k = 0; k < 200 && b - a > 0.0; ++k) {
+        const double m = 0.5 * (a + b);
+        if (m <= a || m >= b) {
+            break;
+        }
+        if (response(r, m) < y) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    return 0.5 * (a + b);
+}
+
+/* An accepted random E, its compensator C and model M. */
+static hyst_everett_t accepted_e(void)
+{
+    for (;;) {
+        const hyst_everett_t e = ref_everett_random(&rng);
+        if (hyst_curve_from_everett(&fwd, &e) == HYST_OK) {
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&inv, &fwd));
+            TEST_ASSERT_EQUAL_INT(HYST_CURVE_EVERETT_INV, (int)inv.kind);
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&C, &inv, xl, yl, xr, yr, CAP));
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&M, &fwd, xl2, yl2, xr2, yr2, CAP));
+            return e;
+        }
+    }
+}
+
+/* Desired outputs: a random walk with jumps over the major loop's range. */
+static void desired(const hyst_everett_t *e, long n)
+{
+    const double lo = e->y_lo, hi = e->y_lo + ref_everett_e(e, e->hi, e->lo);
+    double v = 0.5 * (lo + hi);
+    long k;
+    for (k = 0; k < n; ++k) {
+        yd[k] = (hyst_real_t)ref_everett_walk(&rng, &v, lo, hi);
+    }
+}
+
+static void test_drive_agrees_with_the_exact_inverse(void)
+{
+    double worst = 0.0, worst_out = 0.0;
+    int trial;
+    for (trial = 0; trial < 25; ++trial) {
+        const hyst_everett_t e = accepted_e();
+        const double span = e.hi - e.lo, range = ref_everett_e(&e, e.hi, e.lo);
+        long k;
+        desired(&e, SAMPLES);
+        ref_everett_init(&ref, &e);
+        for (k = 0; k < SAMPLES; ++k) {
+            const double x = (double)hyst_step(&C, yd[k]);
+            const double exact = exact_drive(&ref, (double)yd[k]);
+            const double d = fabs(x - exact) / span;
+            const double out = fabs((double)hyst_step(&M, (hyst_real_t)x) - (double)yd[k]) / range;
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&C));
+            worst = d > worst ? d : worst;
+            worst_out = out > worst_out ? out : worst_out;
+            if (d > DRIVE_AGREE) {
+                TEST_PRINTF("E %d degree %u sample %ld: drive %g, exact %g (%g of the span)",
+                            trial, e.degree, k, x, exact, d);
+                TEST_FAIL();
+            }
+            (void)ref_everett_step(&ref, exact);
+        }
+    }
+    TEST_PRINTF("worst drive error %g of the span; model(drive) - desired: %g of the range",
+                worst, worst_out);
+    /* the model, in the variant's type, driven by the compensator */
+    TEST_ASSERT_TRUE(worst_out < 10.0 * DRIVE_AGREE);
+}
+
+/* Sweeps by adjacent values up and down through many turning points: the
+ * drive never moves against the desired output. */
+static void test_drive_is_monotone(void)
+{
+    int trial;
+    for (trial = 0; trial < 10; ++trial) {
+        const hyst_everett_t e = accepted_e();
+        const double lo = e.y_lo, hi = e.y_lo + ref_everett_e(&e, e.hi, e.lo);
+        hyst_real_t y = (hyst_real_t)(lo + (hi - lo) * rng_range(&rng, 0.2, 0.8));
+        hyst_real_t prev = hyst_step(&C, y);
+        long k;
+        int up = 1;
+        for (k = 0; k < 20000L; ++k) {
+            hyst_real_t x;
+            if (rng_below(&rng, 50u) == 0u) {
+                up = !up;
+            }
+            y = up ? NEXT(y, (hyst_real_t)hi) : NEXT(y, (hyst_real_t)lo);
+            if (rng_below(&rng, 100u) == 0u) { /* and a few wider moves */
+                y = (hyst_real_t)(y + (up ? 1 : -1) * (hi - lo) * 1e-3);
+            }
+            x = hyst_step(&C, y);
+            TEST_ASSERT_TRUE(up ? x >= prev : x <= prev);
+            prev = x;
+        }
+    }
+}
+
+/* Block call = steps; a snapshot taken anywhere continues bit for bit. */
+static void test_block_and_snapshots(void)
+{
+    const hyst_everett_t e = accepted_e();
+    size_t len = 0u;
+    long k;
+    desired(&e, SAMPLES);
+    for (k = 0; k < SAMPLES; ++k) {
+        drive[k] = hyst_step(&C, yd[k]);
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl3, yl3, xr3, yr3, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_process(&T, yd, drive2, (size_t)SAMPLES));
+    TEST_ASSERT_EQUAL_MEMORY(drive, drive2, sizeof drive);
+    for (k = 100; k < SAMPLES; k += 97) {
+        long j;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&C, &inv, xl, yl, xr, yr, CAP));
+        for (j = 0; j < k; ++j) {
+            (void)hyst_step(&C, yd[j]);
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&C, snap, sizeof snap, &len));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&T, snap, len));
+        for (j = k; j < k + 200 && j < SAMPLES; ++j) {
+            const hyst_real_t a = hyst_step(&C, yd[j]), b = hyst_step(&T, yd[j]);
+            TEST_ASSERT_EQUAL_MEMORY(&a, &b, sizeof a);
+            TEST_ASSERT_EQUAL_MEMORY(&drive[j], &a, sizeof a);
+        }
+    }
+    /* the forward model's snapshot is not the compensator's */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&M, snap, sizeof snap, &len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&T, snap, len));
+}
+
+/* Inverting twice gives the forward curve back; out-of-range and
+ * non-finite desired outputs are clamped or ignored as for every kind. */
+static void test_inverse_of_inverse_and_bad_input(void)
+{
+    hyst_curve_t back;
+    hyst_real_t x;
+    (void)accepted_e();
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&back, &inv));
+    TEST_ASSERT_EQUAL_INT(HYST_CURVE_EVERETT, (int)back.kind);
+    TEST_ASSERT_EQUAL_MEMORY(&fwd.lo, &back.lo, sizeof fwd.lo);
+    TEST_ASSERT_EQUAL_MEMORY(&fwd.hi, &back.hi, sizeof fwd.hi);
+    TEST_ASSERT_EQUAL_MEMORY(&fwd.y_lo, &back.y_lo, sizeof fwd.y_lo);
+    TEST_ASSERT_EQUAL_MEMORY(&fwd.y_hi, &back.y_hi, sizeof fwd.y_hi);
+    TEST_ASSERT_EQUAL_MEMORY(&fwd.unit, &back.unit, sizeof fwd.unit);
+    TEST_ASSERT_EQUAL_MEMORY(&fwd.rounding, &back.rounding, sizeof fwd.rounding);
+    TEST_ASSERT_EQUAL_MEMORY(&fwd.u.everett, &back.u.everett, sizeof fwd.u.everett);
+
+    x = hyst_step(&C, CURVE_NUM(inv.hi) + 1);
+    TEST_ASSERT_EQUAL_INT(HYST_WARN_CLAMPED, hyst_status(&C));
+    TEST_ASSERT_EQUAL_MEMORY(&CURVE_NUM(inv.y_hi), &x, sizeof x); /* the drive's top */
+    x = hyst_step(&C, (hyst_real_t)NAN);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NONFINITE, hyst_status(&C));
+    TEST_ASSERT_EQUAL_MEMORY(&CURVE_NUM(inv.y_hi), &x, sizeof x); /* nothing lost */
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_drive_agrees_with_the_exact_inverse);
+    RUN_TEST(test_drive_is_monotone);
+    RUN_TEST(test_block_and_snapshots);
+    RUN_TEST(test_inverse_of_inverse_and_bad_input);
+    return UNITY_END();
+}
