@@ -2,9 +2,13 @@
 /* libFuzzer harness of the model-file reader of `hyst` (tools/cli/model_file.c,
  * format hyst-model-text 1, docs/cli.md): the input is the file's bytes.
  * Checks, besides ASan/UBSan (no crash, no over-read):
- *  - an accepted model is sound (2..10 finite coefficients, a finite domain)
- *    and round-trips: written by cli_model_text() and read back it is the
- *    same model bit for bit, and writing that gives the same text again;
+ *  - an accepted model is sound (kind poly: 2..10 finite coefficients; kind
+ *    everett: degree 1..4, as many finite terms as it needs, a finite y_lo;
+ *    a finite domain) and round-trips: written by cli_model_text() and read
+ *    back it is the same model bit for bit, and writing that gives the same
+ *    text again; its firmware header fits the tool's buffer; the library's
+ *    verdict on an everett model's E is either a curve or a message with
+ *    its reason;
  *  - a refusal places itself: "FILE:LINE: field K: ..." with LINE a line of
  *    the input and K at most one past that line's fields, or one of the
  *    messages about a whole line (too long; line 1 not the format's first
@@ -137,24 +141,63 @@ static int same_bits(const double *a, const double *b, size_t n)
     return memcmp(a, b, n * sizeof *a) == 0;
 }
 
+/* The library's verdict on an everett model: a curve, or one message line
+ * "model file PATH: <hyst_status_str() of a refusal>". */
+static void check_everett_curve(const cli_model_t *m)
+{
+    FILE *err, *saved = stderr;
+    hyst_curve_t curve;
+    int rc;
+    memset(msg, 0, sizeof msg);
+    err = fmemopen(msg, sizeof msg - 1u, "w");
+    CHECK(err != NULL);
+    stderr = err;
+    rc = cli_everett_curve("fuzz", PATH, m, &curve);
+    stderr = saved;
+    (void)fclose(err);
+    if (rc == 0) {
+        CHECK(msg[0] == '\0' && hyst_curve_check(&curve) == HYST_OK);
+    } else {
+        static const char lead[] = "hyst fuzz: model file " PATH ": ";
+        CHECK(strncmp(msg, lead, strlen(lead)) == 0);
+        CHECK(strstr(msg, "unknown status") == NULL);
+    }
+}
+
 static void check_round_trip(const cli_model_t *m)
 {
-    static char text[4096], again[4096];
+    static char text[4096], again[4096], header[8192];
     cli_model_t back;
-    size_t len, len2, i;
-    CHECK(m->ncoef >= 2u && m->ncoef <= HYST_MAX_DEGREE + 1u);
+    size_t len, len2, i, hlen = 0u;
     CHECK(isfinite(m->lo) && isfinite(m->hi));
-    for (i = 0u; i < m->ncoef; ++i) {
-        CHECK(isfinite(m->coeffs[i]));
+    if (m->kind == CLI_MODEL_EVERETT) {
+        CHECK(m->ncoef == 0u && m->degree >= 1u && m->degree <= HYST_EVERETT_MAX_DEGREE);
+        CHECK(m->nterms == cli_everett_terms(m->degree) && isfinite(m->y_lo));
+        for (i = 0u; i < m->nterms; ++i) {
+            CHECK(isfinite(m->terms[i]));
+        }
+    } else {
+        CHECK(m->kind == CLI_MODEL_POLY && m->nterms == 0u && m->degree == 0u && m->y_lo == 0.0);
+        CHECK(m->ncoef >= 2u && m->ncoef <= HYST_MAX_DEGREE + 1u);
+        for (i = 0u; i < m->ncoef; ++i) {
+            CHECK(isfinite(m->coeffs[i]));
+        }
     }
     len = cli_model_text(m, text, sizeof text);
     CHECK(len > 0u);
     CHECK(parse((const unsigned char *)text, len, &back) == 0);
-    CHECK(back.ncoef == m->ncoef && back.delay == m->delay);
+    CHECK(back.kind == m->kind && back.ncoef == m->ncoef && back.delay == m->delay);
+    CHECK(back.degree == m->degree && back.nterms == m->nterms);
     CHECK(same_bits(&back.lo, &m->lo, 1u) && same_bits(&back.hi, &m->hi, 1u));
+    CHECK(same_bits(&back.y_lo, &m->y_lo, 1u));
     CHECK(same_bits(back.coeffs, m->coeffs, sizeof m->coeffs / sizeof m->coeffs[0]));
+    CHECK(same_bits(back.terms, m->terms, sizeof m->terms / sizeof m->terms[0]));
     len2 = cli_model_text(&back, again, sizeof again);
     CHECK(len2 == len && memcmp(again, text, len) == 0);
+    CHECK(cli_header_model(header, sizeof header, &hlen, "fuzz_model", m) == 0);
+    if (m->kind == CLI_MODEL_EVERETT) {
+        check_everett_curve(m);
+    }
 }
 
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size);

@@ -253,6 +253,21 @@ model_files.update({
     "bad_kind_extra": valid.replace(b"kind poly", b"kind poly pwl"),
     "bad_binary": bytes(range(256)),
 })
+# the asymmetric kind: as fit --save writes it, other spellings, one defect each
+everett_valid = MAGIC + b"# an everett model\nkind everett\nlo 0\nhi 40\ny_lo 0.5\ndelay 2\ndegree 2\nterms 3 1 2\n"
+model_files.update({
+    "valid_everett": everett_valid,
+    "valid_everett_written": MAGIC + b"# hyst model: asymmetric\nkind everett\nlo 0\nhi 3.6000000000000001\n"
+        b"y_lo -118.93881789566279\ndelay 4\ndegree 2\nterms 39.496171907084637 -6.2357175138474199 5.8010223097682525\n",
+    "valid_everett_deg4_keys_reordered": MAGIC + b"terms" + b" 0.5" * 10 + b"\ndegree 4\ny_lo -1\nhi 1\nlo -1\nkind everett",
+    "valid_everett_not_monotone": everett_valid.replace(b"terms 3 1 2", b"terms 1 0 -2"),
+    "bad_everett_terms_count": everett_valid.replace(b"terms 3 1 2", b"terms 3 1"),
+    "bad_everett_eleven_terms": everett_valid.replace(b"terms 3 1 2", b"terms" + b" 1" * 11),
+    "bad_everett_degree": everett_valid.replace(b"degree 2", b"degree 2.5"),
+    "bad_everett_coeffs": everett_valid + b"coeffs 1 0\n",
+    "bad_everett_no_terms": everett_valid.replace(b"terms 3 1 2\n", b""),
+    "bad_poly_degree": valid + b"degree 3\n",
+})
 # fuzz_everett.c: flags, degree, capacity, lo, span, y_lo (structured bytes),
 # the coefficients e[i][j] with i + j + 1 <= degree in row order, then samples.
 def everett(flags, degree, cap, lo, span, coeffs, samples):

@@ -9,6 +9,8 @@
 #ifndef HYST_CLI_H
 #define HYST_CLI_H
 
+#include "hyst/curve.h"
+
 #include <stddef.h>
 #include <stdio.h>
 
@@ -109,11 +111,21 @@ void cli_replace_discard(cli_replace_t *r);
 
 /* ---- model files, hyst-model-text 1 (model_file.c) ---- */
 
+/* The kinds a model file holds (its key `kind`). */
+enum { CLI_MODEL_POLY = 0, CLI_MODEL_EVERETT = 1 };
+
 typedef struct cli_model {
-    double coeffs[10]; /* c_n ... c_0, highest power first */
-    size_t ncoef;      /* degree + 1 */
-    double lo, hi;     /* domain of f0 */
+    int kind;          /* CLI_MODEL_POLY or CLI_MODEL_EVERETT */
+    double coeffs[10]; /* poly: c_n ... c_0, highest power first */
+    size_t ncoef;      /* poly: degree + 1 */
+    double lo, hi;     /* domain */
     unsigned long delay; /* the output follows its input this many samples later */
+    unsigned degree;   /* everett: total degree of E, 1..HYST_EVERETT_MAX_DEGREE */
+    double y_lo;       /* everett: the output at lo after reset */
+    /* everett: e[i - 1][j], the coefficient of w^i t^j, in the file's order
+     * i = 1..degree, then j = 0..degree - i */
+    double terms[HYST_EVERETT_TERMS];
+    size_t nterms;     /* everett: degree (degree + 1) / 2 */
 } cli_model_t;
 
 /* Reads a model file; 0, or 1 after a message naming file, line and field. */
@@ -122,10 +134,20 @@ int cli_model_read(const char *cmd, const char *path, cli_model_t *m);
 int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m);
 /* The file's text into buf; its length, or 0 if it did not fit. */
 size_t cli_model_text(const cli_model_t *m, char *buf, size_t size);
-/* Appends the firmware header's declaration of f0 (include guard,
- * 'static const hyst_poly_t NAME = {...};') to buf[*len..size); 1 when it
- * did not fit. */
-int cli_header_poly(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m);
+/* Appends the firmware header's declaration of the model (include guard,
+ * 'static const hyst_poly_t NAME = {...};' or, for the asymmetric kind,
+ * 'static const hyst_everett_t NAME = {...};') to buf[*len..size); 1 when
+ * it did not fit. */
+int cli_header_model(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m);
+
+/* The asymmetric kind: E's terms in the file's order <-> hyst_everett_t. */
+size_t cli_everett_terms(unsigned degree);
+void cli_model_to_everett(const cli_model_t *m, hyst_everett_t *e);
+void cli_model_from_everett(cli_model_t *m, const hyst_everett_t *e, unsigned long delay);
+/* The library's curve of an everett model (hyst_f64_curve_from_everett(),
+ * which checks that E is monotone on the triangle): 0, or 1 after a message
+ * with the library's reason. */
+int cli_everett_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c);
 
 /* 1 if s is a C identifier of fewer than 200 characters (a header's NAME). */
 int cli_c_identifier(const char *s);

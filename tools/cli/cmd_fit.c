@@ -19,64 +19,73 @@
 #define FIT_PI_DEFAULT_OPERATORS 10u
 
 static const char help[] =
-    "usage: hyst fit [--degree N] [--skip S] [--delay D] [--xcol I --ycol J]\n"
-    "                [--method joint|reflect] [--domain LO,HI] [--header NAME]\n"
-    "                [--header-dir DIR] [--save MODEL] [--compare-pi N]\n"
-    "                [--decimal-comma] FILE\n"
+    "usage: hyst fit [--kind tcm|everett] [--degree N] [--skip S] [--delay D]\n"
+    "                [--xcol I --ycol J] [--method joint|reflect] [--domain LO,HI]\n"
+    "                [--header NAME] [--header-dir DIR] [--save MODEL]\n"
+    "                [--compare-pi N] [--decimal-comma] FILE\n"
     "       hyst fit --kind pi [--operators N] [--skip S] [--delay D]\n"
     "                [--xcol I --ycol J] [--decimal-comma] FILE\n"
     "\n"
-    "Fits the major ascending curve f0 (polynomial of degree N) of a hysteresis\n"
-    "loop to the input/output record in FILE ('-' = standard input), excited by a\n"
-    "full-range periodic wave. Columns are separated by blanks, ',' or ';';\n"
-    "'#' lines and blank lines are skipped.\n"
+    "Fits the major ascending curve f0 (polynomial of degree N) of the symmetric\n"
+    "TCM, or the branch function E of the asymmetric kind (everett, degree N), to\n"
+    "the input/output record in FILE ('-' = standard input), excited by a\n"
+    "full-range periodic wave. Columns are separated by blanks, ',' or ';'; '#'\n"
+    "lines and blank lines are skipped.\n"
     "\n"
-    "  --degree N     polynomial degree, 1..9. Without it, the degree (and the\n"
-    "                 delay, unless --delay is given) is chosen by hold-out: each\n"
-    "                 degree 1..9 and delay 0..8 is fitted on the first two thirds\n"
-    "                 of the record and the model predicts the last third; of the\n"
-    "                 candidates within 1 % of the lowest RMS prediction error, the\n"
-    "                 lowest degree wins (every candidate is printed as a\n"
+    "  --degree N     polynomial degree, 1..9 (--kind everett: E's, 1..4). Without\n"
+    "                 it, the kind (unless --kind is given), the degree and the\n"
+    "                 delay (unless --delay is given) are chosen by hold-out: each\n"
+    "                 f0 of degree 1..9 and each E of degree 1..4, at each delay\n"
+    "                 0..8, is fitted on the first two thirds of the record and the\n"
+    "                 model predicts the last third; of the candidates within 1 %\n"
+    "                 of the lowest RMS prediction error, the one with the fewest\n"
+    "                 parameters wins (every candidate is printed as a\n"
     "                 '# candidate' line)\n"
     "  --skip S       drop the first S data lines (settling; default 0)\n"
     "  --delay D      the output lags the input by D samples (default 0, or chosen)\n"
     "  --xcol I       input column, 1-based (default 1)\n"
     "  --ycol J       output column, 1-based (default 2)\n"
-    "  --method M     joint (default): both branches in one least-squares problem;\n"
-    "                 reflect: the paper's Eq. 14, falling samples reflected with\n"
-    "                 the outputs measured at the extreme inputs\n"
-    "  --domain LO,HI domain of f0 (default: the range of the inputs used);\n"
+    "  --method M     estimator of f0: joint (default): both branches in one\n"
+    "                 least-squares problem; reflect: the paper's Eq. 14\n"
+    "  --domain LO,HI domain of the model (default: the range of the inputs used);\n"
     "                 samples outside it are ignored\n"
-    "  --decimal-comma ',' is the decimal mark (1,5 is 1.5): fields are then\n"
-    "                 separated by blanks or ';'. Without it, a number that looks\n"
-    "                 written with one is refused\n"
+    "  --decimal-comma ',' is the decimal mark (1,5 is 1.5); fields are then\n"
+    "                 separated by blanks or ';'\n"
     "  --header NAME  also write NAME.h holding\n"
-    "                 'static const hyst_poly_t NAME = {...};' for firmware\n"
+    "                 'static const hyst_poly_t NAME = {...};' (kind everett:\n"
+    "                 'static const hyst_everett_t NAME = {...};') for firmware\n"
     "                 (in the current directory, or in DIR with --header-dir)\n"
     "  --header-dir DIR  directory of NAME.h (an existing directory; needs --header)\n"
     "  --save MODEL   also write the model file MODEL (format hyst-model-text 1:\n"
-    "                 f0, its domain and the delay), which 'hyst sim --model' and\n"
-    "                 'hyst inv --model' read\n"
+    "                 the kind, f0 or E, the domain and the delay), which\n"
+    "                 'hyst sim --model' and 'hyst header --model' read\n"
     "  --compare-pi N also fit a Prandtl-Ishlinskii model of N operators (see\n"
     "                 --kind pi) on the same first two thirds, with the same skip\n"
     "                 and delay, and print both models' hold-out RMS on the last\n"
     "                 third as a '# compare' line\n"
-    "  --kind K       tcm (default): f0 of the TCM, as above; pi: the weights\n"
-    "                 w1..wN >= 0 and an output offset of a Prandtl-Ishlinskii\n"
-    "                 model of N one-sided play operators with thresholds\n"
-    "                 r_i = (i - 1) (max - min) / N over the inputs' range, by\n"
-    "                 non-negative least squares\n"
+    "  --kind K       not given: tcm and everett compared as above; tcm: f0 only;\n"
+    "                 everett: E only (least squares along the record, the model\n"
+    "                 from rest at the first sample used); pi: the weights\n"
+    "                 w1..wN >= 0 and an output offset of a\n"
+    "                 Prandtl-Ishlinskii model of N one-sided play operators with\n"
+    "                 thresholds r_i = (i - 1) (max - min) / N over the inputs'\n"
+    "                 range, by non-negative least squares\n"
     "  --operators N  --kind pi: the number of operators, 1..64 (default 10)\n"
     "  --help         this text\n"
     "\n"
-    "Output: line 1 the coefficients cN,...,c0 (highest power first), line 2 LO,HI,\n"
-    "line 3 the RMS and max residual against the fitted major loop (output units),\n"
+    "Output: line 1 the coefficients cN,...,c0 (highest power first; kind everett:\n"
+    "E's terms), line 2 LO,HI, line 3 the RMS and max residual against the fitted\n"
+    "major loop (kind everett: of the model run over the record; output units),\n"
     "then '#' comment lines. --kind pi: line 1 the weights, line 2 the thresholds,\n"
     "line 3 the offset, line 4 the RMS and max residual, then '#' comment lines,\n"
     "one of them the 'hyst pi' options that run the model.\n"
     "Exit status: 0 success; 1 bad option or input (nothing printed); 2 the fitted\n"
-    "f0 is not increasing on the domain (results printed, no header written), or\n"
-    "the fitted PI weight w1 is 0 ('hyst pi' would refuse the weights).\n";
+    "f0 is not increasing, the library refuses the fitted E (results printed, no\n"
+    "header or model file written) or the PI weight w1 is 0 ('hyst pi' refuses it).\n";
+
+/* --kind: not given (the automatic choice compares both TCM kinds), tcm
+ * (the symmetric f0), everett (the asymmetric E) or pi. */
+enum { FIT_KIND_AUTO, FIT_KIND_TCM, FIT_KIND_EVERETT, FIT_KIND_PI };
 
 typedef struct fit_opts {
     hyst_ident_config_t cfg;
@@ -88,7 +97,9 @@ typedef struct fit_opts {
     int have_degree;
     int have_delay;
     int decimal_comma;
-    int kind_pi;          /* --kind pi */
+    int kind;             /* --kind: FIT_KIND_AUTO (not given), _TCM, _EVERETT or _PI */
+    int final_kind;       /* of the model fitted: FIT_POLY or FIT_EVERETT */
+    int have_method;      /* --method given */
     size_t operators;     /* --operators, 0 when not given */
     size_t compare_pi;    /* --compare-pi N, 0 when not given */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
@@ -138,10 +149,12 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             (void)snprintf(o->tcm_only, sizeof o->tcm_only, "%s", a.opt);
         }
         if (cli_is(&a, "--kind")) {
-            if (strcmp(v, "tcm") != 0 && strcmp(v, "pi") != 0) {
-                return cli_fail(a.cmd, "option --kind: %s is neither tcm nor pi", cli_quote(q, v));
+            if (strcmp(v, "tcm") == 0 || strcmp(v, "everett") == 0 || strcmp(v, "pi") == 0) {
+                o->kind = v[0] == 't' ? FIT_KIND_TCM : v[0] == 'e' ? FIT_KIND_EVERETT : FIT_KIND_PI;
+            } else {
+                return cli_fail(a.cmd, "option --kind: %s is neither tcm nor pi nor everett",
+                                cli_quote(q, v));
             }
-            o->kind_pi = strcmp(v, "pi") == 0;
         } else if (cli_is(&a, "--operators") || cli_is(&a, "--compare-pi")) {
             if (!cli_opt_ulong(&a, v, 1ul, HYST_PI_FIT_MAX_OPERATORS, &u)) {
                 return 1;
@@ -165,6 +178,7 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             }
             o->cols[cli_is(&a, "--xcol") ? 0 : 1] = u;
         } else if (cli_is(&a, "--method")) {
+            o->have_method = 1;
             if (strcmp(v, "joint") == 0) {
                 o->cfg.method = HYST_IDENT_JOINT;
             } else if (strcmp(v, "reflect") == 0) {
@@ -207,10 +221,20 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     if (o->header_dir != NULL && o->header == NULL) {
         return cli_fail(a.cmd, "option --header-dir needs --header NAME");
     }
-    if (o->kind_pi && o->tcm_only[0] != '\0') {
+    if (o->kind == FIT_KIND_PI && o->tcm_only[0] != '\0') {
         return cli_fail(a.cmd, "option %s does not apply to --kind pi", o->tcm_only);
     }
-    if (!o->kind_pi && o->operators != 0u) {
+    if (o->kind == FIT_KIND_EVERETT && o->have_method) {
+        return cli_fail(a.cmd, "option --method does not apply to --kind everett (it chooses "
+                               "the estimator of the symmetric f0)");
+    }
+    if (o->kind == FIT_KIND_EVERETT && o->have_degree && o->cfg.degree > HYST_EVERETT_MAX_DEGREE) {
+        return cli_fail(a.cmd, "option --degree: %u is above %u, the highest degree of --kind "
+                               "everett",
+                        o->cfg.degree, (unsigned)HYST_EVERETT_MAX_DEGREE);
+    }
+    o->final_kind = o->kind == FIT_KIND_EVERETT ? FIT_EVERETT : FIT_POLY;
+    if (o->kind != FIT_KIND_PI && o->operators != 0u) {
         return cli_fail(a.cmd, "option --operators needs --kind pi (or use --compare-pi N)");
     }
     if (o->operators == 0u) {
@@ -223,21 +247,44 @@ static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflec
 
 /* ---- the automatic choice (fit_select.c) ---- */
 
-#define MAX_CANDIDATES (HYST_MAX_DEGREE * (FIT_MAX_DELAY + 1u))
+#define MAX_CANDIDATES ((HYST_MAX_DEGREE + HYST_EVERETT_MAX_DEGREE) * (FIT_MAX_DELAY + 1u))
 static fit_candidate_t candidates[MAX_CANDIDATES];
 static size_t n_candidates, best_candidate;
 
-/* Sets o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
+/* The kinds the automatic choice compares: both unless --kind names one. */
+static int candidate_kinds(const fit_opts_t *o)
+{
+    return o->kind == FIT_KIND_TCM       ? FIT_POLY
+           : o->kind == FIT_KIND_EVERETT ? FIT_EVERETT
+                                         : FIT_POLY | FIT_EVERETT;
+}
+
+/* "everett " before an asymmetric candidate's degree, "" before a polynomial's. */
+static const char *kind_prefix(int kind) { return kind == FIT_EVERETT ? "everett " : ""; }
+
+/* Why an E fit is singular: its terms are not determined by the turning
+ * points the record visits. Major loops alone (every branch starts at lo or
+ * hi) determine degree 2 at most. */
+static const char everett_singular[] =
+    "the record's turning points do not determine E of this degree; major loops alone "
+    "determine degree 2 at most";
+
+/* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
 static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
 {
-    n_candidates = fit_select(&o->cfg, t->col[0], t->col[1], t->n,
+    n_candidates = fit_select(&o->cfg, candidate_kinds(o), t->col[0], t->col[1], t->n,
                               o->have_delay ? o->cfg.delay : FIT_MAX_DELAY, candidates,
                               MAX_CANDIDATES, &best_candidate);
     if (best_candidate == (size_t)-1) {
-        return cli_fail("fit", "%s: no candidate degree gave an increasing f0 that could "
-                               "predict the last third of the record (give --degree)",
-                        name);
+        return cli_fail("fit", "%s: no candidate degree gave %s that could predict the last "
+                               "third of the record (give --degree)",
+                        name,
+                        o->kind == FIT_KIND_EVERETT ? "an E the library accepts"
+                        : o->kind == FIT_KIND_TCM   ? "an increasing f0"
+                                                    : "an increasing f0 or an E the library "
+                                                      "accepts");
     }
+    o->final_kind = candidates[best_candidate].kind;
     o->cfg.degree = candidates[best_candidate].degree;
     o->cfg.delay = candidates[best_candidate].delay;
     return 0;
@@ -246,53 +293,217 @@ static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
 static void print_candidates(const fit_opts_t *o)
 {
     size_t i;
-    (void)printf("# chosen by hold-out: degree %u, delay %lu (the lowest degree within 1 %% "
-                 "of the lowest RMS prediction error on the last third of the record, "
-                 "fitted on the first two thirds)\n",
-                 o->cfg.degree, (unsigned long)o->cfg.delay);
+    (void)printf("# chosen by hold-out: degree %u, delay %lu (kind %s, %u parameters: the "
+                 "fewest within 1 %% of the lowest RMS prediction error on the last third of "
+                 "the record, fitted on the first two thirds; kinds compared: %s)\n",
+                 o->cfg.degree, (unsigned long)o->cfg.delay,
+                 o->final_kind == FIT_EVERETT ? "everett" : "poly",
+                 fit_parameters(o->final_kind, o->cfg.degree),
+                 candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
+                 : candidate_kinds(o) == FIT_EVERETT           ? "everett"
+                                                               : "poly");
     for (i = 0u; i < n_candidates; ++i) {
         const fit_candidate_t *c = &candidates[i];
         if (isfinite(c->holdout_rms)) {
-            (void)printf("# candidate degree %u delay %lu: hold-out rms %.6g, fit rms %.6g%s\n",
-                         c->degree, (unsigned long)c->delay, c->holdout_rms, (double)c->fit.rms,
-                         i == best_candidate ? " (chosen)" : "");
+            (void)printf("# candidate %sdegree %u delay %lu: hold-out rms %.6g, fit rms %.6g%s\n",
+                         kind_prefix(c->kind), c->degree, (unsigned long)c->delay,
+                         c->holdout_rms, c->fit_rms, i == best_candidate ? " (chosen)" : "");
         } else {
-            (void)printf("# candidate degree %u delay %lu: not scored (%s)\n", c->degree,
-                         (unsigned long)c->delay,
-                         c->status != HYST_OK ? hyst_status_str(c->status)
-                                              : "f0 not increasing");
+            (void)printf("# candidate %sdegree %u delay %lu: not scored (%s)\n",
+                         kind_prefix(c->kind), c->degree, (unsigned long)c->delay,
+                         c->kind == FIT_EVERETT && c->status == HYST_ERR_SINGULAR
+                             ? everett_singular
+                         : c->status != HYST_OK ? hyst_status_str(c->status)
+                                                : "f0 not increasing");
         }
     }
 }
 
-/* ---- the header: replaced whole, or not at all ----
+/* ---- the model fitted on the whole record ---- */
+
+typedef struct fit_final {
+    cli_model_t model;       /* what --save and --header write */
+    hyst_ident_result_t r;   /* FIT_POLY */
+    fit_everett_result_t ev; /* FIT_EVERETT */
+    double rms, max_abs;     /* the residual printed on line 3 */
+    int usable;              /* f0 increasing, or E accepted by the library */
+} fit_final_t;
+
+/* 1 after a message if a number of the result overflowed (the library sums
+ * squared residuals: outputs near 1e154 are enough). */
+static int not_finite(const char *name, const fit_final_t *f)
+{
+    static const char *const names[4] = {"domain LO", "domain HI", "RMS residual",
+                                         "max residual"};
+    const cli_model_t *m = &f->model;
+    const double more[4] = {m->lo, m->hi, f->rms, f->max_abs};
+    static const char advice[] = "the numbers are too large, rescale them";
+    size_t k;
+    for (k = 0u; k < m->ncoef; ++k) {
+        if (!isfinite(m->coeffs[k])) {
+            return cli_fail("fit", "%s: the result is not finite (coefficient c%lu %g): %s", name,
+                            (unsigned long)(m->ncoef - 1u - k), m->coeffs[k], advice);
+        }
+    }
+    for (k = 0u; k < m->nterms; ++k) {
+        if (!isfinite(m->terms[k])) {
+            return cli_fail("fit", "%s: the result is not finite (term %lu of E %g): %s", name,
+                            (unsigned long)k + 1ul, m->terms[k], advice);
+        }
+    }
+    if (!isfinite(m->y_lo)) {
+        return cli_fail("fit", "%s: the result is not finite (y_lo %g): %s", name, m->y_lo,
+                        advice);
+    }
+    for (k = 0u; k < 4u; ++k) {
+        /* the max of a refused E is not known: the model could not run */
+        if (!isfinite(more[k]) && (k < 3u || f->usable || m->kind == CLI_MODEL_POLY)) {
+            return cli_fail("fit", "%s: the result is not finite (%s %g): %s", name, names[k],
+                            more[k], advice);
+        }
+    }
+    return 0;
+}
+
+/* The chosen kind fitted on the whole record into f: 0, or 1 after a message. */
+static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t, size_t pairs,
+                     fit_final_t *f)
+{
+    hyst_ident_t work;
+    hyst_status_t st = HYST_ERR_ARG;
+    const int everett = o->final_kind == FIT_EVERETT;
+    unsigned k;
+    memset(f, 0, sizeof *f);
+    if (pairs > 0u) {
+        st = everett ? fit_everett_record(&o->cfg, t->col[0], t->col[1], t->n, &f->ev)
+                     : hyst_ident_fit(&o->cfg, t->col[0], t->col[1], t->n, &work, &f->r);
+    }
+    switch (st) {
+    case HYST_OK:
+        break;
+    case HYST_ERR_ARG:
+        return cli_fail("fit", "%s: --skip %lu and --delay %lu leave no sample of the %lu read",
+                        name, (unsigned long)o->cfg.skip, (unsigned long)o->cfg.delay,
+                        (unsigned long)t->n);
+    case HYST_ERR_SINGULAR:
+        if (everett) {
+            return cli_fail("fit", "%s: everett degree %u: %s", name, o->cfg.degree,
+                            everett_singular);
+        }
+        return cli_fail("fit", "%s: too few distinct inputs for degree %u", name, o->cfg.degree);
+    case HYST_ERR_DOMAIN:
+        return cli_fail("fit", "%s: the inputs do not span a range (all equal?)", name);
+    default:
+        return cli_fail("fit", "%s: %s", name, hyst_status_str(st));
+    }
+    if (everett) {
+        cli_model_from_everett(&f->model, &f->ev.e, (unsigned long)o->cfg.delay);
+        f->usable = f->ev.curve_status == HYST_OK;
+        f->rms = f->usable ? f->ev.rms : f->ev.ls_rms;
+        f->max_abs = f->ev.max_abs;
+    } else {
+        f->model.kind = CLI_MODEL_POLY;
+        f->model.ncoef = f->r.degree + 1u;
+        for (k = 0u; k < f->model.ncoef; ++k) {
+            f->model.coeffs[k] = (double)f->r.coeffs[k];
+        }
+        f->model.lo = (double)f->r.lo;
+        f->model.hi = (double)f->r.hi;
+        f->model.delay = (unsigned long)o->cfg.delay;
+        f->usable = f->r.increasing;
+        f->rms = (double)f->r.rms;
+        f->max_abs = (double)f->r.max_abs;
+    }
+    return not_finite(name, f);
+}
+
+/* The --compare-pi line into line[0..size). */
+static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, size_t size)
+{
+    char tcm[64];
+    double holdout;
+    hyst_status_t st;
+    if (!o->have_degree) {
+        holdout = candidates[best_candidate].holdout_rms;
+    } else if (o->final_kind == FIT_EVERETT) {
+        fit_everett_result_t train;
+        holdout = fit_everett_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train);
+    } else {
+        hyst_ident_result_t train;
+        holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train);
+    }
+    (void)snprintf(tcm, sizeof tcm, "%sTCM degree %u",
+                   o->final_kind == FIT_EVERETT ? "asymmetric (everett) " : "", o->cfg.degree);
+    fit_pi_compare(t, o->compare_pi, o->cfg.skip, o->cfg.delay, tcm,
+                   fit_parameters(o->final_kind, o->cfg.degree), holdout, line, size);
+}
+
+/* Lines 1 to 3 and the line that says what they are. */
+static void print_result(const fit_final_t *f, size_t pairs)
+{
+    const cli_model_t *m = &f->model;
+    const double *v = m->kind == CLI_MODEL_EVERETT ? m->terms : m->coeffs;
+    const size_t n = m->kind == CLI_MODEL_EVERETT ? m->nterms : m->ncoef;
+    size_t k;
+    for (k = 0u; k < n; ++k) {
+        (void)printf("%s%.15g", k ? "," : "", v[k]);
+    }
+    (void)printf("\n%.15g,%.15g\n%.6g,%.6g\n", m->lo, m->hi, f->rms, f->max_abs);
+    if (m->kind == CLI_MODEL_EVERETT) {
+        (void)printf("# residual rms,max above: the asymmetric model (kind everett, degree %u, "
+                     "y_lo %.15g) run over the record, %lu of %lu samples used%s; line 1 E's "
+                     "terms e[i-1][j] of w^i t^j, i = 1..%u, j = 0..%u - i\n",
+                     m->degree, m->y_lo, (unsigned long)f->ev.used, (unsigned long)pairs,
+                     f->usable ? "" : " (least-squares residual: the model cannot run)",
+                     m->degree, m->degree);
+    } else {
+        (void)printf("# residual rms,max above; %s estimator, degree %u, %lu of %lu samples "
+                     "used (%lu rising, %lu falling)\n",
+                     method_name(f->r.method), f->r.degree, (unsigned long)f->r.used,
+                     (unsigned long)pairs, (unsigned long)f->r.rising,
+                     (unsigned long)f->r.falling);
+    }
+}
+
+/* The last comment line: whether the library takes the model. */
+static void print_usable(const fit_final_t *f)
+{
+    const cli_model_t *m = &f->model;
+    if (m->kind == CLI_MODEL_EVERETT) {
+        if (f->usable) {
+            (void)printf("# E increases in a and decreases in b on lo <= b <= a <= hi, "
+                         "[%.9g, %.9g]\n",
+                         m->lo, m->hi);
+        } else {
+            (void)printf("# E NOT accepted by the library: %s\n",
+                         hyst_status_str(f->ev.curve_status));
+        }
+        return;
+    }
+    if (f->r.method == HYST_IDENT_REFLECT) {
+        (void)printf("# y(lo), y(hi) measured for Eq. 14: %.9g, %.9g\n", (double)f->r.y_lo_est,
+                     (double)f->r.y_hi_est);
+    }
+    if (f->usable) {
+        (void)printf("# f0 increases on [%.9g, %.9g]\n", m->lo, m->hi);
+    } else {
+        (void)printf("# f0 NOT increasing: slope negative at x = %.9g\n", (double)f->r.turn);
+    }
+}
+
+/* ---- the header and the model file: replaced whole, or not at all ----
  *
  * NAME.h is written to a temporary file beside it (NAME.h.XXXXXX), synced and
  * closed, each step checked; the results are printed; only then is it renamed
  * over NAME.h (an atomic replacement on POSIX file systems). Any failure
  * before the rename removes the temporary file and leaves NAME.h as it was. */
 
-
-/* The fitted model as a model file holds it. */
-static void model_of(const fit_opts_t *o, const hyst_ident_result_t *r, cli_model_t *m)
-{
-    unsigned k;
-    memset(m, 0, sizeof *m);
-    m->ncoef = r->degree + 1u;
-    for (k = 0u; k < m->ncoef; ++k) {
-        m->coeffs[k] = (double)r->coeffs[k];
-    }
-    m->lo = (double)r->lo;
-    m->hi = (double)r->hi;
-    m->delay = (unsigned long)o->cfg.delay;
-}
-
 /* The header's text into buf; its length, or 0 if it did not fit. */
-static size_t header_text(const fit_opts_t *o, const hyst_ident_result_t *r, char *buf,
-                          size_t size)
+static size_t header_text(const fit_opts_t *o, const fit_final_t *f, char *buf, size_t size)
 {
     char source[1024];
     const char *name = cli_file_name(o->file);
+    const cli_model_t *m = &f->model;
     size_t i, j, len = 0u;
     int over;
     /* the file name goes into a comment: "*" "/" in it would end the comment */
@@ -303,20 +514,30 @@ static size_t header_text(const fit_opts_t *o, const hyst_ident_result_t *r, cha
         }
     }
     source[j] = '\0';
-    over = cli_append(buf, size, &len,
-                  "/* Generated by 'hyst fit': major ascending curve f0 identified from\n"
-                  " * %s (x column %lu, y column %lu, skip %lu, delay %lu),\n"
-                  " * degree %u, %s estimator, domain [%.9g, %.9g].\n"
-                  " * Residual against the major loop over %lu samples:\n"
-                  " * RMS %.4g, max %.4g (output units). */\n",
-                  source, o->cols[0], o->cols[1], (unsigned long)o->cfg.skip,
-                  (unsigned long)o->cfg.delay, r->degree, method_name(r->method), (double)r->lo,
-                  (double)r->hi, (unsigned long)r->used, (double)r->rms, (double)r->max_abs);
-    {
-        cli_model_t m;
-        model_of(o, r, &m);
-        over |= cli_header_poly(buf, size, &len, o->header, &m);
+    if (m->kind == CLI_MODEL_EVERETT) {
+        over = cli_append(buf, size, &len,
+                          "/* Generated by 'hyst fit': asymmetric model (branch function E)\n"
+                          " * identified from %s (x column %lu, y column %lu, skip %lu,\n"
+                          " * delay %lu), degree %u, domain [%.9g, %.9g], y_lo %.9g; for\n"
+                          " * hyst_curve_from_everett(), then hyst_init_curve().\n"
+                          " * Residual of the model over %lu samples:\n"
+                          " * RMS %.4g, max %.4g (output units). */\n",
+                          source, o->cols[0], o->cols[1], (unsigned long)o->cfg.skip,
+                          (unsigned long)o->cfg.delay, m->degree, m->lo, m->hi, m->y_lo,
+                          (unsigned long)f->ev.used, f->rms, f->max_abs);
+    } else {
+        over = cli_append(buf, size, &len,
+                          "/* Generated by 'hyst fit': major ascending curve f0 identified from\n"
+                          " * %s (x column %lu, y column %lu, skip %lu, delay %lu),\n"
+                          " * degree %u, %s estimator, domain [%.9g, %.9g].\n"
+                          " * Residual against the major loop over %lu samples:\n"
+                          " * RMS %.4g, max %.4g (output units). */\n",
+                          source, o->cols[0], o->cols[1], (unsigned long)o->cfg.skip,
+                          (unsigned long)o->cfg.delay, f->r.degree, method_name(f->r.method),
+                          (double)f->r.lo, (double)f->r.hi, (unsigned long)f->r.used,
+                          (double)f->r.rms, (double)f->r.max_abs);
     }
+    over |= cli_header_model(buf, size, &len, o->header, m);
     return over ? 0u : len;
 }
 
@@ -329,13 +550,10 @@ static int header_check(const fit_opts_t *o, cli_replace_t *h)
 }
 
 /* The model file into its temporary file: 0, or 1 after a message. */
-static int model_write(const fit_opts_t *o, const hyst_ident_result_t *r, cli_replace_t *ms)
+static int model_write(const fit_final_t *f, cli_replace_t *ms)
 {
-    cli_model_t m;
-    char text[1024];
-    size_t len;
-    model_of(o, r, &m);
-    len = cli_model_text(&m, text, sizeof text);
+    char text[2048];
+    const size_t len = cli_model_text(&f->model, text, sizeof text);
     if (len == 0u) {
         return cli_fail("fit", "%s: model text too long", ms->path);
     }
@@ -343,10 +561,10 @@ static int model_write(const fit_opts_t *o, const hyst_ident_result_t *r, cli_re
 }
 
 /* The header into its temporary file: 0, or 1 after a message. */
-static int header_write(const fit_opts_t *o, const hyst_ident_result_t *r, cli_replace_t *h)
+static int header_write(const fit_opts_t *o, const fit_final_t *f, cli_replace_t *h)
 {
     char text[8192];
-    const size_t len = header_text(o, r, text, sizeof text);
+    const size_t len = header_text(o, f, text, sizeof text);
     if (len == 0u) {
         return cli_fail("fit", "%s: header text too long", h->path);
     }
@@ -369,41 +587,14 @@ static int constant_column(const char *name, unsigned long col, const double *v,
                     name, col, v[0], (unsigned long)n, what, option);
 }
 
-/* 1 after a message if a number of the result overflowed (the library sums
- * squared residuals: outputs near 1e154 are enough). */
-static int not_finite(const char *name, const hyst_ident_result_t *r)
-{
-    static const char *const names[4] = {"domain LO", "domain HI", "RMS residual",
-                                         "max residual"};
-    const double more[4] = {(double)r->lo, (double)r->hi, (double)r->rms, (double)r->max_abs};
-    static const char advice[] = "the numbers are too large, rescale them";
-    unsigned k;
-    for (k = 0u; k <= r->degree; ++k) {
-        if (!isfinite((double)r->coeffs[k])) {
-            return cli_fail("fit", "%s: the result is not finite (coefficient c%u %g): %s", name,
-                            r->degree - k, (double)r->coeffs[k], advice);
-        }
-    }
-    for (k = 0u; k < 4u; ++k) {
-        if (!isfinite(more[k])) {
-            return cli_fail("fit", "%s: the result is not finite (%s %g): %s", name, names[k],
-                            more[k], advice);
-        }
-    }
-    return 0;
-}
-
 int cmd_fit(int argc, char **argv)
 {
     fit_opts_t o;
     cli_table_t t;
-    hyst_ident_t work;
-    hyst_ident_result_t r;
-    hyst_status_t st;
+    fit_final_t f;
     cli_replace_t h, ms;
     const char *name;
-    size_t pairs, nread;
-    unsigned k;
+    size_t pairs;
     char compare[512] = "";
     int rc = parse(&o, argc, argv);
     if (rc != 0) {
@@ -419,7 +610,6 @@ int cmd_fit(int argc, char **argv)
     if (cli_read_columns("fit", o.file, o.cols, 2u, o.decimal_comma, &t) != 0) {
         return 1;
     }
-    nread = t.n;
     pairs = t.n > o.cfg.skip + o.cfg.delay ? t.n - o.cfg.skip - o.cfg.delay : 0u;
     if (pairs > 0u &&
         (constant_column(name, o.cols[0], t.col[0] + o.cfg.skip, pairs, "input", "--xcol") ||
@@ -428,52 +618,35 @@ int cmd_fit(int argc, char **argv)
         cli_table_free(&t);
         return 1;
     }
-    if (o.kind_pi) {
+    if (o.kind == FIT_KIND_PI) {
         rc = fit_pi_report(name, &t, o.operators, o.cfg.skip, o.cfg.delay);
         cli_table_free(&t);
         return rc;
     }
-    if (pairs > 0u && !o.have_degree && choose(&o, name, &t) != 0) {
-        cli_table_free(&t);
-        return 1;
+    if (pairs > 0u && !o.have_degree) {
+        if (choose(&o, name, &t) != 0) {
+            cli_table_free(&t);
+            return 1;
+        }
+        pairs = t.n - o.cfg.skip - o.cfg.delay; /* at the chosen delay (fit_select() left samples) */
     }
-    st = pairs == 0u ? HYST_ERR_ARG : hyst_ident_fit(&o.cfg, t.col[0], t.col[1], t.n, &work, &r);
-    if (st == HYST_OK && o.compare_pi != 0u) {
-        hyst_ident_result_t train;
-        hyst_status_t st_train;
-        const double tcm = o.have_degree ? fit_tcm_holdout(&o.cfg, t.col[0], t.col[1], t.n,
-                                                           &st_train, &train)
-                                         : candidates[best_candidate].holdout_rms;
-        fit_pi_compare(&t, o.compare_pi, o.cfg.skip, o.cfg.delay, o.cfg.degree, tcm, compare,
-                       sizeof compare);
+    rc = fit_final(&o, name, &t, pairs, &f);
+    if (rc == 0 && o.compare_pi != 0u) {
+        compare_line(&o, &t, compare, sizeof compare);
     }
     cli_table_free(&t);
-    switch (st) {
-    case HYST_OK:
-        break;
-    case HYST_ERR_ARG:
-        return cli_fail("fit", "%s: --skip %lu and --delay %lu leave no sample of the %lu read",
-                        name, (unsigned long)o.cfg.skip, (unsigned long)o.cfg.delay,
-                        (unsigned long)nread);
-    case HYST_ERR_SINGULAR:
-        return cli_fail("fit", "%s: too few distinct inputs for degree %u", name, o.cfg.degree);
-    case HYST_ERR_DOMAIN:
-        return cli_fail("fit", "%s: the inputs do not span a range (all equal?)", name);
-    default:
-        return cli_fail("fit", "%s: %s", name, hyst_status_str(st));
-    }
-    if (not_finite(name, &r)) {
+    if (rc != 0) {
         return 1;
     }
-    if (r.increasing && o.header != NULL) {
-        if (header_write(&o, &r, &h) != 0) {
+    if (f.usable && o.header != NULL) {
+        if (header_write(&o, &f, &h) != 0) {
             return 1;
         }
         /* a closed pipe must not kill the process with the temporary file left */
         (void)signal(SIGPIPE, SIG_IGN);
     }
-    if (r.increasing && o.save != NULL) {
-        if (model_write(&o, &r, &ms) != 0) {
+    if (f.usable && o.save != NULL) {
+        if (model_write(&f, &ms) != 0) {
             if (o.header != NULL) {
                 cli_replace_discard(&h);
             }
@@ -481,30 +654,14 @@ int cmd_fit(int argc, char **argv)
         }
         (void)signal(SIGPIPE, SIG_IGN);
     }
-    for (k = 0u; k <= r.degree; ++k) {
-        (void)printf("%s%.15g", k ? "," : "", (double)r.coeffs[k]);
-    }
-    (void)printf("\n%.15g,%.15g\n%.6g,%.6g\n", (double)r.lo, (double)r.hi, (double)r.rms,
-                 (double)r.max_abs);
-    (void)printf("# residual rms,max above; %s estimator, degree %u, %lu of %lu samples used "
-                 "(%lu rising, %lu falling)\n",
-                 method_name(r.method), r.degree, (unsigned long)r.used, (unsigned long)pairs,
-                 (unsigned long)r.rising, (unsigned long)r.falling);
+    print_result(&f, pairs);
     if (!o.have_degree) {
         print_candidates(&o);
     }
     (void)printf("# delay %lu samples\n# parameters %u\n", (unsigned long)o.cfg.delay,
-                 r.degree + 1u);
+                 fit_parameters(o.final_kind, o.cfg.degree));
     (void)fputs(compare, stdout);
-    if (r.method == HYST_IDENT_REFLECT) {
-        (void)printf("# y(lo), y(hi) measured for Eq. 14: %.9g, %.9g\n", (double)r.y_lo_est,
-                     (double)r.y_hi_est);
-    }
-    if (r.increasing) {
-        (void)printf("# f0 increases on [%.9g, %.9g]\n", (double)r.lo, (double)r.hi);
-    } else {
-        (void)printf("# f0 NOT increasing: slope negative at x = %.9g\n", (double)r.turn);
-    }
+    print_usable(&f);
     if (fflush(stdout) != 0 || ferror(stdout)) {
         const int err = errno;
         if (o.header != NULL) {
@@ -514,26 +671,32 @@ int cmd_fit(int argc, char **argv)
             cli_replace_discard(&ms);
         }
         return cli_fail("fit", "write error on standard output: %s%s", strerror(err),
-                        (o.header != NULL || o.save != NULL) && r.increasing
+                        (o.header != NULL || o.save != NULL) && f.usable
                             ? " (no header or model file written)"
                             : "");
     }
-    if (r.increasing && o.header != NULL && cli_replace_commit(&h) != 0) {
+    if (f.usable && o.header != NULL && cli_replace_commit(&h) != 0) {
         if (o.save != NULL) {
             cli_replace_discard(&ms);
         }
         return 1;
     }
-    if (r.increasing && o.save != NULL && cli_replace_commit(&ms) != 0) {
+    if (f.usable && o.save != NULL && cli_replace_commit(&ms) != 0) {
         return 1;
     }
-    if (!r.increasing) {
-        (void)fprintf(stderr,
-                      "hyst fit: %s: the fitted f0 is not increasing on [%.9g, %.9g] (slope "
-                      "negative at x = %.9g): try another degree%s\n",
-                      name, (double)r.lo, (double)r.hi, (double)r.turn,
-                      o.header != NULL || o.save != NULL ? "; no header or model file written"
-                                                         : "");
+    if (!f.usable) {
+        const char *nothing =
+            o.header != NULL || o.save != NULL ? "; no header or model file written" : "";
+        if (o.final_kind == FIT_EVERETT) {
+            (void)fprintf(stderr, "hyst fit: %s: the fitted E is refused by the library: %s: "
+                                  "try another degree%s\n",
+                          name, hyst_status_str(f.ev.curve_status), nothing);
+        } else {
+            (void)fprintf(stderr,
+                          "hyst fit: %s: the fitted f0 is not increasing on [%.9g, %.9g] (slope "
+                          "negative at x = %.9g): try another degree%s\n",
+                          name, (double)f.r.lo, (double)f.r.hi, (double)f.r.turn, nothing);
+        }
         return 2;
     }
     return 0;

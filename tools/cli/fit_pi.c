@@ -103,7 +103,8 @@ int fit_pi_report(const char *name, const cli_table_t *t, size_t ops, size_t ski
 }
 
 void fit_pi_compare(const cli_table_t *t, size_t ops, size_t skip, size_t delay,
-                    unsigned degree, double tcm_holdout, char *line, size_t size)
+                    const char *tcm, unsigned params, double tcm_holdout, char *line,
+                    size_t size)
 {
     double r[HYST_PI_FIT_MAX_OPERATORS], w[HYST_PI_FIT_MAX_OPERATORS];
     hyst_pi_fit_config_t cfg = {0};
@@ -117,8 +118,8 @@ void fit_pi_compare(const cli_table_t *t, size_t ops, size_t skip, size_t delay,
     pi = fit_pi_holdout(&cfg, t->col[0], t->col[1], t->n, &st, &res, r, w);
     (void)cli_append(line, size, &len,
                      "# compare on the last third (both fitted on the first two thirds, delay "
-                     "%lu): hold-out rms TCM degree %u (%u parameters) ",
-                     (unsigned long)delay, degree, degree + 1u);
+                     "%lu): hold-out rms %s (%u parameters) ",
+                     (unsigned long)delay, tcm, params);
     if (isfinite(tcm_holdout)) {
         (void)cli_append(line, size, &len, "%.6g, ", tcm_holdout);
     } else {

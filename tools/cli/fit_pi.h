@@ -14,9 +14,11 @@
 int fit_pi_report(const char *name, const cli_table_t *t, size_t ops, size_t skip, size_t delay);
 
 /* The hold-out RMS of a PI model of ops operators beside the TCM's
- * (degree, tcm_holdout) on the same split, skip and delay, as one comment
- * line into line[0..size) (cut if it does not fit). */
+ * (tcm: "TCM degree 3", its parameter count and tcm_holdout) on the same
+ * split, skip and delay, as one comment line into line[0..size) (cut if it
+ * does not fit). */
 void fit_pi_compare(const cli_table_t *t, size_t ops, size_t skip, size_t delay,
-                    unsigned degree, double tcm_holdout, char *line, size_t size);
+                    const char *tcm, unsigned params, double tcm_holdout, char *line,
+                    size_t size);
 
 #endif

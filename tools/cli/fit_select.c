@@ -6,47 +6,68 @@
  * third, which the fit never saw: a degree that fits noise predicts worse
  * there, so the criterion does not reward it. Of the candidates within
  * FIT_PARSIMONY of the lowest error, the one with the fewest parameters is
- * chosen: a gain below that is not worth a coefficient. */
+ * chosen: a gain below that is not worth a coefficient. The candidates are
+ * of both kinds, the symmetric TCM's f0 and the asymmetric kind's E, scored
+ * alike. */
 #include "fit_select.h"
+
+#include "cli.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* RMS error of the TCM with f0 = r over x[skip..n-delay), scored on the
- * samples from `from` on (indices into x), against y[k + delay]. NaN if the
- * model cannot run (memory, or f0 refused). */
-static double holdout_rms(const hyst_ident_result_t *r, const double *x, const double *y,
-                          size_t n, size_t skip, size_t delay, size_t from)
+unsigned fit_parameters(int kind, unsigned degree)
 {
-    hyst_poly_t f0;
+    return kind == FIT_EVERETT ? (unsigned)cli_everett_terms(degree) + 1u : degree + 1u;
+}
+
+double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
+                     const double *y, size_t n, size_t skip, size_t delay, size_t from,
+                     double *before_rms, double *max_abs)
+{
     hyst_tcm_t S;
-    const size_t cap = (n - delay - skip) / 2u + 2u;
-    double *mem, ss = 0.0;
-    size_t k, used = 0u;
-    unsigned i;
-    f0.degree = r->degree;
-    f0.lo = (double)r->lo;
-    f0.hi = (double)r->hi;
-    for (i = 0u; i <= r->degree; ++i) {
-        f0.coeffs[i] = (double)r->coeffs[i];
+    const size_t cap = n > delay + skip ? (n - delay - skip) / 2u + 2u : 2u;
+    double *mem, ss = 0.0, ss_before = 0.0, worst = 0.0;
+    size_t k, used = 0u, before = 0u;
+    hyst_status_t st;
+    if (before_rms != NULL) {
+        *before_rms = NAN;
+    }
+    if (max_abs != NULL) {
+        *max_abs = NAN;
     }
     if ((mem = (double *)malloc(4u * cap * sizeof(double))) == NULL) {
         return NAN;
     }
-    if (hyst_f64_init(&S, &f0, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap) != HYST_OK) {
+    st = f0 != NULL ? hyst_f64_init(&S, f0, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap)
+                    : hyst_f64_init_curve(&S, curve, mem, mem + cap, mem + 2u * cap,
+                                          mem + 3u * cap, cap);
+    if (st != HYST_OK) {
         free(mem);
         return NAN;
     }
     for (k = skip; k + delay < n; ++k) {
         const double ym = hyst_f64_step(&S, x[k]);
-        if (k >= from && isfinite(x[k]) && isfinite(y[k + delay])) {
+        if (isfinite(x[k]) && isfinite(y[k + delay])) {
             const double e = ym - y[k + delay];
-            ss += e * e;
-            ++used;
+            if (k >= from) {
+                ss += e * e;
+                ++used;
+            } else {
+                ss_before += e * e;
+                ++before;
+            }
+            worst = fabs(e) > worst ? fabs(e) : worst;
         }
     }
     free(mem);
+    if (before_rms != NULL && before > 0u) {
+        *before_rms = sqrt(ss_before / (double)before);
+    }
+    if (max_abs != NULL) {
+        *max_abs = worst;
+    }
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
@@ -60,7 +81,9 @@ double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const do
                        size_t n, hyst_status_t *status, hyst_ident_result_t *fit)
 {
     hyst_ident_t work;
+    hyst_poly_t f0;
     size_t train;
+    unsigned i;
     if (n <= cfg->skip + cfg->delay) {
         *status = HYST_ERR_ARG;
         return NAN;
@@ -71,7 +94,37 @@ double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const do
     if (*status != HYST_OK || !fit->increasing) {
         return NAN;
     }
-    return holdout_rms(fit, x, y, n, cfg->skip, cfg->delay, cfg->skip + train);
+    memset(&f0, 0, sizeof f0);
+    f0.degree = fit->degree;
+    f0.lo = (double)fit->lo;
+    f0.hi = (double)fit->hi;
+    for (i = 0u; i <= fit->degree; ++i) {
+        f0.coeffs[i] = (double)fit->coeffs[i];
+    }
+    return fit_model_run(&f0, NULL, x, y, n, cfg->skip, cfg->delay, cfg->skip + train, NULL,
+                         NULL);
+}
+
+double fit_everett_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
+                           size_t n, hyst_status_t *status, fit_everett_result_t *fit)
+{
+    hyst_curve_t curve;
+    size_t train;
+    memset(fit, 0, sizeof *fit);
+    if (n <= cfg->skip + cfg->delay) {
+        *status = HYST_ERR_ARG;
+        return NAN;
+    }
+    train = train_count(n, cfg->skip, cfg->delay);
+    *status = fit_everett_record(cfg, x, y, cfg->skip + train + cfg->delay, fit);
+    if (*status == HYST_OK) {
+        *status = fit->curve_status;
+    }
+    if (*status != HYST_OK || hyst_f64_curve_from_everett(&curve, &fit->e) != HYST_OK) {
+        return NAN;
+    }
+    return fit_model_run(NULL, &curve, x, y, n, cfg->skip, cfg->delay, cfg->skip + train, NULL,
+                         NULL);
 }
 
 double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const double *y,
@@ -105,40 +158,61 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
-size_t fit_select(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                  size_t max_delay, fit_candidate_t *cand, size_t max_cand, size_t *best)
+/* Candidate c fitted and scored: kind, degree and delay set by the caller. */
+static void score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+                  fit_candidate_t *c)
 {
-    size_t count = 0u, d;
-    unsigned deg;
+    hyst_ident_config_t cfg = *base;
+    cfg.degree = c->degree;
+    cfg.delay = c->delay;
+    if (c->kind == FIT_EVERETT) {
+        fit_everett_result_t ev;
+        c->holdout_rms = fit_everett_holdout(&cfg, x, y, n, &c->status, &ev);
+        c->fit_rms = ev.rms;
+    } else {
+        c->holdout_rms = fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit);
+        c->fit_rms = (double)c->fit.rms;
+    }
+}
+
+size_t fit_select(const hyst_ident_config_t *base, int kinds, const double *x, const double *y,
+                  size_t n, size_t max_delay, fit_candidate_t *cand, size_t max_cand,
+                  size_t *best)
+{
+    static const int kind_list[2] = {FIT_POLY, FIT_EVERETT};
+    size_t count = 0u, d, i;
+    unsigned deg, kk;
     *best = (size_t)-1;
     for (d = base->delay; d <= max_delay; ++d) {
         if (n <= base->skip + d) {
             break;
         }
-        for (deg = 1u; deg <= HYST_MAX_DEGREE && count < max_cand; ++deg) {
-            hyst_ident_config_t cfg = *base;
-            fit_candidate_t *c = &cand[count];
-            memset(c, 0, sizeof *c);
-            cfg.degree = deg;
-            cfg.delay = d;
-            c->degree = deg;
-            c->delay = d;
-            c->holdout_rms = fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit);
-            if (isfinite(c->holdout_rms) &&
-                (*best == (size_t)-1 || c->holdout_rms < cand[*best].holdout_rms)) {
-                *best = count;
+        for (kk = 0u; kk < 2u; ++kk) {
+            const int kind = kind_list[kk];
+            const unsigned top = kind == FIT_EVERETT ? HYST_EVERETT_MAX_DEGREE : HYST_MAX_DEGREE;
+            for (deg = 1u; (kinds & kind) != 0 && deg <= top && count < max_cand; ++deg) {
+                fit_candidate_t *c = &cand[count];
+                memset(c, 0, sizeof *c);
+                c->kind = kind;
+                c->degree = deg;
+                c->delay = d;
+                score(base, x, y, n, c);
+                if (isfinite(c->holdout_rms) &&
+                    (*best == (size_t)-1 || c->holdout_rms < cand[*best].holdout_rms)) {
+                    *best = count;
+                }
+                ++count;
             }
-            ++count;
         }
     }
     if (*best != (size_t)-1) { /* parsimony: the fewest parameters within 1 % of the best */
         const double limit = cand[*best].holdout_rms * (1.0 + FIT_PARSIMONY);
-        size_t i;
         for (i = 0u; i < count; ++i) {
             const fit_candidate_t *c = &cand[i], *b = &cand[*best];
+            const unsigned pc = fit_parameters(c->kind, c->degree);
+            const unsigned pb = fit_parameters(b->kind, b->degree);
             if (isfinite(c->holdout_rms) && c->holdout_rms <= limit &&
-                (c->degree < b->degree ||
-                 (c->degree == b->degree && c->holdout_rms < b->holdout_rms))) {
+                (pc < pb || (pc == pb && c->holdout_rms < b->holdout_rms))) {
                 *best = i;
             }
         }

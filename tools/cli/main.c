@@ -19,7 +19,7 @@ static const command_t commands[] = {
     {"sim", cmd_sim, "run the hysteresis model over input samples"},
     {"inv", cmd_inv, "compensator: the input that gives each desired output"},
     {"pi", cmd_pi, "run a Prandtl-Ishlinskii model over input samples"},
-    {"header", cmd_header, "firmware header (hyst_poly_t) of a model file"},
+    {"header", cmd_header, "firmware header (hyst_poly_t, hyst_everett_t) of a model file"},
 };
 
 static void usage(FILE *out)

@@ -11,6 +11,8 @@
 #include <string.h>
 
 #define MAGIC "hyst-model-text 1"
+#define STR_(x) #x
+#define STR(x) STR_(x)
 
 /* Number of blank-separated fields of s into f (pointers into s, which is
  * cut at the blanks); at most max. */
@@ -77,31 +79,123 @@ static unsigned long field_at(const char *line, unsigned long col)
     return field;
 }
 
+/* Fields of a key's line: the key and 1 to MODEL_MAX_FIELDS - 1 values. */
+#define MODEL_MAX_FIELDS \
+    (HYST_MAX_DEGREE + 2 > HYST_EVERETT_TERMS + 1 ? HYST_MAX_DEGREE + 2 : HYST_EVERETT_TERMS + 1)
+
+enum { K_KIND, K_LO, K_HI, K_COEFFS, K_DELAY, K_Y_LO, K_DEGREE, K_TERMS, K_COUNT };
+static const char *const keys[K_COUNT] = {"kind", "lo",   "hi",     "coeffs",
+                                          "delay", "y_lo", "degree", "terms"};
+
 /* What a key's line needs: 0 if n fields are right, else a message. */
-static int model_count(const char *cmd, const char *path, unsigned long no, const char *key,
-                       int coeffs, size_t n)
+static int model_count(const char *cmd, const char *path, unsigned long no, int k, size_t n)
 {
-    const size_t most = coeffs ? HYST_MAX_DEGREE + 2u : 2u;
-    const size_t least = coeffs ? 3u : 2u;
-    const char *needs = coeffs ? "2 to 10 numbers (c_n ... c_0)" : "one value";
+    size_t least = 2u, most = 2u;
+    const char *needs = "one value";
+    char text[64];
+    if (k == K_COEFFS) {
+        least = 3u;
+        most = HYST_MAX_DEGREE + 2u;
+        needs = "2 to 10 numbers (c_n ... c_0)";
+    } else if (k == K_TERMS) {
+        most = HYST_EVERETT_TERMS + 1u;
+        (void)snprintf(text, sizeof text, "1 to %u numbers (E's coefficients)",
+                       (unsigned)HYST_EVERETT_TERMS);
+        needs = text;
+    }
     if (n < least) {
         return cli_fail(cmd, "%s:%lu: field %lu is missing: %s needs %s", path, no,
-                        (unsigned long)n + 1ul, key, needs);
+                        (unsigned long)n + 1ul, keys[k], needs);
     }
     if (n > most) {
         return cli_fail(cmd, "%s:%lu: field %lu: one too many: %s needs %s", path, no,
-                        (unsigned long)most + 1ul, key, needs);
+                        (unsigned long)most + 1ul, keys[k], needs);
+    }
+    return 0;
+}
+
+/* A whole number in [least, most] (delay, degree). */
+static int whole(double v, double least, double most)
+{
+    return v >= least && v <= most && v == (double)(unsigned long)v;
+}
+
+/* One value of key k, field i of line no, into m: 0, or 1 after a message. */
+static int model_value(const char *cmd, const char *path, unsigned long no, int k, size_t i,
+                       const char *field, cli_model_t *m)
+{
+    char q[CLI_QUOTE_SIZE];
+    double v;
+    const char *what = "a finite number";
+    int ok = cli_parse_double(field, &v);
+    if (ok && k == K_DELAY) {
+        ok = whole(v, 0.0, 1e9);
+        what = "a whole number of samples";
+    } else if (ok && k == K_DEGREE) {
+        ok = whole(v, 1.0, (double)HYST_EVERETT_MAX_DEGREE);
+        what = "a degree in 1.." STR(HYST_EVERETT_MAX_DEGREE);
+    }
+    if (!ok) {
+        return cli_fail(cmd, "%s:%lu: field %lu: %s is not %s", path, no, (unsigned long)(i + 1u),
+                        cli_quote(q, field), what);
+    }
+    switch (k) {
+    case K_LO: m->lo = v; break;
+    case K_HI: m->hi = v; break;
+    case K_DELAY: m->delay = (unsigned long)v; break;
+    case K_Y_LO: m->y_lo = v; break;
+    case K_DEGREE: m->degree = (unsigned)v; break;
+    case K_TERMS: m->terms[i - 1u] = v; break;
+    default: m->coeffs[i - 1u] = v; break;
+    }
+    return 0;
+}
+
+/* After the last line: each key the kind needs, none of the other kind's,
+ * and as many terms as the degree gives. 0, or 1 after a message. */
+static int model_complete(const char *cmd, const char *path, const unsigned long *line,
+                          const cli_model_t *m)
+{
+    static const int poly_keys[] = {K_KIND, K_LO, K_HI, K_COEFFS};
+    static const int everett_keys[] = {K_KIND, K_LO, K_HI, K_Y_LO, K_DEGREE, K_TERMS};
+    const int everett = line[K_KIND] != 0ul && m->kind == CLI_MODEL_EVERETT;
+    const int *need = everett ? everett_keys : poly_keys;
+    const size_t n_need = everett ? sizeof everett_keys / sizeof everett_keys[0]
+                                  : sizeof poly_keys / sizeof poly_keys[0];
+    size_t i;
+    int k;
+    if (line[K_KIND] != 0ul) {
+        for (k = 0; k < K_COUNT; ++k) {
+            const int of_everett = k == K_Y_LO || k == K_DEGREE || k == K_TERMS;
+            if (line[k] != 0ul && (everett ? k == K_COEFFS : of_everett)) {
+                return cli_fail(cmd, "%s:%lu: field 1: %s is not a key of kind %s (%s)", path,
+                                line[k], keys[k], everett ? "everett" : "poly",
+                                everett ? "E is given by degree and terms"
+                                        : "y_lo, degree and terms are kind everett's");
+            }
+        }
+    }
+    for (i = 0u; i < n_need; ++i) {
+        if (line[need[i]] == 0ul) {
+            return cli_fail(cmd, "%s: the key %s is missing", path, keys[need[i]]);
+        }
+    }
+    if (everett && m->nterms != cli_everett_terms(m->degree)) {
+        const size_t want = cli_everett_terms(m->degree);
+        return cli_fail(cmd, "%s:%lu: field %lu%s: terms needs %lu numbers for degree %u", path,
+                        line[K_TERMS],
+                        (unsigned long)(m->nterms < want ? m->nterms : want) + 2ul,
+                        m->nterms < want ? " is missing" : ": one too many", (unsigned long)want,
+                        m->degree);
     }
     return 0;
 }
 
 int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
 {
-    enum { K_KIND, K_LO, K_HI, K_COEFFS, K_DELAY, K_COUNT };
-    static const char *const keys[K_COUNT] = {"kind", "lo", "hi", "coeffs", "delay"};
-    char line[1024], *f[HYST_MAX_DEGREE + 3];
+    char line[1024], *f[MODEL_MAX_FIELDS + 1];
     char q[CLI_QUOTE_SIZE];
-    int seen[K_COUNT] = {0, 0, 0, 0, 0};
+    unsigned long seen[K_COUNT] = {0ul, 0ul, 0ul, 0ul, 0ul, 0ul, 0ul, 0ul}; /* line of each key */
     unsigned long no = 0ul, nul;
     size_t n, i;
     int k, longer;
@@ -124,58 +218,45 @@ int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
             }
             continue;
         }
-        n = split(line, f, HYST_MAX_DEGREE + 2u);
+        n = split(line, f, MODEL_MAX_FIELDS);
         if (n == 0u || f[0][0] == '#') {
             continue;
         }
         for (k = 0; k < K_COUNT && strcmp(f[0], keys[k]) != 0; ++k) {
         }
-        if (k == K_COUNT || seen[k]) {
+        if (k == K_COUNT || seen[k] != 0ul) {
             return cli_fail(cmd, "%s:%lu: field 1: %s %s", path, no, cli_quote(q, f[0]),
-                            k == K_COUNT ? "is not a key (kind, lo, hi, coeffs, delay)"
+                            k == K_COUNT ? "is not a key (kind, lo, hi, delay, coeffs; "
+                                           "kind everett: y_lo, degree, terms)"
                                          : "given twice");
         }
-        seen[k] = 1;
+        seen[k] = no;
         if (k == K_KIND) {
-            if (n != 2u || strcmp(f[1], "poly") != 0) {
-                return cli_fail(cmd, "%s:%lu: field 2: kind must be 'poly'", path, no);
+            if (n != 2u || (strcmp(f[1], "poly") != 0 && strcmp(f[1], "everett") != 0)) {
+                return cli_fail(cmd, "%s:%lu: field 2: kind must be 'poly' or 'everett'", path,
+                                no);
             }
+            m->kind = strcmp(f[1], "everett") == 0 ? CLI_MODEL_EVERETT : CLI_MODEL_POLY;
             continue;
         }
-        if (model_count(cmd, path, no, keys[k], k == K_COEFFS, n) != 0) {
+        if (model_count(cmd, path, no, k, n) != 0) {
             return 1;
         }
         for (i = 1u; i < n; ++i) {
-            double v;
-            if (!cli_parse_double(f[i], &v) ||
-                (k == K_DELAY && !(v >= 0.0 && v <= 1e9 && v == (double)(unsigned long)v))) {
-                return cli_fail(cmd, "%s:%lu: field %lu: %s is not %s", path, no,
-                                (unsigned long)(i + 1u), cli_quote(q, f[i]),
-                                k == K_DELAY ? "a whole number of samples" : "a finite number");
-            }
-            if (k == K_LO) {
-                m->lo = v;
-            } else if (k == K_HI) {
-                m->hi = v;
-            } else if (k == K_DELAY) {
-                m->delay = (unsigned long)v;
-            } else {
-                m->coeffs[i - 1u] = v;
+            if (model_value(cmd, path, no, k, i, f[i], m) != 0) {
+                return 1;
             }
         }
         if (k == K_COEFFS) {
             m->ncoef = n - 1u;
+        } else if (k == K_TERMS) {
+            m->nterms = n - 1u;
         }
     }
     if (no == 0ul) {
         return cli_fail(cmd, "%s: empty model file", path);
     }
-    for (k = 0; k < K_DELAY; ++k) {
-        if (!seen[k]) {
-            return cli_fail(cmd, "%s: the key %s is missing", path, keys[k]);
-        }
-    }
-    return 0;
+    return model_complete(cmd, path, seen, m);
 }
 
 int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
@@ -193,32 +274,85 @@ int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
     return rc;
 }
 
+/* Appends " %.17g" of each of v[0..n) to buf[*len..size); 1 when it did not fit. */
+static int append_numbers(char *buf, size_t size, size_t *len, const double *v, size_t n)
+{
+    size_t i;
+    int over = 0;
+    for (i = 0u; i < n; ++i) {
+        over |= cli_append(buf, size, len, " %.17g", v[i]);
+    }
+    return over;
+}
+
 size_t cli_model_text(const cli_model_t *m, char *buf, size_t size)
 {
-    size_t len;
-    unsigned i;
-    int w = snprintf(buf, size,
-                     MAGIC "\n# hyst model: f0 on [lo, hi], coefficients highest power first, "
-                           "the output %lu samples after its input (docs/cli.md)\n"
-                           "kind poly\nlo %.17g\nhi %.17g\ndelay %lu\ncoeffs",
-                     m->delay, m->lo, m->hi, m->delay);
-    if (w < 0 || (size_t)w >= size) {
-        return 0u;
+    size_t len = 0u;
+    int over;
+    if (m->kind == CLI_MODEL_EVERETT) {
+        over = cli_append(buf, size, &len,
+                          MAGIC "\n# hyst model: asymmetric, E(a, b) = sum of e[i-1][j] w^i t^j, "
+                                "w = (a - b) / (hi - lo), t = (b - lo) / (hi - lo); terms i = "
+                                "1..degree, then j = 0..degree - i; the output %lu samples after "
+                                "its input (docs/cli.md)\n"
+                                "kind everett\nlo %.17g\nhi %.17g\ny_lo %.17g\ndelay %lu\n"
+                                "degree %u\nterms",
+                          m->delay, m->lo, m->hi, m->y_lo, m->delay, m->degree);
+        over |= append_numbers(buf, size, &len, m->terms, m->nterms);
+    } else {
+        over = cli_append(buf, size, &len,
+                          MAGIC "\n# hyst model: f0 on [lo, hi], coefficients highest power "
+                                "first, the output %lu samples after its input (docs/cli.md)\n"
+                                "kind poly\nlo %.17g\nhi %.17g\ndelay %lu\ncoeffs",
+                          m->delay, m->lo, m->hi, m->delay);
+        over |= append_numbers(buf, size, &len, m->coeffs, m->ncoef);
     }
-    len = (size_t)w;
-    for (i = 0u; i < m->ncoef; ++i) {
-        w = snprintf(buf + len, size - len, " %.17g", m->coeffs[i]);
-        if (w < 0 || (size_t)w >= size - len) {
-            return 0u;
+    over |= cli_append(buf, size, &len, "\n");
+    return over ? 0u : len;
+}
+
+size_t cli_everett_terms(unsigned degree) { return (size_t)degree * (degree + 1u) / 2u; }
+
+void cli_model_to_everett(const cli_model_t *m, hyst_everett_t *e)
+{
+    unsigned i, j;
+    size_t t = 0u;
+    memset(e, 0, sizeof *e);
+    e->degree = m->degree;
+    e->lo = m->lo;
+    e->hi = m->hi;
+    e->y_lo = m->y_lo;
+    for (i = 1u; i <= m->degree && i <= HYST_EVERETT_MAX_DEGREE; ++i) {
+        for (j = 0u; i + j <= m->degree && t < m->nterms; ++j) {
+            e->e[i - 1u][j] = m->terms[t++];
         }
-        len += (size_t)w;
     }
-    if (len + 2u > size) {
-        return 0u;
+}
+
+void cli_model_from_everett(cli_model_t *m, const hyst_everett_t *e, unsigned long delay)
+{
+    unsigned i, j;
+    memset(m, 0, sizeof *m);
+    m->kind = CLI_MODEL_EVERETT;
+    m->degree = e->degree;
+    m->lo = (double)e->lo;
+    m->hi = (double)e->hi;
+    m->y_lo = (double)e->y_lo;
+    m->delay = delay;
+    for (i = 1u; i <= e->degree && i <= HYST_EVERETT_MAX_DEGREE; ++i) {
+        for (j = 0u; i + j <= e->degree; ++j) {
+            m->terms[m->nterms++] = (double)e->e[i - 1u][j];
+        }
     }
-    buf[len++] = '\n';
-    buf[len] = '\0';
-    return len;
+}
+
+int cli_everett_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c)
+{
+    hyst_everett_t e;
+    hyst_status_t st;
+    cli_model_to_everett(m, &e);
+    st = hyst_f64_curve_from_everett(c, &e);
+    return st == HYST_OK ? 0 : cli_fail(cmd, "model file %s: %s", path, hyst_status_str(st));
 }
 
 int cli_append(char *buf, size_t size, size_t *len, const char *fmt, ...)
@@ -235,9 +369,42 @@ int cli_append(char *buf, size_t size, size_t *len, const char *fmt, ...)
     return 0;
 }
 
-int cli_header_poly(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m)
+/* "HYST_REAL_C(v)" for the number v, appended. */
+static int append_real(char *buf, size_t size, size_t *len, const char *before, double v)
 {
-    char lit[40], guard[256];
+    char lit[40];
+    cli_c_literal(lit, sizeof lit, v);
+    return cli_append(buf, size, len, "%sHYST_REAL_C(%s)", before, lit);
+}
+
+/* The asymmetric kind's initializer: every row of e[][] written out, zeros
+ * above the degree, so that no brace is elided. */
+static int header_everett(char *buf, size_t size, size_t *len, const char *name,
+                          const cli_model_t *m)
+{
+    hyst_everett_t e;
+    unsigned i, j;
+    int over;
+    cli_model_to_everett(m, &e);
+    over = cli_append(buf, size, len, "static const hyst_everett_t %s = {\n    %uu,", name,
+                      m->degree);
+    over |= append_real(buf, size, len, " ", m->lo);
+    over |= append_real(buf, size, len, ", ", m->hi);
+    over |= append_real(buf, size, len, ", ", m->y_lo);
+    over |= cli_append(buf, size, len, ",\n    {");
+    for (i = 0u; i < HYST_EVERETT_MAX_DEGREE; ++i) {
+        over |= cli_append(buf, size, len, "%s{", i ? ",\n     " : "");
+        for (j = 0u; j < HYST_EVERETT_MAX_DEGREE; ++j) {
+            over |= append_real(buf, size, len, j ? ", " : "", (double)e.e[i][j]);
+        }
+        over |= cli_append(buf, size, len, "}");
+    }
+    return over | cli_append(buf, size, len, "}};\n");
+}
+
+int cli_header_model(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m)
+{
+    char guard[256];
     size_t i;
     int over;
     for (i = 0u; name[i] != '\0' && i + 3u < sizeof guard; ++i) {
@@ -246,18 +413,20 @@ int cli_header_poly(char *buf, size_t size, size_t *len, const char *name, const
     memcpy(guard + i, "_H", 3u);
     over = cli_append(buf, size, len, "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n\n",
                       guard, guard);
-    over |= cli_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu, ", name,
-                       (unsigned)(m->ncoef - 1u));
-    cli_c_literal(lit, sizeof lit, m->lo);
-    over |= cli_append(buf, size, len, "HYST_REAL_C(%s), ", lit);
-    cli_c_literal(lit, sizeof lit, m->hi);
-    over |= cli_append(buf, size, len, "HYST_REAL_C(%s),\n    {", lit);
-    for (i = 0u; i < m->ncoef; ++i) {
-        cli_c_literal(lit, sizeof lit, m->coeffs[i]);
-        over |= cli_append(buf, size, len, "%sHYST_REAL_C(%s)", i ? ",\n     " : "", lit);
+    if (m->kind == CLI_MODEL_EVERETT) {
+        over |= header_everett(buf, size, len, name, m);
+    } else {
+        over |= cli_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,", name,
+                           (unsigned)(m->ncoef - 1u));
+        over |= append_real(buf, size, len, " ", m->lo);
+        over |= append_real(buf, size, len, ", ", m->hi);
+        over |= cli_append(buf, size, len, ",\n    {");
+        for (i = 0u; i < m->ncoef; ++i) {
+            over |= append_real(buf, size, len, i ? ",\n     " : "", m->coeffs[i]);
+        }
+        over |= cli_append(buf, size, len, "}};\n");
     }
-    over |= cli_append(buf, size, len, "}};\n\n#endif /* %s */\n", guard);
-    return over;
+    return over | cli_append(buf, size, len, "\n#endif /* %s */\n", guard);
 }
 
 int cli_c_identifier(const char *s)

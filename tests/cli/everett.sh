@@ -1,0 +1,113 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The asymmetric kind (kind everett) in `hyst`:
+#  - fit without --kind on the measured record compares both kinds, reports
+#    every candidate and chooses by the rule (the fewest parameters within
+#    1 % of the lowest hold-out RMS); the asymmetric kind wins there;
+#  - a record made by a hand-written asymmetric model (delay 2, noise): fit
+#    chooses kind everett, degree 2, delay 2 and returns its terms;
+#  - fit --save, then sim --model prints what the library gives for the
+#    saved model (everett_run), the delay applied, bit for bit;
+#  - the headers of fit --header and header --model compile (float and
+#    double) and hold the saved numbers; inv --model refuses the kind;
+#  - a fit the library refuses (E falling) exits 2 and writes nothing.
+#   everett.sh <hyst> <everett_run> <C compiler> <include dir> <work dir> <measured record>
+set -euo pipefail
+tool=$1 run=$2 cc=$3 inc=$4 work=$5 data=$6
+mkdir -p "$work"
+cd "$work"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# ---- the measured record: both kinds compared, every candidate reported ----
+"$tool" fit --skip 350 --ycol 5 "$data" > meas.txt || fail "fit on the measured record"
+[ "$(grep -c '^# candidate degree' meas.txt)" -eq 81 ] || fail "poly candidates: $(grep -c '^# candidate degree' meas.txt)"
+[ "$(grep -c '^# candidate everett degree' meas.txt)" -eq 36 ] || fail "everett candidates"
+[ "$(grep -c '(chosen)$' meas.txt)" -eq 1 ] || fail "one candidate chosen"
+grep -q '^# chosen by hold-out: degree 2, delay 4 (kind everett, 4 parameters: .*kinds compared: poly, everett)$' meas.txt ||
+    fail "choice on the measured record: $(grep chosen meas.txt)"
+grep -qx '# parameters 4' meas.txt || fail "parameter count: $(grep parameters meas.txt)"
+# the rule, recomputed from the printed table: params = degree + 1 (poly),
+# degree (degree + 1) / 2 + 1 (everett)
+awk '/^# candidate .*hold-out rms/ {
+         ev = $3 == "everett"; d = ev ? $5 : $4; rms = ev ? $10 : $9; sub(/,$/, "", rms);
+         p = ev ? d * (d + 1) / 2 + 1 : d + 1; n++; P[n] = p; R[n] = rms + 0; C[n] = /\(chosen\)$/;
+         if (best == "" || rms + 0 < best) best = rms + 0 }
+     END { for (i = 1; i <= n; i++) if (R[i] <= best * 1.01 && (w == "" || P[i] < P[w] || (P[i] == P[w] && R[i] < R[w]))) w = i;
+           if (!C[w]) { print "rule picks candidate " w; exit 1 } }' meas.txt || fail "the chosen candidate is not the rule's"
+# major loops alone do not determine E beyond degree 2
+grep -q '^# candidate everett degree 3 delay 4: not scored (the record.s turning points do not determine E' meas.txt ||
+    fail "degree 3 on major loops: $(grep 'everett degree 3 delay 4' meas.txt)"
+# --kind tcm: the symmetric kind only, as before
+"$tool" fit --kind tcm --skip 350 --ycol 5 "$data" > tcm.txt || fail "fit --kind tcm"
+grep -q '^# chosen by hold-out: degree 4, delay 4 (kind poly, 5 parameters' tcm.txt || fail "--kind tcm: $(grep chosen tcm.txt)"
+! grep -q 'candidate everett' tcm.txt || fail "--kind tcm scored everett candidates"
+# --compare-pi names the chosen kind
+"$tool" fit --skip 350 --ycol 5 --compare-pi 10 "$data" > cmp.txt || fail "--compare-pi"
+grep -q '^# compare on the last third .*hold-out rms asymmetric (everett) TCM degree 2 (4 parameters) [0-9.]*, PI 10 operators' cmp.txt ||
+    fail "compare line: $(grep compare cmp.txt)"
+
+# ---- a simulated asymmetric plant: E = 3 w + w t + 2 w^2 on [0, 40] ----
+printf 'hyst-model-text 1\n# a hand-written plant\nkind everett\nlo 0\nhi 40\ny_lo 0.5\ndelay 0\ndegree 2\nterms 3 1 2\n' > plant.hyst
+# three times: a major loop, then nested minor loops, 0.25 V steps
+awk 'function ramp(a, b,   k, n) { n = int((b > a ? b - a : a - b) / 0.25 + 0.5);
+                                 for (k = 1; k <= n; k++) printf "%.2f\n", a + (b - a) * k / n }
+     BEGIN { print 0; for (c = 0; c < 3; c++) { ramp(0, 40); ramp(40, 10); ramp(10, 30); ramp(30, 5);
+             ramp(5, 35); ramp(35, 20); ramp(20, 25); ramp(25, 0); ramp(0, 40); ramp(40, 0) } }' > x.txt
+"$tool" sim --model plant.hyst --digits 17 x.txt > y.txt || fail "sim of the plant"
+# line k: x[k] and the output for x[k - 2] (a sensor 2 samples late), +-0.005 of noise (an LCG)
+awk 'NR == FNR { x[NR] = $1; n = NR; next } { y[FNR] = $1 }
+     END { s = 4242; for (k = 3; k <= n; k++) {
+               s = (s * 1103515245 + 12345) % 2147483648; e = (s / 2147483648 - 0.5) * 0.01;
+               printf "%s %.9g\n", x[k], y[k - 2] + e } }' x.txt y.txt > rec.txt
+"$tool" fit --save m.hyst --header f0_asym rec.txt > fit.txt 2> fit_err.txt || fail "fit: $(cat fit_err.txt)"
+grep -q '^# chosen by hold-out: degree 2, delay 2 (kind everett, 4 parameters' fit.txt || fail "plant: $(grep chosen fit.txt)"
+awk -F, 'NR == 1 { if (NF != 3) exit 1; split("3,1,2", w, ",");
+                   for (k = 1; k <= 3; k++) { d = $k - w[k]; if (d < 0) d = -d; if (d > 0.01) exit 1 } }' fit.txt ||
+    fail "plant terms: $(head -1 fit.txt)"
+# the model file as docs/cli.md gives it
+[ "$(sed -n 1p m.hyst)" = 'hyst-model-text 1' ] && [ "$(grep -v '^#' m.hyst | cut -d' ' -f1 | paste -sd' ')" = "hyst-model-text kind lo hi y_lo delay degree terms" ] ||
+    fail "model file keys: $(cat m.hyst)"
+grep -qx 'kind everett' m.hyst && grep -qx 'delay 2' m.hyst && grep -qx 'degree 2' m.hyst || fail "model file: $(cat m.hyst)"
+val() { sed -n "s/^$1 //p" m.hyst; }
+# sim --model: the library's outputs for the saved model, 2 lines late
+"$tool" sim --model m.hyst --digits 17 x.txt > sim_model.txt || fail "sim --model"
+# shellcheck disable=SC2046 # the terms are separate arguments
+"$run" "$(val lo)" "$(val hi)" "$(val y_lo)" "$(val degree)" $(val terms) < x.txt > lib.txt || fail "everett_run"
+[ "$(wc -l < sim_model.txt)" -eq "$(wc -l < x.txt)" ] || fail "sim --model: line count"
+cmp <(tail -n +3 sim_model.txt) <(head -n -2 lib.txt) || fail "sim --model differs from the library's outputs"
+[ "$(head -n 2 sim_model.txt | sort -u)" = "$(head -n 1 lib.txt)" ] || fail "sim --model: the first lines are not y_lo"
+# written again by fit, the same text: numbers read back bit for bit
+"$tool" fit --save m2.hyst rec.txt > /dev/null 2>&1 && cmp -s m.hyst m2.hyst || fail "second --save differs"
+
+# ---- headers: compile in float and double, hold the saved numbers ----
+"$tool" header --model m.hyst --dir . f0_hdr 2> /dev/null || fail "header --model"
+for h in f0_asym f0_hdr; do
+    grep -q "static const hyst_everett_t $h = {" $h.h || fail "$h.h: $(cat $h.h)"
+    for t in $(val terms) $(val y_lo); do grep -q "HYST_REAL_C($t)" $h.h || fail "$h.h: number $t"; done
+    t2=$(val terms | cut -d' ' -f2)
+    printf '#include "%s.h"\nint main(void) { return %s.degree == 2u && %s.e[0][1] == HYST_REAL_C(%s) && %s.e[1][1] == 0 ? 0 : 1; }\n' \
+        $h $h $h "$t2" $h > use_$h.c
+    for def in "" "-DHYST_USE_DOUBLE"; do
+        "$cc" -std=c99 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror $def \
+            -I. -I"$inc" use_$h.c -o use_$h || fail "$h.h does not compile ($def)"
+        ./use_$h || fail "$h.h: degree or terms ($def)"
+    done
+done
+grep -q '^ \* output follows its input 2 samples later' f0_hdr.h || fail "header --model: the delay comment"
+
+# ---- inv: no compensator for this kind yet ----
+rc=0
+"$tool" inv --model m.hyst y.txt > inv.txt 2> inv_err.txt || rc=$?
+[ "$rc" -eq 1 ] && [ ! -s inv.txt ] || fail "inv --model: exit $rc"
+grep -q 'the asymmetric kind (kind everett) has no compensator in this build' inv_err.txt || fail "inv: $(cat inv_err.txt)"
+
+# ---- a fit the library refuses: the output falls as the input rises ----
+awk '{ print $1, -$2 }' rec.txt > falling.txt
+rc=0
+"$tool" fit --kind everett --degree 1 --save fall.hyst --header f0_fall falling.txt > fall.txt 2> fall_err.txt || rc=$?
+[ "$rc" -eq 2 ] || fail "refused E: exit $rc"
+grep -q '^# E NOT accepted by the library: branch function E not increasing in a and decreasing in b' fall.txt ||
+    fail "refused E: $(tail -1 fall.txt)"
+grep -q 'the fitted E is refused by the library: .*; no header or model file written' fall_err.txt || fail "refused E: $(cat fall_err.txt)"
+[ ! -e fall.hyst ] && [ ! -e f0_fall.h ] || fail "files written for a refused E"
+echo "everett: measured record $(grep '^# chosen' meas.txt | cut -d'(' -f1); plant terms $(head -1 fit.txt)"

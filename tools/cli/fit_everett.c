@@ -1,0 +1,88 @@
+/* SPDX-License-Identifier: MIT */
+/* hyst fit, the asymmetric kind: E fitted by hyst_everett_fit_*() over a
+ * record, the model started from rest at the first sample used, as
+ * 'hyst sim --model' runs it. */
+#include "fit_select.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Turning points the fit's workspace holds at first; doubled, and the fit
+ * started again, when the record stacks more (one sample pushes one at most). */
+#define EVERETT_FIT_CAP0 64u
+
+/* E fitted to x[k], y[k + delay], skip <= k < end, on [lo, hi], into *e:
+ * HYST_OK or the library's status; *used the samples in the fit, *ls_rms
+ * its least-squares residual. */
+static hyst_status_t fit_samples(unsigned degree, double lo, double hi, const double *x,
+                                 const double *y, size_t skip, size_t end, size_t delay,
+                                 hyst_everett_t *e, size_t *used, double *ls_rms)
+{
+    size_t cap = EVERETT_FIT_CAP0;
+    for (;;) {
+        hyst_everett_fit_t fit;
+        const size_t len = HYST_EVERETT_FIT_WORK(cap);
+        double *work = (double *)malloc(len * sizeof(double));
+        hyst_status_t st;
+        size_t k;
+        if (work == NULL) {
+            return HYST_ERR_NOSPACE;
+        }
+        *used = 0u;
+        st = hyst_everett_fit_init(&fit, degree, lo, hi, work, len);
+        for (k = skip; k < end && st == HYST_OK; ++k) {
+            const hyst_status_t add = hyst_everett_fit_add(&fit, x[k], y[k + delay]);
+            /* HYST_ERR_DOMAIN: outside a given domain, ignored as the poly fit ignores it */
+            if (add == HYST_ERR_NOSPACE) {
+                st = add;
+            }
+            *used += add == HYST_OK ? 1u : 0u;
+        }
+        if (st == HYST_OK) {
+            hyst_wide_t rms = 0;
+            st = hyst_everett_fit_solve(&fit, e, &rms);
+            *ls_rms = (double)rms;
+        }
+        free(work);
+        if (st != HYST_ERR_NOSPACE || cap > end - skip) {
+            return st;
+        }
+        cap *= 2u;
+    }
+}
+
+hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, const double *x,
+                                 const double *y, size_t n, fit_everett_result_t *res)
+{
+    const size_t skip = cfg->skip, delay = cfg->delay;
+    double lo = (double)cfg->lo, hi = (double)cfg->hi;
+    hyst_curve_t curve;
+    hyst_status_t st;
+    size_t end, k;
+    memset(res, 0, sizeof *res);
+    res->rms = NAN;
+    res->max_abs = NAN;
+    res->curve_status = HYST_ERR_ARG;
+    if (n <= skip + delay) {
+        return HYST_ERR_ARG;
+    }
+    end = n - delay;
+    if (!(lo < hi)) { /* the range of the inputs used, as hyst_ident_fit() takes it */
+        lo = hi = x[skip];
+        for (k = skip; k < end; ++k) {
+            lo = x[k] < lo ? x[k] : lo;
+            hi = x[k] > hi ? x[k] : hi;
+        }
+    }
+    st = fit_samples(cfg->degree, lo, hi, x, y, skip, end, delay, &res->e, &res->used,
+                     &res->ls_rms);
+    if (st != HYST_OK) {
+        return st;
+    }
+    res->curve_status = hyst_f64_curve_from_everett(&curve, &res->e);
+    if (res->curve_status == HYST_OK) {
+        (void)fit_model_run(NULL, &curve, x, y, n, skip, delay, end, &res->rms, &res->max_abs);
+    }
+    return HYST_OK;
+}
