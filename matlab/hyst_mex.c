@@ -168,38 +168,26 @@ typedef struct model_arg {
     hyst_everett_t e;
 } model_arg_t;
 
-/* Inits S (and curve, which S may point at) in double, tp holding the four
- * turning-point arrays of cap entries. */
-static int init_f64(hyst_tcm_t *S, hyst_curve_t *curve, const model_arg_t *m, double *tp,
-                    size_t cap)
-{
-    int st;
-    if (m->everett) {
-        st = hyst_f64_curve_from_everett(curve, &m->e);
-        return st != HYST_OK ? st
-                             : hyst_f64_init_curve(S, curve, tp, tp + cap, tp + 2u * cap,
-                                                   tp + 3u * cap, cap);
+/* init_f64, init_f32: init S (and curve, which S may point at) for m in
+ * variant P of number type T, tp holding the four turning-point arrays of
+ * cap entries. */
+#define DEFINE_INIT(P, T)                                                                   \
+    static int init_##P(hyst_tcm_t *S, hyst_curve_t *curve, const model_arg_t *m, T *tp,    \
+                        size_t cap)                                                         \
+    {                                                                                       \
+        T *const xl = tp, *const yl = tp + cap, *const xr = tp + 2u * cap,                  \
+                 *const yr = tp + 3u * cap;                                                 \
+        int st;                                                                             \
+        if (m->everett) {                                                                   \
+            st = hyst_##P##_curve_from_everett(curve, &m->e);                               \
+            return st != HYST_OK ? st : hyst_##P##_init_curve(S, curve, xl, yl, xr, yr, cap); \
+        }                                                                                   \
+        return m->inverse ? hyst_##P##_init_inverse(S, curve, &m->f0, xl, yl, xr, yr, cap)  \
+                          : hyst_##P##_init(S, &m->f0, xl, yl, xr, yr, cap);                \
     }
-    return m->inverse ? hyst_f64_init_inverse(S, curve, &m->f0, tp, tp + cap, tp + 2u * cap,
-                                              tp + 3u * cap, cap)
-                      : hyst_f64_init(S, &m->f0, tp, tp + cap, tp + 2u * cap, tp + 3u * cap, cap);
-}
-
-/* The same in float. */
-static int init_f32(hyst_tcm_t *S, hyst_curve_t *curve, const model_arg_t *m, float *tp,
-                    size_t cap)
-{
-    int st;
-    if (m->everett) {
-        st = hyst_f32_curve_from_everett(curve, &m->e);
-        return st != HYST_OK ? st
-                             : hyst_f32_init_curve(S, curve, tp, tp + cap, tp + 2u * cap,
-                                                   tp + 3u * cap, cap);
-    }
-    return m->inverse ? hyst_f32_init_inverse(S, curve, &m->f0, tp, tp + cap, tp + 2u * cap,
-                                              tp + 3u * cap, cap)
-                      : hyst_f32_init(S, &m->f0, tp, tp + cap, tp + 2u * cap, tp + 3u * cap, cap);
-}
+DEFINE_INIT(f64, double)
+DEFINE_INIT(f32, float)
+#undef DEFINE_INIT
 
 /* Runs model m over x: prhs = x, capacity, deadband. */
 static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArray *prhs[])

@@ -293,13 +293,19 @@ function t_load_rejects(ctx)
   write_lines(file, [good {'', '# a comment'}]);
   m = hyst_model_load(file);
   check(isequal(m.coeffs, [1 2]) && m.lo == 0 && m.hi == 40, 'the good file');
+  expect_load_errors(file, bad);
+  expect_error('hyst:model_file', @() hyst_model_load(fullfile(ctx.tmp, 'nosuchfile')));
+end
+
+function expect_load_errors(file, bad)
+  % each row of bad: the lines of a file, and what hyst_model_load's
+  % hyst:model_file message must hold
   for k = 1:size(bad, 1)
     write_lines(file, bad{k, 1});
     msg = error_message(@() hyst_model_load(file));
     expect_error('hyst:model_file', @() hyst_model_load(file));
     check(~isempty(strfind(msg, bad{k, 2})), 'case %d: message ''%s''', k, msg);
   end
-  expect_error('hyst:model_file', @() hyst_model_load(fullfile(ctx.tmp, 'nosuchfile')));
 end
 
 function write_lines(file, lines)
@@ -519,10 +525,5 @@ function t_everett_load_rejects(ctx)
     [good(1:4) {'y_lo Inf'} good(6:7)], ':5: y_lo needs one finite number'
     [{'hyst-model-text 1', 'kind preisach'} good(3:7)], 'is not poly or everett'
   };
-  for k = 1:size(bad, 1)
-    write_lines(file, bad{k, 1});
-    msg = error_message(@() hyst_model_load(file));
-    expect_error('hyst:model_file', @() hyst_model_load(file));
-    check(~isempty(strfind(msg, bad{k, 2})), 'case %d: message ''%s''', k, msg);
-  end
+  expect_load_errors(file, bad);
 end
