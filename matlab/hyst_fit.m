@@ -1,6 +1,6 @@
 % SPDX-License-Identifier: MIT
 function f = hyst_fit(x, y, varargin)
-% HYST_FIT  Identifies f0, the major ascending curve, from measured x, y.
+% HYST_FIT  Identifies a model (f0, or the asymmetric kind's E) from measured x, y.
 %   F = HYST_FIT(X, Y) fits a cubic f0 to the record (X drive, Y measured
 %   output) of a full-range periodic excitation, by hyst_ident_fit()
 %   (include/hyst/ident.h, docs/identification.md). F is a model for
@@ -12,12 +12,25 @@ function f = hyst_fit(x, y, varargin)
 %     increasing  true if f0 increases on [lo, hi] (else turn: where not)
 %     degree, method
 %
-%   Options (name/value): 'degree' (default 3), 'skip' samples dropped at
-%   the start (default 0), 'delay' samples the output lags the input
-%   (default 0), 'method' 'joint' (default) or 'reflect', 'domain' [LO HI]
-%   (default: the range of the inputs).
+%   F = HYST_FIT(X, Y, 'kind', 'everett') fits the asymmetric kind's branch
+%   function E of total degree 'degree' (1..4) by hyst_everett_fit_*: the
+%   record starts from rest (lo) at sample 'skip', inputs outside the
+%   domain are clamped as the model clamps them, and minor loops are needed
+%   for E's terms in t (major loops alone leave them singular). Fields:
+%     kind        'everett'
+%     degree, lo, hi, y_lo, terms  the model (HYST_SIM takes it)
+%     rms         residual of the least-squares fit
+%     used        samples used
+%     monotone    true if the library accepts E (else hyst_sim raises
+%                 hyst:ERR_NOT_MONOTONE)
+%
+%   Options (name/value): 'kind' 'poly' (default) or 'everett', 'degree'
+%   (default 3), 'skip' samples dropped at the start (default 0), 'delay'
+%   samples the output lags the input (default 0), 'method' 'joint'
+%   (default) or 'reflect' (kind poly), 'domain' [LO HI] (default: the
+%   range of the inputs).
 %   A library error raises hyst:<status name>, e.g. hyst:ERR_SINGULAR.
-  opts = hyst_options(varargin, struct('degree', 3, 'skip', 0, 'delay', 0, ...
+  opts = hyst_options(varargin, struct('kind', 'poly', 'degree', 3, 'skip', 0, 'delay', 0, ...
                                        'method', 'joint', 'domain', []), 'hyst_fit');
   switch lower(opts.method)
     case 'joint'
@@ -34,11 +47,24 @@ function f = hyst_fit(x, y, varargin)
   else
     error('hyst:usage', 'hyst_fit: domain is [LO HI] with LO < HI');
   end
-  f = hyst_mex('fit', double(x(:)), double(y(:)), double(opts.degree), method, ...
-               domain(1), domain(2), double(opts.skip), double(opts.delay));
-  if ~f.increasing
-    warning('hyst:not_increasing', ...
-            'hyst_fit: the fitted f0 is not increasing on [%g, %g] (slope negative at %g): try another degree', ...
-            f.lo, f.hi, f.turn);
+  switch opts.kind
+    case 'poly'
+      f = hyst_mex('fit', double(x(:)), double(y(:)), double(opts.degree), method, ...
+                   domain(1), domain(2), double(opts.skip), double(opts.delay));
+      if ~f.increasing
+        warning('hyst:not_increasing', ...
+                'hyst_fit: the fitted f0 is not increasing on [%g, %g] (slope negative at %g): try another degree', ...
+                f.lo, f.hi, f.turn);
+      end
+    case 'everett'
+      f = hyst_mex('fit_everett', double(x(:)), double(y(:)), double(opts.degree), ...
+                   domain(1), domain(2), double(opts.skip), double(opts.delay));
+      if ~f.monotone
+        warning('hyst:not_monotone', ...
+                'hyst_fit: the fitted E is not increasing in a and decreasing in b on [%g, %g]: try another degree', ...
+                f.lo, f.hi);
+      end
+    otherwise
+      error('hyst:usage', 'hyst_fit: kind is ''poly'' or ''everett''');
   end
 end

@@ -8,13 +8,19 @@
  *   s = hyst_mex('status_str', code)             hyst_status_str(code)
  *   [y, st, ntp] = hyst_mex('sim', coeffs, lo, hi, x, capacity, deadband)
  *   [x, st, ntp] = hyst_mex('inv', coeffs, lo, hi, y, capacity, deadband)
+ *   [y, st, ntp] = hyst_mex('sim_everett', degree, lo, hi, y_lo, terms, x, capacity, deadband)
  *   f = hyst_mex('fit', x, y, degree, method, lo, hi, skip, delay)
+ *   f = hyst_mex('fit_everett', x, y, degree, lo, hi, skip, delay)
  *
+ * sim_everett runs the asymmetric kind (hyst_everett_t; terms are e[i-1][j]
+ * of w^i t^j for i = 1..degree, then j = 0..degree-i).
  * sim/inv: x of class double runs hyst_f64_*, single runs hyst_f32_*; the
  * result has the class and the shape of x; st is the status of the block
  * call (0, or a warning: 1 clamped, 2 memory full; a non-finite sample gives
  * -7 and is ignored as in firmware), ntp the turning points stored at the end.
  * fit: method 1 joint, 2 reflect; lo == hi takes the domain from the data.
+ * fit_everett: E by hyst_everett_fit_*, the record starting from rest at
+ * sample skip, inputs clamped to the domain as the model clamps them.
  * A negative status of an init or of the fit raises an error whose
  * identifier is hyst:<status name> (hyst:ERR_NOT_INCREASING) and whose
  * message holds hyst_status_str(); a bad argument raises hyst:usage.
@@ -59,6 +65,7 @@ static const char *status_name(int st)
         {HYST_ERR_OVERLAP, "ERR_OVERLAP"},
         {HYST_ERR_BUSY, "ERR_BUSY"},
         {HYST_ERR_ILL_CONDITIONED, "ERR_ILL_CONDITIONED"},
+        {HYST_ERR_NOT_MONOTONE, "ERR_NOT_MONOTONE"},
     };
     size_t i;
     for (i = 0u; i < sizeof names / sizeof names[0]; ++i) {
@@ -127,23 +134,72 @@ static hyst_poly_t poly_arg(const mxArray *c, const mxArray *lo, const mxArray *
     return f0;
 }
 
-/* sim or inv over x: prhs = coeffs, lo, hi, x, capacity, deadband. */
-static void run_tcm(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+/* E from degree, lo, hi, y_lo, terms; validated by the library. */
+static hyst_everett_t everett_arg(const mxArray *const prhs[5])
 {
-    const char *context = inverse ? "hyst_inv" : "hyst_sim";
+    hyst_everett_t e;
+    const size_t degree = count(prhs[0], "degree", 0.0, 1e9);
+    const size_t n = mxGetNumberOfElements(prhs[4]);
+    size_t i, j, k = 0u;
+    memset(&e, 0, sizeof e);
+    if (degree < 1u || degree > HYST_EVERETT_MAX_DEGREE) {
+        fail_status("hyst_sim", HYST_ERR_DEGREE);
+    }
+    if (!is_real_double(prhs[4]) || n != degree * (degree + 1u) / 2u) {
+        usage("terms must be a real double vector of degree (degree + 1) / 2 entries");
+    }
+    e.degree = (unsigned)degree;
+    e.lo = scalar(prhs[1], "lo");
+    e.hi = scalar(prhs[2], "hi");
+    e.y_lo = scalar(prhs[3], "y_lo");
+    for (i = 1u; i <= degree; ++i) {
+        for (j = 0u; i + j <= degree; ++j) {
+            e.e[i - 1u][j] = ((const double *)mxGetData(prhs[4]))[k++];
+        }
+    }
+    return e;
+}
+
+/* The model a sim/inv call runs: f0 or its inverse, or an E. */
+typedef struct model_arg {
+    int inverse;        /* the compensator of f0 */
+    int everett;        /* the asymmetric kind: e, not f0 */
     hyst_poly_t f0;
+    hyst_everett_t e;
+} model_arg_t;
+
+/* init_f64, init_f32: init S (and curve, which S may point at) for m in
+ * variant P of number type T, tp holding the four turning-point arrays of
+ * cap entries. */
+#define DEFINE_INIT(P, T)                                                                   \
+    static int init_##P(hyst_tcm_t *S, hyst_curve_t *curve, const model_arg_t *m, T *tp,    \
+                        size_t cap)                                                         \
+    {                                                                                       \
+        T *const xl = tp, *const yl = tp + cap, *const xr = tp + 2u * cap,                  \
+                 *const yr = tp + 3u * cap;                                                 \
+        int st;                                                                             \
+        if (m->everett) {                                                                   \
+            st = hyst_##P##_curve_from_everett(curve, &m->e);                               \
+            return st != HYST_OK ? st : hyst_##P##_init_curve(S, curve, xl, yl, xr, yr, cap); \
+        }                                                                                   \
+        return m->inverse ? hyst_##P##_init_inverse(S, curve, &m->f0, xl, yl, xr, yr, cap)  \
+                          : hyst_##P##_init(S, &m->f0, xl, yl, xr, yr, cap);                \
+    }
+DEFINE_INIT(f64, double)
+DEFINE_INIT(f32, float)
+#undef DEFINE_INIT
+
+/* Runs model m over x: prhs = x, capacity, deadband. */
+static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArray *prhs[])
+{
+    const char *context = m->inverse ? "hyst_inv" : "hyst_sim";
     hyst_tcm_t S;
-    hyst_curve_t inv;
-    const mxArray *x;
+    hyst_curve_t curve;
+    const mxArray *x = prhs[0];
     mxArray *y;
     size_t n, cap;
     int st;
-    if (nrhs != 6) {
-        usage("sim/inv take coeffs, lo, hi, x, capacity, deadband");
-    }
-    f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
-    x = prhs[3];
-    cap = count(prhs[4], "capacity", 1.0, 1e9);
+    cap = count(prhs[1], "capacity", 1.0, 1e9);
     n = mxGetNumberOfElements(x);
     if (mxIsComplex(x) || mxIsSparse(x) || !(mxIsDouble(x) || mxIsSingle(x))) {
         usage("the input must be a real double or single array");
@@ -152,11 +208,9 @@ static void run_tcm(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxAr
                              mxREAL);
     if (mxIsDouble(x)) {
         double *tp = mxMalloc(4u * cap * sizeof *tp);
-        st = inverse ? hyst_f64_init_inverse(&S, &inv, &f0, tp, tp + cap, tp + 2u * cap,
-                                             tp + 3u * cap, cap)
-                     : hyst_f64_init(&S, &f0, tp, tp + cap, tp + 2u * cap, tp + 3u * cap, cap);
+        st = init_f64(&S, &curve, m, tp, cap);
         if (st == HYST_OK) {
-            st = hyst_f64_set_deadband(&S, scalar(prhs[5], "deadband"));
+            st = hyst_f64_set_deadband(&S, scalar(prhs[2], "deadband"));
         }
         if (st == HYST_OK && n > 0u) {
             st = hyst_f64_process(&S, (const double *)mxGetData(x), (double *)mxGetData(y), n);
@@ -169,11 +223,9 @@ static void run_tcm(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxAr
         mxFree(tp);
     } else {
         float *tp = mxMalloc(4u * cap * sizeof *tp);
-        st = inverse ? hyst_f32_init_inverse(&S, &inv, &f0, tp, tp + cap, tp + 2u * cap,
-                                             tp + 3u * cap, cap)
-                     : hyst_f32_init(&S, &f0, tp, tp + cap, tp + 2u * cap, tp + 3u * cap, cap);
+        st = init_f32(&S, &curve, m, tp, cap);
         if (st == HYST_OK) {
-            st = hyst_f32_set_deadband(&S, (float)scalar(prhs[5], "deadband"));
+            st = hyst_f32_set_deadband(&S, (float)scalar(prhs[2], "deadband"));
         }
         if (st == HYST_OK && n > 0u) {
             st = hyst_f32_process(&S, (const float *)mxGetData(x), (float *)mxGetData(y), n);
@@ -192,6 +244,32 @@ static void run_tcm(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxAr
     if (nlhs > 2) {
         plhs[2] = mxCreateDoubleScalar((double)hyst_tp_count(&S));
     }
+}
+
+/* sim or inv: prhs = coeffs, lo, hi, x, capacity, deadband. */
+static void run_poly(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    model_arg_t m;
+    if (nrhs != 6) {
+        usage("sim/inv take coeffs, lo, hi, x, capacity, deadband");
+    }
+    memset(&m, 0, sizeof m);
+    m.inverse = inverse;
+    m.f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
+    run_tcm(&m, nlhs, plhs, prhs + 3);
+}
+
+/* sim_everett: prhs = degree, lo, hi, y_lo, terms, x, capacity, deadband. */
+static void run_everett(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    model_arg_t m;
+    if (nrhs != 8) {
+        usage("sim_everett takes degree, lo, hi, y_lo, terms, x, capacity, deadband");
+    }
+    memset(&m, 0, sizeof m);
+    m.everett = 1;
+    m.e = everett_arg(prhs);
+    run_tcm(&m, nlhs, plhs, prhs + 5);
 }
 
 static void set_field(mxArray *s, const char *name, mxArray *v)
@@ -255,11 +333,87 @@ static void run_fit(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     plhs[0] = s;
 }
 
+/* fit_everett: prhs = x, y, degree, lo, hi, skip, delay. */
+static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *fields[] = {"kind", "degree", "lo", "hi", "y_lo", "terms",
+                                   "rms", "used", "monotone"};
+    hyst_everett_fit_t fit;
+    hyst_everett_t e;
+    hyst_curve_t curve;
+    hyst_wide_t *work, rms = 0.0, lo, hi;
+    const double *x, *y;
+    size_t n, skip, delay, len, i, j, used = 0u;
+    mxArray *s, *t;
+    int st;
+    if (nrhs != 7) {
+        usage("fit_everett takes x, y, degree, lo, hi, skip, delay");
+    }
+    if (!is_real_double(prhs[0]) || !is_real_double(prhs[1])) {
+        usage("x and y must be real double vectors");
+    }
+    n = mxGetNumberOfElements(prhs[0]);
+    if (mxGetNumberOfElements(prhs[1]) != n) {
+        usage("x and y must have the same number of elements");
+    }
+    lo = scalar(prhs[3], "lo");
+    hi = scalar(prhs[4], "hi");
+    skip = count(prhs[5], "skip", 0.0, 1e15);
+    delay = count(prhs[6], "delay", 0.0, 1e15);
+    if (skip >= n || delay >= n - skip) {
+        fail_status("hyst_fit", HYST_ERR_ARG);
+    }
+    n -= skip + delay; /* the samples paired */
+    x = (const double *)mxGetData(prhs[0]) + skip;
+    y = (const double *)mxGetData(prhs[1]) + skip + delay;
+    if (lo == hi && (st = hyst_ident_domain(x, n, &lo, &hi)) != HYST_OK) {
+        fail_status("hyst_fit", st);
+    }
+    len = HYST_EVERETT_FIT_WORK(n + 2u); /* n samples stack at most n + 1 TPs */
+    work = mxMalloc(len * sizeof *work);
+    st = hyst_everett_fit_init(&fit, (unsigned)count(prhs[2], "degree", 0.0, 1e9), lo, hi, work,
+                               len);
+    for (i = 0u; st == HYST_OK && i < n; ++i) {
+        const double xi = x[i] < lo ? lo : (x[i] > hi ? hi : x[i]); /* NaN stays NaN */
+        const int added = hyst_everett_fit_add(&fit, xi, y[i]);
+        if (added == HYST_OK) {
+            ++used;
+        }
+        st = added == HYST_ERR_NOSPACE ? added : HYST_OK;
+    }
+    if (st == HYST_OK) {
+        st = hyst_everett_fit_solve(&fit, &e, &rms);
+    }
+    mxFree(work);
+    if (st != HYST_OK) {
+        fail_status("hyst_fit", st);
+    }
+    s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
+    t = mxCreateDoubleMatrix(1, (mwSize)(e.degree * (e.degree + 1u) / 2u), mxREAL);
+    for (i = 1u, n = 0u; i <= e.degree; ++i) {
+        for (j = 0u; i + j <= e.degree; ++j) {
+            ((double *)mxGetData(t))[n++] = e.e[i - 1u][j];
+        }
+    }
+    set_field(s, "kind", mxCreateString("everett"));
+    set_field(s, "degree", mxCreateDoubleScalar((double)e.degree));
+    set_field(s, "lo", mxCreateDoubleScalar(e.lo));
+    set_field(s, "hi", mxCreateDoubleScalar(e.hi));
+    set_field(s, "y_lo", mxCreateDoubleScalar(e.y_lo));
+    set_field(s, "terms", t);
+    set_field(s, "rms", mxCreateDoubleScalar(rms));
+    set_field(s, "used", mxCreateDoubleScalar((double)used));
+    set_field(s, "monotone",
+              mxCreateLogicalScalar(hyst_f64_curve_from_everett(&curve, &e) == HYST_OK));
+    plhs[0] = s;
+}
+
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
-    char cmd[16];
+    char cmd[24];
     if (nrhs < 1 || !mxIsChar(prhs[0]) || mxGetString(prhs[0], cmd, sizeof cmd) != 0) {
-        usage("the first argument is a command: version, status_str, sim, inv or fit");
+        usage("the first argument is a command: version, status_str, sim, inv, sim_everett, fit "
+              "or fit_everett");
     }
     if (strcmp(cmd, "version") == 0) {
         plhs[0] = mxCreateString(HYST_VERSION_STRING);
@@ -271,10 +425,14 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
             plhs[1] = mxCreateString(status_name(st));
         }
     } else if (strcmp(cmd, "sim") == 0 || strcmp(cmd, "inv") == 0) {
-        run_tcm(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
+        run_poly(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "sim_everett") == 0) {
+        run_everett(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "fit") == 0) {
         run_fit(plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "fit_everett") == 0) {
+        run_fit_everett(plhs, nrhs - 1, prhs + 1);
     } else {
-        usage("unknown command (version, status_str, sim, inv, fit)");
+        usage("unknown command (version, status_str, sim, inv, sim_everett, fit, fit_everett)");
     }
 }

@@ -3,14 +3,18 @@ function model = hyst_model_load(file)
 % HYST_MODEL_LOAD  Reads a model written by HYST_MODEL_SAVE.
 %   MODEL = HYST_MODEL_LOAD(FILE) returns a struct with fields coeffs (a row,
 %   highest power first), lo, hi and delay (samples; 0 when the file has
-%   none), for HYST_SIM and HYST_INV. FILE must be in
+%   none), for HYST_SIM and HYST_INV; for a file of kind everett (the
+%   asymmetric kind) the fields kind ('everett'), lo, hi, y_lo, degree,
+%   terms (a row) and delay, for HYST_SIM. FILE must be in
 %   the format hyst-model-text 1 (docs/matlab.md): its first line is exactly
 %   that; then lines 'key value...', blank lines and '#' comment lines; the
-%   keys kind (poly), lo, hi, coeffs, each once, and optionally delay (the
-%   output follows its input this many samples later; written by 'hyst fit
-%   --save'). Anything else (another
-%   format or version, an unknown or repeated key, a number that is not
-%   finite) raises hyst:model_file naming the file and the line.
+%   keys kind (poly or everett), lo, hi, each once, coeffs (kind poly) or
+%   y_lo, degree (1..4) and terms (degree (degree + 1) / 2 numbers; kind
+%   everett), and optionally delay (the output follows its input this many
+%   samples later; written by 'hyst fit --save'). Anything else (another
+%   format or version, an unknown or repeated key, a key of the other kind,
+%   a number that is not finite) raises hyst:model_file naming the file and
+%   the line.
   [fid, msg] = fopen(file, 'r');
   if fid < 0
     error('hyst:model_file', 'hyst_model_load: %s: %s', file, msg);
@@ -27,7 +31,9 @@ function model = hyst_model_load(file)
           'hyst_model_load: %s:1: ''%s'' is not ''hyst-model-text 1'' (another format or version)', ...
           file, first);
   end
+  lists = {'coeffs', 'terms'};     % keys of several numbers
   seen = struct();
+  at = struct();                   % the line of each key
   for k = 2:numel(lines)
     line = strtrim(lines{k});
     if isempty(line) || line(1) == '#'
@@ -35,31 +41,51 @@ function model = hyst_model_load(file)
     end
     [key, rest] = strtok(line);
     where = sprintf('hyst_model_load: %s:%d', file, k);
-    if ~any(strcmp(key, {'kind', 'lo', 'hi', 'coeffs', 'delay'}))
+    if ~any(strcmp(key, {'kind', 'lo', 'hi', 'coeffs', 'delay', 'y_lo', 'degree', 'terms'}))
       error('hyst:model_file', '%s: unknown key ''%s''', where, key);
     end
     if isfield(seen, key)
       error('hyst:model_file', '%s: key ''%s'' given twice', where, key);
     end
+    at.(key) = k;
     if strcmp(key, 'kind')
-      if ~strcmp(strtrim(rest), 'poly')
-        error('hyst:model_file', '%s: kind ''%s'' is not poly', where, strtrim(rest));
+      if ~any(strcmp(strtrim(rest), {'poly', 'everett'}))
+        error('hyst:model_file', '%s: kind ''%s'' is not poly or everett', where, strtrim(rest));
       end
-      seen.kind = 'poly';
+      seen.kind = strtrim(rest);
       continue;
     end
     words = strsplit(strtrim(rest));
     v = str2double(words);
-    if isempty(rest) || any(~isfinite(v)) || (~strcmp(key, 'coeffs') && numel(v) ~= 1)
+    if isempty(rest) || any(~isfinite(v)) || (~any(strcmp(key, lists)) && numel(v) ~= 1)
       error('hyst:model_file', '%s: %s needs %s finite number%s', where, key, ...
-            ifelse_(strcmp(key, 'coeffs'), 'one or more', 'one'), ifelse_(strcmp(key, 'coeffs'), 's', ''));
+            ifelse_(any(strcmp(key, lists)), 'one or more', 'one'), ifelse_(any(strcmp(key, lists)), 's', ''));
     end
     if strcmp(key, 'delay') && (v < 0 || v ~= round(v))
       error('hyst:model_file', '%s: delay %g is not a whole number of samples', where, v);
     end
+    if strcmp(key, 'degree') && ~any(v == 1:4)
+      error('hyst:model_file', '%s: degree %g is not a whole number 1..4', where, v);
+    end
     seen.(key) = v;
   end
-  for key = {'kind', 'lo', 'hi', 'coeffs'}
+  if ~isfield(seen, 'kind')
+    error('hyst:model_file', 'hyst_model_load: %s: key ''kind'' is missing', file);
+  end
+  if strcmp(seen.kind, 'everett')
+    needs = {'lo', 'hi', 'y_lo', 'degree', 'terms'};
+    refuses = {'coeffs'};
+  else
+    needs = {'lo', 'hi', 'coeffs'};
+    refuses = {'y_lo', 'degree', 'terms'};
+  end
+  for key = refuses
+    if isfield(seen, key{1})
+      error('hyst:model_file', 'hyst_model_load: %s:%d: key ''%s'' is not a key of kind %s', ...
+            file, at.(key{1}), key{1}, seen.kind);
+    end
+  end
+  for key = needs
     if ~isfield(seen, key{1})
       error('hyst:model_file', 'hyst_model_load: %s: key ''%s'' is missing', file, key{1});
     end
@@ -68,7 +94,16 @@ function model = hyst_model_load(file)
   if isfield(seen, 'delay')
     delay = seen.delay;
   end
-  model = struct('coeffs', seen.coeffs, 'lo', seen.lo, 'hi', seen.hi, 'delay', delay);
+  if strcmp(seen.kind, 'poly')
+    model = struct('coeffs', seen.coeffs, 'lo', seen.lo, 'hi', seen.hi, 'delay', delay);
+    return;
+  end
+  if numel(seen.terms) ~= seen.degree * (seen.degree + 1) / 2
+    error('hyst:model_file', 'hyst_model_load: %s:%d: terms needs %d numbers for degree %d, not %d', ...
+          file, at.terms, seen.degree * (seen.degree + 1) / 2, seen.degree, numel(seen.terms));
+  end
+  model = struct('kind', 'everett', 'lo', seen.lo, 'hi', seen.hi, 'y_lo', seen.y_lo, ...
+                 'degree', seen.degree, 'terms', seen.terms, 'delay', delay);
 end
 
 function r = ifelse_(c, a, b)

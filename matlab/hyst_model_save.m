@@ -1,6 +1,6 @@
 % SPDX-License-Identifier: MIT
 function hyst_model_save(file, model)
-% HYST_MODEL_SAVE  Writes a model (f0 and its domain) to a text file.
+% HYST_MODEL_SAVE  Writes a model (f0 and its domain, or an E) to a text file.
 %   HYST_MODEL_SAVE(FILE, MODEL) writes MODEL.coeffs (highest power first),
 %   MODEL.lo and MODEL.hi (and MODEL.delay, samples, when it is not 0) in
 %   the format hyst-model-text 1 (docs/matlab.md):
@@ -12,29 +12,51 @@ function hyst_model_save(file, model)
 %     hi 40
 %     coeffs -6.1875999999999998e-06 0.0011949 0.086443999999999993 0.58516999999999997
 %
+%   A model of kind 'everett' (HYST_SIM) is written with the keys kind
+%   everett, lo, hi, y_lo, delay (when not 0), degree and terms.
 %   Numbers are written with 17 significant digits, so HYST_MODEL_LOAD gives
 %   the same doubles back. The file is not checked against the library:
 %   HYST_SIM does that.
-  [c, lo, hi] = hyst_model_parts(model, 'hyst_model_save');
+  p = hyst_model_parts(model, 'hyst_model_save');
   if ~ischar(file)
     error('hyst:usage', 'hyst_model_save: FILE is a file name');
   end
-  if isempty(c) || ~isscalar(lo) || ~isscalar(hi) || ~all(isfinite([c lo hi]))
-    error('hyst:usage', 'hyst_model_save: coeffs, lo and hi must be finite numbers');
+  if strcmp(p.kind, 'everett')
+    numbers = [p.terms p.y_lo];
+    if ~isscalar(p.degree) || ~any(p.degree == 1:4) || numel(p.terms) ~= p.degree * (p.degree + 1) / 2
+      error('hyst:usage', 'hyst_model_save: degree is 1..4 and terms has degree (degree + 1) / 2 numbers');
+    end
+  else
+    numbers = p.coeffs;
+  end
+  if isempty(numbers) || ~isscalar(p.lo) || ~isscalar(p.hi) || ~all(isfinite([numbers p.lo p.hi]))
+    error('hyst:usage', 'hyst_model_save: the model''s numbers must be finite, lo and hi scalars');
   end
   [fid, msg] = fopen(file, 'w');
   if fid < 0
     error('hyst:model_file', 'hyst_model_save: %s: %s', file, msg);
   end
   fprintf(fid, 'hyst-model-text 1\n');
-  fprintf(fid, '# hyst model: f0 on [lo, hi], coefficients highest power first (docs/matlab.md)\n');
-  fprintf(fid, 'kind poly\n');
-  fprintf(fid, 'lo %.17g\nhi %.17g\n', lo, hi);
-  if isstruct(model) && isfield(model, 'delay') && model.delay ~= 0
+  if strcmp(p.kind, 'everett')
+    fprintf(fid, '# hyst model: asymmetric, branch function E on [lo, hi], terms e[i-1][j] of w^i t^j for i = 1..degree, j = 0..degree-i (docs/matlab.md)\n');
+  else
+    fprintf(fid, '# hyst model: f0 on [lo, hi], coefficients highest power first (docs/matlab.md)\n');
+  end
+  fprintf(fid, 'kind %s\n', p.kind);
+  fprintf(fid, 'lo %.17g\nhi %.17g\n', p.lo, p.hi);
+  if strcmp(p.kind, 'everett')
+    fprintf(fid, 'y_lo %.17g\n', p.y_lo);
+  end
+  if isfield(model, 'delay') && model.delay ~= 0
     fprintf(fid, 'delay %d\n', model.delay);
   end
-  fprintf(fid, 'coeffs');
-  fprintf(fid, ' %.17g', c);
+  if strcmp(p.kind, 'everett')
+    fprintf(fid, 'degree %d\nterms', p.degree);
+    fprintf(fid, ' %.17g', p.terms);
+  else
+    fprintf(fid, 'coeffs');
+    fprintf(fid, ' %.17g', p.coeffs);
+  end
   fprintf(fid, '\n');
   if fclose(fid) ~= 0
     error('hyst:model_file', 'hyst_model_save: %s: cannot write', file);

@@ -6,7 +6,11 @@ function [y, status, tp_count] = hyst_sim(model, x, varargin)
 %   X of class double runs hyst_f64_process, single runs hyst_f32_process
 %   (what a Cortex-M4F computes). Y has the class and the shape of X.
 %   MODEL is a struct with fields coeffs (f0, highest power first), lo, hi:
-%   what HYST_FIT and HYST_MODEL_LOAD return.
+%   what HYST_FIT and HYST_MODEL_LOAD return; or, for the asymmetric kind
+%   (hyst_everett_t: hyst_*_curve_from_everett, hyst_*_init_curve), with
+%   fields kind 'everett', degree (1..4), lo, hi, y_lo (the output at lo)
+%   and terms, the coefficients e[i-1][j] of w^i t^j of the branch function
+%   E for i = 1..degree, then j = 0..degree-i (docs/matlab.md).
 %
 %   Options (name/value): 'capacity' turning points per array (default
 %   2048: never full for inputs taking at most 4096 distinct values),
@@ -18,7 +22,12 @@ function [y, status, tp_count] = hyst_sim(model, x, varargin)
 %   An invalid model raises an error hyst:<status name>, e.g.
 %   hyst:ERR_NOT_INCREASING (docs/matlab.md).
   opts = hyst_options(varargin, struct('capacity', 2048, 'deadband', 0), 'hyst_sim');
-  [c, lo, hi] = hyst_model_parts(model, 'hyst_sim');
-  [y, status, tp_count] = hyst_mex('sim', c, lo, hi, x, double(opts.capacity), ...
-                                   double(opts.deadband));
+  p = hyst_model_parts(model, 'hyst_sim');
+  if strcmp(p.kind, 'everett')
+    [y, status, tp_count] = hyst_mex('sim_everett', p.degree, p.lo, p.hi, p.y_lo, p.terms, x, ...
+                                     double(opts.capacity), double(opts.deadband));
+  else
+    [y, status, tp_count] = hyst_mex('sim', p.coeffs, p.lo, p.hi, x, double(opts.capacity), ...
+                                     double(opts.deadband));
+  end
 end

@@ -11,7 +11,9 @@ function failed = run_tests(root, ref, cli)
   tests = {@t_sim_f64_bitexact, @t_sim_f32_bitexact, @t_inv_bitexact, ...
            @t_bounded_memory_bitexact, @t_inv_undoes_sim, @t_fit_measured, ...
            @t_fit_equals_cli, @t_errors_status_names, @t_usage_errors, ...
-           @t_save_load_roundtrip, @t_load_rejects, @t_readme_block};
+           @t_save_load_roundtrip, @t_load_rejects, @t_readme_block, ...
+           @t_everett_reference, @t_everett_errors, @t_everett_fit, ...
+           @t_everett_save_load, @t_everett_load_rejects};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -291,13 +293,19 @@ function t_load_rejects(ctx)
   write_lines(file, [good {'', '# a comment'}]);
   m = hyst_model_load(file);
   check(isequal(m.coeffs, [1 2]) && m.lo == 0 && m.hi == 40, 'the good file');
+  expect_load_errors(file, bad);
+  expect_error('hyst:model_file', @() hyst_model_load(fullfile(ctx.tmp, 'nosuchfile')));
+end
+
+function expect_load_errors(file, bad)
+  % each row of bad: the lines of a file, and what hyst_model_load's
+  % hyst:model_file message must hold
   for k = 1:size(bad, 1)
     write_lines(file, bad{k, 1});
     msg = error_message(@() hyst_model_load(file));
     expect_error('hyst:model_file', @() hyst_model_load(file));
     check(~isempty(strfind(msg, bad{k, 2})), 'case %d: message ''%s''', k, msg);
   end
-  expect_error('hyst:model_file', @() hyst_model_load(fullfile(ctx.tmp, 'nosuchfile')));
 end
 
 function write_lines(file, lines)
@@ -324,4 +332,198 @@ function t_readme_block(ctx)
   end
   cd(here);
   check(~isempty(strtrim(out)), 'the quick start prints nothing');
+end
+
+% ---- the asymmetric kind (kind everett) ----
+
+function e = e3()
+  % an asymmetric E of degree 3 on [0, 10]: terms of w, w t, w t^2, w^2, w^2 t, w^3
+  e = struct('kind', 'everett', 'degree', 3, 'lo', 0, 'hi', 10, 'y_lo', -1, ...
+             'terms', [8 3 -1 2 1 -0.5]);
+end
+
+function v = e_value(e, a, b)
+  % E(a, b) term by term: w^i t^j, i = 1..degree, j = 0..degree - i
+  span = e.hi - e.lo;
+  w = (a - b) / span;
+  t = (b - e.lo) / span;
+  v = 0;
+  k = 1;
+  for i = 1:e.degree
+    for j = 0:e.degree - i
+      v = v + e.terms(k) * w^i * t^j;
+      k = k + 1;
+    end
+  end
+end
+
+function out = everett_reference(e, xs)
+  % Madelung's rules on a list of turning points (LTPs at odd places, A0
+  % first): rising from (b, y_b) y = y_b + E(x, b), falling from (a, y_a)
+  % y = y_a - E(a, x); passing the TP before the current one wipes out both;
+  % at lo every loop is closed. Inputs clamped, NaN ignored.
+  tx = e.lo;
+  ty = e.y_lo;
+  x_prev = e.lo;
+  y = e.y_lo;
+  out = zeros(size(xs));
+  for k = 1:numel(xs)
+    x = xs(k);
+    if ~isfinite(x)
+      out(k) = y;
+      continue;
+    end
+    x = min(max(x, e.lo), e.hi);
+    rising = mod(numel(tx) - 1, 2) == 0;
+    if x > x_prev
+      if ~rising
+        tx(end + 1) = x_prev;
+        ty(end + 1) = y;
+      end
+      while numel(tx) >= 3 && x >= tx(end - 1)
+        tx(end - 1:end) = [];
+        ty(end - 1:end) = [];
+      end
+      y = ty(end) + e_value(e, x, tx(end));
+    elseif x < x_prev
+      if rising
+        tx(end + 1) = x_prev;
+        ty(end + 1) = y;
+      end
+      while numel(tx) >= 3 && x <= tx(end - 1)
+        tx(end - 1:end) = [];
+        ty(end - 1:end) = [];
+      end
+      y = ty(end) - e_value(e, tx(end), x);
+      if x <= e.lo
+        tx = e.lo;
+        ty = e.y_lo;
+        y = e.y_lo;
+      end
+    end
+    x_prev = x;
+    out(k) = y;
+  end
+end
+
+function t_everett_reference(~)
+  % double: the plain reference to 1e-9 of the range; single follows it
+  e = e3();
+  range = e_value(e, e.hi, e.lo);
+  x = signal(4000, e.lo, e.hi, 11);
+  x(777) = NaN;
+  [y, st] = hyst_sim(e, x);
+  want = everett_reference(e, x);
+  err = max(abs(y - want));
+  check(err <= 1e-9 * range, 'double: %g from the reference', err);
+  check(st == -7, 'status %d (-7 expected: a NaN sample)', st);
+  [~, st] = hyst_sim(e, x(1:700));
+  check(st == 1, 'status %d (1 expected: clamped samples)', st);
+  ys = hyst_sim(e, single(x));
+  check(strcmp(class(ys), 'single') && any(double(ys) ~= y), 'single');
+  err = max(abs(double(ys) - want));
+  check(err <= 2e-5 * range, 'single: %g from the reference', err);
+  % the t terms matter: E of the width only is another model
+  w = e;
+  w.terms([2 3 5]) = 0;
+  check(max(abs(everett_reference(w, x) - want)) > 1e-3 * range, 'E''s t terms changed nothing');
+end
+
+function t_everett_errors(~)
+  e = struct('kind', 'everett', 'degree', 2, 'lo', 0, 'hi', 3.6, 'y_lo', 0, 'terms', [0.61 0.02 -1]);
+  expect_error('hyst:ERR_NOT_MONOTONE', @() hyst_sim(e, 1));
+  msg = error_message(@() hyst_sim(e, single(1)));
+  check(~isempty(strfind(msg, 'ERR_NOT_MONOTONE, -22')), 'message ''%s''', msg);
+  e.terms = [0.61 0.02 -0.1];
+  expect_error('hyst:usage', @() hyst_inv(e, 0.1));
+  bad = e;
+  bad.degree = 5;
+  bad.terms = ones(1, 15);
+  expect_error('hyst:ERR_DEGREE', @() hyst_sim(bad, 1));
+  bad = e;
+  bad.terms = [1 0];
+  expect_error('hyst:usage', @() hyst_sim(bad, 1));
+  expect_error('hyst:usage', @() hyst_sim(rmfield(e, 'y_lo'), 1));
+  expect_error('hyst:usage', @() hyst_fit(1:3, 1:3, 'kind', 'preisach'));
+  expect_error('hyst:ERR_SINGULAR', @() hyst_fit([0 1 0 1 0], [0 1 0 1 0], 'kind', 'everett'));
+  expect_error('hyst:ERR_DEGREE', @() hyst_fit(0:9, 0:9, 'kind', 'everett', 'degree', 5));
+  expect_error('hyst:ERR_ARG', @() hyst_fit(0:9, 0:9, 'kind', 'everett', 'skip', 10));
+end
+
+function t_everett_fit(~)
+  % a known E from a noisy record of the asymmetric plant: terms, y_lo, rms
+  e = e3();
+  x = min(max(signal(6000, e.lo, e.hi, 12), e.lo), e.hi);
+  sigma = 1e-3 * e_value(e, e.hi, e.lo);
+  randn('state', 12);
+  y = hyst_sim(e, x) + sigma * randn(size(x));
+  f = hyst_fit(x, [y(1); y(1:end - 1)], 'kind', 'everett', 'degree', 3, 'delay', 1, ...
+               'domain', [e.lo e.hi]);
+  check(strcmp(f.kind, 'everett') && f.degree == 3 && f.monotone, 'kind, degree, monotone');
+  check(max(abs(f.terms - e.terms)) < 0.1, 'terms %s', mat2str(f.terms, 5));
+  check(abs(f.y_lo - e.y_lo) < 0.02, 'y_lo %g', f.y_lo);
+  check(f.rms > 0.9 * sigma && f.rms < 1.1 * sigma, 'rms %g, noise %g', f.rms, sigma);
+  check(f.used == numel(x) - 1, 'used %d', f.used);
+  xt = min(max(signal(3000, e.lo, e.hi, 13), e.lo), e.hi);
+  err = hyst_sim(f, xt) - hyst_sim(e, xt);
+  check(sqrt(mean(err .^ 2)) < sigma, 'prediction RMS %g', sqrt(mean(err .^ 2)));
+  % a fit that is not monotone warns and the model is refused
+  t = linspace(0, 1, 400)';
+  u = abs(sin(6 * pi * t));
+  warning('off', 'hyst:not_monotone');
+  g = hyst_fit(u, -u, 'kind', 'everett', 'degree', 2);
+  warning('on', 'hyst:not_monotone');
+  check(~g.monotone, 'a falling plant gave a monotone E');
+  expect_error('hyst:ERR_NOT_MONOTONE', @() hyst_sim(g, u));
+end
+
+function t_everett_save_load(ctx)
+  % the same doubles back, delay included; the model runs the same
+  e = e3();
+  e.terms = [-0 5e-324 1/3 -2.5e-300 7e300 0.1];
+  e.y_lo = pi;
+  e.delay = 3;
+  file = fullfile(ctx.tmp, 'everett.hyst');
+  hyst_model_save(file, e);
+  m = hyst_model_load(file);
+  check(isequal(fieldnames(m), {'kind'; 'lo'; 'hi'; 'y_lo'; 'degree'; 'terms'; 'delay'}), 'fields');
+  check(isequal(typecast([m.terms m.y_lo m.lo m.hi], 'uint64'), ...
+                typecast([e.terms e.y_lo e.lo e.hi], 'uint64')), 'not the same doubles');
+  check(strcmp(m.kind, 'everett') && m.degree == 3 && m.delay == 3, 'kind, degree, delay');
+  e = e3();
+  hyst_model_save(file, e);
+  x = signal(2000, e.lo, e.hi, 14);
+  check(isequal(hyst_sim(hyst_model_load(file), x), hyst_sim(e, x)), 'simulations differ');
+  text = fileread(file);
+  check(isempty(strfind(text, 'delay')) && ~isempty(strfind(text, sprintf('\nkind everett\n'))), ...
+        'text: %s', text);
+  % the format's example, as the host tool writes it
+  write_lines(file, {'hyst-model-text 1', '# comment lines as now', 'kind everett', 'lo 0', ...
+                     'hi 3.6000000000000001', 'y_lo -0.035382239014971697', 'delay 3', ...
+                     'degree 2', 'terms 0.61 0.02 -0.1'});
+  m = hyst_model_load(file);
+  check(m.hi == 3.6 && m.y_lo == -0.035382239014971697 && isequal(m.terms, [0.61 0.02 -0.1]) && ...
+        m.delay == 3 && m.degree == 2, 'the example');
+end
+
+function t_everett_load_rejects(ctx)
+  file = fullfile(ctx.tmp, 'bad_everett.txt');
+  good = {'hyst-model-text 1', 'kind everett', 'lo 0', 'hi 3.6', 'y_lo 0', 'degree 2', ...
+          'terms 0.61 0.02 -0.1'};
+  bad = {
+    [good {'coeffs 1 2'}], ':8: key ''coeffs'' is not a key of kind everett'
+    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'terms 1', 'coeffs 1 2'}, ':5: key ''terms'' is not a key of kind poly'
+    {'hyst-model-text 1', 'kind poly', 'y_lo 0', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':3: key ''y_lo'' is not a key of kind poly'
+    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 2', 'degree 1'}, ':6: key ''degree'' is not a key of kind poly'
+    good([1:4 6 7]), 'key ''y_lo'' is missing'
+    good([1:5 7]), 'key ''degree'' is missing'
+    good(1:6), 'key ''terms'' is missing'
+    [good(1:5) {'degree 5'} good(7)], ':6: degree 5 is not a whole number 1..4'
+    [good(1:5) {'degree 1.5'} good(7)], ':6: degree 1.5 is not'
+    [good(1:6) {'terms 1 2'}], ':7: terms needs 3 numbers for degree 2, not 2'
+    [good(1:6) {'terms 1 NaN 2'}], ':7: terms needs one or more finite numbers'
+    [good(1:4) {'y_lo Inf'} good(6:7)], ':5: y_lo needs one finite number'
+    [{'hyst-model-text 1', 'kind preisach'} good(3:7)], 'is not poly or everett'
+  };
+  expect_load_errors(file, bad);
 end

@@ -14,6 +14,7 @@ See docs/python.md in the repository.
 from ._errors import HystError
 from ._hyst import (
     CODE_MAX,
+    EVERETT_MAX_DEGREE,
     EVENT_CLAMPED,
     EVENT_FULL,
     EVENT_NONFINITE,
@@ -29,13 +30,24 @@ from ._hyst import (
     __version__,
     status_str,
 )
-from ._api import DEFAULT_CAPACITY, PI, Compensator, Fit, Model, ModelFromPoints, fit
+from ._api import (
+    DEFAULT_CAPACITY,
+    PI,
+    Compensator,
+    Fit,
+    Model,
+    ModelFromEverett,
+    ModelFromPoints,
+    fit,
+    model_from,
+)
 from ._model_file import ModelFileError, header_text, load_model, save_model
 from ._plot import plot
 
 __all__ = [
-    "CODE_MAX", "EVENT_CLAMPED", "EVENT_FULL", "EVENT_NONFINITE", "MAX_DEGREE",
-    "SNAPSHOT_VERSION", "DEFAULT_CAPACITY", "CodeModel", "Compensator", "Fit", "HystError",
-    "Model", "ModelFromPoints", "ModelF32", "ModelF64", "PI", "PIF32", "PIF64", "Status", "Tcm", "__version__",
-    "fit", "plot", "status_str", "ModelFileError", "header_text", "load_model", "save_model",
+    "CODE_MAX", "EVERETT_MAX_DEGREE", "EVENT_CLAMPED", "EVENT_FULL", "EVENT_NONFINITE",
+    "MAX_DEGREE", "SNAPSHOT_VERSION", "DEFAULT_CAPACITY", "CodeModel", "Compensator", "Fit",
+    "HystError", "Model", "ModelFromEverett", "ModelFromPoints", "ModelF32", "ModelF64", "PI",
+    "PIF32", "PIF64", "Status", "Tcm", "__version__", "fit", "model_from", "plot", "status_str",
+    "ModelFileError", "header_text", "load_model", "save_model",
 ]

@@ -10,14 +10,14 @@ DATA: columns separated by blanks, ',' or ';' ('#' lines skipped), as the
 hyst tool reads them; M.hyst: a model file (hyst fit --save, hyst.save_model).
 The model runs in double from rest (A0) over the inputs after --skip, with
 the file's delay applied to the comparison; the compensator (the inverse
-model) is driven by the measured outputs, and its drive is drawn against the
-drive that was applied. Prints the RMS and max error."""
+model; kind poly only) is driven by the measured outputs, and its drive is
+drawn against the drive that was applied. Prints the RMS and max error."""
 import argparse
 import sys
 
 import numpy as np
 
-from ._api import Compensator, Model
+from ._api import Compensator, model_from
 from ._model_file import load_model
 from ._plot import _pyplot
 
@@ -39,12 +39,13 @@ def _plot(argv):
     n = len(x) - d
     if n < 2:
         sys.exit(f"python -m hyst plot: {a.data}: fewer than 2 samples after --skip and the delay")
-    pred = Model(m["coeffs"], m["lo"], m["hi"], capacity=n // 2 + 2).process(
-        np.ascontiguousarray(x[:n]))
+    pred = model_from(m, capacity=n // 2 + 2).process(np.ascontiguousarray(x[:n]))
     meas = y[d:d + n]
     err = pred - meas
-    drive = Compensator(m["coeffs"], m["lo"], m["hi"], capacity=n // 2 + 2).process(
-        np.ascontiguousarray(meas))
+    drive = None
+    if m["kind"] == "poly":  # the library has no inverse of the asymmetric kind
+        drive = Compensator(m["coeffs"], m["lo"], m["hi"], capacity=n // 2 + 2).process(
+            np.ascontiguousarray(meas))
     plt = _pyplot()
     fig, ax = plt.subplots(2, 2, figsize=(11, 7))
     ax[0, 0].plot(x[:n], meas, ".", ms=2, color="0.6", label="measured")
@@ -61,8 +62,11 @@ def _plot(argv):
     ax[1, 0].set(xlabel="sample", ylabel="model - measured",
                  title=f"error: RMS {rms:.4g}, max {peak:.4g}")
     ax[1, 1].plot(k, x[:n], color="0.6", lw=1, label="drive applied")
-    ax[1, 1].plot(k, drive, lw=1, label="compensator's drive for the measured output")
-    ax[1, 1].set(xlabel="sample", ylabel="input", title="compensator")
+    if drive is not None:
+        ax[1, 1].plot(k, drive, lw=1, label="compensator's drive for the measured output")
+    ax[1, 1].set(xlabel="sample", ylabel="input",
+                 title="compensator" if drive is not None else "drive (no compensator of kind "
+                 + m["kind"] + ")")
     ax[1, 1].legend(loc="best")
     fig.tight_layout()
     fig.savefig(a.out)

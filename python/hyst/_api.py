@@ -6,9 +6,10 @@ import numpy as np
 
 from . import _hyst
 from ._errors import HystError
-from ._model_file import header_text, save_model
+from ._model_file import everett_terms, header_text, save_model
 
 MAX_DEGREE = _hyst.MAX_DEGREE
+EVERETT_MAX_DEGREE = _hyst.EVERETT_MAX_DEGREE
 
 #: Turning-point entries per array: never full for inputs taking 4096
 #: distinct values (a 12-bit DAC), HYST_CAPACITY(4096).
@@ -53,6 +54,34 @@ def ModelFromPoints(xs, ys, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inve
         list(map(float, xs)), list(map(float, ys)), int(capacity), bool(inverse))
 
 
+def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
+                     capacity=DEFAULT_CAPACITY, deadband=0.0):
+    """The asymmetric kind (hyst_everett_t): rising from a turning point
+    (b, y_b) the output is y_b + E(x, b), falling from (a, y_a) it is
+    y_a - E(a, x), with E(a, b) the sum of e[i-1][j] w^i t^j over i >= 1,
+    i + j <= degree (1..EVERETT_MAX_DEGREE), w = (a - b) / (hi - lo),
+    t = (b - lo) / (hi - lo). ``terms`` lists e[i-1][j] for i = 1..degree,
+    then j = 0..degree-i (degree 2: w, w t, w^2); ``y_lo`` is the output at
+    lo after reset. The library refuses an E that does not increase in a and
+    decrease in b on the whole triangle (``HystError`` ERR_NOT_MONOTONE)."""
+    m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
+        int(degree), float(lo), float(hi), float(y_lo), list(map(float, terms)), int(capacity))
+    if deadband:
+        m.deadband = deadband
+    return m
+
+
+def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
+    """The model a description gives: a :func:`hyst.load_model` dict (its
+    delay is not the model's: apply it to the comparison) or
+    ``Fit.description()``; kind poly (``coeffs``, ``lo``, ``hi``) when the
+    dict has no ``kind``."""
+    if desc.get("kind", "poly") == "everett":
+        return ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
+                                desc["terms"], dtype=dtype, capacity=capacity)
+    return Model(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity)
+
+
 def PI(thresholds, weights, *, dtype=np.float64):
     """A Prandtl-Ishlinskii model; ``.inverse()`` gives its inverse."""
     return _variant(dtype, _hyst.PIF32, _hyst.PIF64)(
@@ -60,31 +89,45 @@ def PI(thresholds, weights, *, dtype=np.float64):
 
 
 class Fit:
-    """An identified f0 (hyst_ident_fit()) and the model it defines.
+    """An identified model and the model it defines.
 
-    Attributes: ``coeffs`` (highest power first), ``lo``, ``hi``, ``degree``,
-    ``method``, ``rms`` and ``max_abs`` (residuals of the measured samples
-    against the major loop), ``used``, ``rising``, ``falling``,
-    ``increasing``, ``y_lo_est``, ``y_hi_est``, and ``model``, a Model with
-    this f0 at A0. Model calls (``process``, ``step``, ``reset``...) go to
-    ``model``, so a Fit is used as the model itself.
+    ``kind`` is ``"poly"`` (f0 by hyst_ident_fit(): ``coeffs`` highest power
+    first, ``method``, ``rms`` and ``max_abs`` residuals of the measured
+    samples against the major loop, ``used``, ``rising``, ``falling``,
+    ``increasing``, ``y_lo_est``, ``y_hi_est``) or ``"everett"`` (the
+    asymmetric kind's E by hyst_everett_fit_*(): ``terms``, ``y_lo``, ``rms``
+    of the least-squares residuals, ``used``). Both have ``degree``, ``lo``,
+    ``hi``, ``delay``, ``candidates`` and ``model``, the model at A0. Model
+    calls (``process``, ``step``, ``reset``...) go to ``model``, so a Fit is
+    used as the model itself.
     """
 
     def __init__(self, result, dtype, capacity, delay=0, candidates=None):
         self.__dict__.update(result)
-        self.method = {v: k for k, v in _METHODS.items()}[result["method"]]
+        self.kind = result.get("kind", "poly")
+        if self.kind == "poly":
+            self.method = {v: k for k, v in _METHODS.items()}[result["method"]]
         self.delay = int(delay)
         self.candidates = candidates or []
-        self.model = Model(self.coeffs, self.lo, self.hi, dtype=dtype, capacity=capacity)
+        self.model = model_from(self.description(), dtype=dtype, capacity=capacity)
+
+    def description(self):
+        """The model's parameters as :func:`hyst.load_model` returns them
+        (without the delay): ``save_model(path, **fit.description())``."""
+        if self.kind == "everett":
+            return {"kind": "everett", "degree": self.degree, "lo": self.lo, "hi": self.hi,
+                    "y_lo": self.y_lo, "terms": list(self.terms)}
+        return {"kind": "poly", "coeffs": list(self.coeffs), "lo": self.lo, "hi": self.hi}
 
     def save(self, path):
         """Writes the model file (hyst-model-text 1, delay included) that
         ``hyst sim --model`` reads."""
-        save_model(path, self.coeffs, self.lo, self.hi, delay=self.delay)
+        save_model(path, delay=self.delay, **self.description())
 
     def header(self, name):
-        """The firmware header (C source text) declaring ``hyst_poly_t name``."""
-        return header_text(name, self.coeffs, self.lo, self.hi)
+        """The firmware header (C source text) declaring ``hyst_poly_t name``
+        (kind poly) or ``hyst_everett_t name`` (kind everett)."""
+        return header_text(name, **self.description())
 
     def __getattr__(self, name):
         # only called for names not found on the Fit itself
@@ -92,11 +135,16 @@ class Fit:
 
     def predict(self, x):
         """Outputs of a fresh model (at A0) for the inputs x; ``model`` is untouched."""
-        m = Model(self.coeffs, self.lo, self.hi, dtype=self.model.dtype,
-                  capacity=self.model.capacity)
+        m = model_from(self.description(), dtype=self.model.dtype,
+                       capacity=self.model.capacity)
         return m.process(np.ascontiguousarray(x, dtype=self.model.dtype))
 
     def __repr__(self):
+        if self.kind == "everett":
+            t = ", ".join(f"{v:.9g}" for v in self.terms)
+            return (f"Fit(kind='everett', degree={self.degree}, terms=[{t}], "
+                    f"y_lo={self.y_lo:.9g}, lo={self.lo:.9g}, hi={self.hi:.9g}, "
+                    f"rms={self.rms:.6g})")
         c = ", ".join(f"{v:.9g}" for v in self.coeffs)
         return (f"Fit(coeffs=[{c}], lo={self.lo:.9g}, hi={self.hi:.9g}, "
                 f"rms={self.rms:.6g}, max_abs={self.max_abs:.6g}, method={self.method!r})")
@@ -108,11 +156,36 @@ MAX_DELAY = 8
 PARSIMONY = 0.01
 
 
+#: The kinds fit() knows.
+KINDS = ("poly", "everett")
+
+
+def _params(kind, degree):
+    """A candidate's parameter count: f0's coefficients, or E's terms and y_lo."""
+    return degree + 1 if kind == "poly" else everett_terms(degree) + 1
+
+
+def _fit_one(x, y, kind, degree, method, lo, hi, skip, delay):
+    if kind == "everett":
+        return _hyst.fit_everett(x, y, degree, lo, hi, skip, delay)
+    return _hyst.fit(x, y, degree, _METHODS[method], lo, hi, skip, delay)
+
+
+def _refusal(res):
+    """Why the fitted parameters give no model, or None when they do."""
+    if res.get("kind") == "everett":
+        st = res["curve_status"]
+        if st == _hyst.Status.ERR_NOT_MONOTONE:
+            return "E not monotone"
+        return None if st == _hyst.Status.OK else _hyst.Status(st).name
+    return None if res["increasing"] else "f0 not increasing"
+
+
 def _holdout(res, x, y, skip, delay, first):
-    """RMS error of the model (f0 of res, double) over x[skip:n-delay],
-    scored from sample ``first`` on against y[k + delay]."""
+    """RMS error of the model (res, double) over x[skip:n-delay], scored
+    from sample ``first`` on against y[k + delay]."""
     n = len(x) - delay
-    m = Model(res["coeffs"], res["lo"], res["hi"], capacity=(n - skip) // 2 + 2)
+    m = model_from(res, capacity=(n - skip) // 2 + 2)
     pred = m.process(np.ascontiguousarray(x[skip:n]))
     meas = y[skip + delay:n + delay]
     k = slice(first - skip, None)
@@ -121,73 +194,85 @@ def _holdout(res, x, y, skip, delay, first):
     return math.sqrt(float(np.mean(err[ok] ** 2))) if ok.any() else math.nan
 
 
-def _select(x, y, method, lo, hi, skip, delays):
-    """Every candidate (degree, delay): fitted on the first two thirds, scored
-    by its prediction of the last third; the fewest parameters within
-    PARSIMONY of the lowest error win (hyst fit's rule)."""
+def _select(x, y, kinds, method, lo, hi, skip, delays):
+    """Every candidate (kind, degree, delay): fitted on the first two thirds,
+    scored by its prediction of the last third; the fewest parameters within
+    PARSIMONY of the lowest error win (hyst fit's rule), the lower error
+    between candidates with as many parameters."""
     cands, best = [], None
     for d in delays:
         if len(x) <= skip + d:
             break
         train = (2 * (len(x) - skip - d)) // 3
-        for deg in range(1, MAX_DEGREE + 1):
-            c = {"degree": deg, "delay": d, "holdout_rms": math.nan, "fit_rms": math.nan,
-                 "status": "OK"}
-            try:
-                n = skip + train + d  # the training part, as hyst fit passes it
-                res = _hyst.fit(np.ascontiguousarray(x[:n]), np.ascontiguousarray(y[:n]),
-                                deg, _METHODS[method], lo, hi, skip, d)
-                c["fit_rms"] = res["rms"]
-                if res["increasing"]:
-                    c["holdout_rms"] = _holdout(res, x, y, skip, d, skip + train)
-                else:
-                    c["status"] = "f0 not increasing"
-            except HystError as e:
-                c["status"] = e.name
-            if math.isfinite(c["holdout_rms"]) and (
-                    best is None or c["holdout_rms"] < cands[best]["holdout_rms"]):
-                best = len(cands)
-            cands.append(c)
+        for kind in kinds:
+            for deg in range(1, (MAX_DEGREE if kind == "poly" else EVERETT_MAX_DEGREE) + 1):
+                c = {"kind": kind, "degree": deg, "delay": d, "params": _params(kind, deg),
+                     "holdout_rms": math.nan, "fit_rms": math.nan, "status": "OK"}
+                try:
+                    n = skip + train + d  # the training part, as hyst fit passes it
+                    res = _fit_one(np.ascontiguousarray(x[:n]), np.ascontiguousarray(y[:n]),
+                                   kind, deg, method, lo, hi, skip, d)
+                    c["fit_rms"] = res["rms"]
+                    refusal = _refusal(res)
+                    if refusal is None:
+                        c["holdout_rms"] = _holdout(res, x, y, skip, d, skip + train)
+                    else:
+                        c["status"] = refusal
+                except HystError as e:
+                    c["status"] = e.name
+                if math.isfinite(c["holdout_rms"]) and (
+                        best is None or c["holdout_rms"] < cands[best]["holdout_rms"]):
+                    best = len(cands)
+                cands.append(c)
     if best is not None:
         limit = cands[best]["holdout_rms"] * (1 + PARSIMONY)
         for i, c in enumerate(cands):
             b = cands[best]
             if math.isfinite(c["holdout_rms"]) and c["holdout_rms"] <= limit and (
-                    c["degree"] < b["degree"] or
-                    (c["degree"] == b["degree"] and c["holdout_rms"] < b["holdout_rms"])):
+                    c["params"] < b["params"] or
+                    (c["params"] == b["params"] and c["holdout_rms"] < b["holdout_rms"])):
                 best = i
     return cands, best
 
 
-def fit(x, y, degree=3, *, method="joint", domain=None, skip=0, delay=0,
+def fit(x, y, degree=3, *, kind=None, method="joint", domain=None, skip=0, delay=0,
         dtype=np.float64, capacity=DEFAULT_CAPACITY):
-    """Identifies f0 from a recorded drive ``x`` and response ``y`` (hyst_ident_fit()).
+    """Identifies a model from a recorded drive ``x`` and response ``y``.
 
     Sample i (skip <= i < n - delay) pairs x[i] with y[i + delay]; the domain
-    is ``domain=(lo, hi)`` or the range of those inputs. ``method`` is
-    ``"joint"`` (both branches in one least-squares problem) or
-    ``"reflect"`` (the paper's Eq. 14). ``degree=None`` chooses the degree,
-    and ``delay=None`` the delay (0..MAX_DELAY), by hold-out exactly as
-    ``hyst fit`` without --degree does: every candidate is in the result's
-    ``candidates`` (dicts: degree, delay, holdout_rms, fit_rms, status).
-    Returns a :class:`Fit`.
+    is ``domain=(lo, hi)`` or the range of those inputs. ``kind="poly"``
+    fits f0 (hyst_ident_fit(); ``method`` ``"joint"``, both branches in one
+    least-squares problem, or ``"reflect"``, the paper's Eq. 14);
+    ``kind="everett"`` the asymmetric kind's E (hyst_everett_fit_*(), degree
+    1..EVERETT_MAX_DEGREE; the record starts from rest at sample ``skip``,
+    inputs outside the domain are clamped as the model clamps them).
+    ``degree=None`` chooses the degree, and ``delay=None`` the delay
+    (0..MAX_DELAY), by hold-out exactly as ``hyst fit`` without --degree
+    does, the kind too when ``kind`` is None (both kinds compared; the
+    parameter count is degree + 1 for poly, E's terms + 1 for everett):
+    every candidate is in the result's ``candidates`` (dicts: kind, degree,
+    delay, params, holdout_rms, fit_rms, status, chosen). With a degree
+    given, ``kind=None`` means poly. Returns a :class:`Fit`.
     """
     if method not in _METHODS:
         raise ValueError(f"method must be one of {sorted(_METHODS)}, not {method!r}")
+    if kind is not None and kind not in KINDS:
+        raise ValueError(f"kind must be one of {KINDS} or None, not {kind!r}")
     lo, hi = (0.0, 0.0) if domain is None else (float(domain[0]), float(domain[1]))
     x = np.ascontiguousarray(x, dtype=np.float64)
     y = np.ascontiguousarray(y, dtype=np.float64)
     cands = None
     if degree is None:
         delays = range(0, MAX_DELAY + 1) if delay is None else [int(delay)]
-        cands, best = _select(x, y, method, lo, hi, int(skip), delays)
+        kinds = KINDS if kind is None else (kind,)
+        cands, best = _select(x, y, kinds, method, lo, hi, int(skip), delays)
         if best is None:
-            raise ValueError("no candidate degree gave an increasing f0 that could predict "
-                             "the last third of the record")
-        degree, delay = cands[best]["degree"], cands[best]["delay"]
+            raise ValueError("no candidate gave a model (an increasing f0, a monotone E) "
+                             "that could predict the last third of the record")
+        kind, degree, delay = cands[best]["kind"], cands[best]["degree"], cands[best]["delay"]
         for i, c in enumerate(cands):
             c["chosen"] = i == best
     elif delay is None:
         raise ValueError("delay=None (chosen) needs degree=None")
-    res = _hyst.fit(x, y, int(degree), _METHODS[method], lo, hi, int(skip), int(delay))
+    res = _fit_one(x, y, kind or "poly", int(degree), method, lo, hi, int(skip), int(delay))
     return Fit(res, dtype, capacity, delay=delay, candidates=cands)

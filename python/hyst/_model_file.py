@@ -1,28 +1,59 @@
 # SPDX-License-Identifier: MIT
 """Model files in the format hyst-model-text 1, the one ``hyst fit --save``
 writes and ``hyst sim --model`` reads (docs/cli.md, "Model files"), also
-read and written by the MATLAB/Octave functions."""
+read and written by the MATLAB/Octave functions. Two kinds: ``poly`` (f0,
+coefficients highest power first) and ``everett`` (the asymmetric kind's
+branch function E)."""
 import math
 import os
 import tempfile
 
 MAGIC = "hyst-model-text 1"
-_KEYS = ("kind", "lo", "hi", "coeffs", "delay")
+_KEYS = ("kind", "lo", "hi", "coeffs", "delay", "y_lo", "degree", "terms")
+#: Keys each kind needs, and keys only the other kind has.
+_NEEDS = {"poly": ("lo", "hi", "coeffs"), "everett": ("lo", "hi", "y_lo", "degree", "terms")}
+_REFUSES = {"poly": ("y_lo", "degree", "terms"), "everett": ("coeffs",)}
+_MAX_COEFFS = 10  # HYST_MAX_DEGREE + 1 in the default build
+_EVERETT_MAX_DEGREE = 4  # HYST_EVERETT_MAX_DEGREE
+
+
+def everett_terms(degree):
+    """Coefficients of E at total degree ``degree``: w^i t^j, i >= 1, i + j <= degree."""
+    return degree * (degree + 1) // 2
 
 
 class ModelFileError(ValueError):
     """A malformed model file; the message names the file and the line."""
 
 
+def _numbers(path, no, key, values):
+    """The numbers of one line (a whole number for delay and degree)."""
+    whole = key in ("delay", "degree")
+    numbers = []
+    for i, v in enumerate(values, start=2):
+        try:
+            x = float(v)
+        except ValueError:
+            x = math.nan
+        if not math.isfinite(x) or (whole and (x < 0 or x != int(x))):
+            what = {"delay": "a whole number of samples",
+                    "degree": "a whole number"}.get(key, "a finite number")
+            raise ModelFileError(f"{path}:{no}: field {i}: {v!r} is not {what}")
+        numbers.append(x)
+    return numbers
+
+
 def load_model(path):
-    """Reads a model file; returns a dict with ``coeffs`` (highest power
-    first), ``lo``, ``hi`` and ``delay`` (samples, 0 when absent)."""
+    """Reads a model file. Returns a dict: ``kind`` ("poly" or "everett"),
+    ``lo``, ``hi``, ``delay`` (samples, 0 when absent) and, for poly,
+    ``coeffs`` (highest power first); for everett ``y_lo``, ``degree`` and
+    ``terms`` (e[i-1][j] of w^i t^j, i = 1..degree, then j = 0..degree-i)."""
     with open(path, encoding="utf-8") as f:
         lines = f.read().splitlines()
     if not lines or lines[0].strip() != MAGIC:
         first = lines[0].strip() if lines else ""
         raise ModelFileError(f"{path}:1: {first!r} is not {MAGIC!r} (another format or version)")
-    seen = {}
+    seen, where = {}, {}
     for no, line in enumerate(lines[1:], start=2):
         fields = line.split()
         if not fields or fields[0].startswith("#"):
@@ -32,44 +63,97 @@ def load_model(path):
             raise ModelFileError(f"{path}:{no}: field 1: {key!r} is not a key {_KEYS}")
         if key in seen:
             raise ModelFileError(f"{path}:{no}: field 1: {key!r} given twice")
+        where[key] = no
         if key == "kind":
-            if values != ["poly"]:
-                raise ModelFileError(f"{path}:{no}: field 2: kind must be 'poly'")
-            seen[key] = "poly"
+            if len(values) != 1 or values[0] not in _NEEDS:
+                raise ModelFileError(f"{path}:{no}: field 2: kind must be 'poly' or 'everett'")
+            seen[key] = values[0]
             continue
-        if (key == "coeffs" and not 2 <= len(values) <= 10) or (key != "coeffs" and len(values) != 1):
-            raise ModelFileError(f"{path}:{no}: {key} needs "
-                                 f"{'2 to 10 numbers' if key == 'coeffs' else 'one value'}")
-        numbers = []
-        for i, v in enumerate(values, start=2):
-            try:
-                x = float(v)
-            except ValueError:
-                x = math.nan
-            if not math.isfinite(x) or (key == "delay" and (x < 0 or x != int(x))):
-                what = "a whole number of samples" if key == "delay" else "a finite number"
-                raise ModelFileError(f"{path}:{no}: field {i}: {v!r} is not {what}")
-            numbers.append(x)
-        seen[key] = numbers if key == "coeffs" else numbers[0]
-    for key in _KEYS[:4]:
+        if key == "coeffs" and not 2 <= len(values) <= _MAX_COEFFS:
+            raise ModelFileError(f"{path}:{no}: coeffs needs 2 to {_MAX_COEFFS} numbers")
+        if key == "terms" and not values:
+            raise ModelFileError(f"{path}:{no}: terms needs numbers")
+        if key not in ("coeffs", "terms") and len(values) != 1:
+            raise ModelFileError(f"{path}:{no}: {key} needs one value")
+        numbers = _numbers(path, no, key, values)
+        if key == "degree" and not 1 <= numbers[0] <= _EVERETT_MAX_DEGREE:
+            raise ModelFileError(f"{path}:{no}: field 2: degree must be 1 to "
+                                 f"{_EVERETT_MAX_DEGREE}")
+        seen[key] = numbers if key in ("coeffs", "terms") else numbers[0]
+    if "kind" not in seen:
+        raise ModelFileError(f"{path}: the key kind is missing")
+    kind = seen["kind"]
+    for key in _REFUSES[kind]:
+        if key in seen:
+            raise ModelFileError(f"{path}:{where[key]}: field 1: {key!r} is not a key of "
+                                 f"kind {kind}")
+    for key in _NEEDS[kind]:
         if key not in seen:
             raise ModelFileError(f"{path}: the key {key} is missing")
-    return {"coeffs": seen["coeffs"], "lo": seen["lo"], "hi": seen["hi"],
-            "delay": int(seen.get("delay", 0))}
+    model = {"kind": kind, "lo": seen["lo"], "hi": seen["hi"], "delay": int(seen.get("delay", 0))}
+    if kind == "poly":
+        model["coeffs"] = seen["coeffs"]
+        return model
+    degree = int(seen["degree"])
+    if len(seen["terms"]) != everett_terms(degree):
+        raise ModelFileError(f"{path}:{where['terms']}: terms needs {everett_terms(degree)} "
+                             f"numbers for degree {degree}, not {len(seen['terms'])}")
+    model.update(y_lo=seen["y_lo"], degree=degree, terms=seen["terms"])
+    return model
 
 
-def save_model(path, coeffs, lo, hi, delay=0):
+def _everett_args(degree, y_lo, terms):
+    """Checks an everett description; returns (degree, y_lo, terms) as numbers."""
+    if degree is None or y_lo is None or terms is None:
+        raise ValueError("kind 'everett' needs degree, y_lo and terms")
+    if int(degree) != degree or not 1 <= degree <= _EVERETT_MAX_DEGREE:
+        raise ValueError(f"degree must be a whole number 1 to {_EVERETT_MAX_DEGREE}")
+    terms = [float(t) for t in terms]
+    if len(terms) != everett_terms(int(degree)):
+        raise ValueError(f"degree {int(degree)} needs {everett_terms(int(degree))} terms")
+    if not all(math.isfinite(v) for v in terms + [float(y_lo)]):
+        raise ValueError("terms and y_lo must be finite")
+    return int(degree), float(y_lo), terms
+
+
+def _poly_args(coeffs, kind, degree, y_lo, terms):
+    """Checks a poly description; returns its coefficients as numbers."""
+    if kind != "poly":
+        raise ValueError(f"kind must be 'poly' or 'everett', not {kind!r}")
+    if degree is not None or y_lo is not None or terms is not None:
+        raise ValueError("degree, y_lo and terms belong to kind 'everett'")
+    coeffs = [float(c) for c in coeffs] if coeffs is not None else []
+    if not 2 <= len(coeffs) <= _MAX_COEFFS or not all(math.isfinite(v) for v in coeffs):
+        raise ValueError(f"2 to {_MAX_COEFFS} finite coefficients are needed")
+    return coeffs
+
+
+def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", degree=None,
+               y_lo=None, terms=None):
     """Writes a model file (17 significant digits: the same doubles read
-    back), replacing ``path`` whole or not at all."""
-    coeffs = [float(c) for c in coeffs]
-    if not 2 <= len(coeffs) <= 10 or not all(math.isfinite(v) for v in coeffs + [lo, hi]):
-        raise ValueError("2 to 10 finite coefficients and a finite domain are needed")
+    back), replacing ``path`` whole or not at all. ``kind="everett"`` writes
+    the asymmetric kind from ``degree``, ``y_lo`` and ``terms`` (no
+    ``coeffs``). ``save_model(path, **load_model(other))`` copies a file."""
+    if lo is None or hi is None or not all(math.isfinite(float(v)) for v in (lo, hi)):
+        raise ValueError("a finite domain lo, hi is needed")
     if int(delay) != delay or delay < 0:
         raise ValueError("delay must be a whole number of samples")
-    text = (f"{MAGIC}\n# hyst model: f0 on [lo, hi], coefficients highest power first, "
-            f"the output {int(delay)} samples after its input (docs/cli.md)\n"
-            f"kind poly\nlo {float(lo):.17g}\nhi {float(hi):.17g}\ndelay {int(delay)}\n"
-            "coeffs " + " ".join(f"{c:.17g}" for c in coeffs) + "\n")
+    if kind == "everett":
+        if coeffs is not None:
+            raise ValueError("kind 'everett' has terms, not coeffs")
+        degree, y_lo, terms = _everett_args(degree, y_lo, terms)
+        text = (f"{MAGIC}\n# hyst model: asymmetric, branch function E on [lo, hi] "
+                "(output at lo y_lo), terms e[i-1][j] of w^i t^j for i = 1..degree, "
+                f"j = 0..degree-i, the output {int(delay)} samples after its input "
+                f"(docs/cli.md)\nkind everett\nlo {float(lo):.17g}\nhi {float(hi):.17g}\n"
+                f"y_lo {y_lo:.17g}\ndelay {int(delay)}\ndegree {degree}\n"
+                "terms " + " ".join(f"{t:.17g}" for t in terms) + "\n")
+    else:
+        coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
+        text = (f"{MAGIC}\n# hyst model: f0 on [lo, hi], coefficients highest power first, "
+                f"the output {int(delay)} samples after its input (docs/cli.md)\n"
+                f"kind poly\nlo {float(lo):.17g}\nhi {float(hi):.17g}\ndelay {int(delay)}\n"
+                "coeffs " + " ".join(f"{c:.17g}" for c in coeffs) + "\n")
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=os.path.basename(path) + ".")
     try:
@@ -84,23 +168,42 @@ def save_model(path, coeffs, lo, hi, delay=0):
         raise
 
 
-def header_text(name, coeffs, lo, hi):
-    """C header declaring ``static const hyst_poly_t name`` (the firmware's
-    f0), as ``hyst fit --header`` writes it: 17-digit literals in
-    HYST_REAL_C(), exact in a double build (HYST_USE_DOUBLE)."""
+def _literal(v):
+    """A 17-digit C literal in HYST_REAL_C() (exact in a double build)."""
+    t = f"{float(v):.17g}"
+    return f"HYST_REAL_C({t if any(ch in t for ch in '.eEn') else t + '.0'})"
+
+
+def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,
+                terms=None, delay=0):
+    """C header declaring the firmware's model as ``hyst fit --header``
+    writes it: ``static const hyst_poly_t name`` (f0), or for
+    ``kind="everett"`` ``static const hyst_everett_t name`` (degree, lo, hi,
+    y_lo, e[i-1][j]); 17-digit literals in HYST_REAL_C(), exact in a double
+    build (HYST_USE_DOUBLE). ``delay`` is not part of a header; it is
+    accepted so that a :func:`load_model` dict can be passed whole."""
     if not name.isidentifier() or not name.isascii():
         raise ValueError(f"{name!r} is not a C identifier")
-    coeffs = [float(c) for c in coeffs]
-
-    def lit(v):
-        t = f"{float(v):.17g}"
-        return t if any(ch in t for ch in ".eEn") else t + ".0"
-
+    del delay
     guard = name.upper() + "_H"
-    body = ",\n     ".join(f"HYST_REAL_C({lit(c)})" for c in coeffs)
-    return (f"/* Generated by the Python package hyst: major ascending curve f0,\n"
-            f" * degree {len(coeffs) - 1}, domain [{float(lo):.9g}, {float(hi):.9g}]. */\n"
+    if kind == "everett":
+        degree, y_lo, terms = _everett_args(degree, y_lo, terms)
+        rows, k = [], 0
+        for i in range(1, degree + 1):
+            n = degree - i + 1  # j = 0..degree - i
+            rows.append("{" + ", ".join(_literal(t) for t in terms[k:k + n]) + "}")
+            k += n
+        what = (f"asymmetric model (branch function E),\n * degree {degree}, "
+                f"domain [{float(lo):.9g}, {float(hi):.9g}]")
+        decl = (f"static const hyst_everett_t {name} = {{\n    {degree}u, {_literal(lo)}, "
+                f"{_literal(hi)}, {_literal(y_lo)},\n    {{" + ",\n     ".join(rows) + "}};")
+    else:
+        coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
+        body = ",\n     ".join(_literal(c) for c in coeffs)
+        what = (f"major ascending curve f0,\n * degree {len(coeffs) - 1}, "
+                f"domain [{float(lo):.9g}, {float(hi):.9g}]")
+        decl = (f"static const hyst_poly_t {name} = {{\n    {len(coeffs) - 1}u, "
+                f"{_literal(lo)}, {_literal(hi)},\n    {{{body}}}}};")
+    return (f"/* Generated by the Python package hyst: {what}. */\n"
             f"#ifndef {guard}\n#define {guard}\n\n#include \"hyst/curve.h\"\n\n"
-            f"static const hyst_poly_t {name} = {{\n    {len(coeffs) - 1}u, "
-            f"HYST_REAL_C({lit(lo)}), HYST_REAL_C({lit(hi)}),\n    {{{body}}}}};\n\n"
-            f"#endif /* {guard} */\n")
+            f"{decl}\n\n#endif /* {guard} */\n")

@@ -56,6 +56,34 @@ hyst_poly_t make_poly(const std::vector<double> &coeffs, double lo, double hi)
     return f0;
 }
 
+/* Coefficients of E at total degree n: w^i t^j, i >= 1, i + j <= n. */
+size_t everett_terms(unsigned degree) { return static_cast<size_t>(degree) * (degree + 1u) / 2u; }
+
+/* A branch function E from its terms, ordered i = 1..degree, then
+ * j = 0..degree - i (the model file's order). */
+hyst_everett_t make_everett(unsigned degree, double lo, double hi, double y_lo,
+                            const std::vector<double> &terms)
+{
+    hyst_everett_t e{};
+    if (degree < 1u || degree > HYST_EVERETT_MAX_DEGREE) {
+        raise_status(HYST_ERR_DEGREE, "E needs a degree of 1 .. HYST_EVERETT_MAX_DEGREE");
+    }
+    if (terms.size() != everett_terms(degree)) {
+        raise_status(HYST_ERR_ARG, "E of degree n needs n (n + 1) / 2 terms");
+    }
+    e.degree = degree;
+    e.lo = lo;
+    e.hi = hi;
+    e.y_lo = y_lo;
+    size_t k = 0u;
+    for (unsigned i = 1u; i <= degree; ++i) {
+        for (unsigned j = 0u; i + j <= degree; ++j) {
+            e.e[i - 1u][j] = terms[k++];
+        }
+    }
+    return e;
+}
+
 /* The library's functions of one real variant, by number type. */
 template <class T> struct Ops;
 #define HYST_PY_OPS(T, P, NAME)                                             \
@@ -64,6 +92,7 @@ template <class T> struct Ops;
         static constexpr auto init_inverse = hyst_##P##_init_inverse_;      \
         static constexpr auto init_curve = hyst_##P##_init_curve_;          \
         static constexpr auto curve_from_pwl = hyst_##P##_curve_from_pwl_;  \
+        static constexpr auto curve_from_everett = hyst_##P##_curve_from_everett_; \
         static constexpr auto step = hyst_##P##_step;                       \
         static constexpr auto process = hyst_##P##_process;                 \
         static constexpr auto set_deadband = hyst_##P##_set_deadband;       \
@@ -115,8 +144,11 @@ template <class X, class Y, class Fn> nb::object block(const In<X> &x, nb::handl
 struct Tcm {
     hyst_tcm_t S{};
     int block_status = HYST_OK; /* returned by the last process() */
-    std::vector<double> coeffs; /* f0, highest power first */
+    const char *kind = "poly";  /* the curve's kind: poly, pwl or everett */
+    std::vector<double> coeffs; /* poly: f0, highest power first */
+    std::vector<double> terms;  /* everett: E's coefficients, as make_everett() takes them */
     double lo = 0.0, hi = 0.0;
+    double y_lo = 0.0;          /* everett: the output at lo */
 
     Tcm() = default;
     Tcm(const Tcm &) = delete;
@@ -151,7 +183,7 @@ template <class X, class Y> struct Owned : Tcm {
 template <class T> struct Real : Owned<T, T> {
     using O = Ops<T>;
     hyst_curve_t inv{}; /* the compensator's inverse curve (the instance points at it) */
-    hyst_curve_t fwd{}; /* a piecewise-linear f0 (the instance or inv points at it) */
+    hyst_curve_t fwd{}; /* a piecewise-linear f0 or an E (the instance or inv points at it) */
     std::vector<T> bx, by; /* its breakpoints (fwd points at them) */
     bool inverse;
     double deadband = 0.0;
@@ -174,8 +206,26 @@ template <class T> struct Real : Owned<T, T> {
         check(O::init_curve(&this->S, c, this->xl.data(), this->yl.data(), this->xr.data(),
                             this->yr.data(), capacity, HYST_LAYOUT),
               inverse ? "compensator init" : "model init");
+        this->kind = "pwl";
         this->lo = xs.empty() ? 0.0 : xs.front();
         this->hi = xs.empty() ? 0.0 : xs.back();
+    }
+
+    /* The asymmetric kind: a branch function E (make_everett()). */
+    Real(unsigned degree, double lo_, double hi_, double y_lo_, const std::vector<double> &terms_,
+         size_t capacity)
+        : Owned<T, T>(capacity), inverse(false)
+    {
+        const hyst_everett_t e = make_everett(degree, lo_, hi_, y_lo_, terms_);
+        check(O::curve_from_everett(&fwd, &e, HYST_LAYOUT), "curve");
+        check(O::init_curve(&this->S, &fwd, this->xl.data(), this->yl.data(), this->xr.data(),
+                            this->yr.data(), capacity, HYST_LAYOUT),
+              "model init");
+        this->kind = "everett";
+        this->terms = terms_;
+        this->lo = lo_;
+        this->hi = hi_;
+        this->y_lo = y_lo_;
     }
 
     Real(const std::vector<double> &c, double lo_, double hi_, size_t capacity, bool inverse_)
@@ -326,6 +376,68 @@ nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int meth
 }
 
 /*
+ * Identification of the asymmetric kind's E (hyst_everett_fit_*) from
+ * recorded arrays, as fit() does f0: sample i (skip <= i < n - delay) pairs
+ * x[i] with y[i + delay], the record starting from rest at sample skip; the
+ * domain is [lo, hi] or, when lo == hi, the range of those x. Inputs are
+ * clamped to the domain, as the model clamps them. curve_status is what
+ * hyst_f64_curve_from_everett() says of the result (HYST_ERR_NOT_MONOTONE:
+ * not a usable E).
+ */
+nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, double lo,
+                     double hi, size_t skip, size_t delay)
+{
+    const size_t n = x.shape(0);
+    if (y.shape(0) != n) {
+        raise_status(HYST_ERR_ARG, "x and y differ in length");
+    }
+    if (skip >= n || delay >= n - skip) {
+        raise_status(HYST_ERR_ARG, "skip + delay leaves no sample");
+    }
+    const size_t count = n - skip - delay;
+    const double *px = x.data() + skip, *py = y.data() + skip + delay;
+    if (lo == hi) {
+        check(hyst_ident_domain(px, count, &lo, &hi), "fit");
+    }
+    /* a record of count samples stacks at most count + 1 turning points */
+    std::vector<hyst_wide_t> work(HYST_EVERETT_FIT_WORK(count + 2u));
+    hyst_everett_fit_t fit;
+    check(hyst_everett_fit_init(&fit, degree, lo, hi, work.data(), work.size()), "fit");
+    size_t used = 0u;
+    for (size_t i = 0u; i < count; ++i) {
+        const double xi = px[i] < lo ? lo : (px[i] > hi ? hi : px[i]); /* NaN stays NaN */
+        const int st = hyst_everett_fit_add(&fit, xi, py[i]);
+        if (st == HYST_ERR_NOSPACE) {
+            raise_status(st, "fit");
+        }
+        if (st == HYST_OK) {
+            ++used;
+        }
+    }
+    hyst_everett_t e;
+    hyst_wide_t rms = 0.0;
+    check(hyst_everett_fit_solve(&fit, &e, &rms), "fit");
+    hyst_curve_t curve;
+    std::vector<double> terms;
+    for (unsigned i = 1u; i <= e.degree; ++i) {
+        for (unsigned j = 0u; i + j <= e.degree; ++j) {
+            terms.push_back(e.e[i - 1u][j]);
+        }
+    }
+    nb::dict d;
+    d["kind"] = "everett";
+    d["degree"] = e.degree;
+    d["lo"] = e.lo;
+    d["hi"] = e.hi;
+    d["y_lo"] = e.y_lo;
+    d["terms"] = terms;
+    d["rms"] = rms;
+    d["used"] = used;
+    d["curve_status"] = static_cast<int>(hyst_f64_curve_from_everett(&curve, &e));
+    return d;
+}
+
+/*
  * Binds process(x, out=None) of class C: numpy arrays of the input dtype map
  * without a copy, other arrays and sequences go through numpy.asarray.
  */
@@ -356,6 +468,8 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
              "lo"_a, "hi"_a, "capacity"_a, "inverse"_a)
         .def(nb::init<const std::vector<double> &, const std::vector<double> &, size_t, bool>(),
              "xs"_a, "ys"_a, "capacity"_a, "inverse"_a)
+        .def(nb::init<unsigned, double, double, double, const std::vector<double> &, size_t>(),
+             "degree"_a, "lo"_a, "hi"_a, "y_lo"_a, "terms"_a, "capacity"_a)
         .def("step", &R::step, "x"_a, "One sample in, one output out.")
         .def_prop_rw("deadband", [](const R &s) { return s.deadband; }, &R::set_deadband)
         .def_prop_ro("output", [](const R &s) { return Ops<T>::output(&s.S); })
@@ -393,6 +507,7 @@ NB_MODULE(_hyst, m)
     m.doc() = "The hyst C library (instances owning their memory); see the package hyst.";
     m.attr("__version__") = HYST_VERSION_STRING;
     m.attr("MAX_DEGREE") = HYST_MAX_DEGREE;
+    m.attr("EVERETT_MAX_DEGREE") = HYST_EVERETT_MAX_DEGREE;
     m.attr("CODE_MAX") = static_cast<unsigned long>(HYST_CODE_MAX);
     m.attr("SNAPSHOT_VERSION") = HYST_SNAPSHOT_VERSION;
     m.attr("EVENT_NONFINITE") = HYST_EVENT_NONFINITE;
@@ -424,7 +539,8 @@ NB_MODULE(_hyst, m)
         .value("ERR_LAYOUT", HYST_ERR_LAYOUT)
         .value("ERR_OVERLAP", HYST_ERR_OVERLAP)
         .value("ERR_BUSY", HYST_ERR_BUSY)
-        .value("ERR_ILL_CONDITIONED", HYST_ERR_ILL_CONDITIONED);
+        .value("ERR_ILL_CONDITIONED", HYST_ERR_ILL_CONDITIONED)
+        .value("ERR_NOT_MONOTONE", HYST_ERR_NOT_MONOTONE);
 
     nb::class_<Tcm>(m, "Tcm", "What every TCM instance has (model, compensator, code model).")
         .def("reset", [](Tcm &s) { hyst_reset(&s.S); }, "Back at A0 = (lo, f0(lo)).")
@@ -439,9 +555,12 @@ NB_MODULE(_hyst, m)
         .def_prop_ro("rising", [](const Tcm &s) { return hyst_rising(&s.S) != 0; })
         .def_prop_ro("capacity", [](const Tcm &s) { return hyst_capacity(&s.S); })
         .def_ro("block_status", &Tcm::block_status)
+        .def_prop_ro("kind", [](const Tcm &s) { return s.kind; })
         .def_ro("coeffs", &Tcm::coeffs)
+        .def_ro("terms", &Tcm::terms)
         .def_ro("lo", &Tcm::lo)
-        .def_ro("hi", &Tcm::hi);
+        .def_ro("hi", &Tcm::hi)
+        .def_ro("y_lo", &Tcm::y_lo);
 
     bind_real<float>(m, "ModelF32", "PIF32");
     bind_real<double>(m, "ModelF64", "PIF64");
@@ -463,5 +582,7 @@ NB_MODULE(_hyst, m)
     def_process<hyst_code_word_t, Code>(code_cls);
 
     m.def("fit", &fit, "x"_a, "y"_a, "degree"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
+          "delay"_a);
+    m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a);
 }

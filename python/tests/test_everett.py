@@ -1,0 +1,219 @@
+# SPDX-License-Identifier: MIT
+"""The asymmetric kind (hyst.ModelFromEverett, fit(kind="everett")):
+against a plain double reference written here (a list of turning points
+and the direct formula), block call, float32, snapshots, refusals, and the
+identification of a known E from a noisy record."""
+import math
+
+import numpy as np
+import pytest
+
+import hyst
+from conftest import same_bits, signal
+from hyst._api import MAX_DELAY
+
+# an asymmetric E of degree 3 on [0, 10]: loops grow with their lower end
+# (w t) and their width enters to the third power
+E3 = {"degree": 3, "lo": 0.0, "hi": 10.0, "y_lo": -1.0,
+      "terms": [8.0, 3.0, -1.0, 2.0, 1.0, -0.5]}
+
+
+def e_value(e, a, b):
+    """E(a, b) summed term by term: w^i t^j, i = 1..degree, j = 0..degree - i."""
+    span = e["hi"] - e["lo"]
+    w, t = (a - b) / span, (b - e["lo"]) / span
+    k, total = 0, 0.0
+    for i in range(1, e["degree"] + 1):
+        for j in range(0, e["degree"] - i + 1):
+            total += e["terms"][k] * w ** i * t ** j
+            k += 1
+    return total
+
+
+def reference(e, xs):
+    """Madelung's rules on a list of turning points (LTPs at even places, A0
+    first): rising from (b, y_b) y = y_b + E(x, b), falling from (a, y_a)
+    y = y_a - E(a, x); passing the TP before the current one wipes out both;
+    at lo every loop is closed. Inputs clamped to the domain, NaN and
+    infinities ignored."""
+    tx, ty = [e["lo"]], [e["y_lo"]]
+    x_prev, y = e["lo"], e["y_lo"]
+    out = []
+    for x in xs:
+        if not math.isfinite(x):
+            out.append(y)
+            continue
+        x = min(max(float(x), e["lo"]), e["hi"])
+        rising = (len(tx) - 1) % 2 == 0
+        if x > x_prev:
+            if not rising:
+                tx.append(x_prev)
+                ty.append(y)
+            while len(tx) >= 3 and x >= tx[-2]:
+                del tx[-2:], ty[-2:]
+            y = ty[-1] + e_value(e, x, tx[-1])
+        elif x < x_prev:
+            if rising:
+                tx.append(x_prev)
+                ty.append(y)
+            while len(tx) >= 3 and x <= tx[-2]:
+                del tx[-2:], ty[-2:]
+            y = ty[-1] - e_value(e, tx[-1], x)
+            if x <= e["lo"]:
+                tx, ty, y = [e["lo"]], [e["y_lo"]], e["y_lo"]
+        x_prev = x
+        out.append(y)
+    return np.array(out)
+
+
+def output_range(e):
+    return e_value(e, e["hi"], e["lo"])
+
+
+@pytest.mark.parametrize("e", [
+    E3,
+    {"degree": 2, "lo": 0.0, "hi": 3.6000000000000001, "y_lo": -0.035382239014971697,
+     "terms": [0.61, 0.02, -0.1]},
+    {"degree": 4, "lo": -5.0, "hi": 15.0, "y_lo": 2.0,
+     "terms": [4.0, 1.0, 0.5, -0.2, 1.0, 0.3, -0.1, 0.5, 0.1, -0.3]},
+])
+def test_float64_equals_the_reference(e):
+    x = signal(8000, e["lo"], e["hi"], seed=21, nonfinite=True)
+    want = reference(e, x)
+    m = hyst.ModelFromEverett(**e)
+    got = m.process(x)
+    err = np.max(np.abs(got - want))  # NaN would fail the comparison below
+    assert err <= 1e-9 * output_range(e), err
+    assert m.kind == "everett" and m.terms == e["terms"] and m.y_lo == e["y_lo"]
+    assert (m.lo, m.hi, m.coeffs) == (e["lo"], e["hi"], [])
+    assert m.block_status == hyst.Status.ERR_NONFINITE  # NaN samples ignored, as in firmware
+    # E's t terms matter on this signal: without them (a symmetric TCM) the
+    # output differs, so the agreement above checks them too
+    k, width_only = 0, []
+    for i in range(1, e["degree"] + 1):
+        for j in range(0, e["degree"] - i + 1):
+            width_only.append(e["terms"][k] if j == 0 else 0.0)
+            k += 1
+    symmetric = reference(dict(e, terms=width_only), x)
+    assert np.max(np.abs(symmetric - want)) > 1e-3 * output_range(e)
+
+
+@pytest.mark.parametrize("dtype, tol", [(np.float64, 1e-9), (np.float32, 2e-5)])
+def test_step_equals_block_and_float32_follows(dtype, tol):
+    x = signal(5000, 0.0, 10.0, seed=22).astype(dtype)
+    a = hyst.ModelFromEverett(**E3, dtype=dtype)
+    b = hyst.ModelFromEverett(**E3, dtype=dtype)
+    ya = a.process(x)
+    yb = np.array([b.step(v) for v in x], dtype=dtype)
+    assert a.dtype == np.dtype(dtype).name and ya.dtype == dtype
+    assert same_bits(ya, yb)
+    assert np.max(np.abs(ya - reference(E3, x.astype(np.float64)))) <= tol * output_range(E3)
+    assert a.block_status == hyst.Status.WARN_CLAMPED  # signal() has samples outside
+
+
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_snapshot_continues_bit_for_bit(dtype):
+    x = signal(6000, 0.0, 10.0, seed=23).astype(dtype)
+    a = hyst.ModelFromEverett(**E3, dtype=dtype, capacity=64)
+    a.process(x[:3000])
+    b = hyst.ModelFromEverett(**E3, dtype=dtype, capacity=64)
+    b.restore(a.save())
+    assert b.tp_count == a.tp_count > 0
+    assert same_bits(a.process(x[3000:]), b.process(x[3000:]))
+    # taken with another E: refused
+    other = dict(E3, terms=[7.0] + E3["terms"][1:])
+    with pytest.raises(hyst.HystError) as err:
+        hyst.ModelFromEverett(**other, dtype=dtype, capacity=64).restore(a.save())
+    assert err.value.name == "ERR_CURVE"
+
+
+@pytest.mark.parametrize("change, name", [
+    ({"terms": [0.61, 0.02, -1.0], "degree": 2}, "ERR_NOT_MONOTONE"),
+    ({"degree": 5, "terms": [1.0] * 15}, "ERR_DEGREE"),
+    ({"degree": 0, "terms": []}, "ERR_DEGREE"),
+    ({"terms": [1.0, 0.0]}, "ERR_ARG"),
+    ({"lo": 10.0, "hi": 0.0}, "ERR_DOMAIN"),
+    ({"terms": [math.nan] + E3["terms"][1:]}, "ERR_COEFF"),
+])
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_refusals_raise_the_status(change, name, dtype):
+    with pytest.raises(hyst.HystError) as err:
+        hyst.ModelFromEverett(**dict(E3, **change), dtype=dtype)
+    assert err.value.name == name and err.value.status == getattr(hyst.Status, name)
+
+
+def noisy_record(e, n, seed, delay=0, noise=1e-3):
+    """The plant (a model of the asymmetric kind) driven by nested minor loops
+    and random sweeps, its output with Gaussian noise (noise x the range),
+    read `delay` samples late."""
+    x = np.clip(signal(n, e["lo"], e["hi"], seed=seed, outside=False), e["lo"], e["hi"])
+    y = hyst.ModelFromEverett(**e).process(x)
+    y = y + noise * output_range(e) * np.random.default_rng(seed).standard_normal(n)
+    return x, np.concatenate([np.full(delay, y[0]), y[:n - delay]])
+
+
+def test_fit_recovers_a_known_e():
+    x, y = noisy_record(E3, 6000, seed=31)
+    f = hyst.fit(x, y, 3, kind="everett", domain=(E3["lo"], E3["hi"]))
+    assert f.kind == "everett" and f.degree == 3 and len(f.terms) == 6
+    assert np.max(np.abs(np.array(f.terms) - E3["terms"])) < 0.1  # terms up to 8
+    assert abs(f.y_lo - E3["y_lo"]) < 0.02
+    sigma = 1e-3 * output_range(E3)
+    assert 0.9 * sigma < f.rms < 1.1 * sigma  # the noise, nothing more
+    assert f.used == len(x)
+    # the fitted model predicts a record it has not seen, within the noise
+    xt = np.clip(signal(4000, 0.0, 10.0, seed=32, outside=False), 0.0, 10.0)
+    err = f.predict(xt) - hyst.ModelFromEverett(**E3).process(xt)
+    assert np.sqrt(np.mean(err ** 2)) < sigma
+    # a Fit is the model; its description builds the same model
+    assert np.array_equal(f.process(xt), hyst.model_from(f.description()).process(xt))
+
+
+def test_auto_choice_prefers_the_asymmetric_kind_on_an_asymmetric_plant():
+    x, y = noisy_record(E3, 6000, seed=33, delay=2)
+    f = hyst.fit(x, y, None, delay=None, domain=(E3["lo"], E3["hi"]))
+    assert (f.kind, f.degree, f.delay) == ("everett", 3, 2)
+    assert len(f.candidates) == (MAX_DELAY + 1) * (hyst.MAX_DEGREE + hyst.EVERETT_MAX_DEGREE)
+    chosen = [c for c in f.candidates if c["chosen"]]
+    assert len(chosen) == 1 and chosen[0]["params"] == 6 + 1
+    poly = [c for c in f.candidates if c["kind"] == "poly" and np.isfinite(c["holdout_rms"])]
+    assert min(c["holdout_rms"] for c in poly) > 5 * chosen[0]["holdout_rms"]
+    assert {c["params"] for c in f.candidates if c["kind"] == "everett"} == {2, 4, 7, 11}
+    # forced to poly, the choice stays within the symmetric kind
+    g = hyst.fit(x, y, None, delay=2, kind="poly", domain=(E3["lo"], E3["hi"]))
+    assert g.kind == "poly" and {c["kind"] for c in g.candidates} == {"poly"}
+
+
+def test_auto_choice_on_major_loops_of_a_symmetric_plant_keeps_the_polynomial():
+    """Major loops alone (what the polynomial kind's identification wants)
+    cannot tell E's t terms apart: those candidates are reported refused,
+    and the polynomial of the plant's degree is chosen."""
+    coeffs = [0.02, 0.3, 1.0, 0.0]  # f0 on [0, 10], increasing
+    x = 5.0 - 5.0 * np.cos(2 * np.pi * np.arange(6000) / 300)
+    y = hyst.Model(coeffs, 0.0, 10.0).process(x)
+    y = y + 1e-3 * (y.max() - y.min()) * np.random.default_rng(34).standard_normal(len(y))
+    f = hyst.fit(x, y, None, domain=(0.0, 10.0))
+    assert (f.kind, f.degree, f.delay) == ("poly", 3, 0)
+    status = {c["degree"]: c["status"] for c in f.candidates if c["kind"] == "everett"}
+    assert status == {1: "OK", 2: "E not monotone", 3: "ERR_SINGULAR", 4: "ERR_SINGULAR"}
+
+
+def test_fit_errors():
+    x = np.array([0.0, 1.0, 0.0, 1.0, 0.0])
+    with pytest.raises(hyst.HystError) as err:
+        hyst.fit(x, x, 3, kind="everett")
+    assert err.value.name == "ERR_SINGULAR"
+    with pytest.raises(hyst.HystError) as err:
+        hyst.fit(np.linspace(0, 1, 50), np.linspace(0, 1, 50), 5, kind="everett")
+    assert err.value.name == "ERR_DEGREE"
+    with pytest.raises(hyst.HystError) as err:
+        hyst.fit(x, x[:3], 1, kind="everett")
+    assert err.value.name == "ERR_ARG"
+    with pytest.raises(ValueError, match="kind"):
+        hyst.fit(x, x, 1, kind="preisach")
+    # an E that is not monotone is refused when the Fit builds its model
+    t = np.linspace(0, 1, 400)
+    up_down = np.abs(np.sin(6 * np.pi * t))
+    with pytest.raises(hyst.HystError) as err:
+        hyst.fit(up_down, -up_down, 2, kind="everett")
+    assert err.value.name == "ERR_NOT_MONOTONE"
