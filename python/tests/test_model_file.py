@@ -64,14 +64,21 @@ def test_fit_chooses_as_the_cli_and_the_header_reproduces_it(c_build, tmp_path):
     x, y = d[:, 0], d[:, 4]
     f = hyst.fit(x, y, degree=None, delay=None, skip=350, kind="poly")  # the CLI's kinds
     assert f.degree <= 5 and len(f.candidates) == 81
-    cli = subprocess.run([str(c_build["cli"]), "fit", "--skip", "350", "--xcol", "1",
-                          "--ycol", "5", DATA], check=True, capture_output=True,
+    cli = subprocess.run([str(c_build["cli"]), "fit", "--kind", "tcm", "--skip", "350",
+                          "--xcol", "1", "--ycol", "5", DATA], check=True, capture_output=True,
                          text=True).stdout
     assert f"# chosen by hold-out: degree {f.degree}, delay {f.delay} " in cli
     scored = [c for c in f.candidates if np.isfinite(c["holdout_rms"])]
     for c in scored:  # the same scores, printed by the CLI with 6 digits
         assert f"# candidate degree {c['degree']} delay {c['delay']}: hold-out rms " \
                f"{c['holdout_rms']:.6g}," in cli
+
+    # with both kinds, both choose the same model
+    a = hyst.fit(x, y, degree=None, delay=None, skip=350)
+    cli = subprocess.run([str(c_build["cli"]), "fit", "--skip", "350", "--xcol", "1",
+                          "--ycol", "5", DATA], check=True, capture_output=True,
+                         text=True).stdout
+    assert f"# chosen by hold-out: degree {a.degree}, delay {a.delay} (kind {a.kind}," in cli
 
     model = tmp_path / "m.hyst"
     f.save(model)
