@@ -9,7 +9,8 @@
 #  - fit --save, then sim --model prints what the library gives for the
 #    saved model (everett_run), the delay applied, bit for bit;
 #  - the headers of fit --header and header --model compile (float and
-#    double) and hold the saved numbers; inv --model refuses the kind;
+#    double) and hold the saved numbers; inv --model gives back the inputs
+#    of the model's outputs (the asymmetric compensator, to 1e-9 of the span);
 #  - a fit the library refuses (E falling) exits 2 and writes nothing.
 #   everett.sh <hyst> <everett_run> <C compiler> <include dir> <work dir> <measured record>
 set -euo pipefail
@@ -95,11 +96,13 @@ for h in f0_asym f0_hdr; do
 done
 grep -q '^ \* output follows its input 2 samples later' f0_hdr.h || fail "header --model: the delay comment"
 
-# ---- inv: no compensator for this kind yet ----
-rc=0
-"$tool" inv --model m.hyst y.txt > inv.txt 2> inv_err.txt || rc=$?
-[ "$rc" -eq 1 ] && [ ! -s inv.txt ] || fail "inv --model: exit $rc"
-grep -q 'the asymmetric kind (kind everett) has no compensator in this build' inv_err.txt || fail "inv: $(cat inv_err.txt)"
+# ---- inv: the compensator gives back the inputs of the model's outputs ----
+"$tool" inv --model m.hyst --digits 17 lib.txt > inv.txt 2> inv_err.txt || fail "inv --model: $(cat inv_err.txt)"
+grep -q 'delay of 2 samples is not compensated' inv_err.txt || fail "inv: the delay note: $(cat inv_err.txt)"
+paste -d' ' inv.txt x.txt | awk -v lo="$(val lo)" -v hi="$(val hi)" '
+    { d = $1 - $2; if (d < 0) d = -d; if (d > worst) worst = d; n++ }
+    END { if (n == 0 || worst > 1e-9 * (hi - lo)) { print "worst", worst, "of", n; exit 1 } }' ||
+    fail "inv --model does not give back the inputs"
 
 # ---- a fit the library refuses: the output falls as the input rises ----
 awk '{ print $1, -$2 }' rec.txt > falling.txt

@@ -10,7 +10,7 @@
 
 typedef struct tcm_run {
     const hyst_poly_t *f0;
-    const hyst_curve_t *curve; /* an everett model's curve (sim), else NULL */
+    const hyst_curve_t *curve; /* an everett model's curve (sim) or its inverse (inv), else NULL */
     int inverse;
     const char *cmd;
     hyst_real_t *mem; /* the four turning-point arrays, cap entries each */
@@ -167,14 +167,12 @@ static unsigned long tcm_tp(void *ctx)
     return (unsigned long)hyst_tp_count(&((tcm_run_t *)ctx)->S);
 }
 
-/* inv --model on the asymmetric kind: its compensator (the inverse of an
- * everett curve) is not in this build's library; this is the one place to
- * prepare it once hyst_curve_inverse() accepts such a curve. */
-static int everett_compensator(const char *cmd, const char *model_path)
+/* inv --model on the asymmetric kind: the compensator is the engine on the
+ * inverse of its curve (hyst_curve_inverse(), curve.h), in place. */
+static int everett_compensator(const char *cmd, const char *model_path, hyst_curve_t *curve)
 {
-    return cli_fail(cmd, "%s: the asymmetric kind (kind everett) has no compensator in this "
-                         "build: 'hyst inv' runs models of kind poly only",
-                    model_path);
+    const hyst_status_t st = hyst_curve_inverse(curve, curve);
+    return st == HYST_OK ? 0 : cli_fail(cmd, "model file %s: %s", model_path, hyst_status_str(st));
 }
 
 int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, int inverse)
@@ -232,8 +230,8 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
             return 1;
         }
         if (model.kind == CLI_MODEL_EVERETT &&
-            (inverse ? everett_compensator(cmd, cli_file_name(model_path))
-                     : cli_everett_curve(cmd, cli_file_name(model_path), &model, &everett)) != 0) {
+            (cli_everett_curve(cmd, cli_file_name(model_path), &model, &everett) != 0 ||
+             (inverse && everett_compensator(cmd, cli_file_name(model_path), &everett) != 0))) {
             return 1;
         }
         if (!inverse && model.delay > TCM_MAX_DELAY) {
@@ -275,7 +273,11 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     m.step = tcm_step;
     m.col2 = tp ? tcm_tp : NULL;
     m.digits = (int)digits;
-    if (inverse) {
+    if (inverse && r.curve != NULL) { /* the inverse curve's domain: the forward's outputs */
+        m.clamp_what = "desired outputs";
+        m.lo = everett.lo.f64;
+        m.hi = everett.hi.f64;
+    } else if (inverse) {
         m.clamp_what = "desired outputs";
         m.lo = (double)hyst_poly_eval(&f0, f0.lo);
         m.hi = (double)hyst_poly_eval(&f0, f0.hi);
