@@ -207,14 +207,17 @@ HYST_INLINE TCM_Y TCM_NAME(branch_g)(const hyst_tcm_t *S, TCM_X x)
 static void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
                                   hyst_num_t *coef)
 {
-    unsigned i, k;
-    for (i = 0u; i < n; ++i) {
-        TCM_Y acc = YV(row[0]);
-        for (k = 1u; k <= i; ++k) {
-            acc = acc * anchor + YV(row[k]);
-        }
-        YV(coef[i]) = acc;
-        row += i + 1u;
+    /* rows start at i (i + 1) / 2; unrolled (n <= HYST_EVERETT_MAX_DEGREE = 4,
+     * the curve's check): a slow sample derives them */
+    switch (n) {
+    case 4u:
+        YV(coef[3]) = ((YV(row[6]) * anchor + YV(row[7])) * anchor + YV(row[8])) * anchor +
+                      YV(row[9]);
+        /* fall through */
+    case 3u: YV(coef[2]) = (YV(row[3]) * anchor + YV(row[4])) * anchor + YV(row[5]); /* fall through */
+    case 2u: YV(coef[1]) = YV(row[1]) * anchor + YV(row[2]); /* fall through */
+    case 1u: YV(coef[0]) = YV(row[0]); /* fall through */
+    default: break;
     }
 }
 
@@ -226,6 +229,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(e)(const hyst_tcm_t *S, TCM_X a, TCM_X b)
     if ((S->detour & TCM_PER_BRANCH) != 0u) {
         const unsigned n = S->curve->u.everett.degree;
         hyst_num_t coef[HYST_MAX_DEGREE]; /* n <= HYST_MAX_DEGREE: the curve's check */
+        memset(coef, 0, sizeof coef);     /* the entries above n: never read, but defined */
         TCM_NAME(table_coefs)(S->curve->u.everett.rise, n,
                               (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit), coef);
         return NUM_NAME(horner)(coef, n, TCM_D(a, b) * YV(S->unit));
@@ -957,7 +961,8 @@ static TCM_NOINLINE TCM_Y TCM_NAME(carry_on)(hyst_tcm_t *S, TCM_X x, int how)
  * search has one call site. The plain path (no detour: a polynomial curve,
  * nothing merged, no deadband) ends in one settle and one Horner evaluation
  * per direction; merges, the deadband and other curve kinds leave it through
- * one test of S->detour. */
+ * one test of S->detour. The asymmetric kinds take it too, their branch's
+ * coefficients derived after the settle (TCM_PER_BRANCH). */
 static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
 {
     TCM_X x, x_prev;
@@ -979,11 +984,11 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             nr = TCM_RTP_ABOVE(XV(S->xrtp), nr - 1u, x);
             S->n_ltp = nr + 1u;
             S->n_rtp = nr;
-            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE | TCM_PER_BRANCH)) != 0u) {
+            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE)) != 0u) {
                 return TCM_NAME(wiped_detour)(S, x, 2u * nr + 1u, TCM_ROSE);
             }
             nl = nr; /* the current LTP's index */
-        } else if (nl == nr && S->detour == 0u && nl < S->capacity) {
+        } else if (nl == nr && (S->detour & ~TCM_PER_BRANCH) == 0u && nl < S->capacity) {
             /* reversal on a falling branch: (x_prev, y_prev) becomes LTP nl */
             XV(S->xltp)[nl] = TCM_NORM(x_prev);
             YV(S->yltp)[nl] = YV(S->y_prev);
@@ -992,6 +997,9 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             return nl == nr ? TCM_NAME(reverse_up)(S, x, x_prev) : TCM_NAME(carry_on)(S, x, TCM_ROSE);
         }
         TCM_NAME(settle_rising)(S, x, nl, nr);
+        if ((S->detour & TCM_PER_BRANCH) != 0u) { /* the asymmetric kinds: a new branch's shape */
+            TCM_NAME(derive)(S);
+        }
         /* one emit per direction: its guard's direction is then a constant */
         return TCM_NAME(emit)(S, x, TCM_ROSE);
     } else if (x_in < x_prev) {
@@ -1005,11 +1013,11 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             nl = TCM_LTP_BELOW(XV(S->xltp), nl - 1u, x);
             S->n_ltp = nl;
             S->n_rtp = nl;
-            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE | TCM_PER_BRANCH)) != 0u) {
+            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE)) != 0u) {
                 return TCM_NAME(wiped_detour)(S, x, 2u * nl, TCM_FELL);
             }
             nr = nl - 1u; /* the current RTP's index (nl >= 1: A0) */
-        } else if (nl > nr && S->detour == 0u) {
+        } else if (nl > nr && (S->detour & ~TCM_PER_BRANCH) == 0u) {
             /* reversal on a rising branch: (x_prev, y_prev) becomes RTP nr
              * (nr < nl <= capacity: always room) */
             XV(S->xrtp)[nr] = TCM_NORM(x_prev);
@@ -1019,6 +1027,9 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             return nl > nr ? TCM_NAME(reverse_down)(S, x, x_prev) : TCM_NAME(carry_on)(S, x, TCM_FELL);
         }
         TCM_NAME(settle_falling)(S, x, nl, nr);
+        if ((S->detour & TCM_PER_BRANCH) != 0u) {
+            TCM_NAME(derive)(S);
+        }
         return TCM_NAME(emit)(S, x, TCM_FELL);
     }
     /* Always true for integer codes; false for a NaN real input: */
