@@ -156,26 +156,31 @@ static hyst_wide_t table_put(hyst_ptr_t table, size_t i, unsigned variant, hyst_
 #define Q31_2_30 ((hyst_wide_t)((hyst_q31_t)1 << 30))
 #define Q31_2_31 (2 * Q31_2_30)
 
-/* The q31 compensator's piece k from the cubic's coefficients c (drive
- * units): b_j = c_j 2^j rounded (hyst_q31_cubic_()), stored and given back
- * in c as stored; 0, nothing stored, if a coefficient or a Horner partial
- * sum could leave 32 bits (each step adds at most half the last sum, plus
- * one for the truncation). */
-static int q31_piece(hyst_q31_t *b, hyst_wide_t *c)
+/* The q31 compensator's piece from the cubic's coefficients c (drive
+ * units, in t = 0..1): re-expanded about t = 1/2 (hyst_q31_cubic_()),
+ * rounded and stored in b, b0 then moved so that the interval's start gives
+ * its knot's drive exactly (G^-1(0) = 0; the truncations would leave it up
+ * to 3 units off, possibly below 0); 0, nothing stored, if a coefficient or
+ * a Horner partial sum could leave 32 bits (|t - 1/2| <= 1/2: each step
+ * adds at most half the last sum, plus one for the truncation). */
+static int q31_piece(hyst_q31_t *b, const hyst_wide_t *c)
 {
     hyst_wide_t w[4], partial = 0;
     int j;
+    w[3] = c[3];
+    w[2] = c[2] + (hyst_wide_t)1.5 * c[3];
+    w[1] = c[1] + c[2] + (hyst_wide_t)0.75 * c[3];
+    w[0] = c[0] + (hyst_wide_t)0.5 * c[1] + (hyst_wide_t)0.25 * c[2] + (hyst_wide_t)0.125 * c[3];
     for (j = 3; j >= 0; --j) {
-        w[j] = c[j] * (hyst_wide_t)((hyst_q31_t)1 << j);
         partial = hyst_wide_abs(w[j]) + (hyst_wide_t)0.5 + partial / 2 + (j < 3 ? 1 : 0);
-        if (!(partial < Q31_2_31 - 1)) {
+        if (!(partial < Q31_2_31 - 8)) { /* room for the move of b0 */
             return 0;
         }
     }
-    for (j = 0; j < 4; ++j) { /* |w| < 2^31 - 1.5: rounds inside 32 bits */
+    for (j = 0; j < 4; ++j) { /* |w| < 2^31 - 8: rounds inside 32 bits */
         b[j] = (hyst_q31_t)(w[j] < 0 ? w[j] - (hyst_wide_t)0.5 : w[j] + (hyst_wide_t)0.5);
-        c[j] = (hyst_wide_t)b[j] / (hyst_wide_t)((hyst_q31_t)1 << j);
     }
+    b[0] += (hyst_q31_t)(c[0] + (hyst_wide_t)0.5) - hyst_q31_cubic_(b, HYST_Q31_MID_(0u));
     return 1;
 }
 
@@ -183,9 +188,9 @@ static int q31_piece(hyst_q31_t *b, hyst_wide_t *c)
 static hyst_wide_t piece_at(const table_build_t *b, size_t k, const hyst_wide_t *c, unsigned probe)
 {
     const hyst_wide_t t = (hyst_wide_t)probe / (hyst_wide_t)TABLE_PROBES;
-    if (b->q31 != NULL) { /* probe / TABLE_PROBES in Q31, exact */
+    if (b->q31 != NULL) { /* probe / TABLE_PROBES in Q32, exact (TABLE_PROBES = 2^4) */
         return (hyst_wide_t)hyst_q31_cubic_(b->q31 + 4u * k,
-                                            (hyst_q31_t)probe << (31 - 4)); /* TABLE_PROBES = 2^4 */
+                                            HYST_Q31_MID_((uint_least32_t)probe << (32 - 4)));
     }
     return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
 }
@@ -248,8 +253,9 @@ static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has
         worst = err > worst ? err : worst;
     }
     /* the evaluation's own rounding between the probes: in the variant's
-     * real type, or the q31 truncations (under 2 units, hyst_q31_cubic_()) */
-    worst += b->q31 != NULL ? 2
+     * real type, or the q31 truncations and roundings (hyst_q31_cubic_():
+     * within (-2.7, 1.7) units, and b0's move) */
+    worst += b->q31 != NULL ? 8
                             : 4 * b->eps *
                                   (hyst_wide_abs(c[0]) + hyst_wide_abs(c[1]) + hyst_wide_abs(c[2]) +
                                    hyst_wide_abs(c[3]));

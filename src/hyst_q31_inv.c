@@ -32,8 +32,9 @@ static int hyst_q31_inv_admit(hyst_tcm_t *S, hyst_q31_t y, hyst_q31_t *out)
     return 1;
 }
 
-/* G^-1 at an output step u (q) off the inline path: the table, or on a
- * marked interval (next to a flat point of f0, where no cubic fits) the
+/* G^-1 at an output step u (q) off the inline path: the table (a piece's
+ * truncations can dip below 0 next to a knot at drive 0), or on a marked
+ * interval (next to a flat point of f0, where no cubic fits) the
  * model's own fixed-point G solved by bisection over the bracket of its
  * argument v (Q30) that the marker carries: the v of G(v) nearest to u, the
  * smallest of equals (G^-1(0) = 0 where f0 is flat at lo); then v's share of
@@ -43,12 +44,11 @@ static hyst_q31_t hyst_q31_inv_other(const hyst_curve_t *c, hyst_q31_t u)
     const hyst_q31_t *tab = c->u.inv_table.table.q31;
     const hyst_q31_t d = hyst_q31_inv_table_g(tab, u);
     const hyst_curve_poly_t *p = &c->u.inv_table.fwd;
-    const hyst_q31_t *marker;
+    const hyst_q31_t *marker = tab + 4u * hyst_q31_inv_table_interval(tab, u);
     hyst_q31_t a, b, ga, gb;
-    if (d >= 0) {
-        return d;
+    if (marker[0] > -((hyst_q31_t)1 << 29)) { /* a piece: below 0 by truncation at most */
+        return d < 0 ? 0 : d;
     }
-    marker = tab + 4u * hyst_q31_inv_table_interval(tab, u);
     a = marker[1];
     b = marker[2];
     ga = hyst_q31_inv_horner(p->a, p->degree, a);

@@ -168,16 +168,21 @@ void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
 hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                         hyst_ptr_t table, size_t intervals, unsigned variant);
 
-/* The q31 compensator's cubic on interval coefficients b (q31.h,
- * "Compensator": b_j = c_j 2^j in drive units) at t in Q31, 0 <= t < 2^31:
- * c0 + t (c1 + t (c2 + t c3)), each step the high word of a 64-bit product
- * (one SMULL) and an add. Shared by the per-sample path and the set-up,
- * which measures the stored pieces with it. */
+/* The q31 compensator's cubic on an interval's coefficients b (q31.h,
+ * "Compensator"; drive units) at t, the offset from the interval's middle
+ * in Q32: t / 2^32 in [-1/2, 1/2). b0 + t (b1 + t (b2 + t b3)), each step
+ * the high word of a signed 64-bit product (one SMULL) and an add. Shared
+ * by the per-sample path and the set-up, which measures the stored pieces
+ * with it. */
 #define HYST_Q31_HI_(a, t) ((hyst_q31_t)(((int_least64_t)(a) * (t)) >> 32))
 HYST_INLINE hyst_q31_t hyst_q31_cubic_(const hyst_q31_t *b, hyst_q31_t t)
 {
     return b[0] + HYST_Q31_HI_(b[1] + HYST_Q31_HI_(b[2] + HYST_Q31_HI_(b[3], t), t), t);
 }
+
+/* The offset from the middle (hyst_q31_cubic_()) of a position w in Q32
+ * from the interval's start: w - 2^31 as a signed word. */
+#define HYST_Q31_MID_(w) ((hyst_q31_t)((uint_least32_t)(w) ^ 0x80000000ul))
 
 /* The q31 model's fixed-point G (src/hyst_q31.c): the coefficients of
  * G(v / c), v in Q30, from f0's normalised coefficients g (lowest power

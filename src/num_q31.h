@@ -40,8 +40,7 @@ static hyst_q31_t NUM_NAME(add_bound)(hyst_q31_t a, hyst_q31_t e)
 /* The compensator's table (q31.h, "Compensator") at an output step u in
  * 0..2^28 (q): s = u N / 2^28 by one 32 x 32 -> 64-bit product with the
  * table's scale tab[-1] = 16 N, whose high word is the interval k and low
- * word t in Q32, halved to Q31 for the signed products of the cubic. A
- * marked interval gives a negative value. */
+ * word the position in it (Q32). A marked interval gives a negative value. */
 HYST_INLINE uint_least64_t NUM_NAME(table_s)(const hyst_q31_t *tab, hyst_q31_t u)
 {
     return (uint_least64_t)(uint_least32_t)u * (uint_least32_t)tab[-1];
@@ -56,8 +55,7 @@ HYST_INLINE unsigned long NUM_NAME(table_interval)(const hyst_q31_t *tab, hyst_q
 HYST_INLINE hyst_q31_t NUM_NAME(table_g)(const hyst_q31_t *tab, hyst_q31_t u)
 {
     const uint_least64_t s = NUM_NAME(table_s)(tab, u);
-    return hyst_q31_cubic_(tab + 4u * (unsigned long)(s >> 32),
-                           (hyst_q31_t)((uint_least32_t)s >> 1));
+    return hyst_q31_cubic_(tab + 4u * (unsigned long)(s >> 32), HYST_Q31_MID_(s));
 }
 
 #endif /* HYST_NUM_Q31_H */

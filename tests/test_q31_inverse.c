@@ -91,8 +91,8 @@ static void agree(const hyst_poly_t *f0, long n, int flat)
         TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&C));
         TEST_ASSERT_EQUAL_INT32(ref_tp_count(&ref), (long)hyst_tp_count(&C));
         if (!(err <= Q31_INV_TOL)) {
-            printf("sample %ld desired %ld: drive %.9g, exact %.9g, error %.3g\n", i,
-                   (long)desired[i], d, want, err);
+            printf("sample %ld desired %ld (previous %ld): drive %.9g (%ld), exact %.9g, error %.3g\n", i,
+                   (long)desired[i], i > 0 ? (long)desired[i - 1] : 0L, d, (long)hyst_q31_inv_output(&C), want, err);
             TEST_FAIL();
         }
         worst_rel = err > worst_rel ? err : worst_rel;

@@ -58,14 +58,15 @@
  * of HYST_Q31_INV_TABLE_LEN(N) words: f0^-1 in N monotone cubic Hermite
  * pieces on a grid uniform in the output, as the real variants' table
  * (inverse.h). Per sample: the output step u (q) gives s = u N / 2^28 by
- * one 32 x 32 -> 64-bit product (interval k = its high word, t = its low
- * word), and the piece's cubic in drive units by three products that keep
- * their high word: coefficients b_j = c_j 2^j, each step b + (acc t) >> 32.
+ * one 32 x 32 -> 64-bit product (interval k = its high word, the position
+ * in it its low word), and the piece's cubic in drive units, expanded about
+ * the interval's middle (t = offset from it, Q32, |t| <= 1/2), by three
+ * SMULLs that keep their high word: each step b_j + (acc t) >> 32.
  * Init proves that no coefficient or partial sum can leave 32 bits (a piece
  * that could is evaluated exactly, like one that misses the tolerance), and
  * measures every piece as stored and evaluated against the exact inverse
  * (16 points per interval): the worst error / drive span is
- * hyst_curve_inverse_error(inv), at most HYST_INV_TABLE_TOL plus 2 drive
+ * hyst_curve_inverse_error(inv), at most HYST_INV_TABLE_TOL plus 8 drive
  * units of truncation. The intervals next to a flat point of f0 (infinite
  * inverse slope) are marked and evaluated exactly: the model's own
  * fixed-point G solved by bisection over the interval's bracket (about 30
