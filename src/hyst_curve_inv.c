@@ -270,13 +270,14 @@ static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has
  * the range (s = N, and above it by rounding); returns the worst error. */
 static hyst_wide_t table_pieces(table_build_t *b, size_t intervals)
 {
-    hyst_wide_t worst = 0, err;
+    hyst_wide_t worst = 0;
     size_t k;
     unsigned w;
     /* window slots 0..3 = knots k-1 .. k+2 */
     table_knot(b, 0u, 1u);
     table_knot(b, 1u, 2u);
     for (k = 0u; k < intervals; ++k) {
+        hyst_wide_t err;
         if (k + 2u <= intervals) {
             table_knot(b, k + 2u, 3u);
         }

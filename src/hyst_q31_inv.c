@@ -106,9 +106,9 @@ hyst_status_t hyst_q31_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
     /* the curve's checks as the model's (hyst_q31_init_()) */
     const unsigned checks = (unsigned)HYST_VARIANT_F64;
     hyst_curve_t real, q;
-    hyst_wide_t g[HYST_MAX_DEGREE + 1], range = 0, max_err = 0;
+    hyst_wide_t max_err = 0;
     uint_least32_t codes = 0u;
-    unsigned k, bits = 0u;
+    unsigned bits = 0u;
     size_t exact = 0u;
     hyst_status_t st = inv == NULL || table == NULL ? HYST_ERR_NULL
                                                     : hyst_curve_poly_(&real, f0, checks, layout);
@@ -116,6 +116,8 @@ hyst_status_t hyst_q31_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
         st = HYST_ERR_DOMAIN;
     }
     if (st == HYST_OK) { /* the model's G in fixed point, for the marked intervals */
+        hyst_wide_t g[HYST_MAX_DEGREE + 1], range = 0;
+        unsigned k;
         hyst_unit_poly_(g, f0->coeffs, f0->degree, f0->lo, f0->hi);
         for (k = 1u; k <= f0->degree; ++k) {
             range += g[k];

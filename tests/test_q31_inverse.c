@@ -28,7 +28,7 @@
 static hyst_q31_t cx[2][CAP], cy[2][CAP];
 static hyst_code_word_t mx[2][CAP];
 static hyst_q31_t my[2][CAP];
-static hyst_q31_t table[HYST_Q31_INV_TABLE_LEN(INTERVALS)];
+static hyst_q31_t table[HYST_Q31_INV_TABLE_LEN(1024u)]; /* the largest size tested */
 static hyst_curve_t inv;
 static hyst_t C, M;
 static ref_tcm_t ref, fwd_ref;
