@@ -30,7 +30,9 @@
  * bounded-memory pulses),
  * changes the p model), BENCH_Q31 (the q31 variant, hyst/q31.h, on the
  * doubled codes 2, 4, ..., 8192: the half codes are the odd ones; with
- * BENCH_PI=0 and BENCH_BOUNDED=0).
+ * BENCH_PI=0 and BENCH_BOUNDED=0), BENCH_Q31_INV (its compensator on
+ * Eq. 20 over codes 0..4095, HYST_Q31_INIT_INVERSE: the codes are 4096
+ * levels of the desired output; the same restrictions).
  */
 #include "hyst/hyst.h"
 #include "hyst/pi.h"
@@ -52,7 +54,23 @@ hyst_status_t bench_lin_init_(hyst_tcm_t *S, const hyst_poly_t *f0, float *xltp,
 
 /* The variant measured: input and output types, the step, code c's input
  * (CODE), k codes (CODES), half a code (HALF). */
-#ifdef BENCH_Q31
+#if defined(BENCH_Q31_INV)
+/* Desired outputs q: NU levels from -2^27 to 2^27 (the model's output
+ * range), level c at half-level 2c of 2 (NU - 1) (rounded: within one q of
+ * uniform, so every half level lies strictly between its neighbours). */
+typedef hyst_q31_t bench_x_t;
+typedef hyst_q31_t bench_y_t;
+#define bench_step hyst_q31_inv_step
+#define bench_input hyst_q31_inv_input
+#define HALVES_ (2 * ((int_least64_t)NU - 1))
+#define CODE(c)                                                                 \
+    ((bench_x_t)((((int_least64_t)(2u * (c)) << 28) + HALVES_ / 2) / HALVES_ - \
+                 ((int_least64_t)1 << 27)))
+#define CODES(k) ((bench_x_t)((((int_least64_t)(k) << 28) + HALVES_ / 4) / (HALVES_ / 2)))
+#define HALF ((bench_x_t)(((int_least64_t)1 << 28) / HALVES_))
+#define CAL_X 1
+#define NULL_RESULT(S, x) ((bench_y_t)(uintptr_t)(S))
+#elif defined(BENCH_Q31)
 typedef uint_least32_t bench_x_t;
 typedef hyst_q31_t bench_y_t;
 #define bench_step hyst_q31_step
@@ -115,6 +133,10 @@ typedef hyst_real_t bench_y_t;
 HYST_DEFINE_INVERSE(tcm, NU);
 #define BENCH_MODEL(f0, offset) bench_f0_inverse_codes((f0), (offset))
 #define BENCH_INIT(f0) HYST_INIT_INVERSE(tcm, (f0))
+#elif defined(BENCH_Q31_INV)
+HYST_Q31_DEFINE_INVERSE(tcm, NU);
+#define BENCH_MODEL(f0, offset) bench_f0_codes((f0), (offset))
+#define BENCH_INIT(f0) HYST_Q31_INIT_INVERSE(tcm, (f0), 0u, NU - 1u)
 #elif defined(BENCH_Q31)
 HYST_Q31_DEFINE(tcm, NU);
 #define BENCH_MODEL(f0, offset) bench_f0_codes((f0), (offset))
@@ -319,7 +341,7 @@ static void measure_rising(unsigned i, int last)
             time_wipe_fall("exh_wipe_revfall", n_fall, k, ltp_target(k));
         }
         time_wipe_fall("clamp_lo", n_fall, 0u, CODE(0u) - CODES(1u));
-#ifndef BENCH_Q31 /* codes have no NaN */
+#if !defined(BENCH_Q31) && !defined(BENCH_Q31_INV) /* integers have no NaN */
         {
             const hyst_t snap = tcm;
             volatile hyst_real_t zero = HYST_REAL_C(0.0);

@@ -5,10 +5,11 @@ count at Nu = 4096) on another core than the Cortex-M4F of analyse.py.
 
   cores.py --core m3 --build BUILD [--cycles]
   cores.py --core m3_q31 --build BUILD --q31
+  cores.py --core m3_q31_inv --build BUILD --q31 --image bench_q31_inv
 
 With --q31 the image is bench_q31 (the q31 variant, hyst/q31.h, on the same
-trajectory) and only <core>_typical_insns and <core>_worst_insns_nu4096
-are printed.
+trajectory; --image: another, such as its compensator's) and only
+<core>_typical_insns and <core>_worst_insns_nu4096 are printed.
 
 Prints "key value" lines: <core>_typical_insns, <core>_worst_insns_nu4096,
 <core>_pi10_insns, <core>_engine_flash_O2 (the f32 engine's bytes, as
@@ -36,9 +37,11 @@ def main():
     ap.add_argument("--build", required=True, help="a bench build directory of that core")
     ap.add_argument("--cycles", action="store_true")
     ap.add_argument("--q31", action="store_true", help="the q31 variant's image")
+    ap.add_argument("--image", help="the image's name under BUILD/bench (with --q31)")
     ap.add_argument("--qemu", default=os.environ.get("HYST_QEMU", "qemu-system-arm"))
     args = ap.parse_args()
-    args.elf = os.path.join(args.build, "bench", "bench_q31" if args.q31 else "bench_budget")
+    image = (args.image or "bench_q31") if args.q31 else "bench_budget"
+    args.elf = os.path.join(args.build, "bench", image)
     run = qemu_count.measure(args.elf, args.qemu)
     if run.exit_code != 0 or run.meta.get("failures") != "0":
         print("cores: %s: exit %s, failures %s" % (args.elf, run.exit_code, run.meta.get("failures")),

@@ -101,6 +101,7 @@ static hyst_wide_t solve_g_near(const hyst_curve_poly_t *p, unsigned variant, hy
 typedef struct {
     hyst_curve_t *c;
     hyst_ptr_t table;
+    hyst_q31_t *q31; /* the q31 compensator's pieces (q31.h), else NULL */
     hyst_wide_t span, e_per_s, eps;
     hyst_wide_t u[4], d[4], m[4];
 } table_build_t;
@@ -152,10 +153,72 @@ static hyst_wide_t table_put(hyst_ptr_t table, size_t i, unsigned variant, hyst_
 /* Points per interval where init measures a piece against the exact inverse. */
 #define TABLE_PROBES 16u
 
+#define Q31_2_30 ((hyst_wide_t)((hyst_q31_t)1 << 30))
+#define Q31_2_31 (2 * Q31_2_30)
+
+/* The q31 compensator's piece from the cubic's coefficients c (drive
+ * units, in t = 0..1): re-expanded about t = 1/2 (hyst_q31_cubic_()),
+ * rounded and stored in b, b0 then moved so that the interval's start gives
+ * its knot's drive exactly (G^-1(0) = 0; the truncations would leave it up
+ * to 3 units off, possibly below 0); 0, nothing stored, if a coefficient or
+ * a Horner partial sum could leave 32 bits (|t - 1/2| <= 1/2: each step
+ * adds at most half the last sum, plus one for the truncation). */
+static int q31_piece(hyst_q31_t *b, const hyst_wide_t *c)
+{
+    hyst_wide_t w[4], partial = 0;
+    int j;
+    w[3] = c[3];
+    w[2] = c[2] + (hyst_wide_t)1.5 * c[3];
+    w[1] = c[1] + c[2] + (hyst_wide_t)0.75 * c[3];
+    w[0] = c[0] + (hyst_wide_t)0.5 * c[1] + (hyst_wide_t)0.25 * c[2] + (hyst_wide_t)0.125 * c[3];
+    for (j = 3; j >= 0; --j) {
+        partial = hyst_wide_abs(w[j]) + (hyst_wide_t)0.5 + partial / 2 + (j < 3 ? 1 : 0);
+        if (!(partial < Q31_2_31 - 8)) { /* room for the move of b0 */
+            return 0;
+        }
+    }
+    for (j = 0; j < 4; ++j) { /* |w| < 2^31 - 8: rounds inside 32 bits */
+        b[j] = (hyst_q31_t)(w[j] < 0 ? w[j] - (hyst_wide_t)0.5 : w[j] + (hyst_wide_t)0.5);
+    }
+    b[0] += (hyst_q31_t)(c[0] + (hyst_wide_t)0.5) - hyst_q31_cubic_(b, HYST_Q31_MID_(0u));
+    return 1;
+}
+
+/* The cubic of piece k at probe t as the samples compute it. */
+static hyst_wide_t piece_at(const table_build_t *b, size_t k, const hyst_wide_t *c, unsigned probe)
+{
+    const hyst_wide_t t = (hyst_wide_t)probe / (hyst_wide_t)TABLE_PROBES;
+    if (b->q31 != NULL) { /* probe / TABLE_PROBES in Q32, exact (TABLE_PROBES = 2^4) */
+        return (hyst_wide_t)hyst_q31_cubic_(b->q31 + 4u * k,
+                                            HYST_Q31_MID_((uint_least32_t)probe << (32 - 4)));
+    }
+    return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+}
+
+/* Marks interval k for exact evaluation. The q31 marker carries the
+ * bracket of G's argument (Q30) from the knots in window slots 1 and 2. */
+static void table_mark(table_build_t *b, size_t k)
+{
+    if (b->q31 != NULL) {
+        hyst_q31_t *q = b->q31 + 4u * k;
+        const hyst_wide_t va = b->u[1] * Q31_2_30, vb = b->u[2] * Q31_2_30 + 1;
+        q[0] = -((hyst_q31_t)1 << 30);
+        q[1] = va > 0 ? (hyst_q31_t)va : 0; /* truncated: below the knot */
+        q[2] = vb < Q31_2_30 ? (hyst_q31_t)vb : (hyst_q31_t)1 << 30;
+        q[3] = 0;
+    } else {
+        (void)table_put(b->table, 4u * k, b->c->variant, -1);
+        (void)table_put(b->table, 4u * k + 1u, b->c->variant, 0);
+        (void)table_put(b->table, 4u * k + 2u, b->c->variant, 0);
+        (void)table_put(b->table, 4u * k + 3u, b->c->variant, 0);
+    }
+    ++b->c->u.inv_table.exact;
+}
+
 /* Interval k from the knots in window slots 1 and 2: the cubic Hermite
  * piece, rounded as stored, measured against the exact inverse; stored, or
- * marked exact (c0 = -1) if it misses HYST_INV_TABLE_TOL. Returns its
- * error (0 if marked). */
+ * marked exact if it misses HYST_INV_TABLE_TOL (or, in q31, could overflow).
+ * Returns its error (0 if marked). */
 static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has_right)
 {
     const hyst_wide_t m0 = table_slope(b, 1u, has_left, 1);
@@ -164,14 +227,24 @@ static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has
     const hyst_curve_poly_t *p = &b->c->u.inv_table.fwd;
     hyst_wide_t c[4], worst = 0;
     unsigned i;
-    c[0] = table_put(b->table, 4u * k, b->c->variant, b->d[1]);
-    c[1] = table_put(b->table, 4u * k + 1u, b->c->variant, m0);
-    c[2] = table_put(b->table, 4u * k + 2u, b->c->variant, 3 * dd - 2 * m0 - m1);
-    c[3] = table_put(b->table, 4u * k + 3u, b->c->variant, m0 + m1 - 2 * dd);
+    c[0] = b->d[1];
+    c[1] = m0;
+    c[2] = 3 * dd - 2 * m0 - m1;
+    c[3] = m0 + m1 - 2 * dd;
+    if (b->q31 != NULL) {
+        if (!q31_piece(b->q31 + 4u * k, c)) {
+            table_mark(b, k);
+            return 0;
+        }
+    } else {
+        for (i = 0u; i < 4u; ++i) {
+            c[i] = table_put(b->table, 4u * k + i, b->c->variant, c[i]);
+        }
+    }
     for (i = 1u; i < TABLE_PROBES; ++i) {
         const hyst_wide_t t = (hyst_wide_t)i / (hyst_wide_t)TABLE_PROBES;
         const hyst_wide_t e = ((hyst_wide_t)k + t) * b->e_per_s;
-        const hyst_wide_t cubic = c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+        const hyst_wide_t cubic = piece_at(b, k, c, i);
         const hyst_wide_t guess = cubic / b->span;
         const hyst_wide_t exact =
             b->span * solve_g_near(p, b->c->variant, e, b->u[1], b->u[2],
@@ -179,16 +252,50 @@ static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has
         const hyst_wide_t err = hyst_wide_abs(cubic - exact);
         worst = err > worst ? err : worst;
     }
-    /* the evaluation's own rounding in the variant's type */
-    worst += 4 * b->eps *
-             (hyst_wide_abs(c[0]) + hyst_wide_abs(c[1]) + hyst_wide_abs(c[2]) + hyst_wide_abs(c[3]));
+    /* the evaluation's own rounding between the probes: in the variant's
+     * real type, or the q31 truncations and roundings (hyst_q31_cubic_():
+     * within (-2.7, 1.7) units, and b0's move) */
+    worst += b->q31 != NULL ? 8
+                            : 4 * b->eps *
+                                  (hyst_wide_abs(c[0]) + hyst_wide_abs(c[1]) + hyst_wide_abs(c[2]) +
+                                   hyst_wide_abs(c[3]));
     if (!(worst <= (hyst_wide_t)HYST_INV_TABLE_TOL * b->span)) {
-        (void)table_put(b->table, 4u * k, b->c->variant, -1);
-        (void)table_put(b->table, 4u * k + 1u, b->c->variant, 0);
-        (void)table_put(b->table, 4u * k + 2u, b->c->variant, 0);
-        (void)table_put(b->table, 4u * k + 3u, b->c->variant, 0);
-        ++b->c->u.inv_table.exact;
+        table_mark(b, k);
         return 0;
+    }
+    return worst;
+}
+
+/* The pieces of every interval (knots in a window of four), then the end of
+ * the range (s = N, and above it by rounding); returns the worst error. */
+static hyst_wide_t table_pieces(table_build_t *b, size_t intervals)
+{
+    hyst_wide_t worst = 0;
+    size_t k;
+    unsigned w;
+    /* window slots 0..3 = knots k-1 .. k+2 */
+    table_knot(b, 0u, 1u);
+    table_knot(b, 1u, 2u);
+    for (k = 0u; k < intervals; ++k) {
+        hyst_wide_t err;
+        if (k + 2u <= intervals) {
+            table_knot(b, k + 2u, 3u);
+        }
+        err = table_piece(b, k, k > 0u, k + 1u < intervals);
+        worst = err > worst ? err : worst;
+        for (w = 0u; w < 3u; ++w) {
+            b->u[w] = b->u[w + 1u];
+            b->d[w] = b->d[w + 1u];
+            b->m[w] = b->m[w + 1u];
+        }
+    }
+    for (w = 0u; w < 4u; ++w) {
+        const hyst_wide_t end = w == 0u ? b->span : 0;
+        if (b->q31 != NULL) {
+            b->q31[4u * intervals + w] = (hyst_q31_t)end;
+        } else {
+            (void)table_put(b->table, 4u * intervals + w, b->c->variant, end);
+        }
     }
     return worst;
 }
@@ -206,9 +313,7 @@ hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *f
 {
     hyst_curve_t out;
     table_build_t b;
-    hyst_wide_t range, span, worst = 0, err;
-    size_t k;
-    unsigned w;
+    hyst_wide_t range, span, worst;
     hyst_status_t st = hyst_curve_check(fwd);
     if (inv == NULL || table.f32 == NULL) {
         return HYST_ERR_NULL;
@@ -251,30 +356,41 @@ hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *f
 #endif
     out.u.inv_table.intervals = intervals;
     out.u.inv_table.exact = 0u;
+    out.u.inv_table.drive_bits = 0u;
+    out.u.inv_table.drive_code_lo = 0u;
     b.c = &out;
     b.table = table;
-    /* window slots 0..3 = knots k-1 .. k+2 */
-    table_knot(&b, 0u, 1u);
-    table_knot(&b, 1u, 2u);
-    for (k = 0u; k < intervals; ++k) {
-        if (k + 2u <= intervals) {
-            table_knot(&b, k + 2u, 3u);
-        }
-        err = table_piece(&b, k, k > 0u, k + 1u < intervals);
-        worst = err > worst ? err : worst;
-        for (w = 0u; w < 3u; ++w) {
-            b.u[w] = b.u[w + 1u];
-            b.d[w] = b.d[w + 1u];
-            b.m[w] = b.m[w + 1u];
-        }
-    }
-    /* the end of the range: s = N, and above it by rounding */
-    (void)table_put(table, 4u * intervals, variant, b.span);
-    for (w = 1u; w < 4u; ++w) {
-        (void)table_put(table, 4u * intervals + w, variant, 0);
-    }
+    worst = table_pieces(&b, intervals);
     out.u.inv_table.max_err = worst / b.span;
     *inv = out;
+    return HYST_OK;
+}
+
+hyst_status_t hyst_q31_inverse_table_(hyst_q31_t *table, size_t intervals,
+                                      const hyst_curve_t *fwd, hyst_q31_t drive_span,
+                                      size_t *exact, hyst_wide_t *max_err)
+{
+    hyst_curve_t out = *fwd; /* the knots' solver reads its polynomial and variant */
+    table_build_t b;
+    const hyst_wide_t range = unit_g(&fwd->u.poly, fwd->variant, 1);
+    if (!table_size_ok((unsigned long)intervals)) {
+        return HYST_ERR_ARG;
+    }
+    if (!(range > 0)) {
+        return HYST_ERR_NOT_INVERTIBLE;
+    }
+    out.u.inv_table.fwd = fwd->u.poly;
+    out.u.inv_table.exact = 0u;
+    memset(&b, 0, sizeof b);
+    b.c = &out;
+    b.q31 = table + 1;
+    b.span = (hyst_wide_t)drive_span;
+    /* the samples' s = u N / 2^28 for an output step u in q: knot j at the
+     * real output step j range / N */
+    b.e_per_s = range / (hyst_wide_t)intervals;
+    table[0] = (hyst_q31_t)(16u * (unsigned long)intervals); /* <= 2^24 */
+    *max_err = table_pieces(&b, intervals) / b.span;
+    *exact = out.u.inv_table.exact;
     return HYST_OK;
 }
 

@@ -9,21 +9,10 @@
 
 #include "hyst_util.h"
 
-/* Number type descriptor (as src/num_f32.h), for src/num_ops.h. */
-#define NUM_T hyst_q31_t
-#define NUM_F q31
+/* Number type descriptor: src/num_q31.h, shared with the compensator. */
 #define NUM_NAME(n) hyst_q31_##n
 #define NUM_VARIANT HYST_VARIANT_Q31
-#define NUM_C(v) (v)
-#define NUM_EPS 1
-#define NUM_FIXED 1
-/* Horner's step in the coefficients' format (v in Q30): the high part of
- * a 64-bit product, one SMULL and a shift on Cortex-M3 (>> of a negative
- * value is arithmetic on every supported compiler). G's final product lands
- * in the output's format, HYST_Q31_GUARD_BITS finer. */
-#define NUM_MUL(a, b) ((hyst_q31_t)(((int_least64_t)(a) * (b)) >> HYST_Q31_U_BITS))
-#define NUM_MUL_G(a, b) \
-    ((hyst_q31_t)(((int_least64_t)(a) * (b)) >> (HYST_Q31_U_BITS - HYST_Q31_GUARD_BITS)))
+#include "num_q31.h"
 #include "num_ops.h"
 
 /* Out of line: the common path is one compare. */
@@ -47,13 +36,6 @@ static hyst_q31_t hyst_q31_no_other(const hyst_curve_t *curve, hyst_q31_t v)
     (void)curve;
     (void)v;
     return 0;
-}
-
-/* An error bound plus e >= 0, saturated at HYST_Q31_BOUND_MAX (merges add
- * up; each e is below 2^30, so the test cannot overflow). */
-static hyst_q31_t hyst_q31_add_bound(hyst_q31_t a, hyst_q31_t e)
-{
-    return a >= HYST_Q31_BOUND_MAX - e ? HYST_Q31_BOUND_MAX : a + e;
 }
 
 #define TCM_NAME(n) hyst_q31_##n
@@ -85,12 +67,10 @@ static hyst_q31_t q31_round(hyst_wide_t w)
     return (hyst_q31_t)(w < 0 ? w - (hyst_wide_t)0.5 : w + (hyst_wide_t)0.5);
 }
 
-/* The fixed-point curve of f0 (normalised coefficients g, lowest power
- * first, degree n, range = G(1) > 0) for G's argument v = u c in Q30:
- * coefficients of G(v / c) in the coefficients' format into q, with the
- * overflow proof and the error bound. 0 if a partial sum could overflow. */
-static int q31_curve(hyst_curve_t *q, const hyst_wide_t *g, unsigned n, hyst_wide_t range,
-                     hyst_wide_t c)
+/* The fixed-point curve of f0 (hyst_util.h): coefficients of G(v / c) in
+ * the coefficients' format, with the overflow proof and the error bound. */
+int hyst_q31_curve_(hyst_curve_t *q, const hyst_wide_t *g, unsigned n, hyst_wide_t range,
+                    hyst_wide_t c)
 {
     /* q units per real output unit, coefficients 2^GUARD coarser */
     const hyst_wide_t per_coef =
@@ -133,7 +113,7 @@ hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_
                              unsigned long layout)
 {
     /* The curve's checks (domain, coefficients, monotonicity) in
-     * hyst_wide_t; its rounding bound for double (q31_curve() states this
+     * hyst_wide_t; its rounding bound for double (hyst_q31_curve_() states this
      * variant's). Without the f64 variant the numbers it stores are floats,
      * unused here. */
     const unsigned checks = (unsigned)HYST_VARIANT_F64;
@@ -167,7 +147,7 @@ hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_
     q.u.poly.degree = n;
     q.y_lo.q31 = -((hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1));
     q.y_hi.q31 = (hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1);
-    if (!(range > 0) || !q31_curve(&q, g, n, range, c)) {
+    if (!(range > 0) || !hyst_q31_curve_(&q, g, n, range, c)) {
         return HYST_ERR_COEFF;
     }
     hyst_q31_attach(S, &q, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit, xltp,

@@ -77,6 +77,7 @@ void hyst_reset(hyst_tcm_t *S)
 #endif
     case HYST_VARIANT_CODE: hyst_code_reset_(S); break;
     case HYST_VARIANT_Q31: hyst_q31_reset_(S); break;
+    case HYST_VARIANT_Q31_INV: hyst_q31_inv_reset_(S); break;
     default: break; /* not initialised */
     }
 }
@@ -120,7 +121,7 @@ static int initialised(const hyst_tcm_t *S)
 {
     return S->layout == HYST_LAYOUT &&
            (S->variant == (unsigned)HYST_VARIANT_F32 || S->variant == (unsigned)HYST_VARIANT_CODE ||
-            S->variant == (unsigned)HYST_VARIANT_Q31
+            S->variant == (unsigned)HYST_VARIANT_Q31 || S->variant == (unsigned)HYST_VARIANT_Q31_INV
 #if HYST_ENABLE_F64
             || S->variant == (unsigned)HYST_VARIANT_F64
 #endif

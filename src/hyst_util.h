@@ -160,6 +160,9 @@ void hyst_code_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
 void hyst_q31_reset_(hyst_tcm_t *S);
 void hyst_q31_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
                       const hyst_tcm_book_t *book);
+void hyst_q31_inv_reset_(hyst_tcm_t *S);
+void hyst_q31_inv_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+                          const hyst_tcm_book_t *book);
 #if HYST_ENABLE_F64
 void hyst_f64_reset_(hyst_tcm_t *S);
 void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
@@ -170,6 +173,38 @@ void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
  * of the hyst_f32/f64_curve_inverse_table constructors, written once). */
 hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                         hyst_ptr_t table, size_t intervals, unsigned variant);
+
+/* The q31 compensator's cubic on an interval's coefficients b (q31.h,
+ * "Compensator"; drive units) at t, the offset from the interval's middle
+ * in Q32: t / 2^32 in [-1/2, 1/2). b0 + t (b1 + t (b2 + t b3)), each step
+ * the high word of a signed 64-bit product (one SMULL) and an add. Shared
+ * by the per-sample path and the set-up, which measures the stored pieces
+ * with it. */
+#define HYST_Q31_HI_(a, t) ((hyst_q31_t)(((int_least64_t)(a) * (t)) >> 32))
+HYST_INLINE hyst_q31_t hyst_q31_cubic_(const hyst_q31_t *b, hyst_q31_t t)
+{
+    return b[0] + HYST_Q31_HI_(b[1] + HYST_Q31_HI_(b[2] + HYST_Q31_HI_(b[3], t), t), t);
+}
+
+/* The offset from the middle (hyst_q31_cubic_()) of a position w in Q32
+ * from the interval's start: w - 2^31 as a signed word. */
+#define HYST_Q31_MID_(w) ((hyst_q31_t)((uint_least32_t)(w) ^ 0x80000000ul))
+
+/* The q31 model's fixed-point G (src/hyst_q31.c): the coefficients of
+ * G(v / c), v in Q30, from f0's normalised coefficients g (lowest power
+ * first, degree n, range = G(1) > 0) into q->u.poly and its rounding bound
+ * into q->rounding; 0 if a Horner partial sum could overflow. */
+int hyst_q31_curve_(hyst_curve_t *q, const hyst_wide_t *g, unsigned n, hyst_wide_t range,
+                    hyst_wide_t c);
+
+/* The q31 compensator's table (src/hyst_curve_inv.c; q31.h): the inverse
+ * of the real curve fwd (a polynomial) in `intervals` pieces uniform in the
+ * output, drive span `drive_span` units, into table (its scale, then the
+ * pieces); the count of exactly evaluated intervals into *exact and the
+ * worst measured error / drive span into *max_err. */
+hyst_status_t hyst_q31_inverse_table_(hyst_q31_t *table, size_t intervals,
+                                      const hyst_curve_t *fwd, hyst_q31_t drive_span,
+                                      size_t *exact, hyst_wide_t *max_err);
 
 /* The kinds of g evaluated out of line (src/curve_eval.h), per real type:
  * g at its argument, already scaled by the curve's unit (1 for the kinds

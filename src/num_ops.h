@@ -28,6 +28,9 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
 #ifndef NUM_MUL_G
 #define NUM_MUL_G(a, b) ((a) * (b))
 #endif
+#ifndef NUM_G_ONE
+#define NUM_G_ONE 1 /* NUM_MUL_G(a, NUM_G_ONE) is a */
+#endif
 
 /* The cases 1..8 of Horner's rule unrolled by a switch on the degree n:
  * acc = a[0] u^(n-1) + ... + a[n-1], one multiply-add per coefficient, no
@@ -83,6 +86,7 @@ HYST_INLINE NUM_T NUM_NAME(horner)(const hyst_num_t *a, unsigned n, NUM_T u)
     return NUM_MUL_G(acc, u);
 }
 
+#ifndef NUM_FIXED /* a fixed-point type brings its own (src/num_q31.h) */
 /* A tabulated inverse (curve.h, HYST_CURVE_INV_TABLE) at s >= 0: interval
  * k = floor(s), one cubic in t = s - k (exact: k <= s < 2k for k >= 1).
  * k <= N: s <= N (1 + 2 eps) by construction of the table's scale, and
@@ -94,5 +98,6 @@ HYST_INLINE NUM_T NUM_NAME(table_g)(const NUM_T *tab, NUM_T s)
     const NUM_T *c = tab + 4u * k;
     return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
 }
+#endif
 
 #endif /* HYST_NUM_OPS_H */

@@ -325,7 +325,7 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
         if (!(acc >= 0)) {
             return TCM_NAME(emit_rare)(S, x, how);
         }
-        u = 1;
+        u = NUM_G_ONE;
         break;
     NUM_HORNER_CASES_(S->coef, u, acc);
     case HYST_HORNER_SOLVE_: return TCM_NAME(emit_solved)(S, x, how);

@@ -16,6 +16,10 @@ set(HYST_BUDGET_INV_WORST_INSNS 160)
 # trajectory at Nu = 4096 (measured: typical 46, worst 148).
 set(HYST_BUDGET_Q31_TYPICAL_INSNS 60)
 set(HYST_BUDGET_Q31_WORST_INSNS 200)
+# Its compensator (HYST_Q31_INIT_INVERSE: the q31 tabulated inverse of
+# Eq. 20, 32 intervals) on 4096 levels of the desired output.
+set(HYST_BUDGET_Q31_INV_TYPICAL_INSNS 80)
+set(HYST_BUDGET_Q31_INV_WORST_INSNS 200)
 
 # hyst_budget_test(<name> <typical> <worst> <test_budget.py options...>)
 function(hyst_budget_test name typical worst)
@@ -48,4 +52,9 @@ endif()
 if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an385" AND TARGET bench_q31)
     hyst_budget_test(q31_budget ${HYST_BUDGET_Q31_TYPICAL_INSNS} ${HYST_BUDGET_Q31_WORST_INSNS}
                      --elf $<TARGET_FILE:bench_q31> --no-pi)
+    if(TARGET bench_q31_inv)
+        hyst_budget_test(q31_inv_budget ${HYST_BUDGET_Q31_INV_TYPICAL_INSNS}
+                         ${HYST_BUDGET_Q31_INV_WORST_INSNS} --elf $<TARGET_FILE:bench_q31_inv> --no-pi)
+        set_tests_properties(q31_inv_budget PROPERTIES TIMEOUT 900)
+    endif()
 endif()

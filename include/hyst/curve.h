@@ -161,6 +161,10 @@ typedef struct hyst_curve {
             /** worst |table - exact inverse| / span measured at init over the
              *  table-evaluated intervals, rounding of the evaluation included */
             hyst_wide_t max_err;
+            /** the q31 compensator's drive (q31.h): (code - drive_code_lo)
+             *  2^drive_bits; 0 for the real variants */
+            unsigned drive_bits;
+            uint_least32_t drive_code_lo;
         } inv_table; /**< INV_TABLE */
         struct {
             hyst_cptr_t x;  /**< the curve's breakpoints (caller's array) */

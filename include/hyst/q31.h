@@ -43,6 +43,35 @@
  * Bounded memory (merges, deadband) works as in hyst/code.h; the merge
  * error bound saturates at HYST_Q31_BOUND_MAX. Snapshots are not supported
  * yet: hyst_snapshot_*() on a q31 instance return HYST_ERR_ARG.
+ *
+ * Compensator (hyst_q31_inv_*: the inverse model, a feedforward for the
+ * same f0 and codes, docs/pi_and_inverse.md). Its input is a desired
+ * output in the model's format above (q in [-2^27, 2^27]); its output the
+ * drive in codes with F = hyst_q31_inv_drive_bits() fraction bits:
+ *
+ *     drive = (code - code_lo) 2^F,  F largest with (code_hi - code_lo) 2^F <= 2^28,
+ *
+ * so the DAC code is code_lo + ((drive + 2^(F-1)) >> F) (hyst_q31_inv_code()),
+ * and the fraction keeps the stored turning points' drives 2^-F codes fine
+ * (F = 16 for 12-bit codes). The inverse curve is tabulated at init, in
+ * hyst_wide_t (double; off the per-sample path), into a caller-owned array
+ * of HYST_Q31_INV_TABLE_LEN(N) words: f0^-1 in N monotone cubic Hermite
+ * pieces on a grid uniform in the output, as the real variants' table
+ * (inverse.h). Per sample: the output step u (q) gives s = u N / 2^28 by
+ * one 32 x 32 -> 64-bit product (interval k = its high word, the position
+ * in it its low word), and the piece's cubic in drive units, expanded about
+ * the interval's middle (t = offset from it, Q32, |t| <= 1/2), by three
+ * SMULLs that keep their high word: each step b_j + (acc t) >> 32.
+ * Init proves that no coefficient or partial sum can leave 32 bits (a piece
+ * that could is evaluated exactly, like one that misses the tolerance), and
+ * measures every piece as stored and evaluated against the exact inverse
+ * (16 points per interval): the worst error / drive span is
+ * hyst_curve_inverse_error(inv), at most HYST_INV_TABLE_TOL plus 8 drive
+ * units of truncation. The intervals next to a flat point of f0 (infinite
+ * inverse slope) are marked and evaluated exactly: the model's own
+ * fixed-point G solved by bisection over the interval's bracket (about 30
+ * evaluations of G: rare, slower samples). The drive never steps back while
+ * the desired output moves on (the engine's guards).
  */
 #ifndef HYST_Q31_H
 #define HYST_Q31_H
@@ -119,12 +148,93 @@ uint_least32_t hyst_q31_input(const hyst_tcm_t *S);
 /** @brief Bound on the error caused by forgetting (merges, deadband), in q. */
 hyst_q31_t hyst_q31_error_bound(const hyst_tcm_t *S);
 
-/** @brief The a-priori bound of one branch evaluation (above), in q. */
+/** @brief The a-priori bound of one branch evaluation (above), in q; for a
+ *         compensator the measured table error plus 1, in drive units. */
 hyst_q31_t hyst_q31_rounding_bound(const hyst_tcm_t *S);
 
 /** @brief An output q of an instance of @p f0 in user units (the mapping
  *         above); 0 if f0 is NULL. */
 hyst_wide_t hyst_q31_to_real(const hyst_poly_t *f0, hyst_q31_t q);
+
+/** Words of a q31 compensator's table of @p intervals pieces: its scale,
+ *  four per interval, four for the end of the range. */
+#define HYST_Q31_INV_TABLE_LEN(intervals) (4u * ((intervals) + 1u) + 1u)
+/** Largest table of a q31 compensator, in intervals. */
+#define HYST_Q31_INV_MAX_INTERVALS 1048576ul
+
+/** @brief A q31 compensator's instance, arrays (desired outputs and drives,
+ *  HYST_CAPACITY(@p nu) each), inverse curve and table of HYST_INV_TABLE
+ *  intervals, statically. @p nu: distinct desired outputs. */
+#define HYST_Q31_DEFINE_INVERSE(name, nu)                                   \
+    static hyst_curve_t name##_curve;                                       \
+    static hyst_q31_t name##_table[HYST_Q31_INV_TABLE_LEN(HYST_INV_TABLE)]; \
+    HYST_DEFINE_ARRAYS_(name, hyst_q31_t, hyst_q31_t, nu)
+
+/** hyst_q31_init_inverse_table() on an instance declared by
+ *  HYST_Q31_DEFINE_INVERSE(). */
+#define HYST_Q31_INIT_INVERSE(name, f0, code_lo, code_hi)                           \
+    hyst_q31_init_inverse_table_(&(name), &name##_curve, (f0), (code_lo), (code_hi), \
+                                 name##_table, HYST_INV_TABLE, HYST_ARRAYS_(name),   \
+                                 HYST_LAYOUT)
+
+/**
+ * @brief Initialises a q31 compensator of the model hyst_q31_init() builds
+ *        from @p f0 and codes @p code_lo .. @p code_hi (see "Compensator").
+ *
+ * The set-up runs in hyst_wide_t: the curve checks of the model, the table
+ * of @p intervals pieces into @p table (HYST_Q31_INV_TABLE_LEN(intervals)
+ * words) and the curve into @p inv, both caller storage that must outlive
+ * the instance. The arrays hold desired outputs (xltp, xrtp) and drives.
+ * @return HYST_OK, HYST_ERR_NULL, a curve error, HYST_ERR_DOMAIN (code
+ *         range empty or wider than HYST_CODE_BITS), HYST_ERR_COEFF (as
+ *         hyst_q31_init()), HYST_ERR_ARG (@p intervals outside
+ *         1..HYST_Q31_INV_MAX_INTERVALS), HYST_ERR_LAYOUT,
+ *         HYST_ERR_CAPACITY or HYST_ERR_OVERLAP, in this order. Nothing is
+ *         written on error.
+ */
+hyst_status_t hyst_q31_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
+                                           const hyst_poly_t *f0, uint_least32_t code_lo,
+                                           uint_least32_t code_hi, hyst_q31_t *table,
+                                           size_t intervals, hyst_q31_t *xltp,
+                                           hyst_q31_t *yltp, hyst_q31_t *xrtp,
+                                           hyst_q31_t *yrtp, size_t capacity,
+                                           unsigned long layout);
+#define hyst_q31_init_inverse_table(S, inv, f0, code_lo, code_hi, table, intervals, xltp, yltp, \
+                                    xrtp, yrtp, capacity)                                      \
+    hyst_q31_init_inverse_table_((S), (inv), (f0), (code_lo), (code_hi), (table), (intervals), \
+                                 (xltp), (yltp), (xrtp), (yrtp), (capacity), HYST_LAYOUT)
+
+/** @brief The drive for the desired output @p desired (q, the model's
+ *         format); outside [-2^27, 2^27] it is clamped (HYST_WARN_CLAMPED). */
+hyst_q31_t hyst_q31_inv_step(hyst_tcm_t *S, hyst_q31_t desired);
+
+/** @brief hyst_q31_inv_step() over a block, bit-identically (statuses as
+ *         hyst_q31_process()); @p drive may be @p desired. */
+hyst_status_t hyst_q31_inv_process(hyst_tcm_t *S, const hyst_q31_t *desired, hyst_q31_t *drive,
+                                   size_t n);
+
+/** @brief Noise deadband in desired-output units q (bounded memory, as
+ *         hyst_q31_set_deadband()): HYST_ERR_ARG outside 0..2^28. */
+hyst_status_t hyst_q31_inv_set_deadband(hyst_tcm_t *S, hyst_q31_t width);
+
+/** @brief hyst_q31_inv_set_deadband() as a request from another context. */
+hyst_status_t hyst_q31_inv_request_deadband(hyst_tcm_t *S, hyst_q31_t width);
+
+/** @brief Last drive (0, code_lo, after init or reset). */
+hyst_q31_t hyst_q31_inv_output(const hyst_tcm_t *S);
+
+/** @brief Last valid desired output, after clamping. */
+hyst_q31_t hyst_q31_inv_input(const hyst_tcm_t *S);
+
+/** @brief Bound on the drive error caused by forgetting, in drive units. */
+hyst_q31_t hyst_q31_inv_error_bound(const hyst_tcm_t *S);
+
+/** @brief F, the drive's fraction bits (0 if @p S is not a q31 compensator). */
+unsigned hyst_q31_inv_drive_bits(const hyst_tcm_t *S);
+
+/** @brief The DAC code of a drive: code_lo + drive / 2^F rounded, inside
+ *         code_lo..code_hi (0 if @p S is not a q31 compensator). */
+uint_least32_t hyst_q31_inv_code(const hyst_tcm_t *S, hyst_q31_t drive);
 
 #ifdef __cplusplus
 }

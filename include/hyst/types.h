@@ -63,7 +63,7 @@ typedef union hyst_num {
     double f64;             /**< f64 variant */
 #endif
     hyst_code_word_t code;  /**< inputs of the code and q31 variants */
-    hyst_q31_t q31;         /**< outputs of the q31 variant */
+    hyst_q31_t q31;         /**< outputs of the q31 variant; the q31 compensator's numbers */
 } hyst_num_t;
 
 /** @brief A caller-owned array of an instance, typed by its variant. */
@@ -90,7 +90,8 @@ typedef enum hyst_variant {
     HYST_VARIANT_F32 = 1,  /**< float in, float out */
     HYST_VARIANT_F64 = 2,  /**< double in, double out */
     HYST_VARIANT_CODE = 3, /**< integer codes in, float out (f32 curves) */
-    HYST_VARIANT_Q31 = 4   /**< integer codes in, fixed point out (q31.h) */
+    HYST_VARIANT_Q31 = 4,  /**< integer codes in, fixed point out (q31.h) */
+    HYST_VARIANT_Q31_INV = 5 /**< q31 compensator: fixed point in and out (q31.h) */
 } hyst_variant_t;
 
 /**

@@ -15,6 +15,19 @@ void ref_init(ref_tcm_t *r, const double *c, unsigned degree, double lo, double 
     r->y[0] = ref_f0(r, lo);
     r->xp = lo;
     r->yp = r->y[0];
+    r->inverse = 0;
+    r->flo = lo;
+    r->fhi = hi;
+}
+
+void ref_init_inverse(ref_tcm_t *r, const double *c, unsigned degree, double lo, double hi)
+{
+    ref_init(r, c, degree, lo, hi);
+    r->inverse = 1;
+    r->lo = ref_f0(r, lo);
+    r->hi = ref_f0(r, hi);
+    r->x[0] = r->xp = r->lo;
+    r->y[0] = r->yp = lo;
 }
 
 double ref_f0(const ref_tcm_t *r, double x)
@@ -29,7 +42,23 @@ double ref_f0(const ref_tcm_t *r, double x)
 
 static double g(const ref_tcm_t *r, double d)
 {
-    return ref_f0(r, r->lo + d) - ref_f0(r, r->lo);
+    double a = 0.0, b = r->fhi - r->flo;
+    int it;
+    if (!r->inverse) {
+        return ref_f0(r, r->lo + d) - ref_f0(r, r->lo);
+    }
+    for (it = 0; it < 200; ++it) { /* f0(flo + v) - f0(flo) = d */
+        const double m = 0.5 * (a + b);
+        if (!(m > a && m < b)) {
+            break;
+        }
+        if (ref_f0(r, r->flo + m) - ref_f0(r, r->flo) < d) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    return 0.5 * (a + b);
 }
 
 double ref_step(ref_tcm_t *r, double x)
