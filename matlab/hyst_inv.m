@@ -5,13 +5,10 @@ function [x, status, tp_count] = hyst_inv(model, y, varargin)
 %   hyst_f64_init_inverse, or hyst_f32_init_inverse for Y of class single)
 %   over Y, from (f0(lo), lo). HYST_SIM(MODEL, X) gives Y back (within the
 %   rounding of the inverse); a desired output outside [f0(lo), f0(hi)] is
-%   clamped (STATUS 1). Options and outputs as HYST_SIM. The library has no
-%   inverse of the asymmetric kind: such a model raises hyst:usage.
-  opts = hyst_options(varargin, struct('capacity', 2048, 'deadband', 0), 'hyst_inv');
-  p = hyst_model_parts(model, 'hyst_inv');
-  if ~strcmp(p.kind, 'poly')
-    error('hyst:usage', 'hyst_inv: no compensator of the kind ''%s'' (poly only)', p.kind);
-  end
-  [x, status, tp_count] = hyst_mex('inv', p.coeffs, p.lo, p.hi, y, double(opts.capacity), ...
-                                   double(opts.deadband));
+%   clamped (STATUS 1). For the asymmetric kind (a struct of kind 'everett',
+%   as HYST_SIM takes it) the compensator is hyst_curve_inverse() of its
+%   curve: desired outputs on [y_lo, y_lo + E(hi, lo)], the drive within
+%   about 1e-12 (double) or 1e-6 (single) of hi - lo. Options and outputs as
+%   HYST_SIM.
+  [x, status, tp_count] = hyst_run('inv', model, y, varargin);
 end

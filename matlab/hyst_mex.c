@@ -9,12 +9,14 @@
  *   [y, st, ntp] = hyst_mex('sim', coeffs, lo, hi, x, capacity, deadband)
  *   [x, st, ntp] = hyst_mex('inv', coeffs, lo, hi, y, capacity, deadband)
  *   [y, st, ntp] = hyst_mex('sim_everett', degree, lo, hi, y_lo, terms, x, capacity, deadband)
+ *   [x, st, ntp] = hyst_mex('inv_everett', degree, lo, hi, y_lo, terms, y, capacity, deadband)
  *   f = hyst_mex('fit', x, y, degree, method, lo, hi, skip, delay)
  *   f = hyst_mex('fit_everett', x, y, degree, lo, hi, skip, delay)
  *
  * sim_everett runs the asymmetric kind (hyst_everett_t; terms are e[i-1][j]
- * of w^i t^j for i = 1..degree, then j = 0..degree-i).
- * sim/inv: x of class double runs hyst_f64_*, single runs hyst_f32_*; the
+ * of w^i t^j for i = 1..degree, then j = 0..degree-i), inv_everett its
+ * compensator (hyst_curve_inverse(): HYST_CURVE_EVERETT_INV).
+ * sim/inv and both *_everett: x of class double runs hyst_f64_*, single runs hyst_f32_*; the
  * result has the class and the shape of x; st is the status of the block
  * call (0, or a warning: 1 clamped, 2 memory full; a non-finite sample gives
  * -7 and is ignored as in firmware), ntp the turning points stored at the end.
@@ -135,7 +137,7 @@ static hyst_poly_t poly_arg(const mxArray *c, const mxArray *lo, const mxArray *
 }
 
 /* E from degree, lo, hi, y_lo, terms; validated by the library. */
-static hyst_everett_t everett_arg(const mxArray *const prhs[5])
+static hyst_everett_t everett_arg(const mxArray *const prhs[5], const char *context)
 {
     hyst_everett_t e;
     const size_t degree = count(prhs[0], "degree", 0.0, 1e9);
@@ -143,7 +145,7 @@ static hyst_everett_t everett_arg(const mxArray *const prhs[5])
     size_t i, j, k = 0u;
     memset(&e, 0, sizeof e);
     if (degree < 1u || degree > HYST_EVERETT_MAX_DEGREE) {
-        fail_status("hyst_sim", HYST_ERR_DEGREE);
+        fail_status(context, HYST_ERR_DEGREE);
     }
     if (!is_real_double(prhs[4]) || n != degree * (degree + 1u) / 2u) {
         usage("terms must be a real double vector of degree (degree + 1) / 2 entries");
@@ -160,9 +162,9 @@ static hyst_everett_t everett_arg(const mxArray *const prhs[5])
     return e;
 }
 
-/* The model a sim/inv call runs: f0 or its inverse, or an E. */
+/* The model a sim/inv call runs: f0 or an E, or the inverse of either. */
 typedef struct model_arg {
-    int inverse;        /* the compensator of f0 */
+    int inverse;        /* the compensator */
     int everett;        /* the asymmetric kind: e, not f0 */
     hyst_poly_t f0;
     hyst_everett_t e;
@@ -170,7 +172,7 @@ typedef struct model_arg {
 
 /* init_f64, init_f32: init S (and curve, which S may point at) for m in
  * variant P of number type T, tp holding the four turning-point arrays of
- * cap entries. */
+ * cap entries. An E's inverse replaces its forward curve (a copy of it). */
 #define DEFINE_INIT(P, T)                                                                   \
     static int init_##P(hyst_tcm_t *S, hyst_curve_t *curve, const model_arg_t *m, T *tp,    \
                         size_t cap)                                                         \
@@ -180,6 +182,9 @@ typedef struct model_arg {
         int st;                                                                             \
         if (m->everett) {                                                                   \
             st = hyst_##P##_curve_from_everett(curve, &m->e);                               \
+            if (st == HYST_OK && m->inverse) {                                              \
+                st = hyst_curve_inverse(curve, curve);                                      \
+            }                                                                               \
             return st != HYST_OK ? st : hyst_##P##_init_curve(S, curve, xl, yl, xr, yr, cap); \
         }                                                                                   \
         return m->inverse ? hyst_##P##_init_inverse(S, curve, &m->f0, xl, yl, xr, yr, cap)  \
@@ -259,16 +264,17 @@ static void run_poly(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxA
     run_tcm(&m, nlhs, plhs, prhs + 3);
 }
 
-/* sim_everett: prhs = degree, lo, hi, y_lo, terms, x, capacity, deadband. */
-static void run_everett(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+/* sim_everett or inv_everett: prhs = degree, lo, hi, y_lo, terms, x, capacity, deadband. */
+static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     model_arg_t m;
     if (nrhs != 8) {
-        usage("sim_everett takes degree, lo, hi, y_lo, terms, x, capacity, deadband");
+        usage("sim_everett/inv_everett take degree, lo, hi, y_lo, terms, x, capacity, deadband");
     }
     memset(&m, 0, sizeof m);
     m.everett = 1;
-    m.e = everett_arg(prhs);
+    m.inverse = inverse;
+    m.e = everett_arg(prhs, inverse ? "hyst_inv" : "hyst_sim");
     run_tcm(&m, nlhs, plhs, prhs + 5);
 }
 
@@ -412,8 +418,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     char cmd[24];
     if (nrhs < 1 || !mxIsChar(prhs[0]) || mxGetString(prhs[0], cmd, sizeof cmd) != 0) {
-        usage("the first argument is a command: version, status_str, sim, inv, sim_everett, fit "
-              "or fit_everett");
+        usage("the first argument is a command: version, status_str, sim, inv, sim_everett, "
+              "inv_everett, fit or fit_everett");
     }
     if (strcmp(cmd, "version") == 0) {
         plhs[0] = mxCreateString(HYST_VERSION_STRING);
@@ -426,13 +432,14 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         }
     } else if (strcmp(cmd, "sim") == 0 || strcmp(cmd, "inv") == 0) {
         run_poly(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
-    } else if (strcmp(cmd, "sim_everett") == 0) {
-        run_everett(nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "sim_everett") == 0 || strcmp(cmd, "inv_everett") == 0) {
+        run_everett(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "fit") == 0) {
         run_fit(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "fit_everett") == 0) {
         run_fit_everett(plhs, nrhs - 1, prhs + 1);
     } else {
-        usage("unknown command (version, status_str, sim, inv, sim_everett, fit, fit_everett)");
+        usage("unknown command (version, status_str, sim, inv, sim_everett, inv_everett, fit, "
+              "fit_everett)");
     }
 }

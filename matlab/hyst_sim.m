@@ -21,13 +21,5 @@ function [y, status, tp_count] = hyst_sim(model, x, varargin)
 %   sample was ignored) and the turning points stored at the end.
 %   An invalid model raises an error hyst:<status name>, e.g.
 %   hyst:ERR_NOT_INCREASING (docs/matlab.md).
-  opts = hyst_options(varargin, struct('capacity', 2048, 'deadband', 0), 'hyst_sim');
-  p = hyst_model_parts(model, 'hyst_sim');
-  if strcmp(p.kind, 'everett')
-    [y, status, tp_count] = hyst_mex('sim_everett', p.degree, p.lo, p.hi, p.y_lo, p.terms, x, ...
-                                     double(opts.capacity), double(opts.deadband));
-  else
-    [y, status, tp_count] = hyst_mex('sim', p.coeffs, p.lo, p.hi, x, double(opts.capacity), ...
-                                     double(opts.deadband));
-  end
+  [y, status, tp_count] = hyst_run('sim', model, x, varargin);
 end

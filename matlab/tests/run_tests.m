@@ -13,7 +13,7 @@ function failed = run_tests(root, ref, cli)
            @t_fit_equals_cli, @t_errors_status_names, @t_usage_errors, ...
            @t_save_load_roundtrip, @t_load_rejects, @t_readme_block, ...
            @t_everett_reference, @t_everett_errors, @t_everett_fit, ...
-           @t_everett_save_load, @t_everett_load_rejects};
+           @t_everett_save_load, @t_everett_load_rejects, @t_everett_inv};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -342,6 +342,15 @@ function e = e3()
              'terms', [8 3 -1 2 1 -0.5]);
 end
 
+function es = everett_examples()
+  % E of degrees 3, 2 and 4 that init accepts
+  es = {e3(), ...
+        struct('kind', 'everett', 'degree', 2, 'lo', 0, 'hi', 3.6, 'y_lo', -0.035, ...
+               'terms', [0.61 0.02 -0.1]), ...
+        struct('kind', 'everett', 'degree', 4, 'lo', -5, 'hi', 15, 'y_lo', 2, ...
+               'terms', [4 1 0.5 -0.2 1 0.3 -0.1 0.5 0.1 -0.3])};
+end
+
 function v = e_value(e, a, b)
   % E(a, b) term by term: w^i t^j, i = 1..degree, j = 0..degree - i
   span = e.hi - e.lo;
@@ -434,8 +443,10 @@ function t_everett_errors(~)
   expect_error('hyst:ERR_NOT_MONOTONE', @() hyst_sim(e, 1));
   msg = error_message(@() hyst_sim(e, single(1)));
   check(~isempty(strfind(msg, 'ERR_NOT_MONOTONE, -22')), 'message ''%s''', msg);
+  msg = error_message(@() hyst_inv(e, 0.1));
+  check(~isempty(strfind(msg, 'hyst_inv: ')) && ~isempty(strfind(msg, 'ERR_NOT_MONOTONE')), ...
+        'message ''%s''', msg);
   e.terms = [0.61 0.02 -0.1];
-  expect_error('hyst:usage', @() hyst_inv(e, 0.1));
   bad = e;
   bad.degree = 5;
   bad.terms = ones(1, 15);
@@ -526,4 +537,56 @@ function t_everett_load_rejects(ctx)
     [{'hyst-model-text 1', 'kind preisach'} good(3:7)], 'is not poly or everett'
   };
   expect_load_errors(file, bad);
+end
+
+function yd = walk(lo, hi, n)
+  % a random walk with jumps (one in ten) over [lo, hi], ends included
+  yd = zeros(n, 1);
+  v = (lo + hi) / 2;
+  for i = 1:n
+    if rand() < 0.1
+      v = lo + (hi - lo) * rand();
+    else
+      v = min(max(v + (hi - lo) * (rand() - 0.5) / 10, lo), hi);
+    end
+    yd(i) = v;
+  end
+end
+
+function t_everett_inv(~)
+  % for E of degrees 2, 3 and 4: hyst_sim(hyst_inv(y_d)) = y_d on a random
+  % walk over the major loop's output range (1e-9 of the range in double,
+  % 2e-5 in single); on small steps up and down through many turning points
+  % the drive never moves against the desired output
+  es = everett_examples();
+  rand('state', 15);
+  for k = 1:numel(es)
+    e = es{k};
+    range = e_value(e, e.hi, e.lo);
+    yd = walk(e.y_lo, e.y_lo + range, 3000);
+    x = hyst_inv(e, yd);
+    check(all(x >= e.lo & x <= e.hi), 'degree %d: a drive outside the domain', e.degree);
+    err = max(abs(hyst_sim(e, x) - yd));
+    check(err <= 1e-9 * range, 'degree %d, double: |sim(inv(y)) - y| up to %g', e.degree, err);
+    xs = hyst_inv(e, single(yd));
+    check(strcmp(class(xs), 'single'), 'class %s', class(xs));
+    err = max(abs(double(hyst_sim(e, xs)) - double(single(yd))));
+    check(err <= 2e-5 * range, 'degree %d, single: |sim(inv(y)) - y| up to %g', e.degree, err);
+
+    up = true(20000, 1);
+    for i = 2:numel(up)
+      up(i) = xor(up(i - 1), rand() < 0.02);
+    end
+    yd = e.y_lo + range * (0.5 + 2e-6 * cumsum(2 * up - 1));
+    for cls = {'double', 'single'}
+      d = diff(double(hyst_inv(e, cast(yd, cls{1}))));
+      check(all(d(up(2:end)) >= 0) && all(d(~up(2:end)) <= 0), ...
+            'degree %d, %s: the drive moved against the desired output', e.degree, cls{1});
+      check(nnz(d > 0) > 1000 && nnz(d < 0) > 1000, 'degree %d, %s: the drive hardly moved', ...
+            e.degree, cls{1});
+    end
+  end
+  e = e3();
+  [x, st] = hyst_inv(e, [e.y_lo + e_value(e, e.hi, e.lo) + 1, e.y_lo - 1]);
+  check(isequal(x, [e.hi, e.lo]) && st == 1, 'clamped: drive %s, status %d', mat2str(x), st);
 end

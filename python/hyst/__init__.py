@@ -38,6 +38,7 @@ from ._api import (
     Model,
     ModelFromEverett,
     ModelFromPoints,
+    compensator_from,
     fit,
     model_from,
 )
@@ -48,6 +49,7 @@ __all__ = [
     "CODE_MAX", "EVERETT_MAX_DEGREE", "EVENT_CLAMPED", "EVENT_FULL", "EVENT_NONFINITE",
     "MAX_DEGREE", "SNAPSHOT_VERSION", "DEFAULT_CAPACITY", "CodeModel", "Compensator", "Fit",
     "HystError", "Model", "ModelFromEverett", "ModelFromPoints", "ModelF32", "ModelF64", "PI",
-    "PIF32", "PIF64", "Status", "Tcm", "__version__", "fit", "model_from", "plot", "status_str",
+    "PIF32", "PIF64", "Status", "Tcm", "__version__", "compensator_from", "fit", "model_from",
+    "plot", "status_str",
     "ModelFileError", "header_text", "load_model", "save_model",
 ]

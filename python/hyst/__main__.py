@@ -10,14 +10,15 @@ DATA: columns separated by blanks, ',' or ';' ('#' lines skipped), as the
 hyst tool reads them; M.hyst: a model file (hyst fit --save, hyst.save_model).
 The model runs in double from rest (A0) over the inputs after --skip, with
 the file's delay applied to the comparison; the compensator (the inverse
-model; kind poly only) is driven by the measured outputs, and its drive is
-drawn against the drive that was applied. Prints the RMS and max error."""
+model, of either kind) is driven by the measured outputs, and its drive is
+drawn against the drive that was applied. Prints the RMS and max error, and
+the RMS of the compensator's drive minus the applied drive."""
 import argparse
 import sys
 
 import numpy as np
 
-from ._api import Compensator, model_from
+from ._api import compensator_from, model_from
 from ._model_file import load_model
 from ._plot import _pyplot
 
@@ -42,10 +43,8 @@ def _plot(argv):
     pred = model_from(m, capacity=n // 2 + 2).process(np.ascontiguousarray(x[:n]))
     meas = y[d:d + n]
     err = pred - meas
-    drive = None
-    if m["kind"] == "poly":  # the library has no inverse of the asymmetric kind
-        drive = Compensator(m["coeffs"], m["lo"], m["hi"], capacity=n // 2 + 2).process(
-            np.ascontiguousarray(meas))
+    drive = compensator_from(m, capacity=n // 2 + 2).process(np.ascontiguousarray(meas))
+    drive_rms = float(np.sqrt(np.mean((drive - x[:n]) ** 2)))
     plt = _pyplot()
     fig, ax = plt.subplots(2, 2, figsize=(11, 7))
     ax[0, 0].plot(x[:n], meas, ".", ms=2, color="0.6", label="measured")
@@ -62,15 +61,14 @@ def _plot(argv):
     ax[1, 0].set(xlabel="sample", ylabel="model - measured",
                  title=f"error: RMS {rms:.4g}, max {peak:.4g}")
     ax[1, 1].plot(k, x[:n], color="0.6", lw=1, label="drive applied")
-    if drive is not None:
-        ax[1, 1].plot(k, drive, lw=1, label="compensator's drive for the measured output")
+    ax[1, 1].plot(k, drive, lw=1, label="compensator's drive for the measured output")
     ax[1, 1].set(xlabel="sample", ylabel="input",
-                 title="compensator" if drive is not None else "drive (no compensator of kind "
-                 + m["kind"] + ")")
+                 title=f"compensator ({m['kind']}): drive - applied RMS {drive_rms:.4g}")
     ax[1, 1].legend(loc="best")
     fig.tight_layout()
     fig.savefig(a.out)
-    print(f"{a.out}: {n} samples, error RMS {rms:.6g}, max {peak:.6g}")
+    print(f"{a.out}: {n} samples, error RMS {rms:.6g}, max {peak:.6g}, "
+          f"compensator's drive - applied RMS {drive_rms:.6g}")
     return 0
 
 

@@ -55,7 +55,7 @@ def ModelFromPoints(xs, ys, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inve
 
 
 def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
-                     capacity=DEFAULT_CAPACITY, deadband=0.0):
+                     capacity=DEFAULT_CAPACITY, deadband=0.0, inverse=False):
     """The asymmetric kind (hyst_everett_t): rising from a turning point
     (b, y_b) the output is y_b + E(x, b), falling from (a, y_a) it is
     y_a - E(a, x), with E(a, b) the sum of e[i-1][j] w^i t^j over i >= 1,
@@ -63,9 +63,15 @@ def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
     t = (b - lo) / (hi - lo). ``terms`` lists e[i-1][j] for i = 1..degree,
     then j = 0..degree-i (degree 2: w, w t, w^2); ``y_lo`` is the output at
     lo after reset. The library refuses an E that does not increase in a and
-    decrease in b on the whole triangle (``HystError`` ERR_NOT_MONOTONE)."""
+    decrease in b on the whole triangle (``HystError`` ERR_NOT_MONOTONE).
+
+    ``inverse=True`` gives its compensator (hyst_curve_inverse(), kind
+    HYST_CURVE_EVERETT_INV): desired output in, on the major loop's output
+    range [y_lo, y_lo + E(hi, lo)] (clamped outside), drive out, within
+    about 1e-12 (float64) / 1e-6 (float32) of the drive span."""
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
-        int(degree), float(lo), float(hi), float(y_lo), list(map(float, terms)), int(capacity))
+        int(degree), float(lo), float(hi), float(y_lo), list(map(float, terms)), int(capacity),
+        bool(inverse))
     if deadband:
         m.deadband = deadband
     return m
@@ -80,6 +86,15 @@ def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
         return ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
                                 desc["terms"], dtype=dtype, capacity=capacity)
     return Model(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity)
+
+
+def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
+    """The compensator (inverse model) of the model :func:`model_from` gives:
+    desired output in, drive out, for either kind."""
+    if desc.get("kind", "poly") == "everett":
+        return ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
+                                desc["terms"], dtype=dtype, capacity=capacity, inverse=True)
+    return Compensator(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity)
 
 
 def PI(thresholds, weights, *, dtype=np.float64):

@@ -183,7 +183,7 @@ template <class X, class Y> struct Owned : Tcm {
 template <class T> struct Real : Owned<T, T> {
     using O = Ops<T>;
     hyst_curve_t inv{}; /* the compensator's inverse curve (the instance points at it) */
-    hyst_curve_t fwd{}; /* a piecewise-linear f0 or an E (the instance or inv points at it) */
+    hyst_curve_t fwd{}; /* a piecewise-linear f0 or an E (the model's curve; inv derives from it) */
     std::vector<T> bx, by; /* its breakpoints (fwd points at them) */
     bool inverse;
     double deadband = 0.0;
@@ -211,16 +211,22 @@ template <class T> struct Real : Owned<T, T> {
         this->hi = xs.empty() ? 0.0 : xs.back();
     }
 
-    /* The asymmetric kind: a branch function E (make_everett()). */
+    /* The asymmetric kind: a branch function E (make_everett()), or its
+     * compensator (HYST_CURVE_EVERETT_INV). */
     Real(unsigned degree, double lo_, double hi_, double y_lo_, const std::vector<double> &terms_,
-         size_t capacity)
-        : Owned<T, T>(capacity), inverse(false)
+         size_t capacity, bool inverse_)
+        : Owned<T, T>(capacity), inverse(inverse_)
     {
         const hyst_everett_t e = make_everett(degree, lo_, hi_, y_lo_, terms_);
         check(O::curve_from_everett(&fwd, &e, HYST_LAYOUT), "curve");
-        check(O::init_curve(&this->S, &fwd, this->xl.data(), this->yl.data(), this->xr.data(),
+        const hyst_curve_t *c = &fwd;
+        if (inverse) {
+            check(hyst_curve_inverse(&inv, &fwd), "inverse curve");
+            c = &inv;
+        }
+        check(O::init_curve(&this->S, c, this->xl.data(), this->yl.data(), this->xr.data(),
                             this->yr.data(), capacity, HYST_LAYOUT),
-              "model init");
+              inverse ? "compensator init" : "model init");
         this->kind = "everett";
         this->terms = terms_;
         this->lo = lo_;
@@ -468,8 +474,9 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
              "lo"_a, "hi"_a, "capacity"_a, "inverse"_a)
         .def(nb::init<const std::vector<double> &, const std::vector<double> &, size_t, bool>(),
              "xs"_a, "ys"_a, "capacity"_a, "inverse"_a)
-        .def(nb::init<unsigned, double, double, double, const std::vector<double> &, size_t>(),
-             "degree"_a, "lo"_a, "hi"_a, "y_lo"_a, "terms"_a, "capacity"_a)
+        .def(nb::init<unsigned, double, double, double, const std::vector<double> &, size_t,
+                      bool>(),
+             "degree"_a, "lo"_a, "hi"_a, "y_lo"_a, "terms"_a, "capacity"_a, "inverse"_a = false)
         .def("step", &R::step, "x"_a, "One sample in, one output out.")
         .def_prop_rw("deadband", [](const R &s) { return s.deadband; }, &R::set_deadband)
         .def_prop_ro("output", [](const R &s) { return Ops<T>::output(&s.S); })

@@ -139,12 +139,15 @@ def run_on_header(tmp_path, name, header, init_fails, inputs, declarations=""):
     return np.array([float(v) for v in out])
 
 
-@pytest.mark.parametrize("kind, degree, delay, most", [
-    ("poly", 3, 3, 1.0),  # um, on the measured record (the fit's own residual is ~0.34)
-    ("everett", 2, 4, 0.3),  # its least-squares residual is 0.23
+@pytest.mark.parametrize("kind, degree, delay, most, drive_most", [
+    # um, on the measured record (the fit's own residual is ~0.34); drive 0.027 V
+    ("poly", 3, 3, 1.0, 0.04),
+    ("everett", 2, 4, 0.3, 0.03),  # its least-squares residual is 0.23; drive 0.018 V
 ])
-def test_plot_command_without_code(tmp_path, kind, degree, delay, most):
-    """python -m hyst plot: a figure from a data file and a model file."""
+def test_plot_command_without_code(tmp_path, kind, degree, delay, most, drive_most):
+    """python -m hyst plot: a figure from a data file and a model file; the
+    compensator of either kind, driven by the measured output, gives about
+    the drive that was applied (0 .. 3.6 V)."""
     pytest.importorskip("matplotlib")
     d = np.loadtxt(DATA)
     f = hyst.fit(d[:, 0], d[:, 4], degree, kind=kind, skip=350, delay=delay)
@@ -158,6 +161,8 @@ def test_plot_command_without_code(tmp_path, kind, degree, delay, most):
     assert fig.stat().st_size > 10000 and fig.read_bytes()[:4] == b"\x89PNG"
     rms = float(out.split("error RMS ")[1].split(",")[0])
     assert 0 < rms < most
+    drive_rms = float(out.split("applied RMS ")[1])
+    assert 0 < drive_rms < drive_most
 
 
 # ---- the asymmetric kind (kind everett) ----
