@@ -5,7 +5,8 @@
  *
  * Input layout (reads past the end yield zeros, so every input is valid):
  *   [0]  flags: bit0 raw coefficients (arbitrary doubles) else small grids;
- *        bit1 feed the outputs to an E fit and check its solution
+ *        bit1 feed the outputs to an E fit and check its solution;
+ *        bit2 feed the outputs to the compensator (hyst_curve_inverse())
  *   [1]  degree (byte % 6: 0 and 5 are invalid), [2] capacity (byte % 40)
  *   then lo, hi, y_lo and the coefficients e[i][j], then samples: each byte
  *   an input on a 256-step grid of the domain.
@@ -14,7 +15,10 @@
  * points of its triangle (the proof is sound) and outputs equal the double
  * reference (tests/support/ref_everett.c) within rounding until memory
  * fills, then within the stated error bound; always, finite outputs; the block call equals the per-sample call bit for bit; the
- * fit never fails on a record it accepted, and its RMS is finite. */
+ * fit never fails on a record it accepted, and its RMS is finite; the
+ * compensator's drive, fed to the model, gives the outputs back (on the
+ * structured grids, until either memory fills), never moves against them,
+ * and its block call equals its steps. */
 #include "fuzz_common.h"
 #include "ref_everett.h"
 
@@ -23,7 +27,7 @@
 
 static double xl[MAX_CAP], yl[MAX_CAP], xr[MAX_CAP], yr[MAX_CAP];
 static double xl2[MAX_CAP], yl2[MAX_CAP], xr2[MAX_CAP], yr2[MAX_CAP];
-static double xs[MAX_SAMPLES], ys[MAX_SAMPLES], ys2[MAX_SAMPLES];
+static double xs[MAX_SAMPLES], ys[MAX_SAMPLES], ys2[MAX_SAMPLES], drive[MAX_SAMPLES];
 static hyst_wide_t fit_work[HYST_EVERETT_FIT_WORK(MAX_SAMPLES + 2u)];
 static ref_everett_t ref;
 
@@ -43,6 +47,36 @@ static double sampled_slack(const hyst_everett_t *e, double scale)
         }
     }
     return worst / (2.0 * h * scale / span);
+}
+
+/* The compensator of the accepted curve on the desired outputs ys[0..n):
+ * see the header. */
+static void check_compensator(const hyst_curve_t *curve, double scale, int raw, size_t n)
+{
+    static double cl[MAX_CAP], cyl[MAX_CAP], cr[MAX_CAP], cyr[MAX_CAP];
+    hyst_curve_t inv;
+    hyst_t C, M;
+    size_t k;
+    int full = 0;
+    CHECK(hyst_curve_inverse(&inv, curve) == HYST_OK);
+    CHECK(hyst_init_curve(&C, &inv, cl, cyl, cr, cyr, MAX_CAP) == HYST_OK);
+    CHECK(hyst_init_curve(&M, curve, xl2, yl2, xr2, yr2, MAX_CAP) == HYST_OK);
+    for (k = 0u; k < n; ++k) {
+        const double x = hyst_step(&C, ys[k]);
+        const double y = hyst_step(&M, x);
+        drive[k] = x;
+        full |= hyst_status(&C) == HYST_WARN_FULL || hyst_status(&M) == HYST_WARN_FULL;
+        CHECK(hyst_status(&C) >= 0 && isfinite(x));
+        if (k > 0u && !full) { /* monotone: never against the desired output */
+            CHECK(ys[k] > ys[k - 1u] ? x >= drive[k - 1u] : ys[k] < ys[k - 1u] ? x <= drive[k - 1u] : 1);
+        }
+        if (!raw && !full) { /* Newton's tolerance in the drive, times E's slope, and rounding */
+            CHECK(fabs(y - ys[k]) <= 1e-9 * (scale + fabs(ys[k])));
+        }
+    }
+    CHECK(hyst_init_curve(&C, &inv, cl, cyl, cr, cyr, MAX_CAP) == HYST_OK);
+    CHECK(hyst_process(&C, ys, ys2, n) >= 0);
+    CHECK(n == 0u || memcmp(drive, ys2, n * sizeof ys2[0]) == 0);
 }
 
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
@@ -115,6 +149,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     }
     CHECK(hyst_process(&T, xs, ys2, n) >= 0);
     CHECK(n == 0u || memcmp(ys, ys2, n * sizeof ys[0]) == 0);
+    if (flags & 4u) {
+        check_compensator(&curve, scale, (int)(flags & 1u), n);
+    }
     if ((flags & 2u) && n > 0u) {
         hyst_everett_fit_t fit;
         hyst_everett_t got;
