@@ -79,6 +79,21 @@ static void compose(bipoly_t *r, const bipoly_t *p, const hyst_wide_t *v0, const
     }
 }
 
+/* Bernstein-Bezier coefficient of s^i t^j (1 - s - t)^(n-i-j) of the
+ * degree-n polynomial q on the unit triangle, from its monomials. */
+static hyst_wide_t bernstein(const bipoly_t *q, unsigned n, unsigned i, unsigned j)
+{
+    hyst_wide_t c = 0;
+    unsigned a, b;
+    for (a = 0u; a <= i; ++a) {
+        for (b = 0u; b <= j; ++b) {
+            c += q->c[a][b] * factorial(n - a - b) * factorial(i) * factorial(j) /
+                 (factorial(i - a) * factorial(j - b) * factorial(n));
+        }
+    }
+    return c;
+}
+
 /* The signs of p's Bernstein-Bezier coefficients on the triangle P0 P1 P2:
  * 1 if all >= -tol (p >= -tol there), 0 if one at a vertex is below (p
  * is negative there), -1 if undecided. */
@@ -87,18 +102,11 @@ static int sign_on(const bipoly_t *p, unsigned n, const hyst_wide_t *v0, const h
 {
     bipoly_t q;
     hyst_wide_t lowest = 0;
-    unsigned i, j, a, b;
+    unsigned i, j;
     compose(&q, p, v0, v1, v2);
-    /* B-B coefficient of s^i t^j (1 - s - t)^(n-i-j) from the monomials */
     for (i = 0u; i <= n; ++i) {
         for (j = 0u; i + j <= n; ++j) {
-            hyst_wide_t c = 0;
-            for (a = 0u; a <= i; ++a) {
-                for (b = 0u; b <= j; ++b) {
-                    c += q.c[a][b] * factorial(n - a - b) * factorial(i) * factorial(j) /
-                         (factorial(i - a) * factorial(j - b) * factorial(n));
-                }
-            }
+            const hyst_wide_t c = bernstein(&q, n, i, j);
             if ((i == n || j == n || i + j == 0u) && c < -tol) {
                 return 0; /* the value at a vertex: negative there */
             }
@@ -162,30 +170,52 @@ static int nonneg_on_triangle(const bipoly_t *p, unsigned n, hyst_wide_t tol)
     return 1;
 }
 
-/* E increases in a and decreases in b on lo <= b <= a <= hi: with
- * R(w, t) = E(b + w span, b), dE/da = R_w >= 0 and dE/db = R_t - R_w <= 0
- * on the triangle w, t >= 0, w + t <= 1. */
-static int monotone(const hyst_everett_t *e)
+/* With R(w, t) = E(b + w span, b): dE/da = R_w and dE/db = R_t - R_w, so
+ * E increases in a and decreases in b on lo <= b <= a <= hi iff rw = R_w
+ * and diff = R_w - R_t are >= 0 on the triangle w, t >= 0, w + t <= 1.
+ * Returns the sum of |e_ij| (i + j), the scale of their coefficients. */
+static hyst_wide_t derivatives(const hyst_everett_t *e, bipoly_t *rw, bipoly_t *diff)
 {
-    bipoly_t rw, diff;
-    hyst_wide_t scale = 0, tol;
+    hyst_wide_t scale = 0;
     unsigned i, j;
-    memset(&rw, 0, sizeof rw);
-    memset(&diff, 0, sizeof diff);
+    memset(rw, 0, sizeof *rw);
+    memset(diff, 0, sizeof *diff);
     for (i = 1u; i <= e->degree; ++i) {
         for (j = 0u; i + j <= e->degree; ++j) {
             const hyst_wide_t c = e->e[i - 1u][j];
-            rw.c[i - 1u][j] += (hyst_wide_t)i * c;
-            diff.c[i - 1u][j] += (hyst_wide_t)i * c;
+            rw->c[i - 1u][j] += (hyst_wide_t)i * c;
+            diff->c[i - 1u][j] += (hyst_wide_t)i * c;
             if (j > 0u) {
-                diff.c[i][j - 1u] -= (hyst_wide_t)j * c;
+                diff->c[i][j - 1u] -= (hyst_wide_t)j * c;
             }
             scale += hyst_wide_abs(c) * (hyst_wide_t)(i + j);
         }
     }
-    tol = 64 * (hyst_wide_t)DBL_EPSILON * scale;
+    return scale;
+}
+
+int hyst_everett_monotone_(const hyst_everett_t *e)
+{
+    bipoly_t rw, diff;
+    const hyst_wide_t tol = 64 * (hyst_wide_t)DBL_EPSILON * derivatives(e, &rw, &diff);
     return nonneg_on_triangle(&rw, e->degree - 1u, tol) &&
            nonneg_on_triangle(&diff, e->degree - 1u, tol);
+}
+
+size_t hyst_everett_bernstein_(const hyst_everett_t *e, hyst_wide_t *c)
+{
+    bipoly_t rw, diff;
+    const unsigned n = e->degree - 1u;
+    size_t k = 0u;
+    unsigned i, j;
+    (void)derivatives(e, &rw, &diff);
+    for (i = 0u; i <= n; ++i) {
+        for (j = 0u; i + j <= n; ++j) {
+            c[k++] = bernstein(&rw, n, i, j);
+            c[k++] = bernstein(&diff, n, i, j);
+        }
+    }
+    return k;
 }
 
 /* Binomial coefficient C(j, m), small arguments. */
@@ -290,7 +320,7 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
     if (w_rise == 0 || w_fall == 0) {
         return HYST_ERR_COEFF;
     }
-    if (!monotone(e)) {
+    if (!hyst_everett_monotone_(e)) {
         return HYST_ERR_NOT_MONOTONE;
     }
     /* One branch evaluation y_k +- G: the anchor, each coefficient's Horner

@@ -135,19 +135,132 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
     return HYST_OK;
 }
 
-hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
-                                     hyst_wide_t *rms)
+/* Constraint rows of the monotone fit, v_i = L^-1 c_i, each of
+ * HYST_EVERETT_FIT_COLS numbers: the dual's Gram matrix is V'V. */
+static hyst_wide_t dual_gram(const void *ctx, size_t i, size_t j)
+{
+    const hyst_wide_t *v = (const hyst_wide_t *)ctx;
+    hyst_wide_t sum = 0;
+    size_t k;
+    for (k = 0u; k < HYST_EVERETT_FIT_COLS; ++k) {
+        sum += v[i * HYST_EVERETT_FIT_COLS + k] * v[j * HYST_EVERETT_FIT_COLS + k];
+    }
+    return sum;
+}
+
+/* Least squares subject to C e >= 0, C the Bernstein-Bezier coefficients
+ * of span dE/da and -span dE/db (linear in e), by its dual: with the
+ * normal equations A'A = L L' and u = L^-1 A'y, the solution is
+ * s = L'^-1 (u + V lambda), V = L^-1 C' (zero in the y_lo row), where
+ * lambda >= 0 minimises |u + V lambda|^2: non-negative least squares, whose
+ * normal equations V'V lambda = -V'u are hyst_nnls_t's. Returns 0 if that
+ * ran out of iterations. */
+static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
+                          const hyst_wide_t *u, hyst_wide_t *s)
+{
+    enum { M = HYST_EVERETT_BERNSTEIN_MAX, N = HYST_EVERETT_FIT_COLS };
+    hyst_wide_t v[M * N], rhs[M], lambda[M], passive[M], grad[M], set[M], b[M];
+    hyst_wide_t lp[(N - 1u) * (N - 1u)], coef[M], unorm = 0;
+    hyst_everett_t unit;
+    hyst_nnls_t p;
+    const size_t n = fit->cols;
+    size_t m = 0u, i, k, col;
+    unsigned a, c;
+    int done;
+    memset(v, 0, sizeof v);
+    memset(&unit, 0, sizeof unit);
+    unit.degree = fit->degree;
+    for (a = 1u, col = 1u; a <= fit->degree; ++a) { /* C's column of each coefficient */
+        for (c = 0u; a + c <= fit->degree; ++c, ++col) {
+            unit.e[a - 1u][c] = 1;
+            m = hyst_everett_bernstein_(&unit, coef);
+            unit.e[a - 1u][c] = 0;
+            for (i = 0u; i < m; ++i) {
+                v[i * N + col] = coef[i];
+            }
+        }
+    }
+    for (k = 0u; k < n; ++k) {
+        unorm += u[k] * u[k];
+    }
+    for (i = 0u; i < m; ++i) { /* v_i = L^-1 c_i, scaled to length 1 (same constraint) */
+        hyst_wide_t *vi = v + i * N, len = 0;
+        for (k = 0u; k < n; ++k) {
+            size_t j;
+            for (j = 0u; j < k; ++j) {
+                vi[k] -= l[k * N + j] * vi[j];
+            }
+            vi[k] /= l[k * N + k];
+            len += vi[k] * vi[k];
+        }
+        len = len > 0 ? WIDE_SQRT(len) : 1; /* a zero row constrains nothing */
+        rhs[i] = 0;
+        for (k = 0u; k < n; ++k) {
+            vi[k] /= len;
+            rhs[i] -= vi[k] * u[k];
+        }
+    }
+    p.n = m;
+    p.gram = dual_gram;
+    p.ctx = v;
+    p.c = rhs;
+    p.w = lambda;
+    p.s = passive;
+    p.g = grad;
+    p.set = set;
+    p.b = b;
+    p.l = lp;
+    p.most = n - 1u; /* independent rows of V: at most its n - 1 non-zero entries */
+    /* |rhs_i| <= |u|: a gradient below this share of it is rounding */
+    done = hyst_nnls_(&p, WIDE_SQRT(unorm) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m));
+    for (k = 0u; k < n; ++k) { /* z = u + V lambda, into s */
+        s[k] = u[k];
+        for (i = 0u; i < m; ++i) {
+            s[k] += v[i * N + k] * lambda[i];
+        }
+    }
+    for (k = n; k-- > 0u;) { /* L' s = z */
+        for (i = k + 1u; i < n; ++i) {
+            s[k] -= l[i * N + k] * s[i];
+        }
+        s[k] /= l[k * N + k];
+    }
+    return done;
+}
+
+/* E's coefficients, y_lo and the domain from the solution s. */
+static void to_everett(const hyst_everett_fit_t *fit, const hyst_wide_t *s, hyst_everett_t *e)
+{
+    unsigned a, b;
+    size_t col;
+    memset(e, 0, sizeof *e);
+    e->degree = fit->degree;
+    e->lo = fit->lo;
+    e->hi = fit->hi;
+    e->y_lo = s[0];
+    for (a = 1u, col = 1u; a <= fit->degree; ++a) {
+        for (b = 0u; a + b <= fit->degree; ++b) {
+            e->e[a - 1u][b] = s[col++];
+        }
+    }
+}
+
+/* Least squares into e and rms; if `constrained` and the curve would
+ * refuse that E, the least-squares E of the sufficient conditions. */
+static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hyst_wide_t *rms,
+                           int constrained)
 {
     hyst_wide_t l[HYST_EVERETT_FIT_COLS * HYST_EVERETT_FIT_COLS];
-    hyst_wide_t s[HYST_EVERETT_FIT_COLS];
+    hyst_wide_t s[HYST_EVERETT_FIT_COLS], u[HYST_EVERETT_FIT_COLS];
     hyst_wide_t ss;
-    size_t n, i, j, k, col;
-    unsigned a, b;
+    hyst_status_t st = HYST_OK;
+    size_t n, i, j, k;
     if (fit == NULL || e == NULL) {
         return HYST_ERR_NULL;
     }
     n = fit->cols;
     memset(s, 0, sizeof s);
+    memset(u, 0, sizeof u);
     if (n < 2u || n > HYST_EVERETT_FIT_COLS || fit->used <= n) {
         return HYST_ERR_SINGULAR;
     }
@@ -172,12 +285,23 @@ hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett
             s[i] -= l[i * HYST_EVERETT_FIT_COLS + k] * s[k];
         }
         s[i] /= l[i * HYST_EVERETT_FIT_COLS + i];
+        u[i] = s[i];
     }
     for (i = n; i-- > 0u;) { /* L' s = u */
         for (k = i + 1u; k < n; ++k) {
             s[i] -= l[k * HYST_EVERETT_FIT_COLS + i] * s[k];
         }
         s[i] /= l[i * HYST_EVERETT_FIT_COLS + i];
+    }
+    to_everett(fit, s, e);
+    if (constrained && !hyst_everett_monotone_(e)) {
+        /* the curve refuses the unconstrained E: the least-squares E the
+         * sufficient conditions accept instead */
+        const int done = monotone_solve(fit, l, u, s);
+        to_everett(fit, s, e);
+        if (!done || !hyst_everett_monotone_(e)) {
+            st = HYST_ERR_NOT_MONOTONE;
+        }
     }
     /* residual: y'y - 2 s'A'y + s'A s */
     ss = fit->yy;
@@ -190,18 +314,20 @@ hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett
         }
         ss += s[i] * (as - 2 * fit->aty[i]);
     }
-    memset(e, 0, sizeof *e);
-    e->degree = fit->degree;
-    e->lo = fit->lo;
-    e->hi = fit->hi;
-    e->y_lo = s[0];
-    for (a = 1u, col = 1u; a <= fit->degree; ++a) {
-        for (b = 0u; a + b <= fit->degree; ++b) {
-            e->e[a - 1u][b] = s[col++];
-        }
-    }
     if (rms != NULL) {
         *rms = WIDE_SQRT((ss > 0 ? ss : 0) / (hyst_wide_t)fit->used);
     }
-    return HYST_OK;
+    return st;
+}
+
+hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
+                                     hyst_wide_t *rms)
+{
+    return solve(fit, e, rms, 1);
+}
+
+hyst_status_t hyst_everett_fit_solve_unconstrained(const hyst_everett_fit_t *fit,
+                                                   hyst_everett_t *e, hyst_wide_t *rms)
+{
+    return solve(fit, e, rms, 0);
 }

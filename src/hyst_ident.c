@@ -498,8 +498,6 @@ hyst_status_t hyst_ident_poly(const hyst_ident_result_t *res, hyst_poly_t *f0)
 enum { PI_R, PI_Z, PI_MZ, PI_CY, PI_W, PI_S, PI_G, PI_SET, PI_B, PI_VECTORS };
 enum { PI_MY, PI_SYY, PI_XMIN, PI_XMAX, PI_XSEEN, PI_SCALARS };
 
-#define PI_PASSIVE ((hyst_wide_t)1)  /* weight free (positive) */
-#define PI_REJECTED ((hyst_wide_t)-1) /* column dependent on the passive ones */
 
 static hyst_wide_t *pi_vec(const hyst_pi_fit_t *f, unsigned which)
 {
@@ -642,36 +640,45 @@ hyst_status_t hyst_pi_fit_add(hyst_pi_fit_t *fit, hyst_wide_t x, hyst_wide_t y)
     return HYST_OK;
 }
 
-/* Solves C_PP s_P = cy_P on the passive set (Cholesky, compressed) into s;
- * 0 if the set's co-moment matrix is numerically singular. */
-static int pi_passive_solve(const hyst_pi_fit_t *f)
+/* ---- Non-negative least squares (hyst_util.h, hyst_nnls_t), shared by
+ * the PI weights and the monotone E fit (src/hyst_everett_fit.c) ---- */
+
+#define NNLS_PASSIVE ((hyst_wide_t)1)  /* weight free (positive) */
+#define NNLS_REJECTED ((hyst_wide_t)-1) /* column dependent on the passive ones */
+
+/* Solves H_PP s_P = c_P on the passive set (Cholesky, compressed) into s;
+ * 0 if the set's matrix is numerically singular or holds more than `most`. */
+static int nnls_passive_solve(const hyst_nnls_t *f)
 {
-    const size_t n = f->n;
-    const hyst_wide_t *set = pi_vec(f, PI_SET), *cy = pi_vec(f, PI_CY);
-    hyst_wide_t *s = pi_vec(f, PI_S), *b = pi_vec(f, PI_B), *l = pi_gram(f) + n * n;
+    const size_t n = f->n, m = f->most;
+    const hyst_wide_t *set = f->set, *cy = f->c;
+    hyst_wide_t *s = f->s, *b = f->b, *l = f->l;
     size_t i, j, a, p = 0u;
     for (i = 0u; i < n; ++i) {
         size_t q = 0u;
-        if (set[i] != PI_PASSIVE) {
+        if (set[i] != NNLS_PASSIVE) {
             continue;
+        }
+        if (p == m) {
+            return 0;
         }
         for (j = 0u; j <= i; ++j) {
             hyst_wide_t sum;
-            if (set[j] != PI_PASSIVE) {
+            if (set[j] != NNLS_PASSIVE) {
                 continue;
             }
-            sum = pi_c(f, i, j);
+            sum = f->gram(f->ctx, i, j);
             for (a = 0u; a < q; ++a) {
-                sum -= l[p * n + a] * l[q * n + a];
+                sum -= l[p * m + a] * l[q * m + a];
             }
             if (q < p) {
-                l[p * n + q] = sum / l[q * n + q];
+                l[p * m + q] = sum / l[q * m + q];
             } else {
                 /* a pivot this small: column i lies in the span of the others */
-                if (!(sum > pi_c(f, i, i) * HYST_WIDE_EPS * (hyst_wide_t)1e4)) {
+                if (!(sum > f->gram(f->ctx, i, i) * HYST_WIDE_EPS * (hyst_wide_t)1e4)) {
                     return 0;
                 }
-                l[p * n + p] = WIDE_SQRT(sum);
+                l[p * m + p] = WIDE_SQRT(sum);
             }
             ++q;
         }
@@ -679,41 +686,39 @@ static int pi_passive_solve(const hyst_pi_fit_t *f)
     }
     for (i = 0u; i < p; ++i) { /* L u = b */
         for (a = 0u; a < i; ++a) {
-            b[i] -= l[i * n + a] * b[a];
+            b[i] -= l[i * m + a] * b[a];
         }
-        b[i] /= l[i * n + i];
+        b[i] /= l[i * m + i];
     }
     for (i = p; i-- > 0u;) { /* L' s = u */
         for (a = i + 1u; a < p; ++a) {
-            b[i] -= l[a * n + i] * b[a];
+            b[i] -= l[a * m + i] * b[a];
         }
-        b[i] /= l[i * n + i];
+        b[i] /= l[i * m + i];
     }
     for (i = 0u, p = 0u; i < n; ++i) {
-        s[i] = set[i] == PI_PASSIVE ? b[p++] : 0;
+        s[i] = set[i] == NNLS_PASSIVE ? b[p++] : 0;
     }
     return 1;
 }
 
-/* Gradient of the objective's negative half: g = cy - C w. */
-static void pi_gradient(const hyst_pi_fit_t *f)
+/* Gradient of the objective's negative half: g = c - H w. */
+static void nnls_gradient(const hyst_nnls_t *f)
 {
-    const hyst_wide_t *w = pi_vec(f, PI_W), *cy = pi_vec(f, PI_CY);
-    hyst_wide_t *g = pi_vec(f, PI_G);
     size_t i, j;
     for (i = 0u; i < f->n; ++i) {
-        hyst_wide_t acc = cy[i];
+        hyst_wide_t acc = f->c[i];
         for (j = 0u; j < f->n; ++j) {
-            acc -= pi_c(f, i, j) * w[j];
+            acc -= f->gram(f->ctx, i, j) * f->w[j];
         }
-        g[i] = acc;
+        f->g[i] = acc;
     }
 }
 
 /* The zero weight whose gradient is largest above tol, or n if none. */
-static size_t pi_entering(const hyst_pi_fit_t *f, hyst_wide_t tol)
+static size_t nnls_entering(const hyst_nnls_t *f, hyst_wide_t tol)
 {
-    const hyst_wide_t *g = pi_vec(f, PI_G), *set = pi_vec(f, PI_SET);
+    const hyst_wide_t *g = f->g, *set = f->set;
     size_t i, t = f->n;
     for (i = 0u; i < f->n; ++i) {
         if (set[i] == 0 && g[i] > tol && (t == f->n || g[i] > g[t])) {
@@ -726,14 +731,14 @@ static size_t pi_entering(const hyst_pi_fit_t *f, hyst_wide_t tol)
 /* After a passive solve s: 1 if every passive entry is positive (w = s);
  * else moves w towards s until the first weight reaches 0, frees it (and
  * any other at 0) and returns 0. */
-static int pi_step_towards(const hyst_pi_fit_t *f)
+static int nnls_step_towards(const hyst_nnls_t *f)
 {
     const size_t n = f->n;
-    hyst_wide_t *w = pi_vec(f, PI_W), *s = pi_vec(f, PI_S), *set = pi_vec(f, PI_SET);
+    hyst_wide_t *w = f->w, *s = f->s, *set = f->set;
     hyst_wide_t alpha = 1;
     size_t i, out = n;
     for (i = 0u; i < n; ++i) {
-        if (set[i] == PI_PASSIVE && !(s[i] > 0)) {
+        if (set[i] == NNLS_PASSIVE && !(s[i] > 0)) {
             const hyst_wide_t a = w[i] / (w[i] - s[i]);
             if (out == n || a < alpha) {
                 alpha = a;
@@ -748,13 +753,13 @@ static int pi_step_towards(const hyst_pi_fit_t *f)
         return 1;
     }
     for (i = 0u; i < n; ++i) {
-        if (set[i] == PI_PASSIVE) {
+        if (set[i] == NNLS_PASSIVE) {
             w[i] += alpha * (s[i] - w[i]);
             if (i == out || !(w[i] > 0)) {
                 w[i] = 0;
                 set[i] = 0;
             }
-        } else if (set[i] == PI_REJECTED) {
+        } else if (set[i] == NNLS_REJECTED) {
             set[i] = 0; /* the set changed: worth another try */
         }
     }
@@ -765,33 +770,57 @@ static int pi_step_towards(const hyst_pi_fit_t *f)
  * when its unconstrained solution has a non-positive entry, step back
  * towards it until a weight reaches 0 and free that weight again. Both
  * loops are bounded (a rounding-level cycle ends with a feasible w). */
-static void pi_nnls(const hyst_pi_fit_t *f, hyst_wide_t tol)
+int hyst_nnls_(const hyst_nnls_t *f, hyst_wide_t tol)
 {
     const size_t n = f->n;
-    hyst_wide_t *w = pi_vec(f, PI_W), *s = pi_vec(f, PI_S), *set = pi_vec(f, PI_SET);
+    hyst_wide_t *s = f->s, *set = f->set;
     size_t iter, i;
     for (i = 0u; i < n; ++i) {
-        w[i] = 0;
+        f->w[i] = 0;
         set[i] = 0;
     }
     for (iter = 0u; iter < 3u * n + 3u; ++iter) {
         size_t t, inner;
-        pi_gradient(f);
-        t = pi_entering(f, tol);
+        nnls_gradient(f);
+        t = nnls_entering(f, tol);
         if (t == n) {
-            return; /* KKT: no zero weight would lower the residual */
+            return 1; /* KKT: no zero weight would lower the residual */
         }
-        set[t] = PI_PASSIVE;
+        set[t] = NNLS_PASSIVE;
         for (inner = 0u; inner <= n; ++inner) {
-            if (!pi_passive_solve(f) || (inner == 0u && !(s[t] > 0))) {
-                set[t] = PI_REJECTED; /* cannot help: w stays as it was */
+            if (!nnls_passive_solve(f) || (inner == 0u && !(s[t] > 0))) {
+                set[t] = NNLS_REJECTED; /* cannot help: w stays as it was */
                 break;
             }
-            if (pi_step_towards(f)) {
+            if (nnls_step_towards(f)) {
                 break;
             }
         }
     }
+    return 0;
+}
+
+static hyst_wide_t pi_gram_at(const void *ctx, size_t i, size_t j)
+{
+    return pi_c((const hyst_pi_fit_t *)ctx, i, j);
+}
+
+/* The PI weights' problem in the fit's workspace (layout above). */
+static void pi_nnls(const hyst_pi_fit_t *f, hyst_wide_t tol)
+{
+    hyst_nnls_t p;
+    p.n = f->n;
+    p.gram = pi_gram_at;
+    p.ctx = f;
+    p.c = pi_vec(f, PI_CY);
+    p.w = pi_vec(f, PI_W);
+    p.s = pi_vec(f, PI_S);
+    p.g = pi_vec(f, PI_G);
+    p.set = pi_vec(f, PI_SET);
+    p.b = pi_vec(f, PI_B);
+    p.l = pi_gram(f) + f->n * f->n;
+    p.most = f->n;
+    (void)hyst_nnls_(&p, tol);
 }
 
 hyst_status_t hyst_pi_fit_solve(hyst_pi_fit_t *fit, hyst_wide_t *w, hyst_pi_fit_result_t *res)

@@ -131,6 +131,43 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
 hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, unsigned variant,
                                   unsigned long layout);
 
+/* 1 if E increases in a and decreases in b on its whole triangle (the
+ * check hyst_curve_everett_() makes, proved by Bernstein-Bezier
+ * coefficients, subdivided where undecided). */
+int hyst_everett_monotone_(const hyst_everett_t *e);
+
+/* Most Bernstein-Bezier coefficients hyst_everett_bernstein_() gives. */
+#define HYST_EVERETT_BERNSTEIN_MAX (HYST_EVERETT_MAX_DEGREE * (HYST_EVERETT_MAX_DEGREE + 1))
+
+/* The Bernstein-Bezier coefficients on the whole triangle of span dE/da
+ * and of -span dE/db, interleaved, into c: degree (degree + 1) numbers,
+ * linear in E's coefficients. All >= 0 is sufficient for E monotone: the
+ * check then accepts E without subdividing. Returns their number. */
+size_t hyst_everett_bernstein_(const hyst_everett_t *e, hyst_wide_t *c);
+
+/* Lawson-Hanson non-negative least squares in normal-equation form:
+ * w >= 0 minimising w'H w - 2 w'c, H (n x n, symmetric, positive
+ * semi-definite) read through gram(ctx, i, j). Columns of H that depend on
+ * the passive ones are left at 0; at most `most` are passive at a time. */
+typedef struct {
+    size_t n;
+    hyst_wide_t (*gram)(const void *ctx, size_t i, size_t j);
+    const void *ctx;
+    const hyst_wide_t *c;  /* right-hand side, n */
+    hyst_wide_t *w;        /* n: the solution */
+    hyst_wide_t *s;        /* n: the passive set's unconstrained solution */
+    hyst_wide_t *g;        /* n: the gradient c - H w */
+    hyst_wide_t *set;      /* n: flags */
+    hyst_wide_t *b;        /* n: the passive set's right-hand side */
+    hyst_wide_t *l;        /* most x most: Cholesky factor of H on the passive set */
+    size_t most;           /* 1..n */
+} hyst_nnls_t;
+
+/* Runs the problem f to its w (src/hyst_ident.c); returns 1 if it ends at the
+ * optimum (no zero weight whose gradient exceeds tol), 0 if it ran out of
+ * iterations (w is then feasible, not optimal). */
+int hyst_nnls_(const hyst_nnls_t *f, hyst_wide_t tol);
+
 /* f0 (coefficients c, highest power first, degree n) on [lo, hi] as a
  * polynomial in u = (x - lo) / (hi - lo): g[k] multiplies u^k. */
 void hyst_unit_poly_(hyst_wide_t *g, const hyst_wide_t *c, unsigned n, hyst_wide_t lo,

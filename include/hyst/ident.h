@@ -399,14 +399,39 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
 
 /**
  * @brief Solves the least-squares problem into @p e (E's coefficients, y_lo,
- *        the domain) and the residual RMS; E is not checked here: build the
- *        curve with hyst_*_curve_from_everett(), which refuses an E that is
- *        not monotone.
- * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_SINGULAR (too few distinct
- *         turning points for the coefficients).
+ *        the domain) and the residual RMS over the samples used, so that
+ *        hyst_*_curve_from_everett() accepts E.
+ *
+ * The unconstrained least-squares E when the curve accepts it (E increases
+ * in a and decreases in b on the whole triangle lo <= b <= a <= hi): then
+ * bit for bit hyst_everett_fit_solve_unconstrained()'s. Otherwise the
+ * least-squares E subject to linear conditions sufficient for that: the
+ * Bernstein-Bezier coefficients on the triangle of dE/da >= 0 and of
+ * dE/db <= 0 (degree (degree + 1) inequalities, linear in E's
+ * coefficients), solved exactly (a small quadratic programme: non-negative
+ * least squares on its dual, bounded iterations). Sufficient, not
+ * necessary: its residual can exceed that of the best monotone E of the
+ * degree, and always is at least the unconstrained one's
+ * (docs/identification.md, "Monotone fit"). No workspace besides the
+ * fit's; the constrained case takes about 650 hyst_wide_t of stack (5 KB
+ * in double).
+ * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_SINGULAR (too few distinct
+ *         turning points for the coefficients: a record of major loops
+ *         alone determines degree 2 at most); HYST_ERR_NOT_MONOTONE (the
+ *         constrained solution did not converge to an E the curve accepts,
+ *         a rounding-level failure; @p e and @p rms hold it all the same).
  */
 hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
                                      hyst_wide_t *rms);
+
+/**
+ * @brief The plain least-squares E and its residual RMS, not checked: the
+ *        curve refuses it if it is not monotone (for comparison, e.g. what
+ *        the monotone fit of hyst_everett_fit_solve() costs).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_SINGULAR.
+ */
+hyst_status_t hyst_everett_fit_solve_unconstrained(const hyst_everett_fit_t *fit,
+                                                   hyst_everett_t *e, hyst_wide_t *rms);
 
 #ifdef __cplusplus
 }

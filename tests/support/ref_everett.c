@@ -21,6 +21,7 @@ double ref_everett_e(const hyst_everett_t *e, double a, double b)
 void ref_everett_init(ref_everett_t *r, const hyst_everett_t *e)
 {
     r->e = e;
+    r->fn = NULL;
     r->tx[0] = (double)e->lo;
     r->ty[0] = (double)e->y_lo;
     r->n = 1;
@@ -47,7 +48,8 @@ double ref_everett_step(ref_everett_t *r, double x)
         while (r->n >= 3 && x >= r->tx[r->n - 2]) {
             r->n -= 2;
         }
-        r->y = r->ty[r->n - 1] + ref_everett_e(r->e, x, r->tx[r->n - 1]);
+        r->y = r->ty[r->n - 1] + (r->fn != NULL ? r->fn(x, r->tx[r->n - 1])
+                                                : ref_everett_e(r->e, x, r->tx[r->n - 1]));
     } else if (x < r->x) {
         if (rising) {
             push(r);
@@ -55,7 +57,8 @@ double ref_everett_step(ref_everett_t *r, double x)
         while (r->n >= 3 && x <= r->tx[r->n - 2]) {
             r->n -= 2;
         }
-        r->y = r->ty[r->n - 1] - ref_everett_e(r->e, r->tx[r->n - 1], x);
+        r->y = r->ty[r->n - 1] - (r->fn != NULL ? r->fn(r->tx[r->n - 1], x)
+                                                : ref_everett_e(r->e, r->tx[r->n - 1], x));
         if (x <= (double)r->e->lo) { /* every loop closed: back at A0, rising next */
             r->n = 1;
             r->y = (double)r->e->y_lo;

@@ -13,6 +13,9 @@
 
 typedef struct {
     const hyst_everett_t *e;
+    /* E itself if not NULL (a plant that is no polynomial; e gives the
+     * domain and y_lo): set after ref_everett_init() */
+    double (*fn)(double a, double b);
     double tx[REF_EVERETT_TPS], ty[REF_EVERETT_TPS];
     int n;
     double x, y;

@@ -1,0 +1,277 @@
+/* SPDX-License-Identifier: MIT */
+/* The asymmetric kind's identification (ident.h, hyst_everett_fit_*): where
+ * the plain least-squares E is not monotone, hyst_everett_fit_solve() gives
+ * the least-squares E whose derivatives' Bernstein-Bezier coefficients have
+ * the right signs (checked here by an independent conversion), which the
+ * curve accepts, fitting no better than the plain one and better than the
+ * degree below; where the plain E is monotone, bit for bit that E. */
+#include "ref_everett.h"
+#include "support.h"
+#include "unity.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define CAP 256
+#define RECORD 3000L
+
+static hyst_wide_t work[HYST_EVERETT_FIT_WORK(CAP)];
+static double rx[RECORD], ry[RECORD];
+static rng_t rng;
+
+void setUp(void) { rng_seed(&rng, 4711u); }
+void tearDown(void) {}
+
+/* A plant that is no polynomial: E = 5 h(w) (1 + 0.1 (c - 1/2)) on
+ * [-5, 15], h(w) = (1 - e^(-4 w)) / (1 - e^(-4)) saturating in the loop
+ * width w, c the loop's centre in units of the span. Monotone (checked in
+ * test_the_plant_is_monotone); its slope falls 55-fold over the width, so
+ * the plain polynomial fits overshoot into negative slopes. */
+#define PLANT_LO (-5.0)
+#define PLANT_HI 15.0
+static double plant_e(double a, double b)
+{
+    const double span = PLANT_HI - PLANT_LO, w = (a - b) / span;
+    const double c = (0.5 * (a + b) - PLANT_LO) / span;
+    return 5.0 * (1.0 - exp(-4.0 * w)) / (1.0 - exp(-4.0)) * (1.0 + 0.1 * (c - 0.5));
+}
+
+/* Bursts of shrinking loops, from the bottom and (mirrored) from the top:
+ * turning points all over the triangle. */
+static double burst_input(long k, double lo, double hi)
+{
+    const double phase = (double)(k % 1000L) / 1000.0, half = 0.5 * (hi - lo) * (1.0 - phase);
+    const double x = half - half * cos(6.283185307179586 * (double)k / 100.0);
+    return (k % 2000L) >= 1000L ? hi - x : lo + x;
+}
+
+/* The plant's record with Gaussian output noise of `noise`. */
+static void record_plant(double noise)
+{
+    static hyst_everett_t dom;
+    static ref_everett_t r;
+    long k;
+    memset(&dom, 0, sizeof dom);
+    dom.degree = 1u;
+    dom.lo = PLANT_LO;
+    dom.hi = PLANT_HI;
+    ref_everett_init(&r, &dom);
+    r.fn = plant_e;
+    for (k = 0; k < RECORD; ++k) {
+        rx[k] = burst_input(k, PLANT_LO, PLANT_HI);
+        ry[k] = ref_everett_step(&r, rx[k]) + noise * rng_gauss(&rng);
+    }
+}
+
+static void fit_record(hyst_everett_fit_t *fit, unsigned degree, double lo, double hi, long n)
+{
+    long k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_init(fit, degree, (hyst_wide_t)lo,
+                                                         (hyst_wide_t)hi, work,
+                                                         sizeof work / sizeof work[0]));
+    for (k = 0; k < n; ++k) {
+        TEST_ASSERT_EQUAL_INT(HYST_OK,
+                              hyst_everett_fit_add(fit, (hyst_wide_t)rx[k], (hyst_wide_t)ry[k]));
+    }
+}
+
+static double binomial(unsigned n, unsigned k)
+{
+    double c = 1.0;
+    unsigned i;
+    for (i = 1u; i <= k; ++i) {
+        c = c * (double)(n - k + i) / (double)i;
+    }
+    return c;
+}
+
+/* The smallest Bernstein-Bezier coefficient on the unit triangle of p
+ * (p[a][b] multiplies s^a t^b, total degree m): s^a t^b is the sum over
+ * i >= a, j >= b of C(i, a) C(j, b) / (C(m, a + b) C(a + b, a)) B_ij. */
+static double lowest_bernstein(double p[HYST_EVERETT_MAX_DEGREE][HYST_EVERETT_MAX_DEGREE],
+                               unsigned m)
+{
+    double lowest = 1e300;
+    unsigned i, j, a, b;
+    for (i = 0u; i <= m; ++i) {
+        for (j = 0u; i + j <= m; ++j) {
+            double c = 0.0;
+            for (a = 0u; a <= i; ++a) {
+                for (b = 0u; b <= j; ++b) {
+                    c += p[a][b] * binomial(i, a) * binomial(j, b) /
+                         (binomial(m, a + b) * binomial(a + b, a));
+                }
+            }
+            lowest = c < lowest ? c : lowest;
+        }
+    }
+    return lowest;
+}
+
+/* The smallest Bernstein-Bezier coefficient of span dE/da = R_w and of
+ * -span dE/db = R_w - R_t, R(w, t) = E's power form, relative to the
+ * scale the library's check uses (sum of |e_ij| (i + j)). */
+static double bernstein_slack(const hyst_everett_t *e)
+{
+    double rw[HYST_EVERETT_MAX_DEGREE][HYST_EVERETT_MAX_DEGREE];
+    double rb[HYST_EVERETT_MAX_DEGREE][HYST_EVERETT_MAX_DEGREE];
+    double scale = 0.0, low_a, low_b;
+    unsigned i, j;
+    memset(rw, 0, sizeof rw);
+    memset(rb, 0, sizeof rb);
+    for (i = 1u; i <= e->degree; ++i) {
+        for (j = 0u; i + j <= e->degree; ++j) {
+            const double c = (double)e->e[i - 1u][j];
+            rw[i - 1u][j] += (double)i * c;
+            rb[i - 1u][j] += (double)i * c;
+            if (j > 0u) {
+                rb[i][j - 1u] -= (double)j * c;
+            }
+            scale += fabs(c) * (double)(i + j);
+        }
+    }
+    low_a = lowest_bernstein(rw, e->degree - 1u);
+    low_b = lowest_bernstein(rb, e->degree - 1u);
+    return (low_a < low_b ? low_a : low_b) / scale;
+}
+
+/* The plant is a valid Preisach-type E: dE/da >= 0, dE/db <= 0 sampled. */
+static void test_the_plant_is_monotone(void)
+{
+    const double span = PLANT_HI - PLANT_LO, h = 1e-6 * span;
+    int i, j;
+    for (i = 0; i <= 50; ++i) {
+        for (j = 0; i + j <= 50; ++j) {
+            const double b = PLANT_LO + span * (double)j / 50.0, a = b + span * (double)i / 50.0;
+            TEST_ASSERT_TRUE(plant_e(a + h, b) - plant_e(a, b) > 0.0);
+            TEST_ASSERT_TRUE(plant_e(a, b + h) - plant_e(a, b) < 0.0);
+        }
+    }
+}
+
+/* Degrees 2..4 of the plant's record: where the plain fit is refused, the
+ * monotone one is accepted, its coefficients sign-correct, its residual at
+ * least the plain one's; degree 4 needs it and beats degree 2. */
+static void test_monotone_fit_where_least_squares_is_not(void)
+{
+    static hyst_everett_fit_t fit;
+    const double noise = 1e-3 * plant_e(PLANT_HI, PLANT_LO);
+    double rms_by_degree[HYST_EVERETT_MAX_DEGREE + 1] = {0.0}, mean_square = 0.0;
+    int refused[HYST_EVERETT_MAX_DEGREE + 1] = {0};
+    unsigned degree;
+    long k;
+    record_plant(noise);
+    for (k = 0; k < RECORD; ++k) {
+        mean_square += ry[k] * ry[k] / (double)RECORD;
+    }
+    for (degree = 2u; degree <= (unsigned)HYST_EVERETT_MAX_DEGREE; ++degree) {
+        hyst_everett_t plain, mono;
+        hyst_wide_t rms_plain = 0, rms_mono = 0;
+        hyst_curve_t c;
+        fit_record(&fit, degree, PLANT_LO, PLANT_HI, RECORD);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve_unconstrained(&fit, &plain, &rms_plain));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve(&fit, &mono, &rms_mono));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_curve_from_everett(&c, &mono));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f32_curve_from_everett(&c, &mono));
+        refused[degree] = hyst_f64_curve_from_everett(&c, &plain) != HYST_OK;
+        if (refused[degree]) {
+            const double slack = bernstein_slack(&mono);
+            TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_MONOTONE, hyst_f64_curve_from_everett(&c, &plain));
+            TEST_ASSERT_TRUE(bernstein_slack(&plain) < 0.0);
+            /* every coefficient sign-correct, to the check's rounding allowance */
+            TEST_ASSERT_TRUE(slack >= -64.0 * DBL_EPSILON);
+            /* the residual from the normal equations: rounding of y'y */
+            TEST_ASSERT_TRUE((double)rms_mono * (double)rms_mono >=
+                             (double)rms_plain * (double)rms_plain - 1e-12 * mean_square);
+            TEST_PRINTF("degree %u: least squares refused (rms %g), monotone fit rms %g, "
+                        "lowest Bernstein-Bezier coefficient %g of the scale",
+                        degree, (double)rms_plain, (double)rms_mono, slack);
+        } else {
+            TEST_ASSERT_EQUAL_MEMORY(&plain, &mono, sizeof plain);
+            TEST_ASSERT_EQUAL_MEMORY(&rms_plain, &rms_mono, sizeof rms_plain);
+            TEST_PRINTF("degree %u: least squares accepted, rms %g", degree, (double)rms_plain);
+        }
+        rms_by_degree[degree] = (double)rms_mono;
+    }
+    TEST_ASSERT_TRUE(refused[HYST_EVERETT_MAX_DEGREE]);
+    TEST_ASSERT_TRUE(rms_by_degree[HYST_EVERETT_MAX_DEGREE] < rms_by_degree[2]);
+    /* fitting a curve the degree cannot follow: still a clear gain over degree 2 */
+    TEST_ASSERT_TRUE(rms_by_degree[HYST_EVERETT_MAX_DEGREE] < 0.5 * rms_by_degree[2]);
+}
+
+/* Records of monotone polynomial E fitted at their degree: wherever the
+ * plain fit is accepted, hyst_everett_fit_solve() gives it bit for bit;
+ * wherever not (an E at the edge of monotone, noise), its result is
+ * accepted. */
+static void test_monotone_least_squares_is_kept_bit_for_bit(void)
+{
+    static hyst_everett_fit_t fit;
+    int trial, kept = 0;
+    for (trial = 0; trial < 30; ++trial) {
+        const hyst_everett_t e = ref_everett_random(&rng);
+        static ref_everett_t r;
+        hyst_everett_t plain, mono;
+        hyst_wide_t rms_plain = 0, rms_mono = 0;
+        hyst_curve_t c;
+        double v = (double)e.lo, range;
+        long k;
+        if (hyst_f64_curve_from_everett(&c, &e) != HYST_OK || e.degree < 2u) {
+            continue;
+        }
+        range = ref_everett_e(&e, e.hi, e.lo);
+        ref_everett_init(&r, &e);
+        for (k = 0; k < RECORD; ++k) {
+            rx[k] = ref_everett_walk(&rng, &v, (double)e.lo, (double)e.hi);
+            ry[k] = ref_everett_step(&r, rx[k]) + 1e-3 * range * rng_gauss(&rng);
+        }
+        fit_record(&fit, e.degree, (double)e.lo, (double)e.hi, RECORD);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve_unconstrained(&fit, &plain, &rms_plain));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve(&fit, &mono, &rms_mono));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_curve_from_everett(&c, &mono));
+        if (hyst_f64_curve_from_everett(&c, &plain) == HYST_OK) {
+            TEST_ASSERT_EQUAL_MEMORY(&plain, &mono, sizeof plain);
+            TEST_ASSERT_EQUAL_MEMORY(&rms_plain, &rms_mono, sizeof rms_plain);
+            ++kept;
+        }
+    }
+    TEST_PRINTF("%d plain fits accepted and kept", kept);
+    TEST_ASSERT_TRUE(kept >= 10);
+}
+
+/* Major loops alone determine E on the triangle's edges only: degree 3 has
+ * a direction (w t (1 - w - t)) no such record sees, whatever the
+ * constraints; the fit says so instead of guessing. */
+static void test_major_loops_alone_are_singular_above_degree_2(void)
+{
+    static hyst_everett_fit_t fit;
+    static hyst_everett_t dom;
+    static ref_everett_t r;
+    hyst_everett_t e;
+    long k;
+    memset(&dom, 0, sizeof dom);
+    dom.degree = 1u;
+    dom.lo = PLANT_LO;
+    dom.hi = PLANT_HI;
+    ref_everett_init(&r, &dom);
+    r.fn = plant_e;
+    for (k = 0; k < 1200L; ++k) {
+        rx[k] = 5.0 - 10.0 * cos(6.283185307179586 * (double)k / 200.0);
+        ry[k] = ref_everett_step(&r, rx[k]);
+    }
+    fit_record(&fit, 2u, PLANT_LO, PLANT_HI, 1200L);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve(&fit, &e, NULL));
+    fit_record(&fit, 3u, PLANT_LO, PLANT_HI, 1200L);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_SINGULAR, hyst_everett_fit_solve(&fit, &e, NULL));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_SINGULAR, hyst_everett_fit_solve_unconstrained(&fit, &e, NULL));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_the_plant_is_monotone);
+    RUN_TEST(test_monotone_fit_where_least_squares_is_not);
+    RUN_TEST(test_monotone_least_squares_is_kept_bit_for_bit);
+    RUN_TEST(test_major_loops_alone_are_singular_above_degree_2);
+    return UNITY_END();
+}
