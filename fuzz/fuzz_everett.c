@@ -6,7 +6,8 @@
  * Input layout (reads past the end yield zeros, so every input is valid):
  *   [0]  flags: bit0 raw coefficients (arbitrary doubles) else small grids;
  *        bit1 feed the outputs to an E fit and check its solution;
- *        bit2 feed the outputs to the compensator (hyst_curve_inverse())
+ *        bit2 feed the outputs to the compensator (hyst_curve_inverse());
+ *        bit3 the fit of bit1 keeps the terms of t up to (flags >> 3) % degree
  *   [1]  degree (byte % 6: 0 and 5 are invalid), [2] capacity (byte % 40)
  *   then lo, hi, y_lo and the coefficients e[i][j], then samples: each byte
  *   an input on a 256-step grid of the domain.
@@ -15,7 +16,9 @@
  * points of its triangle (the proof is sound) and outputs equal the double
  * reference (tests/support/ref_everett.c) within rounding until memory
  * fills, then within the stated error bound; always, finite outputs; the block call equals the per-sample call bit for bit; the
- * fit never fails on a record it accepted, and its RMS is finite; the
+ * fit never fails on a record it accepted but for E the monotone
+ * conditions cannot give, its E is accepted by the curve and its RMS is
+ * finite; the
  * compensator's drive, fed to the model, gives the outputs back (on the
  * structured grids, until either memory fills), never moves against them,
  * and its block call equals its steps. */
@@ -157,16 +160,31 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         hyst_everett_t got;
         hyst_wide_t rms = -1;
         hyst_status_t st;
-        CHECK(hyst_everett_fit_init(&fit, e.degree, e.lo, e.hi, fit_work,
-                                    sizeof fit_work / sizeof fit_work[0]) == HYST_OK);
+        /* every term of the degree, or those of t up to (flags >> 3) % degree */
+        const unsigned t_degree = (flags >> 3) % e.degree;
+        CHECK(((flags >> 3) & 1u) != 0u
+                  ? hyst_everett_fit_init_terms(&fit, e.degree, t_degree, e.lo, e.hi, fit_work,
+                                                sizeof fit_work / sizeof fit_work[0]) == HYST_OK
+                  : hyst_everett_fit_init(&fit, e.degree, e.lo, e.hi, fit_work,
+                                          sizeof fit_work / sizeof fit_work[0]) == HYST_OK);
         for (k = 0u; k < n; ++k) {
             CHECK(hyst_everett_fit_add(&fit, xs[k], ys[k]) == HYST_OK); /* room for every TP */
         }
         st = hyst_everett_fit_solve(&fit, &got, &rms);
-        CHECK(st == HYST_OK || st == HYST_ERR_SINGULAR);
+        /* NOT_MONOTONE: no E of the sufficient conditions fits (ident.h) */
+        CHECK(st == HYST_OK || st == HYST_ERR_SINGULAR || st == HYST_ERR_NOT_MONOTONE);
         if (st == HYST_OK) {
+            hyst_curve_t fitted;
             CHECK(rms >= 0 && isfinite(rms));
+            /* what the fit returns, the curve accepts */
+            CHECK(hyst_curve_from_everett(&fitted, &got) == HYST_OK);
             CHECK(got.degree == e.degree && got.lo == e.lo && got.hi == e.hi);
+            for (i = 0u; i < (unsigned)HYST_EVERETT_MAX_DEGREE; ++i) { /* the terms not fitted: 0 */
+                for (j = 0u; j < (unsigned)HYST_EVERETT_MAX_DEGREE; ++j) {
+                    CHECK(got.e[i][j] == 0 || (i + j + 1u <= e.degree &&
+                                               (((flags >> 3) & 1u) == 0u || j <= t_degree)));
+                }
+            }
         }
     }
     return 0;

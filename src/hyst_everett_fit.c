@@ -17,8 +17,15 @@
 #define WIDE_SQRT(v) sqrt(v)
 #endif
 
-/* Regressors of E(a, b): w^i t^j for i = 1..n, j = 0..n - i (column 1 on;
- * column 0 is the output at lo), scaled by `sign`, added to r. */
+/* The highest power of t fitted with w^i: the fitted terms are i = 1..n,
+ * j = 0..last_j(i), in this order (column 1 on; column 0 is the output at
+ * lo). */
+static unsigned last_j(const hyst_everett_fit_t *f, unsigned i)
+{
+    return f->degree - i < f->t_degree ? f->degree - i : f->t_degree;
+}
+
+/* Regressors of E(a, b): the fitted w^i t^j, scaled by `sign`, added to r. */
 static void add_terms(const hyst_everett_fit_t *f, hyst_wide_t a, hyst_wide_t b,
                       hyst_wide_t sign, hyst_wide_t *r)
 {
@@ -29,7 +36,7 @@ static void add_terms(const hyst_everett_fit_t *f, hyst_wide_t a, hyst_wide_t b,
     for (i = 1u; i <= f->degree; ++i) {
         hyst_wide_t tj = 1;
         wi *= w;
-        for (j = 0u; i + j <= f->degree; ++j) {
+        for (j = 0u; j <= last_j(f, i); ++j) {
             r[col++] += wi * tj;
             tj *= t;
         }
@@ -39,10 +46,19 @@ static void add_terms(const hyst_everett_fit_t *f, hyst_wide_t a, hyst_wide_t b,
 hyst_status_t hyst_everett_fit_init(hyst_everett_fit_t *fit, unsigned degree, hyst_wide_t lo,
                                     hyst_wide_t hi, hyst_wide_t *work, size_t work_len)
 {
+    return hyst_everett_fit_init_terms(fit, degree, degree > 0u ? degree - 1u : 0u, lo, hi, work,
+                                       work_len);
+}
+
+hyst_status_t hyst_everett_fit_init_terms(hyst_everett_fit_t *fit, unsigned degree,
+                                          unsigned t_degree, hyst_wide_t lo, hyst_wide_t hi,
+                                          hyst_wide_t *work, size_t work_len)
+{
+    unsigned i;
     if (fit == NULL || work == NULL) {
         return HYST_ERR_NULL;
     }
-    if (degree < 1u || degree > (unsigned)HYST_EVERETT_MAX_DEGREE) {
+    if (degree < 1u || degree > (unsigned)HYST_EVERETT_MAX_DEGREE || t_degree >= degree) {
         return HYST_ERR_DEGREE;
     }
     if (!hyst_wide_is_finite(lo) || !hyst_wide_is_finite(hi) || !(lo < hi) ||
@@ -54,7 +70,11 @@ hyst_status_t hyst_everett_fit_init(hyst_everett_fit_t *fit, unsigned degree, hy
     }
     memset(fit, 0, sizeof *fit);
     fit->degree = degree;
-    fit->cols = 1u + (size_t)degree * (degree + 1u) / 2u;
+    fit->t_degree = t_degree;
+    fit->cols = 1u;
+    for (i = 1u; i <= degree; ++i) {
+        fit->cols += last_j(fit, i) + 1u;
+    }
     fit->lo = lo;
     fit->hi = hi;
     fit->capacity = work_len / (HYST_EVERETT_FIT_COLS + 1u);
@@ -171,7 +191,7 @@ static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
     memset(&unit, 0, sizeof unit);
     unit.degree = fit->degree;
     for (a = 1u, col = 1u; a <= fit->degree; ++a) { /* C's column of each coefficient */
-        for (c = 0u; a + c <= fit->degree; ++c, ++col) {
+        for (c = 0u; c <= last_j(fit, a); ++c, ++col) {
             unit.e[a - 1u][c] = 1;
             m = hyst_everett_bernstein_(&unit, coef);
             unit.e[a - 1u][c] = 0;
@@ -239,7 +259,7 @@ static void to_everett(const hyst_everett_fit_t *fit, const hyst_wide_t *s, hyst
     e->hi = fit->hi;
     e->y_lo = s[0];
     for (a = 1u, col = 1u; a <= fit->degree; ++a) {
-        for (b = 0u; a + b <= fit->degree; ++b) {
+        for (b = 0u; b <= last_j(fit, a); ++b) {
             e->e[a - 1u][b] = s[col++];
         }
     }

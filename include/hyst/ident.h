@@ -362,7 +362,8 @@ hyst_status_t hyst_pi_fit_record(const hyst_pi_fit_config_t *cfg, const hyst_wid
  */
 typedef struct hyst_everett_fit {
     unsigned degree;   /**< total degree of E */
-    size_t cols;       /**< 1 + E's coefficients at this degree */
+    unsigned t_degree; /**< highest power of the lower end t fitted (<= degree - 1) */
+    size_t cols;       /**< 1 + E's coefficients fitted */
     hyst_wide_t lo, hi; /**< domain */
     hyst_wide_t *tp_x; /**< caller's workspace: TP inputs (capacity) */
     hyst_wide_t *tp_r; /**< and their regressors (capacity x cols) */
@@ -385,6 +386,26 @@ typedef struct hyst_everett_fit {
  */
 hyst_status_t hyst_everett_fit_init(hyst_everett_fit_t *fit, unsigned degree, hyst_wide_t lo,
                                     hyst_wide_t hi, hyst_wide_t *work, size_t work_len);
+
+/**
+ * @brief The same, fitting only the terms w^i t^j with j <= @p t_degree
+ *        (the others 0): E of degree @p degree in the width, of degree
+ *        @p t_degree in the lower end.
+ *
+ * A record of major loops alone sees E on two edges of its triangle only
+ * (rising from lo: t = 0; falling from hi: w + t = 1), where every multiple
+ * of w t (1 - w - t) vanishes: from degree 3 on, E of full total degree is
+ * not determined by such a record (hyst_everett_fit_solve(): HYST_ERR_SINGULAR).
+ * E linear in t (@p t_degree 1) is: its t = 0 edge gives the powers of w,
+ * the other edge the t terms. So @p degree 3, @p t_degree 1 (w, w^2, w^3,
+ * w t, w^2 t: with y_lo, 6 parameters) identifies a convex, asymmetric loop
+ * from major loops; hyst_everett_fit_init() is @p t_degree = @p degree - 1.
+ * @return as hyst_everett_fit_init(); HYST_ERR_DEGREE also if @p t_degree
+ *         >= @p degree.
+ */
+hyst_status_t hyst_everett_fit_init_terms(hyst_everett_fit_t *fit, unsigned degree,
+                                          unsigned t_degree, hyst_wide_t lo, hyst_wide_t hi,
+                                          hyst_wide_t *work, size_t work_len);
 
 /**
  * @brief Moves the record's input to @p x and adds the row (regressors at x,
