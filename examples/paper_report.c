@@ -416,15 +416,27 @@ static int asym_tcm_score(unsigned degree, size_t delay, hyst_poly_t *f0, double
 /* The same hold-out score for the asymmetric kind of degree `degree`:
  * E fitted on the first two thirds (hyst_everett_fit_*), the model run over
  * the whole record. 0 if the fit is singular or E not monotone. */
-static int asym_everett_score(unsigned degree, size_t delay, hyst_everett_t *e, double *score)
+/* Identified reals of an E of degree d in the width, k in the lower end:
+ * its terms w^i t^j (j <= min(d - i, k)) and y_lo. */
+static unsigned everett_params(unsigned d, unsigned k)
+{
+    unsigned i, n = 1u;
+    for (i = 1u; i <= d; ++i) {
+        n += (d - i < k ? d - i : k) + 1u;
+    }
+    return n;
+}
+
+static int asym_everett_score(unsigned degree, unsigned t_degree, size_t delay, hyst_everett_t *e,
+                              double *score)
 {
     static hyst_wide_t work[HYST_EVERETT_FIT_WORK(NU)];
     static hyst_everett_fit_t fit;
     const size_t skip = (size_t)ASYM_CYCLE, split = (size_t)(2L * ASYM_RECORD / 3L);
     double ss = 0.0;
     size_t i;
-    if (hyst_everett_fit_init(&fit, degree, 0.0, 40.0, work, sizeof work / sizeof work[0]) !=
-        HYST_OK) {
+    if (hyst_everett_fit_init_terms(&fit, degree, t_degree, 0.0, 40.0, work,
+                                    sizeof work / sizeof work[0]) != HYST_OK) {
         return 0;
     }
     for (i = 0u; i < split; ++i) { /* the settling cycle moves the input only */
@@ -522,25 +534,41 @@ static void asymmetric(void)
     }
     value("pi_params", (double)(ASYM_PI_OPERATORS + 1u));
     value("pi_holdout_rms", sqrt(pi_score / (double)((size_t)ASYM_RECORD - best_delay - split)));
-    /* the asymmetric kind at the same delay, its degree by the same rule
-     * (parameters 1 + d (d + 1) / 2 grow with d: the first within 1 %) */
+    /* the asymmetric kind at the same delay: degree d in the width and k in
+     * the lower end (k < d; k = d - 1 is every term of total degree d), by
+     * the same rule: the fewest parameters within 1 % of the best score.
+     * Major loops alone determine E linear in t (k <= 1) at any d, not the
+     * full degree 3 or 4 (singular: ident.h). */
     {
-        double a_score[HYST_EVERETT_MAX_DEGREE + 1], a_best = 1e300, chosen = 0.0;
+        double a_score[HYST_EVERETT_MAX_DEGREE + 1][HYST_EVERETT_MAX_DEGREE], a_best = 1e300;
+        double chosen = 0.0;
         hyst_everett_t e;
-        unsigned d, a_degree = 0u;
-        printf("@table everett_candidates degree,holdout_rms\n");
+        unsigned d, t, a_degree = 0u, a_t = 0u, params = 0u, best_params = 1000u;
+        printf("@table everett_candidates degree,t_degree,params,holdout_rms\n");
         for (d = 1u; d <= (unsigned)HYST_EVERETT_MAX_DEGREE; ++d) {
-            a_score[d] = asym_everett_score(d, best_delay, &e, &a_score[d]) ? a_score[d] : -1.0;
-            printf("%u,%.6g\n", d, a_score[d]);
-            a_best = a_score[d] >= 0.0 && a_score[d] < a_best ? a_score[d] : a_best;
+            for (t = 0u; t < d; ++t) {
+                a_score[d][t] = asym_everett_score(d, t, best_delay, &e, &a_score[d][t])
+                                    ? a_score[d][t]
+                                    : -1.0;
+                printf("%u,%u,%u,%.6g\n", d, t, everett_params(d, t), a_score[d][t]);
+                a_best = a_score[d][t] >= 0.0 && a_score[d][t] < a_best ? a_score[d][t] : a_best;
+            }
         }
-        for (d = 1u; d <= (unsigned)HYST_EVERETT_MAX_DEGREE && a_degree == 0u; ++d) {
-            a_degree = a_score[d] >= 0.0 && a_score[d] <= 1.01 * a_best ? d : 0u;
+        for (d = 1u; d <= (unsigned)HYST_EVERETT_MAX_DEGREE; ++d) {
+            for (t = 0u; t < d; ++t) {
+                params = everett_params(d, t);
+                if (a_score[d][t] >= 0.0 && a_score[d][t] <= 1.01 * a_best && params < best_params) {
+                    best_params = params;
+                    a_degree = d;
+                    a_t = t;
+                }
+            }
         }
-        check(a_degree > 0u && asym_everett_score(a_degree, best_delay, &e, &chosen),
+        check(a_degree > 0u && asym_everett_score(a_degree, a_t, best_delay, &e, &chosen),
               "asymmetric_everett");
         value("everett_degree", (double)a_degree);
-        value("everett_params", (double)(1u + a_degree * (a_degree + 1u) / 2u));
+        value("everett_t_degree", (double)a_t);
+        value("everett_params", (double)best_params);
         value("everett_holdout_rms", chosen);
     }
     /* the paper's test signal: the sensor's reading predicted (delay applied) */
