@@ -564,6 +564,23 @@ static void asymmetric(void)
                 }
             }
         }
+        { /* the best of at most 6 parameters, for the goal stated that way */
+            double six = 1e300;
+            unsigned six_d = 0u, six_t = 0u;
+            for (d = 1u; d <= (unsigned)HYST_EVERETT_MAX_DEGREE; ++d) {
+                for (t = 0u; t < d; ++t) {
+                    if (a_score[d][t] >= 0.0 && a_score[d][t] < six && everett_params(d, t) <= 6u) {
+                        six = a_score[d][t];
+                        six_d = d;
+                        six_t = t;
+                    }
+                }
+            }
+            value("everett6_degree", (double)six_d);
+            value("everett6_t_degree", (double)six_t);
+            value("everett6_params", (double)everett_params(six_d, six_t));
+            value("everett6_holdout_rms", six);
+        }
         check(a_degree > 0u && asym_everett_score(a_degree, a_t, best_delay, &e, &chosen),
               "asymmetric_everett");
         value("everett_degree", (double)a_degree);

@@ -317,17 +317,22 @@ def asymmetric(sec, md, out):
     md.append(f"| PI-10 (NNLS) | {int(v['pi_params'])} | {fmt(v['pi_holdout_rms'])} | "
               f"{fmt(v['pi_predict_rms'])} | {fmt(v['pi_predict_max'])} |")
     if "everett_degree" in v:
-        md.append(f"| asymmetric TCM, degree {int(v['everett_degree'])} (E fitted by "
+        md.append(f"| asymmetric TCM, degree {int(v['everett_degree'])} in the width, "
+                  f"{int(v.get('everett_t_degree', v['everett_degree'] - 1))} in the lower end (E fitted by "
                   f"`hyst_everett_fit_*`) | {int(v['everett_params'])} | {fmt(v['everett_holdout_rms'])} | "
                   f"{fmt(v['everett_predict_rms'])} | {fmt(v['everett_predict_max'])} |")
     md.append("")
     if "everett_degree" in v:
-        md.append("The asymmetric kind (docs/theory.md), its degree chosen by the same hold-out rule among "
-                  "the fits whose E is monotone (an unconstrained least-squares E of higher degree was not, "
-                  "on this record), predicts the test signal "
-                  f"{v['pi_predict_rms'] / v['everett_predict_rms']:.2f} times better than PI-10 (RMS) with "
-                  f"{int(v['everett_params'])} parameters against {int(v['pi_params'])}; the sensor lag, "
-                  "which a whole-sample delay only approximates, is what remains.\n")
+        md.append("The asymmetric kind (docs/theory.md), chosen by the same hold-out rule among E of degree "
+                  "1-4 in the loop's width and 0 to that minus one in its lower end t (a record of major loops "
+                  "sees E on two edges of its triangle only: E of full total degree 3 or 4 is singular there, "
+                  "E linear in t is not), predicts the test signal "
+                  f"{v['pi_predict_rms'] / v['everett_predict_rms']:.1f} times better than PI-10 (RMS) with "
+                  f"{int(v['everett_params'])} parameters against {int(v['pi_params'])}." +
+                  (f" The best candidate of at most 6 parameters (degree {int(v['everett6_degree'])}, "
+                   f"{int(v['everett6_t_degree'])} in t) scores {fmt(v['everett6_holdout_rms'])} on the "
+                   f"hold-out, {v['pi_holdout_rms'] / v['everett6_holdout_rms']:.1f} times better than PI-10's "
+                   f"{fmt(v['pi_holdout_rms'])}." if "everett6_holdout_rms" in v else "") + "\n")
     md.append("The symmetric TCM and PI-10 are both point-symmetric (rule 4), so neither can follow the plant's "
               "asymmetry: that, not their parameter count, bounds their error here.\n")
     if "symmetric_comp_rms_ratio" in v:
@@ -342,12 +347,10 @@ def asymmetric(sec, md, out):
         md.append(f"| inverse of the asymmetric TCM (`hyst_curve_inverse()`) | {fmt(v['comp_rms'])} | "
                   f"{fmt(v['comp_max'])} | {fmt(v['open_rms'])} | **comp_rms_ratio "
                   f"{v['comp_rms_ratio']:.2f}** | {v['major_open_rms'] / v['major_comp_rms']:.1f} |\n")
-        md.append("The asymmetric compensator removes more of the error than the symmetric one, but not the "
-                  "tenfold of the goal. What limits it is the identified model, which the compensator "
-                  "inverts faithfully (`tests/test_everett_inverse.c`): its E is a polynomial of the degree "
-                  "chosen above, the plant's is not a polynomial, and the hold-out error is several times "
-                  "the noise. The sensor's lag is not the limit: the same record read from the actuator "
-                  "itself (no lag) gave a ratio of 4.5 when measured.\n")
+        md.append("The symmetric compensator is limited by its model's symmetry (its major loop is "
+                  "point-symmetric, the plant's is not). The asymmetric one inverts a model whose hold-out "
+                  "error is at the noise level, faithfully (`tests/test_everett_inverse.c`): what remains is "
+                  "the plant's non-polynomial E between the record's loops.\n")
     t = sec["tables"].get("prediction")
     if t is not None and len(t["data"]):
         fig, ax = plt.subplots(figsize=(7, 4))
