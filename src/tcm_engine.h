@@ -228,11 +228,19 @@ static TCM_NOINLINE TCM_Y TCM_NAME(e)(const hyst_tcm_t *S, TCM_X a, TCM_X b)
 {
     if ((S->detour & TCM_PER_BRANCH) != 0u) {
         const unsigned n = S->curve->u.everett.degree;
-        hyst_num_t coef[HYST_MAX_DEGREE]; /* n <= HYST_MAX_DEGREE: the curve's check */
-        memset(coef, 0, sizeof coef);     /* the entries above n: never read, but defined */
+        const TCM_Y w = TCM_D(a, b) * YV(S->unit);
+        hyst_num_t coef[HYST_EVERETT_MAX_DEGREE]; /* n <= that: the curve's check */
+        TCM_Y acc;
+        unsigned i;
         TCM_NAME(table_coefs)(S->curve->u.everett.rise, n,
                               (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit), coef);
-        return NUM_NAME(horner)(coef, n, TCM_D(a, b) * YV(S->unit));
+        /* Horner's rule as derive()'s branches are evaluated (horner()'s
+         * arithmetic), over the n coefficients only */
+        acc = YV(coef[0]);
+        for (i = 1u; i < n; ++i) {
+            acc = NUM_MUL(acc, w) + YV(coef[i]);
+        }
+        return NUM_MUL_G(acc, w);
     }
     return TCM_NAME(g)(S, TCM_D(a, b));
 }
