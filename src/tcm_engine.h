@@ -229,16 +229,19 @@ static TCM_NOINLINE TCM_Y TCM_NAME(e)(const hyst_tcm_t *S, TCM_X a, TCM_X b)
     if ((S->detour & TCM_PER_BRANCH) != 0u) {
         const unsigned n = S->curve->u.everett.degree;
         const TCM_Y w = TCM_D(a, b) * YV(S->unit);
-        hyst_num_t coef[HYST_EVERETT_MAX_DEGREE]; /* n <= that: the curve's check */
-        TCM_Y acc;
-        unsigned i;
-        TCM_NAME(table_coefs)(S->curve->u.everett.rise, n,
-                              (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit), coef);
-        /* Horner's rule as derive()'s branches are evaluated (horner()'s
-         * arithmetic), over the n coefficients only */
-        acc = YV(coef[0]);
-        for (i = 1u; i < n; ++i) {
-            acc = NUM_MUL(acc, w) + YV(coef[i]);
+        const TCM_Y anchor = (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit);
+        const hyst_num_t *row = S->curve->u.everett.rise;
+        TCM_Y acc = 0;
+        unsigned i, k;
+        /* Horner's rule in w over the coefficients, each by Horner's rule
+         * in the anchor from its row (as derive() computes them) */
+        for (i = 0u; i < n; ++i) {
+            TCM_Y c = YV(row[0]);
+            for (k = 1u; k <= i; ++k) {
+                c = c * anchor + YV(row[k]);
+            }
+            acc = i == 0u ? c : NUM_MUL(acc, w) + c;
+            row += i + 1u;
         }
         return NUM_MUL_G(acc, w);
     }
