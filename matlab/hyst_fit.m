@@ -15,10 +15,14 @@ function f = hyst_fit(x, y, varargin)
 %   F = HYST_FIT(X, Y, 'kind', 'everett') fits the asymmetric kind's branch
 %   function E of total degree 'degree' (1..4) by hyst_everett_fit_*: the
 %   record starts from rest (lo) at sample 'skip', inputs outside the
-%   domain are clamped as the model clamps them, and minor loops are needed
-%   for E's terms in t (major loops alone leave them singular). Fields:
+%   domain are clamped as the model clamps them. 'tdegree' K (0..degree-1,
+%   default degree-1: all terms) fits only the terms w^i t^j with j <= K,
+%   the others 0: major loops alone determine E of t-degree 1 at most, at
+%   any degree (a higher t-degree needs minor loops, else ERR_SINGULAR).
+%   Fields:
 %     kind        'everett'
 %     degree, lo, hi, y_lo, terms  the model (HYST_SIM takes it)
+%     t_degree    the highest power of t fitted
 %     rms         residual of the least-squares fit
 %     used        samples used
 %     monotone    true if the library accepts E (else hyst_sim raises
@@ -31,7 +35,11 @@ function f = hyst_fit(x, y, varargin)
 %   range of the inputs).
 %   A library error raises hyst:<status name>, e.g. hyst:ERR_SINGULAR.
   opts = hyst_options(varargin, struct('kind', 'poly', 'degree', 3, 'skip', 0, 'delay', 0, ...
-                                       'method', 'joint', 'domain', []), 'hyst_fit');
+                                       'method', 'joint', 'domain', [], 'tdegree', []), ...
+                      'hyst_fit');
+  if ~isempty(opts.tdegree) && ~strcmp(opts.kind, 'everett')
+    error('hyst:usage', 'hyst_fit: tdegree needs kind ''everett''');
+  end
   switch lower(opts.method)
     case 'joint'
       method = 1;
@@ -57,8 +65,13 @@ function f = hyst_fit(x, y, varargin)
                 f.lo, f.hi, f.turn);
       end
     case 'everett'
+      tdegree = opts.tdegree;
+      if isempty(tdegree)
+        tdegree = opts.degree - 1;  % all of E's terms
+      end
       f = hyst_mex('fit_everett', double(x(:)), double(y(:)), double(opts.degree), ...
-                   domain(1), domain(2), double(opts.skip), double(opts.delay));
+                   domain(1), domain(2), double(opts.skip), double(opts.delay), ...
+                   double(tdegree));
       if ~f.monotone
         warning('hyst:not_monotone', ...
                 'hyst_fit: the fitted E is not increasing in a and decreasing in b on [%g, %g]: try another degree', ...

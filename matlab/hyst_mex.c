@@ -339,21 +339,23 @@ static void run_fit(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     plhs[0] = s;
 }
 
-/* fit_everett: prhs = x, y, degree, lo, hi, skip, delay. */
+/* fit_everett: prhs = x, y, degree, lo, hi, skip, delay[, t_degree]: only
+ * E's terms w^i t^j with j <= t_degree fitted (default degree - 1: all). */
 static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
-    static const char *fields[] = {"kind", "degree", "lo", "hi", "y_lo", "terms",
-                                   "rms", "used", "monotone"};
+    static const char *fields[] = {"kind", "degree", "t_degree", "lo", "hi", "y_lo",
+                                   "terms", "rms", "used", "monotone"};
     hyst_everett_fit_t fit;
     hyst_everett_t e;
     hyst_curve_t curve;
     hyst_wide_t *work, rms = 0.0, lo, hi;
     const double *x, *y;
     size_t n, skip, delay, len, i, j, used = 0u;
+    unsigned degree, t_degree;
     mxArray *s, *t;
     int st;
-    if (nrhs != 7) {
-        usage("fit_everett takes x, y, degree, lo, hi, skip, delay");
+    if (nrhs != 7 && nrhs != 8) {
+        usage("fit_everett takes x, y, degree, lo, hi, skip, delay[, t_degree]");
     }
     if (!is_real_double(prhs[0]) || !is_real_double(prhs[1])) {
         usage("x and y must be real double vectors");
@@ -377,8 +379,10 @@ static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     }
     len = HYST_EVERETT_FIT_WORK(n + 2u); /* n samples stack at most n + 1 TPs */
     work = mxMalloc(len * sizeof *work);
-    st = hyst_everett_fit_init(&fit, (unsigned)count(prhs[2], "degree", 0.0, 1e9), lo, hi, work,
-                               len);
+    degree = (unsigned)count(prhs[2], "degree", 0.0, 1e9);
+    t_degree = nrhs == 8 ? (unsigned)count(prhs[7], "t_degree", 0.0, 1e9)
+                         : (degree > 0u ? degree - 1u : 0u);
+    st = hyst_everett_fit_init_terms(&fit, degree, t_degree, lo, hi, work, len);
     for (i = 0u; st == HYST_OK && i < n; ++i) {
         const double xi = x[i] < lo ? lo : (x[i] > hi ? hi : x[i]); /* NaN stays NaN */
         const int added = hyst_everett_fit_add(&fit, xi, y[i]);
@@ -391,7 +395,8 @@ static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
         st = hyst_everett_fit_solve(&fit, &e, &rms);
     }
     mxFree(work);
-    if (st != HYST_OK) {
+    /* ERR_NOT_MONOTONE: E is returned all the same, field monotone false */
+    if (st != HYST_OK && st != HYST_ERR_NOT_MONOTONE) {
         fail_status("hyst_fit", st);
     }
     s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
@@ -403,6 +408,7 @@ static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     }
     set_field(s, "kind", mxCreateString("everett"));
     set_field(s, "degree", mxCreateDoubleScalar((double)e.degree));
+    set_field(s, "t_degree", mxCreateDoubleScalar((double)t_degree));
     set_field(s, "lo", mxCreateDoubleScalar(e.lo));
     set_field(s, "hi", mxCreateDoubleScalar(e.hi));
     set_field(s, "y_lo", mxCreateDoubleScalar(e.y_lo));

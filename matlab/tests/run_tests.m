@@ -486,6 +486,17 @@ function t_everett_fit(~)
   warning('on', 'hyst:not_monotone');
   check(~g.monotone, 'a falling plant gave a monotone E');
   expect_error('hyst:ERR_NOT_MONOTONE', @() hyst_sim(g, u));
+  % major loops alone: E of degree 3 in full is singular, linear in t
+  % ('tdegree' 1) it is recovered, the w t^2 term 0
+  p = struct('kind', 'everett', 'degree', 3, 'lo', 0, 'hi', 40, 'y_lo', 0.5, ...
+             'terms', [3 1 0 2 -0.5 0.4]);
+  xm = repmat([0:0.25:40, 39.75:-0.25:0.25]', 4, 1);
+  ym = hyst_sim(p, xm);
+  expect_error('hyst:ERR_SINGULAR', @() hyst_fit(xm, ym, 'kind', 'everett', 'degree', 3));
+  h = hyst_fit(xm, ym, 'kind', 'everett', 'degree', 3, 'tdegree', 1);
+  check(h.t_degree == 1 && h.monotone && h.terms(3) == 0, 't-degree 1: %s', mat2str(h.terms));
+  check(max(abs(h.terms - p.terms)) < 1e-9, 't-degree 1 terms %s', mat2str(h.terms, 12));
+  expect_error('hyst:usage', @() hyst_fit(xm, ym, 'tdegree', 1));
 end
 
 function t_everett_save_load(ctx)

@@ -111,8 +111,10 @@ class Fit:
     samples against the major loop, ``used``, ``rising``, ``falling``,
     ``increasing``, ``y_lo_est``, ``y_hi_est``) or ``"everett"`` (the
     asymmetric kind's E by hyst_everett_fit_*(): ``terms``, ``y_lo``, ``rms``
-    of the least-squares residuals, ``used``). Both have ``degree``, ``lo``,
-    ``hi``, ``delay``, ``candidates`` and ``model``, the model at A0. Model
+    of the least-squares residuals, ``used``, ``t_degree``: the highest power
+    of t fitted, the terms above it 0). Both have ``degree``, ``lo``,
+    ``hi``, ``delay``, ``candidates`` and ``model``, the model at A0 (poly:
+    ``t_degree`` None). Model
     calls (``process``, ``step``, ``reset``...) go to ``model``, so a Fit is
     used as the model itself.
     """
@@ -120,6 +122,7 @@ class Fit:
     def __init__(self, result, dtype, capacity, delay=0, candidates=None):
         self.__dict__.update(result)
         self.kind = result.get("kind", "poly")
+        self.t_degree = result.get("t_degree")
         if self.kind == "poly":
             self.method = {v: k for k, v in _METHODS.items()}[result["method"]]
         self.delay = int(delay)
@@ -157,7 +160,8 @@ class Fit:
     def __repr__(self):
         if self.kind == "everett":
             t = ", ".join(f"{v:.9g}" for v in self.terms)
-            return (f"Fit(kind='everett', degree={self.degree}, terms=[{t}], "
+            return (f"Fit(kind='everett', degree={self.degree}, t_degree={self.t_degree}, "
+                    f"terms=[{t}], "
                     f"y_lo={self.y_lo:.9g}, lo={self.lo:.9g}, hi={self.hi:.9g}, "
                     f"rms={self.rms:.6g})")
         c = ", ".join(f"{v:.9g}" for v in self.coeffs)
@@ -175,14 +179,20 @@ PARSIMONY = 0.01
 KINDS = ("poly", "everett")
 
 
-def _params(kind, degree):
-    """A candidate's parameter count: f0's coefficients, or E's terms and y_lo."""
-    return degree + 1 if kind == "poly" else everett_terms(degree) + 1
+def _params(kind, degree, t_degree=None):
+    """A candidate's parameter count: f0's coefficients, or E's terms w^i t^j
+    with j <= t_degree (all when None) and y_lo."""
+    if kind == "poly":
+        return degree + 1
+    if t_degree is None:
+        return everett_terms(degree) + 1
+    return 1 + sum(min(degree - i, t_degree) + 1 for i in range(1, degree + 1))
 
 
-def _fit_one(x, y, kind, degree, method, lo, hi, skip, delay):
+def _fit_one(x, y, kind, degree, method, lo, hi, skip, delay, t_degree=None):
     if kind == "everett":
-        return _hyst.fit_everett(x, y, degree, lo, hi, skip, delay)
+        return _hyst.fit_everett(x, y, degree, lo, hi, skip, delay,
+                                 -1 if t_degree is None else int(t_degree))
     return _hyst.fit(x, y, degree, _METHODS[method], lo, hi, skip, delay)
 
 
@@ -209,24 +219,35 @@ def _holdout(res, x, y, skip, delay, first):
     return math.sqrt(float(np.mean(err[ok] ** 2))) if ok.any() else math.nan
 
 
-def _select(x, y, kinds, method, lo, hi, skip, delays):
-    """Every candidate (kind, degree, delay): fitted on the first two thirds,
-    scored by its prediction of the last third; the fewest parameters within
-    PARSIMONY of the lowest error win (hyst fit's rule), the lower error
-    between candidates with as many parameters."""
+def _shapes(kind, t_degree):
+    """(degree, t_degree) of the candidates of a kind, in hyst fit's order:
+    poly 1..MAX_DEGREE (t_degree None); everett each degree with each
+    t-degree below it, or only ``t_degree`` when given."""
+    if kind == "poly":
+        return [(deg, None) for deg in range(1, MAX_DEGREE + 1)]
+    return [(deg, k) for deg in range(1, EVERETT_MAX_DEGREE + 1) for k in range(deg)
+            if t_degree is None or k == t_degree]
+
+
+def _select(x, y, kinds, method, lo, hi, skip, delays, t_degree=None):
+    """Every candidate (kind, degree, t_degree, delay): fitted on the first
+    two thirds, scored by its prediction of the last third; the fewest
+    parameters within PARSIMONY of the lowest error win (hyst fit's rule),
+    the lower error between candidates with as many parameters."""
     cands, best = [], None
     for d in delays:
         if len(x) <= skip + d:
             break
         train = (2 * (len(x) - skip - d)) // 3
         for kind in kinds:
-            for deg in range(1, (MAX_DEGREE if kind == "poly" else EVERETT_MAX_DEGREE) + 1):
-                c = {"kind": kind, "degree": deg, "delay": d, "params": _params(kind, deg),
+            for deg, k in _shapes(kind, t_degree):
+                c = {"kind": kind, "degree": deg, "t_degree": k, "delay": d,
+                     "params": _params(kind, deg, k),
                      "holdout_rms": math.nan, "fit_rms": math.nan, "status": "OK"}
                 try:
                     n = skip + train + d  # the training part, as hyst fit passes it
                     res = _fit_one(np.ascontiguousarray(x[:n]), np.ascontiguousarray(y[:n]),
-                                   kind, deg, method, lo, hi, skip, d)
+                                   kind, deg, method, lo, hi, skip, d, k)
                     c["fit_rms"] = res["rms"]
                     refusal = _refusal(res)
                     if refusal is None:
@@ -250,8 +271,8 @@ def _select(x, y, kinds, method, lo, hi, skip, delays):
     return cands, best
 
 
-def fit(x, y, degree=3, *, kind=None, method="joint", domain=None, skip=0, delay=0,
-        dtype=np.float64, capacity=DEFAULT_CAPACITY):
+def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None, skip=0,
+        delay=0, dtype=np.float64, capacity=DEFAULT_CAPACITY):
     """Identifies a model from a recorded drive ``x`` and response ``y``.
 
     Sample i (skip <= i < n - delay) pairs x[i] with y[i + delay]; the domain
@@ -260,19 +281,29 @@ def fit(x, y, degree=3, *, kind=None, method="joint", domain=None, skip=0, delay
     least-squares problem, or ``"reflect"``, the paper's Eq. 14);
     ``kind="everett"`` the asymmetric kind's E (hyst_everett_fit_*(), degree
     1..EVERETT_MAX_DEGREE; the record starts from rest at sample ``skip``,
-    inputs outside the domain are clamped as the model clamps them).
+    inputs outside the domain are clamped as the model clamps them;
+    ``t_degree`` fits only E's terms w^i t^j with j <= t_degree, the others
+    0: major loops alone determine E of t_degree 1 at most, at any degree).
     ``degree=None`` chooses the degree, and ``delay=None`` the delay
     (0..MAX_DELAY), by hold-out exactly as ``hyst fit`` without --degree
-    does, the kind too when ``kind`` is None (both kinds compared; the
-    parameter count is degree + 1 for poly, E's terms + 1 for everett):
-    every candidate is in the result's ``candidates`` (dicts: kind, degree,
-    delay, params, holdout_rms, fit_rms, status, chosen). With a degree
-    given, ``kind=None`` means poly. Returns a :class:`Fit`.
+    does, the kind too when ``kind`` is None (both kinds compared; everett
+    of each degree with each t_degree 0..degree-1, or only the one given;
+    the parameter count is degree + 1 for poly, E's terms fitted + 1 for
+    everett): every candidate is in the result's ``candidates`` (dicts:
+    kind, degree, t_degree (None for poly), delay, params, holdout_rms,
+    fit_rms, status, chosen). With a degree given, ``kind=None`` means poly
+    and ``t_degree=None`` all of E's terms (degree - 1). Returns a
+    :class:`Fit`.
     """
     if method not in _METHODS:
         raise ValueError(f"method must be one of {sorted(_METHODS)}, not {method!r}")
     if kind is not None and kind not in KINDS:
         raise ValueError(f"kind must be one of {KINDS} or None, not {kind!r}")
+    if t_degree is not None and kind != "everett":
+        raise ValueError("t_degree needs kind='everett'")
+    if t_degree is not None and not (0 <= int(t_degree) < EVERETT_MAX_DEGREE and (
+            degree is None or int(t_degree) < int(degree))):
+        raise ValueError(f"t_degree must be 0..degree-1, not {t_degree!r}")
     lo, hi = (0.0, 0.0) if domain is None else (float(domain[0]), float(domain[1]))
     x = np.ascontiguousarray(x, dtype=np.float64)
     y = np.ascontiguousarray(y, dtype=np.float64)
@@ -280,14 +311,17 @@ def fit(x, y, degree=3, *, kind=None, method="joint", domain=None, skip=0, delay
     if degree is None:
         delays = range(0, MAX_DELAY + 1) if delay is None else [int(delay)]
         kinds = KINDS if kind is None else (kind,)
-        cands, best = _select(x, y, kinds, method, lo, hi, int(skip), delays)
+        cands, best = _select(x, y, kinds, method, lo, hi, int(skip), delays,
+                              None if t_degree is None else int(t_degree))
         if best is None:
             raise ValueError("no candidate gave a model (an increasing f0, a monotone E) "
                              "that could predict the last third of the record")
         kind, degree, delay = cands[best]["kind"], cands[best]["degree"], cands[best]["delay"]
+        t_degree = cands[best]["t_degree"]
         for i, c in enumerate(cands):
             c["chosen"] = i == best
     elif delay is None:
         raise ValueError("delay=None (chosen) needs degree=None")
-    res = _fit_one(x, y, kind or "poly", int(degree), method, lo, hi, int(skip), int(delay))
+    res = _fit_one(x, y, kind or "poly", int(degree), method, lo, hi, int(skip), int(delay),
+                   t_degree)
     return Fit(res, dtype, capacity, delay=delay, candidates=cands)

@@ -386,13 +386,17 @@ nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int meth
  * recorded arrays, as fit() does f0: sample i (skip <= i < n - delay) pairs
  * x[i] with y[i + delay], the record starting from rest at sample skip; the
  * domain is [lo, hi] or, when lo == hi, the range of those x. Inputs are
- * clamped to the domain, as the model clamps them. curve_status is what
+ * clamped to the domain, as the model clamps them. Only the terms w^i t^j
+ * with j <= t_degree are fitted (hyst_everett_fit_init_terms(); the others
+ * 0); t_degree < 0 means degree - 1, all of them. curve_status is what
  * hyst_f64_curve_from_everett() says of the result (HYST_ERR_NOT_MONOTONE:
  * not a usable E).
  */
 nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, double lo,
-                     double hi, size_t skip, size_t delay)
+                     double hi, size_t skip, size_t delay, int t_degree)
 {
+    const unsigned t_deg =
+        t_degree < 0 ? (degree > 0u ? degree - 1u : 0u) : static_cast<unsigned>(t_degree);
     const size_t n = x.shape(0);
     if (y.shape(0) != n) {
         raise_status(HYST_ERR_ARG, "x and y differ in length");
@@ -408,7 +412,8 @@ nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, 
     /* a record of count samples stacks at most count + 1 turning points */
     std::vector<hyst_wide_t> work(HYST_EVERETT_FIT_WORK(count + 2u));
     hyst_everett_fit_t fit;
-    check(hyst_everett_fit_init(&fit, degree, lo, hi, work.data(), work.size()), "fit");
+    check(hyst_everett_fit_init_terms(&fit, degree, t_deg, lo, hi, work.data(), work.size()),
+          "fit");
     size_t used = 0u;
     for (size_t i = 0u; i < count; ++i) {
         const double xi = px[i] < lo ? lo : (px[i] > hi ? hi : px[i]); /* NaN stays NaN */
@@ -433,6 +438,7 @@ nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, 
     nb::dict d;
     d["kind"] = "everett";
     d["degree"] = e.degree;
+    d["t_degree"] = t_deg;
     d["lo"] = e.lo;
     d["hi"] = e.hi;
     d["y_lo"] = e.y_lo;
@@ -591,5 +597,5 @@ NB_MODULE(_hyst, m)
     m.def("fit", &fit, "x"_a, "y"_a, "degree"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a);
     m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
-          "delay"_a);
+          "delay"_a, "t_degree"_a = -1);
 }

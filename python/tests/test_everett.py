@@ -191,29 +191,67 @@ def test_auto_choice_prefers_the_asymmetric_kind_on_an_asymmetric_plant():
     x, y = noisy_record(E3, 6000, seed=33, delay=2)
     f = hyst.fit(x, y, None, delay=None, domain=(E3["lo"], E3["hi"]))
     assert (f.kind, f.degree, f.delay) == ("everett", 3, 2)
-    assert len(f.candidates) == (MAX_DELAY + 1) * (hyst.MAX_DEGREE + hyst.EVERETT_MAX_DEGREE)
+    # everett: each degree d with each t-degree 0..d - 1
+    shapes = hyst.EVERETT_MAX_DEGREE * (hyst.EVERETT_MAX_DEGREE + 1) // 2
+    assert len(f.candidates) == (MAX_DELAY + 1) * (hyst.MAX_DEGREE + shapes)
     chosen = [c for c in f.candidates if c["chosen"]]
-    assert len(chosen) == 1 and chosen[0]["params"] == 6 + 1
+    assert len(chosen) == 1 and chosen[0]["params"] == 6 + 1 and chosen[0]["t_degree"] == 2
+    assert f.t_degree == 2
     poly = [c for c in f.candidates if c["kind"] == "poly" and np.isfinite(c["holdout_rms"])]
     assert min(c["holdout_rms"] for c in poly) > 5 * chosen[0]["holdout_rms"]
-    assert {c["params"] for c in f.candidates if c["kind"] == "everett"} == {2, 4, 7, 11}
+    params = {(c["degree"], c["t_degree"]): c["params"] for c in f.candidates
+              if c["kind"] == "everett"}
+    assert params == {(1, 0): 2, (2, 0): 3, (2, 1): 4, (3, 0): 4, (3, 1): 6, (3, 2): 7,
+                      (4, 0): 5, (4, 1): 8, (4, 2): 10, (4, 3): 11}
     # forced to poly, the choice stays within the symmetric kind
     g = hyst.fit(x, y, None, delay=2, kind="poly", domain=(E3["lo"], E3["hi"]))
     assert g.kind == "poly" and {c["kind"] for c in g.candidates} == {"poly"}
 
 
-def test_auto_choice_on_major_loops_of_a_symmetric_plant_keeps_the_polynomial():
-    """Major loops alone (what the polynomial kind's identification wants)
-    cannot tell E's t terms apart: those candidates are reported refused,
-    and the polynomial of the plant's degree is chosen."""
+def test_auto_choice_on_major_loops_of_a_symmetric_plant():
+    """Major loops alone determine E linear in t, not E of t-degree 2 or 3:
+    those candidates are reported singular. The plant's cubic f0 and E of
+    degree 3 in w alone (t-degree 0) are the same major loop with as many
+    parameters (4): one of the two is chosen, by the lower hold-out, which
+    differs by rounding only."""
     coeffs = [0.02, 0.3, 1.0, 0.0]  # f0 on [0, 10], increasing
     x = 5.0 - 5.0 * np.cos(2 * np.pi * np.arange(6000) / 300)
     y = hyst.Model(coeffs, 0.0, 10.0).process(x)
     y = y + 1e-3 * (y.max() - y.min()) * np.random.default_rng(34).standard_normal(len(y))
     f = hyst.fit(x, y, None, domain=(0.0, 10.0))
-    assert (f.kind, f.degree, f.delay) == ("poly", 3, 0)
-    status = {c["degree"]: c["status"] for c in f.candidates if c["kind"] == "everett"}
-    assert status == {1: "OK", 2: "E not monotone", 3: "ERR_SINGULAR", 4: "ERR_SINGULAR"}
+    chosen = [c for c in f.candidates if c["chosen"]][0]
+    assert (f.degree, f.delay, chosen["params"]) == (3, 0, 4)
+    assert f.kind == "poly" or f.t_degree == 0
+    rms = {(c["kind"], c["degree"], c["t_degree"]): c["holdout_rms"] for c in f.candidates
+           if c["delay"] == 0}
+    assert rms[("poly", 3, None)] == pytest.approx(rms[("everett", 3, 0)], rel=1e-6)
+    for c in f.candidates:
+        if c["kind"] == "everett":
+            assert (c["status"] == "ERR_SINGULAR") == (c["t_degree"] >= 2), c
+
+
+def test_major_loops_determine_e_linear_in_t():
+    """A plant whose E is of degree 3, linear in t, driven by major loops
+    alone: E of degree 3 in full is singular, t_degree 1 recovers E (the
+    w t^2 term 0) and is the automatic choice, as in hyst fit."""
+    e = {"degree": 3, "lo": 0.0, "hi": 40.0, "y_lo": 0.5, "terms": [3.0, 1.0, 0.0, 2.0, -0.5, 0.4]}
+    x = np.tile(np.concatenate([np.arange(0.0, 40.0, 0.25), np.arange(40.0, 0.0, -0.25)]), 4)
+    y = hyst.ModelFromEverett(**e).process(x)
+    with pytest.raises(hyst.HystError) as err:
+        hyst.fit(x, y, 3, kind="everett")
+    assert err.value.name == "ERR_SINGULAR"
+    f = hyst.fit(x, y, 3, kind="everett", t_degree=1)
+    assert f.t_degree == 1 and f.terms[2] == 0.0
+    assert np.max(np.abs(np.array(f.terms) - e["terms"])) < 1e-9
+    noisy = y + 2e-3 * np.random.default_rng(35).standard_normal(len(y))
+    g = hyst.fit(x, noisy, None)
+    assert (g.kind, g.degree, g.t_degree, g.delay) == ("everett", 3, 1, 0)
+    assert np.max(np.abs(np.array(g.terms) - e["terms"])) < 0.03
+    assert [c["params"] for c in g.candidates if c["chosen"]] == [6]
+    with pytest.raises(ValueError):
+        hyst.fit(x, y, 3, t_degree=1)  # kind poly
+    with pytest.raises(ValueError):
+        hyst.fit(x, y, 2, kind="everett", t_degree=2)
 
 
 def test_fit_errors():

@@ -78,7 +78,19 @@ def test_fit_chooses_as_the_cli_and_the_header_reproduces_it(c_build, tmp_path):
     cli = subprocess.run([str(c_build["cli"]), "fit", "--skip", "350", "--xcol", "1",
                           "--ycol", "5", DATA], check=True, capture_output=True,
                          text=True).stdout
-    assert f"# chosen by hold-out: degree {a.degree}, delay {a.delay} (kind {a.kind}," in cli
+    chosen = [c for c in a.candidates if c["chosen"]][0]
+    t_deg = f"t-degree {a.t_degree}, " if a.kind == "everett" else ""
+    assert f"# chosen by hold-out: degree {a.degree}, delay {a.delay} (kind {a.kind}, " \
+           f"{t_deg}{chosen['params']} parameters:" in cli
+    assert f"\n# parameters {chosen['params']}\n" in cli
+    assert (a.kind, a.degree, a.t_degree) == ("everett", 4, 1)  # E linear in t
+    everett = [c for c in a.candidates if c["kind"] == "everett"]
+    assert len(everett) == 90 and cli.count("# candidate everett degree") == 90
+    for c in everett:  # the same candidates, scored alike (6 digits) or refused alike
+        line = f"# candidate everett degree {c['degree']} t-degree {c['t_degree']} " \
+               f"delay {c['delay']}: "
+        assert line + (f"hold-out rms {c['holdout_rms']:.6g}," if np.isfinite(c["holdout_rms"])
+                       else "not scored") in cli, line
 
     model = tmp_path / "m.hyst"
     f.save(model)

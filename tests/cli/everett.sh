@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # The asymmetric kind (kind everett) in `hyst`:
-#  - fit without --kind on the measured record compares both kinds, reports
-#    every candidate and chooses by the rule (the fewest parameters within
-#    1 % of the lowest hold-out RMS); the asymmetric kind wins there;
+#  - fit without --kind on the measured record compares both kinds (E of
+#    each degree and t-degree), reports every candidate and chooses by the
+#    rule (the fewest parameters within 1 % of the lowest hold-out RMS); the
+#    asymmetric kind, linear in t, wins there;
 #  - a record made by a hand-written asymmetric model (delay 2, noise): fit
 #    chooses kind everett, degree 2, delay 2 and returns its terms;
 #  - fit --save, then sim --model prints what the library gives for the
@@ -11,7 +12,9 @@
 #  - the headers of fit --header and header --model compile (float and
 #    double) and hold the saved numbers; inv --model gives back the inputs
 #    of the model's outputs (the asymmetric compensator, to 1e-9 of the span);
-#  - a fit the library refuses (E falling) exits 2 and writes nothing.
+#  - a fit the library refuses (E falling) exits 2 and writes nothing;
+#  - major loops alone of a plant whose E is of degree 3, linear in t: E of
+#    full degree 3 is singular there, t-degree 1 is chosen and recovered.
 #   everett.sh <hyst> <everett_run> <C compiler> <include dir> <work dir> <measured record>
 set -euo pipefail
 tool=$1 run=$2 cc=$3 inc=$4 work=$5 data=$6
@@ -22,29 +25,35 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # ---- the measured record: both kinds compared, every candidate reported ----
 "$tool" fit --skip 350 --ycol 5 "$data" > meas.txt || fail "fit on the measured record"
 [ "$(grep -c '^# candidate degree' meas.txt)" -eq 81 ] || fail "poly candidates: $(grep -c '^# candidate degree' meas.txt)"
-[ "$(grep -c '^# candidate everett degree' meas.txt)" -eq 36 ] || fail "everett candidates"
+# everett: degree d = 1..4, t-degree 0..d - 1 (10), at each delay 0..8
+[ "$(grep -c '^# candidate everett degree [1-4] t-degree [0-3] delay' meas.txt)" -eq 90 ] || fail "everett candidates"
 [ "$(grep -c '(chosen)$' meas.txt)" -eq 1 ] || fail "one candidate chosen"
-grep -q '^# chosen by hold-out: degree 2, delay 4 (kind everett, 4 parameters: .*kinds compared: poly, everett)$' meas.txt ||
+grep -q '^# chosen by hold-out: degree 4, delay 4 (kind everett, t-degree 1, 8 parameters: .*kinds compared: poly, everett)$' meas.txt ||
     fail "choice on the measured record: $(grep chosen meas.txt)"
-grep -qx '# parameters 4' meas.txt || fail "parameter count: $(grep parameters meas.txt)"
+grep -qx '# parameters 8' meas.txt || fail "parameter count: $(grep parameters meas.txt)"
 # the rule, recomputed from the printed table: params = degree + 1 (poly),
-# degree (degree + 1) / 2 + 1 (everett)
+# 1 + the sum over i = 1..d of min(d - i, k) + 1 (everett degree d, t-degree k)
 awk '/^# candidate .*hold-out rms/ {
-         ev = $3 == "everett"; d = ev ? $5 : $4; rms = ev ? $10 : $9; sub(/,$/, "", rms);
-         p = ev ? d * (d + 1) / 2 + 1 : d + 1; n++; P[n] = p; R[n] = rms + 0; C[n] = /\(chosen\)$/;
+         ev = $3 == "everett"; d = ev ? $5 : $4; rms = ev ? $12 : $9; sub(/,$/, "", rms);
+         if (ev) { if ($6 != "t-degree" || $8 != "delay") { print "columns: " $0; exit 1 }
+                   p = 1; for (i = 1; i <= d; i++) p += (d - i < $7 ? d - i : $7) + 1 }
+         else p = d + 1;
+         n++; P[n] = p; R[n] = rms + 0; C[n] = /\(chosen\)$/;
          if (best == "" || rms + 0 < best) best = rms + 0 }
      END { for (i = 1; i <= n; i++) if (R[i] <= best * 1.01 && (w == "" || P[i] < P[w] || (P[i] == P[w] && R[i] < R[w]))) w = i;
            if (!C[w]) { print "rule picks candidate " w; exit 1 } }' meas.txt || fail "the chosen candidate is not the rule's"
-# major loops alone do not determine E beyond degree 2
-grep -q '^# candidate everett degree 3 delay 4: not scored (the record.s turning points do not determine E' meas.txt ||
-    fail "degree 3 on major loops: $(grep 'everett degree 3 delay 4' meas.txt)"
+# major loops alone determine E linear in t, not E of full degree 3
+grep -q '^# candidate everett degree 3 t-degree 2 delay 4: not scored (the record.s turning points do not determine E' meas.txt ||
+    fail "degree 3 on major loops: $(grep 'everett degree 3 t-degree 2 delay 4' meas.txt)"
+grep -q '^# candidate everett degree 3 t-degree 1 delay 4: hold-out rms' meas.txt ||
+    fail "degree 3, t-degree 1 on major loops: $(grep 'everett degree 3 t-degree 1 delay 4' meas.txt)"
 # --kind tcm: the symmetric kind only, as before
 "$tool" fit --kind tcm --skip 350 --ycol 5 "$data" > tcm.txt || fail "fit --kind tcm"
 grep -q '^# chosen by hold-out: degree 4, delay 4 (kind poly, 5 parameters' tcm.txt || fail "--kind tcm: $(grep chosen tcm.txt)"
 ! grep -q 'candidate everett' tcm.txt || fail "--kind tcm scored everett candidates"
 # --compare-pi names the chosen kind
 "$tool" fit --skip 350 --ycol 5 --compare-pi 10 "$data" > cmp.txt || fail "--compare-pi"
-grep -q '^# compare on the last third .*hold-out rms asymmetric (everett) TCM degree 2 (4 parameters) [0-9.]*, PI 10 operators' cmp.txt ||
+grep -q '^# compare on the last third .*hold-out rms asymmetric (everett) TCM degree 4 t-degree 1 (8 parameters) [0-9.]*, PI 10 operators' cmp.txt ||
     fail "compare line: $(grep compare cmp.txt)"
 
 # ---- a simulated asymmetric plant: E = 3 w + w t + 2 w^2 on [0, 40] ----
@@ -61,7 +70,7 @@ awk 'NR == FNR { x[NR] = $1; n = NR; next } { y[FNR] = $1 }
                s = (s * 1103515245 + 12345) % 2147483648; e = (s / 2147483648 - 0.5) * 0.01;
                printf "%s %.9g\n", x[k], y[k - 2] + e } }' x.txt y.txt > rec.txt
 "$tool" fit --save m.hyst --header f0_asym rec.txt > fit.txt 2> fit_err.txt || fail "fit: $(cat fit_err.txt)"
-grep -q '^# chosen by hold-out: degree 2, delay 2 (kind everett, 4 parameters' fit.txt || fail "plant: $(grep chosen fit.txt)"
+grep -q '^# chosen by hold-out: degree 2, delay 2 (kind everett, t-degree 1, 4 parameters' fit.txt || fail "plant: $(grep chosen fit.txt)"
 awk -F, 'NR == 1 { if (NF != 3) exit 1; split("3,1,2", w, ",");
                    for (k = 1; k <= 3; k++) { d = $k - w[k]; if (d < 0) d = -d; if (d > 0.01) exit 1 } }' fit.txt ||
     fail "plant terms: $(head -1 fit.txt)"
@@ -113,4 +122,41 @@ grep -q '^# E NOT accepted by the library: branch function E not increasing in a
     fail "refused E: $(tail -1 fall.txt)"
 grep -q 'the fitted E is refused by the library: .*; no header or model file written' fall_err.txt || fail "refused E: $(cat fall_err.txt)"
 [ ! -e fall.hyst ] && [ ! -e f0_fall.h ] || fail "files written for a refused E"
+# ---- major loops alone of a plant with E of degree 3, linear in t ----
+# E = 3 w + w t + 2 w^2 - 0.5 w^2 t + 0.4 w^3 on [0, 40]: four major loops,
+# the sensor 1 sample late, +-0.005 of noise
+printf 'hyst-model-text 1\nkind everett\nlo 0\nhi 40\ny_lo 0.5\ndelay 0\ndegree 3\nterms 3 1 0 2 -0.5 0.4\n' > plant3.hyst
+awk 'function ramp(a, b,   k, n) { n = int((b > a ? b - a : a - b) / 0.25 + 0.5);
+                                 for (k = 1; k <= n; k++) printf "%.2f\n", a + (b - a) * k / n }
+     BEGIN { print 0; for (c = 0; c < 4; c++) { ramp(0, 40); ramp(40, 0) } }' > x3.txt
+"$tool" sim --model plant3.hyst --digits 17 x3.txt > y3.txt || fail "sim of the degree 3 plant"
+awk 'NR == FNR { x[NR] = $1; n = NR; next } { y[FNR] = $1 }
+     END { s = 4343; for (k = 2; k <= n; k++) {
+               s = (s * 1103515245 + 12345) % 2147483648; e = (s / 2147483648 - 0.5) * 0.01;
+               printf "%s %.9g\n", x[k], y[k - 1] + e } }' x3.txt y3.txt > rec3.txt
+# E of full degree 3 is singular on major loops
+rc=0
+"$tool" fit --kind everett --degree 3 --delay 1 rec3.txt > full3.txt 2> full3_err.txt || rc=$?
+[ "$rc" -eq 1 ] && grep -q 'everett degree 3 t-degree 2: the record.s turning points do not determine E of this degree' full3_err.txt ||
+    fail "degree 3 in full on major loops: exit $rc, $(cat full3_err.txt)"
+# chosen by hold-out: degree 3, t-degree 1, its terms recovered (w t^2 not fitted: 0)
+"$tool" fit rec3.txt > fit3.txt || fail "fit of the degree 3 plant"
+grep -q '^# chosen by hold-out: degree 3, delay 1 (kind everett, t-degree 1, 6 parameters' fit3.txt ||
+    fail "degree 3 plant: $(grep chosen fit3.txt)"
+grep -qx '# parameters 6' fit3.txt || fail "degree 3 plant: $(grep parameters fit3.txt)"
+grep -q '^# candidate everett degree 3 t-degree 2 delay 1: not scored (the record.s turning points' fit3.txt ||
+    fail "degree 3 plant, t-degree 2: $(grep 'degree 3 t-degree 2 delay 1' fit3.txt)"
+check_terms3() {
+    awk -F, 'NR == 1 { if (NF != 6 || $3 != 0) exit 1; split("3,1,0,2,-0.5,0.4", w, ",");
+                       for (k = 1; k <= 6; k++) { d = $k - w[k]; if (d < 0) d = -d; if (d > 0.03) exit 1 } }' "$1"
+}
+check_terms3 fit3.txt || fail "degree 3 plant terms: $(head -1 fit3.txt)"
+# the same with degree and t-degree given
+"$tool" fit --kind everett --degree 3 --t-degree 1 --delay 1 rec3.txt > given3.txt || fail "--t-degree 1"
+check_terms3 given3.txt && grep -qx '# parameters 6' given3.txt || fail "--degree 3 --t-degree 1: $(head -1 given3.txt)"
+# --t-degree without --degree: that t-degree only, each degree above it
+"$tool" fit --kind everett --t-degree 1 --delay 1 rec3.txt > only1.txt || fail "--t-degree 1 alone"
+[ "$(grep -c '^# candidate' only1.txt)" -eq 3 ] && [ "$(grep -c '^# candidate everett degree [234] t-degree 1 delay 1' only1.txt)" -eq 3 ] ||
+    fail "--t-degree 1 alone: $(grep '^# candidate' only1.txt)"
+
 echo "everett: measured record $(grep '^# chosen' meas.txt | cut -d'(' -f1); plant terms $(head -1 fit.txt)"

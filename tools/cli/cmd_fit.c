@@ -19,8 +19,9 @@
 #define FIT_PI_DEFAULT_OPERATORS 10u
 
 static const char help[] =
-    "usage: hyst fit [--kind tcm|everett] [--degree N] [--skip S] [--delay D]\n"
-    "                [--xcol I --ycol J] [--method joint|reflect] [--domain LO,HI]\n"
+    "usage: hyst fit [--kind tcm|everett] [--degree N] [--t-degree K] [--skip S]\n"
+    "                [--delay D] [--xcol I --ycol J] [--method joint|reflect]\n"
+    "                [--domain LO,HI]\n"
     "                [--header NAME] [--header-dir DIR] [--save MODEL]\n"
     "                [--compare-pi N] [--decimal-comma] FILE\n"
     "       hyst fit --kind pi [--operators N] [--skip S] [--delay D]\n"
@@ -35,12 +36,16 @@ static const char help[] =
     "  --degree N     polynomial degree, 1..9 (--kind everett: E's, 1..4). Without\n"
     "                 it, the kind (unless --kind is given), the degree and the\n"
     "                 delay (unless --delay is given) are chosen by hold-out: each\n"
-    "                 f0 of degree 1..9 and each E of degree 1..4, at each delay\n"
-    "                 0..8, is fitted on the first two thirds of the record and the\n"
-    "                 model predicts the last third; of the candidates within 1 %\n"
-    "                 of the lowest RMS prediction error, the one with the fewest\n"
-    "                 parameters wins (every candidate is printed as a\n"
-    "                 '# candidate' line)\n"
+    "                 f0 of degree 1..9 and each E of degree 1..4 in each t-degree\n"
+    "                 0..N-1, at each delay 0..8, is fitted on the first two\n"
+    "                 thirds of the record and the model predicts the last third;\n"
+    "                 of the candidates within 1 % of the lowest RMS prediction\n"
+    "                 error, the one with the fewest parameters wins (every\n"
+    "                 candidate is printed as a '# candidate' line)\n"
+    "  --t-degree K   --kind everett: fit only E's terms w^i t^j with j <= K\n"
+    "                 (0..N-1; the others 0). Default: with --degree, N-1 (all\n"
+    "                 terms); without, every K is a candidate. Major loops alone\n"
+    "                 determine E of t-degree 1 at most\n"
     "  --skip S       drop the first S data lines (settling; default 0)\n"
     "  --delay D      the output lags the input by D samples (default 0, or chosen)\n"
     "  --xcol I       input column, 1-based (default 1)\n"
@@ -71,7 +76,10 @@ static const char help[] =
     "                 thresholds r_i = (i - 1) (max - min) / N over the inputs'\n"
     "                 range, by non-negative least squares\n"
     "  --operators N  --kind pi: the number of operators, 1..64 (default 10)\n"
-    "  --help         this text\n"
+    "  --help         this text\n";
+
+/* The rest of the help text (one literal would pass the length C99 promises). */
+static const char help_output[] =
     "\n"
     "Output: line 1 the coefficients cN,...,c0 (highest power first; kind everett:\n"
     "E's terms), line 2 LO,HI, line 3 the RMS and max residual against the fitted\n"
@@ -95,6 +103,8 @@ typedef struct fit_opts {
     const char *header_dir; /* NULL: the current directory */
     const char *save;       /* model file, or NULL */
     int have_degree;
+    int have_t_degree;    /* --t-degree given */
+    unsigned t_degree;    /* kind everett: --t-degree, or that of the model fitted */
     int have_delay;
     int decimal_comma;
     int kind;             /* --kind: FIT_KIND_AUTO (not given), _TCM, _EVERETT or _PI */
@@ -135,6 +145,7 @@ static int parse(fit_opts_t *o, int argc, char **argv)
         }
         if (cli_is(&a, "--help") || cli_is(&a, "-h")) {
             (void)fputs(help, stdout);
+            (void)fputs(help_output, stdout);
             return -1;
         }
         if (cli_is(&a, "--decimal-comma")) {
@@ -166,6 +177,12 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             }
             o->cfg.degree = (unsigned)u;
             o->have_degree = 1;
+        } else if (cli_is(&a, "--t-degree")) {
+            if (!cli_opt_ulong(&a, v, 0ul, HYST_EVERETT_MAX_DEGREE - 1ul, &u)) {
+                return 1;
+            }
+            o->t_degree = (unsigned)u;
+            o->have_t_degree = 1;
         } else if (cli_is(&a, "--skip") || cli_is(&a, "--delay")) {
             if (!cli_opt_ulong(&a, v, 0ul, 1000000000ul, &u)) {
                 return 1;
@@ -233,6 +250,17 @@ static int parse(fit_opts_t *o, int argc, char **argv)
                                "everett",
                         o->cfg.degree, (unsigned)HYST_EVERETT_MAX_DEGREE);
     }
+    if (o->have_t_degree && o->kind != FIT_KIND_EVERETT) {
+        return cli_fail(a.cmd, "option --t-degree needs --kind everett");
+    }
+    if (o->kind == FIT_KIND_EVERETT && o->have_degree && o->have_t_degree &&
+        o->t_degree >= o->cfg.degree) {
+        return cli_fail(a.cmd, "option --t-degree: %u is not below --degree %u", o->t_degree,
+                        o->cfg.degree);
+    }
+    if (o->kind == FIT_KIND_EVERETT && o->have_degree && !o->have_t_degree) {
+        o->t_degree = o->cfg.degree - 1u; /* all of E's terms */
+    }
     o->final_kind = o->kind == FIT_KIND_EVERETT ? FIT_EVERETT : FIT_POLY;
     if (o->kind != FIT_KIND_PI && o->operators != 0u) {
         return cli_fail(a.cmd, "option --operators needs --kind pi (or use --compare-pi N)");
@@ -247,7 +275,7 @@ static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflec
 
 /* ---- the automatic choice (fit_select.c) ---- */
 
-#define MAX_CANDIDATES ((HYST_MAX_DEGREE + HYST_EVERETT_MAX_DEGREE) * (FIT_MAX_DELAY + 1u))
+#define MAX_CANDIDATES ((HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES) * (FIT_MAX_DELAY + 1u))
 static fit_candidate_t candidates[MAX_CANDIDATES];
 static size_t n_candidates, best_candidate;
 
@@ -259,22 +287,20 @@ static int candidate_kinds(const fit_opts_t *o)
                                          : FIT_POLY | FIT_EVERETT;
 }
 
-/* "everett " before an asymmetric candidate's degree, "" before a polynomial's. */
-static const char *kind_prefix(int kind) { return kind == FIT_EVERETT ? "everett " : ""; }
-
 /* Why an E fit is singular: its terms are not determined by the turning
  * points the record visits. Major loops alone (every branch starts at lo or
- * hi) determine degree 2 at most. */
+ * hi) determine E linear in t at most. */
 static const char everett_singular[] =
     "the record's turning points do not determine E of this degree; major loops alone "
-    "determine degree 2 at most";
+    "determine t-degree 1 at most";
 
 /* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
 static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
 {
-    n_candidates = fit_select(&o->cfg, candidate_kinds(o), t->col[0], t->col[1], t->n,
-                              o->have_delay ? o->cfg.delay : FIT_MAX_DELAY, candidates,
-                              MAX_CANDIDATES, &best_candidate);
+    n_candidates = fit_select(&o->cfg, candidate_kinds(o), 0u,
+                              o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, t->col[0],
+                              t->col[1], t->n, o->have_delay ? o->cfg.delay : FIT_MAX_DELAY,
+                              candidates, MAX_CANDIDATES, &best_candidate);
     if (best_candidate == (size_t)-1) {
         return cli_fail("fit", "%s: no candidate degree gave %s that could predict the last "
                                "third of the record (give --degree)",
@@ -286,31 +312,43 @@ static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
     }
     o->final_kind = candidates[best_candidate].kind;
     o->cfg.degree = candidates[best_candidate].degree;
+    o->t_degree = candidates[best_candidate].t_degree;
     o->cfg.delay = candidates[best_candidate].delay;
     return 0;
 }
 
 static void print_candidates(const fit_opts_t *o)
 {
+    char t_deg[32] = "";
     size_t i;
-    (void)printf("# chosen by hold-out: degree %u, delay %lu (kind %s, %u parameters: the "
+    if (o->final_kind == FIT_EVERETT) {
+        (void)snprintf(t_deg, sizeof t_deg, "t-degree %u, ", o->t_degree);
+    }
+    (void)printf("# chosen by hold-out: degree %u, delay %lu (kind %s, %s%u parameters: the "
                  "fewest within 1 %% of the lowest RMS prediction error on the last third of "
                  "the record, fitted on the first two thirds; kinds compared: %s)\n",
                  o->cfg.degree, (unsigned long)o->cfg.delay,
-                 o->final_kind == FIT_EVERETT ? "everett" : "poly",
-                 fit_parameters(o->final_kind, o->cfg.degree),
+                 o->final_kind == FIT_EVERETT ? "everett" : "poly", t_deg,
+                 fit_parameters(o->final_kind, o->cfg.degree, o->t_degree),
                  candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
                  : candidate_kinds(o) == FIT_EVERETT           ? "everett"
                                                                : "poly");
     for (i = 0u; i < n_candidates; ++i) {
         const fit_candidate_t *c = &candidates[i];
-        if (isfinite(c->holdout_rms)) {
-            (void)printf("# candidate %sdegree %u delay %lu: hold-out rms %.6g, fit rms %.6g%s\n",
-                         kind_prefix(c->kind), c->degree, (unsigned long)c->delay,
-                         c->holdout_rms, c->fit_rms, i == best_candidate ? " (chosen)" : "");
+        char name[48];
+        if (c->kind == FIT_EVERETT) {
+            (void)snprintf(name, sizeof name, "everett degree %u t-degree %u", c->degree,
+                           c->t_degree);
         } else {
-            (void)printf("# candidate %sdegree %u delay %lu: not scored (%s)\n",
-                         kind_prefix(c->kind), c->degree, (unsigned long)c->delay,
+            (void)snprintf(name, sizeof name, "degree %u", c->degree);
+        }
+        if (isfinite(c->holdout_rms)) {
+            (void)printf("# candidate %s delay %lu: hold-out rms %.6g, fit rms %.6g%s\n", name,
+                         (unsigned long)c->delay, c->holdout_rms, c->fit_rms,
+                         i == best_candidate ? " (chosen)" : "");
+        } else {
+            (void)printf("# candidate %s delay %lu: not scored (%s)\n", name,
+                         (unsigned long)c->delay,
                          c->kind == FIT_EVERETT && c->status == HYST_ERR_SINGULAR
                              ? everett_singular
                          : c->status != HYST_OK ? hyst_status_str(c->status)
@@ -375,7 +413,8 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
     unsigned k;
     memset(f, 0, sizeof *f);
     if (pairs > 0u) {
-        st = everett ? fit_everett_record(&o->cfg, t->col[0], t->col[1], t->n, &f->ev)
+        st = everett ? fit_everett_record(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n,
+                                          &f->ev)
                      : hyst_ident_fit(&o->cfg, t->col[0], t->col[1], t->n, &work, &f->r);
     }
     switch (st) {
@@ -387,8 +426,8 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
                         (unsigned long)t->n);
     case HYST_ERR_SINGULAR:
         if (everett) {
-            return cli_fail("fit", "%s: everett degree %u: %s", name, o->cfg.degree,
-                            everett_singular);
+            return cli_fail("fit", "%s: everett degree %u t-degree %u: %s", name,
+                            o->cfg.degree, o->t_degree, everett_singular);
         }
         return cli_fail("fit", "%s: too few distinct inputs for degree %u", name, o->cfg.degree);
     case HYST_ERR_DOMAIN:
@@ -427,19 +466,25 @@ static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, 
         holdout = candidates[best_candidate].holdout_rms;
     } else if (o->final_kind == FIT_EVERETT) {
         fit_everett_result_t train;
-        holdout = fit_everett_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train);
+        holdout = fit_everett_holdout(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n, &st,
+                                      &train);
     } else {
         hyst_ident_result_t train;
         holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train);
     }
-    (void)snprintf(tcm, sizeof tcm, "%sTCM degree %u",
-                   o->final_kind == FIT_EVERETT ? "asymmetric (everett) " : "", o->cfg.degree);
+    if (o->final_kind == FIT_EVERETT) {
+        (void)snprintf(tcm, sizeof tcm, "asymmetric (everett) TCM degree %u t-degree %u",
+                       o->cfg.degree, o->t_degree);
+    } else {
+        (void)snprintf(tcm, sizeof tcm, "TCM degree %u", o->cfg.degree);
+    }
     fit_pi_compare(t, o->compare_pi, o->cfg.skip, o->cfg.delay, tcm,
-                   fit_parameters(o->final_kind, o->cfg.degree), holdout, line, size);
+                   fit_parameters(o->final_kind, o->cfg.degree, o->t_degree), holdout, line,
+                   size);
 }
 
 /* Lines 1 to 3 and the line that says what they are. */
-static void print_result(const fit_final_t *f, size_t pairs)
+static void print_result(const fit_final_t *f, unsigned t_degree, size_t pairs)
 {
     const cli_model_t *m = &f->model;
     const double *v = m->kind == CLI_MODEL_EVERETT ? m->terms : m->coeffs;
@@ -451,9 +496,10 @@ static void print_result(const fit_final_t *f, size_t pairs)
     (void)printf("\n%.15g,%.15g\n%.6g,%.6g\n", m->lo, m->hi, f->rms, f->max_abs);
     if (m->kind == CLI_MODEL_EVERETT) {
         (void)printf("# residual rms,max above: the asymmetric model (kind everett, degree %u, "
-                     "y_lo %.15g) run over the record, %lu of %lu samples used%s; line 1 E's "
-                     "terms e[i-1][j] of w^i t^j, i = 1..%u, j = 0..%u - i\n",
-                     m->degree, m->y_lo, (unsigned long)f->ev.used, (unsigned long)pairs,
+                     "t-degree %u, y_lo %.15g) run over the record, %lu of %lu samples used%s; "
+                     "line 1 E's terms e[i-1][j] of w^i t^j, i = 1..%u, j = 0..%u - i (0 above "
+                     "the t-degree)\n",
+                     m->degree, t_degree, m->y_lo, (unsigned long)f->ev.used, (unsigned long)pairs,
                      f->usable ? "" : " (least-squares residual: the model cannot run)",
                      m->degree, m->degree);
     } else {
@@ -654,12 +700,12 @@ int cmd_fit(int argc, char **argv)
         }
         (void)signal(SIGPIPE, SIG_IGN);
     }
-    print_result(&f, pairs);
+    print_result(&f, o.t_degree, pairs);
     if (!o.have_degree) {
         print_candidates(&o);
     }
     (void)printf("# delay %lu samples\n# parameters %u\n", (unsigned long)o.cfg.delay,
-                 fit_parameters(o.final_kind, o.cfg.degree));
+                 fit_parameters(o.final_kind, o.cfg.degree, o.t_degree));
     (void)fputs(compare, stdout);
     print_usable(&f);
     if (fflush(stdout) != 0 || ferror(stdout)) {

@@ -12,12 +12,13 @@
  * started again, when the record stacks more (one sample pushes one at most). */
 #define EVERETT_FIT_CAP0 64u
 
-/* E fitted to x[k], y[k + delay], skip <= k < end, on [lo, hi], into *e:
+/* E (its terms w^i t^j with j <= t_degree) fitted to x[k], y[k + delay],
+ * skip <= k < end, on [lo, hi], into *e:
  * HYST_OK or the library's status; *used the samples in the fit, *ls_rms
  * its least-squares residual. */
-static hyst_status_t fit_samples(unsigned degree, double lo, double hi, const double *x,
-                                 const double *y, size_t skip, size_t end, size_t delay,
-                                 hyst_everett_t *e, size_t *used, double *ls_rms)
+static hyst_status_t fit_samples(unsigned degree, unsigned t_degree, double lo, double hi,
+                                 const double *x, const double *y, size_t skip, size_t end,
+                                 size_t delay, hyst_everett_t *e, size_t *used, double *ls_rms)
 {
     size_t cap = EVERETT_FIT_CAP0;
     for (;;) {
@@ -30,7 +31,7 @@ static hyst_status_t fit_samples(unsigned degree, double lo, double hi, const do
             return HYST_ERR_NOSPACE;
         }
         *used = 0u;
-        st = hyst_everett_fit_init(&fit, degree, lo, hi, work, len);
+        st = hyst_everett_fit_init_terms(&fit, degree, t_degree, lo, hi, work, len);
         for (k = skip; k < end && st == HYST_OK; ++k) {
             const hyst_status_t add = hyst_everett_fit_add(&fit, x[k], y[k + delay]);
             /* HYST_ERR_DOMAIN: outside a given domain, ignored as the poly fit ignores it */
@@ -52,8 +53,9 @@ static hyst_status_t fit_samples(unsigned degree, double lo, double hi, const do
     }
 }
 
-hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, const double *x,
-                                 const double *y, size_t n, fit_everett_result_t *res)
+hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degree,
+                                 const double *x, const double *y, size_t n,
+                                 fit_everett_result_t *res)
 {
     const size_t skip = cfg->skip, delay = cfg->delay;
     double lo = (double)cfg->lo, hi = (double)cfg->hi;
@@ -75,7 +77,7 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, const double *x
             hi = x[k] > hi ? x[k] : hi;
         }
     }
-    st = fit_samples(cfg->degree, lo, hi, x, y, skip, end, delay, &res->e, &res->used,
+    st = fit_samples(cfg->degree, t_degree, lo, hi, x, y, skip, end, delay, &res->e, &res->used,
                      &res->ls_rms);
     if (st != HYST_OK) {
         return st;

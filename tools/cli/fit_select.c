@@ -7,8 +7,9 @@
  * there, so the criterion does not reward it. Of the candidates within
  * FIT_PARSIMONY of the lowest error, the one with the fewest parameters is
  * chosen: a gain below that is not worth a coefficient. The candidates are
- * of both kinds, the symmetric TCM's f0 and the asymmetric kind's E, scored
- * alike. */
+ * of both kinds, the symmetric TCM's f0 and the asymmetric kind's E (each
+ * degree with each power of t up to it: major loops determine E linear in
+ * t, not E of full degree 3 or 4), scored alike. */
 #include "fit_select.h"
 
 #include "cli.h"
@@ -17,9 +18,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-unsigned fit_parameters(int kind, unsigned degree)
+unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree)
 {
-    return kind == FIT_EVERETT ? (unsigned)cli_everett_terms(degree) + 1u : degree + 1u;
+    unsigned i, count = 1u; /* y_lo */
+    if (kind != FIT_EVERETT) {
+        return degree + 1u;
+    }
+    for (i = 1u; i <= degree; ++i) { /* w^i t^j, j = 0 .. min(degree - i, t_degree) */
+        count += (degree - i < t_degree ? degree - i : t_degree) + 1u;
+    }
+    return count;
 }
 
 double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
@@ -105,8 +113,9 @@ double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const do
                          NULL);
 }
 
-double fit_everett_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
-                           size_t n, hyst_status_t *status, fit_everett_result_t *fit)
+double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
+                           const double *y, size_t n, hyst_status_t *status,
+                           fit_everett_result_t *fit)
 {
     hyst_curve_t curve;
     size_t train;
@@ -116,7 +125,7 @@ double fit_everett_holdout(const hyst_ident_config_t *cfg, const double *x, cons
         return NAN;
     }
     train = train_count(n, cfg->skip, cfg->delay);
-    *status = fit_everett_record(cfg, x, y, cfg->skip + train + cfg->delay, fit);
+    *status = fit_everett_record(cfg, t_degree, x, y, cfg->skip + train + cfg->delay, fit);
     if (*status == HYST_OK) {
         *status = fit->curve_status;
     }
@@ -158,7 +167,7 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
-/* Candidate c fitted and scored: kind, degree and delay set by the caller. */
+/* Candidate c fitted and scored: kind, degree (t_degree) and delay set by the caller. */
 static void score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
                   fit_candidate_t *c)
 {
@@ -167,7 +176,7 @@ static void score(const hyst_ident_config_t *base, const double *x, const double
     cfg.delay = c->delay;
     if (c->kind == FIT_EVERETT) {
         fit_everett_result_t ev;
-        c->holdout_rms = fit_everett_holdout(&cfg, x, y, n, &c->status, &ev);
+        c->holdout_rms = fit_everett_holdout(&cfg, c->t_degree, x, y, n, &c->status, &ev);
         c->fit_rms = ev.rms;
     } else {
         c->holdout_rms = fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit);
@@ -175,33 +184,48 @@ static void score(const hyst_ident_config_t *base, const double *x, const double
     }
 }
 
-size_t fit_select(const hyst_ident_config_t *base, int kinds, const double *x, const double *y,
-                  size_t n, size_t max_delay, fit_candidate_t *cand, size_t max_cand,
-                  size_t *best)
+/* Adds candidate (kind, degree, t_degree, delay), scored, at cand[*count]
+ * unless cand is full; *best the lowest hold-out RMS so far. */
+static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+                int kind, unsigned degree, unsigned t_degree, size_t delay,
+                fit_candidate_t *cand, size_t max_cand, size_t *count, size_t *best)
 {
-    static const int kind_list[2] = {FIT_POLY, FIT_EVERETT};
+    fit_candidate_t *c = &cand[*count];
+    if (*count >= max_cand) {
+        return;
+    }
+    memset(c, 0, sizeof *c);
+    c->kind = kind;
+    c->degree = degree;
+    c->t_degree = t_degree;
+    c->delay = delay;
+    score(base, x, y, n, c);
+    if (isfinite(c->holdout_rms) &&
+        (*best == (size_t)-1 || c->holdout_rms < cand[*best].holdout_rms)) {
+        *best = *count;
+    }
+    ++*count;
+}
+
+size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
+                  unsigned t_degree, const double *x, const double *y, size_t n,
+                  size_t max_delay, fit_candidate_t *cand, size_t max_cand, size_t *best)
+{
     size_t count = 0u, d, i;
-    unsigned deg, kk;
+    unsigned deg, k;
     *best = (size_t)-1;
     for (d = base->delay; d <= max_delay; ++d) {
         if (n <= base->skip + d) {
             break;
         }
-        for (kk = 0u; kk < 2u; ++kk) {
-            const int kind = kind_list[kk];
-            const unsigned top = kind == FIT_EVERETT ? HYST_EVERETT_MAX_DEGREE : HYST_MAX_DEGREE;
-            for (deg = 1u; (kinds & kind) != 0 && deg <= top && count < max_cand; ++deg) {
-                fit_candidate_t *c = &cand[count];
-                memset(c, 0, sizeof *c);
-                c->kind = kind;
-                c->degree = deg;
-                c->delay = d;
-                score(base, x, y, n, c);
-                if (isfinite(c->holdout_rms) &&
-                    (*best == (size_t)-1 || c->holdout_rms < cand[*best].holdout_rms)) {
-                    *best = count;
+        for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
+            add(base, x, y, n, FIT_POLY, deg, 0u, d, cand, max_cand, &count, best);
+        }
+        for (deg = 1u; (kinds & FIT_EVERETT) != 0 && deg <= HYST_EVERETT_MAX_DEGREE; ++deg) {
+            for (k = 0u; k < deg && (everett_degree == 0u || deg == everett_degree); ++k) {
+                if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
+                    add(base, x, y, n, FIT_EVERETT, deg, k, d, cand, max_cand, &count, best);
                 }
-                ++count;
             }
         }
     }
@@ -209,8 +233,8 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, const double *x, c
         const double limit = cand[*best].holdout_rms * (1.0 + FIT_PARSIMONY);
         for (i = 0u; i < count; ++i) {
             const fit_candidate_t *c = &cand[i], *b = &cand[*best];
-            const unsigned pc = fit_parameters(c->kind, c->degree);
-            const unsigned pb = fit_parameters(b->kind, b->degree);
+            const unsigned pc = fit_parameters(c->kind, c->degree, c->t_degree);
+            const unsigned pb = fit_parameters(b->kind, b->degree, b->t_degree);
             if (isfinite(c->holdout_rms) && c->holdout_rms <= limit &&
                 (pc < pb || (pc == pb && c->holdout_rms < b->holdout_rms))) {
                 *best = i;

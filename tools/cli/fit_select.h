@@ -18,9 +18,16 @@
  * symmetric TCM's polynomial f0 and the asymmetric kind's E. */
 enum { FIT_POLY = 1, FIT_EVERETT = 2 };
 
+/* fit_select(): every t-degree of each everett degree. */
+#define FIT_ANY_T_DEGREE 99u
+
+/* Everett candidates of each delay: (degree d, t-degree 0..d - 1), d = 1..4. */
+#define FIT_EVERETT_CANDIDATES (HYST_EVERETT_MAX_DEGREE * (HYST_EVERETT_MAX_DEGREE + 1u) / 2u)
+
 typedef struct fit_candidate {
     int kind;                 /* FIT_POLY or FIT_EVERETT */
     unsigned degree;
+    unsigned t_degree;        /* everett: the highest power of t fitted (< degree) */
     size_t delay;
     hyst_status_t status;     /* of the training fit (everett: or of its curve) */
     hyst_ident_result_t fit;  /* poly: on the first two thirds */
@@ -38,8 +45,9 @@ typedef struct fit_everett_result {
 } fit_everett_result_t;
 
 /* Real numbers a model of this kind and degree identifies: poly the
- * degree + 1 coefficients, everett E's terms and y_lo. */
-unsigned fit_parameters(int kind, unsigned degree);
+ * degree + 1 coefficients, everett E's terms w^i t^j with j <= t_degree
+ * and y_lo (t_degree ignored for poly). */
+unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree);
 
 /* The TCM (f0, or when f0 is NULL the prepared curve) run from rest over
  * x[skip .. n - delay) against y[k + delay]: the RMS error over the samples
@@ -56,18 +64,20 @@ double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const dou
 double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
                        size_t n, hyst_status_t *status, hyst_ident_result_t *fit);
 
-/* E of degree cfg->degree fitted to x[k] with y[k + delay], skip <= k <
+/* E of degree cfg->degree, its terms w^i t^j with j <= t_degree, fitted to x[k] with y[k + delay], skip <= k <
  * n - delay (the model from rest at sample skip), on [cfg->lo, cfg->hi]
  * (samples outside ignored), or the range of those inputs when lo == hi;
  * then the curve checked and, if the library accepts it, the model run over
  * the same samples (res->rms, max_abs). HYST_OK, or the fit's status. */
-hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, const double *x,
-                                 const double *y, size_t n, fit_everett_result_t *res);
+hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degree,
+                                 const double *x, const double *y, size_t n,
+                                 fit_everett_result_t *res);
 
 /* fit_tcm_holdout() for the asymmetric kind: NaN if the fit failed or the
  * library refused E (*status says which). */
-double fit_everett_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
-                           size_t n, hyst_status_t *status, fit_everett_result_t *fit);
+double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
+                           const double *y, size_t n, hyst_status_t *status,
+                           fit_everett_result_t *fit);
 
 /* The same for the PI model of cfg (operators, skip, delay; the thresholds
  * uniform over the training part's inputs unless given): r, w its N
@@ -78,13 +88,15 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
                       double *w);
 
 /* Fits each kind of the mask `kinds` (poly degree 1..HYST_MAX_DEGREE,
- * everett 1..HYST_EVERETT_MAX_DEGREE) at each delay from base->delay to
+ * everett degree 1..HYST_EVERETT_MAX_DEGREE with each t-degree 0..degree - 1;
+ * everett_degree, when not 0, the only everett degree, t_degree, when not
+ * FIT_ANY_T_DEGREE, the only t-degree) at each delay from base->delay to
  * max_delay (base: method, domain, skip) into cand[0..max_cand); returns
  * the count, *best the index chosen: the fewest parameters within
  * FIT_PARSIMONY of the lowest hold-out RMS, the lower RMS between equals
  * ((size_t)-1: none could be scored). */
-size_t fit_select(const hyst_ident_config_t *base, int kinds, const double *x, const double *y,
-                  size_t n, size_t max_delay, fit_candidate_t *cand, size_t max_cand,
-                  size_t *best);
+size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
+                  unsigned t_degree, const double *x, const double *y, size_t n,
+                  size_t max_delay, fit_candidate_t *cand, size_t max_cand, size_t *best);
 
 #endif
