@@ -282,7 +282,7 @@ def compensation(sec, md, out):
     md.append(f"| open loop (linear scaling) | {fmt(v['open_rms'])} | {fmt(v['open_max'])} |")
     md.append(f"| inverse TCM | {fmt(v['comp_rms'])} | {fmt(v['comp_max'])} |")
     md.append(f"\nThe inverse reduces the RMS tracking error {v['open_rms'] / v['comp_rms']:.1f}-fold "
-              f"(comp_rms_ratio). Along full major loops only, the same compensator reduces it "
+              f"(Bouc–Wen plant; `comp_rms_ratio` is the asymmetric plant's, below). Along full major loops only, the same compensator reduces it "
               f"{v['major_open_rms'] / v['major_comp_rms']:.1f}-fold (RMS {fmt(v['major_comp_rms'])} vs "
               f"{fmt(v['major_open_rms'])}): f0 fits the plant's major loop; what limits the test signal "
               "is its minor loops, which the Bouc–Wen plant does not close (no wiping-out property), so "
