@@ -47,20 +47,27 @@ static double burst_input(long k, double lo, double hi)
 }
 
 /* The plant's record with Gaussian output noise of `noise`. */
-static void record_plant(double noise)
+/* The reference running the plant's E (the domain's E unused). */
+static ref_everett_t *plant_reference(void)
 {
     static hyst_everett_t dom;
     static ref_everett_t r;
-    long k;
     memset(&dom, 0, sizeof dom);
     dom.degree = 1u;
     dom.lo = PLANT_LO;
     dom.hi = PLANT_HI;
     ref_everett_init(&r, &dom);
     r.fn = plant_e;
+    return &r;
+}
+
+static void record_plant(double noise)
+{
+    ref_everett_t *const r = plant_reference();
+    long k;
     for (k = 0; k < RECORD; ++k) {
         rx[k] = burst_input(k, PLANT_LO, PLANT_HI);
-        ry[k] = ref_everett_step(&r, rx[k]) + noise * rng_gauss(&rng);
+        ry[k] = ref_everett_step(r, rx[k]) + noise * rng_gauss(&rng);
     }
 }
 
@@ -245,19 +252,12 @@ static void test_monotone_least_squares_is_kept_bit_for_bit(void)
 static void test_major_loops_alone_are_singular_above_degree_2(void)
 {
     static hyst_everett_fit_t fit;
-    static hyst_everett_t dom;
-    static ref_everett_t r;
+    ref_everett_t *const r = plant_reference();
     hyst_everett_t e;
     long k;
-    memset(&dom, 0, sizeof dom);
-    dom.degree = 1u;
-    dom.lo = PLANT_LO;
-    dom.hi = PLANT_HI;
-    ref_everett_init(&r, &dom);
-    r.fn = plant_e;
     for (k = 0; k < 1200L; ++k) {
         rx[k] = 5.0 - 10.0 * cos(6.283185307179586 * (double)k / 200.0);
-        ry[k] = ref_everett_step(&r, rx[k]);
+        ry[k] = ref_everett_step(r, rx[k]);
     }
     fit_record(&fit, 2u, PLANT_LO, PLANT_HI, 1200L);
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve(&fit, &e, NULL));

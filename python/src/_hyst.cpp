@@ -188,6 +188,19 @@ template <class T> struct Real : Owned<T, T> {
     bool inverse;
     double deadband = 0.0;
 
+    /* The instance on fwd, or on its inverse (the compensator). */
+    void attach_curve(size_t capacity)
+    {
+        const hyst_curve_t *c = &fwd;
+        if (inverse) {
+            check(hyst_curve_inverse(&inv, &fwd), "inverse curve");
+            c = &inv;
+        }
+        check(O::init_curve(&this->S, c, this->xl.data(), this->yl.data(), this->xr.data(),
+                            this->yr.data(), capacity, HYST_LAYOUT),
+              inverse ? "compensator init" : "model init");
+    }
+
     /* A piecewise-linear f0 through (xs, ys): its own copies of the points. */
     Real(const std::vector<double> &xs, const std::vector<double> &ys, size_t capacity,
          bool inverse_)
@@ -198,14 +211,7 @@ template <class T> struct Real : Owned<T, T> {
             raise_status(HYST_ERR_ARG, "xs and ys differ in length");
         }
         check(O::curve_from_pwl(&fwd, bx.data(), by.data(), bx.size(), HYST_LAYOUT), "curve");
-        const hyst_curve_t *c = &fwd;
-        if (inverse) {
-            check(hyst_curve_inverse(&inv, &fwd), "inverse curve");
-            c = &inv;
-        }
-        check(O::init_curve(&this->S, c, this->xl.data(), this->yl.data(), this->xr.data(),
-                            this->yr.data(), capacity, HYST_LAYOUT),
-              inverse ? "compensator init" : "model init");
+        attach_curve(capacity);
         this->kind = "pwl";
         this->lo = xs.empty() ? 0.0 : xs.front();
         this->hi = xs.empty() ? 0.0 : xs.back();
@@ -219,14 +225,7 @@ template <class T> struct Real : Owned<T, T> {
     {
         const hyst_everett_t e = make_everett(degree, lo_, hi_, y_lo_, terms_);
         check(O::curve_from_everett(&fwd, &e, HYST_LAYOUT), "curve");
-        const hyst_curve_t *c = &fwd;
-        if (inverse) {
-            check(hyst_curve_inverse(&inv, &fwd), "inverse curve");
-            c = &inv;
-        }
-        check(O::init_curve(&this->S, c, this->xl.data(), this->yl.data(), this->xr.data(),
-                            this->yr.data(), capacity, HYST_LAYOUT),
-              inverse ? "compensator init" : "model init");
+        attach_curve(capacity);
         this->kind = "everett";
         this->terms = terms_;
         this->lo = lo_;
