@@ -233,6 +233,40 @@ def read_summary(path):
     return vals
 
 
+def per_core(b, md):
+    """The per-core table (docs/timing.md's, from bench/run's keys)."""
+    def g(key):
+        return b.get(key, "")
+
+    def pair(a, c):
+        return f"{g(a)} / {g(c) or 'not modelled'}" if g(a) else ""
+    ram = g("ram_12bit_bytes")
+    rows = [
+        ("Cortex-M0 (size only: no QEMU board)", "", "", "", "", g("m0_core_flash_Os"), "", ""),
+        ("Cortex-M3, soft float", pair("m3_f32_typical_insns", "m3_f32_typical_cycles"),
+         pair("m3_f32_worst_insns_nu4096", "m3_f32_worst_cycles_nu4096"), g("m3_f32_pi10_insns"),
+         g("m3_f32_engine_flash_O2"), g("m3_f32_core_flash_Os"), ram, "libgcc helpers: not static"),
+        ("Cortex-M3, q31 model", g("m3_q31_typical_insns"), g("m3_q31_worst_insns_nu4096"), "", "", "",
+         "", ""),
+        ("Cortex-M3, q31 compensator", g("m3_q31_inv_typical_insns"), g("m3_q31_inv_worst_insns_nu4096"),
+         "", "", "", "", ""),
+        ("Cortex-M4F", pair("tcm_typical_insns", "m4_typical_cycles"),
+         pair("tcm_worst_clamped_insns_nu4096", "m4_worst_cycles_nu4096"), g("pi10_insns"),
+         g("core_flash_bytes_O2_tcm"), g("core_flash_bytes_Os"), ram, g("step_stack_bytes")),
+        ("Cortex-M7 (double FPU)", pair("m7_f32_typical_insns", "m7_f32_typical_cycles"),
+         pair("m7_f32_worst_insns_nu4096", "m7_f32_worst_cycles_nu4096"), g("m7_f32_pi10_insns"),
+         g("m7_f32_engine_flash_O2"), g("m7_f32_core_flash_Os"), "", g("m7_f32_step_stack_bytes")),
+    ]
+    md.append("Per core (float model unless stated, Nu = 4096 codes, cubic f0; instructions exact under QEMU, "
+              "cycles from `tools/cycle_model.py` where it models the core; flash in bytes: the engine at -O2, "
+              "the whole library at -Os; RAM: instance and the four TP arrays, float; stack: the deepest "
+              "static path of the step; docs/timing.md):\n")
+    md.append("| core | typical insns / cycles | worst insns / cycles | PI-10 insns | engine flash -O2 | "
+              "library flash -Os | RAM | step stack |\n|---|---|---|---|---|---|---|---|")
+    md.extend("| " + " | ".join(r) + " |" for r in rows)
+    md.append("")
+
+
 def bench_summary(path, md):
     rows = []
     with open(path, encoding="utf-8") as fh:
@@ -241,6 +275,7 @@ def bench_summary(path, md):
             if len(parts) == 2:
                 rows.append(parts)
     if rows:
+        per_core(dict(rows), md)
         md.append("Benchmark summary (`bench/run`):\n")
         md.append("| key | value |\n|---|---|")
         md.extend(f"| `{k}` | {v} |" for k, v in rows)
