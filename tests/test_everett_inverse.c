@@ -218,6 +218,35 @@ static void test_inverse_of_inverse_and_bad_input(void)
     TEST_ASSERT_EQUAL_MEMORY(&CURVE_NUM(inv.y_hi), &x, sizeof x); /* nothing lost */
 }
 
+#ifndef HYST_USE_DOUBLE
+/* Desired outputs as integer codes 0..4095 over the major loop's range
+ * (the code variant): the model driven by the compensator gives each
+ * code's output back. */
+static void test_codes_drive_the_asymmetric_compensator(void)
+{
+    static hyst_code_word_t cl[CAP], cr[CAP];
+    static float cyl[CAP], cyr[CAP];
+    const hyst_everett_t e = accepted_e();
+    const double lo = (double)inv.lo.f32, hi = (double)inv.hi.f32, span = e.hi - e.lo;
+    double worst = 0.0, v = 2048.0;
+    hyst_t K;
+    long k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init_curve(&K, &inv, 0u, 4095u, cl, cyl, cr, cyr, CAP));
+    ref_everett_init(&ref, &e);
+    for (k = 0; k < SAMPLES; ++k) {
+        const uint_least32_t code = (uint_least32_t)floor(ref_everett_walk(&rng, &v, 0.0, 4095.0) + 0.5);
+        const double want = lo + (hi - lo) * (double)code / 4095.0;
+        const double x = (double)hyst_code_step(&K, code);
+        const double d = fabs(x - exact_drive(&ref, want)) / span;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&K));
+        worst = d > worst ? d : worst;
+        (void)ref_everett_step(&ref, exact_drive(&ref, want));
+    }
+    TEST_PRINTF("codes: worst drive error %g of the span", worst);
+    TEST_ASSERT_TRUE(worst < DRIVE_AGREE);
+}
+#endif
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -225,5 +254,8 @@ int main(void)
     RUN_TEST(test_drive_is_monotone);
     RUN_TEST(test_block_and_snapshots);
     RUN_TEST(test_inverse_of_inverse_and_bad_input);
+#ifndef HYST_USE_DOUBLE
+    RUN_TEST(test_codes_drive_the_asymmetric_compensator);
+#endif
     return UNITY_END();
 }
