@@ -311,7 +311,7 @@ def compensation(sec, md, out):
     md.append("The Bouc–Wen plant of the experiment (not a TCM) follows a desired displacement shaped like the "
               "paper's test signal, 5–95 % of the stroke, driven (a) open loop by a linear scaling of the major "
               "loop's end points and (b) through the inverse TCM of the f0 identified above (same engine, "
-              "curve f0⁻¹ by monotone bisection, at most 24 evaluations of f0 per sample), computed on the target. "
+              "curve f0⁻¹ tabulated as monotone cubic pieces, `HYST_INIT_INVERSE`), computed on the target. "
               "Errors in µm.\n")
     md.append("| | RMS error | max error |\n|---|---|---|")
     md.append(f"| open loop (linear scaling) | {fmt(v['open_rms'])} | {fmt(v['open_max'])} |")
