@@ -10,7 +10,8 @@
  *        grids; bit2 a module-specific corruption (ident: REFLECT, or the
  *        domain from the data; PI fit: a workspace one entry short); bit3
  *        NULL-pointer probes (ident known f0: explicit domain); bit4 (ident)
- *        a known f0 through the TCM; bit5 (ident) the PI weights by NNLS
+ *        a known f0 through the TCM, (inverse) the tabulated compensator; bit5
+ *        (ident) the PI weights by NNLS
  *        instead (fuzz_pi_fit())
  *   then the module's parameters, then opcodes until the input ends (see
  *   each fuzz_* function). 0xF0..0xFF are control opcodes in the PI, PWL
@@ -85,9 +86,14 @@ typedef struct {
 } tcm_t;
 
 static tcm_t T, Ti, G, keep_t;
-/* Storage of the compensator's inverse curve (hyst_init_inverse writes it;
+/* Storage of the compensator's inverse curve (hyst_init_inverse_exact writes it;
  * Ti points at it, so it outlives Ti). */
 static hyst_curve_t ti_curve;
+/* The tabulated compensator's table (flag bit4 of module 2), and the one of
+ * the same curve made by the two calls init makes. */
+#define TI_MAX_INTERVALS 64u
+static hyst_real_t ti_table[HYST_INV_TABLE_LEN(TI_MAX_INTERVALS)];
+static hyst_real_t ct_table[HYST_INV_TABLE_LEN(TI_MAX_INTERVALS)];
 
 /* The engine's own evaluation of g (what hyst_curve_g_unit() and
  * hyst_curve_g_unit_other() exposed before the curve became a tagged union):
@@ -748,50 +754,77 @@ static double slope_bound(const hyst_poly_t *f)
     return acc;
 }
 
-/* Config as fuzz_hyst.c (read_config), then a capacity byte. hyst_init_inverse
- * must report the curve error first, then the instance's. Opcodes: samples
- * are desired outputs (10% beyond [f0(lo), f0(hi)]); 0xF0 reset; others:
+/* The compensator under test: exact (hyst_init_inverse_exact) or, tab, tabulated
+ * on `intervals` intervals (hyst_init_inverse_table, the firmware's). */
+static hyst_status_t init_compensator(int tab, size_t intervals, hyst_t *S, hyst_curve_t *inv,
+                                      const hyst_poly_t *f, size_t cap)
+{
+    return tab ? hyst_init_inverse_table(S, inv, f, ti_table, intervals, Ti.xl, Ti.yl, Ti.xr,
+                                         Ti.yr, cap)
+               : hyst_init_inverse_exact(S, inv, f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap);
+}
+
+/* Config as fuzz_hyst.c (read_config), then a capacity byte, and with flag
+ * bit4 (the tabulated compensator) an intervals byte (1..64). Init must
+ * report the curve error first, then the instance's. Opcodes: samples are
+ * desired outputs (10% beyond [f0(lo), f0(hi)]); 0xF0 reset; others:
  * accessors. */
 static void fuzz_inverse(reader_t *rd, unsigned flags)
 {
     hyst_poly_t f;
-    hyst_curve_t cf, ci, back;
+    hyst_curve_t cf, ci, ct, back;
     hyst_status_t exp, st, cst;
-    size_t cap;
-    double R, tol, M, rel, prev_d = 0.0;
-    int run_ok, flat;
+    size_t cap, intervals = 0u;
+    double R, tol, M, rel, prev_d = 0.0, prev_yd = 0.0, prev_xd = 0.0;
+    int run_ok, flat, moved = 0;
+    const int tab = (flags & 16u) != 0u;
     unsigned ops, j;
 
+    memset(&ct, 0, sizeof ct);
     read_config(rd, (int)(flags & 2u), &f);
     cap = rd_u8(rd) % CAP;
+    if (tab) {
+        intervals = 1u + rd_u8(rd) % TI_MAX_INTERVALS;
+    }
     cst = hyst_curve_from_poly(&cf, &f);
     exp = cst;
     if (cst == HYST_OK) {
         cst = hyst_curve_inverse(&ci, &cf);
+        if (cst == HYST_OK && tab) {
+            cst = hyst_curve_inverse_table(&ct, &cf, ct_table, intervals);
+        }
         exp = cst != HYST_OK ? cst : (cap < 2u ? HYST_ERR_CAPACITY : HYST_OK);
     }
     if (flags & 8u) {
-        CHECK(hyst_init_inverse(&Ti.S, &ti_curve, NULL, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) ==
+        CHECK(hyst_init_inverse_exact(&Ti.S, &ti_curve, NULL, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) ==
               HYST_ERR_NULL);
-        CHECK(hyst_init_inverse(&Ti.S, NULL, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) == HYST_ERR_NULL);
+        CHECK(hyst_init_inverse_exact(&Ti.S, NULL, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) == HYST_ERR_NULL);
         if (cst == HYST_OK) {
-            CHECK(hyst_init_inverse(NULL, &ti_curve, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) ==
+            CHECK(hyst_init_inverse_exact(NULL, &ti_curve, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap) ==
                   HYST_ERR_NULL);
-            CHECK(hyst_init_inverse(&Ti.S, &ti_curve, &f, Ti.xl, NULL, Ti.xr, Ti.yr, cap) ==
+            CHECK(hyst_init_inverse_exact(&Ti.S, &ti_curve, &f, Ti.xl, NULL, Ti.xr, Ti.yr, cap) ==
                   HYST_ERR_NULL);
         }
     }
     memset(&Ti, 0x77, sizeof(Ti));
     memcpy(&keep_t, &Ti, sizeof(Ti));
-    st = hyst_init_inverse(&Ti.S, &ti_curve, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap);
+    st = init_compensator(tab, intervals, &Ti.S, &ti_curve, &f, cap);
     CHECK(st == exp);
     if (st != HYST_OK) {
         CHECK(memcmp(&Ti, &keep_t, sizeof(Ti)) == 0);
         return;
     }
     CHECK(Ti.S.curve == &ti_curve); /* the instance points at the caller's storage */
-    CHECK(Ti.S.curve->kind == HYST_CURVE_POLY_INV && hyst_curve_check(&ci) == HYST_OK);
-    CHECK(memcmp(Ti.S.curve, &ci, sizeof(ci)) == 0); /* same as the two calls */
+    CHECK(hyst_curve_check(&ci) == HYST_OK);
+    if (tab) { /* same table as the two calls, its error measured */
+        CHECK(Ti.S.curve->kind == HYST_CURVE_INV_TABLE && hyst_curve_check(Ti.S.curve) == HYST_OK);
+        CHECK(memcmp(ti_table, ct_table, sizeof(hyst_real_t) * HYST_INV_TABLE_LEN(intervals)) == 0);
+        CHECK(hyst_curve_inverse_error(Ti.S.curve) == hyst_curve_inverse_error(&ct));
+        CHECK(hyst_curve_inverse_error(&ct) >= 0.0 && hyst_curve_inverse_error(&ct) <= 1.0);
+    } else {
+        CHECK(Ti.S.curve->kind == HYST_CURVE_POLY_INV);
+        CHECK(memcmp(Ti.S.curve, &ci, sizeof(ci)) == 0); /* same as the two calls */
+    }
     CHECK(hyst_curve_inverse(&back, &ci) == HYST_OK && back.kind == HYST_CURVE_POLY);
     R = cf.y_hi.HYST_R - cf.y_lo.HYST_R;
     M = fmax(fabs(f.lo), fabs(f.hi));
@@ -840,6 +873,10 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         CLOSE("poly_inv_of_inv", fabs(hyst_curve_g(&back, d) - hyst_curve_g(&cf, d)), 4.0 * EPS * R + horner_bound(&f));
     }
     if (flags & 2u) return; /* raw: init and the curve level only */
+    if (tab) { /* the table's drive error, measured at init, as an output error */
+        tol += 4.0 * (double)hyst_curve_inverse_error(&ct) * (cf.hi.HYST_R - cf.lo.HYST_R) *
+               slope_bound(&f);
+    }
     CHECK(init_on(&T, &cf, cap) == HYST_OK);
     run_ok = 1;
     for (ops = 0; ops < MAX_OPS && rd->at < rd->n; ++ops) {
@@ -848,6 +885,7 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
             hyst_reset(&T.S);
             hyst_reset(&Ti.S);
             run_ok = 1;
+            moved = 0;
             continue;
         }
         if ((op & 0xF0u) == 0xF0u) {
@@ -858,6 +896,12 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
             const double yd = next_pos(rd, op, cf.y_lo.HYST_R, R);
             const double xd = hyst_step(&Ti.S, yd);
             if (!isfinite(yd)) continue;
+            /* the drive never moves against the desired output (both
+             * compensators: the monotone guard) */
+            CHECK(!moved || !((yd > prev_yd && xd < prev_xd) || (yd < prev_yd && xd > prev_xd)));
+            moved = 1;
+            prev_yd = yd;
+            prev_xd = xd;
             if (hyst_status(&Ti.S) == HYST_WARN_FULL) run_ok = 0;
             /* The drive stays in [lo, hi], after a merge too (the output clamp after a full array,
              * regress_full_drive_overrange, fixed: the engine clamps). */

@@ -143,6 +143,10 @@ models = {
     "inv_flat_x3": poly(INV, 0, 3, -1.0, 2.0, [1.0, 0.0, 0.0, 0.0], 0, bytes([20]) + tri(2, 6)),
     "inv_not_increasing": poly(INV, NULLS, 2, -1.0, 2.0, [1.0, 0.0, 0.0], 0, bytes([20])),
     "inv_cap1": poly(INV, NULLS, 3, 0.0, 3.9, cubic_c, 2, bytes([1])),
+    # the tabulated compensator (flag 16): cap, then intervals - 1
+    "inv_table_cubic": poly(INV, KNOWN, 3, 0.0, 3.9, cubic_c, 2, bytes([40, 31]) + tri(4, 4) + b"\xf0" + pos(1.08)),
+    "inv_table_flat_x3": poly(INV, KNOWN, 3, -1.0, 2.0, [1.0, 0.0, 0.0, 0.0], 0, bytes([20, 7]) + tri(2, 6)),
+    "inv_table_one_interval": poly(INV, KNOWN | NULLS, 3, 0.0, 3.9, cubic_c, 2, bytes([4, 0]) + tri(3, 3)),
     "inv_raw_eq20": bytes([INV, RAW, 3]) + struct.pack("<dd", 0.0, 40.0)
         + struct.pack("<10d", -6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1, *[0.0] * 6) + bytes([40]),
     "ident_stream": ident(NULLS, 3, 0, -1.0, 3.0, b"".join(add(u) for u in wave) + bytes([RESID, SOLVE])

@@ -2,7 +2,7 @@
 function [x, status, tp_count] = hyst_inv(model, y, varargin)
 % HYST_INV  The compensator: the drive X that gives each desired output Y.
 %   X = HYST_INV(MODEL, Y) runs the inverse model (include/hyst/inverse.h:
-%   hyst_f64_init_inverse, or hyst_f32_init_inverse for Y of class single)
+%   hyst_f64_init_inverse_exact, or hyst_f32_init_inverse_exact for Y of class single)
 %   over Y, from (f0(lo), lo). HYST_SIM(MODEL, X) gives Y back (within the
 %   rounding of the inverse); a desired output outside [f0(lo), f0(hi)] is
 %   clamped (STATUS 1). For the asymmetric kind (a struct of kind 'everett',

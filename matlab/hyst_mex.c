@@ -187,7 +187,7 @@ typedef struct model_arg {
             }                                                                               \
             return st != HYST_OK ? st : hyst_##P##_init_curve(S, curve, xl, yl, xr, yr, cap); \
         }                                                                                   \
-        return m->inverse ? hyst_##P##_init_inverse(S, curve, &m->f0, xl, yl, xr, yr, cap)  \
+        return m->inverse ? hyst_##P##_init_inverse_exact(S, curve, &m->f0, xl, yl, xr, yr, cap)  \
                           : hyst_##P##_init(S, &m->f0, xl, yl, xr, yr, cap);                \
     }
 DEFINE_INIT(f64, double)

@@ -499,8 +499,10 @@ static int book_is_valid(const hyst_tcm_t *S, const format_t *f, const unsigned 
     book->db_reach = wide_of(&v, f->xt);
     ok &= get_num(p + 4u + f->r + f->x, &v, f->yt);
     book->db_err = wide_of(&v, f->yt);
+    /* a bound with no merge alive: the output still held after the input
+     * left the merged loops (tcm_engine.h, TCM_SETTLING) */
     return ok && (level == NO_LEVEL || level <= (unsigned long)depth) &&
-           (level != NO_LEVEL || book->forgot == 0) && hyst_wide_is_finite(book->forgot) &&
+           hyst_wide_is_finite(book->forgot) &&
            book->forgot >= 0 && book->forgot <= height * (hyst_wide_t)(depth + 1u) &&
            hyst_wide_is_finite(book->db_reach) && book->db_reach >= 0 &&
            book->db_reach <= width && hyst_wide_is_finite(book->db_err) && book->db_err >= 0 &&

@@ -85,10 +85,20 @@ void hyst_barrier_(void);
  * accessor returns its last read). */
 #define HYST_READ_ATTEMPTS 4u
 
-/* S->horner while a request is pending: above every degree and above the
- * engine's unrolled Horner cases (1..8, src/num_ops.h), which a build with
- * HYST_MAX_DEGREE < 8 still compiles. */
-#define HYST_HORNER_REQUEST_ (HYST_MAX_DEGREE > 8 ? (unsigned)HYST_MAX_DEGREE + 1u : 9u)
+/* S->horner of the forward asymmetric kind of degree n: HYST_HORNER_ASYM_ + n,
+ * above every degree and above the engine's unrolled Horner cases (1..8,
+ * src/num_ops.h, which a build with HYST_MAX_DEGREE < 8 still compiles), so
+ * that its cases derive the branch's coefficients on a slow sample without
+ * a test (tcm_engine.h, emit()). */
+#define HYST_HORNER_ASYM_ (HYST_MAX_DEGREE > 8 ? (unsigned)HYST_MAX_DEGREE : 8u)
+
+/* ... and HYST_HORNER_ASYM_LINEAR_ + n when every coefficient of its branches
+ * is linear in the turning point (E at most linear in t, the identification's
+ * usual choice): a cheaper derivation. */
+#define HYST_HORNER_ASYM_LINEAR_ (HYST_HORNER_ASYM_ + (unsigned)HYST_EVERETT_MAX_DEGREE)
+
+/* S->horner while a request is pending: above all of those. */
+#define HYST_HORNER_REQUEST_ (HYST_HORNER_ASYM_LINEAR_ + (unsigned)HYST_EVERETT_MAX_DEGREE + 1u)
 
 /* S->degree (and S->horner) of the asymmetric kind's inverse: not a degree,
  * not a request; its branches are solved (tcm_engine.h, solve()). */

@@ -38,11 +38,13 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
  * case 0 (the jump table starts there) and its default (n >= 9), so that
  * the engine can route other values there. */
 #define NUM_HORNER_CASES_(a, u, acc)                                                         \
-    case 1: acc = a[0].NUM_F; break;                                                          \
-    case 2: acc = NUM_HORNER_(a, u, a[0].NUM_F, 1); break;                                    \
-    case 3: acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, a[0].NUM_F, 1), 2); break;              \
-    case 4: acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER_(a, u, a[0].NUM_F, 1), 2), 3); \
-        break;                                                                                \
+    case 1: acc = NUM_HORNER1_(a, u); break;                                                  \
+    case 2: acc = NUM_HORNER2_(a, u); break;                                                  \
+    case 3: acc = NUM_HORNER3_(a, u); break;                                                  \
+    case 4: acc = NUM_HORNER4_(a, u); break;                                                  \
+    NUM_HORNER_CASES_5_8_(a, u, acc)
+/* Its cases 5..8 (the engine writes 1..4 itself). */
+#define NUM_HORNER_CASES_5_8_(a, u, acc)                                                     \
     case 5: acc = NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4); break;                            \
     case 6: acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4), 5); break;      \
     case 7:                                                                                   \
@@ -60,8 +62,11 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
  * are at most HYST_MAX_DEGREE) and read a[0], not past the array. */
 #define NUM_HORNER_(a, u, acc_, k_) \
     (NUM_MUL(acc_, u) + (a)[(k_) < HYST_MAX_DEGREE ? (k_) : 0].NUM_F)
-#define NUM_HORNER4_(a, u) \
-    NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER_(a, u, (a)[0].NUM_F, 1), 2), 3)
+/* Degrees 1..4 (n coefficients). */
+#define NUM_HORNER1_(a, u) ((a)[0].NUM_F)
+#define NUM_HORNER2_(a, u) NUM_HORNER_(a, u, NUM_HORNER1_(a, u), 1)
+#define NUM_HORNER3_(a, u) NUM_HORNER_(a, u, NUM_HORNER2_(a, u), 2)
+#define NUM_HORNER4_(a, u) NUM_HORNER_(a, u, NUM_HORNER3_(a, u), 3)
 
 /* Horner's loop over a[0..n), any n >= 1: the rare degrees. */
 HYST_INLINE NUM_T NUM_NAME(horner_loop)(const hyst_num_t *a, unsigned n, NUM_T u)

@@ -78,6 +78,10 @@
                           * resets it (off the plain path, which never sees it) */
 #define TCM_PER_BRANCH 16u /* the branch's coefficients depend on its turning
                             * point (asymmetric kind): settle() derives them */
+#define TCM_SETTLING 32u /* the input left the merged loops, but the output may
+                          * still be held off the full model's branch by the
+                          * monotone guard: the merges' error stays stated
+                          * until it is back (finish_book()) */
 
 /* Evaluations of a branch by the asymmetric compensator's solve(), at most. */
 #define TCM_SOLVE_STEPS 48u
@@ -204,8 +208,8 @@ HYST_INLINE TCM_Y TCM_NAME(branch_g)(const hyst_tcm_t *S, TCM_X x)
 /* The asymmetric kind's G coefficients at `anchor` from a table of the
  * curve (curve.h): coef[i], of w^(n - i), is row i (i + 1 entries), a
  * polynomial in the anchor, by Horner's rule. */
-static void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
-                                  hyst_num_t *coef)
+HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
+                                       hyst_num_t *coef)
 {
     /* rows start at i (i + 1) / 2; unrolled (n <= HYST_EVERETT_MAX_DEGREE = 4,
      * the curve's check): a slow sample derives them */
@@ -219,6 +223,36 @@ static void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y ancho
     case 1u: YV(coef[0]) = YV(row[0]); /* fall through */
     default: break;
     }
+}
+
+/* table_coefs() of a table whose rows are at most linear in the anchor
+ * (linear_anchor()): the same numbers (the zero terms add exact zeros),
+ * fewer operations. */
+HYST_INLINE void TCM_NAME(table_coefs_linear)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
+                                              hyst_num_t *coef)
+{
+    switch (n) {
+    case 4u: YV(coef[3]) = YV(row[8]) * anchor + YV(row[9]); /* fall through */
+    case 3u: YV(coef[2]) = YV(row[4]) * anchor + YV(row[5]); /* fall through */
+    case 2u: YV(coef[1]) = YV(row[1]) * anchor + YV(row[2]); /* fall through */
+    case 1u: YV(coef[0]) = YV(row[0]); /* fall through */
+    default: break;
+    }
+}
+
+/* Whether the rows of both tables of an everett curve are at most linear in
+ * the anchor: entry j of row k multiplies anchor^(k - j). */
+static int TCM_NAME(linear_anchor)(const hyst_curve_t *c)
+{
+    unsigned k, j, at = 0u;
+    for (k = 0u; k < (unsigned)HYST_EVERETT_MAX_DEGREE; ++k) {
+        for (j = 0u; j <= k; ++j, ++at) {
+            if (j + 2u <= k && (YV(c->u.everett.rise[at]) != 0 || YV(c->u.everett.fall[at]) != 0)) {
+                return 0;
+            }
+        }
+    }
+    return 1;
 }
 
 /* E(a, b), a >= b: g(a - b) for the symmetric kinds; the asymmetric
@@ -319,14 +353,51 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const in
     return y;
 }
 
+/* What a slow sample's emit() derives first (a constant per call site):
+ * nothing (the branch is cached), or for the asymmetric kinds the new
+ * branch's coefficients, rising or falling. */
+#define TCM_KEEP 0
+#define TCM_DERIVE_RISE 1
+#define TCM_DERIVE_FALL 2
+
+/* The forward asymmetric kind's anchor: the current TP's input, 0..1 over
+ * the domain. */
+HYST_INLINE TCM_Y TCM_NAME(input_anchor)(const hyst_tcm_t *S)
+{
+    return (YV(S->x_ctp) - TCM_R(XV(S->lo))) * YV(S->unit);
+}
+
+static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S);
+
+/* The case of emit()'s switch for the forward asymmetric kind of degree n
+ * (HYST_HORNER_ASYM_ + n): a slow sample's `derive` first derives the
+ * branch's coefficients, the degree a constant, so that Horner's rule takes
+ * them from registers (the worst sample, a wipe-out at Nu = 4096, within
+ * its budget); the fast path evaluates the cached ones. */
+#define TCM_ASYM_CASE_(base, coefs, n)                                                      \
+    case base + n##u:                                                                       \
+        if (derive != TCM_KEEP) {                                                           \
+            TCM_NAME(coefs)(derive == TCM_DERIVE_RISE ? S->curve->u.everett.rise            \
+                                                      : S->curve->u.everett.fall,           \
+                            n##u, TCM_NAME(input_anchor)(S), S->coef);                      \
+        }                                                                                   \
+        acc = NUM_HORNER##n##_(S->coef, u);                                                 \
+        break
+#define TCM_ASYM_CASES_(base, coefs)  \
+    TCM_ASYM_CASE_(base, coefs, 1);   \
+    TCM_ASYM_CASE_(base, coefs, 2);   \
+    TCM_ASYM_CASE_(base, coefs, 3);   \
+    TCM_ASYM_CASE_(base, coefs, 4)
+
 /* The end of a sample on a polynomial branch: its output, stored as y_prev
  * (and as the moving window end on the fast path). Degrees up to 8 inline;
- * every other value of S->horner (degree 9 and up, or a pending request:
- * HYST_HORNER_REQUEST_) leaves by a tail call, so a request costs the
+ * the forward asymmetric kind's cases above them; every other value of
+ * S->horner (degree 9 and up, or a pending request: HYST_HORNER_REQUEST_)
+ * leaves by a tail call, so a request costs the
  * per-sample paths nothing (the jump table's range check was there anyway)
  * and the fast path
- * needs no stack frame. how: TCM_FAST, TCM_ROSE, TCM_FELL. */
-HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
+ * needs no stack frame. how: TCM_FAST, TCM_ROSE, TCM_FELL; derive: above. */
+HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const int derive)
 {
     TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
     TCM_Y acc, g, y;
@@ -339,13 +410,35 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
         u = NUM_G_ONE;
         break;
     NUM_HORNER_CASES_(S->coef, u, acc);
-    case HYST_HORNER_SOLVE_: return TCM_NAME(emit_solved)(S, x, how);
-    default: return TCM_NAME(emit_rare)(S, x, how);
+    TCM_ASYM_CASES_(HYST_HORNER_ASYM_, table_coefs);
+    TCM_ASYM_CASES_(HYST_HORNER_ASYM_LINEAR_, table_coefs_linear);
+    case HYST_HORNER_SOLVE_:
+        if (derive != TCM_KEEP) {
+            TCM_NAME(derive)(S);
+        }
+        return TCM_NAME(emit_solved)(S, x, how);
+    default: /* a pending request, or degree 9 and up */
+        if (derive != TCM_KEEP && (S->detour & TCM_PER_BRANCH) != 0u) {
+            TCM_NAME(derive)(S);
+        }
+        return TCM_NAME(emit_rare)(S, x, how);
     }
     g = NUM_MUL_G(acc, u);
     y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
     YV(S->y_prev) = y;
     return y;
+}
+
+/* S->horner with no request pending: the degree, or the forward asymmetric
+ * kind's own case (HYST_HORNER_ASYM_ or, its tables linear in the anchor,
+ * HYST_HORNER_ASYM_LINEAR_, plus the degree). Off the per-sample paths. */
+static unsigned TCM_NAME(idle_horner)(const hyst_tcm_t *S)
+{
+    if (S->curve == NULL || S->curve->kind != (unsigned)HYST_CURVE_EVERETT) {
+        return S->degree;
+    }
+    return (TCM_NAME(linear_anchor)(S->curve) ? HYST_HORNER_ASYM_LINEAR_ : HYST_HORNER_ASYM_) +
+           S->degree;
 }
 
 /* Derives S->detour from the state it summarises; called wherever that
@@ -358,6 +451,8 @@ static void TCM_NAME(set_detour)(hyst_tcm_t *S)
                 (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
                 (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u) |
                 (S->status != HYST_OK ? TCM_STALE : 0u) |
+                (S->forgot_level == TCM_NO_LEVEL && YV(S->forgot) != 0 ? TCM_SETTLING | TCM_BOOK
+                                                                       : 0u) |
                 (S->curve != NULL && (S->curve->kind == (unsigned)HYST_CURVE_EVERETT ||
                                       S->curve->kind == (unsigned)HYST_CURVE_EVERETT_INV)
                      ? TCM_PER_BRANCH
@@ -384,13 +479,14 @@ HYST_INLINE void TCM_NAME(settle_rising)(hyst_tcm_t *S, TCM_X x, size_t top, siz
     S->moving_end = 0u;
 }
 
-/* The same for a falling branch from RTP `top` (n_rtp - 1), nl LTPs. */
-HYST_INLINE void TCM_NAME(settle_falling)(hyst_tcm_t *S, TCM_X x, size_t nl, size_t top)
+/* The same for a falling branch from RTP `top` (n_rtp - 1); the LTP
+ * below it has the same index (n_ltp == n_rtp on a falling branch). */
+HYST_INLINE void TCM_NAME(settle_falling)(hyst_tcm_t *S, TCM_X x, size_t top)
 {
     YV(S->x_ctp) = TCM_R(XV(S->xrtp)[top]);
     YV(S->y_ctp) = YV(S->yrtp)[top];
     YV(S->u_scale) = -YV(S->unit);
-    XV(S->window[0]) = (XV(S->xltp) + nl)[-1];
+    XV(S->window[0]) = XV(S->xltp)[top];
     XV(S->window[1]) = x;
     S->moving_end = 1u;
 }
@@ -422,7 +518,7 @@ static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S)
     const hyst_curve_t *c = S->curve;
     const TCM_Y anchor = S->degree == HYST_HORNER_SOLVE_
                              ? (YV(S->y_ctp) - YV(S->y_lo)) * YV(c->u.everett.inv_span)
-                             : (YV(S->x_ctp) - TCM_R(XV(S->lo))) * YV(S->unit);
+                             : TCM_NAME(input_anchor)(S);
     const unsigned n = c->u.everett.degree;
     TCM_NAME(table_coefs)(S->moving_end == 0u ? c->u.everett.rise : c->u.everett.fall, n,
                           anchor, S->coef);
@@ -452,7 +548,7 @@ static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x)
     if (S->n_ltp > S->n_rtp) {
         TCM_NAME(settle_rising)(S, x, S->n_ltp - 1u, S->n_rtp);
     } else {
-        TCM_NAME(settle_falling)(S, x, S->n_ltp, S->n_rtp - 1u);
+        TCM_NAME(settle_falling)(S, x, S->n_rtp - 1u);
     }
     if ((S->detour & TCM_PER_BRANCH) != 0u) {
         TCM_NAME(derive)(S);
@@ -534,7 +630,7 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
                 : curve->kind == (unsigned)HYST_CURVE_EVERETT     ? curve->u.everett.degree
                 : curve->kind == (unsigned)HYST_CURVE_EVERETT_INV ? HYST_HORNER_SOLVE_
                                                                   : 0u;
-    S->horner = S->degree;
+    S->horner = TCM_NAME(idle_horner)(S);
     YV(S->curv) = 0; /* solved branches: derive() */
     YV(S->w_end) = 0;
     YV(S->secant) = 0;
@@ -686,19 +782,21 @@ static void TCM_NAME(window_closed)(hyst_tcm_t *S)
     TCM_NAME(set_detour)(S);
 }
 
-/* The input left every merged loop: exact again, fast path back. Out of
- * line: off the worst path. */
+/* The input left every merged loop: the state is the full model's again,
+ * fast path back. The error bound stays until the output is on the full
+ * model's branch too (TCM_SETTLING): the monotone guard may hold the last
+ * output, which was within the bound. Out of line: off the worst path. */
 static TCM_NOINLINE void TCM_NAME(merges_left)(hyst_tcm_t *S)
 {
-    YV(S->forgot) = 0;
     S->forgot_level = TCM_NO_LEVEL;
     TCM_NAME(set_detour)(S);
 }
 
 /* After a wipe-out to stack depth `depth` (0: the input reached lo or hi,
  * which sets every past state): a merge whose outer TP is gone no longer
- * matters (the input left its loop), so the error bound drops to 0 once the
- * shallowest one is gone. */
+ * matters (the input left its loop), so the state is exact again once the
+ * shallowest one is gone (and the error bound drops to 0 once the output
+ * is, finish_book()). */
 static void TCM_NAME(wiped)(hyst_tcm_t *S, size_t depth)
 {
     if (depth <= S->forgot_level && S->forgot_level != TCM_NO_LEVEL) {
@@ -825,7 +923,7 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
  * before a step applies once. */
 static TCM_NOINLINE void TCM_NAME(serve)(hyst_tcm_t *S)
 {
-    S->horner = S->degree;
+    S->horner = TCM_NAME(idle_horner)(S);
     if (S->req_deadband != S->done_deadband) {
         S->done_deadband = S->req_deadband;
         XV(S->deadband) = XV(S->req_width);
@@ -850,7 +948,9 @@ static TCM_NOINLINE void TCM_NAME(serve)(hyst_tcm_t *S)
  * never moves y away from it: |y - y_full| <= error_bound still holds. */
 static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x, int how)
 {
-    TCM_Y y = TCM_NAME(branch_y)(S, x);
+    TCM_Y y;
+    YV(S->g_prev) = TCM_NAME(branch_g)(S, x); /* for finish_book() */
+    y = TCM_NAME(on_branch)(S, YV(S->g_prev));
     if (S->forgot_level != TCM_NO_LEVEL) {
         if (y > YV(S->y_hi)) {
             y = YV(S->y_hi);
@@ -865,6 +965,25 @@ static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x, int how)
     return y;
 }
 
+/* finish() of a sample that reached lo or hi, for the asymmetric kinds
+ * (not TCM_SLOW_ONLY): back on the major rising branch from A0, derived and
+ * evaluated at once (how: a constant per call site). */
+HYST_INLINE TCM_Y TCM_NAME(finish_edge_derived)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    TCM_Y y;
+    TCM_NAME(settle_rising)(S, x, 0u, 0u);
+    y = TCM_NAME(emit)(S, x, how, TCM_DERIVE_RISE);
+    TCM_NAME(ended_not_ok)(S);
+    return y;
+}
+
+/* Its two directions, out of line: step_edge() keeps no stack frame. */
+static TCM_NOINLINE TCM_Y TCM_NAME(edge_derived)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
+{
+    return x > x_prev ? TCM_NAME(finish_edge_derived)(S, x, TCM_ROSE)
+                      : TCM_NAME(finish_edge_derived)(S, x, TCM_FELL);
+}
+
 /* Ends a slow sample whose input rose or fell (how: TCM_ROSE, TCM_FELL):
  * caches the branch now current and evaluates it. A status other than OK
  * closes the fast path for the next sample. */
@@ -873,15 +992,39 @@ static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x, int how)
     TCM_Y y;
     TCM_NAME(settle)(S, x);
     if ((S->detour & TCM_SLOW_ONLY) == 0u) {
-        y = TCM_NAME(emit)(S, x, how); /* serves a pending request */
+        y = TCM_NAME(emit)(S, x, how, TCM_KEEP); /* serves a pending request */
     } else {
         y = TCM_NAME(slow_only)(S, x, how);
         YV(S->y_prev) = y;
-        if (S->horner != S->degree) { /* emit() serves the other curves' requests */
+        if (S->horner == HYST_HORNER_REQUEST_) { /* emit() serves the other curves' requests */
             TCM_NAME(serve)(S);
         }
     }
     TCM_NAME(ended_not_ok)(S);
+    return y;
+}
+
+/* TCM_SETTLING: the sample's output y back on the full model's branch ends
+ * the merges' error bound; held off it by the monotone guard (the
+ * deviation then at most the bound: the full model moved on in the input's
+ * direction), the bound stays and the next sample is slow again. */
+static TCM_NOINLINE void TCM_NAME(settle_bound)(hyst_tcm_t *S, TCM_Y y)
+{
+    if (y == TCM_NAME(on_branch)(S, YV(S->g_prev))) {
+        YV(S->forgot) = 0;
+        TCM_NAME(set_detour)(S);
+    } else {
+        TCM_NAME(close_window)(S);
+    }
+}
+
+/* finish() on the paths with bookkeeping (TCM_BOOK). */
+static TCM_Y TCM_NAME(finish_book)(hyst_tcm_t *S, TCM_X x, int how)
+{
+    const TCM_Y y = TCM_NAME(finish)(S, x, how);
+    if ((S->detour & TCM_SETTLING) != 0u) {
+        TCM_NAME(settle_bound)(S, y);
+    }
     return y;
 }
 
@@ -901,7 +1044,14 @@ static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
     }
     S->n_ltp = 1u;
     S->n_rtp = 0u;
-    TCM_NAME(wiped)(S, 0u);
+    if ((S->detour & TCM_BOOK) != 0u) { /* a merge or an excursion was alive */
+        TCM_NAME(wiped)(S, 0u);
+        return TCM_NAME(finish_book)(S, x, x > x_prev ? TCM_ROSE : TCM_FELL);
+    }
+    if ((S->detour & (TCM_SLOW_ONLY | TCM_PER_BRANCH)) == TCM_PER_BRANCH) {
+        /* the asymmetric kinds: on the major rising branch from A0 */
+        return TCM_NAME(edge_derived)(S, x, x_prev);
+    }
     return TCM_NAME(finish)(S, x, x > x_prev ? TCM_ROSE : TCM_FELL);
 }
 
@@ -929,7 +1079,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_p
         S->n_rtp = nr;
         TCM_NAME(window_closed)(S);
     }
-    return TCM_NAME(finish)(S, x, TCM_ROSE);
+    return TCM_NAME(finish_book)(S, x, TCM_ROSE);
 }
 
 /* Reversal on a rising branch without a wipe-out, with a detour:
@@ -947,7 +1097,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_down)(hyst_tcm_t *S, TCM_X x, TCM_X x
         S->n_rtp = nr + 1u;
         TCM_NAME(window_closed)(S);
     }
-    return TCM_NAME(finish)(S, x, TCM_FELL);
+    return TCM_NAME(finish_book)(S, x, TCM_FELL);
 }
 
 /* A wipe-out down to stack depth `depth` with a detour: bookkeeping, then
@@ -956,14 +1106,14 @@ static TCM_NOINLINE TCM_Y TCM_NAME(wiped_detour)(hyst_tcm_t *S, TCM_X x, size_t 
 {
     TCM_NAME(fresh)(S);
     TCM_NAME(wiped)(S, depth);
-    return TCM_NAME(finish)(S, x, how);
+    return TCM_NAME(finish_book)(S, x, how);
 }
 
 /* A slow sample that stays on its branch (the window was closed). */
 static TCM_NOINLINE TCM_Y TCM_NAME(carry_on)(hyst_tcm_t *S, TCM_X x, int how)
 {
     TCM_NAME(fresh)(S);
-    return TCM_NAME(finish)(S, x, how);
+    return TCM_NAME(finish_book)(S, x, how);
 }
 
 /* Everything but the fast path, for an input strictly inside (lo, hi):
@@ -1008,11 +1158,9 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
             return nl == nr ? TCM_NAME(reverse_up)(S, x, x_prev) : TCM_NAME(carry_on)(S, x, TCM_ROSE);
         }
         TCM_NAME(settle_rising)(S, x, nl, nr);
-        if ((S->detour & TCM_PER_BRANCH) != 0u) { /* the asymmetric kinds: a new branch's shape */
-            TCM_NAME(derive)(S);
-        }
-        /* one emit per direction: its guard's direction is then a constant */
-        return TCM_NAME(emit)(S, x, TCM_ROSE);
+        /* one emit per direction: its guard's direction is then a constant
+         * (and the asymmetric kinds derive the new branch's shape in it) */
+        return TCM_NAME(emit)(S, x, TCM_ROSE, TCM_DERIVE_RISE);
     } else if (x_in < x_prev) {
         if (!(x_in > XV(S->lo))) {
             return TCM_NAME(step_edge)(S, x_in);
@@ -1037,17 +1185,14 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
         } else {
             return nl > nr ? TCM_NAME(reverse_down)(S, x, x_prev) : TCM_NAME(carry_on)(S, x, TCM_FELL);
         }
-        TCM_NAME(settle_falling)(S, x, nl, nr);
-        if ((S->detour & TCM_PER_BRANCH) != 0u) {
-            TCM_NAME(derive)(S);
-        }
-        return TCM_NAME(emit)(S, x, TCM_FELL);
+        TCM_NAME(settle_falling)(S, x, nr);
+        return TCM_NAME(emit)(S, x, TCM_FELL, TCM_DERIVE_FALL);
     }
     /* Always true for integer codes; false for a NaN real input: */
     /* cppcheck-suppress knownConditionTrueFalse */
     else if (x_in == x_prev) { /* repeated samples create no TP */
         TCM_NAME(fresh)(S);
-        if (S->horner != S->degree) {
+        if (S->horner == HYST_HORNER_REQUEST_) {
             return TCM_NAME(emit_rare)(S, x_prev, TCM_REPEAT);
         }
         return YV(S->y_prev); /* a closed window stays closed: the next move reopens it */
@@ -1069,7 +1214,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
         y = TCM_NAME(slow_guard)(S, TCM_NAME(branch_g)(S, x), how);
     }
     YV(S->y_prev) = y;
-    if (S->horner != S->degree) {
+    if (S->horner == HYST_HORNER_REQUEST_) {
         TCM_NAME(serve)(S);
     }
     return y;
@@ -1092,7 +1237,7 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
     if (!(x > XV(S->window[0]) && x < XV(S->window[1]))) {
         return TCM_NAME(step_slow)(S, x);
     }
-    return TCM_NAME(emit)(S, (TCM_X)x, TCM_FAST); /* the window is empty for other curve kinds */
+    return TCM_NAME(emit)(S, (TCM_X)x, TCM_FAST, TCM_KEEP); /* the window is empty for other curve kinds */
 }
 
 /* G at u guarded as fast_end() does: never below the last sample's. */
@@ -1118,12 +1263,11 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
     const size_t first = i;
     const TCM_Y x_ctp = YV(S->x_ctp), y_ctp = YV(S->y_ctp);
     const TCM_Y u_scale = YV(S->u_scale);
-    const unsigned deg = S->horner;
+    const unsigned deg = S->degree;
     TCM_X w0 = XV(S->window[0]), w1 = XV(S->window[1]);
     TCM_Y g_prev = YV(S->g_prev);
-    if (deg != S->degree || deg == HYST_HORNER_SOLVE_) { /* a pending request: step_slow()
-                                                           * serves it; solved: step by step */
-        return i;
+    if (S->horner == HYST_HORNER_REQUEST_ || deg == HYST_HORNER_SOLVE_) {
+        return i; /* a pending request: step_slow() serves it; solved: step by step */
     }
     /* One loop per direction: a selected update of w0 or w1 in one loop put
      * a select on the loop-carried compare (measured 0.41 vs 0.36 of

@@ -117,9 +117,10 @@ static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(init_inverse_)(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
-                                      NUM_T *xltp, NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp,
-                                      size_t capacity, unsigned long layout)
+hyst_status_t NUM_NAME(init_inverse_exact_)(hyst_tcm_t *S, hyst_curve_t *inv,
+                                            const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
+                                            NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
+                                            unsigned long layout)
 {
     return NUM_NAME(init_inverse_of)(S, inv, f0, 0, NULL, 0u, xltp, yltp, xrtp, yrtp, capacity,
                                      layout);

@@ -12,6 +12,12 @@ set(HYST_BUDGET_WORST_INSNS 150)   # any sample at Nu = 4096 (paper: ~420 DSP cy
 # The compensator (HYST_INIT_INVERSE: the tabulated inverse of Eq. 20).
 set(HYST_BUDGET_INV_TYPICAL_INSNS 50)
 set(HYST_BUDGET_INV_WORST_INSNS 160)
+# The asymmetric kind (HYST_CURVE_EVERETT: Eq. 20 as an Everett function of
+# degree 3 with a term in the loop's lower end) on the same trajectory: a
+# slow sample derives the new branch's coefficients (measured: typical 38,
+# worst 157; E of degree 4: docs/timing.md).
+set(HYST_BUDGET_EVERETT_TYPICAL_INSNS 40)
+set(HYST_BUDGET_EVERETT_WORST_INSNS 160)
 # The q31 variant on the Cortex-M3 without an FPU (hyst/q31.h): the same
 # trajectory at Nu = 4096 (measured: typical 46, worst 148).
 set(HYST_BUDGET_Q31_TYPICAL_INSNS 60)
@@ -48,6 +54,10 @@ if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
             set_tests_properties(${test_name} PROPERTIES TIMEOUT 900)
         endif()
     endforeach()
+    if(TARGET bench_budget_everett)
+        hyst_budget_test(everett_budget ${HYST_BUDGET_EVERETT_TYPICAL_INSNS}
+                         ${HYST_BUDGET_EVERETT_WORST_INSNS} --elf $<TARGET_FILE:bench_budget_everett> --no-pi)
+    endif()
 endif()
 if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an385" AND TARGET bench_q31)
     hyst_budget_test(q31_budget ${HYST_BUDGET_Q31_TYPICAL_INSNS} ${HYST_BUDGET_Q31_WORST_INSNS}

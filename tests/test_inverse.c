@@ -388,21 +388,21 @@ static void test_poly_inverse_is_involutive(void)
 static void test_init_inverse_checks(void)
 {
     hyst_poly_t f = paper_eq20;
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(NULL, &Cinv, &f, il, jl, ir, jr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(&Hinv, &Cinv, NULL, il, jl, ir, jr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse(&Hinv, &Cinv, &f, il, jl, NULL, jr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_CAPACITY, hyst_init_inverse(&Hinv, &Cinv, &f, il, jl, ir, jr, 1u));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse_exact(NULL, &Cinv, &f, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse_exact(&Hinv, &Cinv, NULL, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse_exact(&Hinv, &Cinv, &f, il, jl, NULL, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CAPACITY, hyst_init_inverse_exact(&Hinv, &Cinv, &f, il, jl, ir, jr, 1u));
     {   /* a curve error is reported before an instance error: this f0's slope
          * underflows in float, so its inverse does not exist there */
         static const hyst_poly_t flat32 = {1u, 0.0, 1.0, {1e-300, 0.0}};
         static float fl[4][CAP];
         hyst_curve_t keep;
         TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_INVERTIBLE,
-                              hyst_f32_init_inverse(&Hinv, &keep, &flat32, fl[0], fl[1], fl[2], fl[3], 1u));
+                              hyst_f32_init_inverse_exact(&Hinv, &keep, &flat32, fl[0], fl[1], fl[2], fl[3], 1u));
     }
     f.coeffs[0] = HYST_REAL_C(-1.0); /* -x^3 + ...: falls on [0, 40] */
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_INCREASING, hyst_init_inverse(&Hinv, &Cinv, &f, il, jl, ir, jr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, &paper_eq20, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_INCREASING, hyst_init_inverse_exact(&Hinv, &Cinv, &f, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_exact(&Hinv, &Cinv, &paper_eq20, il, jl, ir, jr, CAP));
     TEST_ASSERT_EQUAL_FLOAT(0.0f, (float)hyst_output(&Hinv));
     TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.58517f, (float)hyst_input(&Hinv));
 }
@@ -410,7 +410,7 @@ static void test_init_inverse_checks(void)
 /* Desired outputs beyond [f0(lo), f0(hi)]: clamped, reported, drive at the ends. */
 static void test_out_of_range_desired_output_is_clamped(void)
 {
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, &paper_eq20, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_exact(&Hinv, &Cinv, &paper_eq20, il, jl, ir, jr, CAP));
     TEST_ASSERT_EQUAL_FLOAT(40.0f, (float)hyst_step(&Hinv, HYST_REAL_C(7.0)));
     TEST_ASSERT_EQUAL_INT(HYST_WARN_CLAMPED, hyst_status(&Hinv));
     TEST_ASSERT_EQUAL_UINT(HYST_EVENT_CLAMPED, hyst_events(&Hinv));
@@ -455,7 +455,7 @@ static void test_drive_stays_in_range_after_a_merge(void)
                                      HYST_REAL_C(0.043137254901960853)};
     unsigned i;
     int full = 0;
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, &cubic, il, jl, ir, jr, 2u));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_exact(&Hinv, &Cinv, &cubic, il, jl, ir, jr, 2u));
     for (i = 0u; i < sizeof yd / sizeof yd[0]; ++i) {
         const hyst_real_t x = drive_in_range(yd[i]);
         full |= hyst_status(&Hinv) == HYST_WARN_FULL;
@@ -475,7 +475,7 @@ static void test_drive_stays_in_range_with_small_memory(void)
     for (cap = 2u; cap <= 4u; ++cap) {
         long i;
         hyst_real_t yd = 0;
-        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, &cubic, il, jl, ir, jr, cap));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_exact(&Hinv, &Cinv, &cubic, il, jl, ir, jr, cap));
         for (i = 0; i < 200000L; ++i) {
             if (rng_below(&rng, 4u) == 0u) {
                 yd = (hyst_real_t)rng_range(&rng, -1.0, 1.0);
@@ -540,7 +540,7 @@ static void flat_pass(const hyst_poly_t *f0, double y_flat, int rising, double *
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&fwd, f0));
     range = (double)fwd.y_hi.HYST_R - (double)fwd.y_lo.HYST_R;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&H, &fwd, xl, yl, xr, yr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&Hinv, &Cinv, f0, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_exact(&Hinv, &Cinv, f0, il, jl, ir, jr, CAP));
     if (!rising) { /* to the top first: the falling pass starts at hi */
         (void)hyst_step(&H, hyst_step(&Hinv, fwd.y_hi.HYST_R));
     }

@@ -187,7 +187,7 @@ static void init_pair(const hyst_poly_t *f0)
 {
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_table(&H, &inv, f0, table, HYST_INV_TABLE,
                                                            xl, yl, xr, yr, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&K, &inv2, f0, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_exact(&K, &inv2, f0, il, jl, ir, jr, CAP));
 }
 
 /* Long sweeps up and down the whole range, and a random signal: the drive
@@ -287,7 +287,7 @@ static void test_snapshot_round_trip(void)
                                                            HYST_INV_TABLE / 2u, il, jl, ir, jr,
                                                            CAP));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&K, buf, len));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse(&K, &inv2, &paper_eq20, il, jl, ir, jr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_exact(&K, &inv2, &paper_eq20, il, jl, ir, jr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&K, buf, len));
 }
 

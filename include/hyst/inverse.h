@@ -31,7 +31,8 @@ extern "C" {
 /**
  * @name Compensator of a polynomial model, exact
  * @brief Initialises @p S as the inverse of the TCM with the polynomial @p f0,
- *        evaluated exactly (the reference: tests, host tools).
+ *        evaluated exactly (the reference: tests, host tools; the firmware's
+ *        compensator is the tabulated one below).
  *
  * hyst_*_curve_from_poly() and hyst_curve_inverse() into @p inv (caller
  * storage that must outlive the instance), then hyst_*_init_curve(), in this
@@ -45,21 +46,23 @@ extern "C" {
  *         HYST_ERR_OVERLAP, a curve error or HYST_ERR_NOT_INVERTIBLE.
  */
 /**@{*/
-hyst_status_t hyst_f32_init_inverse_(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
-                                     float *xltp, float *yltp, float *xrtp, float *yrtp,
-                                     size_t capacity, unsigned long layout);
-#define hyst_f32_init_inverse(S, inv, f0, xltp, yltp, xrtp, yrtp, capacity)                 \
-    hyst_f32_init_inverse_((S), (inv), (f0), (xltp), (yltp), (xrtp), (yrtp), (capacity),    \
-                           HYST_LAYOUT)
+hyst_status_t hyst_f32_init_inverse_exact_(hyst_tcm_t *S, hyst_curve_t *inv,
+                                           const hyst_poly_t *f0, float *xltp, float *yltp,
+                                           float *xrtp, float *yrtp, size_t capacity,
+                                           unsigned long layout);
+#define hyst_f32_init_inverse_exact(S, inv, f0, xltp, yltp, xrtp, yrtp, capacity)              \
+    hyst_f32_init_inverse_exact_((S), (inv), (f0), (xltp), (yltp), (xrtp), (yrtp), (capacity), \
+                                 HYST_LAYOUT)
 #if HYST_ENABLE_F64
-hyst_status_t hyst_f64_init_inverse_(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
-                                     double *xltp, double *yltp, double *xrtp, double *yrtp,
-                                     size_t capacity, unsigned long layout);
-#define hyst_f64_init_inverse(S, inv, f0, xltp, yltp, xrtp, yrtp, capacity)                 \
-    hyst_f64_init_inverse_((S), (inv), (f0), (xltp), (yltp), (xrtp), (yrtp), (capacity),    \
-                           HYST_LAYOUT)
+hyst_status_t hyst_f64_init_inverse_exact_(hyst_tcm_t *S, hyst_curve_t *inv,
+                                           const hyst_poly_t *f0, double *xltp, double *yltp,
+                                           double *xrtp, double *yrtp, size_t capacity,
+                                           unsigned long layout);
+#define hyst_f64_init_inverse_exact(S, inv, f0, xltp, yltp, xrtp, yrtp, capacity)              \
+    hyst_f64_init_inverse_exact_((S), (inv), (f0), (xltp), (yltp), (xrtp), (yrtp), (capacity), \
+                                 HYST_LAYOUT)
 #endif
-#define hyst_init_inverse HYST_DEFAULT_NAME_(init_inverse)
+#define hyst_init_inverse_exact HYST_DEFAULT_NAME_(init_inverse_exact)
 /**@}*/
 
 /**
@@ -111,11 +114,11 @@ hyst_status_t hyst_f64_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
     HYST_DEFAULT_NAME_(init_inverse_table_)(&(name), &name##_curve, (f0), name##_table,   \
                                             HYST_INV_TABLE, HYST_ARRAYS_(name), HYST_LAYOUT)
 
-/** The exact compensator (hyst_init_inverse()) on an instance declared by
+/** The exact compensator (hyst_init_inverse_exact()) on an instance declared by
  *  HYST_DEFINE_INVERSE() (its table unused). */
-#define HYST_INIT_INVERSE_EXACT(name, f0) \
-    HYST_DEFAULT_NAME_(init_inverse_)(&(name), &name##_curve, (f0), HYST_ARRAYS_(name), \
-                                      HYST_LAYOUT)
+#define HYST_INIT_INVERSE_EXACT(name, f0)                                                   \
+    HYST_DEFAULT_NAME_(init_inverse_exact_)(&(name), &name##_curve, (f0),                   \
+                                            HYST_ARRAYS_(name), HYST_LAYOUT)
 
 #ifdef __cplusplus
 }

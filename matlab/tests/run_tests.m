@@ -139,7 +139,7 @@ function t_sim_f32_bitexact(ctx)
 end
 
 function t_inv_bitexact(ctx)
-  % the compensator: hyst_*_init_inverse, bit for bit
+  % the compensator: hyst_*_init_inverse_exact, bit for bit
   m = paper_f0();
   lo = polyval(m.coeffs, m.lo);
   hi = polyval(m.coeffs, m.hi);

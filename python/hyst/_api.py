@@ -232,9 +232,10 @@ def _shapes(kind, t_degree):
 def _select(x, y, kinds, method, lo, hi, skip, delays, t_degree=None):
     """Every candidate (kind, degree, t_degree, delay): fitted on the first
     two thirds, scored by its prediction of the last third; the fewest
-    parameters within PARSIMONY of the lowest error win (hyst fit's rule),
-    the lower error between candidates with as many parameters."""
-    cands, best = [], None
+    parameters within PARSIMONY of the lowest error win (hyst fit's rule);
+    between candidates with as many parameters the symmetric kind, then the
+    lower error."""
+    cands = []
     for d in delays:
         if len(x) <= skip + d:
             break
@@ -256,19 +257,22 @@ def _select(x, y, kinds, method, lo, hi, skip, delays, t_degree=None):
                         c["status"] = refusal
                 except HystError as e:
                     c["status"] = e.name
-                if math.isfinite(c["holdout_rms"]) and (
-                        best is None or c["holdout_rms"] < cands[best]["holdout_rms"]):
-                    best = len(cands)
                 cands.append(c)
-    if best is not None:
-        limit = cands[best]["holdout_rms"] * (1 + PARSIMONY)
-        for i, c in enumerate(cands):
-            b = cands[best]
-            if math.isfinite(c["holdout_rms"]) and c["holdout_rms"] <= limit and (
-                    c["params"] < b["params"] or
-                    (c["params"] == b["params"] and c["holdout_rms"] < b["holdout_rms"])):
-                best = i
-    return cands, best
+    return cands, _choose(cands)
+
+
+def _choose(cands):
+    """The index of the candidate hyst fit's rule picks (None if none was
+    scored): the fewest parameters within PARSIMONY of the lowest hold-out
+    error; between as many, the symmetric kind (its compensator is a table),
+    then the lower error."""
+    scored = [i for i, c in enumerate(cands) if math.isfinite(c["holdout_rms"])]
+    if not scored:
+        return None
+    limit = min(cands[i]["holdout_rms"] for i in scored) * (1 + PARSIMONY)
+    return min((i for i in scored if cands[i]["holdout_rms"] <= limit),
+               key=lambda i: (cands[i]["params"], cands[i]["kind"] != "poly",
+                              cands[i]["holdout_rms"], i))
 
 
 def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None, skip=0,

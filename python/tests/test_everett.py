@@ -212,8 +212,8 @@ def test_auto_choice_on_major_loops_of_a_symmetric_plant():
     """Major loops alone determine E linear in t, not E of t-degree 2 or 3:
     those candidates are reported singular. The plant's cubic f0 and E of
     degree 3 in w alone (t-degree 0) are the same major loop with as many
-    parameters (4): one of the two is chosen, by the lower hold-out, which
-    differs by rounding only."""
+    parameters (4), their hold-outs differing by rounding only: the
+    symmetric kind is chosen (its compensator is a table)."""
     coeffs = [0.02, 0.3, 1.0, 0.0]  # f0 on [0, 10], increasing
     x = 5.0 - 5.0 * np.cos(2 * np.pi * np.arange(6000) / 300)
     y = hyst.Model(coeffs, 0.0, 10.0).process(x)
@@ -221,13 +221,32 @@ def test_auto_choice_on_major_loops_of_a_symmetric_plant():
     f = hyst.fit(x, y, None, domain=(0.0, 10.0))
     chosen = [c for c in f.candidates if c["chosen"]][0]
     assert (f.degree, f.delay, chosen["params"]) == (3, 0, 4)
-    assert f.kind == "poly" or f.t_degree == 0
+    assert f.kind == "poly"
     rms = {(c["kind"], c["degree"], c["t_degree"]): c["holdout_rms"] for c in f.candidates
            if c["delay"] == 0}
     assert rms[("poly", 3, None)] == pytest.approx(rms[("everett", 3, 0)], rel=1e-6)
     for c in f.candidates:
         if c["kind"] == "everett":
             assert (c["status"] == "ERR_SINGULAR") == (c["t_degree"] >= 2), c
+
+
+def test_choice_rule_fewest_parameters_then_symmetric_then_lower_error():
+    from hyst._api import PARSIMONY, _choose
+
+    def cand(kind, params, rms):
+        return {"kind": kind, "params": params, "holdout_rms": rms}
+    best = 1.0
+    within = best * (1 + PARSIMONY / 2)
+    # the fewest parameters within the margin, whatever its kind
+    assert _choose([cand("poly", 5, best), cand("everett", 4, within)]) == 1
+    # as many parameters: the symmetric kind, even with the higher error
+    assert _choose([cand("everett", 4, best), cand("poly", 4, within)]) == 1
+    # outside the margin, fewer parameters do not win
+    assert _choose([cand("poly", 5, best), cand("poly", 4, best * (1 + 2 * PARSIMONY))]) == 0
+    # between equals of one kind, the lower error; unscored ones never
+    assert _choose([cand("everett", 6, within), cand("everett", 6, best),
+                    cand("poly", 2, float("nan"))]) == 1
+    assert _choose([cand("poly", 2, float("nan"))]) is None
 
 
 def test_major_loops_determine_e_linear_in_t():

@@ -3,7 +3,8 @@
 # The asymmetric kind (kind everett) in `hyst`:
 #  - fit without --kind on the measured record compares both kinds (E of
 #    each degree and t-degree), reports every candidate and chooses by the
-#    rule (the fewest parameters within 1 % of the lowest hold-out RMS); the
+#    rule (the fewest parameters within 1 % of the lowest hold-out RMS, the
+#    symmetric kind between as many); the
 #    asymmetric kind, linear in t, wins there;
 #  - a record made by a hand-written asymmetric model (delay 2, noise): fit
 #    chooses kind everett, degree 2, delay 2 and returns its terms;
@@ -38,9 +39,10 @@ awk '/^# candidate .*hold-out rms/ {
          if (ev) { if ($6 != "t-degree" || $8 != "delay") { print "columns: " $0; exit 1 }
                    p = 1; for (i = 1; i <= d; i++) p += (d - i < $7 ? d - i : $7) + 1 }
          else p = d + 1;
-         n++; P[n] = p; R[n] = rms + 0; C[n] = /\(chosen\)$/;
+         n++; P[n] = p; K[n] = ev; R[n] = rms + 0; C[n] = /\(chosen\)$/;
          if (best == "" || rms + 0 < best) best = rms + 0 }
-     END { for (i = 1; i <= n; i++) if (R[i] <= best * 1.01 && (w == "" || P[i] < P[w] || (P[i] == P[w] && R[i] < R[w]))) w = i;
+     END { for (i = 1; i <= n; i++) if (R[i] <= best * 1.01 && (w == "" || P[i] < P[w] ||
+               (P[i] == P[w] && (K[i] < K[w] || (K[i] == K[w] && R[i] < R[w]))))) w = i;
            if (!C[w]) { print "rule picks candidate " w; exit 1 } }' meas.txt || fail "the chosen candidate is not the rule's"
 # major loops alone determine E linear in t, not E of full degree 3
 grep -q '^# candidate everett degree 3 t-degree 2 delay 4: not scored (the record.s turning points do not determine E' meas.txt ||

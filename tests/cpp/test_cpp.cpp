@@ -53,7 +53,7 @@ int main()
     // curve.h, inverse.h
     check(hyst_f32_curve_from_poly(&curve, &f0) == HYST_OK, "curve");
     check(hyst_curve_inverse(&inv, &curve) == HYST_OK, "inverse curve");
-    check(hyst_f32_init_inverse(&comp, &inv, &f0, il, jl, ir, jr, 8) == HYST_OK, "compensator");
+    check(hyst_f32_init_inverse_exact(&comp, &inv, &f0, il, jl, ir, jr, 8) == HYST_OK, "compensator");
     check(hyst_f32_step(&comp, 3.0f) > 0.0f, "compensator step");
     // pi.h
     check(hyst_f32_pi_init(&pi, r, w, z, 3) == HYST_OK, "pi init");

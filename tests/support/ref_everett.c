@@ -71,7 +71,7 @@ double ref_everett_step(ref_everett_t *r, double x)
 hyst_everett_t ref_everett_random(rng_t *rng)
 {
     hyst_everett_t e;
-    unsigned i, j;
+    unsigned i, j, t_max;
     const double scale = rng_range(rng, 0.5, 20.0);
     memset(&e, 0, sizeof e);
     e.degree = 1u + rng_below(rng, (unsigned)HYST_EVERETT_MAX_DEGREE);
@@ -79,8 +79,11 @@ hyst_everett_t ref_everett_random(rng_t *rng)
     e.lo = (double)(float)rng_range(rng, -50.0, 50.0);
     e.hi = (double)(float)(e.lo + rng_range(rng, 1.0, 100.0));
     e.y_lo = rng_range(rng, -10.0, 10.0);
+    /* half of them at most linear in t, the identification's usual E (the
+     * engine derives their branches by a shorter path) */
+    t_max = rng_below(rng, 2u) == 0u ? 1u : e.degree;
     for (i = 1u; i <= e.degree; ++i) {
-        for (j = 0u; i + j <= e.degree; ++j) {
+        for (j = 0u; i + j <= e.degree && j <= t_max; ++j) {
             e.e[i - 1u][j] = scale * rng_range(rng, -1.5, 1.0) / (double)(i + j);
         }
     }

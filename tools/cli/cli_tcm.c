@@ -80,7 +80,7 @@ static hyst_status_t tcm_init(tcm_run_t *r, size_t cap)
     st = r->curve != NULL
              ? hyst_init_curve(&r->S, r->curve, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap)
          : r->inverse
-             ? hyst_init_inverse(&r->S, &r->inv, r->f0, mem, mem + cap, mem + 2u * cap,
+             ? hyst_init_inverse_exact(&r->S, &r->inv, r->f0, mem, mem + cap, mem + 2u * cap,
                                  mem + 3u * cap, cap)
              : hyst_init(&r->S, r->f0, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap);
     if (st != HYST_OK) {

@@ -6,7 +6,8 @@
  * third, which the fit never saw: a degree that fits noise predicts worse
  * there, so the criterion does not reward it. Of the candidates within
  * FIT_PARSIMONY of the lowest error, the one with the fewest parameters is
- * chosen: a gain below that is not worth a coefficient. The candidates are
+ * chosen: a gain below that is not worth a coefficient (between as many,
+ * the symmetric kind: its compensator costs less). The candidates are
  * of both kinds, the symmetric TCM's f0 and the asymmetric kind's E (each
  * degree with each power of t up to it: major loops determine E linear in
  * t, not E of full degree 3 or 4), scored alike. */
@@ -235,8 +236,12 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
             const fit_candidate_t *c = &cand[i], *b = &cand[*best];
             const unsigned pc = fit_parameters(c->kind, c->degree, c->t_degree);
             const unsigned pb = fit_parameters(b->kind, b->degree, b->t_degree);
+            /* between as many parameters: the symmetric kind (its
+             * compensator is a table), then the lower error */
+            const int sym_c = c->kind == FIT_POLY, sym_b = b->kind == FIT_POLY;
             if (isfinite(c->holdout_rms) && c->holdout_rms <= limit &&
-                (pc < pb || (pc == pb && c->holdout_rms < b->holdout_rms))) {
+                (pc < pb || (pc == pb && (sym_c > sym_b || (sym_c == sym_b &&
+                                                            c->holdout_rms < b->holdout_rms))))) {
                 *best = i;
             }
         }

@@ -93,8 +93,9 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
  * FIT_ANY_T_DEGREE, the only t-degree) at each delay from base->delay to
  * max_delay (base: method, domain, skip) into cand[0..max_cand); returns
  * the count, *best the index chosen: the fewest parameters within
- * FIT_PARSIMONY of the lowest hold-out RMS, the lower RMS between equals
- * ((size_t)-1: none could be scored). */
+ * FIT_PARSIMONY of the lowest hold-out RMS; between as many parameters the
+ * symmetric kind (its compensator is a table, the asymmetric kind's solves),
+ * then the lower RMS ((size_t)-1: none could be scored). */
 size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
                   unsigned t_degree, const double *x, const double *y, size_t n,
                   size_t max_delay, fit_candidate_t *cand, size_t max_cand, size_t *best);

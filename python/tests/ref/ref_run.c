@@ -157,7 +157,7 @@ static double now_ns(void)
             hyst_curve_t inv;                                                                \
             const hyst_poly_t f0 = poly();                                                   \
             st = strcmp(kind, "inv") == 0                                                    \
-                     ? hyst_##P##_init_inverse(&S, &inv, &f0, tp, tp + cap, tp + 2u * cap,   \
+                     ? hyst_##P##_init_inverse_exact(&S, &inv, &f0, tp, tp + cap, tp + 2u * cap,   \
                                                tp + 3u * cap, cap)                           \
                      : hyst_##P##_init(&S, &f0, tp, tp + cap, tp + 2u * cap, tp + 3u * cap,  \
                                        cap);                                                 \
