@@ -967,21 +967,14 @@ static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x, int how)
 
 /* finish() of a sample that reached lo or hi, for the asymmetric kinds
  * (not TCM_SLOW_ONLY): back on the major rising branch from A0, derived and
- * evaluated at once (how: a constant per call site). */
-HYST_INLINE TCM_Y TCM_NAME(finish_edge_derived)(hyst_tcm_t *S, TCM_X x, const int how)
+ * evaluated at once. Out of line: step_edge() keeps no stack frame. */
+static TCM_NOINLINE TCM_Y TCM_NAME(edge_derived)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
 {
     TCM_Y y;
     TCM_NAME(settle_rising)(S, x, 0u, 0u);
-    y = TCM_NAME(emit)(S, x, how, TCM_DERIVE_RISE);
+    y = TCM_NAME(emit)(S, x, x > x_prev ? TCM_ROSE : TCM_FELL, TCM_DERIVE_RISE);
     TCM_NAME(ended_not_ok)(S);
     return y;
-}
-
-/* Its two directions, out of line: step_edge() keeps no stack frame. */
-static TCM_NOINLINE TCM_Y TCM_NAME(edge_derived)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
-{
-    return x > x_prev ? TCM_NAME(finish_edge_derived)(S, x, TCM_ROSE)
-                      : TCM_NAME(finish_edge_derived)(S, x, TCM_FELL);
 }
 
 /* Ends a slow sample whose input rose or fell (how: TCM_ROSE, TCM_FELL):
