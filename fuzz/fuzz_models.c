@@ -754,16 +754,6 @@ static double slope_bound(const hyst_poly_t *f)
     return acc;
 }
 
-/* The compensator under test: exact (hyst_init_inverse_exact) or, tab, tabulated
- * on `intervals` intervals (hyst_init_inverse_table, the firmware's). */
-static hyst_status_t init_compensator(int tab, size_t intervals, hyst_t *S, hyst_curve_t *inv,
-                                      const hyst_poly_t *f, size_t cap)
-{
-    return tab ? hyst_init_inverse_table(S, inv, f, ti_table, intervals, Ti.xl, Ti.yl, Ti.xr,
-                                         Ti.yr, cap)
-               : hyst_init_inverse_exact(S, inv, f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap);
-}
-
 /* Config as fuzz_hyst.c (read_config), then a capacity byte, and with flag
  * bit4 (the tabulated compensator) an intervals byte (1..64). Init must
  * report the curve error first, then the instance's. Opcodes: samples are
@@ -808,7 +798,10 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
     }
     memset(&Ti, 0x77, sizeof(Ti));
     memcpy(&keep_t, &Ti, sizeof(Ti));
-    st = init_compensator(tab, intervals, &Ti.S, &ti_curve, &f, cap);
+    /* the compensator under test: tabulated (the firmware's) or exact */
+    st = tab ? hyst_init_inverse_table(&Ti.S, &ti_curve, &f, ti_table, intervals, Ti.xl, Ti.yl,
+                                       Ti.xr, Ti.yr, cap)
+             : hyst_init_inverse_exact(&Ti.S, &ti_curve, &f, Ti.xl, Ti.yl, Ti.xr, Ti.yr, cap);
     CHECK(st == exp);
     if (st != HYST_OK) {
         CHECK(memcmp(&Ti, &keep_t, sizeof(Ti)) == 0);

@@ -42,9 +42,6 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
     case 2: acc = NUM_HORNER2_(a, u); break;                                                  \
     case 3: acc = NUM_HORNER3_(a, u); break;                                                  \
     case 4: acc = NUM_HORNER4_(a, u); break;                                                  \
-    NUM_HORNER_CASES_5_8_(a, u, acc)
-/* Its cases 5..8 (the engine writes 1..4 itself). */
-#define NUM_HORNER_CASES_5_8_(a, u, acc)                                                     \
     case 5: acc = NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4); break;                            \
     case 6: acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4), 5); break;      \
     case 7:                                                                                   \
@@ -62,7 +59,7 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
  * are at most HYST_MAX_DEGREE) and read a[0], not past the array. */
 #define NUM_HORNER_(a, u, acc_, k_) \
     (NUM_MUL(acc_, u) + (a)[(k_) < HYST_MAX_DEGREE ? (k_) : 0].NUM_F)
-/* Degrees 1..4 (n coefficients). */
+/* Degrees 1..4 (n coefficients; also the engine's asymmetric cases). */
 #define NUM_HORNER1_(a, u) ((a)[0].NUM_F)
 #define NUM_HORNER2_(a, u) NUM_HORNER_(a, u, NUM_HORNER1_(a, u), 1)
 #define NUM_HORNER3_(a, u) NUM_HORNER_(a, u, NUM_HORNER2_(a, u), 2)

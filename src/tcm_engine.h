@@ -1011,7 +1011,10 @@ static TCM_NOINLINE void TCM_NAME(settle_bound)(hyst_tcm_t *S, TCM_Y y)
     }
 }
 
-/* finish() on the paths with bookkeeping (TCM_BOOK). */
+/* finish() on the detour paths, which every sample with TCM_BOOK takes.
+ * TCM_SETTLING implies TCM_BOOK, so the plain path and step_edge() without
+ * bookkeeping call finish() itself: the check stays off the clamped worst
+ * path. */
 static TCM_Y TCM_NAME(finish_book)(hyst_tcm_t *S, TCM_X x, int how)
 {
     const TCM_Y y = TCM_NAME(finish)(S, x, how);

@@ -46,7 +46,6 @@ static double burst_input(long k, double lo, double hi)
     return (k % 2000L) >= 1000L ? hi - x : lo + x;
 }
 
-/* The plant's record with Gaussian output noise of `noise`. */
 /* The reference running the plant's E (the domain's E unused). */
 static ref_everett_t *plant_reference(void)
 {
@@ -61,6 +60,7 @@ static ref_everett_t *plant_reference(void)
     return &r;
 }
 
+/* The plant's record with Gaussian output noise of `noise`. */
 static void record_plant(double noise)
 {
     ref_everett_t *const r = plant_reference();

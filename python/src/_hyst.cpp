@@ -89,7 +89,7 @@ template <class T> struct Ops;
 #define HYST_PY_OPS(T, P, NAME)                                             \
     template <> struct Ops<T> {                                             \
         static constexpr auto init = hyst_##P##_init_;                      \
-        static constexpr auto init_inverse = hyst_##P##_init_inverse_exact_;      \
+        static constexpr auto init_inverse = hyst_##P##_init_inverse_exact_; \
         static constexpr auto init_curve = hyst_##P##_init_curve_;          \
         static constexpr auto curve_from_pwl = hyst_##P##_curve_from_pwl_;  \
         static constexpr auto curve_from_everett = hyst_##P##_curve_from_everett_; \
