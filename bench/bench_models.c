@@ -38,8 +38,11 @@ void bench_f0_codes(hyst_poly_t *f0, double offset)
 }
 
 /* The asymmetric E of a cubic f0 (its Taylor coefficients at lo: the
- * symmetric kind) with an added lower-end term, 0.1 of the linear one. */
-static void everett_of(hyst_everett_t *e, const hyst_poly_t *f0)
+ * symmetric kind) with an added lower-end term, 0.1 of the linear one; at
+ * degree 4 also a w^4 term, a quarter of the cubic's size (of the sign
+ * that keeps E monotone: Eq. 20's cubic term is negative), so that E is
+ * linear in t as the identification's usual choice. */
+static void everett_of(hyst_everett_t *e, const hyst_poly_t *f0, unsigned degree)
 {
     double c[4], lo, span;
     unsigned k;
@@ -58,20 +61,24 @@ static void everett_of(hyst_everett_t *e, const hyst_poly_t *f0)
     e->e[1][0] = (3.0 * c[0] * lo + c[1]) * span * span;
     e->e[2][0] = c[0] * span * span * span;
     e->e[0][1] = 0.1 * e->e[0][0];
+    if (degree == 4u) {
+        e->degree = 4u;
+        e->e[3][0] = -0.25 * e->e[2][0];
+    }
 }
 
-void bench_everett_codes(hyst_everett_t *e, double offset)
+void bench_everett_codes(hyst_everett_t *e, double offset, unsigned degree)
 {
     hyst_poly_t f0;
     bench_f0_codes(&f0, offset);
-    everett_of(e, &f0);
+    everett_of(e, &f0, degree);
 }
 
 void bench_everett_inverse_codes(hyst_everett_t *e, double offset)
 {
     hyst_poly_t f0;
     bench_f0_inverse_codes(&f0, offset);
-    everett_of(e, &f0);
+    everett_of(e, &f0, 3u);
 }
 
 void bench_f0_inverse_codes(hyst_poly_t *f0, double offset)

@@ -20,8 +20,9 @@ void bench_f0_codes(hyst_poly_t *f0, double offset);
 
 /** The asymmetric kind on the same codes: E(a, b) = g(a - b) of
  *  bench_f0_codes() plus a term growing with the loop's place (0.1 of the
- *  width term times t), degree 3. */
-void bench_everett_codes(hyst_everett_t *e, double offset);
+ *  width term times t), of @p degree 3, or 4 with a w^4 term (linear in
+ *  t still, as identified from major loops). */
+void bench_everett_codes(hyst_everett_t *e, double offset, unsigned degree);
 /** The same asymmetry on bench_f0_inverse_codes()'s f0: the outputs span
  *  the codes, the asymmetric compensator's desired outputs. */
 void bench_everett_inverse_codes(hyst_everett_t *e, double offset);

@@ -111,6 +111,9 @@ typedef hyst_real_t bench_y_t;
 #ifndef BENCH_EVERETT
 #define BENCH_EVERETT 0 /* 1: the asymmetric kind instead of the polynomial; 2: its compensator */
 #endif
+#ifndef BENCH_EVERETT_DEGREE
+#define BENCH_EVERETT_DEGREE 3u /* the asymmetric kind's degree (BENCH_EVERETT 1): 3 or 4 */
+#endif
 #ifndef BENCH_BOUNDED
 #define BENCH_BOUNDED 1
 #endif
@@ -398,7 +401,7 @@ static void bench_tcm(void)
             st = hyst_curve_inverse(&curve, &curve);
         }
 #else
-        bench_everett_codes(&e, (double)BENCH_OFFSET);
+        bench_everett_codes(&e, (double)BENCH_OFFSET, BENCH_EVERETT_DEGREE);
         st = hyst_curve_from_everett(&curve, &e);
 #endif
         if (st != HYST_OK || HYST_INIT_CURVE(tcm, &curve) != HYST_OK) {
