@@ -40,10 +40,21 @@ def Model(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, deadba
     return m
 
 
-def Compensator(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
-    """The inverse model of Model(coeffs, lo, hi): desired output in, drive out."""
+#: Intervals of the firmware's compensator table (HYST_INV_TABLE, the default
+#: of HYST_DEFINE_INVERSE / HYST_INIT_INVERSE).
+INV_TABLE = _hyst.INV_TABLE
+
+
+def Compensator(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, intervals=0):
+    """The inverse model of Model(coeffs, lo, hi): desired output in, drive out.
+
+    ``intervals=0`` (the default, as ``hyst inv``) runs the exact inverse, the
+    reference. ``intervals=N`` runs the tabulated compensator firmware runs
+    (hyst_*_init_inverse_table(); ``INV_TABLE`` is HYST_INIT_INVERSE's), bit
+    for bit: its ``inverse_error`` is the worst error against the exact
+    inverse that init measured, as a fraction of the drive range."""
     return _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
-        list(map(float, coeffs)), float(lo), float(hi), int(capacity), True)
+        list(map(float, coeffs)), float(lo), float(hi), int(capacity), True, int(intervals))
 
 
 def ModelFromPoints(xs, ys, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inverse=False):
@@ -88,13 +99,16 @@ def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
     return Model(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity)
 
 
-def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
+def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, intervals=0):
     """The compensator (inverse model) of the model :func:`model_from` gives:
-    desired output in, drive out, for either kind."""
+    desired output in, drive out, for either kind; ``intervals`` as in
+    :func:`Compensator` (kind poly only: the asymmetric kind's compensator
+    solves each branch)."""
     if desc.get("kind", "poly") == "everett":
         return ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
                                 desc["terms"], dtype=dtype, capacity=capacity, inverse=True)
-    return Compensator(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity)
+    return Compensator(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity,
+                       intervals=intervals)
 
 
 def PI(thresholds, weights, *, dtype=np.float64):

@@ -90,6 +90,7 @@ template <class T> struct Ops;
     template <> struct Ops<T> {                                             \
         static constexpr auto init = hyst_##P##_init_;                      \
         static constexpr auto init_inverse = hyst_##P##_init_inverse_exact_; \
+        static constexpr auto init_inverse_table = hyst_##P##_init_inverse_table_; \
         static constexpr auto init_curve = hyst_##P##_init_curve_;          \
         static constexpr auto curve_from_pwl = hyst_##P##_curve_from_pwl_;  \
         static constexpr auto curve_from_everett = hyst_##P##_curve_from_everett_; \
@@ -185,7 +186,9 @@ template <class T> struct Real : Owned<T, T> {
     hyst_curve_t inv{}; /* the compensator's inverse curve (the instance points at it) */
     hyst_curve_t fwd{}; /* a piecewise-linear f0 or an E (the model's curve; inv derives from it) */
     std::vector<T> bx, by; /* its breakpoints (fwd points at them) */
+    std::vector<T> table;  /* the tabulated compensator's table (inv points at it) */
     bool inverse;
+    size_t intervals = 0u; /* the table's intervals; 0: the exact compensator */
     double deadband = 0.0;
 
     /* The instance on fwd, or on its inverse (the compensator). */
@@ -233,12 +236,23 @@ template <class T> struct Real : Owned<T, T> {
         this->y_lo = y_lo_;
     }
 
-    Real(const std::vector<double> &c, double lo_, double hi_, size_t capacity, bool inverse_)
-        : Owned<T, T>(capacity), inverse(inverse_)
+    /* f0 as a polynomial; its compensator exact (intervals 0) or tabulated
+     * as firmware runs it (HYST_INIT_INVERSE: intervals HYST_INV_TABLE). */
+    Real(const std::vector<double> &c, double lo_, double hi_, size_t capacity, bool inverse_,
+         size_t intervals_)
+        : Owned<T, T>(capacity), inverse(inverse_), intervals(inverse_ ? intervals_ : 0u)
     {
         const hyst_poly_t f0 = make_poly(c, lo_, hi_);
         int st;
-        if (inverse) {
+        if (inverse && intervals > 0u) {
+            if (intervals > (size_t)1 << 20) { /* the library's limit, before the allocation */
+                raise_status(HYST_ERR_ARG, "intervals outside 1 .. 2^20");
+            }
+            table.resize(HYST_INV_TABLE_LEN(intervals));
+            st = O::init_inverse_table(&this->S, &inv, &f0, table.data(), intervals,
+                                       this->xl.data(), this->yl.data(), this->xr.data(),
+                                       this->yr.data(), capacity, HYST_LAYOUT);
+        } else if (inverse) {
             st = O::init_inverse(&this->S, &inv, &f0, this->xl.data(), this->yl.data(),
                                  this->xr.data(), this->yr.data(), capacity, HYST_LAYOUT);
         } else {
@@ -475,8 +489,8 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
     using R = Real<T>;
     nb::class_<R, Tcm> model_cls(m, model);
     model_cls
-        .def(nb::init<const std::vector<double> &, double, double, size_t, bool>(), "coeffs"_a,
-             "lo"_a, "hi"_a, "capacity"_a, "inverse"_a)
+        .def(nb::init<const std::vector<double> &, double, double, size_t, bool, size_t>(),
+             "coeffs"_a, "lo"_a, "hi"_a, "capacity"_a, "inverse"_a, "intervals"_a = 0u)
         .def(nb::init<const std::vector<double> &, const std::vector<double> &, size_t, bool>(),
              "xs"_a, "ys"_a, "capacity"_a, "inverse"_a)
         .def(nb::init<unsigned, double, double, double, const std::vector<double> &, size_t,
@@ -489,6 +503,12 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
         .def_prop_ro("error_bound", [](const R &s) { return Ops<T>::error_bound(&s.S); })
         .def_prop_ro("rounding_bound", [](const R &s) { return Ops<T>::rounding_bound(&s.S); })
         .def_ro("inverse", &R::inverse)
+        .def_ro("intervals", &R::intervals)
+        .def_prop_ro("inverse_error",
+                     [](const R &s) {
+                         return s.intervals > 0u ? static_cast<double>(hyst_curve_inverse_error(&s.inv))
+                                                 : 0.0;
+                     })
         .def_prop_ro("dtype", [](const R &) { return Ops<T>::dtype; });
     def_process<T, R>(model_cls);
 
@@ -521,6 +541,7 @@ NB_MODULE(_hyst, m)
     m.attr("MAX_DEGREE") = HYST_MAX_DEGREE;
     m.attr("EVERETT_MAX_DEGREE") = HYST_EVERETT_MAX_DEGREE;
     m.attr("CODE_MAX") = static_cast<unsigned long>(HYST_CODE_MAX);
+    m.attr("INV_TABLE") = static_cast<unsigned long>(HYST_INV_TABLE);
     m.attr("SNAPSHOT_VERSION") = HYST_SNAPSHOT_VERSION;
     m.attr("EVENT_NONFINITE") = HYST_EVENT_NONFINITE;
     m.attr("EVENT_CLAMPED") = HYST_EVENT_CLAMPED;

@@ -6,6 +6,7 @@
  *   hyst_ref KIND key=value...
  *   KIND  sim | inv | code | pi | bench
  *   keys  type=f64|f32  lo= hi=  coeffs=cN,...,c0  cap=  deadband=
+ *         intervals= (inv: the tabulated compensator's; 0, the default: the exact one)
  *         code_lo= code_hi=  r=r1,...  w=w1,...  in=PATH out=PATH
  *         snap=PATH (sim, inv, code: the snapshot after the block)
  *         repeat=N (bench: best of N block calls of the f64 model)
@@ -156,11 +157,22 @@ static double now_ns(void)
             hyst_tcm_t S;                                                                    \
             hyst_curve_t inv;                                                                \
             const hyst_poly_t f0 = poly();                                                   \
-            st = strcmp(kind, "inv") == 0                                                    \
-                     ? hyst_##P##_init_inverse_exact(&S, &inv, &f0, tp, tp + cap, tp + 2u * cap,   \
-                                               tp + 3u * cap, cap)                           \
-                     : hyst_##P##_init(&S, &f0, tp, tp + cap, tp + 2u * cap, tp + 3u * cap,  \
-                                       cap);                                                 \
+            const size_t intervals = (size_t)num("intervals", "0");                          \
+            T *table = malloc(HYST_INV_TABLE_LEN(intervals) * sizeof(T));                    \
+            if (table == NULL) {                                                             \
+                die("out of memory", "");                                                    \
+            }                                                                                \
+            if (strcmp(kind, "inv") == 0 && intervals > 0u) {                                \
+                st = hyst_##P##_init_inverse_table(&S, &inv, &f0, table, intervals, tp,      \
+                                                   tp + cap, tp + 2u * cap, tp + 3u * cap,   \
+                                                   cap);                                     \
+            } else if (strcmp(kind, "inv") == 0) {                                           \
+                st = hyst_##P##_init_inverse_exact(&S, &inv, &f0, tp, tp + cap,              \
+                                                   tp + 2u * cap, tp + 3u * cap, cap);       \
+            } else {                                                                         \
+                st = hyst_##P##_init(&S, &f0, tp, tp + cap, tp + 2u * cap, tp + 3u * cap,    \
+                                     cap);                                                   \
+            }                                                                                \
             if (st == HYST_OK) {                                                             \
                 st = hyst_##P##_set_deadband(&S, (T)num("deadband", "0"));                   \
             }                                                                                \
