@@ -166,6 +166,7 @@ static hyst_everett_t everett_arg(const mxArray *const prhs[5], const char *cont
 typedef struct model_arg {
     int inverse;        /* the compensator */
     int everett;        /* the asymmetric kind: e, not f0 */
+    size_t intervals;   /* f0's compensator tabulated (firmware's); 0: exact */
     hyst_poly_t f0;
     hyst_everett_t e;
 } model_arg_t;
@@ -175,7 +176,7 @@ typedef struct model_arg {
  * cap entries. An E's inverse replaces its forward curve (a copy of it). */
 #define DEFINE_INIT(P, T)                                                                   \
     static int init_##P(hyst_tcm_t *S, hyst_curve_t *curve, const model_arg_t *m, T *tp,    \
-                        size_t cap)                                                         \
+                        size_t cap, T *table)                                               \
     {                                                                                       \
         T *const xl = tp, *const yl = tp + cap, *const xr = tp + 2u * cap,                  \
                  *const yr = tp + 3u * cap;                                                 \
@@ -186,6 +187,10 @@ typedef struct model_arg {
                 st = hyst_curve_inverse(curve, curve);                                      \
             }                                                                               \
             return st != HYST_OK ? st : hyst_##P##_init_curve(S, curve, xl, yl, xr, yr, cap); \
+        }                                                                                   \
+        if (m->inverse && m->intervals > 0u) {                                              \
+            return hyst_##P##_init_inverse_table(S, curve, &m->f0, table, m->intervals, xl, yl, \
+                                                 xr, yr, cap);                              \
         }                                                                                   \
         return m->inverse ? hyst_##P##_init_inverse_exact(S, curve, &m->f0, xl, yl, xr, yr, cap)  \
                           : hyst_##P##_init(S, &m->f0, xl, yl, xr, yr, cap);                \
@@ -202,9 +207,10 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
     hyst_curve_t curve;
     const mxArray *x = prhs[0];
     mxArray *y;
-    size_t n, cap;
+    size_t n, cap, table_len;
     int st;
     cap = count(prhs[1], "capacity", 1.0, 1e9);
+    table_len = m->intervals > 0u ? HYST_INV_TABLE_LEN(m->intervals) : 0u;
     n = mxGetNumberOfElements(x);
     if (mxIsComplex(x) || mxIsSparse(x) || !(mxIsDouble(x) || mxIsSingle(x))) {
         usage("the input must be a real double or single array");
@@ -212,8 +218,8 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
     y = mxCreateNumericArray(mxGetNumberOfDimensions(x), mxGetDimensions(x), mxGetClassID(x),
                              mxREAL);
     if (mxIsDouble(x)) {
-        double *tp = mxMalloc(4u * cap * sizeof *tp);
-        st = init_f64(&S, &curve, m, tp, cap);
+        double *tp = mxMalloc((4u * cap + table_len) * sizeof *tp);
+        st = init_f64(&S, &curve, m, tp, cap, tp + 4u * cap);
         if (st == HYST_OK) {
             st = hyst_f64_set_deadband(&S, scalar(prhs[2], "deadband"));
         }
@@ -227,8 +233,8 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
         }
         mxFree(tp);
     } else {
-        float *tp = mxMalloc(4u * cap * sizeof *tp);
-        st = init_f32(&S, &curve, m, tp, cap);
+        float *tp = mxMalloc((4u * cap + table_len) * sizeof *tp);
+        st = init_f32(&S, &curve, m, tp, cap, tp + 4u * cap);
         if (st == HYST_OK) {
             st = hyst_f32_set_deadband(&S, (float)scalar(prhs[2], "deadband"));
         }
@@ -249,17 +255,24 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
     if (nlhs > 2) {
         plhs[2] = mxCreateDoubleScalar((double)hyst_tp_count(&S));
     }
+    if (nlhs > 3) { /* the tabulated compensator's measured error (init, st >= 0 only) */
+        plhs[3] = mxCreateDoubleScalar(
+            m->intervals > 0u && st >= 0 ? (double)hyst_curve_inverse_error(&curve) : 0.0);
+    }
 }
 
-/* sim or inv: prhs = coeffs, lo, hi, x, capacity, deadband. */
+/* sim or inv: prhs = coeffs, lo, hi, x, capacity, deadband; inv also
+ * intervals (0: the exact compensator). */
 static void run_poly(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     model_arg_t m;
-    if (nrhs != 6) {
-        usage("sim/inv take coeffs, lo, hi, x, capacity, deadband");
+    if (nrhs != (inverse ? 7 : 6)) {
+        usage(inverse ? "inv takes coeffs, lo, hi, x, capacity, deadband, intervals"
+                      : "sim takes coeffs, lo, hi, x, capacity, deadband");
     }
     memset(&m, 0, sizeof m);
     m.inverse = inverse;
+    m.intervals = inverse ? count(prhs[6], "intervals", 0.0, 1048576.0) : 0u;
     m.f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
     run_tcm(&m, nlhs, plhs, prhs + 3);
 }

@@ -8,7 +8,7 @@ function failed = run_tests(root, ref, cli)
   addpath(fullfile(root, 'matlab'));
   ctx = struct('root', root, 'ref', ref, 'cli', cli, 'tmp', tempname());
   mkdir(ctx.tmp);
-  tests = {@t_sim_f64_bitexact, @t_sim_f32_bitexact, @t_inv_bitexact, ...
+  tests = {@t_sim_f64_bitexact, @t_sim_f32_bitexact, @t_inv_bitexact, @t_inv_table_bitexact, ...
            @t_bounded_memory_bitexact, @t_inv_undoes_sim, @t_fit_measured, ...
            @t_fit_equals_cli, @t_errors_status_names, @t_usage_errors, ...
            @t_save_load_roundtrip, @t_load_rejects, @t_readme_block, ...
@@ -150,6 +150,25 @@ function t_inv_bitexact(ctx)
   [x, st] = hyst_inv(m, single(yd));
   [xc, stc] = run_ref(ctx, 'inv', 'single', m, single(yd));
   check(isequal(typecast(x, 'uint32'), typecast(xc, 'uint32')) && st == stc, 'f32 differs');
+end
+
+function t_inv_table_bitexact(ctx)
+  % the firmware's compensator (hyst_*_init_inverse_table), bit for bit, its
+  % measured error within the 1e-5 target; refused for the asymmetric kind
+  m = paper_f0();
+  yd = signal(3000, polyval(m.coeffs, m.lo), polyval(m.coeffs, m.hi), 4);
+  [x, st, ~, err] = hyst_inv(m, yd, 'intervals', 256);
+  [xc, stc] = run_ref(ctx, 'inv', 'double', m, yd, 'intervals=256');
+  check(isequal(typecast(x, 'uint64'), typecast(xc, 'uint64')) && st == stc, 'f64 differs');
+  check(err > 0 && err <= 1e-5, 'measured error %g', err);
+  [xe, ~, ~, err0] = hyst_inv(m, yd);
+  check(err0 == 0 && max(abs(x - xe)) > 0, 'the exact compensator is the default');
+  [x, st] = hyst_inv(m, single(yd), 'intervals', 32);
+  [xc, stc] = run_ref(ctx, 'inv', 'single', m, single(yd), 'intervals=32');
+  check(isequal(typecast(x, 'uint32'), typecast(xc, 'uint32')) && st == stc, 'f32 differs');
+  expect_error('hyst:usage', @() hyst_inv(e3(), 0.1, 'intervals', 16));
+  expect_error('hyst:usage', @() hyst_inv(m, yd, 'intervals', 0.5));
+  expect_error('hyst:usage', @() hyst_sim(m, yd, 'intervals', 16));
 end
 
 function t_bounded_memory_bitexact(ctx)
