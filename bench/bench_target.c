@@ -109,7 +109,8 @@ typedef hyst_real_t bench_y_t;
 #define BENCH_OFFSET 0
 #endif
 #ifndef BENCH_EVERETT
-#define BENCH_EVERETT 0 /* 1: the asymmetric kind instead of the polynomial; 2: its compensator */
+#define BENCH_EVERETT 0 /* 1: the asymmetric kind instead of the polynomial; 2: its compensator;
+                         * 3: its tabulated compensator */
 #endif
 #ifndef BENCH_EVERETT_DEGREE
 #define BENCH_EVERETT_DEGREE 3u /* the asymmetric kind's degree (BENCH_EVERETT 1): 3 or 4 */
@@ -399,6 +400,16 @@ static void bench_tcm(void)
         st = hyst_curve_from_everett(&curve, &e);
         if (st == HYST_OK) {
             st = hyst_curve_inverse(&curve, &curve);
+        }
+#elif BENCH_EVERETT == 3 /* its tabulated compensator, the default table */
+        static hyst_real_t table[HYST_EVERETT_INV_TABLE_LEN(HYST_EVERETT_INV_ROWS,
+                                                            HYST_EVERETT_INV_INTERVALS)];
+        static hyst_curve_t fwd;
+        bench_everett_inverse_codes(&e, (double)BENCH_OFFSET);
+        st = hyst_curve_from_everett(&fwd, &e);
+        if (st == HYST_OK) {
+            st = hyst_curve_everett_inverse_table(&curve, &fwd, table, HYST_EVERETT_INV_ROWS,
+                                                  HYST_EVERETT_INV_INTERVALS);
         }
 #else
         bench_everett_codes(&e, (double)BENCH_OFFSET, BENCH_EVERETT_DEGREE);

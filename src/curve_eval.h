@@ -374,7 +374,8 @@ NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
     if (curve->kind == (unsigned)HYST_CURVE_EVERETT) {
         return NUM_NAME(everett_from_lo)(curve, d * curve->unit.NUM_F);
     }
-    if (curve->kind == (unsigned)HYST_CURVE_EVERETT_INV) { /* that branch's inverse, bisected */
+    if (curve->kind == (unsigned)HYST_CURVE_EVERETT_INV ||
+        curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE) { /* that branch's inverse, bisected */
         NUM_T a = 0, b = 1;
         unsigned it;
         for (it = 0u; it < 2u * (unsigned)(sizeof(NUM_T) * CHAR_BIT); ++it) {
@@ -414,6 +415,14 @@ hyst_status_t NUM_NAME(curve_inverse_table)(hyst_curve_t *inv, const hyst_curve_
     hyst_ptr_t t;
     t.NUM_F = table;
     return hyst_curve_inverse_table_(inv, fwd, t, intervals, NUM_VARIANT);
+}
+
+hyst_status_t NUM_NAME(curve_everett_inverse_table)(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                    NUM_T *table, size_t rows, size_t intervals)
+{
+    hyst_ptr_t t;
+    t.NUM_F = table;
+    return hyst_curve_everett_inverse_table_(inv, fwd, t, rows, intervals, NUM_VARIANT);
 }
 
 NUM_T NUM_NAME(curve_eval)(const hyst_curve_t *curve, NUM_T x)

@@ -354,6 +354,12 @@ hyst_status_t hyst_curve_check(const hyst_curve_t *curve)
                        curve->u.poly_inv.fwd.degree <= HYST_MAX_DEGREE
                    ? HYST_OK
                    : HYST_ERR_ARG;
+    case HYST_CURVE_EVERETT_INV_TABLE:
+        if (curve->u.everett.table.f32 == NULL || curve->u.everett.rows < 3u ||
+            curve->u.everett.intervals < 1u) {
+            return HYST_ERR_ARG;
+        }
+        /* fall through */
     case HYST_CURVE_EVERETT:
     case HYST_CURVE_EVERETT_INV:
         return curve->u.everett.degree >= 1u &&

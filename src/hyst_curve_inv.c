@@ -135,8 +135,7 @@ static hyst_wide_t table_slope(const table_build_t *b, unsigned w, int has_left,
     return m < 0 ? 0 : m;
 }
 
-/* Stores entry i of the table in the variant's type; returns it rounded. */
-static hyst_wide_t table_put(hyst_ptr_t table, size_t i, unsigned variant, hyst_wide_t w)
+hyst_wide_t hyst_table_put_(hyst_ptr_t table, size_t i, unsigned variant, hyst_wide_t w)
 {
 #if HYST_ENABLE_F64
     if (variant == (unsigned)HYST_VARIANT_F64) {
@@ -207,10 +206,10 @@ static void table_mark(table_build_t *b, size_t k)
         q[2] = vb < Q31_2_30 ? (hyst_q31_t)vb : (hyst_q31_t)1 << 30;
         q[3] = 0;
     } else {
-        (void)table_put(b->table, 4u * k, b->c->variant, -1);
-        (void)table_put(b->table, 4u * k + 1u, b->c->variant, 0);
-        (void)table_put(b->table, 4u * k + 2u, b->c->variant, 0);
-        (void)table_put(b->table, 4u * k + 3u, b->c->variant, 0);
+        (void)hyst_table_put_(b->table, 4u * k, b->c->variant, -1);
+        (void)hyst_table_put_(b->table, 4u * k + 1u, b->c->variant, 0);
+        (void)hyst_table_put_(b->table, 4u * k + 2u, b->c->variant, 0);
+        (void)hyst_table_put_(b->table, 4u * k + 3u, b->c->variant, 0);
     }
     ++b->c->u.inv_table.exact;
 }
@@ -238,7 +237,7 @@ static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has
         }
     } else {
         for (i = 0u; i < 4u; ++i) {
-            c[i] = table_put(b->table, 4u * k + i, b->c->variant, c[i]);
+            c[i] = hyst_table_put_(b->table, 4u * k + i, b->c->variant, c[i]);
         }
     }
     for (i = 1u; i < TABLE_PROBES; ++i) {
@@ -294,7 +293,7 @@ static hyst_wide_t table_pieces(table_build_t *b, size_t intervals)
         if (b->q31 != NULL) {
             b->q31[4u * intervals + w] = (hyst_q31_t)end;
         } else {
-            (void)table_put(b->table, 4u * intervals + w, b->c->variant, end);
+            (void)hyst_table_put_(b->table, 4u * intervals + w, b->c->variant, end);
         }
     }
     return worst;
@@ -396,6 +395,9 @@ hyst_status_t hyst_q31_inverse_table_(hyst_q31_t *table, size_t intervals,
 
 hyst_wide_t hyst_curve_inverse_error(const hyst_curve_t *curve)
 {
+    if (curve != NULL && curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE) {
+        return curve->u.everett.max_err;
+    }
     return curve != NULL && curve->kind == (unsigned)HYST_CURVE_INV_TABLE
                ? curve->u.inv_table.max_err
                : 0;
@@ -474,8 +476,9 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
     out.y_hi = fwd->hi;
     lo = hyst_num_get(&out.lo, out.variant);
     hi = hyst_num_get(&out.hi, out.variant);
-    if (fwd->kind == (unsigned)HYST_CURVE_EVERETT ||
-        fwd->kind == (unsigned)HYST_CURVE_EVERETT_INV) {
+    if (fwd->kind == (unsigned)HYST_CURVE_EVERETT || fwd->kind == (unsigned)HYST_CURVE_EVERETT_INV ||
+        fwd->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE) {
+        out.u.everett.table.f32 = NULL; /* the forward curve and the solved inverse have none */
         return everett_inverse(inv, &out, fwd->kind == (unsigned)HYST_CURVE_EVERETT);
     }
     if (fwd->kind == (unsigned)HYST_CURVE_POLY_INV ||

@@ -217,11 +217,17 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
     crc = crc_num(crc, &S->y_hi, f->yt);
     crc = crc_num(crc, &S->unit, f->yt);
     if (c != NULL && (c->kind == (unsigned)HYST_CURVE_EVERETT ||
-                      c->kind == (unsigned)HYST_CURVE_EVERETT_INV)) {
-        /* the branch's coefficients are not the curve's: its tables */
+                      c->kind == (unsigned)HYST_CURVE_EVERETT_INV ||
+                      c->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE)) {
+        /* the branch's coefficients are not the curve's: its tables (and a
+         * blended branch's table size) */
         for (k = 0u; k < (unsigned)HYST_EVERETT_TERMS; ++k) {
             crc = crc_num(crc, &c->u.everett.rise[k], f->yt);
             crc = crc_num(crc, &c->u.everett.fall[k], f->yt);
+        }
+        if (c->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE) {
+            crc = crc_word(crc, (unsigned long)c->u.everett.rows);
+            crc = crc_word(crc, (unsigned long)c->u.everett.intervals);
         }
         crc = crc_num(crc, &c->u.everett.span, f->yt);
         return crc_num(crc, &c->u.everett.tol, f->yt);

@@ -104,6 +104,10 @@ void hyst_barrier_(void);
  * not a request; its branches are solved (tcm_engine.h, solve()). */
 #define HYST_HORNER_SOLVE_ (HYST_HORNER_REQUEST_ + 1u)
 
+/* S->degree (and S->horner) of its tabulated inverse: branches blended from
+ * rows of cubic pieces (tcm_engine.h, blend_g()). */
+#define HYST_HORNER_BLEND_ (HYST_HORNER_SOLVE_ + 1u)
+
 /* Posts a request from another context: increments *counter, then routes
  * the next per-sample evaluation to the engine's serve(). */
 hyst_status_t hyst_post_request_(hyst_tcm_t *S, unsigned *counter);
@@ -220,6 +224,13 @@ void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
  * of the hyst_f32/f64_curve_inverse_table constructors, written once). */
 hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                         hyst_ptr_t table, size_t intervals, unsigned variant);
+/* The same for the asymmetric kind (hyst_*_curve_everett_inverse_table). */
+hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                hyst_ptr_t table, size_t rows, size_t intervals,
+                                                unsigned variant);
+/* Stores entry i of an inverse table in the variant's type (+0 for 0: the
+ * sign marks solved intervals); returns it rounded. */
+hyst_wide_t hyst_table_put_(hyst_ptr_t table, size_t i, unsigned variant, hyst_wide_t w);
 
 /* The q31 compensator's cubic on an interval's coefficients b (q31.h,
  * "Compensator"; drive units) at t, the offset from the interval's middle

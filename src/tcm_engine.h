@@ -116,17 +116,17 @@
  * branch, is at most tol: one evaluation for a sample that moves a little
  * along its branch. Also once s <= tol (s then estimates the error, or
  * bounds it where Newton converges fast) or the bracket is that narrow. */
-HYST_INLINE TCM_Y TCM_NAME(solve_inline)(const hyst_tcm_t *S, TCM_Y v, TCM_Y w)
+HYST_INLINE TCM_Y TCM_NAME(solve_with)(const hyst_curve_t *c, const hyst_num_t *coef, TCM_Y curv,
+                                       TCM_Y w_end, TCM_Y v, TCM_Y w)
 {
-    const hyst_curve_t *c = S->curve;
     const unsigned n = c->u.everett.degree;
-    const TCM_Y tol = YV(c->u.everett.tol), curv = YV(S->curv);
-    TCM_Y a = 0, b = YV(S->w_end);
+    const TCM_Y tol = YV(c->u.everett.tol);
+    TCM_Y a = 0, b = w_end;
     unsigned k;
     w = w > 0 ? (w < b ? w : b) : 0; /* NaN: 0 */
     for (k = 0u; k < TCM_SOLVE_STEPS; ++k) {
         TCM_Y p, dp, f, step, next;
-        TCM_HORNER_D_(S->coef, n, w, p, dp);
+        TCM_HORNER_D_(coef, n, w, p, dp);
         f = p - v;
         if (f > 0) {
             b = w;
@@ -153,6 +153,12 @@ HYST_INLINE TCM_Y TCM_NAME(solve_inline)(const hyst_tcm_t *S, TCM_Y v, TCM_Y w)
     return w * YV(c->u.everett.span);
 }
 
+/* The same on the branch whose numbers derive() keeps in S. */
+HYST_INLINE TCM_Y TCM_NAME(solve_inline)(const hyst_tcm_t *S, TCM_Y v, TCM_Y w)
+{
+    return TCM_NAME(solve_with)(S->curve, S->coef, YV(S->curv), YV(S->w_end), v, w);
+}
+
 /* The same from the secant's point, out of line, for the rare paths (g()
  * of a merge, resume_()). */
 static TCM_NOINLINE TCM_Y TCM_NAME(solve)(const hyst_tcm_t *S, TCM_Y v)
@@ -166,12 +172,118 @@ static TCM_NOINLINE TCM_Y TCM_NAME(solve)(const hyst_tcm_t *S, TCM_Y v)
 #define TCM_SOLVE_INLINE(S, v, w) ((void)(w), TCM_SOLVE(S, v))
 #endif
 
+/* The asymmetric compensator's anchor: the current TP's drive, 0..1 over
+ * the drive range. */
+HYST_INLINE TCM_Y TCM_NAME(drive_anchor)(const hyst_tcm_t *S)
+{
+    return (YV(S->y_ctp) - YV(S->y_lo)) * YV(S->curve->u.everett.inv_span);
+}
+
+#ifndef NUM_FIXED /* real outputs only */
+/* The tabulated asymmetric compensator (HYST_CURVE_EVERETT_INV_TABLE,
+ * S->degree HYST_HORNER_BLEND_): a branch's drive step at output step v is
+ * the cubic of interval k = floor(s), s = v v_scale, blended from four rows
+ * of the table (S->table: the first, S->blend: their weights; both set by
+ * derive_blend() on the branch's slow sample). S->coef holds the blend of
+ * interval S->cached_k: a sample in it costs one cubic. */
+
+/* Interval k's coefficients blended from the branch's rows, into c. */
+HYST_INLINE void TCM_NAME(blend_coefs)(const hyst_tcm_t *S, unsigned long k, hyst_num_t *c)
+{
+    const unsigned long row_len = HYST_INV_TABLE_LEN((unsigned long)S->curve->u.everett.intervals);
+    const TCM_Y *r = S->table.TCM_YF + 4u * k;
+    unsigned i;
+    for (i = 0u; i < 4u; ++i) {
+        YV(c[i]) = ((YV(S->blend[0]) * r[i] + YV(S->blend[1]) * r[row_len + i]) +
+                    YV(S->blend[2]) * r[2u * row_len + i]) +
+                   YV(S->blend[3]) * r[3u * row_len + i];
+    }
+}
+
+/* An interval's cubic at t in [0, 1]. */
+HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
+{
+    return YV(c[0]) + t * (YV(c[1]) + t * (YV(c[2]) + t * YV(c[3])));
+}
+
+static void TCM_NAME(newton_state)(const hyst_tcm_t *S, hyst_num_t *coef, TCM_Y *curv,
+                                   TCM_Y *w_end, TCM_Y *secant);
+
+/* An interval every row marks (c0 = -1: the blend is then negative) is
+ * solved as the exact compensator solves it, from the secant's point. */
+static TCM_NOINLINE TCM_Y TCM_NAME(blend_exact)(const hyst_tcm_t *S, TCM_Y u)
+{
+    hyst_num_t coef[HYST_EVERETT_MAX_DEGREE];
+    TCM_Y curv, w_end, secant;
+    TCM_NAME(newton_state)(S, coef, &curv, &w_end, &secant);
+    return TCM_NAME(solve_with)(S->curve, coef, curv, w_end, u, u * secant);
+}
+
+/* G at output step u >= 0 for the rare paths (merges, a restore, the tail
+ * of a sample that refilled the blend): the same numbers as the inline path
+ * (the cached blend, or the same blend computed here). */
+static TCM_NOINLINE TCM_Y TCM_NAME(blend_g)(const hyst_tcm_t *S, TCM_Y u)
+{
+    const unsigned long n = (unsigned long)S->curve->u.everett.intervals;
+    const TCM_Y s = u * YV(S->v_scale);
+    unsigned long k = s < (TCM_Y)n ? (unsigned long)s : n; /* s >= 0 */
+    hyst_num_t local[4];
+    const hyst_num_t *c = S->coef;
+    TCM_Y g;
+    if (k != S->cached_k) {
+        TCM_NAME(blend_coefs)(S, k, local);
+        c = local;
+    }
+    g = TCM_NAME(cubic)(c, s - (TCM_Y)k);
+    return g >= 0 ? g : TCM_NAME(blend_exact)(S, u);
+}
+#define TCM_BLEND_G(S, u) TCM_NAME(blend_g)((S), (u))
+
+/* The branch's rows, weights and index scale (derive()): cubic Lagrange
+ * weights on the four rows around its anchor a (rows base .. base + 3 of
+ * its direction, at x = a rows - base in 0..3), and v_scale = N / V(a), V
+ * the branch's whole output step (V at least 2^-30 N of the desired
+ * output range: s stays far below 2^32). */
+static void TCM_NAME(derive_blend)(hyst_tcm_t *S)
+{
+    const hyst_curve_t *c = S->curve;
+    const unsigned fall = S->moving_end != 0u ? 1u : 0u;
+    const unsigned long rows = (unsigned long)c->u.everett.rows;
+    const unsigned long n = (unsigned long)c->u.everett.intervals;
+    const TCM_Y anchor = TCM_NAME(drive_anchor)(S);
+    const TCM_Y least = TCM_D(XV(S->hi), XV(S->lo)) * ((TCM_Y)n * NUM_C(9.313225746154785e-10));
+    TCM_Y x = anchor * (TCM_Y)rows, range = 0;
+    unsigned long j = x > 0 ? (unsigned long)x : 0u, base;
+    unsigned m;
+    j = j > rows - 1u ? rows - 1u : j;
+    base = j < 1u ? 0u : (j - 1u > rows - 3u ? rows - 3u : j - 1u);
+    x -= (TCM_Y)base;
+    YV(S->blend[0]) = -(x - 1) * (x - 2) * (x - 3) / 6;
+    YV(S->blend[1]) = x * (x - 2) * (x - 3) / 2;
+    YV(S->blend[2]) = -x * (x - 1) * (x - 3) / 2;
+    YV(S->blend[3]) = x * (x - 1) * (x - 2) / 6;
+    S->table.TCM_YF = c->u.everett.table.TCM_YF +
+                      ((fall != 0u ? rows + 1u : 0u) + base) * HYST_INV_TABLE_LEN(n);
+    for (m = 0u; m <= c->u.everett.degree; ++m) {
+        range = range * anchor + YV(c->u.everett.v_end[fall][m]);
+    }
+    YV(S->v_scale) = (TCM_Y)n / (range > least ? range : least);
+    S->cached_k = ULONG_MAX; /* no interval blended yet */
+}
+#else
+#define TCM_BLEND_G(S, u) ((void)(S), (u)) /* never: the variant refuses the kind */
+static void TCM_NAME(derive_blend)(hyst_tcm_t *S) { (void)S; }
+#endif
+
 /* G at u, any kind: Horner for polynomials, solved for the asymmetric
  * compensator, else out of line. */
 HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
 {
     if (S->degree == HYST_HORNER_SOLVE_) {
         return TCM_SOLVE(S, u);
+    }
+    if (S->degree == HYST_HORNER_BLEND_) {
+        return TCM_BLEND_G(S, u);
     }
     return S->degree != 0u ? NUM_NAME(horner)(S->coef, S->degree, u)
                            : TCM_G_OTHER(S->curve, u);
@@ -291,6 +403,9 @@ HYST_INLINE TCM_Y TCM_NAME(branch_y)(const hyst_tcm_t *S, TCM_X x)
 }
 
 static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how);
+#ifndef NUM_FIXED
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_blend)(hyst_tcm_t *S, TCM_X x, const int how);
+#endif
 static void TCM_NAME(close_window)(hyst_tcm_t *S);
 
 /* Float evaluation of an increasing G is not monotone at the rounding level
@@ -352,6 +467,29 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const in
     YV(S->y_prev) = y;
     return y;
 }
+
+/* A sample of the tabulated asymmetric compensator outside the blended
+ * interval: blends its interval (the last one, N, past the branch's end by
+ * rounding) and ends as emit() does (the numbers blend_g() gives). */
+#ifndef NUM_FIXED
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_blend)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    const unsigned long n = (unsigned long)S->curve->u.everett.intervals;
+    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
+    const TCM_Y s = u * YV(S->v_scale);
+    const unsigned long k = s < (TCM_Y)n ? (unsigned long)s : n;
+    TCM_Y g, y;
+    TCM_NAME(blend_coefs)(S, k, S->coef);
+    S->cached_k = k;
+    g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
+    if (!(g >= 0)) { /* a solved interval */
+        return TCM_NAME(emit_rare)(S, x, how);
+    }
+    y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
+    YV(S->y_prev) = y;
+    return y;
+}
+#endif
 
 /* What a slow sample's emit() derives first (a constant per call site):
  * nothing (the branch is cached), or for the asymmetric kinds the new
@@ -417,6 +555,27 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
             TCM_NAME(derive)(S);
         }
         return TCM_NAME(emit_solved)(S, x, how);
+#ifndef NUM_FIXED
+    case HYST_HORNER_BLEND_: { /* the tabulated asymmetric compensator: blend_g() */
+        TCM_Y s;
+        unsigned long k;
+        if (derive != TCM_KEEP) { /* a new branch: no interval blended yet */
+            TCM_NAME(derive)(S);
+            return TCM_NAME(emit_blend)(S, x, how);
+        }
+        s = u * YV(S->v_scale);
+        k = (unsigned long)s; /* s >= 0, below 2^31 (derive_blend()) */
+        if (k != S->cached_k) {
+            return TCM_NAME(emit_blend)(S, x, how);
+        }
+        acc = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
+        if (!(acc >= 0)) { /* a solved interval */
+            return TCM_NAME(emit_rare)(S, x, how);
+        }
+        u = NUM_G_ONE;
+        break;
+    }
+#endif
     default: /* a pending request, or degree 9 and up */
         if (derive != TCM_KEEP && (S->detour & TCM_PER_BRANCH) != 0u) {
             TCM_NAME(derive)(S);
@@ -454,7 +613,8 @@ static void TCM_NAME(set_detour)(hyst_tcm_t *S)
                 (S->forgot_level == TCM_NO_LEVEL && YV(S->forgot) != 0 ? TCM_SETTLING | TCM_BOOK
                                                                        : 0u) |
                 (S->curve != NULL && (S->curve->kind == (unsigned)HYST_CURVE_EVERETT ||
-                                      S->curve->kind == (unsigned)HYST_CURVE_EVERETT_INV)
+                                      S->curve->kind == (unsigned)HYST_CURVE_EVERETT_INV ||
+                                      S->curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE)
                      ? TCM_PER_BRANCH
                      : 0u);
 }
@@ -513,31 +673,43 @@ static void TCM_NAME(ended_not_ok)(hyst_tcm_t *S)
 /* The asymmetric kind: the current branch's G from the curve's table of
  * its direction, anchored at the current TP's place in the domain (0..1):
  * its input's, or for the compensator its output's (the drive). */
+/* The numbers solve_with() needs for the current branch of the asymmetric
+ * compensator: its coefficients, a bound on |p''|, the bracket's end and the
+ * secant to it. */
+static void TCM_NAME(newton_state)(const hyst_tcm_t *S, hyst_num_t *coef, TCM_Y *curv,
+                                   TCM_Y *w_end, TCM_Y *secant)
+{
+    const hyst_curve_t *c = S->curve;
+    const unsigned n = c->u.everett.degree;
+    /* the branch ends at its parent TP (loop closure): a bracket, and the
+     * secant from the TP to it, solve()'s start on a slow sample */
+    const int up = S->moving_end == 0u;
+    const size_t at = up ? S->n_rtp : S->n_ltp;
+    const TCM_X x_end = !up ? XV(S->xltp)[at - 1u] : at > 0u ? XV(S->xrtp)[at - 1u] : XV(S->hi);
+    const TCM_Y y_end = !up ? YV(S->yltp)[at - 1u] : at > 0u ? YV(S->yrtp)[at - 1u] : YV(S->y_hi);
+    const TCM_Y v_end = NUM_NAME(abs)(TCM_R(x_end) - YV(S->x_ctp)) * YV(S->unit);
+    unsigned i;
+    TCM_NAME(table_coefs)(up ? c->u.everett.rise : c->u.everett.fall, n,
+                          TCM_NAME(drive_anchor)(S), coef);
+    *w_end = NUM_NAME(abs)(y_end - YV(S->y_ctp)) * YV(c->u.everett.inv_span);
+    *secant = v_end > 0 ? *w_end / v_end : 0;
+    *curv = 0; /* |p''| <= sum k (k - 1) |a_k| on w in [0, 1] */
+    for (i = 0u; i + 2u <= n; ++i) {
+        const unsigned k = n - i; /* coef[i] multiplies w^k in p */
+        *curv += (TCM_Y)(k * (k - 1u)) * NUM_NAME(abs)(YV(coef[i]));
+    }
+}
+
 static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S)
 {
     const hyst_curve_t *c = S->curve;
-    const TCM_Y anchor = S->degree == HYST_HORNER_SOLVE_
-                             ? (YV(S->y_ctp) - YV(S->y_lo)) * YV(c->u.everett.inv_span)
-                             : TCM_NAME(input_anchor)(S);
-    const unsigned n = c->u.everett.degree;
-    TCM_NAME(table_coefs)(S->moving_end == 0u ? c->u.everett.rise : c->u.everett.fall, n,
-                          anchor, S->coef);
-    if (S->degree == HYST_HORNER_SOLVE_) {
-        /* the branch ends at its parent TP (loop closure): a bracket, and
-         * the secant from the TP to it, solve()'s start on a slow sample */
-        const int up = S->moving_end == 0u;
-        const size_t at = up ? S->n_rtp : S->n_ltp;
-        const TCM_X x_end = !up ? XV(S->xltp)[at - 1u] : at > 0u ? XV(S->xrtp)[at - 1u] : XV(S->hi);
-        const TCM_Y y_end = !up ? YV(S->yltp)[at - 1u] : at > 0u ? YV(S->yrtp)[at - 1u] : YV(S->y_hi);
-        const TCM_Y v_end = NUM_NAME(abs)(TCM_R(x_end) - YV(S->x_ctp)) * YV(S->unit);
-        unsigned i;
-        YV(S->w_end) = NUM_NAME(abs)(y_end - YV(S->y_ctp)) * YV(c->u.everett.inv_span);
-        YV(S->secant) = v_end > 0 ? YV(S->w_end) / v_end : 0;
-        YV(S->curv) = 0; /* |p''| <= sum k (k - 1) |a_k| on w in [0, 1] */
-        for (i = 0u; i + 2u <= n; ++i) {
-            const unsigned k = n - i; /* coef[i] multiplies w^k in p */
-            YV(S->curv) += (TCM_Y)(k * (k - 1u)) * NUM_NAME(abs)(YV(S->coef[i]));
-        }
+    if (S->degree == HYST_HORNER_BLEND_) {
+        TCM_NAME(derive_blend)(S);
+    } else if (S->degree == HYST_HORNER_SOLVE_) {
+        TCM_NAME(newton_state)(S, S->coef, &YV(S->curv), &YV(S->w_end), &YV(S->secant));
+    } else {
+        TCM_NAME(table_coefs)(S->moving_end == 0u ? c->u.everett.rise : c->u.everett.fall,
+                              c->u.everett.degree, TCM_NAME(input_anchor)(S), S->coef);
     }
 }
 
@@ -626,14 +798,20 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
     YV(S->y_hi) = YV(curve->y_hi);
     YV(S->unit) = unit;
     YV(S->rounding) = YV(curve->rounding);
-    S->degree = curve->kind == (unsigned)HYST_CURVE_POLY          ? curve->u.poly.degree
-                : curve->kind == (unsigned)HYST_CURVE_EVERETT     ? curve->u.everett.degree
-                : curve->kind == (unsigned)HYST_CURVE_EVERETT_INV ? HYST_HORNER_SOLVE_
-                                                                  : 0u;
+    S->degree = curve->kind == (unsigned)HYST_CURVE_POLY                ? curve->u.poly.degree
+                : curve->kind == (unsigned)HYST_CURVE_EVERETT           ? curve->u.everett.degree
+                : curve->kind == (unsigned)HYST_CURVE_EVERETT_INV       ? HYST_HORNER_SOLVE_
+                : curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE ? HYST_HORNER_BLEND_
+                                                                        : 0u;
     S->horner = TCM_NAME(idle_horner)(S);
-    YV(S->curv) = 0; /* solved branches: derive() */
+    YV(S->curv) = 0; /* solved and blended branches: derive() */
     YV(S->w_end) = 0;
     YV(S->secant) = 0;
+    YV(S->v_scale) = 0;
+    for (k = 0u; k < 4u; ++k) {
+        YV(S->blend[k]) = 0;
+    }
+    S->cached_k = ULONG_MAX;
     for (k = 0u; k < HYST_MAX_DEGREE; ++k) { /* the asymmetric kind's: per branch, settle() */
         YV(S->coef[k]) = curve->kind == (unsigned)HYST_CURVE_POLY && k < S->degree
                              ? YV(curve->u.poly.a[k])
@@ -901,7 +1079,8 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
     if (d > XV(S->db_reach)) {
         const TCM_Y full = TCM_D(d, (TCM_X)0);
         XV(S->db_reach) = d;
-        if (S->degree == HYST_HORNER_SOLVE_) { /* no E of the desired output: the drive range */
+        if (S->degree == HYST_HORNER_SOLVE_ || S->degree == HYST_HORNER_BLEND_) {
+            /* no E of the desired output: the drive range */
             YV(S->db_err) = YV(S->y_hi) - YV(S->y_lo);
         } else if ((S->detour & TCM_PER_BRANCH) != 0u) { /* the loop [b, a]'s height at its middle */
             const TCM_X m = TCM_MID(b, a);
@@ -1262,8 +1441,9 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
     const unsigned deg = S->degree;
     TCM_X w0 = XV(S->window[0]), w1 = XV(S->window[1]);
     TCM_Y g_prev = YV(S->g_prev);
-    if (S->horner == HYST_HORNER_REQUEST_ || deg == HYST_HORNER_SOLVE_) {
-        return i; /* a pending request: step_slow() serves it; solved: step by step */
+    if (S->horner == HYST_HORNER_REQUEST_ || deg == HYST_HORNER_SOLVE_ ||
+        deg == HYST_HORNER_BLEND_) {
+        return i; /* a pending request: step_slow() serves it; solved, blended: step by step */
     }
     /* One loop per direction: a selected update of w0 or w1 in one loop put
      * a select on the loop-carried compare (measured 0.41 vs 0.36 of
@@ -1315,8 +1495,9 @@ static hyst_status_t TCM_NAME(block)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, s
         }
         /* x[i] left the window, or the branch is solved (sample(): the
          * same arithmetic as step()) */
-        y[i] = S->degree == HYST_HORNER_SOLVE_ ? TCM_NAME(sample)(S, x[i])
-                                               : TCM_NAME(step_slow)(S, x[i]);
+        y[i] = S->degree == HYST_HORNER_SOLVE_ || S->degree == HYST_HORNER_BLEND_
+                   ? TCM_NAME(sample)(S, x[i])
+                   : TCM_NAME(step_slow)(S, x[i]);
         if (S->status < 0) {
             failed = 1;
         } else if (S->status > worst) {

@@ -43,37 +43,9 @@ static rng_t rng;
 void setUp(void) { rng_seed(&rng, 2718u); }
 void tearDown(void) {}
 
-/* The reference's output if its next input were x; r unchanged. */
-static double response(const ref_everett_t *r, double x)
-{
-    probe.e = r->e;
-    probe.n = r->n;
-    probe.x = r->x;
-    probe.y = r->y;
-    memcpy(probe.tx, r->tx, (size_t)r->n * sizeof r->tx[0]);
-    memcpy(probe.ty, r->ty, (size_t)r->n * sizeof r->ty[0]);
-    return ref_everett_step(&probe, x);
-}
 
-/* The exact inverse: the input whose response is y (the response increases
- * with x from y_lo at lo to y_hi at hi, whatever the state). */
-static double exact_drive(const ref_everett_t *r, double y)
-{
-    double a = r->e->lo, b = r->e->hi;
-    int k;
-    for (k = 0; k < 200 && b - a > 0.0; ++k) {
-        const double m = 0.5 * (a + b);
-        if (m <= a || m >= b) {
-            break;
-        }
-        if (response(r, m) < y) {
-            a = m;
-        } else {
-            b = m;
-        }
-    }
-    return 0.5 * (a + b);
-}
+/* The exact inverse: the input whose response is y. */
+static double exact_drive(const ref_everett_t *r, double y) { return ref_everett_inverse(r, y, &probe); }
 
 /* An accepted random E, its compensator C and model M. */
 static hyst_everett_t accepted_e(void)

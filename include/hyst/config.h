@@ -18,6 +18,8 @@
  * | HYST_INV_MAX_ITER   | 12      | bound on the work of an inverted polynomial per sample      | no     |
  * | HYST_INV_TABLE      | 256     | intervals of a compensator's inverse table (HYST_DEFINE_INVERSE) | no |
  * | HYST_INV_TABLE_TOL  | 5e-6    | error of an inverse table's interval, of the drive range, above which it is evaluated exactly | no |
+ * | HYST_EVERETT_INV_ROWS | 16    | anchors - 1 per direction of the asymmetric compensator's table | no |
+ * | HYST_EVERETT_INV_INTERVALS | 32 | intervals per anchor of that table                       | no     |
  * | HYST_MAX_ROUNDING   | 1e-4    | largest rounding bound of a branch evaluation init accepts, of the output range | no |
  * | HYST_CODE_BITS      | 16      | widest DAC code of the code variant (1..24)                 | yes    |
  * | HYST_MONOTONE_DEPTH | 20      | dyadic depth of the monotonicity proof at init              | no     |
@@ -91,6 +93,15 @@
 #endif
 #ifndef HYST_INV_TABLE_TOL
 #define HYST_INV_TABLE_TOL 5e-6
+#endif
+/* The asymmetric compensator's table (curve.h,
+ * hyst_*_curve_everett_inverse_table): anchors - 1 per direction, and
+ * intervals per anchor (docs/pi_and_inverse.md: the size/error trade-off). */
+#ifndef HYST_EVERETT_INV_ROWS
+#define HYST_EVERETT_INV_ROWS 16
+#endif
+#ifndef HYST_EVERETT_INV_INTERVALS
+#define HYST_EVERETT_INV_INTERVALS 32
 #endif
 
 #ifndef HYST_CODE_BITS

@@ -56,12 +56,19 @@ typedef enum hyst_curve_kind {
     HYST_CURVE_PWL_INV = 4,  /**< f0^-1 of a piecewise-linear f0: exact */
     HYST_CURVE_INV_TABLE = 5, /**< f0^-1 of a polynomial: cubic pieces on a uniform grid (inline) */
     HYST_CURVE_EVERETT = 6,  /**< asymmetric: a two-variable branch function E (inline) */
-    HYST_CURVE_EVERETT_INV = 7 /**< the asymmetric kind's inverse: Newton per branch, bracketed */
+    HYST_CURVE_EVERETT_INV = 7, /**< the asymmetric kind's inverse: Newton per branch, bracketed */
+    /** the asymmetric kind's inverse tabulated: rows of cubic pieces over
+     *  the branch's start, blended per branch (inline) */
+    HYST_CURVE_EVERETT_INV_TABLE = 8
 } hyst_curve_kind_t;
 
 /** Numbers of the table of an HYST_CURVE_INV_TABLE curve with @p intervals
  *  intervals: four per interval, and four for the end of the range. */
 #define HYST_INV_TABLE_LEN(intervals) (4u * ((intervals) + 1u))
+
+/** Numbers of the table of an HYST_CURVE_EVERETT_INV_TABLE curve: both
+ *  directions, @p rows + 1 rows each, HYST_INV_TABLE_LEN(@p intervals) per row. */
+#define HYST_EVERETT_INV_TABLE_LEN(rows, intervals) (2u * ((rows) + 1u) * HYST_INV_TABLE_LEN(intervals))
 
 /** Highest total degree of a branch function E (hyst_everett_t). */
 #define HYST_EVERETT_MAX_DEGREE 4
@@ -146,7 +153,21 @@ typedef struct hyst_curve {
              *  taken (2^-20 in float, 2^-40 in double); 0 for EVERETT */
             hyst_num_t tol;
             hyst_num_t branch_rounding; /**< the forward curve's rounding bound */
-        } everett; /**< EVERETT and EVERETT_INV */
+            /** EVERETT_INV_TABLE: the caller's table, HYST_EVERETT_INV_TABLE_LEN(rows,
+             *  intervals) numbers: direction (rising, falling), then row r of the
+             *  branch's start a = r / rows (rising: t of its LTP; falling: s of its
+             *  RTP), then as an INV_TABLE: interval k holds the drive step (drive
+             *  units) at s = v intervals / V(a) as c0 + t (c1 + t (c2 + t c3)),
+             *  v the output step, V(a) the branch's whole output step; c0 = -1 in
+             *  every row marks an interval solved instead; NULL for the other kinds */
+            hyst_cptr_t table;
+            size_t rows;      /**< anchors - 1 (>= 3) */
+            size_t intervals; /**< intervals per row (>= 1) */
+            size_t exact;     /**< intervals (per direction, all rows) solved instead */
+            hyst_wide_t max_err; /**< worst measured error / drive span (EVERETT_INV_TABLE) */
+            /** V(a) per direction, a polynomial in the anchor, highest power first */
+            hyst_num_t v_end[2][HYST_EVERETT_MAX_DEGREE + 1];
+        } everett; /**< EVERETT, EVERETT_INV and EVERETT_INV_TABLE */
         struct {
             hyst_curve_poly_t fwd;  /**< the forward polynomial's G (the exact intervals) */
             hyst_num_t span;        /**< input span of f0 (the drive range) */
@@ -324,9 +345,49 @@ hyst_status_t hyst_f64_curve_inverse_table(hyst_curve_t *inv, const hyst_curve_t
 /**@}*/
 
 /**
- * @brief Worst error of a tabulated inverse (HYST_CURVE_INV_TABLE) measured
- *        at init, as a fraction of the drive range; 0 for the other kinds
- *        (exact) and for NULL.
+ * @name Tabulated inverse of an asymmetric curve
+ * @brief Prepares the asymmetric kind's compensator (HYST_CURVE_EVERETT_INV,
+ *        hyst_curve_inverse()) with its branches tabulated: a sample costs an
+ *        index and one cubic, inline, whatever the branch.
+ *
+ * The inverse of a branch depends on where it starts (its anchor a: the
+ * drive of its turning point over the drive range). For @p rows + 1 anchors
+ * a = r / rows per direction, the drive step is tabulated as in
+ * hyst_*_curve_inverse_table() on @p intervals intervals uniform in the
+ * output step (cubic Hermite pieces with slopes limited as Fritsch and
+ * Carlson do). A branch blends four rows around its anchor with cubic
+ * Lagrange weights (its slow sample derives them); the blended cubic of the
+ * interval a sample falls in is kept, so the next sample in it costs one
+ * cubic. Init measures every interval between every two rows against the
+ * exact inverse (4 anchors, 8 points); an interval that misses
+ * HYST_INV_TABLE_TOL of the drive range anywhere is solved instead, in every
+ * row, as hyst_curve_inverse()'s compensator does (Newton's iteration,
+ * bracketed, out of line). hyst_curve_inverse_error() reports the worst
+ * measured error. The drive is monotone along a branch (the engine's guard).
+ * The table is caller storage of HYST_EVERETT_INV_TABLE_LEN(@p rows,
+ * @p intervals) numbers that must outlive the curve, unchanged.
+ * @param[out] inv prepared inverse curve.
+ * @param[in]  fwd an asymmetric curve (hyst_*_curve_from_everett()) of the same variant.
+ * @param[out] table HYST_EVERETT_INV_TABLE_LEN(rows, intervals) numbers.
+ * @param[in]  rows 3 .. 4096 (HYST_EVERETT_INV_ROWS by default).
+ * @param[in]  intervals 1 .. 2^20 (HYST_EVERETT_INV_INTERVALS by default).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT (a curve of another variant),
+ *         HYST_ERR_ARG (not an asymmetric curve, or rows or intervals out of
+ *         range) or HYST_ERR_NOT_INVERTIBLE.
+ */
+/**@{*/
+hyst_status_t hyst_f32_curve_everett_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                   float *table, size_t rows, size_t intervals);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_everett_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                   double *table, size_t rows, size_t intervals);
+#endif
+/**@}*/
+
+/**
+ * @brief Worst error of a tabulated inverse (HYST_CURVE_INV_TABLE,
+ *        HYST_CURVE_EVERETT_INV_TABLE) measured at init, as a fraction of the
+ *        drive range; 0 for the other kinds (exact) and for NULL.
  */
 hyst_wide_t hyst_curve_inverse_error(const hyst_curve_t *curve);
 
@@ -399,6 +460,7 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 #define hyst_curve_eval HYST_DEFAULT_NAME_(curve_eval)
 #define hyst_curve_g HYST_DEFAULT_NAME_(curve_g)
 #define hyst_curve_inverse_table HYST_DEFAULT_NAME_(curve_inverse_table)
+#define hyst_curve_everett_inverse_table HYST_DEFAULT_NAME_(curve_everett_inverse_table)
 /**@}*/
 
 #ifdef __cplusplus

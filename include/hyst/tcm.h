@@ -125,6 +125,13 @@ typedef struct hyst_tcm {
     hyst_num_t curv;
     hyst_num_t w_end;  /**< the asymmetric compensator: its branch's end (the parent TP), as w */
     hyst_num_t secant; /**< the same: w per unit of G's argument from the TP to that end */
+    /** the tabulated asymmetric compensator (HYST_CURVE_EVERETT_INV_TABLE):
+     *  the branch's table index per output step, the weights of its four
+     *  rows (table: the first), and the interval whose blended cubic coef
+     *  holds (-1: none) */
+    hyst_num_t v_scale;
+    hyst_num_t blend[4];
+    unsigned long cached_k;
     /** the pieces of a tabulated inverse (HYST_CURVE_INV_TABLE, evaluated on
      *  the per-sample path with degree 0), else NULL */
     hyst_cptr_t table;

@@ -101,3 +101,33 @@ double ref_everett_walk(rng_t *rng, double *v, double lo, double hi)
     *v = *v < lo ? lo : (*v > hi ? hi : *v);
     return *v;
 }
+
+double ref_everett_response(const ref_everett_t *r, double x, ref_everett_t *scratch)
+{
+    scratch->e = r->e;
+    scratch->fn = r->fn;
+    scratch->n = r->n;
+    scratch->x = r->x;
+    scratch->y = r->y;
+    memcpy(scratch->tx, r->tx, (size_t)r->n * sizeof r->tx[0]);
+    memcpy(scratch->ty, r->ty, (size_t)r->n * sizeof r->ty[0]);
+    return ref_everett_step(scratch, x);
+}
+
+double ref_everett_inverse(const ref_everett_t *r, double y, ref_everett_t *scratch)
+{
+    double a = r->e->lo, b = r->e->hi;
+    int k;
+    for (k = 0; k < 200 && b - a > 0.0; ++k) {
+        const double m = 0.5 * (a + b);
+        if (m <= a || m >= b) {
+            break;
+        }
+        if (ref_everett_response(r, m, scratch) < y) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    return 0.5 * (a + b);
+}

@@ -35,4 +35,11 @@ hyst_everett_t ref_everett_random(rng_t *rng);
  * *v: the walk's state, start it at any point of the domain. */
 double ref_everett_walk(rng_t *rng, double *v, double lo, double hi);
 
+/* The reference's output if its next input were x; r unchanged (scratch:
+ * a reference to work in). */
+double ref_everett_response(const ref_everett_t *r, double x, ref_everett_t *scratch);
+/* The exact inverse: the input whose response is y (the response increases
+ * with x from y_lo at lo to y_hi at hi, whatever the state), bisected. */
+double ref_everett_inverse(const ref_everett_t *r, double y, ref_everett_t *scratch);
+
 #endif

@@ -1,0 +1,392 @@
+/* SPDX-License-Identifier: MIT */
+/* The asymmetric kind's tabulated compensator (curve.h,
+ * hyst_*_curve_everett_inverse_table()): rows of cubic pieces of the drive
+ * step over the branch's output step, one row per anchor (the start of the
+ * branch), for both directions; init measures the blend a branch makes of
+ * four rows against the exact inverse. All in hyst_wide_t; the table is
+ * stored in the variant's type. */
+#include <float.h>
+#include <string.h>
+
+#include "hyst/curve.h"
+#include "hyst_util.h"
+
+#define EV_N HYST_EVERETT_MAX_DEGREE
+
+/* Anchors and output steps probed per interval between two rows. */
+#define BLEND_ANCHORS 4u
+#define BLEND_PROBES 8u
+
+/* Largest row and interval counts: the index s keeps its integer part exact
+ * in float, and rows * intervals stays far from size_t's end. */
+#define MAX_ROWS 4096ul
+#define MAX_INTERVALS ((unsigned long)1 << 20)
+
+/* A branch of the forward model, in the drive step w (0..1 of the span):
+ * p(w) = w q(w), q's coefficients (highest power first) from the curve's
+ * rows at the anchor, as the engine derives them (tcm_engine.h). */
+typedef struct {
+    unsigned n;
+    hyst_wide_t q[EV_N];
+    hyst_wide_t width; /* W: the drive step to the end of the domain */
+    hyst_wide_t range; /* V = p(W) */
+} branch_t;
+
+static void branch_at(branch_t *b, const hyst_curve_t *c, int fall, hyst_wide_t anchor)
+{
+    const hyst_num_t *row = fall ? c->u.everett.fall : c->u.everett.rise;
+    unsigned i, k, at = 0u;
+    hyst_wide_t w = 0;
+    b->n = c->u.everett.degree;
+    for (i = 0u; i < b->n; ++i) { /* row i: i + 1 entries, anchor powers highest first */
+        hyst_wide_t acc = 0;
+        for (k = 0u; k <= i; ++k) {
+            acc = acc * anchor + hyst_num_get(&row[at + k], c->variant);
+        }
+        b->q[i] = acc;
+        at += i + 1u;
+    }
+    b->width = fall ? anchor : 1 - anchor;
+    for (i = 0u; i < b->n; ++i) {
+        w = w * b->width + b->q[i];
+    }
+    b->range = w * b->width;
+}
+
+/* p(w) and p'(w). */
+static hyst_wide_t branch_p(const branch_t *b, hyst_wide_t w, hyst_wide_t *dp)
+{
+    hyst_wide_t q = 0, dq = 0;
+    unsigned i;
+    for (i = 0u; i < b->n; ++i) {
+        dq = dq * w + q;
+        q = q * w + b->q[i];
+    }
+    *dp = q + w * dq;
+    return q * w;
+}
+
+/* The w in [0, W] with p(w) = v: Newton's iteration from `guess`, bisection
+ * where a step would leave the bracket (p increases on it). */
+static hyst_wide_t branch_solve(const branch_t *b, hyst_wide_t v, hyst_wide_t guess)
+{
+    const hyst_wide_t tiny = 4 * HYST_WIDE_EPS * b->width;
+    hyst_wide_t lo = 0, hi = b->width;
+    hyst_wide_t w = guess > 0 && guess < hi ? guess : hi / 2;
+    unsigned it;
+    if (!(v > 0)) {
+        return 0;
+    }
+    if (!(v < b->range)) {
+        return b->width;
+    }
+    for (it = 0u; it < 200u; ++it) {
+        hyst_wide_t dp, next;
+        const hyst_wide_t f = branch_p(b, w, &dp) - v;
+        if (f > 0) {
+            hi = w;
+        } else {
+            lo = w;
+        }
+        next = dp > 0 ? w - f / dp : lo - 1;
+        if (!(next > lo && next < hi)) {
+            next = lo + (hi - lo) / 2;
+        }
+        if (hyst_wide_abs(next - w) <= tiny || !(hi - lo > tiny)) {
+            return next;
+        }
+        w = next;
+    }
+    return w;
+}
+
+/* V(a) = p_a(W(a)) as a polynomial in the anchor (degree n, highest power
+ * first, into v[0..n]): each row's polynomial times W^(n - i), W = 1 - a
+ * rising, a falling. */
+static void range_poly(const hyst_curve_t *c, int fall, hyst_wide_t *v)
+{
+    const hyst_num_t *row = fall ? c->u.everett.fall : c->u.everett.rise;
+    const unsigned n = c->u.everett.degree;
+    hyst_wide_t acc[EV_N + 1]; /* acc[m]: coefficient of a^m */
+    unsigned i, k, m, at = 0u;
+    memset(acc, 0, sizeof acc);
+    for (i = 0u; i < n; ++i) {
+        const unsigned power = n - i; /* of W */
+        hyst_wide_t wp[EV_N + 1];     /* W^power in a */
+        memset(wp, 0, sizeof wp);
+        wp[0] = 1;
+        for (k = 0u; k < power; ++k) { /* times (1 - a) or a */
+            for (m = k + 1u; m > 0u; --m) {
+                wp[m] = fall ? wp[m - 1u] : wp[m] - wp[m - 1u];
+            }
+            wp[0] = fall ? 0 : wp[0];
+        }
+        for (k = 0u; k <= i; ++k) { /* the row's entry of a^(i - k) */
+            const hyst_wide_t r = hyst_num_get(&row[at + k], c->variant);
+            for (m = 0u; m <= power; ++m) {
+                acc[m + i - k] += r * wp[m];
+            }
+        }
+        at += i + 1u;
+    }
+    for (m = 0u; m <= n; ++m) {
+        v[m] = acc[n - m];
+    }
+}
+
+/* The build: the curve, its table, one direction's rows. */
+typedef struct {
+    hyst_curve_t *c;
+    hyst_ptr_t table;
+    size_t rows, intervals, row_len;
+    hyst_wide_t span, eps, worst;
+} build_t;
+
+static size_t row_at(const build_t *b, int fall, size_t r)
+{
+    return ((size_t)(fall ? b->rows + 1u : 0u) + r) * b->row_len;
+}
+
+/* V(a) as the engine evaluates it: the stored polynomial. */
+static hyst_wide_t range_at(const build_t *b, int fall, hyst_wide_t a)
+{
+    const hyst_num_t *v = b->c->u.everett.v_end[fall ? 1 : 0];
+    hyst_wide_t acc = 0;
+    unsigned m;
+    for (m = 0u; m <= b->c->u.everett.degree; ++m) {
+        acc = acc * a + hyst_num_get(&v[m], b->c->variant);
+    }
+    return acc;
+}
+
+/* Row r: the exact drive step at the knots s = k (output step k V / N),
+ * slopes limited as Fritsch and Carlson do, cubic Hermite pieces; entry N
+ * the end of the branch. A row whose branch is empty (W or V not above 0)
+ * is all zeros: no drive step. */
+static void fill_row(build_t *b, int fall, size_t r)
+{
+    const hyst_wide_t a = (hyst_wide_t)r / (hyst_wide_t)b->rows;
+    const size_t base = row_at(b, fall, r), n = b->intervals;
+    const hyst_wide_t range = range_at(b, fall, a);
+    branch_t br;
+    hyst_wide_t d_prev = 0, m_prev = 0, w = 0;
+    size_t k;
+    unsigned i;
+    branch_at(&br, b->c, fall, a);
+    if (!(br.width > 0) || !(range > 0)) {
+        for (k = 0u; k < b->row_len; ++k) {
+            (void)hyst_table_put_(b->table, base + k, b->c->variant, 0);
+        }
+        return;
+    }
+    for (k = 0u; k <= n; ++k) {
+        const hyst_wide_t v = (hyst_wide_t)k * range / (hyst_wide_t)n;
+        hyst_wide_t dp, d, m;
+        w = branch_solve(&br, v, w);
+        (void)branch_p(&br, w, &dp);
+        d = w * b->span;
+        m = dp > 0 ? range / (hyst_wide_t)n * b->span / dp : -1; /* -1: infinite */
+        if (k > 0u) {
+            const hyst_wide_t sec = 3 * (d - d_prev);
+            hyst_wide_t m0 = m_prev, m1 = m, c[4];
+            /* Fritsch-Carlson on both ends of the piece (each slope also
+             * limited by its other secant as the next piece takes it) */
+            m0 = m0 < 0 || m0 > sec ? sec : m0;
+            m1 = m1 < 0 || m1 > sec ? sec : m1;
+            c[0] = d_prev;
+            c[1] = m0;
+            c[2] = 3 * (d - d_prev) - 2 * m0 - m1;
+            c[3] = m0 + m1 - 2 * (d - d_prev);
+            for (i = 0u; i < 4u; ++i) {
+                (void)hyst_table_put_(b->table, base + 4u * (k - 1u) + i, b->c->variant, c[i]);
+            }
+        }
+        d_prev = d;
+        m_prev = m;
+    }
+    (void)hyst_table_put_(b->table, base + 4u * n, b->c->variant, br.width * b->span);
+    for (i = 1u; i < 4u; ++i) {
+        (void)hyst_table_put_(b->table, base + 4u * n + i, b->c->variant, 0);
+    }
+}
+
+/* The four rows a branch at anchor a blends and their weights, as the
+ * engine derives them (tcm_engine.h, derive_blend()): cubic Lagrange on the
+ * rows base .. base + 3 around a rows. Returns base. */
+static size_t blend_weights(size_t rows, hyst_wide_t x, hyst_wide_t *l)
+{
+    size_t j = (size_t)x, base;
+    j = j > rows - 1u ? rows - 1u : j;
+    base = j < 1u ? 0u : (j - 1u > rows - 3u ? rows - 3u : j - 1u);
+    x -= (hyst_wide_t)base;
+    l[0] = -(x - 1) * (x - 2) * (x - 3) / 6;
+    l[1] = x * (x - 2) * (x - 3) / 2;
+    l[2] = -x * (x - 1) * (x - 3) / 2;
+    l[3] = x * (x - 1) * (x - 2) / 6;
+    return base;
+}
+
+static hyst_wide_t entry(const build_t *b, size_t i)
+{
+#if HYST_ENABLE_F64
+    if (b->c->variant == (unsigned)HYST_VARIANT_F64) {
+        return (hyst_wide_t)b->table.f64[i];
+    }
+#endif
+    return (hyst_wide_t)b->table.f32[i];
+}
+
+/* Interval k between rows r and r + 1 of a direction, against the exact
+ * inverse, at BLEND_ANCHORS anchors (r itself among them) and BLEND_PROBES
+ * points each: the blend's drive d at the point is taken as exact for its
+ * output step v = p(d) (one evaluation of the branch, no solve), and the
+ * blend evaluated where the sample would for v. Plus a bound on the
+ * rounding of the sample's arithmetic in the variant's type: the weights
+ * (5 eps of each product) and the blend's four products and three sums
+ * (4 eps), the cubic's (4 eps of its terms), the anchor's and the index's
+ * (2 eps of the span each). Returns the worst error (drive units). */
+static hyst_wide_t measure(const build_t *b, int fall, size_t r, size_t k)
+{
+    hyst_wide_t worst = 0;
+    unsigned ia, ip, i, q;
+    for (ia = 0u; ia < BLEND_ANCHORS; ++ia) {
+        const hyst_wide_t x = (hyst_wide_t)r + (hyst_wide_t)ia / (hyst_wide_t)BLEND_ANCHORS;
+        const hyst_wide_t a = x / (hyst_wide_t)b->rows;
+        hyst_wide_t l[4], c[4], mag = 0, terms = 0, range, at_anchor = 0, end;
+        branch_t br;
+        const size_t base = blend_weights(b->rows, x, l);
+        branch_at(&br, b->c, fall, a);
+        range = range_at(b, fall, a);
+        for (i = 0u; i < 4u; ++i) {
+            c[i] = 0;
+            for (q = 0u; q < 4u; ++q) {
+                const hyst_wide_t e = entry(b, row_at(b, fall, base + q) + 4u * k + i);
+                c[i] += l[q] * e;
+                mag += hyst_wide_abs(l[q] * e);
+            }
+            terms += hyst_wide_abs(c[i]);
+        }
+        if (!(range > 0) || !(br.width > 0)) { /* an empty branch: no drive step */
+            continue;
+        }
+        end = br.width * b->span;
+        for (ip = 0u; ip < BLEND_PROBES; ++ip) {
+            const hyst_wide_t t = ((hyst_wide_t)ip + (hyst_wide_t)0.5) / (hyst_wide_t)BLEND_PROBES;
+            hyst_wide_t d = c[0] + t * (c[1] + t * (c[2] + t * c[3])), dp, s, err;
+            d = d < 0 ? 0 : (d > end ? end : d);
+            s = branch_p(&br, d / b->span, &dp) * (hyst_wide_t)b->intervals / range;
+            if (!(s >= (hyst_wide_t)k && s < (hyst_wide_t)k + 1)) {
+                continue; /* in a neighbour: measured there */
+            }
+            s -= (hyst_wide_t)k;
+            err = hyst_wide_abs(c[0] + s * (c[1] + s * (c[2] + s * c[3])) - d);
+            at_anchor = err > at_anchor ? err : at_anchor;
+        }
+        at_anchor += b->eps * (9 * mag + 4 * terms + 4 * b->span);
+        worst = at_anchor > worst ? at_anchor : worst;
+    }
+    return worst;
+}
+
+/* Marks interval k of every row of a direction for Newton's iteration: the
+ * blend of any four rows there is then -1 (the weights sum to 1). */
+static void mark(build_t *b, int fall, size_t k)
+{
+    size_t r;
+    unsigned i;
+    for (r = 0u; r <= b->rows; ++r) {
+        for (i = 0u; i < 4u; ++i) {
+            (void)hyst_table_put_(b->table, row_at(b, fall, r) + 4u * k + i, b->c->variant,
+                                  i == 0u ? -1 : 0);
+        }
+    }
+    ++b->c->u.everett.exact;
+}
+
+static void fill_direction(build_t *b, int fall)
+{
+    size_t r, k;
+    for (r = 0u; r <= b->rows; ++r) {
+        fill_row(b, fall, r);
+    }
+    for (k = 0u; k < b->intervals; ++k) {
+        hyst_wide_t worst = 0;
+        for (r = 0u; r < b->rows; ++r) {
+            const hyst_wide_t err = measure(b, fall, r, k);
+            worst = err > worst ? err : worst;
+        }
+        if (!(worst <= (hyst_wide_t)HYST_INV_TABLE_TOL * b->span)) {
+            mark(b, fall, k);
+        } else if (worst > b->worst) {
+            b->worst = worst;
+        }
+    }
+}
+
+/* Counts in range; functions, not inline compares: where size_t is 16 bits
+ * the upper tests are always true (-Wtype-limits). */
+static int rows_ok(unsigned long n) { return n >= 3ul && n <= MAX_ROWS; }
+static int intervals_ok(unsigned long n) { return n >= 1ul && n <= MAX_INTERVALS; }
+
+hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                hyst_ptr_t table, size_t rows, size_t intervals,
+                                                unsigned variant)
+{
+    hyst_curve_t out;
+    build_t b;
+    unsigned m;
+    int dir;
+    hyst_status_t st = hyst_curve_check(fwd);
+    if (inv == NULL || table.f32 == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    if (fwd->variant != variant) {
+        return HYST_ERR_LAYOUT;
+    }
+    if (fwd->kind != (unsigned)HYST_CURVE_EVERETT || !rows_ok((unsigned long)rows) ||
+        !intervals_ok((unsigned long)intervals)) {
+        return HYST_ERR_ARG;
+    }
+    st = hyst_curve_inverse(&out, fwd); /* HYST_CURVE_EVERETT_INV: the solved intervals' */
+    if (st != HYST_OK) {
+        return st;
+    }
+    out.kind = HYST_CURVE_EVERETT_INV_TABLE;
+    out.u.everett.table.f32 = table.f32;
+#if HYST_ENABLE_F64
+    if (variant == (unsigned)HYST_VARIANT_F64) {
+        out.u.everett.table.f64 = table.f64;
+    }
+#endif
+    out.u.everett.rows = rows;
+    out.u.everett.intervals = intervals;
+    out.u.everett.exact = 0u;
+    for (dir = 0; dir < 2; ++dir) {
+        hyst_wide_t v[EV_N + 1];
+        range_poly(fwd, dir, v);
+        for (m = 0u; m <= (unsigned)EV_N; ++m) {
+            (void)hyst_num_set(&out.u.everett.v_end[dir][m], variant,
+                               m <= fwd->u.everett.degree ? v[m] : 0);
+        }
+    }
+    memset(&b, 0, sizeof b);
+    b.c = &out;
+    b.table = table;
+    b.rows = rows;
+    b.intervals = intervals;
+    b.row_len = HYST_INV_TABLE_LEN(intervals);
+    b.span = hyst_num_get(&out.u.everett.span, variant);
+    b.eps = variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_EPSILON : HYST_WIDE_EPS;
+    fill_direction(&b, 0);
+    fill_direction(&b, 1);
+    out.u.everett.max_err = b.worst / b.span;
+    /* one evaluation's error in the drive: the table's, or a solve's */
+    if (b.worst > hyst_num_get(&out.rounding, variant)) {
+        (void)hyst_num_set(&out.rounding, variant, b.worst);
+    }
+    *inv = out;
+    return HYST_OK;
+}
