@@ -491,6 +491,28 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_blend)(hyst_tcm_t *S, TCM_X x, const int
 }
 #endif
 
+/* A sample of the tabulated asymmetric compensator on its branch: one cubic
+ * where the interval is the one blended last (blend_g()'s numbers). */
+#ifndef NUM_FIXED
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
+    const TCM_Y s = u * YV(S->v_scale);
+    const unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 (derive_blend()) */
+    TCM_Y g, y;
+    if (k != S->cached_k) {
+        return TCM_NAME(emit_blend)(S, x, how);
+    }
+    g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
+    if (!(g >= 0)) { /* a solved interval */
+        return TCM_NAME(emit_rare)(S, x, how);
+    }
+    y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
+    YV(S->y_prev) = y;
+    return y;
+}
+#endif
+
 /* What a slow sample's emit() derives first (a constant per call site):
  * nothing (the branch is cached), or for the asymmetric kinds the new
  * branch's coefficients, rising or falling. */
@@ -556,25 +578,13 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
         }
         return TCM_NAME(emit_solved)(S, x, how);
 #ifndef NUM_FIXED
-    case HYST_HORNER_BLEND_: { /* the tabulated asymmetric compensator: blend_g() */
-        TCM_Y s;
-        unsigned long k;
+    case HYST_HORNER_BLEND_: /* the tabulated asymmetric compensator: out of line, as the
+                              * solved one, so that the other kinds' paths keep their layout */
         if (derive != TCM_KEEP) { /* a new branch: no interval blended yet */
             TCM_NAME(derive)(S);
             return TCM_NAME(emit_blend)(S, x, how);
         }
-        s = u * YV(S->v_scale);
-        k = (unsigned long)s; /* s >= 0, below 2^31 (derive_blend()) */
-        if (k != S->cached_k) {
-            return TCM_NAME(emit_blend)(S, x, how);
-        }
-        acc = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
-        if (!(acc >= 0)) { /* a solved interval */
-            return TCM_NAME(emit_rare)(S, x, how);
-        }
-        u = NUM_G_ONE;
-        break;
-    }
+        return TCM_NAME(emit_blended)(S, x, how);
 #endif
     default: /* a pending request, or degree 9 and up */
         if (derive != TCM_KEEP && (S->detour & TCM_PER_BRANCH) != 0u) {

@@ -125,13 +125,6 @@ typedef struct hyst_tcm {
     hyst_num_t curv;
     hyst_num_t w_end;  /**< the asymmetric compensator: its branch's end (the parent TP), as w */
     hyst_num_t secant; /**< the same: w per unit of G's argument from the TP to that end */
-    /** the tabulated asymmetric compensator (HYST_CURVE_EVERETT_INV_TABLE):
-     *  the branch's table index per output step, the weights of its four
-     *  rows (table: the first), and the interval whose blended cubic coef
-     *  holds (-1: none) */
-    hyst_num_t v_scale;
-    hyst_num_t blend[4];
-    unsigned long cached_k;
     /** the pieces of a tabulated inverse (HYST_CURVE_INV_TABLE, evaluated on
      *  the per-sample path with degree 0), else NULL */
     hyst_cptr_t table;
@@ -168,6 +161,15 @@ typedef struct hyst_tcm {
     unsigned done_reset;     /**< the request counters applied, by the stepping context */
     unsigned done_clear;
     unsigned done_deadband;
+    /* Last, so that the fields the per-sample paths read keep their
+     * offsets (and their short encodings). */
+    /** the tabulated asymmetric compensator (HYST_CURVE_EVERETT_INV_TABLE):
+     *  the branch's table index per output step, the weights of its four
+     *  rows (table: the first), and the interval whose blended cubic coef
+     *  holds (-1: none) */
+    hyst_num_t v_scale;
+    hyst_num_t blend[4];
+    unsigned long cached_k;
 } hyst_tcm_t;
 
 /**
