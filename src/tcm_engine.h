@@ -403,9 +403,6 @@ HYST_INLINE TCM_Y TCM_NAME(branch_y)(const hyst_tcm_t *S, TCM_X x)
 }
 
 static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how);
-#ifndef NUM_FIXED
-static TCM_NOINLINE TCM_Y TCM_NAME(emit_blend)(hyst_tcm_t *S, TCM_X x, const int how);
-#endif
 static void TCM_NAME(close_window)(hyst_tcm_t *S);
 
 /* Float evaluation of an increasing G is not monotone at the rounding level
@@ -468,40 +465,22 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const in
     return y;
 }
 
-/* A sample of the tabulated asymmetric compensator outside the blended
- * interval: blends its interval (the last one, N, past the branch's end by
- * rounding) and ends as emit() does (the numbers blend_g() gives). */
+/* A sample of the tabulated asymmetric compensator: one cubic where the
+ * interval is the one blended last; else (and always after derive_blend())
+ * the interval is blended first (the last one, N, past the branch's end by
+ * rounding). Ends as emit() does, with the numbers blend_g() gives. */
 #ifndef NUM_FIXED
-static TCM_NOINLINE TCM_Y TCM_NAME(emit_blend)(hyst_tcm_t *S, TCM_X x, const int how)
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
 {
     const unsigned long n = (unsigned long)S->curve->u.everett.intervals;
     const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
     const TCM_Y s = u * YV(S->v_scale);
-    const unsigned long k = s < (TCM_Y)n ? (unsigned long)s : n;
-    TCM_Y g, y;
-    TCM_NAME(blend_coefs)(S, k, S->coef);
-    S->cached_k = k;
-    g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
-    if (!(g >= 0)) { /* a solved interval */
-        return TCM_NAME(emit_rare)(S, x, how);
-    }
-    y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
-    YV(S->y_prev) = y;
-    return y;
-}
-#endif
-
-/* A sample of the tabulated asymmetric compensator on its branch: one cubic
- * where the interval is the one blended last (blend_g()'s numbers). */
-#ifndef NUM_FIXED
-static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
-{
-    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
-    const TCM_Y s = u * YV(S->v_scale);
-    const unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 (derive_blend()) */
+    unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 (derive_blend()) */
     TCM_Y g, y;
     if (k != S->cached_k) {
-        return TCM_NAME(emit_blend)(S, x, how);
+        k = k < n ? k : n;
+        TCM_NAME(blend_coefs)(S, k, S->coef);
+        S->cached_k = k;
     }
     g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
     if (!(g >= 0)) { /* a solved interval */
@@ -582,7 +561,6 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
                               * solved one, so that the other kinds' paths keep their layout */
         if (derive != TCM_KEEP) { /* a new branch: no interval blended yet */
             TCM_NAME(derive)(S);
-            return TCM_NAME(emit_blend)(S, x, how);
         }
         return TCM_NAME(emit_blended)(S, x, how);
 #endif
