@@ -6,7 +6,9 @@
  * Input layout (reads past the end yield zeros, so every input is valid):
  *   [0]  flags: bit0 raw coefficients (arbitrary doubles) else small grids;
  *        bit1 feed the outputs to an E fit and check its solution;
- *        bit2 feed the outputs to the compensator (hyst_curve_inverse());
+ *        bit2 feed the outputs to the compensator (hyst_curve_inverse()) and
+ *             to the tabulated one (hyst_curve_everett_inverse_table(),
+ *             rows 3 + 4 ((flags >> 4) & 3), intervals 1 + 10 (flags >> 6));
  *        bit3 the fit of bit1 keeps the terms of t up to (flags >> 3) % degree
  *   [1]  degree (byte % 6: 0 and 5 are invalid), [2] capacity (byte % 40)
  *   then lo, hi, y_lo and the coefficients e[i][j], then samples: each byte
@@ -21,7 +23,12 @@
  * finite; the
  * compensator's drive, fed to the model, gives the outputs back (on the
  * structured grids, until either memory fills), never moves against them,
- * and its block call equals its steps. */
+ * and its block call equals its steps; the tabulated compensator (if its
+ * builder accepts the curve) keeps its drive on the domain and never
+ * against the outputs, agrees with the exact one within twice the error
+ * its init measured (a sampled figure) on the structured grids until the
+ * outputs first turn back (from there on its turning points carry its own
+ * error), and its block call equals its steps. */
 #include "fuzz_common.h"
 #include "ref_everett.h"
 
@@ -80,6 +87,48 @@ static void check_compensator(const hyst_curve_t *curve, double scale, int raw, 
     CHECK(hyst_init_curve(&C, &inv, cl, cyl, cr, cyr, MAX_CAP) == HYST_OK);
     CHECK(hyst_process(&C, ys, ys2, n) >= 0);
     CHECK(n == 0u || memcmp(drive, ys2, n * sizeof ys2[0]) == 0);
+}
+
+/* The tabulated compensator of the accepted curve on ys[0..n), against the
+ * exact one's drive[0..n) (check_compensator() ran first): see the header. */
+static void check_tabulated(const hyst_curve_t *curve, const hyst_everett_t *e, unsigned flags,
+                            size_t n)
+{
+    static double table[HYST_EVERETT_INV_TABLE_LEN(15u, 31u)];
+    static double tl[MAX_CAP], tyl[MAX_CAP], tr[MAX_CAP], tyr[MAX_CAP], tab[MAX_SAMPLES];
+    const size_t rows = 3u + 4u * ((flags >> 4) & 3u), intervals = 1u + 10u * (flags >> 6);
+    hyst_curve_t tinv, exact;
+    hyst_t C;
+    double allowed;
+    size_t k;
+    int first_sweep = 1, full = 0;
+    const hyst_status_t st = hyst_curve_everett_inverse_table(&tinv, curve, table, rows, intervals);
+    CHECK(st == HYST_OK || st == HYST_ERR_NOT_INVERTIBLE);
+    if (st != HYST_OK) {
+        return;
+    }
+    CHECK(hyst_curve_inverse(&exact, curve) == HYST_OK);
+    CHECK(hyst_curve_inverse_error(&tinv) >= 0 && hyst_curve_inverse_error(&tinv) <= HYST_INV_TABLE_TOL);
+    /* init's error is the worst of 8 probes per interval and anchor: between
+     * probes a cubic's error may exceed it (one interval of 15 rows: by 3 %) */
+    allowed = hyst_curve_inverse_error(&tinv) * (e->hi - e->lo) * 2.0 + 2.0 * exact.rounding.f64;
+    CHECK(hyst_init_curve(&C, &tinv, tl, tyl, tr, tyr, MAX_CAP) == HYST_OK);
+    for (k = 0u; k < n; ++k) {
+        const double x = hyst_step(&C, ys[k]);
+        tab[k] = x;
+        full |= hyst_status(&C) == HYST_WARN_FULL;
+        CHECK(hyst_status(&C) >= 0 && isfinite(x) && x >= e->lo && x <= e->hi);
+        if (k > 0u && !full) {
+            CHECK(ys[k] > ys[k - 1u] ? x >= tab[k - 1u] : ys[k] < ys[k - 1u] ? x <= tab[k - 1u] : 1);
+            first_sweep &= ys[k] >= ys[k - 1u];
+        }
+        if (first_sweep && !full && !(flags & 1u)) {
+            CHECK(fabs(x - drive[k]) <= allowed);
+        }
+    }
+    CHECK(hyst_init_curve(&C, &tinv, tl, tyl, tr, tyr, MAX_CAP) == HYST_OK);
+    CHECK(hyst_process(&C, ys, ys2, n) >= 0);
+    CHECK(n == 0u || memcmp(tab, ys2, n * sizeof ys2[0]) == 0);
 }
 
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
@@ -154,6 +203,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     CHECK(n == 0u || memcmp(ys, ys2, n * sizeof ys[0]) == 0);
     if (flags & 4u) {
         check_compensator(&curve, scale, (int)(flags & 1u), n);
+        check_tabulated(&curve, &e, flags, n);
     }
     if ((flags & 2u) && n > 0u) {
         hyst_everett_fit_t fit;

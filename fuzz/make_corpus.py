@@ -288,6 +288,14 @@ everett_seeds = {
                             zigzag * 2),
     "everett_not_monotone": everett(0, 2, 8, 0.0, 10, [0.0, 3.5, -3.9], zigzag),
     "everett_bad_capacity": everett(0, 2, 1, 0.0, 10, [0.0, 0.1, 0.1], zigzag),
+    # the tabulated compensator too (flags bit2): rows 15, intervals 31; rows 7, intervals 1
+    "everett_table_default_like": everett(0xF4, 2, 16, -1.0, 20, [0.5, 0.3, 1.0], zigzag * 3),
+    "everett_table_one_interval": everett(0x14, 3, 8, 0.0, 16, [0.0, 0.5, -0.2, 1.0, 0.2, 0.5],
+                                          zigzag * 2),
+    # one interval, 15 rows: the error between init's probes exceeded the
+    # measured one by 3 % (the harness allows twice the measured error)
+    "regress_table_between_probes": bytes([0x3E, 0x81, 0x7F, 0x02, 0x00, 0x03, 0x0F, 0x00, 0xFF, 0x03]) +
+    bytes(74) + bytes([0x7F, 0x24, 0xFF, 0xB1]),
 }
 for d, group in ((out, seeds), (os.path.join(here, "corpus_models"), models),
                  (os.path.join(here, "corpus_code"), code_seeds),

@@ -4,6 +4,7 @@
 #include "cli.h"
 #include "hyst/hyst.h"
 
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -167,6 +168,74 @@ static unsigned long tcm_tp(void *ctx)
     return (unsigned long)hyst_tp_count(&((tcm_run_t *)ctx)->S);
 }
 
+/* inv --intervals: the table's sizes the library accepts (curve.h). */
+#define INV_MAX_INTERVALS (1ul << 20)
+#define INV_MIN_ROWS 3ul
+#define INV_MAX_ROWS 4096ul
+
+/* inv --intervals N [--rows R]: the firmware's tabulated compensator, its
+ * table allocated here (firmware gives a static array of the same length):
+ * kind poly hyst_curve_inverse_table() of f0's curve (what
+ * hyst_init_inverse_table() does before attaching the instance), kind
+ * everett hyst_curve_everett_inverse_table() of E's curve @p fwd. The
+ * curve into *tab, its table into *table (the caller frees it). */
+static int tabulate(const char *cmd, const char *model_path, int everett, const hyst_poly_t *f0,
+                    const hyst_curve_t *fwd, unsigned long intervals, unsigned long rows,
+                    double **table, hyst_curve_t *tab)
+{
+    const char *opts = everett ? "options --rows/--intervals" : "option --intervals";
+    const double n = everett ? 2.0 * ((double)rows + 1.0) * 4.0 * ((double)intervals + 1.0)
+                             : 4.0 * ((double)intervals + 1.0);
+    hyst_curve_t poly;
+    hyst_status_t st;
+    *table = NULL;
+    if (n * (double)sizeof(double) >= (double)(size_t)-1 ||
+        (*table = (double *)malloc((size_t)n * sizeof(double))) == NULL) {
+        return cli_fail(cmd, "%s: out of memory for a table of %.0f numbers (%.3g MB)", opts, n,
+                        n * (double)sizeof(double) / 1e6);
+    }
+    if (everett) {
+        st = hyst_curve_everett_inverse_table(tab, fwd, *table, (size_t)rows, (size_t)intervals);
+    } else {
+        st = hyst_curve_from_poly(&poly, f0);
+        if (st == HYST_OK) {
+            st = hyst_curve_inverse_table(tab, &poly, *table, (size_t)intervals);
+        }
+    }
+    if (st != HYST_OK) {
+        free(*table);
+        *table = NULL;
+        return cli_fail(cmd, "%s%s: %s",
+                        model_path != NULL ? "model file " : "options --poly/--range",
+                        model_path != NULL ? model_path : "", hyst_status_str(st));
+    }
+    return 0;
+}
+
+/* What init measured, on stderr after the results (stdout stays one drive
+ * per line): the table's size, the intervals it left to exact evaluation and
+ * hyst_curve_inverse_error(), a fraction of the drive range, and in drive
+ * units. */
+static void report_table(const char *cmd, const hyst_curve_t *tab, int everett,
+                         unsigned long intervals, unsigned long rows)
+{
+    const double lo = tab->y_lo.f64, hi = tab->y_hi.f64; /* the inverse's values: the drive */
+    const double err = (double)hyst_curve_inverse_error(tab);
+    if (everett) {
+        (void)fprintf(stderr, "hyst %s: tabulated compensator, %lu rows of %lu intervals (%lu of "
+                              "the %lu intervals of both directions solved instead): ",
+                      cmd, rows, intervals, (unsigned long)tab->u.everett.exact, 2ul * intervals);
+    } else {
+        (void)fprintf(stderr, "hyst %s: tabulated compensator, %lu interval%s (%lu of them "
+                              "evaluated exactly): ",
+                      cmd, intervals, intervals == 1ul ? "" : "s",
+                      (unsigned long)tab->u.inv_table.exact);
+    }
+    (void)fprintf(stderr, "init's worst measured error %.9g of the drive range [%.9g, %.9g], "
+                          "%.9g\n",
+                  err, lo, hi, err * (hi - lo));
+}
+
 /* inv --model on the asymmetric kind: the compensator is the engine on the
  * inverse of its curve (hyst_curve_inverse(), curve.h), in place. */
 static int everett_compensator(const char *cmd, const char *model_path, hyst_curve_t *curve)
@@ -190,6 +259,10 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     unsigned long digits = 9ul;
     hyst_poly_t f0;
     hyst_curve_t everett; /* a model of kind everett */
+    /* inv --intervals / --rows: 0 when not given (the library's defaults with "default") */
+    unsigned long intervals = 0ul, rows = 0ul;
+    hyst_curve_t tab; /* the tabulated compensator's curve */
+    double *table = NULL;
 
     cli_args_init(&a, cmd, argc, argv);
     cli_samples_init(&s);
@@ -213,6 +286,24 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
             if ((model_path = cli_value(&a)) == NULL) {
                 return 1;
             }
+        } else if (inverse && cli_is(&a, "--intervals")) {
+            if ((v = cli_value(&a)) == NULL) {
+                return 1;
+            }
+            if (strcmp(v, "default") == 0) {
+                intervals = ULONG_MAX; /* the kind's default, once the kind is known */
+            } else if (!cli_opt_ulong(&a, v, 1ul, INV_MAX_INTERVALS, &intervals)) {
+                return 1;
+            }
+        } else if (inverse && cli_is(&a, "--rows")) {
+            if ((v = cli_value(&a)) == NULL) {
+                return 1;
+            }
+            if (strcmp(v, "default") == 0) {
+                rows = HYST_EVERETT_INV_ROWS;
+            } else if (!cli_opt_ulong(&a, v, INV_MIN_ROWS, INV_MAX_ROWS, &rows)) {
+                return 1;
+            }
         } else {
             return cli_unknown(&a);
         }
@@ -222,16 +313,33 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     }
     memset(&model, 0, sizeof model);
     if (model_path != NULL) {
-        size_t i;
         if (ncoef > 0u || nrange > 0u) {
             return cli_fail(cmd, "--model replaces --poly and --range: give one or the other");
         }
         if (cli_model_read(cmd, model_path, &model) != 0) {
             return 1;
         }
+    }
+    /* the kind known (else make_poly() says what is missing): --rows is the everett table's */
+    if (rows > 0ul && (model_path != NULL || ncoef > 0u) && model.kind != CLI_MODEL_EVERETT) {
+        return cli_fail(cmd, "option --rows applies to kind everett only: the compensator of "
+                             "kind poly tabulates f0^-1 in one row (--intervals alone)");
+    }
+    if (rows > 0ul && intervals == 0ul && (model_path != NULL || ncoef > 0u)) {
+        return cli_fail(cmd, "option --rows needs --intervals (the tabulated compensator)");
+    }
+    if (intervals == ULONG_MAX) {
+        intervals = model.kind == CLI_MODEL_EVERETT ? HYST_EVERETT_INV_INTERVALS : HYST_INV_TABLE;
+    }
+    if (intervals > 0ul && rows == 0ul) {
+        rows = HYST_EVERETT_INV_ROWS;
+    }
+    if (model_path != NULL) {
+        size_t i;
         if (model.kind == CLI_MODEL_EVERETT &&
             (cli_everett_curve(cmd, cli_file_name(model_path), &model, &everett) != 0 ||
-             (inverse && everett_compensator(cmd, cli_file_name(model_path), &everett) != 0))) {
+             (inverse && intervals == 0ul &&
+              everett_compensator(cmd, cli_file_name(model_path), &everett) != 0))) {
             return 1;
         }
         if (!inverse && model.delay > TCM_MAX_DELAY) {
@@ -260,6 +368,14 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     } else {
         r.curve = NULL;
     }
+    if (intervals > 0ul) { /* the tabulated compensator, on the engine as a curve */
+        if (tabulate(cmd, model_path != NULL ? cli_file_name(model_path) : NULL,
+                     model.kind == CLI_MODEL_EVERETT, &f0, &everett, intervals, rows, &table,
+                     &tab) != 0) {
+            return 1;
+        }
+        r.curve = &tab;
+    }
     r.f0 = &f0;
     r.inverse = inverse;
     r.cmd = cmd;
@@ -273,10 +389,10 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     m.step = tcm_step;
     m.col2 = tp ? tcm_tp : NULL;
     m.digits = (int)digits;
-    if (inverse && r.curve != NULL) { /* the inverse curve's domain: the forward's outputs */
+    if (inverse && model.kind == CLI_MODEL_EVERETT) { /* the inverse's domain: the outputs */
         m.clamp_what = "desired outputs";
-        m.lo = everett.lo.f64;
-        m.hi = everett.hi.f64;
+        m.lo = intervals > 0ul ? tab.lo.f64 : everett.lo.f64;
+        m.hi = intervals > 0ul ? tab.hi.f64 : everett.hi.f64;
     } else if (inverse) {
         m.clamp_what = "desired outputs";
         m.lo = (double)hyst_poly_eval(&f0, f0.lo);
@@ -287,7 +403,11 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
         m.hi = range[1];
     }
     rc = cli_map_samples(cmd, &s, &m);
+    if (rc == 0 && intervals > 0ul) {
+        report_table(cmd, &tab, model.kind == CLI_MODEL_EVERETT, intervals, rows);
+    }
     free(r.mem);
     free(r.late);
+    free(table);
     return rc;
 }

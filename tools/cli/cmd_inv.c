@@ -2,9 +2,14 @@
 /* hyst inv: the compensator (inverse TCM), one drive input per desired output. */
 #include "cli.h"
 
+/* The library's default table sizes (hyst/config.h), in the help text. */
+#define INV_STR_(x) #x
+#define INV_STR(x) INV_STR_(x)
+
 static const char help[] =
     "usage: hyst inv (--poly cN,...,c1,c0 --range LO,HI | --model MODEL) [--xcol I]\n"
-    "                [--tp] [--digits N] [--decimal-comma] [FILE]\n"
+    "                [--intervals N [--rows R]] [--tp] [--digits N] [--decimal-comma]\n"
+    "                [FILE]\n"
     "\n"
     "Runs the compensator of the model 'hyst sim' runs with the same --poly and\n"
     "--range: for each desired output in FILE (standard input if FILE is absent\n"
@@ -25,6 +30,22 @@ static const char help[] =
     "  --model MODEL     f0 and its domain from a model file ('hyst fit --save');\n"
     "                    its delay is not compensated (a pure delay has no causal\n"
     "                    inverse): line k is the drive for desired output k\n"
+    "  --intervals N     run the firmware's tabulated compensator instead of the\n"
+    "                    exact one: kind poly f0^-1 in N cubic pieces\n"
+    "                    (hyst_init_inverse_table(), HYST_INIT_INVERSE), kind\n"
+    "                    everett N pieces per row, a row per branch start\n"
+    "                    (hyst_curve_everett_inverse_table()); N in 1..1048576,\n"
+    "                    or 'default': the library's, " INV_STR(HYST_INV_TABLE) " for poly\n"
+    "                    (HYST_INV_TABLE), " INV_STR(HYST_EVERETT_INV_INTERVALS)
+    " for everett\n"
+    "                    (HYST_EVERETT_INV_INTERVALS).\n"
+    "                    Init's worst measured error (hyst_curve_inverse_error():\n"
+    "                    a fraction of the drive range, then in drive units) is\n"
+    "                    printed on stderr after the results\n"
+    "  --rows R          kind everett, with --intervals: R + 1 rows per direction,\n"
+    "                    R in 3..4096 or 'default' (" INV_STR(HYST_EVERETT_INV_ROWS)
+    ", HYST_EVERETT_INV_ROWS, also\n"
+    "                    without --rows)\n"
     "  --tp              add the turning-point count as a second column: x,tp\n"
     "  --digits N        significant digits printed, 1..17 (default 9; 17 prints\n"
     "                    the double-precision results exactly)\n"
