@@ -32,6 +32,8 @@ from ._hyst import (
 )
 from ._api import (
     DEFAULT_CAPACITY,
+    EVERETT_INV_INTERVALS,
+    EVERETT_INV_ROWS,
     INV_TABLE,
     PI,
     Compensator,
@@ -48,7 +50,8 @@ from ._plot import plot
 
 __all__ = [
     "CODE_MAX", "EVERETT_MAX_DEGREE", "EVENT_CLAMPED", "EVENT_FULL", "EVENT_NONFINITE",
-    "MAX_DEGREE", "SNAPSHOT_VERSION", "DEFAULT_CAPACITY", "INV_TABLE", "CodeModel", "Compensator", "Fit",
+    "MAX_DEGREE", "SNAPSHOT_VERSION", "DEFAULT_CAPACITY", "EVERETT_INV_INTERVALS",
+    "EVERETT_INV_ROWS", "INV_TABLE", "CodeModel", "Compensator", "Fit",
     "HystError", "Model", "ModelFromEverett", "ModelFromPoints", "ModelF32", "ModelF64", "PI",
     "PIF32", "PIF64", "Status", "Tcm", "__version__", "compensator_from", "fit", "model_from",
     "plot", "status_str",

@@ -18,6 +18,13 @@ DEFAULT_CAPACITY = 2048
 _METHODS = {"joint": 1, "reflect": 2}
 
 
+def _count(n):
+    """A table's count (intervals, rows) as the extension's C long long: a
+    count beyond that range becomes 2^62 or -1, which it refuses as out of
+    range (HystError ERR_ARG) like any other, instead of a TypeError."""
+    return max(min(int(n), 1 << 62), -1)
+
+
 def _variant(dtype, f32, f64):
     dt = np.dtype(dtype)
     if dt == np.float64:
@@ -44,6 +51,12 @@ def Model(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, deadba
 #: of HYST_DEFINE_INVERSE / HYST_INIT_INVERSE).
 INV_TABLE = _hyst.INV_TABLE
 
+#: The asymmetric compensator's table as firmware declares it by default
+#: (HYST_EVERETT_INV_ROWS rows per direction, HYST_EVERETT_INV_INTERVALS
+#: intervals per row; hyst_*_curve_everett_inverse_table()).
+EVERETT_INV_ROWS = _hyst.EVERETT_INV_ROWS
+EVERETT_INV_INTERVALS = _hyst.EVERETT_INV_INTERVALS
+
 
 def Compensator(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, intervals=0):
     """The inverse model of Model(coeffs, lo, hi): desired output in, drive out.
@@ -52,9 +65,11 @@ def Compensator(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, 
     reference. ``intervals=N`` runs the tabulated compensator firmware runs
     (hyst_*_init_inverse_table(); ``INV_TABLE`` is HYST_INIT_INVERSE's), bit
     for bit: its ``inverse_error`` is the worst error against the exact
-    inverse that init measured, as a fraction of the drive range."""
+    inverse that init measured, as a fraction of the drive range. Intervals
+    outside 0 .. 2^20 raise ``HystError`` (ERR_ARG) before any table is
+    allocated."""
     return _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
-        list(map(float, coeffs)), float(lo), float(hi), int(capacity), True, int(intervals))
+        list(map(float, coeffs)), float(lo), float(hi), int(capacity), True, _count(intervals))
 
 
 def ModelFromPoints(xs, ys, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inverse=False):
@@ -66,7 +81,8 @@ def ModelFromPoints(xs, ys, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inve
 
 
 def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
-                     capacity=DEFAULT_CAPACITY, deadband=0.0, inverse=False):
+                     capacity=DEFAULT_CAPACITY, deadband=0.0, inverse=False, intervals=0,
+                     rows=None):
     """The asymmetric kind (hyst_everett_t): rising from a turning point
     (b, y_b) the output is y_b + E(x, b), falling from (a, y_a) it is
     y_a - E(a, x), with E(a, b) the sum of e[i-1][j] w^i t^j over i >= 1,
@@ -76,13 +92,24 @@ def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
     lo after reset. The library refuses an E that does not increase in a and
     decrease in b on the whole triangle (``HystError`` ERR_NOT_MONOTONE).
 
-    ``inverse=True`` gives its compensator (hyst_curve_inverse(), kind
-    HYST_CURVE_EVERETT_INV): desired output in, on the major loop's output
-    range [y_lo, y_lo + E(hi, lo)] (clamped outside), drive out, within
-    about 1e-12 (float64) / 1e-6 (float32) of the drive span."""
+    ``inverse=True`` gives its compensator: desired output in, on the major
+    loop's output range [y_lo, y_lo + E(hi, lo)] (clamped outside), drive
+    out. With ``intervals=0`` (the default) it solves each branch
+    (hyst_curve_inverse(), kind HYST_CURVE_EVERETT_INV), within about 1e-12
+    (float64) / 1e-6 (float32) of the drive span. ``intervals=N`` runs the
+    tabulated compensator firmware runs (hyst_*_curve_everett_inverse_table(),
+    kind HYST_CURVE_EVERETT_INV_TABLE), bit for bit: ``rows`` + 1 rows per
+    direction (``rows=None``: ``EVERETT_INV_ROWS``, the library's default;
+    3 .. 4096) of N intervals (1 .. 2^20; ``EVERETT_INV_INTERVALS`` is the
+    library's default); ``inverse_error`` is the worst error against the
+    solved compensator that init measured, as a fraction of the drive span,
+    and ``intervals``, ``rows`` say which table it is (0 for the solved
+    one). Bad table arguments (out of range, ``rows`` without intervals,
+    either without ``inverse=True``) raise ``HystError`` (ERR_ARG) before
+    the table is allocated."""
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
         int(degree), float(lo), float(hi), float(y_lo), list(map(float, terms)), int(capacity),
-        bool(inverse))
+        bool(inverse), _count(intervals), None if rows is None else _count(rows))
     if deadband:
         m.deadband = deadband
     return m
@@ -99,14 +126,21 @@ def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
     return Model(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity)
 
 
-def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, intervals=0):
+def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, intervals=0,
+                     rows=None):
     """The compensator (inverse model) of the model :func:`model_from` gives:
-    desired output in, drive out, for either kind; ``intervals`` as in
-    :func:`Compensator` (kind poly only: the asymmetric kind's compensator
-    solves each branch)."""
+    desired output in, drive out, for either kind. ``intervals=0`` (the
+    default) gives the exact one; ``intervals=N`` the tabulated one firmware
+    runs: kind poly as in :func:`Compensator`, kind everett as in
+    :func:`ModelFromEverett` (with its ``rows``). ``rows`` is the asymmetric
+    kind's: given for kind poly, it raises ``HystError`` (ERR_ARG)."""
     if desc.get("kind", "poly") == "everett":
         return ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
-                                desc["terms"], dtype=dtype, capacity=capacity, inverse=True)
+                                desc["terms"], dtype=dtype, capacity=capacity, inverse=True,
+                                intervals=intervals, rows=rows)
+    if rows is not None:
+        raise HystError(_hyst.Status.ERR_ARG,
+                        "rows is the asymmetric kind's table (kind everett), not kind poly's")
     return Compensator(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity,
                        intervals=intervals)
 

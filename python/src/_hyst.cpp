@@ -9,11 +9,13 @@
  */
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
+#include <nanobind/stl/optional.h>
 #include <nanobind/stl/unique_ptr.h>
 #include <nanobind/stl/vector.h>
 
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -84,6 +86,36 @@ hyst_everett_t make_everett(unsigned degree, double lo, double hi, double y_lo,
     return e;
 }
 
+/* The limits the library puts on a compensator table (curve.h): checked
+ * here too, before the table is allocated. */
+constexpr long long MAX_TABLE_INTERVALS = 1LL << 20;
+constexpr long long MIN_TABLE_ROWS = 3, MAX_TABLE_ROWS = 4096;
+
+/* A compensator's table intervals: 0 (the exact compensator) or 1 .. 2^20. */
+size_t table_intervals(long long intervals)
+{
+    if (intervals < 0 || intervals > MAX_TABLE_INTERVALS) {
+        raise_status(HYST_ERR_ARG, "intervals outside 1 .. 2^20 (0: the exact compensator)");
+    }
+    return static_cast<size_t>(intervals);
+}
+
+/* The asymmetric compensator's table rows: none without a table, else
+ * 3 .. 4096 (HYST_EVERETT_INV_ROWS when not given). */
+size_t table_rows(std::optional<long long> rows, size_t intervals)
+{
+    if (!rows) {
+        return intervals > 0u ? static_cast<size_t>(HYST_EVERETT_INV_ROWS) : 0u;
+    }
+    if (intervals == 0u) {
+        raise_status(HYST_ERR_ARG, "rows needs intervals > 0 (the exact compensator has no table)");
+    }
+    if (*rows < MIN_TABLE_ROWS || *rows > MAX_TABLE_ROWS) {
+        raise_status(HYST_ERR_ARG, "rows outside 3 .. 4096");
+    }
+    return static_cast<size_t>(*rows);
+}
+
 /* The library's functions of one real variant, by number type. */
 template <class T> struct Ops;
 #define HYST_PY_OPS(T, P, NAME)                                             \
@@ -94,6 +126,7 @@ template <class T> struct Ops;
         static constexpr auto init_curve = hyst_##P##_init_curve_;          \
         static constexpr auto curve_from_pwl = hyst_##P##_curve_from_pwl_;  \
         static constexpr auto curve_from_everett = hyst_##P##_curve_from_everett_; \
+        static constexpr auto curve_everett_inverse_table = hyst_##P##_curve_everett_inverse_table; \
         static constexpr auto step = hyst_##P##_step;                       \
         static constexpr auto process = hyst_##P##_process;                 \
         static constexpr auto set_deadband = hyst_##P##_set_deadband;       \
@@ -188,15 +221,19 @@ template <class T> struct Real : Owned<T, T> {
     std::vector<T> bx, by; /* its breakpoints (fwd points at them) */
     std::vector<T> table;  /* the tabulated compensator's table (inv points at it) */
     bool inverse;
-    size_t intervals = 0u; /* the table's intervals; 0: the exact compensator */
+    size_t intervals = 0u; /* the table's intervals (per row); 0: the exact compensator */
+    size_t rows = 0u;      /* the asymmetric kind's table: rows per direction; 0: none */
     double deadband = 0.0;
 
-    /* The instance on fwd, or on its inverse (the compensator). */
+    /* The instance on fwd, or on its inverse (the compensator): the one
+     * hyst_curve_inverse() prepares, or the table inv already holds. */
     void attach_curve(size_t capacity)
     {
         const hyst_curve_t *c = &fwd;
         if (inverse) {
-            check(hyst_curve_inverse(&inv, &fwd), "inverse curve");
+            if (intervals == 0u) {
+                check(hyst_curve_inverse(&inv, &fwd), "inverse curve");
+            }
             c = &inv;
         }
         check(O::init_curve(&this->S, c, this->xl.data(), this->yl.data(), this->xr.data(),
@@ -221,13 +258,26 @@ template <class T> struct Real : Owned<T, T> {
     }
 
     /* The asymmetric kind: a branch function E (make_everett()), or its
-     * compensator (HYST_CURVE_EVERETT_INV). */
+     * compensator: solved per branch (intervals 0: HYST_CURVE_EVERETT_INV)
+     * or tabulated as firmware runs it (HYST_CURVE_EVERETT_INV_TABLE: rows
+     * per direction, HYST_EVERETT_INV_ROWS when not given, of intervals
+     * intervals). The arguments are checked before the table is allocated. */
     Real(unsigned degree, double lo_, double hi_, double y_lo_, const std::vector<double> &terms_,
-         size_t capacity, bool inverse_)
+         size_t capacity, bool inverse_, long long intervals_, std::optional<long long> rows_)
         : Owned<T, T>(capacity), inverse(inverse_)
     {
+        if (!inverse && (intervals_ != 0 || rows_)) {
+            raise_status(HYST_ERR_ARG, "intervals and rows are the compensator's (inverse=True)");
+        }
+        intervals = table_intervals(intervals_);
+        rows = table_rows(rows_, intervals);
         const hyst_everett_t e = make_everett(degree, lo_, hi_, y_lo_, terms_);
         check(O::curve_from_everett(&fwd, &e, HYST_LAYOUT), "curve");
+        if (intervals > 0u) {
+            table.resize(HYST_EVERETT_INV_TABLE_LEN(rows, intervals));
+            check(O::curve_everett_inverse_table(&inv, &fwd, table.data(), rows, intervals),
+                  "compensator table");
+        }
         attach_curve(capacity);
         this->kind = "everett";
         this->terms = terms_;
@@ -239,15 +289,13 @@ template <class T> struct Real : Owned<T, T> {
     /* f0 as a polynomial; its compensator exact (intervals 0) or tabulated
      * as firmware runs it (HYST_INIT_INVERSE: intervals HYST_INV_TABLE). */
     Real(const std::vector<double> &c, double lo_, double hi_, size_t capacity, bool inverse_,
-         size_t intervals_)
-        : Owned<T, T>(capacity), inverse(inverse_), intervals(inverse_ ? intervals_ : 0u)
+         long long intervals_)
+        : Owned<T, T>(capacity), inverse(inverse_),
+          intervals(inverse_ ? table_intervals(intervals_) : 0u)
     {
         const hyst_poly_t f0 = make_poly(c, lo_, hi_);
         int st;
         if (inverse && intervals > 0u) {
-            if (intervals > (size_t)1 << 20) { /* the library's limit, before the allocation */
-                raise_status(HYST_ERR_ARG, "intervals outside 1 .. 2^20");
-            }
             table.resize(HYST_INV_TABLE_LEN(intervals));
             st = O::init_inverse_table(&this->S, &inv, &f0, table.data(), intervals,
                                        this->xl.data(), this->yl.data(), this->xr.data(),
@@ -489,13 +537,14 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
     using R = Real<T>;
     nb::class_<R, Tcm> model_cls(m, model);
     model_cls
-        .def(nb::init<const std::vector<double> &, double, double, size_t, bool, size_t>(),
-             "coeffs"_a, "lo"_a, "hi"_a, "capacity"_a, "inverse"_a, "intervals"_a = 0u)
+        .def(nb::init<const std::vector<double> &, double, double, size_t, bool, long long>(),
+             "coeffs"_a, "lo"_a, "hi"_a, "capacity"_a, "inverse"_a, "intervals"_a = 0)
         .def(nb::init<const std::vector<double> &, const std::vector<double> &, size_t, bool>(),
              "xs"_a, "ys"_a, "capacity"_a, "inverse"_a)
         .def(nb::init<unsigned, double, double, double, const std::vector<double> &, size_t,
-                      bool>(),
-             "degree"_a, "lo"_a, "hi"_a, "y_lo"_a, "terms"_a, "capacity"_a, "inverse"_a = false)
+                      bool, long long, std::optional<long long>>(),
+             "degree"_a, "lo"_a, "hi"_a, "y_lo"_a, "terms"_a, "capacity"_a, "inverse"_a = false,
+             "intervals"_a = 0, "rows"_a = nb::none())
         .def("step", &R::step, "x"_a, "One sample in, one output out.")
         .def_prop_rw("deadband", [](const R &s) { return s.deadband; }, &R::set_deadband)
         .def_prop_ro("output", [](const R &s) { return Ops<T>::output(&s.S); })
@@ -504,6 +553,7 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
         .def_prop_ro("rounding_bound", [](const R &s) { return Ops<T>::rounding_bound(&s.S); })
         .def_ro("inverse", &R::inverse)
         .def_ro("intervals", &R::intervals)
+        .def_ro("rows", &R::rows)
         .def_prop_ro("inverse_error",
                      [](const R &s) {
                          return s.intervals > 0u ? static_cast<double>(hyst_curve_inverse_error(&s.inv))
@@ -542,6 +592,8 @@ NB_MODULE(_hyst, m)
     m.attr("EVERETT_MAX_DEGREE") = HYST_EVERETT_MAX_DEGREE;
     m.attr("CODE_MAX") = static_cast<unsigned long>(HYST_CODE_MAX);
     m.attr("INV_TABLE") = static_cast<unsigned long>(HYST_INV_TABLE);
+    m.attr("EVERETT_INV_ROWS") = static_cast<unsigned long>(HYST_EVERETT_INV_ROWS);
+    m.attr("EVERETT_INV_INTERVALS") = static_cast<unsigned long>(HYST_EVERETT_INV_INTERVALS);
     m.attr("SNAPSHOT_VERSION") = HYST_SNAPSHOT_VERSION;
     m.attr("EVENT_NONFINITE") = HYST_EVENT_NONFINITE;
     m.attr("EVENT_CLAMPED") = HYST_EVENT_CLAMPED;

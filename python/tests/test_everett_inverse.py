@@ -72,12 +72,11 @@ def test_drive_agrees_with_the_exact_inverse(e, dtype, tol):
     assert worst <= tol, worst
 
 
-@pytest.mark.parametrize("e", EXAMPLES, ids=DEGREES)
-@pytest.mark.parametrize("dtype", [np.float64, np.float32])
-def test_drive_is_monotone_on_a_slow_sweep(e, dtype):
-    """Adjacent desired outputs up and down through many turning points, and
-    a few wider moves: the drive never moves against the desired output."""
-    rng = np.random.default_rng(61 + e["degree"])
+def slow_sweep(e, dtype, seed, jump):
+    """Adjacent desired outputs up and down through many turning points (a
+    reversal every 50 samples on average), and a move of ``jump`` of the
+    output range every 100: (desired outputs, whether each one goes up)."""
+    rng = np.random.default_rng(seed)
     lo, width = e["y_lo"], output_range(e)
     y = dtype(lo + width * rng.uniform(0.2, 0.8))
     top, bottom = dtype(lo + width), dtype(lo)
@@ -88,12 +87,25 @@ def test_drive_is_monotone_on_a_slow_sweep(e, dtype):
             going_up = not going_up
         y = np.nextafter(y, top if going_up else bottom)
         if rng.random() < 0.01:
-            y = dtype(y + (1 if going_up else -1) * 1e-3 * width)
+            y = dtype(min(max(y + (1 if going_up else -1) * jump * width, bottom), top))
         yd[k], up[k] = y, going_up
-    drive = hyst.ModelFromEverett(**e, dtype=dtype, inverse=True).process(yd)
+    return yd, up
+
+
+def assert_monotone(drive, up):
+    """The drive never moves against the desired output, and moves both ways."""
     step = np.diff(drive)
     assert np.all(np.where(up[1:], step >= 0, step <= 0))
     assert np.count_nonzero(step > 0) > 1000 and np.count_nonzero(step < 0) > 1000
+
+
+@pytest.mark.parametrize("e", EXAMPLES, ids=DEGREES)
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_drive_is_monotone_on_a_slow_sweep(e, dtype):
+    """Adjacent desired outputs up and down through many turning points, and
+    a few wider moves: the drive never moves against the desired output."""
+    yd, up = slow_sweep(e, dtype, 61 + e["degree"], 1e-3)
+    assert_monotone(hyst.ModelFromEverett(**e, dtype=dtype, inverse=True).process(yd), up)
 
 
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])

@@ -7,6 +7,10 @@
  *   KIND  sim | inv | code | pi | bench
  *   keys  type=f64|f32  lo= hi=  coeffs=cN,...,c0  cap=  deadband=
  *         intervals= (inv: the tabulated compensator's; 0, the default: the exact one)
+ *         degree= y_lo= terms=e,... (sim, inv: the asymmetric kind's E instead of f0,
+ *         terms ordered i = 1..degree, then j = 0..degree - i; lo= hi= its domain)
+ *         rows= (inv of E with intervals > 0: the table's rows, HYST_EVERETT_INV_ROWS
+ *         by default)  err=PATH (inv: hyst_curve_inverse_error() of the curve, %.17g)
  *         code_lo= code_hi=  r=r1,...  w=w1,...  in=PATH out=PATH
  *         snap=PATH (sim, inv, code: the snapshot after the block)
  *         repeat=N (bench: best of N block calls of the f64 model)
@@ -101,6 +105,50 @@ static hyst_poly_t poly(void)
     return f0;
 }
 
+/* No f0 (the asymmetric kind's runs). */
+static hyst_poly_t no_poly(void)
+{
+    hyst_poly_t f0;
+    memset(&f0, 0, sizeof f0);
+    return f0;
+}
+
+/* The asymmetric kind's E from degree=, lo=, hi=, y_lo=, terms=. */
+static hyst_everett_t everett(void)
+{
+    double terms[HYST_EVERETT_TERMS];
+    hyst_everett_t e;
+    size_t k = 0u, n;
+    unsigned i, j;
+    memset(&e, 0, sizeof e);
+    e.degree = (unsigned)num("degree", NULL);
+    e.lo = num("lo", NULL);
+    e.hi = num("hi", NULL);
+    e.y_lo = num("y_lo", NULL);
+    n = list("terms", terms, HYST_EVERETT_TERMS);
+    if (e.degree < 1u || e.degree > HYST_EVERETT_MAX_DEGREE ||
+        n != (size_t)e.degree * (e.degree + 1u) / 2u) {
+        die("bad degree or terms", "");
+    }
+    for (i = 1u; i <= e.degree; ++i) {
+        for (j = 0u; i + j <= e.degree; ++j) {
+            e.e[i - 1u][j] = terms[k++];
+        }
+    }
+    return e;
+}
+
+/* err=PATH: the measured error of a tabulated inverse, written as text. */
+static void save_error(const hyst_curve_t *inv)
+{
+    const char *path = opt("err", "");
+    char text[64];
+    if (*path != '\0') {
+        const int len = snprintf(text, sizeof text, "%.17g\n", (double)hyst_curve_inverse_error(inv));
+        store(path, text, (size_t)len);
+    }
+}
+
 static void save_snapshot(const hyst_tcm_t *S)
 {
     const char *path = opt("snap", "");
@@ -155,14 +203,32 @@ static double now_ns(void)
             }                                                                                \
         } else {                                                                             \
             hyst_tcm_t S;                                                                    \
-            hyst_curve_t inv;                                                                \
-            const hyst_poly_t f0 = poly();                                                   \
+            hyst_curve_t inv, fwd;                                                           \
+            const int is_everett = *opt("terms", "") != '\0';                                \
+            const hyst_poly_t f0 = is_everett ? no_poly() : poly();                          \
             const size_t intervals = (size_t)num("intervals", "0");                          \
-            T *table = malloc(HYST_INV_TABLE_LEN(intervals) * sizeof(T));                    \
+            const size_t rows_given = (size_t)num("rows", "0");                              \
+            const size_t rows = rows_given > 0u ? rows_given : (size_t)HYST_EVERETT_INV_ROWS;\
+            T *table = malloc((is_everett ? HYST_EVERETT_INV_TABLE_LEN(rows, intervals)      \
+                                          : HYST_INV_TABLE_LEN(intervals)) * sizeof(T));     \
+            memset(&inv, 0, sizeof inv);                                                     \
             if (table == NULL) {                                                             \
                 die("out of memory", "");                                                    \
             }                                                                                \
-            if (strcmp(kind, "inv") == 0 && intervals > 0u) {                                \
+            if (is_everett) {                                                                \
+                const hyst_everett_t e = everett();                                          \
+                st = hyst_##P##_curve_from_everett(&fwd, &e);                                \
+                if (st == HYST_OK && strcmp(kind, "inv") == 0) {                             \
+                    st = intervals > 0u ? hyst_##P##_curve_everett_inverse_table(            \
+                                              &inv, &fwd, table, rows, intervals)            \
+                                        : hyst_curve_inverse(&inv, &fwd);                    \
+                }                                                                            \
+                if (st == HYST_OK) {                                                         \
+                    st = hyst_##P##_init_curve(&S, strcmp(kind, "inv") == 0 ? &inv : &fwd,  \
+                                               tp, tp + cap, tp + 2u * cap, tp + 3u * cap,   \
+                                               cap);                                         \
+                }                                                                            \
+            } else if (strcmp(kind, "inv") == 0 && intervals > 0u) {                         \
                 st = hyst_##P##_init_inverse_table(&S, &inv, &f0, table, intervals, tp,      \
                                                    tp + cap, tp + 2u * cap, tp + 3u * cap,   \
                                                    cap);                                     \
@@ -193,6 +259,7 @@ static double now_ns(void)
                 return st < 0;                                                               \
             }                                                                                \
             if (st == HYST_OK) {                                                             \
+                save_error(&inv);                                                            \
                 st = hyst_##P##_process(&S, x, y, n);                                        \
                 save_snapshot(&S);                                                           \
             }                                                                                \
