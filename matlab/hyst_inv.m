@@ -7,15 +7,23 @@ function [x, status, tp_count, inv_err] = hyst_inv(model, y, varargin)
 %   rounding of the inverse); a desired output outside [f0(lo), f0(hi)] is
 %   clamped (STATUS 1). For the asymmetric kind (a struct of kind 'everett',
 %   as HYST_SIM takes it) the compensator is hyst_curve_inverse() of its
-%   curve: desired outputs on [y_lo, y_lo + E(hi, lo)], the drive within
-%   about 1e-12 (double) or 1e-6 (single) of hi - lo. Options and outputs as
-%   HYST_SIM.
+%   curve: desired outputs on [y_lo, y_lo + E(hi, lo)], each branch solved
+%   (Newton's iteration, bracketed), the drive within about 1e-12 (double)
+%   or 1e-6 (single) of hi - lo. Options and outputs as HYST_SIM.
 %
-%   HYST_INV(MODEL, Y, 'intervals', N) runs, for a polynomial f0, the
-%   compensator firmware runs (HYST_INIT_INVERSE: hyst_*_init_inverse_table
-%   with an N-interval table; HYST_INV_TABLE = 256 by default there), bit for
-%   bit; INV_ERR is the worst error against the exact inverse that its init
-%   measured, as a fraction of the drive range (0 for the exact one, the
-%   default 'intervals' 0).
+%   HYST_INV(MODEL, Y, 'intervals', N) runs the tabulated compensator
+%   firmware runs, bit for bit (the same C code; Y double: f64, single: f32):
+%    - a polynomial f0: hyst_*_init_inverse_table with an N-interval table
+%      (HYST_INIT_INVERSE uses HYST_INV_TABLE = 256);
+%    - the asymmetric kind: hyst_*_curve_everett_inverse_table with R rows of
+%      N intervals per direction, HYST_INV(MODEL, Y, 'intervals', N, 'rows', R),
+%      R 3..4096, by default the library's HYST_EVERETT_INV_ROWS (16; firmware's
+%      default N is HYST_EVERETT_INV_INTERVALS, 32: hyst_mex('config') gives
+%      both); with the default table the drive error stays below 1e-5 of
+%      hi - lo (docs/pi_and_inverse.md).
+%   N is 1..2^20; 0, the default, is the exact (or solved) compensator, and
+%   'rows' needs N > 0 and the asymmetric kind. INV_ERR is the worst error
+%   against the exact inverse that the table's init measured, as a fraction
+%   of the drive range (hyst_curve_inverse_error(); 0 without a table).
   [x, status, tp_count, inv_err] = hyst_run('inv', model, y, varargin);
 end

@@ -7,15 +7,29 @@
  *   v = hyst_mex('version')                      HYST_VERSION_STRING
  *   s = hyst_mex('status_str', code)             hyst_status_str(code)
  *   [y, st, ntp] = hyst_mex('sim', coeffs, lo, hi, x, capacity, deadband)
- *   [x, st, ntp] = hyst_mex('inv', coeffs, lo, hi, y, capacity, deadband)
+ *   [x, st, ntp, err] = hyst_mex('inv', coeffs, lo, hi, y, capacity, deadband, intervals)
  *   [y, st, ntp] = hyst_mex('sim_everett', degree, lo, hi, y_lo, terms, x, capacity, deadband)
- *   [x, st, ntp] = hyst_mex('inv_everett', degree, lo, hi, y_lo, terms, y, capacity, deadband)
+ *   [x, st, ntp, err] = hyst_mex('inv_everett', degree, lo, hi, y_lo, terms, y, capacity,
+ *                                deadband, intervals, rows)
+ *   c = hyst_mex('config')                       the compensators' default table sizes
  *   f = hyst_mex('fit', x, y, degree, method, lo, hi, skip, delay)
  *   f = hyst_mex('fit_everett', x, y, degree, lo, hi, skip, delay)
  *
  * sim_everett runs the asymmetric kind (hyst_everett_t; terms are e[i-1][j]
  * of w^i t^j for i = 1..degree, then j = 0..degree-i), inv_everett its
- * compensator (hyst_curve_inverse(): HYST_CURVE_EVERETT_INV).
+ * compensator: intervals 0, hyst_curve_inverse() (HYST_CURVE_EVERETT_INV,
+ * solved per branch; rows, 3..4096 all the same, is not used); intervals
+ * 1..2^20 and rows 3..4096 (both checked before anything is allocated),
+ * the tabulated one firmware runs, hyst_*_curve_everett_inverse_table()
+ * (HYST_CURVE_EVERETT_INV_TABLE) with a table of
+ * HYST_EVERETT_INV_TABLE_LEN(rows, intervals) numbers. inv's intervals
+ * (0: hyst_*_init_inverse_exact) tabulates f0's inverse
+ * (hyst_*_init_inverse_table). err, of inv and inv_everett: the tabulated
+ * compensator's worst error measured by its init, of the drive range
+ * (hyst_curve_inverse_error(); 0 for an exact or solved one).
+ * config: a struct of HYST_INV_TABLE (inv_table), HYST_EVERETT_INV_ROWS
+ * (everett_inv_rows), HYST_EVERETT_INV_INTERVALS (everett_inv_intervals)
+ * and HYST_INV_TABLE_TOL (inv_table_tol), as this MEX file was built.
  * sim/inv and both *_everett: x of class double runs hyst_f64_*, single runs hyst_f32_*; the
  * result has the class and the shape of x; st is the status of the block
  * call (0, or a warning: 1 clamped, 2 memory full; a non-finite sample gives
@@ -162,18 +176,47 @@ static hyst_everett_t everett_arg(const mxArray *const prhs[5], const char *cont
     return e;
 }
 
+/* The table sizes the library takes (curve.h): intervals of either
+ * tabulated compensator, rows of the asymmetric one's. */
+#define INTERVALS_MAX 1048576.0 /* 2^20 */
+#define ROWS_MIN 3.0
+#define ROWS_MAX 4096.0
+
 /* The model a sim/inv call runs: f0 or an E, or the inverse of either. */
 typedef struct model_arg {
     int inverse;        /* the compensator */
     int everett;        /* the asymmetric kind: e, not f0 */
-    size_t intervals;   /* f0's compensator tabulated (firmware's); 0: exact */
+    size_t intervals;   /* the compensator tabulated (firmware's); 0: exact (or solved) */
+    size_t rows;        /* E's tabulated compensator: rows per direction */
     hyst_poly_t f0;
     hyst_everett_t e;
 } model_arg_t;
 
+/* Numbers of the table m's compensator needs (0: none), counted in double
+ * where size_t could wrap (rows and intervals at their largest need 2^35). */
+static double table_numbers(const model_arg_t *m)
+{
+    const double row = 4.0 * ((double)m->intervals + 1.0); /* HYST_INV_TABLE_LEN */
+    if (!m->inverse || m->intervals == 0u) {
+        return 0.0;
+    }
+    return m->everett ? 2.0 * ((double)m->rows + 1.0) * row : row;
+}
+
+/* The same as a size_t, once table_numbers() is known to fit. */
+static size_t table_len(const model_arg_t *m)
+{
+    if (!m->inverse || m->intervals == 0u) {
+        return 0u;
+    }
+    return m->everett ? HYST_EVERETT_INV_TABLE_LEN(m->rows, m->intervals)
+                      : HYST_INV_TABLE_LEN(m->intervals);
+}
+
 /* init_f64, init_f32: init S (and curve, which S may point at) for m in
  * variant P of number type T, tp holding the four turning-point arrays of
- * cap entries. An E's inverse replaces its forward curve (a copy of it). */
+ * cap entries, table table_len(m) numbers. An E's solved inverse replaces
+ * its forward curve (a copy of it); its tabulated one is built from it. */
 #define DEFINE_INIT(P, T)                                                                   \
     static int init_##P(hyst_tcm_t *S, hyst_curve_t *curve, const model_arg_t *m, T *tp,    \
                         size_t cap, T *table)                                               \
@@ -182,9 +225,15 @@ typedef struct model_arg {
                  *const yr = tp + 3u * cap;                                                 \
         int st;                                                                             \
         if (m->everett) {                                                                   \
-            st = hyst_##P##_curve_from_everett(curve, &m->e);                               \
-            if (st == HYST_OK && m->inverse) {                                              \
-                st = hyst_curve_inverse(curve, curve);                                      \
+            hyst_curve_t fwd;                                                               \
+            st = hyst_##P##_curve_from_everett(&fwd, &m->e);                                \
+            if (st == HYST_OK && m->inverse && m->intervals > 0u) {                         \
+                st = hyst_##P##_curve_everett_inverse_table(curve, &fwd, table, m->rows,    \
+                                                            m->intervals);                  \
+            } else if (st == HYST_OK && m->inverse) {                                       \
+                st = hyst_curve_inverse(curve, &fwd);                                       \
+            } else {                                                                        \
+                *curve = fwd;                                                               \
             }                                                                               \
             return st != HYST_OK ? st : hyst_##P##_init_curve(S, curve, xl, yl, xr, yr, cap); \
         }                                                                                   \
@@ -207,18 +256,22 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
     hyst_curve_t curve;
     const mxArray *x = prhs[0];
     mxArray *y;
-    size_t n, cap, table_len;
+    size_t n, cap, len;
     int st;
     cap = count(prhs[1], "capacity", 1.0, 1e9);
-    table_len = m->intervals > 0u ? HYST_INV_TABLE_LEN(m->intervals) : 0u;
     n = mxGetNumberOfElements(x);
     if (mxIsComplex(x) || mxIsSparse(x) || !(mxIsDouble(x) || mxIsSingle(x))) {
         usage("the input must be a real double or single array");
     }
+    if ((4.0 * (double)cap + table_numbers(m)) * (double)mxGetElementSize(x) >
+        (double)(size_t)-1) {
+        usage("the turning-point arrays and the table exceed the address space");
+    }
+    len = table_len(m);
     y = mxCreateNumericArray(mxGetNumberOfDimensions(x), mxGetDimensions(x), mxGetClassID(x),
                              mxREAL);
     if (mxIsDouble(x)) {
-        double *tp = mxMalloc((4u * cap + table_len) * sizeof *tp);
+        double *tp = mxMalloc((4u * cap + len) * sizeof *tp);
         st = init_f64(&S, &curve, m, tp, cap, tp + 4u * cap);
         if (st == HYST_OK) {
             st = hyst_f64_set_deadband(&S, scalar(prhs[2], "deadband"));
@@ -233,7 +286,7 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
         }
         mxFree(tp);
     } else {
-        float *tp = mxMalloc((4u * cap + table_len) * sizeof *tp);
+        float *tp = mxMalloc((4u * cap + len) * sizeof *tp);
         st = init_f32(&S, &curve, m, tp, cap, tp + 4u * cap);
         if (st == HYST_OK) {
             st = hyst_f32_set_deadband(&S, (float)scalar(prhs[2], "deadband"));
@@ -255,9 +308,10 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
     if (nlhs > 2) {
         plhs[2] = mxCreateDoubleScalar((double)hyst_tp_count(&S));
     }
-    if (nlhs > 3) { /* the tabulated compensator's measured error (init, st >= 0 only) */
+    if (nlhs > 3) { /* the tabulated compensator's measured error (init succeeded: here,
+                       st is a warning or a non-finite sample's -7) */
         plhs[3] = mxCreateDoubleScalar(
-            m->intervals > 0u && st >= 0 ? (double)hyst_curve_inverse_error(&curve) : 0.0);
+            m->inverse && m->intervals > 0u ? (double)hyst_curve_inverse_error(&curve) : 0.0);
     }
 }
 
@@ -272,21 +326,28 @@ static void run_poly(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxA
     }
     memset(&m, 0, sizeof m);
     m.inverse = inverse;
-    m.intervals = inverse ? count(prhs[6], "intervals", 0.0, 1048576.0) : 0u;
+    m.intervals = inverse ? count(prhs[6], "intervals", 0.0, INTERVALS_MAX) : 0u;
     m.f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
     run_tcm(&m, nlhs, plhs, prhs + 3);
 }
 
-/* sim_everett or inv_everett: prhs = degree, lo, hi, y_lo, terms, x, capacity, deadband. */
+/* sim_everett or inv_everett: prhs = degree, lo, hi, y_lo, terms, x, capacity, deadband;
+ * inv_everett also intervals (0: the solved compensator) and rows. */
 static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     model_arg_t m;
-    if (nrhs != 8) {
-        usage("sim_everett/inv_everett take degree, lo, hi, y_lo, terms, x, capacity, deadband");
+    if (nrhs != (inverse ? 10 : 8)) {
+        usage(inverse ? "inv_everett takes degree, lo, hi, y_lo, terms, y, capacity, deadband, "
+                        "intervals, rows"
+                      : "sim_everett takes degree, lo, hi, y_lo, terms, x, capacity, deadband");
     }
     memset(&m, 0, sizeof m);
     m.everett = 1;
     m.inverse = inverse;
+    if (inverse) { /* checked before anything is allocated */
+        m.intervals = count(prhs[8], "intervals", 0.0, INTERVALS_MAX);
+        m.rows = count(prhs[9], "rows", ROWS_MIN, ROWS_MAX);
+    }
     m.e = everett_arg(prhs, inverse ? "hyst_inv" : "hyst_sim");
     run_tcm(&m, nlhs, plhs, prhs + 5);
 }
@@ -294,6 +355,20 @@ static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const 
 static void set_field(mxArray *s, const char *name, mxArray *v)
 {
     mxSetField(s, 0, name, v);
+}
+
+/* config: the default table sizes of the compensators, as built. */
+static void run_config(mxArray *plhs[])
+{
+    static const char *fields[] = {"inv_table", "everett_inv_rows", "everett_inv_intervals",
+                                   "inv_table_tol"};
+    mxArray *s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
+    set_field(s, "inv_table", mxCreateDoubleScalar((double)HYST_INV_TABLE));
+    set_field(s, "everett_inv_rows", mxCreateDoubleScalar((double)HYST_EVERETT_INV_ROWS));
+    set_field(s, "everett_inv_intervals",
+              mxCreateDoubleScalar((double)HYST_EVERETT_INV_INTERVALS));
+    set_field(s, "inv_table_tol", mxCreateDoubleScalar((double)HYST_INV_TABLE_TOL));
+    plhs[0] = s;
 }
 
 /* fit: prhs = x, y, degree, method, lo, hi, skip, delay. */
@@ -437,8 +512,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     char cmd[24];
     if (nrhs < 1 || !mxIsChar(prhs[0]) || mxGetString(prhs[0], cmd, sizeof cmd) != 0) {
-        usage("the first argument is a command: version, status_str, sim, inv, sim_everett, "
-              "inv_everett, fit or fit_everett");
+        usage("the first argument is a command: version, status_str, config, sim, inv, "
+              "sim_everett, inv_everett, fit or fit_everett");
     }
     if (strcmp(cmd, "version") == 0) {
         plhs[0] = mxCreateString(HYST_VERSION_STRING);
@@ -453,12 +528,14 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_poly(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "sim_everett") == 0 || strcmp(cmd, "inv_everett") == 0) {
         run_everett(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "config") == 0 && nrhs == 1) {
+        run_config(plhs);
     } else if (strcmp(cmd, "fit") == 0) {
         run_fit(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "fit_everett") == 0) {
         run_fit_everett(plhs, nrhs - 1, prhs + 1);
     } else {
-        usage("unknown command (version, status_str, sim, inv, sim_everett, inv_everett, fit, "
-              "fit_everett)");
+        usage("unknown command (version, status_str, config, sim, inv, sim_everett, inv_everett, "
+              "fit, fit_everett)");
     }
 }

@@ -13,7 +13,9 @@ function failed = run_tests(root, ref, cli)
            @t_fit_equals_cli, @t_errors_status_names, @t_usage_errors, ...
            @t_save_load_roundtrip, @t_load_rejects, @t_readme_block, ...
            @t_everett_reference, @t_everett_errors, @t_everett_fit, ...
-           @t_everett_save_load, @t_everett_load_rejects, @t_everett_inv};
+           @t_everett_save_load, @t_everett_load_rejects, @t_everett_inv, ...
+           @t_everett_inv_table_bitexact, @t_everett_inv_table_error, ...
+           @t_everett_inv_table_monotone, @t_everett_inv_table_arguments};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -60,10 +62,13 @@ function x = signal(n, lo, hi, seed)
   x(600) = lo - 1;
 end
 
-function [y, status] = run_ref(ctx, kind, cls, model, x, varargin)
-  % hyst_ref over x (raw numbers of class cls); extra key=value arguments
+function [y, status, inv_err] = run_ref(ctx, kind, cls, model, x, varargin)
+  % hyst_ref over x (raw numbers of class cls); extra key=value arguments.
+  % A model of kind everett goes as its E (degree=, y_lo=, terms=). inv_err:
+  % hyst_curve_inverse_error() of the compensator (hyst_ref's err=)
   fin = fullfile(ctx.tmp, 'in.raw');
   fout = fullfile(ctx.tmp, 'out.raw');
+  ferr = fullfile(ctx.tmp, 'err.txt');
   fid = fopen(fin, 'w');
   fwrite(fid, x, cls);
   fclose(fid);
@@ -71,15 +76,28 @@ function [y, status] = run_ref(ctx, kind, cls, model, x, varargin)
   if strcmp(cls, 'single')
     type = 'f32';
   end
-  coeffs = strjoin(arrayfun(@(c) sprintf('%.17g', c), model.coeffs, 'UniformOutput', false), ',');
-  cmd = sprintf('"%s" %s type=%s lo=%.17g hi=%.17g coeffs=%s in="%s" out="%s" %s', ctx.ref, ...
-                kind, type, model.lo, model.hi, coeffs, fin, fout, strjoin(varargin, ' '));
+  list = @(v) strjoin(arrayfun(@(c) sprintf('%.17g', c), v, 'UniformOutput', false), ',');
+  if isfield(model, 'kind') && strcmp(model.kind, 'everett')
+    what = sprintf('degree=%d y_lo=%.17g terms=%s', model.degree, model.y_lo, list(model.terms));
+  else
+    what = ['coeffs=' list(model.coeffs)];
+  end
+  if exist(ferr, 'file')
+    delete(ferr);
+  end
+  cmd = sprintf('"%s" %s type=%s lo=%.17g hi=%.17g %s in="%s" out="%s" err="%s" %s', ctx.ref, ...
+                kind, type, model.lo, model.hi, what, fin, fout, ferr, strjoin(varargin, ' '));
   [rc, out] = system(cmd);
   check(rc == 0, 'hyst_ref failed: %s', out);
   status = str2double(out);
   fid = fopen(fout, 'r');
   y = fread(fid, Inf, ['*' cls]);
   fclose(fid);
+  y = reshape(y, size(x));
+  inv_err = NaN;                      % hyst_ref writes it for a compensator it initialised
+  if nargout > 2 && exist(ferr, 'file')
+    inv_err = str2double(fileread(ferr));
+  end
 end
 
 function out = run_cli(ctx, args)
@@ -154,7 +172,8 @@ end
 
 function t_inv_table_bitexact(ctx)
   % the firmware's compensator (hyst_*_init_inverse_table), bit for bit, its
-  % measured error within the 1e-5 target; refused for the asymmetric kind
+  % measured error within the 1e-5 target (the asymmetric kind's table:
+  % t_everett_inv_table_*)
   m = paper_f0();
   yd = signal(3000, polyval(m.coeffs, m.lo), polyval(m.coeffs, m.hi), 4);
   [x, st, ~, err] = hyst_inv(m, yd, 'intervals', 256);
@@ -166,7 +185,6 @@ function t_inv_table_bitexact(ctx)
   [x, st] = hyst_inv(m, single(yd), 'intervals', 32);
   [xc, stc] = run_ref(ctx, 'inv', 'single', m, single(yd), 'intervals=32');
   check(isequal(typecast(x, 'uint32'), typecast(xc, 'uint32')) && st == stc, 'f32 differs');
-  expect_error('hyst:usage', @() hyst_inv(e3(), 0.1, 'intervals', 16));
   expect_error('hyst:usage', @() hyst_inv(m, yd, 'intervals', 0.5));
   expect_error('hyst:usage', @() hyst_sim(m, yd, 'intervals', 16));
 end
@@ -619,4 +637,195 @@ function t_everett_inv(~)
   e = e3();
   [x, st] = hyst_inv(e, [e.y_lo + e_value(e, e.hi, e.lo) + 1, e.y_lo - 1]);
   check(isequal(x, [e.hi, e.lo]) && st == 1, 'clamped: drive %s, status %d', mat2str(x), st);
+end
+
+% ---- the asymmetric kind's tabulated compensator ('intervals', 'rows') ----
+
+function same = bits_equal(a, b)
+  % the same numbers bit for bit (and the same class)
+  same = strcmp(class(a), class(b)) && isequal(size(a), size(b));
+  if same && isa(a, 'double')
+    same = isequal(typecast(a(:), 'uint64'), typecast(b(:), 'uint64'));
+  elseif same
+    same = isequal(typecast(a(:), 'uint32'), typecast(b(:), 'uint32'));
+  end
+end
+
+function t_everett_inv_table_bitexact(ctx)
+  % hyst_inv(e, y, 'intervals', N[, 'rows', R]): the tabulated compensator
+  % firmware runs (hyst_*_curve_everett_inverse_table), bit for bit against
+  % the C library (hyst_ref) in double and single, with the same status and
+  % init's measured error; 'rows' defaults to the library's
+  % HYST_EVERETT_INV_ROWS (hyst_ref's default); without 'intervals' the
+  % solved compensator, also bit for bit
+  e = e3();
+  range = e_value(e, e.hi, e.lo);
+  rand('state', 21);
+  yd = walk(e.y_lo, e.y_lo + range, 3000);
+  yd(700) = e.y_lo + range + 1;       % clamped
+  yd(1400) = e.y_lo - 1;
+  yd(2100) = NaN;                     % ignored
+  [x, st, ~, err] = hyst_inv(e, yd, 'intervals', 32);
+  [xc, stc, errc] = run_ref(ctx, 'inv', 'double', e, yd, 'intervals=32');
+  check(bits_equal(x, xc), 'f64 differs from hyst_ref in %d samples', nnz(x ~= xc));
+  check(st == stc && st == -7, 'status %d, hyst_ref %d (-7 expected: a NaN sample)', st, stc);
+  check(err == errc && err > 0, 'measured error %.17g, hyst_ref %.17g', err, errc);
+  config = hyst_mex('config');
+  check(isequal(x, hyst_inv(e, yd, 'intervals', 32, 'rows', config.everett_inv_rows)), ...
+        '''rows'' %d differs from the default', config.everett_inv_rows);
+  % another table: rows and intervals reach the library
+  [x5, st5, ~, err5] = hyst_inv(e, yd, 'intervals', 12, 'rows', 5);
+  [xc, stc, errc] = run_ref(ctx, 'inv', 'double', e, yd, 'intervals=12', 'rows=5');
+  check(bits_equal(x5, xc) && st5 == stc && err5 == errc, 'f64, 5 rows of 12 intervals differ');
+  check(any(x5 ~= x) && err5 ~= err, 'another table changed nothing');
+  % single: hyst_f32_*, a row vector
+  ys = single(yd');
+  for t = {{'intervals', 32}, {'intervals', 64, 'rows', 7}}
+    opts = t{1};
+    keys = {sprintf('intervals=%d', opts{2})};
+    if numel(opts) > 2
+      keys{2} = sprintf('rows=%d', opts{4});
+    end
+    [xs, st, ~, err] = hyst_inv(e, ys, opts{:});
+    [xc, stc, errc] = run_ref(ctx, 'inv', 'single', e, ys, keys{:});
+    check(bits_equal(xs, xc), 'f32 (%s) differs in %d samples', strjoin(keys, ' '), nnz(xs ~= xc));
+    check(st == stc && err == errc && err > 0, 'f32 (%s): status %d / %d, error %g / %g', ...
+          strjoin(keys, ' '), st, stc, err, errc);
+  end
+  check(any(double(xs) ~= hyst_inv(e, yd', 'intervals', 64, 'rows', 7)), 'single equals double');
+  % the solved compensator stays the default
+  [xe, st, ~, err] = hyst_inv(e, yd);
+  [xc, stc, errc] = run_ref(ctx, 'inv', 'double', e, yd);
+  check(bits_equal(xe, xc) && st == stc && err == 0 && errc == 0, 'the solved compensator');
+  check(any(xe ~= x), 'the table equals the solved compensator');
+  % bounded memory and a deadband reach the library as well
+  [xb, st] = hyst_inv(e, yd, 'intervals', 32, 'capacity', 3, 'deadband', 1e-3 * range);
+  [xc, stc] = run_ref(ctx, 'inv', 'double', e, yd, 'intervals=32', 'cap=3', ...
+                      sprintf('deadband=%.17g', 1e-3 * range));
+  check(bits_equal(xb, xc) && st == stc, 'capacity 3 and a deadband: differs');
+  check(any(xb ~= x), 'capacity 3 and a deadband changed nothing');
+end
+
+function t_everett_inv_table_error(~)
+  % the default table (HYST_EVERETT_INV_ROWS x HYST_EVERETT_INV_INTERVALS)
+  % against the exact (solved) compensator, for E of degrees 3, 2 and 4:
+  % sweeping up from rest, each drive is one table evaluation from an exact
+  % turning point: within init's measured error (down again from the top,
+  % whose drive is the table's, within twice that), in double and single; a
+  % random walk with jumps within 1e-5 of the drive span in double and
+  % single; the measured error within HYST_INV_TABLE_TOL
+  config = hyst_mex('config');
+  n = config.everett_inv_intervals;
+  es = everett_examples();
+  rand('state', 22);
+  slack = 2^-38;                      % the solved compensator's own tolerance, 2^-40
+  for k = 1:numel(es)
+    e = es{k};
+    span = e.hi - e.lo;
+    range = e_value(e, e.hi, e.lo);
+    up = e.y_lo + range * (0:2000)' / 2000;
+    yd = [up; flipud(up)];
+    [x, st, ~, err] = hyst_inv(e, yd, 'intervals', n);
+    xe = hyst_inv(e, yd);
+    check(st == 0, 'degree %d: status %d', e.degree, st);
+    check(err > 0 && err <= config.inv_table_tol, 'degree %d: measured error %g', e.degree, err);
+    d = abs(x - xe) / span;
+    check(max(d(1:2001)) <= 1.01 * err + slack, 'degree %d, up: %g, measured %g', ...
+          e.degree, max(d(1:2001)), err);
+    check(max(d(2002:end)) <= 2 * (1.01 * err + slack), 'degree %d, down: %g, measured %g', ...
+          e.degree, max(d(2002:end)), err);
+    check(max(d) > 0, 'degree %d: the table equals the solved compensator', e.degree);
+    % single: init's error holds the float arithmetic's rounding; against
+    % the exact drive for the float desired outputs
+    ys = single(yd);
+    [xs, ~, ~, errs] = hyst_inv(e, ys, 'intervals', n);
+    d = abs(double(xs) - hyst_inv(e, double(ys))) / span;
+    check(max(d(1:2001)) <= 1.01 * errs + eps('single') && ...
+          max(d(2002:end)) <= 2 * (1.01 * errs + eps('single')), ...
+          'degree %d, single: up %g, down %g, measured %g', e.degree, max(d(1:2001)), ...
+          max(d(2002:end)), errs);
+    yd = walk(e.y_lo, e.y_lo + range, 3000);
+    xe = hyst_inv(e, yd);
+    d = max(abs(hyst_inv(e, yd, 'intervals', n) - xe)) / span;
+    check(d <= 1e-5, 'degree %d, double: %g of the drive span', e.degree, d);
+    [xs, ~, ~, errs] = hyst_inv(e, single(yd), 'intervals', n);
+    d = max(abs(double(xs) - hyst_inv(e, double(single(yd))))) / span;
+    check(d <= 1e-5, 'degree %d, single: %g of the drive span', e.degree, d);
+    check(errs > 0 && errs <= config.inv_table_tol, 'degree %d, single: measured %g', ...
+          e.degree, errs);
+  end
+end
+
+function t_everett_inv_table_monotone(~)
+  % small steps up and down through many turning points, and wider moves
+  % across the table's intervals: the tabulated compensator's drive never
+  % moves against the desired output, in double and single
+  es = everett_examples();
+  rand('state', 23);
+  for k = 1:numel(es)
+    e = es{k};
+    range = e_value(e, e.hi, e.lo);
+    up = true(20000, 1);
+    for i = 2:numel(up)
+      up(i) = xor(up(i - 1), rand() < 0.02);
+    end
+    step = 2e-6 * ones(size(up));
+    step(rand(size(up)) < 0.01) = 1e-2;
+    yd = e.y_lo + range * min(max(0.5 + cumsum((2 * up - 1) .* step), 0), 1);
+    for cls = {'double', 'single'}
+      yc = cast(yd, cls{1});
+      dy = diff(double(yc));
+      d = diff(double(hyst_inv(e, yc, 'intervals', 32, 'rows', 16)));
+      check(all(d(dy > 0) >= 0) && all(d(dy < 0) <= 0) && all(d(dy == 0) == 0), ...
+            'degree %d, %s: the drive moved against the desired output', e.degree, cls{1});
+      check(nnz(d > 0) > 1000 && nnz(d < 0) > 1000, 'degree %d, %s: the drive hardly moved', ...
+            e.degree, cls{1});
+    end
+  end
+end
+
+function t_everett_inv_table_arguments(~)
+  % 'rows' only with 'intervals' and the asymmetric kind; rows 3..4096 and
+  % intervals 1..2^20 (0: solved) refused with the range in the message,
+  % before anything is allocated (the largest table of out-of-range sizes
+  % would not fit); the gateway checks them as well
+  e = e3();
+  y = e.y_lo + [0.1 0.5 0.2];
+  msg = @(varargin) error_message(@() hyst_inv(varargin{:}));
+  expect_error('hyst:usage', @() hyst_inv(paper_f0(), 1, 'intervals', 256, 'rows', 16));
+  check(~isempty(strfind(msg(paper_f0(), 1, 'intervals', 256, 'rows', 16), 'asymmetric')), ...
+        'poly: %s', msg(paper_f0(), 1, 'intervals', 256, 'rows', 16));
+  for args = {{'rows', 16}, {'rows', 16, 'intervals', 0}}
+    expect_error('hyst:usage', @() hyst_inv(e, y, args{1}{:}));
+    check(~isempty(strfind(msg(e, y, args{1}{:}), 'needs ''intervals''')), 'no intervals: %s', ...
+          msg(e, y, args{1}{:}));
+  end
+  for rows = {2, 4097, 2.5, -1, NaN, Inf, [16 16], '16', 1i + 16}
+    expect_error('hyst:usage', @() hyst_inv(e, y, 'intervals', 32, 'rows', rows{1}));
+    check(~isempty(strfind(msg(e, y, 'intervals', 32, 'rows', rows{1}), '3..4096')), ...
+          'rows %s: %s', num2str(rows{1}), msg(e, y, 'intervals', 32, 'rows', rows{1}));
+  end
+  for intervals = {2^20 + 1, -1, 0.5, NaN, [32 32], '32'}
+    for m = {e, paper_f0()}
+      expect_error('hyst:usage', @() hyst_inv(m{1}, y, 'intervals', intervals{1}));
+      check(~isempty(strfind(msg(m{1}, y, 'intervals', intervals{1}), '1..1048576')), ...
+            'intervals %s: %s', num2str(intervals{1}), msg(m{1}, y, 'intervals', intervals{1}));
+    end
+  end
+  text = msg(e, y, 'intervals', 2^20 + 1, 'rows', 4096);
+  check(~isempty(strfind(text, '1..1048576')), 'the largest sizes: %s', text);
+  expect_error('hyst:usage', @() hyst_sim(e, 1, 'rows', 16));
+  expect_error('hyst:usage', @() hyst_sim(e, 1, 'intervals', 16));
+  % the gateway: intervals and rows after the deadband, checked in range
+  p = {e.degree, e.lo, e.hi, e.y_lo, e.terms, y, 2048, 0};
+  x = hyst_mex('inv_everett', p{:}, 32, 16);
+  check(isequal(x, hyst_inv(e, y, 'intervals', 32)), 'hyst_mex inv_everett');
+  expect_error('hyst:usage', @() hyst_mex('inv_everett', p{:}));
+  expect_error('hyst:usage', @() hyst_mex('inv_everett', p{:}, 32));
+  check(~isempty(strfind(error_message(@() hyst_mex('inv_everett', p{:}, 2^20 + 1, 4096)), ...
+                         'intervals must be a whole number in 0..1048576')), 'gateway, intervals');
+  check(~isempty(strfind(error_message(@() hyst_mex('inv_everett', p{:}, 2^20, 4097)), ...
+                         'rows must be a whole number in 3..4096')), 'gateway, rows');
+  check(~isempty(strfind(error_message(@() hyst_mex('inv_everett', p{:}, 32, 2)), ...
+                         'rows must be a whole number in 3..4096')), 'gateway, rows 2');
 end
