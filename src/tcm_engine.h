@@ -27,7 +27,9 @@
  * linear scan this way). Fixed-point outputs (src/hyst_q31.c) also define
  *   TCM_G_HALF(S, d)     g at d / 2 (default: g() of d * 0.5)
  *   TCM_ADD_BOUND(a, e)  a += e for an error bound (saturating in fixed point)
- * and the products of Horner's rule (src/num_ops.h: NUM_MUL, NUM_MUL_G). */
+ * and the products of Horner's rule (src/num_ops.h: NUM_MUL, NUM_MUL_G).
+ * TCM_REAL_INPUT 1 says TCM_X is TCM_Y (a TP's input may then be any real:
+ * achieved_top()); default 0. */
 #ifndef HYST_TCM_ENGINE_H
 #define HYST_TCM_ENGINE_H
 
@@ -57,6 +59,9 @@
 #endif
 #ifndef TCM_ADD_BOUND
 #define TCM_ADD_BOUND(a, e) ((a) += (e))
+#endif
+#ifndef TCM_REAL_INPUT
+#define TCM_REAL_INPUT 0
 #endif
 
 /* Members of the variant's numbers: inputs and outputs. */
@@ -239,6 +244,59 @@ static TCM_NOINLINE TCM_Y TCM_NAME(blend_g)(const hyst_tcm_t *S, TCM_Y u)
 }
 #define TCM_BLEND_G(S, u) TCM_NAME(blend_g)((S), (u))
 
+#if TCM_REAL_INPUT
+HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
+                                       hyst_num_t *coef);
+
+/* A TP pushed since the last derive (more TPs than then: pushes add one per
+ * sample, wipe-outs and merges add none) is stored at the output the model
+ * gives for its drive, not at the desired output: its drive is an earlier
+ * output, one table evaluation off the exact inverse, and the branches that
+ * start there then continue from where the model is, so the errors of
+ * nested TPs do not add up. That output is the branch the TP ended, from
+ * its parent TP, evaluated exactly (E's polynomial). Kept where it is not
+ * strictly between the TP's neighbours in the input's order (rounding, or a
+ * reversal smaller than the table's error). Integer inputs keep the desired
+ * output (a code cannot hold it). */
+static void TCM_NAME(achieved_top)(hyst_tcm_t *S)
+{
+    const hyst_curve_t *c = S->curve;
+    const size_t tps = S->n_ltp + S->n_rtp;
+    const int fall = S->moving_end != 0u;
+    const size_t t = fall ? S->n_rtp - 1u : S->n_ltp - 1u; /* the current TP */
+    hyst_num_t coef[HYST_EVERETT_MAX_DEGREE];
+    TCM_X *x_top;
+    TCM_X x_parent, lower, upper, x_hat;
+    TCM_Y y_parent, w, q = 0;
+    unsigned i;
+    const int fresh = tps > S->tps_derived;
+    S->tps_derived = tps;
+    if (!fresh || (!fall && t == 0u)) { /* not new, or A0 */
+        return;
+    }
+    /* an RTP t ended the rising branch from LTP t; an LTP t the falling one from RTP t - 1 */
+    x_parent = fall ? XV(S->xltp)[t] : XV(S->xrtp)[t - 1u];
+    y_parent = fall ? YV(S->yltp)[t] : YV(S->yrtp)[t - 1u];
+    TCM_NAME(table_coefs)(fall ? c->u.everett.rise : c->u.everett.fall, c->u.everett.degree,
+                          (y_parent - YV(S->y_lo)) * YV(c->u.everett.inv_span), coef);
+    w = NUM_NAME(abs)(YV(S->y_ctp) - y_parent) * YV(c->u.everett.inv_span);
+    for (i = 0u; i < c->u.everett.degree; ++i) { /* p(w) = w q(w) */
+        q = q * w + YV(coef[i]);
+    }
+    x_hat = x_parent + (fall ? q * w : -(q * w)) / YV(S->unit);
+    x_top = fall ? &XV(S->xrtp)[t] : &XV(S->xltp)[t];
+    /* the input now is on the new branch: below an RTP, above an LTP */
+    lower = fall ? XV(S->window[1]) : XV(S->xltp)[t - 1u];
+    upper = fall ? (t > 0u ? XV(S->xrtp)[t - 1u] : XV(S->hi)) : XV(S->window[0]);
+    if (x_hat > lower && x_hat < upper) {
+        *x_top = TCM_NORM(x_hat);
+        YV(S->x_ctp) = *x_top;
+    }
+}
+#else
+static void TCM_NAME(achieved_top)(hyst_tcm_t *S) { (void)S; }
+#endif
+
 /* The branch's rows, weights and index scale (derive()): cubic Lagrange
  * weights on the four rows around its anchor a (rows base .. base + 3 of
  * its direction, at x = a rows - base in 0..3), and v_scale = N / V(a), V
@@ -255,6 +313,7 @@ static void TCM_NAME(derive_blend)(hyst_tcm_t *S)
     TCM_Y x = anchor * (TCM_Y)rows, range = 0;
     unsigned long j = x > 0 ? (unsigned long)x : 0u, base;
     unsigned m;
+    TCM_NAME(achieved_top)(S);
     j = j > rows - 1u ? rows - 1u : j;
     base = j < 1u ? 0u : (j - 1u > rows - 3u ? rows - 3u : j - 1u);
     x -= (TCM_Y)base;
@@ -754,6 +813,7 @@ void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
     XV(S->db_reach) = (TCM_X)book->db_reach;
     YV(S->db_err) = (TCM_Y)book->db_err;
     S->status = status;
+    S->tps_derived = S->n_ltp + S->n_rtp; /* stored as the run saved left them */
     TCM_NAME(set_detour)(S);
     TCM_NAME(settle)(S, TCM_NORM((TCM_X)x));
     YV(S->y_prev) = (TCM_Y)y;
@@ -800,6 +860,7 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
         YV(S->blend[k]) = 0;
     }
     S->cached_k = ULONG_MAX;
+    S->tps_derived = 0u;
     for (k = 0u; k < HYST_MAX_DEGREE; ++k) { /* the asymmetric kind's: per branch, settle() */
         YV(S->coef[k]) = curve->kind == (unsigned)HYST_CURVE_POLY && k < S->degree
                              ? YV(curve->u.poly.a[k])

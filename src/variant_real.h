@@ -48,6 +48,7 @@ static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
 #define TCM_D(a, b) ((a) - (b))
 #define TCM_MID(a, b) ((a) + ((b) - (a)) * NUM_C(0.5))
 #define TCM_NORM(a) ((a) + NUM_C(0.0)) /* -0 + +0 = +0 */
+#define TCM_REAL_INPUT 1
 #define TCM_ADMIT(S, x, out) NUM_NAME(admit)((S), (x), (out))
 #define TCM_G_OTHER(c, d) NUM_NAME(curve_g_other_)((c), (d))
 #ifdef NUM_KEY_T

@@ -4,7 +4,9 @@
  * with the default table, the drive agrees with the exact inverse of a
  * plain double reference within 1e-5 of the drive span (and within the
  * error init measured, where a sweep adds no turning point); an E with a
- * flat start is solved where the table cannot follow it; the drive never
+ * flat start is solved where the table cannot follow it; on nested loops
+ * hundreds deep the model driven by it gives the desired outputs within
+ * 1e-5 of its range (turning points at the model's output); the drive never
  * moves against the desired output; block call = steps; snapshots continue
  * bit for bit; integer codes and bounded memory work; bad arguments are
  * refused. */
@@ -20,6 +22,8 @@
 #define ROWS HYST_EVERETT_INV_ROWS
 #define INTERVALS HYST_EVERETT_INV_INTERVALS
 #define TARGET 1e-5 /* of the drive span: the compensator's promise */
+#define DEEP 1000u        /* TPs of the nested-loops test (the reference holds 1024) */
+#define DEEP_SAMPLES 3600L /* 900 reversals */
 
 static hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
 static hyst_real_t xl2[CAP], yl2[CAP], xr2[CAP], yr2[CAP];
@@ -180,6 +184,47 @@ static void test_flat_start_is_solved(void)
                 (unsigned)inv.u.everett.exact, (unsigned)INTERVALS, worst);
 }
 
+/* Nested loops, hundreds deep (a decaying oscillation, a reversal every
+ * four samples): the model driven by the compensator gives the desired
+ * outputs within TARGET of its range at every depth. A turning point's
+ * drive is one table evaluation off the exact inverse; its desired output
+ * is replaced by the model's output for that drive (tcm_engine.h,
+ * achieved_top()), so the nested branches do not add up those errors. */
+static void test_nested_loops_do_not_add_up(void)
+{
+    static hyst_real_t dl[DEEP], dyl[DEEP], dr[DEEP], dyr[DEEP];
+    hyst_t D;
+    int trial;
+    for (trial = 0; trial < 10; ++trial) {
+        const hyst_everett_t e = accepted_e();
+        const double range = ref_everett_e(&e, e.hi, e.lo), mid = e.y_lo + 0.5 * range;
+        double worst = 0.0, worst_shallow = 0.0;
+        long k, worst_at = 0;
+        size_t depth = 0u;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&D, &inv, dl, dyl, dr, dyr, DEEP));
+        ref_everett_init(&ref, &e);
+        for (k = 0; k < DEEP_SAMPLES; ++k) {
+            const double amp = 0.49 * range * (1.0 - (double)k / (double)DEEP_SAMPLES);
+            const hyst_real_t y = (hyst_real_t)(mid + amp * sin(0.3 + 6.283185307179586 * (double)k / 8.0));
+            const double x = (double)hyst_step(&D, y);
+            const double out = fabs(ref_everett_step(&ref, x) - (double)y) / range;
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&D));
+            if (out > worst) {
+                worst = out;
+                worst_at = k;
+            }
+            if (k < DEEP_SAMPLES / 10) {
+                worst_shallow = out > worst_shallow ? out : worst_shallow;
+            }
+            depth = hyst_tp_count(&D) > depth ? hyst_tp_count(&D) : depth;
+        }
+        TEST_PRINTF("E %d: output error %g of the range (sample %ld), %g in the first tenth; "
+                    "%lu TPs deep", trial, worst, worst_at, worst_shallow, (unsigned long)depth);
+        TEST_ASSERT_TRUE(depth > DEEP / 2u);
+        TEST_ASSERT_TRUE(worst <= TARGET);
+    }
+}
+
 /* Sweeps by adjacent values up and down through many turning points: the
  * drive never moves against the desired output. */
 static void test_drive_is_monotone(void)
@@ -325,6 +370,7 @@ int main(void)
     RUN_TEST(test_drive_agrees_with_the_exact_inverse);
     RUN_TEST(test_sweeps_within_the_measured_error);
     RUN_TEST(test_flat_start_is_solved);
+    RUN_TEST(test_nested_loops_do_not_add_up);
     RUN_TEST(test_drive_is_monotone);
     RUN_TEST(test_block_and_snapshots);
     RUN_TEST(test_bounded_memory);

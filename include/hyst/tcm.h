@@ -170,6 +170,10 @@ typedef struct hyst_tcm {
     hyst_num_t v_scale;
     hyst_num_t blend[4];
     unsigned long cached_k;
+    /** TPs stored at the last derive of the tabulated asymmetric
+     *  compensator: one more, and the new TP's input becomes the model's
+     *  output for its drive */
+    size_t tps_derived;
 } hyst_tcm_t;
 
 /**
