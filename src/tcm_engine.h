@@ -274,6 +274,7 @@ static void TCM_NAME(achieved_top)(hyst_tcm_t *S)
     if (!fresh || (!fall && t == 0u)) { /* not new, or A0 */
         return;
     }
+    memset(coef, 0, sizeof coef); /* degree <= HYST_EVERETT_MAX_DEGREE: a compiler can't tell */
     /* an RTP t ended the rising branch from LTP t; an LTP t the falling one from RTP t - 1 */
     x_parent = fall ? XV(S->xltp)[t] : XV(S->xrtp)[t - 1u];
     y_parent = fall ? YV(S->yltp)[t] : YV(S->yrtp)[t - 1u];
