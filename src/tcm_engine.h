@@ -274,7 +274,11 @@ static void TCM_NAME(achieved_top)(hyst_tcm_t *S)
     if (!fresh || (!fall && t == 0u)) { /* not new, or A0 */
         return;
     }
-    memset(coef, 0, sizeof coef); /* degree <= HYST_EVERETT_MAX_DEGREE: a compiler can't tell */
+    for (i = 0u; i < (unsigned)HYST_EVERETT_MAX_DEGREE; ++i) {
+        /* read below degree only, which a compiler can't tell; not memset(),
+         * whose call would clobber the callers' registers (IPA-RA) */
+        YV(coef[i]) = 0;
+    }
     /* an RTP t ended the rising branch from LTP t; an LTP t the falling one from RTP t - 1 */
     x_parent = fall ? XV(S->xltp)[t] : XV(S->xrtp)[t - 1u];
     y_parent = fall ? YV(S->yltp)[t] : YV(S->yrtp)[t - 1u];
@@ -558,6 +562,11 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const i
 #define TCM_KEEP 0
 #define TCM_DERIVE_RISE 1
 #define TCM_DERIVE_FALL 2
+/* TCM_KEEP on a slow path (finish()): the tabulated asymmetric
+ * compensator's sample out of line there, inline on the fast path only, so
+ * the slow paths of the other kinds keep their code */
+#define TCM_KEEP_SLOW 3
+#define TCM_DERIVES(derive) ((derive) == TCM_DERIVE_RISE || (derive) == TCM_DERIVE_FALL)
 
 /* The forward asymmetric kind's anchor: the current TP's input, 0..1 over
  * the domain. */
@@ -575,7 +584,7 @@ static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S);
  * its budget); the fast path evaluates the cached ones. */
 #define TCM_ASYM_CASE_(base, coefs, n)                                                      \
     case base + n##u:                                                                       \
-        if (derive != TCM_KEEP) {                                                           \
+        if (TCM_DERIVES(derive)) {                                                          \
             TCM_NAME(coefs)(derive == TCM_DERIVE_RISE ? S->curve->u.everett.rise            \
                                                       : S->curve->u.everett.fall,           \
                             n##u, TCM_NAME(input_anchor)(S), S->coef);                      \
@@ -612,20 +621,35 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
     TCM_ASYM_CASES_(HYST_HORNER_ASYM_, table_coefs);
     TCM_ASYM_CASES_(HYST_HORNER_ASYM_LINEAR_, table_coefs_linear);
     case HYST_HORNER_SOLVE_:
-        if (derive != TCM_KEEP) {
+        if (TCM_DERIVES(derive)) {
             TCM_NAME(derive)(S);
         }
         return TCM_NAME(emit_solved)(S, x, how);
 #ifndef NUM_FIXED
-    case HYST_HORNER_BLEND_: /* the tabulated asymmetric compensator: out of line, as the
-                              * solved one, so that the other kinds' paths keep their layout */
-        if (derive != TCM_KEEP) { /* a new branch: no interval blended yet */
-            TCM_NAME(derive)(S);
+    case HYST_HORNER_BLEND_: /* the tabulated asymmetric compensator: a sample in the
+                              * interval blended last costs one cubic, inline; the others
+                              * (and a new branch: no interval blended yet) out of line */
+        if (derive != TCM_KEEP) {
+            if (TCM_DERIVES(derive)) {
+                TCM_NAME(derive)(S);
+            }
+            return TCM_NAME(emit_blended)(S, x, how);
+        } else {
+            const TCM_Y s = u * YV(S->v_scale);
+            const unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 */
+            if (k != S->cached_k) {
+                return TCM_NAME(emit_blended)(S, x, how);
+            }
+            acc = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
+            if (!(acc >= 0)) { /* a solved interval */
+                return TCM_NAME(emit_rare)(S, x, how);
+            }
+            u = NUM_G_ONE;
         }
-        return TCM_NAME(emit_blended)(S, x, how);
+        break;
 #endif
     default: /* a pending request, or degree 9 and up */
-        if (derive != TCM_KEEP && (S->detour & TCM_PER_BRANCH) != 0u) {
+        if (TCM_DERIVES(derive) && (S->detour & TCM_PER_BRANCH) != 0u) {
             TCM_NAME(derive)(S);
         }
         return TCM_NAME(emit_rare)(S, x, how);
@@ -1214,7 +1238,7 @@ static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x, int how)
     TCM_Y y;
     TCM_NAME(settle)(S, x);
     if ((S->detour & TCM_SLOW_ONLY) == 0u) {
-        y = TCM_NAME(emit)(S, x, how, TCM_KEEP); /* serves a pending request */
+        y = TCM_NAME(emit)(S, x, how, TCM_KEEP_SLOW); /* serves a pending request */
     } else {
         y = TCM_NAME(slow_only)(S, x, how);
         YV(S->y_prev) = y;
