@@ -25,6 +25,9 @@
 HYST_DEFINE_INVERSE(model, NU); /* model, then the compensator */
 HYST_DEFINE(asym_model, NU);    /* the asymmetric kind, then its compensator */
 static hyst_curve_t asym_curve, asym_inverse;
+/* its compensator's table, when tabulated (the library's default size) */
+static hyst_real_t asym_inv_table[HYST_EVERETT_INV_TABLE_LEN(HYST_EVERETT_INV_ROWS,
+                                                             HYST_EVERETT_INV_INTERVALS)];
 
 static int failures;
 
@@ -653,6 +656,18 @@ static void asymmetric(void)
         plant_everett_init_piezo(&comp_plant);
         (void)track("major", &asym_model, xs, n, y_lo, y_hi, everett_step, &open_plant,
                     &comp_plant);
+        /* the asymmetric compensator as firmware runs it by default: tabulated */
+        n = ramp_path(0.0, levels, paper_levels(0.0, 40.0, levels), 0.1, xs, 8192);
+        check(hyst_curve_everett_inverse_table(&asym_inverse, &asym_curve, asym_inv_table,
+                                               HYST_EVERETT_INV_ROWS,
+                                               HYST_EVERETT_INV_INTERVALS) == HYST_OK &&
+                  HYST_INIT_CURVE(asym_model, &asym_inverse) == HYST_OK,
+              "asymmetric_table_compensator");
+        value("table_inverse_error", (double)hyst_curve_inverse_error(&asym_inverse));
+        plant_everett_init_piezo(&open_plant);
+        plant_everett_init_piezo(&comp_plant);
+        value("comp_table_rms_ratio", sqrt(track("table", &asym_model, xs, n, y_lo, y_hi,
+                                                 everett_step, &open_plant, &comp_plant)));
     }
     end();
 }

@@ -490,7 +490,12 @@ def asymmetric(sec, md, out):
                   f"{v['symmetric_major_open_rms'] / v['symmetric_major_comp_rms']:.1f} |")
         md.append(f"| inverse of the asymmetric TCM (`hyst_curve_inverse()`) | {fmt(v['comp_rms'])} | "
                   f"{fmt(v['comp_max'])} | {fmt(v['open_rms'])} | **comp_rms_ratio "
-                  f"{v['comp_rms_ratio']:.2f}** | {v['major_open_rms'] / v['major_comp_rms']:.1f} |\n")
+                  f"{v['comp_rms_ratio']:.2f}** | {v['major_open_rms'] / v['major_comp_rms']:.1f} |" +
+                  (f"\n| the same, tabulated as firmware runs it (`hyst_curve_everett_inverse_table()`, "
+                   f"default table; init measured {v['table_inverse_error']:.2g} of the drive range) | "
+                   f"{fmt(v['table_comp_rms'])} | {fmt(v['table_comp_max'])} | {fmt(v['table_open_rms'])} | "
+                   f"comp_table_rms_ratio {v['comp_table_rms_ratio']:.2f} | |" if "comp_table_rms_ratio" in v
+                   else "") + "\n")
         md.append("The symmetric compensator is limited by its model's symmetry (its major loop is "
                   "point-symmetric, the plant's is not). The asymmetric one inverts a model whose hold-out "
                   "error is at the noise level, faithfully (`tests/test_everett_inverse.c`): what remains is "
