@@ -1304,6 +1304,20 @@ static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
     return TCM_NAME(finish)(S, x, x > x_prev ? TCM_ROSE : TCM_FELL);
 }
 
+/* A reversal while TCM_SETTLING (the merges left, the output held off the
+ * full model's branch by the monotone guard): the TP it stores takes the
+ * full model's output at x_prev, not the held one, so the state is the full
+ * model's again; stored held, its offset would stay in every branch from
+ * there while settle_bound(), measuring against that TP, declared the
+ * error gone. The output moves to it in the new direction (the guard held
+ * it against the old one), so it stays monotone. */
+static void TCM_NAME(release_held)(hyst_tcm_t *S)
+{
+    if ((S->detour & TCM_SETTLING) != 0u) {
+        YV(S->y_prev) = TCM_NAME(on_branch)(S, YV(S->g_prev));
+    }
+}
+
 /* Reversal on a falling branch without a wipe-out, with a detour (a flag
  * of S->detour, or a full LTP array): (x_prev, y_prev) becomes LTP nl,
  * unless the deadband skips it or a full array merges it. */
@@ -1311,6 +1325,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_p
 {
     size_t nl = S->n_ltp, nr = S->n_rtp;
     TCM_NAME(fresh)(S);
+    TCM_NAME(release_held)(S);
     if ((TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev) < XV(S->deadband)) {
         TCM_NAME(skip)(S, x_prev, XV(S->xrtp)[nr - 1u]); /* keep falling */
     } else {
@@ -1338,6 +1353,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_down)(hyst_tcm_t *S, TCM_X x, TCM_X x
 {
     const size_t nl = S->n_ltp, nr = S->n_rtp;
     TCM_NAME(fresh)(S);
+    TCM_NAME(release_held)(S);
     if ((TCM_X)(x_prev - XV(S->xltp)[nl - 1u]) < XV(S->deadband)) {
         TCM_NAME(skip)(S, XV(S->xltp)[nl - 1u], x_prev); /* keep rising */
     } else {
