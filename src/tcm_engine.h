@@ -177,11 +177,11 @@ static TCM_NOINLINE TCM_Y TCM_NAME(solve)(const hyst_tcm_t *S, TCM_Y v)
 #define TCM_SOLVE_INLINE(S, v, w) ((void)(w), TCM_SOLVE(S, v))
 #endif
 
-/* The asymmetric compensator's anchor: the current TP's drive, 0..1 over
- * the drive range. */
-HYST_INLINE TCM_Y TCM_NAME(drive_anchor)(const hyst_tcm_t *S)
+/* The asymmetric compensator's anchor of a TP of drive y (the current
+ * TP's: y_ctp): y, 0..1 over the drive range. */
+HYST_INLINE TCM_Y TCM_NAME(drive_anchor)(const hyst_tcm_t *S, TCM_Y y)
 {
-    return (YV(S->y_ctp) - YV(S->y_lo)) * YV(S->curve->u.everett.inv_span);
+    return (y - YV(S->y_lo)) * YV(S->curve->u.everett.inv_span);
 }
 
 #ifndef NUM_FIXED /* real outputs only */
@@ -264,31 +264,24 @@ static void TCM_NAME(achieved_top)(hyst_tcm_t *S)
     const size_t tps = S->n_ltp + S->n_rtp;
     const int fall = S->moving_end != 0u;
     const size_t t = fall ? S->n_rtp - 1u : S->n_ltp - 1u; /* the current TP */
-    hyst_num_t coef[HYST_EVERETT_MAX_DEGREE];
     TCM_X *x_top;
     TCM_X x_parent, lower, upper, x_hat;
-    TCM_Y y_parent, w, q = 0;
-    unsigned i;
+    TCM_Y y_parent, p;
     const int fresh = tps > S->tps_derived;
     S->tps_derived = tps;
     if (!fresh || (!fall && t == 0u)) { /* not new, or A0 */
         return;
     }
-    for (i = 0u; i < (unsigned)HYST_EVERETT_MAX_DEGREE; ++i) {
-        /* read below degree only, which a compiler can't tell; not memset(),
-         * whose call would clobber the callers' registers (IPA-RA) */
-        YV(coef[i]) = 0;
-    }
     /* an RTP t ended the rising branch from LTP t; an LTP t the falling one from RTP t - 1 */
     x_parent = fall ? XV(S->xltp)[t] : XV(S->xrtp)[t - 1u];
     y_parent = fall ? YV(S->yltp)[t] : YV(S->yrtp)[t - 1u];
+    /* that branch's p(w) into S->coef, free here: derive_blend() empties
+     * the blend it holds */
     TCM_NAME(table_coefs)(fall ? c->u.everett.rise : c->u.everett.fall, c->u.everett.degree,
-                          (y_parent - YV(S->y_lo)) * YV(c->u.everett.inv_span), coef);
-    w = NUM_NAME(abs)(YV(S->y_ctp) - y_parent) * YV(c->u.everett.inv_span);
-    for (i = 0u; i < c->u.everett.degree; ++i) { /* p(w) = w q(w) */
-        q = q * w + YV(coef[i]);
-    }
-    x_hat = x_parent + (fall ? q * w : -(q * w)) / YV(S->unit);
+                          TCM_NAME(drive_anchor)(S, y_parent), S->coef);
+    p = NUM_NAME(horner)(S->coef, c->u.everett.degree,
+                         NUM_NAME(abs)(YV(S->y_ctp) - y_parent) * YV(c->u.everett.inv_span));
+    x_hat = x_parent + (fall ? p : -p) / YV(S->unit);
     x_top = fall ? &XV(S->xrtp)[t] : &XV(S->xltp)[t];
     /* the input now is on the new branch: below an RTP, above an LTP */
     lower = fall ? XV(S->window[1]) : XV(S->xltp)[t - 1u];
@@ -313,7 +306,7 @@ static void TCM_NAME(derive_blend)(hyst_tcm_t *S)
     const unsigned fall = S->moving_end != 0u ? 1u : 0u;
     const unsigned long rows = (unsigned long)c->u.everett.rows;
     const unsigned long n = (unsigned long)c->u.everett.intervals;
-    const TCM_Y anchor = TCM_NAME(drive_anchor)(S);
+    const TCM_Y anchor = TCM_NAME(drive_anchor)(S, YV(S->y_ctp));
     const TCM_Y least = TCM_D(XV(S->hi), XV(S->lo)) * ((TCM_Y)n * NUM_C(9.313225746154785e-10));
     TCM_Y x = anchor * (TCM_Y)rows, range = 0;
     unsigned long j = x > 0 ? (unsigned long)x : 0u, base;
@@ -762,7 +755,7 @@ static void TCM_NAME(newton_state)(const hyst_tcm_t *S, hyst_num_t *coef, TCM_Y 
     const TCM_Y v_end = NUM_NAME(abs)(TCM_R(x_end) - YV(S->x_ctp)) * YV(S->unit);
     unsigned i;
     TCM_NAME(table_coefs)(up ? c->u.everett.rise : c->u.everett.fall, n,
-                          TCM_NAME(drive_anchor)(S), coef);
+                          TCM_NAME(drive_anchor)(S, YV(S->y_ctp)), coef);
     *w_end = NUM_NAME(abs)(y_end - YV(S->y_ctp)) * YV(c->u.everett.inv_span);
     *secant = v_end > 0 ? *w_end / v_end : 0;
     *curv = 0; /* |p''| <= sum k (k - 1) |a_k| on w in [0, 1] */
