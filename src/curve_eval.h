@@ -425,6 +425,27 @@ hyst_status_t NUM_NAME(curve_everett_inverse_table)(hyst_curve_t *inv, const hys
     return hyst_curve_everett_inverse_table_(inv, fwd, t, rows, intervals, NUM_VARIANT);
 }
 
+hyst_status_t NUM_NAME(curve_inverse_table_const)(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                  const NUM_T *table, size_t intervals,
+                                                  const hyst_table_seal_t *seal)
+{
+    hyst_cptr_t t;
+    t.NUM_F = table;
+    return hyst_curve_inverse_table_const_(inv, fwd, t, intervals, seal, NUM_VARIANT);
+}
+
+hyst_status_t NUM_NAME(curve_everett_inverse_table_const)(hyst_curve_t *inv,
+                                                          const hyst_curve_t *fwd,
+                                                          const NUM_T *table, size_t rows,
+                                                          size_t intervals,
+                                                          const hyst_table_seal_t *seal)
+{
+    hyst_cptr_t t;
+    t.NUM_F = table;
+    return hyst_curve_everett_inverse_table_const_(inv, fwd, t, rows, intervals, seal,
+                                                   NUM_VARIANT);
+}
+
 NUM_T NUM_NAME(curve_eval)(const hyst_curve_t *curve, NUM_T x)
 {
     if (curve == NULL || curve->variant != (unsigned)NUM_VARIANT) {

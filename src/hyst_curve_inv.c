@@ -307,12 +307,13 @@ static hyst_wide_t table_pieces(table_build_t *b, size_t intervals)
  * GCC would report (-Wtype-limits). */
 static int table_size_ok(unsigned long n) { return n >= 1ul && n <= TABLE_MAX_INTERVALS; }
 
-hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
-                                        hyst_ptr_t table, size_t intervals, unsigned variant)
+/* Everything of the table's curve but its numbers, and the build's state:
+ * the checks both constructors make, the axes swapped, the index scale. */
+static hyst_status_t table_prepare(hyst_curve_t *out, table_build_t *b, const hyst_curve_t *inv,
+                                   const hyst_curve_t *fwd, hyst_cptr_t table, size_t intervals,
+                                   unsigned variant)
 {
-    hyst_curve_t out;
-    table_build_t b;
-    hyst_wide_t range, span, worst;
+    hyst_wide_t range, span;
     hyst_status_t st = hyst_curve_check(fwd);
     if (inv == NULL || table.f32 == NULL) {
         return HYST_ERR_NULL;
@@ -326,41 +327,110 @@ hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *f
     if (fwd->kind != (unsigned)HYST_CURVE_POLY || !table_size_ok((unsigned long)intervals)) {
         return HYST_ERR_ARG;
     }
-    out = *fwd;
-    out.kind = HYST_CURVE_INV_TABLE;
-    out.lo = fwd->y_lo;
-    out.hi = fwd->y_hi;
-    out.y_lo = fwd->lo;
-    out.y_hi = fwd->hi;
-    (void)hyst_num_set(&out.rounding, variant, 0);
-    out.u.inv_table.fwd = fwd->u.poly;
+    *out = *fwd;
+    out->kind = HYST_CURVE_INV_TABLE;
+    out->lo = fwd->y_lo;
+    out->hi = fwd->y_hi;
+    out->y_lo = fwd->lo;
+    out->y_hi = fwd->hi;
+    (void)hyst_num_set(&out->rounding, variant, 0);
+    out->u.inv_table.fwd = fwd->u.poly;
     range = unit_g(&fwd->u.poly, variant, 1);
     span = hyst_num_get(&fwd->hi, variant) - hyst_num_get(&fwd->lo, variant);
     if (!(range > 0) || !(span > 0)) {
         return HYST_ERR_NOT_INVERTIBLE;
     }
-    (void)hyst_num_set(&out.u.inv_table.span, variant, span);
-    (void)hyst_num_set(&out.u.inv_table.u_per_d, variant, 1 / span);
+    (void)hyst_num_set(&out->u.inv_table.span, variant, span);
+    (void)hyst_num_set(&out->u.inv_table.u_per_d, variant, 1 / span);
     /* s = e unit, as the samples compute it: the knots sit where they see them */
-    (void)hyst_num_set(&out.unit, variant, (hyst_wide_t)intervals / range);
-    memset(&b, 0, sizeof b);
-    b.span = span;
-    b.e_per_s = 1 / hyst_num_get(&out.unit, variant);
-    b.eps = variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_EPSILON : HYST_WIDE_EPS;
-    out.u.inv_table.table.f32 = table.f32;
-#if HYST_ENABLE_F64
-    if (variant == (unsigned)HYST_VARIANT_F64) {
-        out.u.inv_table.table.f64 = table.f64;
+    (void)hyst_num_set(&out->unit, variant, (hyst_wide_t)intervals / range);
+    memset(b, 0, sizeof *b);
+    b->span = span;
+    b->e_per_s = 1 / hyst_num_get(&out->unit, variant);
+    b->eps = variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_EPSILON : HYST_WIDE_EPS;
+    out->u.inv_table.table = table;
+    out->u.inv_table.intervals = intervals;
+    out->u.inv_table.exact = 0u;
+    out->u.inv_table.drive_bits = 0u;
+    out->u.inv_table.drive_code_lo = 0u;
+    b->c = out;
+    return HYST_OK;
+}
+
+hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                        hyst_ptr_t table, size_t intervals, unsigned variant)
+{
+    hyst_curve_t out;
+    table_build_t b;
+    const hyst_cptr_t view = hyst_cptr_of(table, variant);
+    hyst_status_t st;
+    st = table_prepare(&out, &b, inv, fwd, view, intervals, variant);
+    if (st != HYST_OK) {
+        return st;
     }
-#endif
-    out.u.inv_table.intervals = intervals;
-    out.u.inv_table.exact = 0u;
-    out.u.inv_table.drive_bits = 0u;
-    out.u.inv_table.drive_code_lo = 0u;
-    b.c = &out;
     b.table = table;
-    worst = table_pieces(&b, intervals);
-    out.u.inv_table.max_err = worst / b.span;
+    out.u.inv_table.max_err = hyst_table_err_(table_pieces(&b, intervals) / b.span);
+    *inv = out;
+    return HYST_OK;
+}
+
+/* Knots checked against the model in a table given ready-made. */
+#define CHECK_KNOTS 7u
+
+/* A table given ready-made, against the model: its end (the drive span),
+ * the intervals evaluated exactly (counted as the build counts them), and
+ * the drive step at CHECK_KNOTS knots solved again, within rounding (8
+ * units of the variant's type, of the span). 0 if it is another model's
+ * table. */
+static int table_matches(table_build_t *b, hyst_cptr_t table, size_t n)
+{
+    const unsigned variant = b->c->variant;
+    const hyst_wide_t tol = 8 * b->eps * b->span;
+    size_t k;
+    unsigned j;
+    for (k = 0u; k < n; ++k) {
+        b->c->u.inv_table.exact += hyst_cptr_get(table, 4u * k, variant) < 0 ? 1u : 0u;
+    }
+    for (j = 0u; j < 4u; ++j) {
+        const hyst_wide_t end = hyst_cptr_get(table, 4u * n + j, variant);
+        if (!(hyst_wide_abs(end - (j == 0u ? b->span : 0)) <= tol)) {
+            return 0;
+        }
+    }
+    for (j = 1u; j <= CHECK_KNOTS; ++j) {
+        const size_t knot = j * n / (CHECK_KNOTS + 1u);
+        const hyst_wide_t c0 = hyst_cptr_get(table, 4u * knot, variant);
+        const hyst_wide_t u =
+            solve_g(&b->c->u.inv_table.fwd, variant, (hyst_wide_t)knot * b->e_per_s, 0, 1);
+        if (c0 >= 0 && !(hyst_wide_abs(c0 - u * b->span) <= tol)) {
+            return 0;
+        }
+        if (!(c0 >= 0 || c0 == -1)) { /* neither a drive step nor the mark */
+            return 0;
+        }
+    }
+    return 1;
+}
+
+hyst_status_t hyst_curve_inverse_table_const_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                              hyst_cptr_t table, size_t intervals,
+                                              const hyst_table_seal_t *seal, unsigned variant)
+{
+    hyst_curve_t out;
+    table_build_t b;
+    hyst_status_t st = seal == NULL ? HYST_ERR_NULL
+                                    : table_prepare(&out, &b, inv, fwd, table, intervals, variant);
+    if (st == HYST_OK) {
+        st = hyst_table_seal_check_((unsigned)HYST_CURVE_INV_TABLE, variant, table, 0u,
+                                    intervals, seal);
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    if (!table_matches(&b, table, intervals)) {
+        return HYST_ERR_CURVE;
+    }
+    out.u.inv_table.max_err = seal->max_err;
     *inv = out;
     return HYST_OK;
 }

@@ -137,7 +137,8 @@ static void range_poly(const hyst_curve_t *c, int fall, hyst_wide_t *v)
 /* The build: the curve, its table, one direction's rows. */
 typedef struct {
     hyst_curve_t *c;
-    hyst_ptr_t table;
+    hyst_ptr_t table; /* written by a build */
+    hyst_cptr_t view; /* read: the same table */
     size_t rows, intervals, row_len;
     hyst_wide_t span, eps, worst;
 } build_t;
@@ -230,10 +231,10 @@ static hyst_wide_t entry(const build_t *b, size_t i)
 {
 #if HYST_ENABLE_F64
     if (b->c->variant == (unsigned)HYST_VARIANT_F64) {
-        return (hyst_wide_t)b->table.f64[i];
+        return (hyst_wide_t)b->view.f64[i];
     }
 #endif
-    return (hyst_wide_t)b->table.f32[i];
+    return (hyst_wide_t)b->view.f32[i];
 }
 
 /* Interval k between rows r and r + 1 of a direction, against the exact
@@ -328,12 +329,13 @@ static void fill_direction(build_t *b, int fall)
 static int rows_ok(unsigned long n) { return n >= 3ul && n <= MAX_ROWS; }
 static int intervals_ok(unsigned long n) { return n >= 1ul && n <= MAX_INTERVALS; }
 
-hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
-                                                hyst_ptr_t table, size_t rows, size_t intervals,
-                                                unsigned variant)
+/* Everything of the table's curve but its numbers, and the build's state:
+ * the checks both constructors make, then the solved compensator's curve
+ * (the solved intervals' numbers) with the table's kind, shape and V(a). */
+static hyst_status_t prepare(hyst_curve_t *out, build_t *b, const hyst_curve_t *inv,
+                             const hyst_curve_t *fwd, hyst_cptr_t table, size_t rows,
+                             size_t intervals, unsigned variant)
 {
-    hyst_curve_t out;
-    build_t b;
     unsigned m;
     int dir;
     hyst_status_t st = hyst_curve_check(fwd);
@@ -350,43 +352,136 @@ hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_cu
         !intervals_ok((unsigned long)intervals)) {
         return HYST_ERR_ARG;
     }
-    st = hyst_curve_inverse(&out, fwd); /* HYST_CURVE_EVERETT_INV: the solved intervals' */
+    st = hyst_curve_inverse(out, fwd); /* HYST_CURVE_EVERETT_INV: the solved intervals' */
     if (st != HYST_OK) {
         return st;
     }
-    out.kind = HYST_CURVE_EVERETT_INV_TABLE;
-    out.u.everett.table.f32 = table.f32;
-#if HYST_ENABLE_F64
-    if (variant == (unsigned)HYST_VARIANT_F64) {
-        out.u.everett.table.f64 = table.f64;
-    }
-#endif
-    out.u.everett.rows = rows;
-    out.u.everett.intervals = intervals;
-    out.u.everett.exact = 0u;
+    out->kind = HYST_CURVE_EVERETT_INV_TABLE;
+    out->u.everett.table = table;
+    out->u.everett.rows = rows;
+    out->u.everett.intervals = intervals;
+    out->u.everett.exact = 0u;
     for (dir = 0; dir < 2; ++dir) {
         hyst_wide_t v[EV_N + 1];
         range_poly(fwd, dir, v);
         for (m = 0u; m <= (unsigned)EV_N; ++m) {
-            (void)hyst_num_set(&out.u.everett.v_end[dir][m], variant,
+            (void)hyst_num_set(&out->u.everett.v_end[dir][m], variant,
                                m <= fwd->u.everett.degree ? v[m] : 0);
         }
     }
-    memset(&b, 0, sizeof b);
-    b.c = &out;
+    memset(b, 0, sizeof *b);
+    b->c = out;
+    b->view = table;
+    b->rows = rows;
+    b->intervals = intervals;
+    b->row_len = HYST_INV_TABLE_LEN(intervals);
+    b->span = hyst_num_get(&out->u.everett.span, variant);
+    b->eps = variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_EPSILON : HYST_WIDE_EPS;
+    return HYST_OK;
+}
+
+/* The measured error into the curve, as a seal keeps it (both constructors
+ * give the same curve), and one evaluation's error in the drive: the
+ * table's, or a solve's. */
+static void finish(hyst_curve_t *out, hyst_wide_t max_err, hyst_wide_t span)
+{
+    out->u.everett.max_err = max_err;
+    if (max_err * span > hyst_num_get(&out->rounding, out->variant)) {
+        (void)hyst_num_set(&out->rounding, out->variant, max_err * span);
+    }
+}
+
+hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                hyst_ptr_t table, size_t rows, size_t intervals,
+                                                unsigned variant)
+{
+    hyst_curve_t out;
+    build_t b;
+    const hyst_cptr_t view = hyst_cptr_of(table, variant);
+    hyst_status_t st;
+    st = prepare(&out, &b, inv, fwd, view, rows, intervals, variant);
+    if (st != HYST_OK) {
+        return st;
+    }
     b.table = table;
-    b.rows = rows;
-    b.intervals = intervals;
-    b.row_len = HYST_INV_TABLE_LEN(intervals);
-    b.span = hyst_num_get(&out.u.everett.span, variant);
-    b.eps = variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_EPSILON : HYST_WIDE_EPS;
     fill_direction(&b, 0);
     fill_direction(&b, 1);
-    out.u.everett.max_err = b.worst / b.span;
-    /* one evaluation's error in the drive: the table's, or a solve's */
-    if (b.worst > hyst_num_get(&out.rounding, variant)) {
-        (void)hyst_num_set(&out.rounding, variant, b.worst);
+    finish(&out, hyst_table_err_(b.worst / b.span), b.span);
+    *inv = out;
+    return HYST_OK;
+}
+
+/* Knots of a row checked against the model in a table given ready-made. */
+#define CHECK_KNOTS 3u
+
+/* A direction of a table given ready-made, against the model: an interval
+ * solved instead in one row is so in every row (counted as the build counts
+ * them), and each row's drive step at CHECK_KNOTS knots and at the end is
+ * the model's, solved again as fill_row() solves it, within rounding (8
+ * units of the variant's type, of the span). 0 if it is another model's
+ * table. */
+static int direction_matches(build_t *b, int fall)
+{
+    const hyst_wide_t tol = 8 * b->eps * b->span;
+    const size_t n = b->intervals;
+    size_t r, k;
+    for (k = 0u; k < n; ++k) {
+        const int solved = entry(b, row_at(b, fall, 0u) + 4u * k) < 0;
+        for (r = 1u; r <= b->rows; ++r) {
+            if ((entry(b, row_at(b, fall, r) + 4u * k) < 0) != solved) {
+                return 0;
+            }
+        }
+        b->c->u.everett.exact += solved ? 1u : 0u;
     }
+    for (r = 0u; r <= b->rows; ++r) {
+        const hyst_wide_t a = (hyst_wide_t)r / (hyst_wide_t)b->rows;
+        const hyst_wide_t range = range_at(b, fall, a);
+        const size_t base = row_at(b, fall, r);
+        branch_t br;
+        int empty;
+        unsigned j;
+        branch_at(&br, b->c, fall, a);
+        empty = !(br.width > 0) || !(range > 0); /* all zeros (fill_row()) */
+        if (!(hyst_wide_abs(entry(b, base + 4u * n) - (empty ? 0 : br.width * b->span)) <= tol)) {
+            return 0;
+        }
+        for (j = 1u; j <= CHECK_KNOTS; ++j) {
+            const size_t knot = j * n / (CHECK_KNOTS + 1u);
+            const hyst_wide_t c0 = entry(b, base + 4u * knot);
+            const hyst_wide_t v = (hyst_wide_t)knot * range / (hyst_wide_t)n;
+            if (c0 < 0) { /* solved instead: checked above */
+                continue;
+            }
+            if (!(hyst_wide_abs(c0 - (empty ? 0 : branch_solve(&br, v, 0) * b->span)) <= tol)) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
+hyst_status_t hyst_curve_everett_inverse_table_const_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                      hyst_cptr_t table, size_t rows,
+                                                      size_t intervals,
+                                                      const hyst_table_seal_t *seal,
+                                                      unsigned variant)
+{
+    hyst_curve_t out;
+    build_t b;
+    hyst_status_t st = seal == NULL ? HYST_ERR_NULL
+                                    : prepare(&out, &b, inv, fwd, table, rows, intervals, variant);
+    if (st == HYST_OK) {
+        st = hyst_table_seal_check_((unsigned)HYST_CURVE_EVERETT_INV_TABLE, variant, table, rows,
+                                    intervals, seal);
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    if (!direction_matches(&b, 0) || !direction_matches(&b, 1)) {
+        return HYST_ERR_CURVE;
+    }
+    finish(&out, seal->max_err, b.span);
     *inv = out;
     return HYST_OK;
 }

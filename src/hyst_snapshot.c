@@ -202,6 +202,15 @@ static unsigned long crc_word(unsigned long crc, unsigned long w)
     return hyst_crc32(crc, q, 4u);
 }
 
+unsigned long hyst_crc_real_(unsigned long crc, hyst_wide_t v, unsigned variant)
+{
+    hyst_num_t n;
+    (void)hyst_num_set(&n, variant, v);
+    return crc_num(crc, &n, variant == (unsigned)HYST_VARIANT_F64 ? NUM_F64 : NUM_F32);
+}
+
+unsigned long hyst_crc_word_(unsigned long crc, unsigned long w) { return crc_word(crc, w); }
+
 /* Curve identity: everything that shapes the branches of this instance. */
 static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
 {

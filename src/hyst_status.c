@@ -19,9 +19,9 @@ const char *hyst_status_str(int status)
     case HYST_ERR_NOSPACE: return "buffer too small";
     case HYST_ERR_SINGULAR: return "too few distinct inputs for the fit";
     case HYST_ERR_FORMAT: return "not a valid snapshot (magic, length or state)";
-    case HYST_ERR_CRC: return "snapshot checksum mismatch";
+    case HYST_ERR_CRC: return "checksum mismatch: a snapshot or a prebuilt table is corrupted";
     case HYST_ERR_VERSION: return "snapshot version or real type differs";
-    case HYST_ERR_CURVE: return "snapshot taken with a different curve";
+    case HYST_ERR_CURVE: return "a snapshot or a prebuilt table of a different curve";
     case HYST_ERR_BREAKPOINTS: return "breakpoints/thresholds not finite or not strictly increasing";
     case HYST_ERR_WEIGHTS: return "PI weights not finite or a partial sum not positive";
     case HYST_ERR_NOT_INVERTIBLE: return "curve not strictly increasing, no inverse";

@@ -53,6 +53,21 @@ HYST_INLINE hyst_wide_t hyst_cptr_get(hyst_cptr_t a, size_t i, unsigned variant)
     return (hyst_wide_t)a.f32[i];
 }
 
+/* A caller's array of real variant `variant`, read-only. */
+HYST_INLINE hyst_cptr_t hyst_cptr_of(hyst_ptr_t a, unsigned variant)
+{
+    hyst_cptr_t c;
+    c.f32 = a.f32;
+#if HYST_ENABLE_F64
+    if (variant == (unsigned)HYST_VARIANT_F64) {
+        c.f64 = a.f64;
+    }
+#else
+    (void)variant;
+#endif
+    return c;
+}
+
 /* Stores w rounded to the variant's real type; returns 0 if the result is
  * not finite (overflow). */
 HYST_INLINE int hyst_num_set(hyst_num_t *v, unsigned variant, hyst_wide_t w)
@@ -228,6 +243,28 @@ hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *f
 hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                                 hyst_ptr_t table, size_t rows, size_t intervals,
                                                 unsigned variant);
+/* hyst_crc32 continued over a real number as the variant stores it (its
+ * bit pattern, little-endian, as snapshots serialise it), or over a 32-bit
+ * word (src/hyst_snapshot.c). */
+unsigned long hyst_crc_real_(unsigned long crc, hyst_wide_t v, unsigned variant);
+unsigned long hyst_crc_word_(unsigned long crc, unsigned long w);
+/* A tabulated inverse's measured error as tables keep it: rounded up to a
+ * float, so a seal (hyst_table_seal_t) states it the same on every target;
+ * and the seal's check of a table given ready-made (src/hyst_table_seal.c):
+ * HYST_OK or HYST_ERR_CRC. */
+hyst_wide_t hyst_table_err_(hyst_wide_t err);
+hyst_status_t hyst_table_seal_check_(unsigned kind, unsigned variant, hyst_cptr_t table,
+                                     size_t rows, size_t intervals, const hyst_table_seal_t *seal);
+/* The constructors of tables given ready-made (hyst_*_curve_inverse_table_const,
+ * hyst_*_curve_everett_inverse_table_const), written once. */
+hyst_status_t hyst_curve_inverse_table_const_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                              hyst_cptr_t table, size_t intervals,
+                                              const hyst_table_seal_t *seal, unsigned variant);
+hyst_status_t hyst_curve_everett_inverse_table_const_(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                      hyst_cptr_t table, size_t rows,
+                                                      size_t intervals,
+                                                      const hyst_table_seal_t *seal,
+                                                      unsigned variant);
 /* Stores entry i of an inverse table in the variant's type (+0 for 0: the
  * sign marks solved intervals); returns it rounded. */
 hyst_wide_t hyst_table_put_(hyst_ptr_t table, size_t i, unsigned variant, hyst_wide_t w);

@@ -240,7 +240,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(blend_g)(const hyst_tcm_t *S, TCM_Y u)
         c = local;
     }
     g = TCM_NAME(cubic)(c, s - (TCM_Y)k);
-    return g >= 0 ? g : TCM_NAME(blend_exact)(S, u);
+    return g < 0 ? TCM_NAME(blend_exact)(S, u) : g;
 }
 #define TCM_BLEND_G(S, u) TCM_NAME(blend_g)((S), (u))
 
@@ -540,7 +540,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const i
         S->cached_k = k;
     }
     g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
-    if (!(g >= 0)) { /* a solved interval */
+    if (g < 0) { /* a solved interval */
         return TCM_NAME(emit_rare)(S, x, how);
     }
     y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
@@ -634,7 +634,9 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
                 return TCM_NAME(emit_blended)(S, x, how);
             }
             acc = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
-            if (!(acc >= 0)) { /* a solved interval */
+            if (acc < 0) { /* a solved interval; "< 0", not "!(>= 0)" as for the table of
+                            * case 0 (acc is a number: s and the blend are): GCC then
+                            * does not share that case's tail, one branch less */
                 return TCM_NAME(emit_rare)(S, x, how);
             }
             u = NUM_G_ONE;

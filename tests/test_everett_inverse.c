@@ -32,14 +32,6 @@ static rng_t rng;
 #define DRIVE_AGREE 1e-5
 #endif
 
-#ifdef HYST_USE_DOUBLE
-#define NEXT(v, to) nextafter((v), (to))
-#define CURVE_NUM(n) ((n).f64)
-#else
-#define NEXT(v, to) nextafterf((v), (to))
-#define CURVE_NUM(n) ((n).f32)
-#endif
-
 void setUp(void) { rng_seed(&rng, 2718u); }
 void tearDown(void) {}
 

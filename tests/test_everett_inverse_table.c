@@ -36,14 +36,6 @@ static hyst_t C, T, X;
 static ref_everett_t ref, probe; /* 16 KB each: off the stack */
 static rng_t rng;
 
-#ifdef HYST_USE_DOUBLE
-#define NEXT(v, to) nextafter((v), (to))
-#define CURVE_NUM(n) ((n).f64)
-#else
-#define NEXT(v, to) nextafterf((v), (to))
-#define CURVE_NUM(n) ((n).f32)
-#endif
-
 void setUp(void) { rng_seed(&rng, 31415u); }
 void tearDown(void) {}
 

@@ -385,6 +385,75 @@ hyst_status_t hyst_f64_curve_everett_inverse_table(hyst_curve_t *inv, const hyst
 /**@}*/
 
 /**
+ * @brief The seal of a tabulated inverse built ahead of time: a checksum of
+ *        the table as stored (with its kind, variant, shape and this error)
+ *        and the error its build measured.
+ *
+ * Building a table takes a while on a target (the asymmetric compensator's
+ * default table: about a second on a Cortex-M4F). A table built on the host
+ * (`hyst header --compensator`, or hyst_curve_table_seal() after a build)
+ * goes into flash with its seal; firmware then prepares the curve with
+ * hyst_*_curve_inverse_table_const() or
+ * hyst_*_curve_everett_inverse_table_const() in milliseconds. The table
+ * must be built in the variant that uses it (float or double).
+ */
+typedef struct hyst_table_seal {
+    unsigned long crc;   /**< hyst_crc32 of the table's kind, variant, shape, error and numbers */
+    hyst_wide_t max_err; /**< hyst_curve_inverse_error() of the build (rounded up to a float) */
+} hyst_table_seal_t;
+
+/**
+ * @brief Seals a tabulated inverse (HYST_CURVE_INV_TABLE or
+ *        HYST_CURVE_EVERETT_INV_TABLE of a real variant) for use from
+ *        flash.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT or HYST_ERR_ARG (another
+ *         kind or variant).
+ */
+hyst_status_t hyst_curve_table_seal(const hyst_curve_t *inv, hyst_table_seal_t *seal);
+
+/**
+ * @name A tabulated inverse built ahead of time
+ * @brief Prepares the curve of a table built before (held in flash) without
+ *        building it again: the same curve, bit for bit, as the build that
+ *        made the table, and so the same outputs.
+ *
+ * Checks the seal (the table as stored, its shape, its error:
+ * HYST_ERR_CRC when they differ, e.g. a damaged flash image or the wrong
+ * rows or intervals), then that the table is this model's: every row's
+ * drive step solved again at a few knots (three per row; for a symmetric
+ * curve seven) and at its end, within HYST_INV_TABLE_TOL of the drive span,
+ * and the intervals evaluated exactly marked alike in every row
+ * (HYST_ERR_CURVE otherwise: a table of another model). The cost: the
+ * checksum (one pass over the table) and those solves, about a hundredth of
+ * a build. The table must hold the counts' numbers
+ * (HYST_INV_TABLE_LEN(@p intervals), HYST_EVERETT_INV_TABLE_LEN(@p rows,
+ * @p intervals)) and outlive the curve, unchanged.
+ * @return what the build returns (HYST_ERR_NULL, HYST_ERR_LAYOUT,
+ *         HYST_ERR_ARG, HYST_ERR_NOT_INVERTIBLE), or HYST_ERR_CRC,
+ *         HYST_ERR_CURVE.
+ */
+/**@{*/
+hyst_status_t hyst_f32_curve_inverse_table_const(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                 const float *table, size_t intervals,
+                                                 const hyst_table_seal_t *seal);
+hyst_status_t hyst_f32_curve_everett_inverse_table_const(hyst_curve_t *inv,
+                                                         const hyst_curve_t *fwd,
+                                                         const float *table, size_t rows,
+                                                         size_t intervals,
+                                                         const hyst_table_seal_t *seal);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_inverse_table_const(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                 const double *table, size_t intervals,
+                                                 const hyst_table_seal_t *seal);
+hyst_status_t hyst_f64_curve_everett_inverse_table_const(hyst_curve_t *inv,
+                                                         const hyst_curve_t *fwd,
+                                                         const double *table, size_t rows,
+                                                         size_t intervals,
+                                                         const hyst_table_seal_t *seal);
+#endif
+/**@}*/
+
+/**
  * @brief Worst error of a tabulated inverse (HYST_CURVE_INV_TABLE,
  *        HYST_CURVE_EVERETT_INV_TABLE) measured at init, as a fraction of the
  *        drive range; 0 for the other kinds (exact) and for NULL.
@@ -461,6 +530,8 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 #define hyst_curve_g HYST_DEFAULT_NAME_(curve_g)
 #define hyst_curve_inverse_table HYST_DEFAULT_NAME_(curve_inverse_table)
 #define hyst_curve_everett_inverse_table HYST_DEFAULT_NAME_(curve_everett_inverse_table)
+#define hyst_curve_inverse_table_const HYST_DEFAULT_NAME_(curve_inverse_table_const)
+#define hyst_curve_everett_inverse_table_const HYST_DEFAULT_NAME_(curve_everett_inverse_table_const)
 /**@}*/
 
 #ifdef __cplusplus

@@ -30,9 +30,9 @@ typedef enum hyst_status {
     HYST_ERR_NOSPACE = -9,       /**< a caller buffer is too small */
     HYST_ERR_SINGULAR = -10,     /**< too few distinct inputs for the fit (rank deficient) */
     HYST_ERR_FORMAT = -11,       /**< not a snapshot: bad magic, truncated, bad length or impossible state */
-    HYST_ERR_CRC = -12,          /**< snapshot checksum mismatch (corrupted) */
+    HYST_ERR_CRC = -12,          /**< checksum mismatch: a snapshot or a prebuilt table (curve.h) is corrupted */
     HYST_ERR_VERSION = -13,      /**< snapshot format version or real type differs */
-    HYST_ERR_CURVE = -14,        /**< snapshot taken with a different curve */
+    HYST_ERR_CURVE = -14,        /**< a snapshot or a prebuilt table of a different curve */
     HYST_ERR_BREAKPOINTS = -15,  /**< PWL breakpoints or PI thresholds not finite,
                                       not strictly increasing (PI: r1 != 0) */
     HYST_ERR_WEIGHTS = -16,      /**< PI weights not finite, or a partial sum

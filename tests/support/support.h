@@ -13,6 +13,16 @@
 #define TOL_OF_RANGE 1e-5
 #endif
 
+/* The build's real type: the next number from v towards `to` (math.h), and
+ * a curve's number (hyst_num_t) of the default variant. */
+#ifdef HYST_USE_DOUBLE
+#define NEXT(v, to) nextafter((v), (to))
+#define CURVE_NUM(n) ((n).f64)
+#else
+#define NEXT(v, to) nextafterf((v), (to))
+#define CURVE_NUM(n) ((n).f32)
+#endif
+
 /* Paper Eq. 20: piezo positioner, 0..40 V, output in um. */
 extern const hyst_poly_t paper_eq20;
 extern const double paper_eq20_coeffs[4];

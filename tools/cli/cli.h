@@ -139,6 +139,16 @@ size_t cli_model_text(const cli_model_t *m, char *buf, size_t size);
  * 'static const hyst_everett_t NAME = {...};') to buf[*len..size); 1 when
  * it did not fit. */
 int cli_header_model(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m);
+/* The same in two parts: the guard's opening and the model, then its end. */
+int cli_header_open(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m);
+int cli_header_close(char *buf, size_t size, size_t *len, const char *name);
+/* header --compensator (header_table.c): the model's compensator table in
+ * float and in double, sealed, for the const constructors (curve.h);
+ * appended like the model. The size of buffer it needs at most, and the
+ * text: 0, or 1 after a message (the library's refusal, or too long). */
+size_t cli_header_table_size(const cli_model_t *m, size_t rows, size_t intervals);
+int cli_header_table(const char *cmd, const char *model, char *buf, size_t size, size_t *len,
+                     const char *name, const cli_model_t *m, size_t rows, size_t intervals);
 
 /* The asymmetric kind: E's terms in the file's order <-> hyst_everett_t. */
 size_t cli_everett_terms(unsigned degree);

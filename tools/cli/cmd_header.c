@@ -4,10 +4,16 @@
 #include "hyst/hyst.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+/* The library's default table sizes (hyst/config.h), in the help text. */
+#define HDR_STR_(x) #x
+#define HDR_STR(x) HDR_STR_(x)
+
 static const char help[] =
-    "usage: hyst header --model MODEL [--dir DIR] NAME\n"
+    "usage: hyst header --model MODEL [--dir DIR]\n"
+    "                   [--compensator [--intervals N] [--rows R]] NAME\n"
     "\n"
     "Writes NAME.h (in DIR, default the current directory) declaring\n"
     "'static const hyst_poly_t NAME = {...};', the f0 of the model file MODEL\n"
@@ -19,7 +25,29 @@ static const char help[] =
     "\n"
     "  --model MODEL  the model file (format hyst-model-text 1)\n"
     "  --dir DIR      directory of NAME.h\n"
+    "  --compensator  also the compensator's table, built here in float and in\n"
+    "                 double and sealed: 'NAME_table', 'NAME_seal' of the build's\n"
+    "                 real type (HYST_USE_DOUBLE), NAME_INTERVALS (and NAME_ROWS),\n"
+    "                 for hyst_curve_inverse_table_const() (kind poly) or\n"
+    "                 hyst_curve_everett_inverse_table_const() (kind everett):\n"
+    "                 firmware takes the table from flash instead of building it\n"
+    "  --intervals N  with --compensator: the table's intervals (per row), 1..1048576\n"
+    "                 or 'default' (" HDR_STR(HYST_INV_TABLE) " for poly, " HDR_STR(HYST_EVERETT_INV_INTERVALS) " for everett)\n"
+    "  --rows R       with --compensator, kind everett: R + 1 rows per direction,\n"
+    "                 3..4096 or 'default' (" HDR_STR(HYST_EVERETT_INV_ROWS) ")\n"
     "  --help         this text\n";
+
+/* --intervals / --rows: a count in [min, max], or "default" (ULONG_MAX:
+ * the kind's default once the kind is known). 0, or 1 after a message. */
+static int table_count(const cli_args_t *a, const char *v, unsigned long min, unsigned long max,
+                       unsigned long *out)
+{
+    if (strcmp(v, "default") == 0) {
+        *out = (unsigned long)-1;
+        return 0;
+    }
+    return cli_opt_ulong(a, v, min, max, out) ? 0 : 1;
+}
 
 int cmd_header(int argc, char **argv)
 {
@@ -27,9 +55,10 @@ int cmd_header(int argc, char **argv)
     cli_replace_t h;
     cli_model_t m;
     const char *model = NULL, *dir = NULL, *name = NULL, *pos = NULL;
-    char q[CLI_QUOTE_SIZE], path[CLI_PATH_MAX], text[8192];
-    size_t len = 0u;
-    int kind, over;
+    char q[CLI_QUOTE_SIZE], path[CLI_PATH_MAX], *text;
+    size_t len = 0u, size = 8192u;
+    unsigned long intervals = 0ul, rows = 0ul; /* 0: not given */
+    int kind, over, compensator = 0, failed;
     cli_args_init(&a, "header", argc, argv);
     while ((kind = cli_args_next(&a, &pos)) != CLI_END) {
         if (kind < 0) {
@@ -43,12 +72,25 @@ int cmd_header(int argc, char **argv)
         } else if (cli_is(&a, "--help") || cli_is(&a, "-h")) {
             (void)fputs(help, stdout);
             return 0;
-        } else if (cli_is(&a, "--model") || cli_is(&a, "--dir")) {
+        } else if (cli_is(&a, "--compensator")) {
+            compensator = 1;
+        } else if (cli_is(&a, "--model") || cli_is(&a, "--dir") || cli_is(&a, "--intervals") ||
+                   cli_is(&a, "--rows")) {
             const char *v = cli_value(&a);
             if (v == NULL) {
                 return 1;
             }
-            *(cli_is(&a, "--model") ? &model : &dir) = v;
+            if (cli_is(&a, "--intervals")) {
+                if (table_count(&a, v, 1ul, 1ul << 20, &intervals) != 0) {
+                    return 1;
+                }
+            } else if (cli_is(&a, "--rows")) {
+                if (table_count(&a, v, 3ul, 4096ul, &rows) != 0) {
+                    return 1;
+                }
+            } else {
+                *(cli_is(&a, "--model") ? &model : &dir) = v;
+            }
         } else {
             return cli_unknown(&a);
         }
@@ -60,16 +102,38 @@ int cmd_header(int argc, char **argv)
         return cli_fail(a.cmd, "NAME %s is not a C identifier",
                         name != NULL ? cli_quote(q, name) : "(missing)");
     }
+    if (!compensator && (intervals != 0ul || rows != 0ul)) {
+        return cli_fail(a.cmd, "option %s needs --compensator (the table it sizes)",
+                        intervals != 0ul ? "--intervals" : "--rows");
+    }
     if (cli_header_path(a.cmd, "--dir", dir, name, path) != 0 ||
         cli_model_read(a.cmd, model, &m) != 0 || cli_replace_check(&h, a.cmd, "header", path) != 0) {
         return 1;
     }
+    if (rows != 0ul && m.kind != CLI_MODEL_EVERETT) {
+        return cli_fail(a.cmd, "option --rows applies to kind everett only: the compensator of "
+                               "kind poly tabulates f0^-1 in one row (--intervals alone)");
+    }
+    if (intervals == 0ul || intervals == (unsigned long)-1) {
+        intervals = m.kind == CLI_MODEL_EVERETT ? HYST_EVERETT_INV_INTERVALS : HYST_INV_TABLE;
+    }
+    if (rows == 0ul || rows == (unsigned long)-1) {
+        rows = HYST_EVERETT_INV_ROWS;
+    }
+    if (compensator) {
+        size += cli_header_table_size(&m, (size_t)rows, (size_t)intervals);
+    }
+    if ((text = (char *)malloc(size)) == NULL) {
+        return cli_fail(a.cmd, "out of memory for the header's text (%lu bytes)",
+                        (unsigned long)size);
+    }
     if (m.kind == CLI_MODEL_EVERETT) {
         hyst_curve_t curve; /* what firmware's init would refuse is refused here */
         if (cli_everett_curve(a.cmd, cli_file_name(model), &m, &curve) != 0) {
+            free(text);
             return 1;
         }
-        over = cli_append(text, sizeof text, &len,
+        over = cli_append(text, size, &len,
                           "/* Generated by 'hyst header' from the model file %s:\n"
                           " * asymmetric model, branch function E of degree %u on [%.9g, %.9g]\n"
                           " * (hyst_curve_from_everett(), then hyst_init_curve()); the measured\n"
@@ -77,15 +141,25 @@ int cmd_header(int argc, char **argv)
                           " * model does not include it). */\n",
                           cli_file_name(model), m.degree, m.lo, m.hi, m.delay);
     } else {
-        over = cli_append(text, sizeof text, &len,
+        over = cli_append(text, size, &len,
                           "/* Generated by 'hyst header' from the model file %s:\n"
                           " * f0 of degree %lu on [%.9g, %.9g]; the measured output follows its input\n"
                           " * %lu samples later (a sensor delay: the model does not include it). */\n",
                           cli_file_name(model), (unsigned long)(m.ncoef - 1u), m.lo, m.hi,
                           m.delay);
     }
-    if (over != 0 || cli_header_model(text, sizeof text, &len, name, &m) != 0) {
+    over |= cli_header_open(text, size, &len, name, &m);
+    if (over == 0 && compensator &&
+        cli_header_table(a.cmd, cli_file_name(model), text, size, &len, name, &m, (size_t)rows,
+                         (size_t)intervals) != 0) {
+        free(text);
+        return 1;
+    }
+    if (over != 0 || cli_header_close(text, size, &len, name) != 0) {
+        free(text);
         return cli_fail(a.cmd, "%s: header text too long", path);
     }
-    return cli_replace_write(&h, text, len) != 0 || cli_replace_commit(&h) != 0;
+    failed = cli_replace_write(&h, text, len) != 0 || cli_replace_commit(&h) != 0;
+    free(text);
+    return failed;
 }

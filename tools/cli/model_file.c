@@ -402,31 +402,48 @@ static int header_everett(char *buf, size_t size, size_t *len, const char *name,
     return over | cli_append(buf, size, len, "}};\n");
 }
 
-int cli_header_model(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m)
+/* The include guard of NAME.h: NAME in capitals, then _H. */
+static void guard_of(const char *name, char *guard, size_t size)
+{
+    size_t i;
+    for (i = 0u; name[i] != '\0' && i + 3u < size; ++i) {
+        guard[i] = (char)toupper((unsigned char)name[i]);
+    }
+    memcpy(guard + i, "_H", 3u);
+}
+
+int cli_header_open(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m)
 {
     char guard[256];
     size_t i;
     int over;
-    for (i = 0u; name[i] != '\0' && i + 3u < sizeof guard; ++i) {
-        guard[i] = (char)toupper((unsigned char)name[i]);
-    }
-    memcpy(guard + i, "_H", 3u);
+    guard_of(name, guard, sizeof guard);
     over = cli_append(buf, size, len, "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n\n",
                       guard, guard);
     if (m->kind == CLI_MODEL_EVERETT) {
-        over |= header_everett(buf, size, len, name, m);
-    } else {
-        over |= cli_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,", name,
-                           (unsigned)(m->ncoef - 1u));
-        over |= append_real(buf, size, len, " ", m->lo);
-        over |= append_real(buf, size, len, ", ", m->hi);
-        over |= cli_append(buf, size, len, ",\n    {");
-        for (i = 0u; i < m->ncoef; ++i) {
-            over |= append_real(buf, size, len, i ? ",\n     " : "", m->coeffs[i]);
-        }
-        over |= cli_append(buf, size, len, "}};\n");
+        return over | header_everett(buf, size, len, name, m);
     }
-    return over | cli_append(buf, size, len, "\n#endif /* %s */\n", guard);
+    over |= cli_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,", name,
+                       (unsigned)(m->ncoef - 1u));
+    over |= append_real(buf, size, len, " ", m->lo);
+    over |= append_real(buf, size, len, ", ", m->hi);
+    over |= cli_append(buf, size, len, ",\n    {");
+    for (i = 0u; i < m->ncoef; ++i) {
+        over |= append_real(buf, size, len, i ? ",\n     " : "", m->coeffs[i]);
+    }
+    return over | cli_append(buf, size, len, "}};\n");
+}
+
+int cli_header_close(char *buf, size_t size, size_t *len, const char *name)
+{
+    char guard[256];
+    guard_of(name, guard, sizeof guard);
+    return cli_append(buf, size, len, "\n#endif /* %s */\n", guard);
+}
+
+int cli_header_model(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m)
+{
+    return cli_header_open(buf, size, len, name, m) | cli_header_close(buf, size, len, name);
 }
 
 int cli_c_identifier(const char *s)

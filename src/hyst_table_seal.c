@@ -1,0 +1,92 @@
+/* SPDX-License-Identifier: MIT */
+/* Seals of tabulated inverses built ahead of time (curve.h, "A table built
+ * ahead of time"): a checksum of the table as stored, its shape and the
+ * error its build measured, so that firmware takes a table from flash
+ * without building it again, and refuses one that was damaged. */
+#include <float.h>
+
+#include "hyst_util.h"
+
+hyst_wide_t hyst_table_err_(hyst_wide_t err)
+{
+    float f = (float)err;
+    if ((hyst_wide_t)f < err) { /* rounded down: the next float up */
+        f += f * FLT_EPSILON;
+    }
+    return (hyst_wide_t)f;
+}
+
+/* Numbers of a table of this kind and shape. */
+static unsigned long table_len(unsigned kind, unsigned long rows, unsigned long intervals)
+{
+    return kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE
+               ? HYST_EVERETT_INV_TABLE_LEN(rows, intervals)
+               : HYST_INV_TABLE_LEN(intervals);
+}
+
+/* The checksum: kind, variant, shape, the error as a float, every number. */
+static unsigned long table_crc(unsigned kind, unsigned variant, hyst_cptr_t table,
+                               unsigned long rows, unsigned long intervals, hyst_wide_t max_err)
+{
+    const unsigned long n = table_len(kind, rows, intervals);
+    unsigned long crc = hyst_crc_word_(0ul, kind), i;
+    crc = hyst_crc_word_(crc, variant);
+    crc = hyst_crc_word_(crc, rows);
+    crc = hyst_crc_word_(crc, intervals);
+    crc = hyst_crc_real_(crc, max_err, HYST_VARIANT_F32);
+    for (i = 0ul; i < n; ++i) {
+        crc = hyst_crc_real_(crc, hyst_cptr_get(table, (size_t)i, variant), variant);
+    }
+    return crc;
+}
+
+static int real_variant(unsigned variant)
+{
+    return variant == (unsigned)HYST_VARIANT_F32
+#if HYST_ENABLE_F64
+           || variant == (unsigned)HYST_VARIANT_F64
+#endif
+        ;
+}
+
+hyst_status_t hyst_curve_table_seal(const hyst_curve_t *inv, hyst_table_seal_t *seal)
+{
+    const hyst_status_t st = hyst_curve_check(inv);
+    unsigned long rows, intervals;
+    hyst_cptr_t table;
+    hyst_wide_t err;
+    if (st != HYST_OK || seal == NULL) {
+        return st != HYST_OK ? st : HYST_ERR_NULL;
+    }
+    if (!real_variant(inv->variant)) {
+        return HYST_ERR_ARG;
+    }
+    if (inv->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE) {
+        rows = (unsigned long)inv->u.everett.rows;
+        intervals = (unsigned long)inv->u.everett.intervals;
+        table = inv->u.everett.table;
+        err = inv->u.everett.max_err;
+    } else if (inv->kind == (unsigned)HYST_CURVE_INV_TABLE) {
+        rows = 0ul;
+        intervals = (unsigned long)inv->u.inv_table.intervals;
+        table = inv->u.inv_table.table;
+        err = inv->u.inv_table.max_err;
+    } else {
+        return HYST_ERR_ARG;
+    }
+    seal->max_err = hyst_table_err_(err);
+    seal->crc = table_crc(inv->kind, inv->variant, table, rows, intervals, seal->max_err);
+    return HYST_OK;
+}
+
+hyst_status_t hyst_table_seal_check_(unsigned kind, unsigned variant, hyst_cptr_t table,
+                                     size_t rows, size_t intervals, const hyst_table_seal_t *seal)
+{
+    const hyst_wide_t err = seal->max_err;
+    if (!(err >= 0 && err <= 1) || hyst_table_err_(err) != err ||
+        table_crc(kind, variant, table, (unsigned long)rows, (unsigned long)intervals, err) !=
+            (seal->crc & 0xFFFFFFFFul)) {
+        return HYST_ERR_CRC;
+    }
+    return HYST_OK;
+}

@@ -1,0 +1,273 @@
+/* SPDX-License-Identifier: MIT */
+/* Tabulated inverses built ahead of time (curve.h, hyst_table_seal_t): a
+ * table built and sealed, then copied as firmware would hold it in flash,
+ * prepares the same curve as its build and gives the same drives bit for
+ * bit, for both the asymmetric compensator (random E) and the symmetric one
+ * (Eq. 20, and x^3 with intervals evaluated exactly); a damaged table, the
+ * wrong shape or a changed seal is refused (HYST_ERR_CRC), another model's
+ * table too (HYST_ERR_CURVE); bad arguments are refused. */
+#include "ref_everett.h"
+#include "support.h"
+#include "unity.h"
+
+#include <math.h>
+#include <string.h>
+
+#define CAP 64
+#define SAMPLES 3000L
+#define ROWS HYST_EVERETT_INV_ROWS
+#define INTERVALS HYST_EVERETT_INV_INTERVALS
+#define EV_LEN HYST_EVERETT_INV_TABLE_LEN(ROWS, INTERVALS)
+#define SYM_INTERVALS HYST_INV_TABLE
+#define SYM_LEN HYST_INV_TABLE_LEN(SYM_INTERVALS)
+
+static hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
+static hyst_real_t xl2[CAP], yl2[CAP], xr2[CAP], yr2[CAP];
+static hyst_real_t built[EV_LEN], flash[EV_LEN]; /* flash: the copy firmware would hold */
+static hyst_curve_t fwd, other_fwd, inv, from_flash;
+static hyst_table_seal_t seal;
+static hyst_t B, F;
+static rng_t rng;
+
+void setUp(void) { rng_seed(&rng, 27182u); }
+void tearDown(void) {}
+
+static hyst_everett_t accepted_e(hyst_curve_t *curve)
+{
+    for (;;) {
+        const hyst_everett_t e = ref_everett_random(&rng);
+        if (hyst_curve_from_everett(curve, &e) == HYST_OK) {
+            return e;
+        }
+    }
+}
+
+/* The curve from flash is the build's: the same numbers (but the table's
+ * address), so the same instance behaviour. */
+#define SAME_NUM(a, b) TEST_ASSERT_EQUAL_MEMORY(&CURVE_NUM(a), &CURVE_NUM(b), sizeof CURVE_NUM(a))
+static void assert_same_curve(const hyst_curve_t *a, const hyst_curve_t *b)
+{
+    TEST_ASSERT_EQUAL_UINT(a->kind, b->kind);
+    SAME_NUM(a->lo, b->lo);
+    SAME_NUM(a->hi, b->hi);
+    SAME_NUM(a->y_lo, b->y_lo);
+    SAME_NUM(a->y_hi, b->y_hi);
+    SAME_NUM(a->unit, b->unit);
+    SAME_NUM(a->rounding, b->rounding);
+    TEST_ASSERT_TRUE(hyst_curve_inverse_error(a) == hyst_curve_inverse_error(b));
+    if (a->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE) {
+        unsigned m;
+        TEST_ASSERT_EQUAL_UINT(a->u.everett.exact, b->u.everett.exact);
+        TEST_ASSERT_EQUAL_UINT(a->u.everett.rows, b->u.everett.rows);
+        TEST_ASSERT_EQUAL_UINT(a->u.everett.intervals, b->u.everett.intervals);
+        for (m = 0u; m <= HYST_EVERETT_MAX_DEGREE; ++m) {
+            SAME_NUM(a->u.everett.v_end[0][m], b->u.everett.v_end[0][m]);
+            SAME_NUM(a->u.everett.v_end[1][m], b->u.everett.v_end[1][m]);
+        }
+    } else {
+        TEST_ASSERT_EQUAL_UINT(a->u.inv_table.exact, b->u.inv_table.exact);
+        TEST_ASSERT_EQUAL_UINT(a->u.inv_table.intervals, b->u.inv_table.intervals);
+        SAME_NUM(a->u.inv_table.span, b->u.inv_table.span);
+        SAME_NUM(a->u.inv_table.u_per_d, b->u.inv_table.u_per_d);
+    }
+}
+
+/* B (the built table) and F (from flash) driven alike: equal bit for bit. */
+static void assert_same_drives(double lo, double hi)
+{
+    double v = 0.5 * (lo + hi);
+    long k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&B, &inv, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&F, &from_flash, xl2, yl2, xr2, yr2, CAP));
+    for (k = 0; k < SAMPLES; ++k) {
+        const hyst_real_t y = (hyst_real_t)ref_everett_walk(&rng, &v, lo - 0.05 * (hi - lo),
+                                                            hi + 0.05 * (hi - lo));
+        const hyst_real_t b = hyst_step(&B, y), f = hyst_step(&F, y);
+        if (memcmp(&b, &f, sizeof b) != 0 || hyst_status(&B) != hyst_status(&F)) {
+            TEST_PRINTF("sample %ld: built %.9g, from flash %.9g", k, (double)b, (double)f);
+            TEST_FAIL();
+        }
+    }
+}
+
+static void test_everett_table_from_flash_is_the_build(void)
+{
+    unsigned solved = 0u;
+    int trial;
+    for (trial = 0; trial < 6; ++trial) {
+        const hyst_everett_t e = accepted_e(&fwd);
+        TEST_ASSERT_EQUAL_INT(HYST_OK,
+                              hyst_curve_everett_inverse_table(&inv, &fwd, built, ROWS, INTERVALS));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_table_seal(&inv, &seal));
+        TEST_ASSERT_TRUE(seal.max_err == hyst_curve_inverse_error(&inv));
+        memcpy(flash, built, sizeof flash);
+        memset(built, 0, sizeof built); /* the build's copy must not be what is read */
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_inverse_table_const(
+                                           &from_flash, &fwd, flash, ROWS, INTERVALS, &seal));
+        memcpy(built, flash, sizeof built);
+        assert_same_curve(&inv, &from_flash);
+        solved += (unsigned)from_flash.u.everett.exact;
+        assert_same_drives(e.y_lo, e.y_lo + ref_everett_e(&e, e.hi, e.lo));
+    }
+    TEST_PRINTF("6 random E: curves and 3000 drives each equal; intervals solved %u", solved);
+}
+
+/* E's table, sealed, in flash. */
+static hyst_everett_t sealed_everett(void)
+{
+    const hyst_everett_t e = accepted_e(&fwd);
+    TEST_ASSERT_EQUAL_INT(HYST_OK,
+                          hyst_curve_everett_inverse_table(&inv, &fwd, flash, ROWS, INTERVALS));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_table_seal(&inv, &seal));
+    return e;
+}
+
+static hyst_status_t everett_from_flash(size_t rows, size_t intervals)
+{
+    return hyst_curve_everett_inverse_table_const(&from_flash, &fwd, flash, rows, intervals,
+                                                  &seal);
+}
+
+static void test_damage_is_refused(void)
+{
+    int trial;
+    (void)sealed_everett();
+    for (trial = 0; trial < 20; ++trial) { /* one number one unit off, anywhere */
+        const size_t i = (size_t)rng_below(&rng, (uint32_t)EV_LEN);
+        const hyst_real_t keep = flash[i];
+        flash[i] = NEXT(keep, (hyst_real_t)1e30);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, everett_from_flash(ROWS, INTERVALS));
+        flash[i] = keep;
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, everett_from_flash(ROWS, INTERVALS));
+    /* the wrong shape (a smaller table: the reads stay in the array) */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, everett_from_flash(ROWS - 1u, INTERVALS));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, everett_from_flash(ROWS, INTERVALS / 2u));
+    /* the seal changed: checksum, error, an error no float holds, NaN */
+    seal.crc ^= 0x100ul;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, everett_from_flash(ROWS, INTERVALS));
+    seal.crc ^= 0x100ul;
+    seal.max_err *= 2;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, everett_from_flash(ROWS, INTERVALS));
+    seal.max_err /= 2;
+    seal.max_err += seal.max_err * 1e-12;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, everett_from_flash(ROWS, INTERVALS));
+    seal.max_err = (hyst_wide_t)NAN;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, everett_from_flash(ROWS, INTERVALS));
+    /* a failed call leaves its output curve alone */
+    memset(&from_flash, 0x5A, sizeof from_flash);
+    {
+        const hyst_curve_t before = from_flash;
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, everett_from_flash(ROWS, INTERVALS));
+        TEST_ASSERT_EQUAL_MEMORY(&before, &from_flash, sizeof before);
+    }
+}
+
+/* A table is in output steps relative to the branch's whole step, so E
+ * times a constant has the same table (accepted); any other E is refused. */
+static void test_another_models_table_is_refused(void)
+{
+    int trial, shape_changes = 0;
+    for (trial = 0; trial < 8; ++trial) {
+        hyst_everett_t e = sealed_everett(), scaled;
+        unsigned i, j;
+        (void)accepted_e(&other_fwd);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE,
+                              hyst_curve_everett_inverse_table_const(&from_flash, &other_fwd, flash,
+                                                                     ROWS, INTERVALS, &seal));
+        scaled = e;
+        for (i = 0u; i < HYST_EVERETT_MAX_DEGREE; ++i) {
+            for (j = 0u; j < HYST_EVERETT_MAX_DEGREE; ++j) {
+                scaled.e[i][j] *= 2.0;
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&other_fwd, &scaled));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_inverse_table_const(
+                                           &from_flash, &other_fwd, flash, ROWS, INTERVALS, &seal));
+        if (e.degree > 1u) { /* the linear term 0.1 % larger: another shape */
+            e.e[0][0] *= 1.001;
+            if (hyst_curve_from_everett(&other_fwd, &e) == HYST_OK) {
+                TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_curve_everett_inverse_table_const(
+                                                          &from_flash, &other_fwd, flash, ROWS,
+                                                          INTERVALS, &seal));
+                ++shape_changes;
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, everett_from_flash(ROWS, INTERVALS));
+    }
+    TEST_ASSERT_TRUE(shape_changes >= 3);
+}
+
+/* Eq. 20, and x^3 on [-1, 1] (a flat point: intervals evaluated exactly). */
+static void test_symmetric_table_from_flash_is_the_build(void)
+{
+    static const hyst_poly_t cube = {3u, HYST_REAL_C(-1.0), HYST_REAL_C(1.0), {1.0, 0.0, 0.0, 0.0}};
+    const hyst_poly_t *models[2];
+    int m;
+    models[0] = &paper_eq20;
+    models[1] = &cube;
+    for (m = 0; m < 2; ++m) {
+        double lo, hi;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&fwd, models[m]));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse_table(&inv, &fwd, built, SYM_INTERVALS));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_table_seal(&inv, &seal));
+        memcpy(flash, built, SYM_LEN * sizeof built[0]);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse_table_const(&from_flash, &fwd, flash,
+                                                                      SYM_INTERVALS, &seal));
+        assert_same_curve(&inv, &from_flash);
+        TEST_ASSERT_TRUE(m == 0 || from_flash.u.inv_table.exact > 0u);
+        lo = (double)CURVE_NUM(inv.lo);
+        hi = (double)CURVE_NUM(inv.hi);
+        assert_same_drives(lo, hi);
+        /* damage, the wrong size, another model */
+        flash[4u * SYM_INTERVALS] = NEXT(flash[4u * SYM_INTERVALS], 0); /* the end */
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, hyst_curve_inverse_table_const(&from_flash, &fwd, flash,
+                                                                           SYM_INTERVALS, &seal));
+        memcpy(flash, built, SYM_LEN * sizeof built[0]);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, hyst_curve_inverse_table_const(
+                                                &from_flash, &fwd, flash, SYM_INTERVALS - 1u, &seal));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&other_fwd, models[1 - m]));
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_curve_inverse_table_const(
+                                                  &from_flash, &other_fwd, flash, SYM_INTERVALS,
+                                                  &seal));
+    }
+}
+
+static void test_bad_arguments(void)
+{
+    hyst_curve_t out;
+    (void)sealed_everett();
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_table_seal(NULL, &seal));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_table_seal(&inv, NULL));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_table_seal(&fwd, &seal)); /* not a table */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_everett_inverse_table_const(
+                                             NULL, &fwd, flash, ROWS, INTERVALS, &seal));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_everett_inverse_table_const(
+                                             &out, NULL, flash, ROWS, INTERVALS, &seal));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_everett_inverse_table_const(
+                                             &out, &fwd, NULL, ROWS, INTERVALS, &seal));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_everett_inverse_table_const(
+                                             &out, &fwd, flash, ROWS, INTERVALS, NULL));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_everett_inverse_table_const(
+                                            &out, &fwd, flash, 2u, INTERVALS, &seal));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG,
+                          hyst_curve_everett_inverse_table_const(&out, &fwd, flash, ROWS, 0u, &seal));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_inverse_table_const(&out, &fwd, flash,
+                                                                       SYM_INTERVALS, &seal));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&other_fwd, &paper_eq20));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_inverse_table_const(&out, &other_fwd, flash,
+                                                                        SYM_INTERVALS, NULL));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_everett_inverse_table_const(
+                                            &out, &other_fwd, flash, ROWS, INTERVALS, &seal));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_everett_table_from_flash_is_the_build);
+    RUN_TEST(test_damage_is_refused);
+    RUN_TEST(test_another_models_table_is_refused);
+    RUN_TEST(test_symmetric_table_from_flash_is_the_build);
+    RUN_TEST(test_bad_arguments);
+    return UNITY_END();
+}
