@@ -28,7 +28,10 @@
  * against the outputs, agrees with the exact one within twice the error
  * its init measured (a sampled figure) on the structured grids until the
  * outputs first turn back (from there on its turning points carry its own
- * error), and its block call equals its steps. */
+ * error), and its block call equals its steps; it runs from a copy of
+ * its table taken as from flash (hyst_curve_table_seal(), then
+ * hyst_curve_everett_inverse_table_const(): accepted, the build's curve),
+ * and that copy with one bit flipped is refused (HYST_ERR_CRC). */
 #include "fuzz_common.h"
 #include "ref_everett.h"
 
@@ -95,9 +98,13 @@ static void check_tabulated(const hyst_curve_t *curve, const hyst_everett_t *e, 
                             size_t n)
 {
     static double table[HYST_EVERETT_INV_TABLE_LEN(15u, 31u)];
+    static double flash[HYST_EVERETT_INV_TABLE_LEN(15u, 31u)]; /* the table as firmware holds it */
     static double tl[MAX_CAP], tyl[MAX_CAP], tr[MAX_CAP], tyr[MAX_CAP], tab[MAX_SAMPLES];
     const size_t rows = 3u + 4u * ((flags >> 4) & 3u), intervals = 1u + 10u * (flags >> 6);
-    hyst_curve_t tinv, exact;
+    const size_t len = HYST_EVERETT_INV_TABLE_LEN(rows, intervals);
+    hyst_table_seal_t seal;
+    hyst_curve_t tinv, exact, from_flash;
+    uint64_t bits;
     hyst_t C;
     double allowed;
     size_t k;
@@ -109,6 +116,16 @@ static void check_tabulated(const hyst_curve_t *curve, const hyst_everett_t *e, 
     }
     CHECK(hyst_curve_inverse(&exact, curve) == HYST_OK);
     CHECK(hyst_curve_inverse_error(&tinv) >= 0 && hyst_curve_inverse_error(&tinv) <= HYST_INV_TABLE_TOL);
+    /* the same table as firmware takes it from flash: sealed, accepted, the
+     * build's curve (the samples below run on it) */
+    CHECK(hyst_curve_table_seal(&tinv, &seal) == HYST_OK);
+    memcpy(flash, table, len * sizeof table[0]);
+    CHECK(hyst_curve_everett_inverse_table_const(&from_flash, curve, flash, rows, intervals,
+                                                 &seal) == HYST_OK);
+    CHECK(from_flash.u.everett.exact == tinv.u.everett.exact &&
+          hyst_curve_inverse_error(&from_flash) == hyst_curve_inverse_error(&tinv) &&
+          memcmp(&from_flash.rounding, &tinv.rounding, sizeof tinv.rounding) == 0);
+    tinv = from_flash;
     /* init's error is the worst of 8 probes per interval and anchor: between
      * probes a cubic's error may exceed it (one interval of 15 rows: by 3 %) */
     allowed = hyst_curve_inverse_error(&tinv) * (e->hi - e->lo) * 2.0 + 2.0 * exact.rounding.f64;
@@ -129,6 +146,13 @@ static void check_tabulated(const hyst_curve_t *curve, const hyst_everett_t *e, 
     CHECK(hyst_init_curve(&C, &tinv, tl, tyl, tr, tyr, MAX_CAP) == HYST_OK);
     CHECK(hyst_process(&C, ys, ys2, n) >= 0);
     CHECK(n == 0u || memcmp(tab, ys2, n * sizeof ys2[0]) == 0);
+    /* one bit of one number flipped (the samples pick which): refused */
+    k = (n * 2654435761u + flags) % len;
+    memcpy(&bits, &flash[k], sizeof bits);
+    bits ^= (uint64_t)1 << (n % 64u);
+    memcpy(&flash[k], &bits, sizeof bits);
+    CHECK(hyst_curve_everett_inverse_table_const(&from_flash, curve, flash, rows, intervals,
+                                                 &seal) == HYST_ERR_CRC);
 }
 
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)

@@ -377,7 +377,8 @@ hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *f
 /* Knots checked against the model in a table given ready-made. */
 #define CHECK_KNOTS 7u
 
-/* A table given ready-made, against the model: its end (the drive span),
+/* A table given ready-made, against the model: its shape
+ * (hyst_table_shape_ok_()), its end (the drive span),
  * the intervals evaluated exactly (counted as the build counts them), and
  * the drive step at CHECK_KNOTS knots solved again, within rounding (8
  * units of the variant's type, of the span). 0 if it is another model's
@@ -388,6 +389,9 @@ static int table_matches(table_build_t *b, hyst_cptr_t table, size_t n)
     const hyst_wide_t tol = 8 * b->eps * b->span;
     size_t k;
     unsigned j;
+    if (!hyst_table_shape_ok_(table, 0u, n, variant)) {
+        return 0;
+    }
     for (k = 0u; k < n; ++k) {
         b->c->u.inv_table.exact += hyst_cptr_get(table, 4u * k, variant) < 0 ? 1u : 0u;
     }

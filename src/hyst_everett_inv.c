@@ -414,17 +414,23 @@ hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_cu
 /* Knots of a row checked against the model in a table given ready-made. */
 #define CHECK_KNOTS 3u
 
-/* A direction of a table given ready-made, against the model: an interval
- * solved instead in one row is so in every row (counted as the build counts
- * them), and each row's drive step at CHECK_KNOTS knots and at the end is
- * the model's, solved again as fill_row() solves it, within rounding (8
- * units of the variant's type, of the span). 0 if it is another model's
- * table. */
+/* A direction of a table given ready-made, against the model: in every
+ * row, numbers finite and knots rising to the end (the drive steps the
+ * build stores: table_shape_ok()); an interval solved instead in one row is
+ * so in every row (counted as the build counts them); and each row's drive
+ * step at CHECK_KNOTS knots and at the end is the model's, solved again as
+ * fill_row() solves it, within rounding (8 units of the variant's type, of
+ * the span). 0 if it is another model's table. */
 static int direction_matches(build_t *b, int fall)
 {
     const hyst_wide_t tol = 8 * b->eps * b->span;
     const size_t n = b->intervals;
     size_t r, k;
+    for (r = 0u; r <= b->rows; ++r) {
+        if (!hyst_table_shape_ok_(b->view, row_at(b, fall, r), n, b->c->variant)) {
+            return 0;
+        }
+    }
     for (k = 0u; k < n; ++k) {
         const int solved = entry(b, row_at(b, fall, 0u) + 4u * k) < 0;
         for (r = 1u; r <= b->rows; ++r) {

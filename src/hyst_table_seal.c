@@ -90,3 +90,33 @@ hyst_status_t hyst_table_seal_check_(unsigned kind, unsigned variant, hyst_cptr_
     }
     return HYST_OK;
 }
+
+int hyst_table_shape_ok_(hyst_cptr_t table, size_t base, size_t intervals, unsigned variant)
+{
+    const hyst_wide_t end = hyst_cptr_get(table, base + 4u * intervals, variant);
+    hyst_wide_t knot = 0;
+    size_t k;
+    unsigned i;
+    if (!hyst_wide_is_finite(end) || !(end >= 0)) {
+        return 0;
+    }
+    for (k = 0u; k < intervals; ++k) {
+        const hyst_wide_t c0 = hyst_cptr_get(table, base + 4u * k, variant);
+        for (i = 1u; i < 4u; ++i) {
+            const hyst_wide_t c = hyst_cptr_get(table, base + 4u * k + i, variant);
+            if (!hyst_wide_is_finite(c) || (c0 < 0 && c != 0)) {
+                return 0;
+            }
+        }
+        if (c0 < 0) { /* solved instead: the mark, -1 0 0 0 */
+            if (c0 != -1) {
+                return 0;
+            }
+        } else if (!(c0 >= knot && c0 <= end)) { /* NaN too */
+            return 0;
+        } else {
+            knot = c0;
+        }
+    }
+    return 1;
+}

@@ -255,6 +255,11 @@ unsigned long hyst_crc_word_(unsigned long crc, unsigned long w);
 hyst_wide_t hyst_table_err_(hyst_wide_t err);
 hyst_status_t hyst_table_seal_check_(unsigned kind, unsigned variant, hyst_cptr_t table,
                                      size_t rows, size_t intervals, const hyst_table_seal_t *seal);
+/* A row of a table given ready-made (its intervals' four numbers from
+ * entry base, then the end): every number finite, each interval's start a
+ * drive step between the one before and the end, or the mark of an
+ * interval solved instead (-1 0 0 0). 1 if so. */
+int hyst_table_shape_ok_(hyst_cptr_t table, size_t base, size_t intervals, unsigned variant);
 /* The constructors of tables given ready-made (hyst_*_curve_inverse_table_const,
  * hyst_*_curve_everett_inverse_table_const), written once. */
 hyst_status_t hyst_curve_inverse_table_const_(hyst_curve_t *inv, const hyst_curve_t *fwd,

@@ -58,6 +58,17 @@ if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
         hyst_budget_test(everett_budget ${HYST_BUDGET_EVERETT_TYPICAL_INSNS}
                          ${HYST_BUDGET_EVERETT_WORST_INSNS} --elf $<TARGET_FILE:bench_budget_everett> --no-pi)
     endif()
+    # Its tabulated compensator (the default table): the compensator's budgets. The
+    # typical one is asserted (measured 50); the worst is not met (measured 370: a
+    # slow sample derives the branch's four rows and blends an interval on top of the
+    # forward kind's path, docs/timing.md): printed against 160, not asserted.
+    if(TARGET bench_budget_everett_inv_table)
+        hyst_budget_test(everett_inv_table_budget ${HYST_BUDGET_INV_TYPICAL_INSNS}
+                         ${HYST_BUDGET_INV_WORST_INSNS}
+                         --elf $<TARGET_FILE:bench_budget_everett_inv_table> --no-pi --worst-unmet)
+        # its init builds the table in soft double, traced instruction by instruction
+        set_tests_properties(everett_inv_table_budget PROPERTIES TIMEOUT 1500)
+    endif()
 endif()
 if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an385" AND TARGET bench_q31)
     hyst_budget_test(q31_budget ${HYST_BUDGET_Q31_TYPICAL_INSNS} ${HYST_BUDGET_Q31_WORST_INSNS}

@@ -163,6 +163,36 @@ static void test_damage_is_refused(void)
     }
 }
 
+/* A table sealed after it was changed (the seal only says it is intact):
+ * its shape is checked too, every number finite and every row's knots
+ * rising to its end (HYST_ERR_CURVE). */
+static void test_sealed_garbage_is_refused(void)
+{
+    const size_t row = HYST_INV_TABLE_LEN(INTERVALS);
+    const size_t at[4] = {4u * 5u + 2u,                   /* a slope: NaN */
+                          row * 3u + 4u * 7u,             /* a knot below the one before */
+                          row * (ROWS + 2u) + 4u * INTERVALS, /* an end below its knots */
+                          row * 2u + 4u * 9u + 1u};       /* the slope of a mark, if any */
+    const hyst_real_t value[4] = {(hyst_real_t)NAN, 0, 0, 1};
+    unsigned i;
+    (void)sealed_everett();
+    memcpy(built, flash, sizeof built);
+    for (i = 0u; i < 4u; ++i) {
+        hyst_curve_t resealed = inv; /* its table is flash */
+        if (i == 1u) {
+            flash[at[i]] = flash[at[i] - 4u] * (hyst_real_t)0.5; /* below knot 6 */
+        } else if (i == 3u) {
+            flash[at[i] - 1u] = -1; /* interval 9 marked, with a slope */
+            flash[at[i]] = value[i];
+        } else {
+            flash[at[i]] = value[i];
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_table_seal(&resealed, &seal));
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, everett_from_flash(ROWS, INTERVALS));
+        memcpy(flash, built, sizeof flash);
+    }
+}
+
 /* A table is in output steps relative to the branch's whole step, so E
  * times a constant has the same table (accepted); any other E is refused. */
 static void test_another_models_table_is_refused(void)
@@ -267,6 +297,7 @@ int main(void)
     RUN_TEST(test_everett_table_from_flash_is_the_build);
     RUN_TEST(test_damage_is_refused);
     RUN_TEST(test_another_models_table_is_refused);
+    RUN_TEST(test_sealed_garbage_is_refused);
     RUN_TEST(test_symmetric_table_from_flash_is_the_build);
     RUN_TEST(test_bad_arguments);
     return UNITY_END();

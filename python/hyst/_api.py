@@ -190,10 +190,13 @@ class Fit:
         ``hyst sim --model`` reads."""
         save_model(path, delay=self.delay, **self.description())
 
-    def header(self, name):
+    def header(self, name, compensator=False, intervals=None, rows=None):
         """The firmware header (C source text) declaring ``hyst_poly_t name``
-        (kind poly) or ``hyst_everett_t name`` (kind everett)."""
-        return header_text(name, **self.description())
+        (kind poly) or ``hyst_everett_t name`` (kind everett); with
+        ``compensator=True`` also its compensator's table, built and sealed
+        (:func:`header_text`)."""
+        return header_text(name, **self.description(), compensator=compensator,
+                           intervals=intervals, rows=rows)
 
     def __getattr__(self, name):
         # only called for names not found on the Fit itself

@@ -6,6 +6,7 @@ coefficients highest power first) and ``everett`` (the asymmetric kind's
 branch function E)."""
 import math
 import os
+import struct
 import tempfile
 
 MAGIC = "hyst-model-text 1"
@@ -174,29 +175,97 @@ def _literal(v):
     return f"HYST_REAL_C({t if any(ch in t for ch in '.eEn') else t + '.0'})"
 
 
+def _as_float(v):
+    """v rounded to float32, as a float build reads its header literal."""
+    return struct.unpack("f", struct.pack("f", float(v)))[0]
+
+
+def _table_literal(v, f32):
+    """A table number as a C literal of its type (float: 9 digits, suffix f)."""
+    t = f"{v:.9g}" if f32 else f"{v:.17g}"
+    t = t if any(ch in t for ch in ".eEn") else t + ".0"
+    return t + "f" if f32 else t
+
+
+def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows):
+    """The compensator's table in float and in double, sealed, as
+    ``hyst header --compensator`` writes it (docs/cli.md)."""
+    from . import _hyst  # the extension: this module stays importable without it
+    everett = kind == "everett"
+    if rows is not None and not everett:
+        raise ValueError("rows applies to kind everett only: the compensator of kind poly "
+                         "tabulates f0^-1 in one row (intervals alone)")
+    if intervals is None:
+        intervals = _hyst.EVERETT_INV_INTERVALS if everett else _hyst.INV_TABLE
+    if everett and rows is None:
+        rows = _hyst.EVERETT_INV_ROWS
+    built = {}
+    for f32, cls in ((True, _hyst.ModelF32), (False, _hyst.ModelF64)):
+        r = _as_float if f32 else float
+        if everett:
+            c = cls(degree, r(lo), r(hi), r(y_lo), [r(t) for t in terms], 2, True, intervals, rows)
+        else:
+            c = cls([r(v) for v in coeffs], r(lo), r(hi), 2, True, intervals)
+        built[f32] = (c.table, c.table_seal)
+    size = (f"HYST_EVERETT_INV_TABLE_LEN({name}_ROWS, {name}_INTERVALS)" if everett
+            else f"HYST_INV_TABLE_LEN({name}_INTERVALS)")
+    use = (f" *   hyst_curve_from_everett(&fwd, &{name});\n"
+           f" *   hyst_curve_everett_inverse_table_const(&comp, &fwd, {name}_table, {name}_ROWS,\n"
+           f" *                                          {name}_INTERVALS, &{name}_seal);\n"
+           if everett else
+           f" *   hyst_curve_from_poly(&fwd, &{name});\n"
+           f" *   hyst_curve_inverse_table_const(&comp, &fwd, {name}_table, {name}_INTERVALS,\n"
+           f" *                                  &{name}_seal);\n")
+    text = ("\n/* The compensator's table in float and in double, sealed; worst error measured by "
+            f"the build\n * {built[True][1][1]:.3g} (float) / {built[False][1][1]:.3g} (double) "
+            "of the drive range. Firmware takes it from flash:\n" + use +
+            " *   hyst_init_curve(&S, &comp, ...);  // comp outlives S */\n")
+    if everett:
+        text += f"#define {name}_ROWS {rows}u\n"
+    text += f"#define {name}_INTERVALS {intervals}u\n#ifdef HYST_USE_DOUBLE\n"
+    for f32 in (False, True):
+        table, (crc, max_err) = built[f32]
+        text += f"static const {'float' if f32 else 'double'} {name}_table[{size}] = {{"
+        text += ",".join(("\n    " if i % 4 == 0 else " ") + _table_literal(v, f32)
+                         for i, v in enumerate(table))
+        text += (f"}};\nstatic const hyst_table_seal_t {name}_seal = "
+                 f"{{0x{crc:08X}ul, {_table_literal(max_err, False)}}};\n")
+        text += "#else\n" if not f32 else "#endif\n"
+    return text
+
+
 def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,
-                terms=None, delay=0):
+                terms=None, delay=0, compensator=False, intervals=None, rows=None):
     """C header declaring the firmware's model as ``hyst fit --header``
     writes it: ``static const hyst_poly_t name`` (f0), or for
     ``kind="everett"`` ``static const hyst_everett_t name`` (degree, lo, hi,
     y_lo, e[i-1][j]); 17-digit literals in HYST_REAL_C(), exact in a double
     build (HYST_USE_DOUBLE). ``delay`` is not part of a header; it is
-    accepted so that a :func:`load_model` dict can be passed whole."""
+    accepted so that a :func:`load_model` dict can be passed whole.
+    ``compensator=True`` adds the compensator's table, built here by the
+    library in float and in double and sealed, as ``hyst header
+    --compensator`` writes it: ``name_table``, ``name_seal``,
+    ``name_INTERVALS`` (and ``name_ROWS``), for firmware's
+    ``hyst_curve_inverse_table_const()`` or
+    ``hyst_curve_everett_inverse_table_const()`` (``intervals``, ``rows``:
+    the table's size, the library's defaults when None)."""
     if not name.isidentifier() or not name.isascii():
         raise ValueError(f"{name!r} is not a C identifier")
+    if not compensator and (intervals is not None or rows is not None):
+        raise ValueError("intervals and rows size the compensator's table (compensator=True)")
     del delay
     guard = name.upper() + "_H"
     if kind == "everett":
         degree, y_lo, terms = _everett_args(degree, y_lo, terms)
-        rows, k = [], 0
+        e_rows, k = [], 0
         for i in range(1, degree + 1):
             n = degree - i + 1  # j = 0..degree - i
-            rows.append("{" + ", ".join(_literal(t) for t in terms[k:k + n]) + "}")
+            e_rows.append("{" + ", ".join(_literal(t) for t in terms[k:k + n]) + "}")
             k += n
         what = (f"asymmetric model (branch function E),\n * degree {degree}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
         decl = (f"static const hyst_everett_t {name} = {{\n    {degree}u, {_literal(lo)}, "
-                f"{_literal(hi)}, {_literal(y_lo)},\n    {{" + ",\n     ".join(rows) + "}};")
+                f"{_literal(hi)}, {_literal(y_lo)},\n    {{" + ",\n     ".join(e_rows) + "}};")
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
         body = ",\n     ".join(_literal(c) for c in coeffs)
@@ -204,6 +273,8 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
         decl = (f"static const hyst_poly_t {name} = {{\n    {len(coeffs) - 1}u, "
                 f"{_literal(lo)}, {_literal(hi)},\n    {{{body}}}}};")
+    table = (_compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows)
+             if compensator else "")
     return (f"/* Generated by the Python package hyst: {what}. */\n"
             f"#ifndef {guard}\n#define {guard}\n\n#include \"hyst/curve.h\"\n\n"
-            f"{decl}\n\n#endif /* {guard} */\n")
+            f"{decl}\n{table}\n#endif /* {guard} */\n")

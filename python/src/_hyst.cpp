@@ -10,6 +10,7 @@
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/optional.h>
+#include <nanobind/stl/pair.h>
 #include <nanobind/stl/unique_ptr.h>
 #include <nanobind/stl/vector.h>
 
@@ -17,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "hyst/hyst.h"
@@ -559,6 +561,28 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
                          return s.intervals > 0u ? static_cast<double>(hyst_curve_inverse_error(&s.inv))
                                                  : 0.0;
                      })
+        .def_prop_ro(
+            "table",
+            [](const R &s) {
+                if (s.intervals == 0u) {
+                    raise_status(HYST_ERR_ARG, "no table: only a tabulated compensator has one");
+                }
+                return std::vector<double>(s.table.begin(), s.table.end());
+            },
+            "The tabulated compensator's table as firmware holds it (its numbers as float64: "
+            "exact).")
+        .def_prop_ro(
+            "table_seal",
+            [](const R &s) {
+                hyst_table_seal_t seal;
+                if (s.intervals == 0u) {
+                    raise_status(HYST_ERR_ARG, "no table: only a tabulated compensator has one");
+                }
+                check(hyst_curve_table_seal(&s.inv, &seal), "table seal");
+                return std::make_pair(static_cast<unsigned long>(seal.crc & 0xFFFFFFFFul),
+                                      static_cast<double>(seal.max_err));
+            },
+            "hyst_curve_table_seal() of the table: (crc, max_err).")
         .def_prop_ro("dtype", [](const R &) { return Ops<T>::dtype; });
     def_process<T, R>(model_cls);
 
