@@ -365,8 +365,17 @@ def main():
             problems.append("%s: exit %s, failures %s" % (name, run.exit_code, run.meta.get("failures")))
             continue
         rows = rows_of(run, "binary")
+        init = {r["kind"]: r["insns"] for r in rows if r["kind"].startswith("init_")}
+        rows = [r for r in rows if not r["kind"].startswith("init_")]
         put("%s_typical_insns" % prefix, max(r["insns"] for r in rows if r["kind"] in TYPICAL))
         put("%s_worst_insns_nu4096" % prefix, max(r["insns"] for r in rows))
+        # the tabulated one's init: its table built, and taken as from flash
+        if "init_table" in init and "init_const" in init:
+            put("%s_init_build_insns" % prefix, init["init_table"])
+            put("%s_init_from_flash_insns" % prefix, init["init_const"])
+        # a table's worst error / drive range, as its init measured it
+        if "inv_max_err_rel_ppb" in run.meta:
+            put("%s_max_err_rel" % prefix, "%.3g" % (int(run.meta["inv_max_err_rel_ppb"]) * 1e-9))
 
     # Estimated cycles (tools/cycle_model.py: Cortex-M4 pipeline model, zero
     # wait states) of the budget image's typical and worst samples.

@@ -783,6 +783,16 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         if (cst == HYST_OK && tab) {
             cst = hyst_curve_inverse_table(&ct, &cf, ct_table, intervals);
         }
+        if (cst == HYST_OK && tab) { /* the same table as from flash: the build's curve */
+            hyst_table_seal_t seal;
+            hyst_curve_t from_flash;
+            CHECK(hyst_curve_table_seal(&ct, &seal) == HYST_OK);
+            CHECK(hyst_curve_inverse_table_const(&from_flash, &cf, ct_table, intervals, &seal) ==
+                  HYST_OK);
+            CHECK(from_flash.u.inv_table.exact == ct.u.inv_table.exact &&
+                  hyst_curve_inverse_error(&from_flash) == hyst_curve_inverse_error(&ct) &&
+                  memcmp(&from_flash.unit, &ct.unit, sizeof ct.unit) == 0);
+        }
         exp = cst != HYST_OK ? cst : (cap < 2u ? HYST_ERR_CAPACITY : HYST_OK);
     }
     if (flags & 8u) {
