@@ -460,6 +460,77 @@ static int asym_everett_score(unsigned degree, unsigned t_degree, size_t delay, 
     return 1;
 }
 
+/* The compensator identified directly (the axes swapped): E of the drive
+ * as a function of the reading, fitted as asym_everett_score() fits the
+ * model, on input asym_yr[i + delay] (the actuator's output at i, read
+ * through the lagging sensor), output asym_xr[i], domain [lo, hi]; its
+ * hold-out score in drive units. Its samples cost what the forward kind's
+ * do. 0 if the fit is singular or E not monotone. */
+static hyst_curve_t asym_direct;
+
+static int asym_direct_score(unsigned degree, unsigned t_degree, size_t delay, double lo, double hi,
+                             hyst_everett_t *e, double *score)
+{
+    static hyst_wide_t work[HYST_EVERETT_FIT_WORK(NU)];
+    static hyst_everett_fit_t fit;
+    const size_t skip = (size_t)ASYM_CYCLE, split = (size_t)(2L * ASYM_RECORD / 3L);
+    double ss = 0.0;
+    size_t i;
+    if (hyst_everett_fit_init_terms(&fit, degree, t_degree, lo, hi, work,
+                                    sizeof work / sizeof work[0]) != HYST_OK) {
+        return 0;
+    }
+    for (i = 0u; i < split; ++i) {
+        (void)hyst_everett_fit_add(&fit, asym_yr[i + delay], i >= skip ? asym_xr[i] : (hyst_wide_t)NAN);
+    }
+    if (hyst_everett_fit_solve(&fit, e, NULL) != HYST_OK ||
+        hyst_curve_from_everett(&asym_direct, e) != HYST_OK ||
+        HYST_INIT_CURVE(asym_model, &asym_direct) != HYST_OK) {
+        return 0;
+    }
+    for (i = 0u; i + delay < (size_t)ASYM_RECORD; ++i) {
+        const double err = (double)hyst_step(&asym_model, (hyst_real_t)asym_yr[i + delay]) - asym_xr[i];
+        if (i >= split) {
+            ss += err * err;
+        }
+    }
+    *score = sqrt(ss / (double)((size_t)ASYM_RECORD - delay - split));
+    return 1;
+}
+
+/* Degree and t-degree of the direct compensator by the model's rule (the
+ * fewest parameters within 1 % of the best hold-out score); its curve in
+ * asym_direct. 0 if none fits. */
+static int asym_direct_choose(size_t delay, double lo, double hi)
+{
+    double s[HYST_EVERETT_MAX_DEGREE + 1][HYST_EVERETT_MAX_DEGREE], best = 1e300;
+    hyst_everett_t e;
+    unsigned d, t, params = 1000u, cd = 0u, ct = 0u;
+    for (d = 1u; d <= (unsigned)HYST_EVERETT_MAX_DEGREE; ++d) {
+        for (t = 0u; t < d; ++t) {
+            s[d][t] = asym_direct_score(d, t, delay, lo, hi, &e, &s[d][t]) ? s[d][t] : -1.0;
+            best = s[d][t] >= 0.0 && s[d][t] < best ? s[d][t] : best;
+        }
+    }
+    for (d = 1u; d <= (unsigned)HYST_EVERETT_MAX_DEGREE; ++d) {
+        for (t = 0u; t < d; ++t) {
+            if (s[d][t] >= 0.0 && s[d][t] <= 1.01 * best && everett_params(d, t) < params) {
+                params = everett_params(d, t);
+                cd = d;
+                ct = t;
+            }
+        }
+    }
+    if (cd == 0u || !asym_direct_score(cd, ct, delay, lo, hi, &e, &best)) {
+        return 0;
+    }
+    value("direct_degree", (double)cd);
+    value("direct_t_degree", (double)ct);
+    value("direct_params", (double)params);
+    value("direct_holdout_rms", best);
+    return 1;
+}
+
 static void asymmetric(void)
 {
     static hyst_wide_t pi_work[HYST_PI_FIT_WORK(ASYM_PI_OPERATORS)];
@@ -668,6 +739,23 @@ static void asymmetric(void)
         plant_everett_init_piezo(&comp_plant);
         value("comp_table_rms_ratio", sqrt(track("table", &asym_model, xs, n, y_lo, y_hi,
                                                  everett_step, &open_plant, &comp_plant)));
+        /* the compensator identified directly from the same record, its axes
+         * swapped: a forward asymmetric TCM from reading to drive, at the
+         * forward kind's cost per sample */
+        {
+            double r_lo = asym_yr[0], r_hi = asym_yr[0];
+            for (i = 0u; i < (size_t)ASYM_RECORD; ++i) {
+                r_lo = asym_yr[i] < r_lo ? asym_yr[i] : r_lo;
+                r_hi = asym_yr[i] > r_hi ? asym_yr[i] : r_hi;
+            }
+            check(asym_direct_choose(best_delay, r_lo, r_hi) &&
+                      HYST_INIT_CURVE(asym_model, &asym_direct) == HYST_OK,
+                  "asymmetric_direct_compensator");
+            plant_everett_init_piezo(&open_plant);
+            plant_everett_init_piezo(&comp_plant);
+            value("comp_direct_rms_ratio", sqrt(track("direct", &asym_model, xs, n, y_lo, y_hi,
+                                                      everett_step, &open_plant, &comp_plant)));
+        }
     }
     end();
 }

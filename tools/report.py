@@ -495,11 +495,21 @@ def asymmetric(sec, md, out):
                    f"default table; init measured {v['table_inverse_error']:.2g} of the drive range) | "
                    f"{fmt(v['table_comp_rms'])} | {fmt(v['table_comp_max'])} | {fmt(v['table_open_rms'])} | "
                    f"comp_table_rms_ratio {v['comp_table_rms_ratio']:.2f} | |" if "comp_table_rms_ratio" in v
+                   else "") +
+                  (f"\n| identified directly, axes swapped: a forward asymmetric TCM from the reading to the "
+                   f"drive (E of degree {int(v['direct_degree'])}, {int(v['direct_t_degree'])} in t, "
+                   f"{int(v['direct_params'])} parameters; hold-out {fmt(v['direct_holdout_rms'])} V), at the "
+                   f"forward kind's cost per sample | {fmt(v['direct_comp_rms'])} | "
+                   f"{fmt(v['direct_comp_max'])} | {fmt(v['direct_open_rms'])} | "
+                   f"comp_direct_rms_ratio {v['comp_direct_rms_ratio']:.2f} | |" if "comp_direct_rms_ratio" in v
                    else "") + "\n")
         md.append("The symmetric compensator is limited by its model's symmetry (its major loop is "
                   "point-symmetric, the plant's is not). The asymmetric one inverts a model whose hold-out "
                   "error is at the noise level, faithfully (`tests/test_everett_inverse.c`): what remains is "
-                  "the plant's non-polynomial E between the record's loops.\n")
+                  "the plant's non-polynomial E between the record's loops." +
+                  (" The directly identified compensator costs what the forward model costs per sample "
+                   "(docs/timing.md) but fits its E to noisy readings as inputs: half the reduction of the "
+                   "model's exact or tabulated inverse." if "comp_direct_rms_ratio" in v else "") + "\n")
     t = sec["tables"].get("prediction")
     if t is not None and len(t["data"]):
         fig, ax = plt.subplots(figsize=(7, 4))
