@@ -169,10 +169,16 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
         raise
 
 
+def _c_number(v, digits=17):
+    """v as a C floating literal of `digits` significant digits (always a
+    '.' or an exponent), as the CLI's cli_c_number() prints it."""
+    t = f"{float(v):.{digits}g}"
+    return t if any(ch in t for ch in ".eEn") else t + ".0"
+
+
 def _literal(v):
     """A 17-digit C literal in HYST_REAL_C() (exact in a double build)."""
-    t = f"{float(v):.17g}"
-    return f"HYST_REAL_C({t if any(ch in t for ch in '.eEn') else t + '.0'})"
+    return f"HYST_REAL_C({_c_number(v)})"
 
 
 def _as_float(v):
@@ -182,9 +188,7 @@ def _as_float(v):
 
 def _table_literal(v, f32):
     """A table number as a C literal of its type (float: 9 digits, suffix f)."""
-    t = f"{v:.9g}" if f32 else f"{v:.17g}"
-    t = t if any(ch in t for ch in ".eEn") else t + ".0"
-    return t + "f" if f32 else t
+    return _c_number(v, 9) + "f" if f32 else _c_number(v)
 
 
 def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows):

@@ -73,6 +73,24 @@ int cli_opt_ulong(const cli_args_t *a, const char *v, unsigned long min, unsigne
 int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, size_t max,
                  size_t *n);
 
+/* A compensator table's size (inv --intervals/--rows, header --compensator
+ * --intervals/--rows): the counts the library accepts (curve.h), and a
+ * constant spelled out in a help text. */
+#define CLI_TABLE_MAX_INTERVALS (1ul << 20)
+#define CLI_TABLE_MIN_ROWS 3ul
+#define CLI_TABLE_MAX_ROWS 4096ul
+#define CLI_TABLE_DEFAULT ((unsigned long)-1) /* "default": the kind's, once known */
+#define CLI_STR_(x) #x
+#define CLI_STR(x) CLI_STR_(x)
+/* --intervals N (rows 0) or --rows R (rows 1): a count in range, or
+ * "default" (CLI_TABLE_DEFAULT); as cli_opt_ulong(). */
+int cli_opt_table_size(const cli_args_t *a, const char *v, int rows, unsigned long *out);
+/* The sizes once the model's kind is known (0: not given): --rows refused
+ * for kind poly; "default" intervals the kind's, and the rows of a table
+ * (intervals given) HYST_EVERETT_INV_ROWS unless given. 0, or 1 after a
+ * message. */
+int cli_table_sizes(const char *cmd, int everett, unsigned long *intervals, unsigned long *rows);
+
 /* Unknown option or stray argument: message, returns 1. */
 int cli_unknown(const cli_args_t *a);
 
@@ -229,8 +247,10 @@ void cli_table_free(cli_table_t *t);
  * printable ASCII as \xNN (then in a static buffer, cut after 200 bytes). */
 const char *cli_file_name(const char *path);
 
-/* A number printed as a C floating literal (always a '.' or an exponent). */
+/* A number printed as a C floating literal (always a '.' or an exponent):
+ * 17 significant digits (a double read back exactly), or `digits`. */
 void cli_c_literal(char *buf, size_t len, double v);
+void cli_c_number(char *buf, size_t len, double v, int digits);
 
 /* ---- sample streams: one output line per input sample ---- */
 

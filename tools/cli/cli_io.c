@@ -235,12 +235,39 @@ int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, si
     return 1;
 }
 
-void cli_c_literal(char *buf, size_t len, double v)
+void cli_c_number(char *buf, size_t len, double v, int digits)
 {
-    (void)snprintf(buf, len, "%.17g", v);
+    (void)snprintf(buf, len, "%.*g", digits, v);
     if (strpbrk(buf, ".eEn") == NULL && strlen(buf) + 3u < len) {
         strcat(buf, ".0");
     }
+}
+
+void cli_c_literal(char *buf, size_t len, double v) { cli_c_number(buf, len, v, 17); }
+
+int cli_opt_table_size(const cli_args_t *a, const char *v, int rows, unsigned long *out)
+{
+    if (strcmp(v, "default") == 0) {
+        *out = CLI_TABLE_DEFAULT;
+        return 1;
+    }
+    return rows ? cli_opt_ulong(a, v, CLI_TABLE_MIN_ROWS, CLI_TABLE_MAX_ROWS, out)
+                : cli_opt_ulong(a, v, 1ul, CLI_TABLE_MAX_INTERVALS, out);
+}
+
+int cli_table_sizes(const char *cmd, int everett, unsigned long *intervals, unsigned long *rows)
+{
+    if (*rows > 0ul && !everett) {
+        return cli_fail(cmd, "option --rows applies to kind everett only: the compensator of "
+                             "kind poly tabulates f0^-1 in one row (--intervals alone)");
+    }
+    if (*intervals == CLI_TABLE_DEFAULT) {
+        *intervals = everett ? HYST_EVERETT_INV_INTERVALS : HYST_INV_TABLE;
+    }
+    if (*intervals > 0ul && (*rows == 0ul || *rows == CLI_TABLE_DEFAULT)) {
+        *rows = HYST_EVERETT_INV_ROWS;
+    }
+    return 0;
 }
 
 /* ---- sample streams ---- */

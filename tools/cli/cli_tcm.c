@@ -4,7 +4,6 @@
 #include "cli.h"
 #include "hyst/hyst.h"
 
-#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -168,11 +167,6 @@ static unsigned long tcm_tp(void *ctx)
     return (unsigned long)hyst_tp_count(&((tcm_run_t *)ctx)->S);
 }
 
-/* inv --intervals: the table's sizes the library accepts (curve.h). */
-#define INV_MAX_INTERVALS (1ul << 20)
-#define INV_MIN_ROWS 3ul
-#define INV_MAX_ROWS 4096ul
-
 /* inv --intervals N [--rows R]: the firmware's tabulated compensator, its
  * table allocated here (firmware gives a static array of the same length):
  * kind poly hyst_curve_inverse_table() of f0's curve (what
@@ -286,22 +280,10 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
             if ((model_path = cli_value(&a)) == NULL) {
                 return 1;
             }
-        } else if (inverse && cli_is(&a, "--intervals")) {
-            if ((v = cli_value(&a)) == NULL) {
-                return 1;
-            }
-            if (strcmp(v, "default") == 0) {
-                intervals = ULONG_MAX; /* the kind's default, once the kind is known */
-            } else if (!cli_opt_ulong(&a, v, 1ul, INV_MAX_INTERVALS, &intervals)) {
-                return 1;
-            }
-        } else if (inverse && cli_is(&a, "--rows")) {
-            if ((v = cli_value(&a)) == NULL) {
-                return 1;
-            }
-            if (strcmp(v, "default") == 0) {
-                rows = HYST_EVERETT_INV_ROWS;
-            } else if (!cli_opt_ulong(&a, v, INV_MIN_ROWS, INV_MAX_ROWS, &rows)) {
+        } else if (inverse && (cli_is(&a, "--intervals") || cli_is(&a, "--rows"))) {
+            const int is_rows = cli_is(&a, "--rows");
+            if ((v = cli_value(&a)) == NULL ||
+                !cli_opt_table_size(&a, v, is_rows, is_rows ? &rows : &intervals)) {
                 return 1;
             }
         } else {
@@ -321,18 +303,13 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
         }
     }
     /* the kind known (else make_poly() says what is missing): --rows is the everett table's */
-    if (rows > 0ul && (model_path != NULL || ncoef > 0u) && model.kind != CLI_MODEL_EVERETT) {
-        return cli_fail(cmd, "option --rows applies to kind everett only: the compensator of "
-                             "kind poly tabulates f0^-1 in one row (--intervals alone)");
-    }
-    if (rows > 0ul && intervals == 0ul && (model_path != NULL || ncoef > 0u)) {
-        return cli_fail(cmd, "option --rows needs --intervals (the tabulated compensator)");
-    }
-    if (intervals == ULONG_MAX) {
-        intervals = model.kind == CLI_MODEL_EVERETT ? HYST_EVERETT_INV_INTERVALS : HYST_INV_TABLE;
-    }
-    if (intervals > 0ul && rows == 0ul) {
-        rows = HYST_EVERETT_INV_ROWS;
+    if (model_path != NULL || ncoef > 0u) {
+        if (cli_table_sizes(cmd, model.kind == CLI_MODEL_EVERETT, &intervals, &rows) != 0) {
+            return 1;
+        }
+        if (rows > 0ul && intervals == 0ul) {
+            return cli_fail(cmd, "option --rows needs --intervals (the tabulated compensator)");
+        }
     }
     if (model_path != NULL) {
         size_t i;

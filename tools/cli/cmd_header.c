@@ -5,11 +5,6 @@
 
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
-
-/* The library's default table sizes (hyst/config.h), in the help text. */
-#define HDR_STR_(x) #x
-#define HDR_STR(x) HDR_STR_(x)
 
 static const char help[] =
     "usage: hyst header --model MODEL [--dir DIR]\n"
@@ -32,22 +27,10 @@ static const char help[] =
     "                 hyst_curve_everett_inverse_table_const() (kind everett):\n"
     "                 firmware takes the table from flash instead of building it\n"
     "  --intervals N  with --compensator: the table's intervals (per row), 1..1048576\n"
-    "                 or 'default' (" HDR_STR(HYST_INV_TABLE) " for poly, " HDR_STR(HYST_EVERETT_INV_INTERVALS) " for everett)\n"
+    "                 or 'default' (" CLI_STR(HYST_INV_TABLE) " for poly, " CLI_STR(HYST_EVERETT_INV_INTERVALS) " for everett)\n"
     "  --rows R       with --compensator, kind everett: R + 1 rows per direction,\n"
-    "                 3..4096 or 'default' (" HDR_STR(HYST_EVERETT_INV_ROWS) ")\n"
+    "                 3..4096 or 'default' (" CLI_STR(HYST_EVERETT_INV_ROWS) ")\n"
     "  --help         this text\n";
-
-/* --intervals / --rows: a count in [min, max], or "default" (ULONG_MAX:
- * the kind's default once the kind is known). 0, or 1 after a message. */
-static int table_count(const cli_args_t *a, const char *v, unsigned long min, unsigned long max,
-                       unsigned long *out)
-{
-    if (strcmp(v, "default") == 0) {
-        *out = (unsigned long)-1;
-        return 0;
-    }
-    return cli_opt_ulong(a, v, min, max, out) ? 0 : 1;
-}
 
 int cmd_header(int argc, char **argv)
 {
@@ -80,12 +63,9 @@ int cmd_header(int argc, char **argv)
             if (v == NULL) {
                 return 1;
             }
-            if (cli_is(&a, "--intervals")) {
-                if (table_count(&a, v, 1ul, 1ul << 20, &intervals) != 0) {
-                    return 1;
-                }
-            } else if (cli_is(&a, "--rows")) {
-                if (table_count(&a, v, 3ul, 4096ul, &rows) != 0) {
+            if (cli_is(&a, "--intervals") || cli_is(&a, "--rows")) {
+                const int is_rows = cli_is(&a, "--rows");
+                if (!cli_opt_table_size(&a, v, is_rows, is_rows ? &rows : &intervals)) {
                     return 1;
                 }
             } else {
@@ -110,15 +90,11 @@ int cmd_header(int argc, char **argv)
         cli_model_read(a.cmd, model, &m) != 0 || cli_replace_check(&h, a.cmd, "header", path) != 0) {
         return 1;
     }
-    if (rows != 0ul && m.kind != CLI_MODEL_EVERETT) {
-        return cli_fail(a.cmd, "option --rows applies to kind everett only: the compensator of "
-                               "kind poly tabulates f0^-1 in one row (--intervals alone)");
+    if (compensator && intervals == 0ul) {
+        intervals = CLI_TABLE_DEFAULT;
     }
-    if (intervals == 0ul || intervals == (unsigned long)-1) {
-        intervals = m.kind == CLI_MODEL_EVERETT ? HYST_EVERETT_INV_INTERVALS : HYST_INV_TABLE;
-    }
-    if (rows == 0ul || rows == (unsigned long)-1) {
-        rows = HYST_EVERETT_INV_ROWS;
+    if (cli_table_sizes(a.cmd, m.kind == CLI_MODEL_EVERETT, &intervals, &rows) != 0) {
+        return 1;
     }
     if (compensator) {
         size += cli_header_table_size(&m, (size_t)rows, (size_t)intervals);

@@ -2,10 +2,6 @@
 /* hyst inv: the compensator (inverse TCM), one drive input per desired output. */
 #include "cli.h"
 
-/* The library's default table sizes (hyst/config.h), in the help text. */
-#define INV_STR_(x) #x
-#define INV_STR(x) INV_STR_(x)
-
 static const char help[] =
     "usage: hyst inv (--poly cN,...,c1,c0 --range LO,HI | --model MODEL) [--xcol I]\n"
     "                [--intervals N [--rows R]] [--tp] [--digits N] [--decimal-comma]\n"
@@ -35,15 +31,15 @@ static const char help[] =
     "                    (hyst_init_inverse_table(), HYST_INIT_INVERSE), kind\n"
     "                    everett N pieces per row, a row per branch start\n"
     "                    (hyst_curve_everett_inverse_table()); N in 1..1048576,\n"
-    "                    or 'default': the library's, " INV_STR(HYST_INV_TABLE) " for poly\n"
-    "                    (HYST_INV_TABLE), " INV_STR(HYST_EVERETT_INV_INTERVALS)
+    "                    or 'default': the library's, " CLI_STR(HYST_INV_TABLE) " for poly\n"
+    "                    (HYST_INV_TABLE), " CLI_STR(HYST_EVERETT_INV_INTERVALS)
     " for everett\n"
     "                    (HYST_EVERETT_INV_INTERVALS).\n"
     "                    Init's worst measured error (hyst_curve_inverse_error():\n"
     "                    a fraction of the drive range, then in drive units) is\n"
     "                    printed on stderr after the results\n"
     "  --rows R          kind everett, with --intervals: R + 1 rows per direction,\n"
-    "                    R in 3..4096 or 'default' (" INV_STR(HYST_EVERETT_INV_ROWS)
+    "                    R in 3..4096 or 'default' (" CLI_STR(HYST_EVERETT_INV_ROWS)
     ", HYST_EVERETT_INV_ROWS, also\n"
     "                    without --rows)\n"
     "  --tp              add the turning-point count as a second column: x,tp\n"

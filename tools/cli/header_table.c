@@ -20,12 +20,12 @@ static double as_float_literal(double v)
     return (double)strtof(lit, NULL);
 }
 
-/* A table of one variant (f32 or f64): its numbers as doubles, its seal. */
+/* A table of one variant (f32 or f64): its numbers as doubles, its seal
+ * (with the build's measured error). */
 typedef struct {
     double *num;
     size_t n;
     hyst_table_seal_t seal;
-    hyst_wide_t max_err;
     size_t exact;
 } built_t;
 
@@ -92,24 +92,19 @@ static hyst_status_t build(const cli_model_t *m, int f32, size_t rows, size_t in
         out->num[i] = (double)t32[i];
     }
     free(t32);
-    out->max_err = hyst_curve_inverse_error(&inv);
     out->exact = everett ? inv.u.everett.exact : inv.u.inv_table.exact;
     return st;
 }
 
-/* A number of the table as a C literal of its type (float: 9 digits, which
- * the compiler reads back to the same float; double: 17). */
+/* A number of the table as a C literal of its type (float: 9 digits and
+ * the suffix f, which the compiler reads back to the same float; double:
+ * 17). */
 static void literal(char *lit, size_t size, double v, int f32)
 {
-    if (!f32) {
-        cli_c_literal(lit, size, v);
-        return;
+    cli_c_number(lit, size - 1u, v, f32 ? 9 : 17);
+    if (f32) {
+        (void)strcat(lit, "f");
     }
-    (void)snprintf(lit, size, "%.9g", v);
-    if (strpbrk(lit, ".eEn") == NULL) {
-        (void)strncat(lit, ".0", size - strlen(lit) - 1u);
-    }
-    (void)strncat(lit, "f", size - strlen(lit) - 1u);
 }
 
 /* One variant's table and seal, an interval (four numbers) per line. */
@@ -172,8 +167,8 @@ int cli_header_table(const char *cmd, const char *model, char *buf, size_t size,
         " * range. Firmware takes it from flash instead of building it at init (checks:\n"
         " * the seal, then a few knots against the model):\n",
         everett ? "" : "f0^-1 in ", (unsigned long)intervals,
-        everett ? " per row" : "", (unsigned long)(b32.exact), (double)b32.max_err,
-        (double)b64.max_err);
+        everett ? " per row" : "", (unsigned long)(b32.exact), (double)b32.seal.max_err,
+        (double)b64.seal.max_err);
     if (everett) {
         over |= cli_append(
             buf, size, len,
