@@ -65,6 +65,18 @@ static hyst_wide_t unit_dg(const hyst_curve_poly_t *p, unsigned variant, hyst_wi
     return acc;
 }
 
+/* The sum of G's terms' magnitudes at u in [0, 1]: what G(u)'s rounding,
+ * and a change of its coefficients by rounding, scale with. */
+static hyst_wide_t unit_g_scale(const hyst_curve_poly_t *p, unsigned variant, hyst_wide_t u)
+{
+    hyst_wide_t acc = 0;
+    unsigned i;
+    for (i = 0u; i < p->degree; ++i) {
+        acc = acc * u + hyst_wide_abs(hyst_num_get(&p->a[i], variant));
+    }
+    return acc * u;
+}
+
 /* As solve_g, from a guess u in [a, b]: Newton steps, each narrowing the
  * bracket by the sign of G(u) - e, and a bisection instead of a step that
  * would leave it; stops once a step is at the rounding level. A good guess
@@ -347,7 +359,7 @@ static hyst_status_t table_prepare(hyst_curve_t *out, table_build_t *b, const hy
     memset(b, 0, sizeof *b);
     b->span = span;
     b->e_per_s = 1 / hyst_num_get(&out->unit, variant);
-    b->eps = variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_EPSILON : HYST_WIDE_EPS;
+    b->eps = hyst_real_eps(variant);
     out->u.inv_table.table = table;
     out->u.inv_table.intervals = intervals;
     out->u.inv_table.exact = 0u;
@@ -378,11 +390,14 @@ hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *f
 #define CHECK_KNOTS 7u
 
 /* A table given ready-made, against the model: its shape
- * (hyst_table_shape_ok_()), its end (the drive span),
- * the intervals evaluated exactly (counted as the build counts them), and
- * the drive step at CHECK_KNOTS knots solved again, within rounding (8
- * units of the variant's type, of the span). 0 if it is another model's
- * table. */
+ * (hyst_table_shape_ok_()), its end (the drive span, within 8 units of the
+ * variant's rounding), the intervals evaluated exactly (counted as the
+ * build counts them), and the drive step at CHECK_KNOTS knots: G there
+ * gives the knot's output step back within 8 units of rounding of G's terms
+ * and of the drive step plus the span, and of subnormal numbers (a
+ * residual, not the root solved
+ * again: where the root is ill-conditioned, two solvers stop at different
+ * numbers). 0 if it is another model's table. */
 static int table_matches(table_build_t *b, hyst_cptr_t table, size_t n)
 {
     const unsigned variant = b->c->variant;
@@ -402,14 +417,16 @@ static int table_matches(table_build_t *b, hyst_cptr_t table, size_t n)
         }
     }
     for (j = 1u; j <= CHECK_KNOTS; ++j) {
+        const hyst_curve_poly_t *p = &b->c->u.inv_table.fwd;
         const size_t knot = j * n / (CHECK_KNOTS + 1u);
         const hyst_wide_t c0 = hyst_cptr_get(table, 4u * knot, variant);
-        const hyst_wide_t u =
-            solve_g(&b->c->u.inv_table.fwd, variant, (hyst_wide_t)knot * b->e_per_s, 0, 1);
-        if (c0 >= 0 && !(hyst_wide_abs(c0 - u * b->span) <= tol)) {
-            return 0;
-        }
-        if (!(c0 >= 0 || c0 == -1)) { /* neither a drive step nor the mark */
+        const hyst_wide_t u = c0 / b->span;
+        const hyst_wide_t residual =
+            hyst_wide_abs(unit_g(p, variant, u) - (hyst_wide_t)knot * b->e_per_s);
+        const hyst_wide_t dg = hyst_wide_abs(unit_dg(p, variant, u));
+        if (c0 >= 0 && /* else the mark */
+            !(residual <= 8 * b->eps * (unit_g_scale(p, variant, u) + (u + 1) * dg) +
+                              8 * hyst_real_tiny(variant) * (1 + dg / b->span))) {
             return 0;
         }
     }

@@ -5,7 +5,6 @@
  * branch), for both directions; init measures the blend a branch makes of
  * four rows against the exact inverse. All in hyst_wide_t; the table is
  * stored in the variant's type. */
-#include <float.h>
 #include <string.h>
 
 #include "hyst/curve.h"
@@ -98,6 +97,18 @@ static hyst_wide_t branch_solve(const branch_t *b, hyst_wide_t v, hyst_wide_t gu
         w = next;
     }
     return w;
+}
+
+/* The sum of p's terms' magnitudes at w >= 0: what p(w)'s rounding, and a
+ * change of its coefficients by rounding, scale with. */
+static hyst_wide_t branch_scale(const branch_t *b, hyst_wide_t w)
+{
+    hyst_wide_t q = 0;
+    unsigned i;
+    for (i = 0u; i < b->n; ++i) {
+        q = q * w + hyst_wide_abs(b->q[i]);
+    }
+    return q * w;
 }
 
 /* V(a) = p_a(W(a)) as a polynomial in the anchor (degree n, highest power
@@ -376,7 +387,7 @@ static hyst_status_t prepare(hyst_curve_t *out, build_t *b, const hyst_curve_t *
     b->intervals = intervals;
     b->row_len = HYST_INV_TABLE_LEN(intervals);
     b->span = hyst_num_get(&out->u.everett.span, variant);
-    b->eps = variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_EPSILON : HYST_WIDE_EPS;
+    b->eps = hyst_real_eps(variant);
     return HYST_OK;
 }
 
@@ -416,11 +427,15 @@ hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_cu
 
 /* A direction of a table given ready-made, against the model: in every
  * row, numbers finite and knots rising to the end (the drive steps the
- * build stores: table_shape_ok()); an interval solved instead in one row is
- * so in every row (counted as the build counts them); and each row's drive
- * step at CHECK_KNOTS knots and at the end is the model's, solved again as
- * fill_row() solves it, within rounding (8 units of the variant's type, of
- * the span). 0 if it is another model's table. */
+ * build stores: hyst_table_shape_ok_()); an interval solved instead in one
+ * row is so in every row (counted as the build counts them); each row's
+ * end is the branch's whole drive step (within 8 units of the variant's
+ * rounding, of the span), and the branch at its drive step at CHECK_KNOTS
+ * knots gives the knot's output step back within 8 units of rounding of
+ * its terms and of the drive step plus the width, and of subnormal numbers
+ * (a residual, not the
+ * root solved again: where the root is ill-conditioned, two solvers stop
+ * at different numbers). 0 if it is another model's table. */
 static int direction_matches(build_t *b, int fall)
 {
     const hyst_wide_t tol = 8 * b->eps * b->span;
@@ -459,8 +474,21 @@ static int direction_matches(build_t *b, int fall)
             if (c0 < 0) { /* solved instead: checked above */
                 continue;
             }
-            if (!(hyst_wide_abs(c0 - (empty ? 0 : branch_solve(&br, v, 0) * b->span)) <= tol)) {
-                return 0;
+            if (empty) {
+                if (!(c0 <= tol)) {
+                    return 0;
+                }
+            } else {
+                const hyst_wide_t w = c0 / b->span;
+                hyst_wide_t dp;
+                const hyst_wide_t residual = hyst_wide_abs(branch_p(&br, w, &dp) - v);
+                /* the solver stops within 4 units of the branch's width */
+                const hyst_wide_t tiny = hyst_real_tiny(b->c->variant);
+                if (!(residual <= 8 * b->eps * (branch_scale(&br, w) +
+                                                (w + br.width) * hyst_wide_abs(dp)) +
+                                      8 * tiny * (1 + hyst_wide_abs(dp) / b->span))) {
+                    return 0;
+                }
             }
         }
     }

@@ -12,8 +12,10 @@
 /* Rounding unit of hyst_wide_t. */
 #ifdef HYST_NO_DOUBLE
 #define HYST_WIDE_EPS ((hyst_wide_t)FLT_EPSILON)
+#define HYST_WIDE_MIN ((hyst_wide_t)FLT_MIN)
 #else
 #define HYST_WIDE_EPS ((hyst_wide_t)DBL_EPSILON)
+#define HYST_WIDE_MIN ((hyst_wide_t)DBL_MIN)
 #endif
 
 /* Finite test without libm: NaN fails v == v, +-Inf gives Inf - Inf = NaN. */
@@ -66,6 +68,18 @@ HYST_INLINE hyst_cptr_t hyst_cptr_of(hyst_ptr_t a, unsigned variant)
     (void)variant;
 #endif
     return c;
+}
+
+/* The rounding unit of the real variant `variant`'s type, and its
+ * smallest positive number (subnormal: the absolute rounding near 0). */
+HYST_INLINE hyst_wide_t hyst_real_eps(unsigned variant)
+{
+    return variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_EPSILON : HYST_WIDE_EPS;
+}
+HYST_INLINE hyst_wide_t hyst_real_tiny(unsigned variant)
+{
+    return variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_MIN * (hyst_wide_t)FLT_EPSILON
+                                                 : HYST_WIDE_MIN * HYST_WIDE_EPS;
 }
 
 /* Stores w rounded to the variant's real type; returns 0 if the result is
