@@ -419,14 +419,16 @@ hyst_status_t hyst_curve_table_seal(const hyst_curve_t *inv, hyst_table_seal_t *
  *
  * Checks the seal (the table as stored, its shape, its error:
  * HYST_ERR_CRC when they differ, e.g. a damaged flash image or the wrong
- * rows or intervals), then that the table is this model's: every row's
- * drive step solved again at a few knots (three per row; for a symmetric
- * curve seven) and at its end, within 8 units of rounding of the variant's
- * type (of the drive span), and the intervals evaluated exactly marked
- * alike in every row (HYST_ERR_CURVE otherwise: a table of another model;
+ * rows or intervals), then that the table is this model's: at a few knots
+ * of every row (three per row; for a symmetric curve seven) the model at
+ * the stored drive step gives the knot's output step back within 8 units
+ * of rounding (of its terms, of the drive step and the solver's width), the
+ * row's end is the branch's whole drive step, and the intervals evaluated
+ * exactly are marked alike in every row (HYST_ERR_CURVE otherwise: a table
+ * of another model;
  * the table is in output steps relative to a branch's whole step, so the
  * model times a constant has the same table, and is accepted). The cost: the
- * checksum (one pass over the table), the shape and those solves, on a
+ * checksum (one pass over the table), the shape and those evaluations, on a
  * Cortex-M4F 3.2 million instructions against 145 million for the
  * asymmetric compensator's default table (docs/pi_and_inverse.md). The
  * table must hold the counts' numbers
