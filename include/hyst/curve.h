@@ -429,7 +429,7 @@ hyst_status_t hyst_curve_table_seal(const hyst_curve_t *inv, hyst_table_seal_t *
  * the table is in output steps relative to a branch's whole step, so the
  * model times a constant has the same table, and is accepted). The cost: the
  * checksum (one pass over the table), the shape and those evaluations, on a
- * Cortex-M4F 3.2 million instructions against 145 million for the
+ * Cortex-M4F 1.45 million instructions against 145 million for the
  * asymmetric compensator's default table (docs/pi_and_inverse.md). The
  * table must hold the counts' numbers
  * (HYST_INV_TABLE_LEN(@p intervals), HYST_EVERETT_INV_TABLE_LEN(@p rows,
