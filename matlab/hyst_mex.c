@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * hyst_mex: the MEX gateway of the MATLAB/Octave wrappers (hyst_fit.m,
- * hyst_sim.m, hyst_inv.m): one entry point dispatching on a command string,
- * every number computed by the library's C code (docs/matlab.md).
+ * hyst_sim.m, hyst_inv.m, hyst_header.m): one entry point dispatching on a
+ * command string, every number computed by the library's C code
+ * (docs/matlab.md).
  *
  *   v = hyst_mex('version')                      HYST_VERSION_STRING
  *   s = hyst_mex('status_str', code)             hyst_status_str(code)
@@ -11,6 +12,9 @@
  *   [y, st, ntp] = hyst_mex('sim_everett', degree, lo, hi, y_lo, terms, x, capacity, deadband)
  *   [x, st, ntp, err] = hyst_mex('inv_everett', degree, lo, hi, y_lo, terms, y, capacity,
  *                                deadband, intervals, rows)
+ *   [t, crc, max_err, exact, err] = hyst_mex('inv_table', coeffs, lo, hi, intervals, class)
+ *   [t, crc, max_err, exact, err] = hyst_mex('inv_table_everett', degree, lo, hi, y_lo, terms,
+ *                                            intervals, rows, class)
  *   c = hyst_mex('config')                       the compensators' default table sizes
  *   f = hyst_mex('fit', x, y, degree, method, lo, hi, skip, delay)
  *   f = hyst_mex('fit_everett', x, y, degree, lo, hi, skip, delay)
@@ -27,9 +31,21 @@
  * (hyst_*_init_inverse_table). err, of inv and inv_everett: the tabulated
  * compensator's worst error measured by its init, of the drive range
  * (hyst_curve_inverse_error(); 0 for an exact or solved one).
+ * inv_table and inv_table_everett build the tabulated compensator alone, as
+ * `hyst header --compensator` does for hyst_header.m: hyst_*_curve_from_poly()
+ * then hyst_*_curve_inverse_table() (HYST_INV_TABLE_LEN(intervals) numbers),
+ * or hyst_*_curve_from_everett() then hyst_*_curve_everett_inverse_table()
+ * (HYST_EVERETT_INV_TABLE_LEN(rows, intervals)); intervals 1..2^20 and rows
+ * 3..4096 are checked before anything is allocated. class 'double' builds
+ * it in f64, 'single' in f32 from the model's numbers as a float build
+ * reads their 17-digit literals (strtof). t: the table, a column of that
+ * class; crc, max_err: its seal (hyst_curve_table_seal(); the error
+ * rounded up to a float); exact: the intervals solved per sample instead;
+ * err: hyst_curve_inverse_error().
  * config: a struct of HYST_INV_TABLE (inv_table), HYST_EVERETT_INV_ROWS
- * (everett_inv_rows), HYST_EVERETT_INV_INTERVALS (everett_inv_intervals)
- * and HYST_INV_TABLE_TOL (inv_table_tol), as this MEX file was built.
+ * (everett_inv_rows), HYST_EVERETT_INV_INTERVALS (everett_inv_intervals),
+ * HYST_INV_TABLE_TOL (inv_table_tol) and HYST_MAX_DEGREE (max_degree), as
+ * this MEX file was built.
  * sim/inv and both *_everett: x of class double runs hyst_f64_*, single runs hyst_f32_*; the
  * result has the class and the shape of x; st is the status of the block
  * call (0, or a warning: 1 clamped, 2 memory full; a non-finite sample gives
@@ -44,6 +60,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "mex.h"
@@ -248,6 +265,27 @@ DEFINE_INIT(f64, double)
 DEFINE_INIT(f32, float)
 #undef DEFINE_INIT
 
+/* build_f64, build_f32: the tabulated compensator of m alone, in variant P
+ * of number type T, as `hyst header --compensator` builds it:
+ * hyst_*_curve_from_poly() (or _from_everett()) into fwd, then
+ * hyst_*_curve_inverse_table() (or _everett_inverse_table()) into inv with
+ * table, table_len(m) numbers. */
+#define DEFINE_BUILD(P, T)                                                                  \
+    static int build_##P(hyst_curve_t *fwd, hyst_curve_t *inv, const model_arg_t *m, T *table) \
+    {                                                                                       \
+        const int st = m->everett ? hyst_##P##_curve_from_everett(fwd, &m->e)               \
+                                  : hyst_##P##_curve_from_poly(fwd, &m->f0);                \
+        if (st != HYST_OK) {                                                                \
+            return st;                                                                      \
+        }                                                                                   \
+        return m->everett ? hyst_##P##_curve_everett_inverse_table(inv, fwd, table, m->rows, \
+                                                                   m->intervals)            \
+                          : hyst_##P##_curve_inverse_table(inv, fwd, table, m->intervals);  \
+    }
+DEFINE_BUILD(f64, double)
+DEFINE_BUILD(f32, float)
+#undef DEFINE_BUILD
+
 /* Runs model m over x: prhs = x, capacity, deadband. */
 static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArray *prhs[])
 {
@@ -352,22 +390,120 @@ static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const 
     run_tcm(&m, nlhs, plhs, prhs + 5);
 }
 
+/* v as a float build reads the header's literal of it (17 digits; HYST_REAL_C(lit)
+ * is lit##f, converted directly to float), as a double. */
+static double as_float_literal(double v)
+{
+    char lit[40];
+    (void)snprintf(lit, sizeof lit, "%.17g", v);
+    return (double)strtof(lit, NULL);
+}
+
+/* m's numbers as a float build of its header has them. */
+static void round_to_float(model_arg_t *m)
+{
+    size_t i, j;
+    m->f0.lo = as_float_literal(m->f0.lo);
+    m->f0.hi = as_float_literal(m->f0.hi);
+    for (i = 0u; i <= HYST_MAX_DEGREE; ++i) {
+        m->f0.coeffs[i] = as_float_literal(m->f0.coeffs[i]);
+    }
+    m->e.lo = as_float_literal(m->e.lo);
+    m->e.hi = as_float_literal(m->e.hi);
+    m->e.y_lo = as_float_literal(m->e.y_lo);
+    for (i = 0u; i < HYST_EVERETT_MAX_DEGREE; ++i) {
+        for (j = 0u; j < HYST_EVERETT_MAX_DEGREE; ++j) {
+            m->e.e[i][j] = as_float_literal(m->e.e[i][j]);
+        }
+    }
+}
+
+/* inv_table (prhs = coeffs, lo, hi, intervals, class) or inv_table_everett
+ * (prhs = degree, lo, hi, y_lo, terms, intervals, rows, class): the
+ * compensator's table built and sealed in the variant of the class name
+ * ('double': f64; 'single': f32, the model's numbers first read as float
+ * literals); plhs = table (a column of that class), crc, max_err (the
+ * seal's), exact, inv_err. */
+static void run_table(int everett, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const size_t at = everett ? 5u : 3u; /* intervals, then (rows and) the class */
+    char name[8];
+    model_arg_t m;
+    hyst_curve_t fwd, inv;
+    hyst_table_seal_t seal;
+    mxArray *t;
+    int f32, st;
+    if (nrhs != (everett ? 8 : 5)) {
+        usage(everett ? "inv_table_everett takes degree, lo, hi, y_lo, terms, intervals, rows, "
+                        "class"
+                      : "inv_table takes coeffs, lo, hi, intervals, class");
+    }
+    memset(&m, 0, sizeof m);
+    m.inverse = 1;
+    m.everett = everett;
+    m.intervals = count(prhs[at], "intervals", 1.0, INTERVALS_MAX); /* before allocating */
+    if (everett) {
+        m.rows = count(prhs[at + 1u], "rows", ROWS_MIN, ROWS_MAX);
+        m.e = everett_arg(prhs, "hyst_header");
+    } else {
+        m.f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
+    }
+    if (!mxIsChar(prhs[nrhs - 1]) || mxGetString(prhs[nrhs - 1], name, sizeof name) != 0 ||
+        (strcmp(name, "double") != 0 && strcmp(name, "single") != 0)) {
+        usage("the table's class must be 'double' or 'single'");
+    }
+    f32 = name[0] == 's';
+    if (table_numbers(&m) * (f32 ? (double)sizeof(float) : (double)sizeof(double)) >
+        (double)(size_t)-1) {
+        usage("the table exceeds the address space");
+    }
+    if (f32) {
+        round_to_float(&m);
+    }
+    t = mxCreateNumericMatrix((mwSize)table_len(&m), 1, f32 ? mxSINGLE_CLASS : mxDOUBLE_CLASS,
+                              mxREAL);
+    st = f32 ? build_f32(&fwd, &inv, &m, (float *)mxGetData(t))
+             : build_f64(&fwd, &inv, &m, (double *)mxGetData(t));
+    if (st == HYST_OK) {
+        st = hyst_curve_table_seal(&inv, &seal);
+    }
+    if (st != HYST_OK) {
+        mxDestroyArray(t);
+        fail_status("hyst_header", st);
+    }
+    plhs[0] = t;
+    if (nlhs > 1) {
+        plhs[1] = mxCreateDoubleScalar((double)(seal.crc & 0xFFFFFFFFul));
+    }
+    if (nlhs > 2) {
+        plhs[2] = mxCreateDoubleScalar((double)seal.max_err);
+    }
+    if (nlhs > 3) {
+        plhs[3] = mxCreateDoubleScalar(
+            (double)(everett ? inv.u.everett.exact : inv.u.inv_table.exact));
+    }
+    if (nlhs > 4) {
+        plhs[4] = mxCreateDoubleScalar((double)hyst_curve_inverse_error(&inv));
+    }
+}
+
 static void set_field(mxArray *s, const char *name, mxArray *v)
 {
     mxSetField(s, 0, name, v);
 }
 
-/* config: the default table sizes of the compensators, as built. */
+/* config: the default table sizes of the compensators and f0's highest degree, as built. */
 static void run_config(mxArray *plhs[])
 {
     static const char *fields[] = {"inv_table", "everett_inv_rows", "everett_inv_intervals",
-                                   "inv_table_tol"};
+                                   "inv_table_tol", "max_degree"};
     mxArray *s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
     set_field(s, "inv_table", mxCreateDoubleScalar((double)HYST_INV_TABLE));
     set_field(s, "everett_inv_rows", mxCreateDoubleScalar((double)HYST_EVERETT_INV_ROWS));
     set_field(s, "everett_inv_intervals",
               mxCreateDoubleScalar((double)HYST_EVERETT_INV_INTERVALS));
     set_field(s, "inv_table_tol", mxCreateDoubleScalar((double)HYST_INV_TABLE_TOL));
+    set_field(s, "max_degree", mxCreateDoubleScalar((double)HYST_MAX_DEGREE));
     plhs[0] = s;
 }
 
@@ -513,7 +649,7 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
     char cmd[24];
     if (nrhs < 1 || !mxIsChar(prhs[0]) || mxGetString(prhs[0], cmd, sizeof cmd) != 0) {
         usage("the first argument is a command: version, status_str, config, sim, inv, "
-              "sim_everett, inv_everett, fit or fit_everett");
+              "sim_everett, inv_everett, inv_table, inv_table_everett, fit or fit_everett");
     }
     if (strcmp(cmd, "version") == 0) {
         plhs[0] = mxCreateString(HYST_VERSION_STRING);
@@ -528,6 +664,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_poly(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "sim_everett") == 0 || strcmp(cmd, "inv_everett") == 0) {
         run_everett(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "inv_table") == 0 || strcmp(cmd, "inv_table_everett") == 0) {
+        run_table(cmd[9] == '_', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "config") == 0 && nrhs == 1) {
         run_config(plhs);
     } else if (strcmp(cmd, "fit") == 0) {
@@ -536,6 +674,6 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_fit_everett(plhs, nrhs - 1, prhs + 1);
     } else {
         usage("unknown command (version, status_str, config, sim, inv, sim_everett, inv_everett, "
-              "fit, fit_everett)");
+              "inv_table, inv_table_everett, fit, fit_everett)");
     }
 }

@@ -21,17 +21,7 @@ function hyst_model_save(file, model)
   if ~ischar(file)
     error('hyst:usage', 'hyst_model_save: FILE is a file name');
   end
-  if strcmp(p.kind, 'everett')
-    numbers = [p.terms p.y_lo];
-    if ~isscalar(p.degree) || ~any(p.degree == 1:4) || numel(p.terms) ~= p.degree * (p.degree + 1) / 2
-      error('hyst:usage', 'hyst_model_save: degree is 1..4 and terms has degree (degree + 1) / 2 numbers');
-    end
-  else
-    numbers = p.coeffs;
-  end
-  if isempty(numbers) || ~isscalar(p.lo) || ~isscalar(p.hi) || ~all(isfinite([numbers p.lo p.hi]))
-    error('hyst:usage', 'hyst_model_save: the model''s numbers must be finite, lo and hi scalars');
-  end
+  hyst_model_check(p, 'hyst_model_save');
   [fid, msg] = fopen(file, 'w');
   if fid < 0
     error('hyst:model_file', 'hyst_model_save: %s: %s', file, msg);
@@ -47,8 +37,8 @@ function hyst_model_save(file, model)
   if strcmp(p.kind, 'everett')
     fprintf(fid, 'y_lo %.17g\n', p.y_lo);
   end
-  if isfield(model, 'delay') && model.delay ~= 0
-    fprintf(fid, 'delay %d\n', model.delay);
+  if p.delay ~= 0
+    fprintf(fid, 'delay %d\n', p.delay);
   end
   if strcmp(p.kind, 'everett')
     fprintf(fid, 'degree %d\nterms', p.degree);

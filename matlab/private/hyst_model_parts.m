@@ -3,7 +3,10 @@ function p = hyst_model_parts(model, caller)
 % HYST_MODEL_PARTS  The parts of a model struct (what hyst_fit and
 % hyst_model_load return), as doubles: P.kind 'poly' with P.coeffs (a row,
 % highest power first), P.lo, P.hi; or P.kind 'everett' (MODEL.kind is
-% 'everett') with P.degree, P.lo, P.hi, P.y_lo, P.terms (a row).
+% 'everett') with P.degree, P.lo, P.hi, P.y_lo, P.terms (a row). P.delay:
+% MODEL.delay, 0 without one (the sensor's delay in samples: not part of the
+% model, kept in its file and stated in its header). Not checked here:
+% HYST_MODEL_CHECK, or the library.
   if isstruct(model) && isfield(model, 'kind') && strcmp(model.kind, 'everett')
     if ~all(isfield(model, {'degree', 'lo', 'hi', 'y_lo', 'terms'}))
       error('hyst:usage', '%s: an everett model is a struct with fields kind, degree, lo, hi, y_lo, terms', ...
@@ -11,13 +14,17 @@ function p = hyst_model_parts(model, caller)
     end
     p = struct('kind', 'everett', 'degree', double(model.degree), 'lo', double(model.lo), ...
                'hi', double(model.hi), 'y_lo', double(model.y_lo), 'terms', double(model.terms(:)'));
-    return;
+  else
+    if ~isstruct(model) || ~all(isfield(model, {'coeffs', 'lo', 'hi'})) || ...
+       (isfield(model, 'kind') && ~strcmp(model.kind, 'poly'))
+      error('hyst:usage', '%s: the model is a struct with fields coeffs, lo, hi (or kind ''everett'', degree, lo, hi, y_lo, terms)', ...
+            caller);
+    end
+    p = struct('kind', 'poly', 'coeffs', double(model.coeffs(:)'), 'lo', double(model.lo), ...
+               'hi', double(model.hi));
   end
-  if ~isstruct(model) || ~all(isfield(model, {'coeffs', 'lo', 'hi'})) || ...
-     (isfield(model, 'kind') && ~strcmp(model.kind, 'poly'))
-    error('hyst:usage', '%s: the model is a struct with fields coeffs, lo, hi (or kind ''everett'', degree, lo, hi, y_lo, terms)', ...
-          caller);
+  p.delay = 0;
+  if isfield(model, 'delay')
+    p.delay = double(model.delay);
   end
-  p = struct('kind', 'poly', 'coeffs', double(model.coeffs(:)'), 'lo', double(model.lo), ...
-             'hi', double(model.hi));
 end

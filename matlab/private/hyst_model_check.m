@@ -1,0 +1,24 @@
+% SPDX-License-Identifier: MIT
+function hyst_model_check(p, caller)
+% HYST_MODEL_CHECK  The parts P of a model (HYST_MODEL_PARTS) as a model
+% file and a header hold them: finite numbers, lo and hi scalars, for the
+% asymmetric kind a degree 1..4 and degree (degree + 1) / 2 terms, a delay
+% of whole samples. Another model raises hyst:usage. The curve itself
+% (increasing, monotone) is the library's to check.
+  if strcmp(p.kind, 'everett')
+    numbers = [p.terms p.y_lo];
+    if ~isscalar(p.degree) || ~any(p.degree == 1:4) || ...
+       numel(p.terms) ~= p.degree * (p.degree + 1) / 2
+      error('hyst:usage', '%s: degree is 1..4 and terms has degree (degree + 1) / 2 numbers', ...
+            caller);
+    end
+  else
+    numbers = p.coeffs;
+  end
+  if isempty(numbers) || ~isscalar(p.lo) || ~isscalar(p.hi) || ~all(isfinite([numbers p.lo p.hi]))
+    error('hyst:usage', '%s: the model''s numbers must be finite, lo and hi scalars', caller);
+  end
+  if ~hyst_is_whole(p.delay) || p.delay < 0
+    error('hyst:usage', '%s: delay must be a whole number of samples', caller);
+  end
+end
