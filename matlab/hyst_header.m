@@ -66,7 +66,7 @@ function text = hyst_header(model, name, varargin)
                                     guard, guard), ...
           declaration(p, name), table, sprintf('\n#endif /* %s */\n', guard)];
   if ~isempty(opts.file)
-    write_whole(opts.file, text, caller);
+    hyst_write_whole(opts.file, text, caller);
   end
 end
 
@@ -200,33 +200,4 @@ function t = c_numbers(v, digits)
 % with a '.' or an exponent (the host tool's cli_c_number()): a cell row.
   t = strsplit(sprintf(sprintf('%%.%dg\n', digits), v), sprintf('\n'));
   t = regexprep(t(1:end - 1), '^(-?[0-9]+)$', '$1.0');
-end
-
-function write_whole(file, text, caller)
-% TEXT into FILE whole or not at all: a temporary file in FILE's directory,
-% renamed to FILE once written and closed; removed on failure.
-  folder = fileparts(file);
-  if isempty(folder)
-    folder = '.';
-  end
-  tmp = tempname(folder);
-  [fid, msg] = fopen(tmp, 'w');
-  if fid < 0
-    error('hyst:model_file', '%s: %s: %s', caller, file, msg);
-  end
-  written = fwrite(fid, text, 'char');
-  if fclose(fid) ~= 0 || written ~= numel(text)
-    delete(tmp);
-    error('hyst:model_file', '%s: %s: cannot write', caller, file);
-  end
-  if exist('OCTAVE_VERSION', 'builtin')
-    [status, msg] = rename(tmp, file);
-    ok = status == 0;
-  else
-    [ok, msg] = movefile(tmp, file, 'f');
-  end
-  if ~ok
-    delete(tmp);
-    error('hyst:model_file', '%s: %s: %s', caller, file, msg);
-  end
 end

@@ -15,40 +15,33 @@ function hyst_model_save(file, model)
 %   A model of kind 'everett' (HYST_SIM) is written with the keys kind
 %   everett, lo, hi, y_lo, delay (when not 0), degree and terms.
 %   Numbers are written with 17 significant digits, so HYST_MODEL_LOAD gives
-%   the same doubles back. The file is not checked against the library:
+%   the same doubles back. The file is written whole or not at all (a
+%   temporary file beside FILE, renamed to it; on failure removed and an
+%   error hyst:model_file raised). The file is not checked against the library:
 %   HYST_SIM does that.
   p = hyst_model_parts(model, 'hyst_model_save');
   if ~ischar(file)
     error('hyst:usage', 'hyst_model_save: FILE is a file name');
   end
   hyst_model_check(p, 'hyst_model_save');
-  [fid, msg] = fopen(file, 'w');
-  if fid < 0
-    error('hyst:model_file', 'hyst_model_save: %s: %s', file, msg);
-  end
-  fprintf(fid, 'hyst-model-text 1\n');
   if strcmp(p.kind, 'everett')
-    fprintf(fid, '# hyst model: asymmetric, branch function E on [lo, hi], terms e[i-1][j] of w^i t^j for i = 1..degree, j = 0..degree-i (docs/matlab.md)\n');
+    about = ['# hyst model: asymmetric, branch function E on [lo, hi], terms e[i-1][j] of ' ...
+             'w^i t^j for i = 1..degree, j = 0..degree-i (docs/matlab.md)\n'];
   else
-    fprintf(fid, '# hyst model: f0 on [lo, hi], coefficients highest power first (docs/matlab.md)\n');
+    about = '# hyst model: f0 on [lo, hi], coefficients highest power first (docs/matlab.md)\n';
   end
-  fprintf(fid, 'kind %s\n', p.kind);
-  fprintf(fid, 'lo %.17g\nhi %.17g\n', p.lo, p.hi);
+  text = [sprintf(['hyst-model-text 1\n' about 'kind %s\n'], p.kind), ...
+          sprintf('lo %.17g\nhi %.17g\n', p.lo, p.hi)];
   if strcmp(p.kind, 'everett')
-    fprintf(fid, 'y_lo %.17g\n', p.y_lo);
+    text = [text, sprintf('y_lo %.17g\n', p.y_lo)];
   end
   if p.delay ~= 0
-    fprintf(fid, 'delay %d\n', p.delay);
+    text = [text, sprintf('delay %d\n', p.delay)];
   end
   if strcmp(p.kind, 'everett')
-    fprintf(fid, 'degree %d\nterms', p.degree);
-    fprintf(fid, ' %.17g', p.terms);
+    text = [text, sprintf('degree %d\nterms', p.degree), sprintf(' %.17g', p.terms)];
   else
-    fprintf(fid, 'coeffs');
-    fprintf(fid, ' %.17g', p.coeffs);
+    text = [text, 'coeffs', sprintf(' %.17g', p.coeffs)];
   end
-  fprintf(fid, '\n');
-  if fclose(fid) ~= 0
-    error('hyst:model_file', 'hyst_model_save: %s: cannot write', file);
-  end
+  hyst_write_whole(file, [text sprintf('\n')], 'hyst_model_save');
 end

@@ -312,6 +312,18 @@ function t_save_load_roundtrip(ctx)
   check(isequal(hyst_sim(m, d(:, 1)), hyst_sim(f, d(:, 1))), 'simulations differ');
   text = fileread(file);
   check(strncmp(text, sprintf('hyst-model-text 1\n'), 18), 'first line: %s', text);
+  % written whole or not at all: a failed save leaves the old file and no other
+  before = dir(ctx.tmp);
+  missing = fullfile(ctx.tmp, 'no_such_dir', 'model.txt');
+  expect_error('hyst:model_file', @() hyst_model_save(missing, f));
+  check(~exist(fileparts(missing), 'dir'), 'the directory was made');
+  folder = fullfile(ctx.tmp, 'a_dir.txt');
+  mkdir(folder);
+  expect_error('hyst:model_file', @() hyst_model_save(folder, f));
+  check(exist(folder, 'dir') == 7, 'the directory is gone');
+  rmdir(folder);
+  check(isequal(sort({dir(ctx.tmp).name}), sort({before.name})), 'a file was left behind');
+  check(strcmp(fileread(file), text), 'the saved file changed');
 end
 
 function t_load_rejects(ctx)
