@@ -333,8 +333,9 @@ HYST_INLINE void TCM_NAME(achieved_top)(hyst_tcm_t *S)
 HYST_INLINE void TCM_NAME(achieved_top)(hyst_tcm_t *S) { (void)S; }
 #endif
 
-/* S's table_rows, table_intervals, v_least: derive_blend()'s constants. */
-static void TCM_NAME(blend_dims)(hyst_tcm_t *S, const hyst_curve_t *curve)
+/* S's table_rows, table_intervals, v_least: derive_blend()'s constants
+ * (out of line: init() stays small enough to stay out of line itself). */
+static TCM_NOINLINE void TCM_NAME(blend_dims)(hyst_tcm_t *S, const hyst_curve_t *curve)
 {
     const int blended = curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE;
     const TCM_Y n = blended ? (TCM_Y)curve->u.everett.intervals : 0;
@@ -411,6 +412,8 @@ static TCM_NOINLINE TCM_Y TCM_NAME(g)(const hyst_tcm_t *S, TCM_Y d)
 #define TCM_ROSE 2
 #define TCM_FELL 3
 #define TCM_REPEAT 4
+/* Not a sample: derive_emit_blended() derives the branch alone (derive()). */
+#define TCM_BRANCH_ONLY 0
 
 /* y_ctp +- g on the current branch: + rising, - falling. Adding g or
  * subtracting it rounds like y_ctp + sign g with sign = +-1. */
@@ -612,12 +615,19 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const i
 
 /* A slow sample of the tabulated asymmetric compensator that starts a
  * branch: derive_blend(), then the sample, in one frame (the weights and
- * the rows' address stay in registers). */
+ * the rows' address stay in registers); how TCM_BRANCH_ONLY: the branch
+ * alone (derive(): one copy of derive_blend() in the library). */
 static TCM_NOINLINE TCM_Y TCM_NAME(derive_emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
 {
     TCM_NAME(derive_blend)(S);
+    if (how == TCM_BRANCH_ONLY) {
+        return 0;
+    }
     return TCM_NAME(blended_sample)(S, x, how);
 }
+#define TCM_DERIVE_BLEND(S) ((void)TCM_NAME(derive_emit_blended)((S), 0, TCM_BRANCH_ONLY))
+#else
+#define TCM_DERIVE_BLEND(S) TCM_NAME(derive_blend)(S)
 #endif
 
 /* What a slow sample's emit() derives first (a constant per call site):
@@ -841,7 +851,7 @@ static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S)
 {
     const hyst_curve_t *c = S->curve;
     if (S->degree == HYST_HORNER_BLEND_) {
-        TCM_NAME(derive_blend)(S);
+        TCM_DERIVE_BLEND(S);
     } else if (S->degree == HYST_HORNER_SOLVE_) {
         TCM_NAME(newton_state)(S, S->coef, &YV(S->curv), &YV(S->w_end), &YV(S->secant));
     } else {
