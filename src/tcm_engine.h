@@ -412,8 +412,6 @@ static TCM_NOINLINE TCM_Y TCM_NAME(g)(const hyst_tcm_t *S, TCM_Y d)
 #define TCM_ROSE 2
 #define TCM_FELL 3
 #define TCM_REPEAT 4
-/* Not a sample: derive_emit_blended() derives the branch alone (derive()). */
-#define TCM_BRANCH_ONLY 0
 
 /* y_ctp +- g on the current branch: + rising, - falling. Adding g or
  * subtracting it rounds like y_ctp + sign g with sign = +-1. */
@@ -581,6 +579,20 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const in
  * the interval is blended first (the last one, N, past the branch's end by
  * rounding). Ends as emit() does, with the numbers blend_g() gives. */
 #ifndef NUM_FIXED
+/* blended_sample()'s end in an interval every row marks solved: G from
+ * blend_g() (which solves it), guarded as emit() guards it. emit_rare()'s
+ * numbers without its serve(): no request is pending where a blended sample
+ * runs (S->horner is the blend's), and the way back through serve() to
+ * derive() would make the call graph a cycle (bench/analyse.py bounds the
+ * stack). */
+static TCM_NOINLINE TCM_Y TCM_NAME(blended_solved)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    const TCM_Y g = TCM_NAME(branch_g)(S, x);
+    const TCM_Y y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
+    YV(S->y_prev) = y;
+    return y;
+}
+
 HYST_INLINE TCM_Y TCM_NAME(blended_sample)(hyst_tcm_t *S, TCM_X x, const int how)
 {
     const unsigned long n = (unsigned long)S->curve->u.everett.intervals;
@@ -602,7 +614,7 @@ HYST_INLINE TCM_Y TCM_NAME(blended_sample)(hyst_tcm_t *S, TCM_X x, const int how
         g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
     }
     if (g < 0) { /* a solved interval */
-        return TCM_NAME(emit_rare)(S, x, how);
+        return TCM_NAME(blended_solved)(S, x, how);
     }
     y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
     YV(S->y_prev) = y;
@@ -615,19 +627,16 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const i
 
 /* A slow sample of the tabulated asymmetric compensator that starts a
  * branch: derive_blend(), then the sample, in one frame (the weights and
- * the rows' address stay in registers); how TCM_BRANCH_ONLY: the branch
- * alone (derive(): one copy of derive_blend() in the library). */
+ * the rows' address stay in registers). derive() keeps its own copy of
+ * derive_blend() for the rare paths: calling this frame instead would save
+ * about 1 KB of flash per variant, but cost the sample 6 instructions and
+ * put serve()'s path on top of this one in the static call graph (the
+ * stack bound, bench/analyse.py). */
 static TCM_NOINLINE TCM_Y TCM_NAME(derive_emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
 {
     TCM_NAME(derive_blend)(S);
-    if (how == TCM_BRANCH_ONLY) {
-        return 0;
-    }
     return TCM_NAME(blended_sample)(S, x, how);
 }
-#define TCM_DERIVE_BLEND(S) ((void)TCM_NAME(derive_emit_blended)((S), 0, TCM_BRANCH_ONLY))
-#else
-#define TCM_DERIVE_BLEND(S) TCM_NAME(derive_blend)(S)
 #endif
 
 /* What a slow sample's emit() derives first (a constant per call site):
@@ -851,7 +860,7 @@ static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S)
 {
     const hyst_curve_t *c = S->curve;
     if (S->degree == HYST_HORNER_BLEND_) {
-        TCM_DERIVE_BLEND(S);
+        TCM_NAME(derive_blend)(S);
     } else if (S->degree == HYST_HORNER_SOLVE_) {
         TCM_NAME(newton_state)(S, S->coef, &YV(S->curv), &YV(S->w_end), &YV(S->secant));
     } else {
