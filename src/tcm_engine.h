@@ -120,7 +120,10 @@
  * its error, curv s^2 / (2 (p'(w) - 2 curv s)) with curv >= |p''| on the
  * branch, is at most tol: one evaluation for a sample that moves a little
  * along its branch. Also once s <= tol (s then estimates the error, or
- * bounds it where Newton converges fast) or the bracket is that narrow. */
+ * bounds it where Newton converges fast) or the bracket is that narrow, and
+ * at once on an exact root: at a branch's start p'(0) = 0 (and p''(0) may
+ * be 0 too), where Newton's iteration only creeps towards the root and the
+ * evaluations would run out far from it. */
 HYST_INLINE TCM_Y TCM_NAME(solve_with)(const hyst_curve_t *c, const hyst_num_t *coef, TCM_Y curv,
                                        TCM_Y w_end, TCM_Y v, TCM_Y w)
 {
@@ -141,6 +144,9 @@ HYST_INLINE TCM_Y TCM_NAME(solve_with)(const hyst_curve_t *c, const hyst_num_t *
         step = f / dp;
         next = w - step;
         if (!(next >= a && next <= b)) { /* NaN too */
+            if (f == 0) { /* w is the root; p'(w) = 0 there (a branch's start) */
+                break;
+            }
             next = a + (b - a) * NUM_C(0.5);
             if (!(b - a > tol)) {
                 w = next;

@@ -182,6 +182,56 @@ static void test_inverse_of_inverse_and_bad_input(void)
     TEST_ASSERT_EQUAL_MEMORY(&CURVE_NUM(inv.y_hi), &x, sizeof x); /* nothing lost */
 }
 
+/* A branch that starts flat to second order: E(a, lo) = 1.25 w^3 + 2.5 w^4,
+ * so the rising branch from the domain's lower end is p(w) ~ w^3 there and
+ * Newton's iteration only creeps towards its start (a ratio of 2/3 per
+ * evaluation). Desired outputs (the model's own, so each is reachable) that
+ * come back to the branch's start exactly, y_lo, then leave it by a little:
+ * the drive is the domain's end exactly there, agrees with the exact
+ * inverse elsewhere, and the model driven by it gives the outputs back. */
+static void test_flat_branch_start(void)
+{
+    /* steps of 1/255 of the domain; 0 twice: the same desired output again */
+    static const unsigned char steps[] = {160u, 100u, 128u, 19u, 0u, 0u, 1u, 16u, 192u, 0u, 3u, 0u};
+    hyst_everett_t e;
+    hyst_real_t want[sizeof steps];
+    size_t k;
+    memset(&e, 0, sizeof e);
+    e.degree = 4u;
+    e.lo = 0.0;
+    e.hi = 0.25;
+    e.y_lo = -4.0;
+    e.e[0][2] = 0.03125;
+    e.e[0][3] = 1.0;
+    e.e[1][1] = 0.25;
+    e.e[2][0] = 1.25;
+    e.e[2][1] = -1.75;
+    e.e[3][0] = 2.5;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&fwd, &e));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&inv, &fwd));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &fwd, xl3, yl3, xr3, yr3, CAP));
+    for (k = 0u; k < sizeof steps; ++k) {
+        want[k] = hyst_step(&T, (hyst_real_t)(e.hi * (double)steps[k] / 255.0));
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&C, &inv, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&M, &fwd, xl2, yl2, xr2, yr2, CAP));
+    ref_everett_init(&ref, &e);
+    for (k = 0u; k < sizeof steps; ++k) {
+        const hyst_real_t x = hyst_step(&C, want[k]);
+        const double exact = exact_drive(&ref, (double)want[k]);
+        const double out =
+            fabs((double)hyst_step(&M, x) - (double)want[k]) / ref_everett_e(&e, e.hi, e.lo);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&C));
+        if (fabs((double)x - exact) / e.hi > DRIVE_AGREE || out > 10.0 * DRIVE_AGREE ||
+            (want[k] == (hyst_real_t)e.y_lo && x != (hyst_real_t)e.lo)) {
+            TEST_PRINTF("sample %u: desired %g, drive %g, exact %g, output off by %g of the range",
+                        (unsigned)k, (double)want[k], (double)x, exact, out);
+            TEST_FAIL();
+        }
+        (void)ref_everett_step(&ref, exact);
+    }
+}
+
 #ifndef HYST_USE_DOUBLE
 /* Desired outputs as integer codes 0..4095 over the major loop's range
  * (the code variant): the model driven by the compensator gives each
@@ -218,6 +268,7 @@ int main(void)
     RUN_TEST(test_drive_is_monotone);
     RUN_TEST(test_block_and_snapshots);
     RUN_TEST(test_inverse_of_inverse_and_bad_input);
+    RUN_TEST(test_flat_branch_start);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_codes_drive_the_asymmetric_compensator);
 #endif
