@@ -41,11 +41,11 @@ static int hyst_code_admit(hyst_tcm_t *S, uint_least32_t code, hyst_code_word_t 
 #include "tcm_engine.h"
 
 /* Checked set-up of an instance whose memory and curve were checked: the
- * code range (HYST_ERR_DOMAIN) and the unit of G, then attach. */
-static hyst_status_t hyst_code_attach_range(hyst_tcm_t *S, const hyst_curve_t *curve,
-                                            uint_least32_t code_lo, uint_least32_t code_hi,
-                                            hyst_code_word_t *xltp, float *yltp,
-                                            hyst_code_word_t *xrtp, float *yrtp, size_t capacity)
+ * code range (HYST_ERR_DOMAIN) and the unit of G, then attach. Out of line:
+ * both inits call it, and one copy of attach() is enough flash. */
+static TCM_NOINLINE hyst_status_t hyst_code_attach_range(
+    hyst_tcm_t *S, const hyst_curve_t *curve, uint_least32_t code_lo, uint_least32_t code_hi,
+    hyst_code_word_t *xltp, float *yltp, hyst_code_word_t *xrtp, float *yrtp, size_t capacity)
 {
     hyst_wide_t unit;
     if (!(code_lo < code_hi) || code_hi > HYST_CODE_MAX) {

@@ -198,23 +198,31 @@ HYST_INLINE TCM_Y TCM_NAME(drive_anchor)(const hyst_tcm_t *S, TCM_Y y)
  * derive_blend() on the branch's slow sample). S->coef holds the blend of
  * interval S->cached_k: a sample in it costs one cubic. */
 
-/* Interval k's coefficients blended from the branch's rows, into c. */
-HYST_INLINE void TCM_NAME(blend_coefs)(const hyst_tcm_t *S, unsigned long k, hyst_num_t *c)
+/* Interval k's coefficients blended from the branch's rows, into v (locals:
+ * in registers, where S->coef would be stored and read back, the compiler
+ * assuming that the table's reads alias it). */
+HYST_INLINE void TCM_NAME(blend_coefs)(const hyst_tcm_t *S, unsigned long k, TCM_Y *v)
 {
     const unsigned long row_len = HYST_INV_TABLE_LEN((unsigned long)S->curve->u.everett.intervals);
-    const TCM_Y *r = S->table.TCM_YF + 4u * k;
+    const TCM_Y *r0 = S->table.TCM_YF + 4u * k;
+    const TCM_Y *r1 = r0 + row_len;
+    const TCM_Y *r2 = r1 + row_len;
+    const TCM_Y *r3 = r2 + row_len;
     unsigned i;
     for (i = 0u; i < 4u; ++i) {
-        YV(c[i]) = ((YV(S->blend[0]) * r[i] + YV(S->blend[1]) * r[row_len + i]) +
-                    YV(S->blend[2]) * r[2u * row_len + i]) +
-                   YV(S->blend[3]) * r[3u * row_len + i];
+        v[i] = ((YV(S->blend[0]) * r0[i] + YV(S->blend[1]) * r1[i]) + YV(S->blend[2]) * r2[i]) +
+               YV(S->blend[3]) * r3[i];
     }
 }
 
-/* An interval's cubic at t in [0, 1]. */
+/* An interval's cubic at t in [0, 1], from S->coef or from blend_coefs(). */
+HYST_INLINE TCM_Y TCM_NAME(cubic_of)(TCM_Y c0, TCM_Y c1, TCM_Y c2, TCM_Y c3, TCM_Y t)
+{
+    return c0 + t * (c1 + t * (c2 + t * c3));
+}
 HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
 {
-    return YV(c[0]) + t * (YV(c[1]) + t * (YV(c[2]) + t * YV(c[3])));
+    return TCM_NAME(cubic_of)(YV(c[0]), YV(c[1]), YV(c[2]), YV(c[3]), t);
 }
 
 static void TCM_NAME(newton_state)(const hyst_tcm_t *S, hyst_num_t *coef, TCM_Y *curv,
@@ -238,21 +246,51 @@ static TCM_NOINLINE TCM_Y TCM_NAME(blend_g)(const hyst_tcm_t *S, TCM_Y u)
     const unsigned long n = (unsigned long)S->curve->u.everett.intervals;
     const TCM_Y s = u * YV(S->v_scale);
     unsigned long k = s < (TCM_Y)n ? (unsigned long)s : n; /* s >= 0 */
-    hyst_num_t local[4];
-    const hyst_num_t *c = S->coef;
     TCM_Y g;
     if (k != S->cached_k) {
-        TCM_NAME(blend_coefs)(S, k, local);
-        c = local;
+        TCM_Y v[4];
+        TCM_NAME(blend_coefs)(S, k, v);
+        g = TCM_NAME(cubic_of)(v[0], v[1], v[2], v[3], s - (TCM_Y)k);
+    } else {
+        g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
     }
-    g = TCM_NAME(cubic)(c, s - (TCM_Y)k);
     return g < 0 ? TCM_NAME(blend_exact)(S, u) : g;
 }
 #define TCM_BLEND_G(S, u) TCM_NAME(blend_g)((S), (u))
 
+/* Horner's rule over n = 1..HYST_EVERETT_MAX_DEGREE coefficients a[0]
+ * (highest power) .. a[n - 1] at x, unrolled (a slow sample cannot afford
+ * the loop): the numbers of the loop acc = acc x + a[i] from acc = 0, and
+ * of NUM_NAME(horner) before its last product. */
+HYST_INLINE TCM_Y TCM_NAME(poly_at)(const hyst_num_t *a, unsigned n, TCM_Y x)
+{
+    switch (n) {
+    case 4u: return ((YV(a[0]) * x + YV(a[1])) * x + YV(a[2])) * x + YV(a[3]);
+    case 3u: return (YV(a[0]) * x + YV(a[1])) * x + YV(a[2]);
+    case 2u: return YV(a[0]) * x + YV(a[1]);
+    default: return YV(a[0]);
+    }
+}
+
 #if TCM_REAL_INPUT
 HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
                                        hyst_num_t *coef);
+
+/* p(w) = w q(w) on the branch that `row`'s table gives at `anchor`:
+ * table_coefs(), then Horner's rule (NUM_NAME(horner)'s numbers), in one
+ * switch on the degree n. */
+HYST_INLINE TCM_Y TCM_NAME(branch_p)(const hyst_num_t *row, unsigned n, TCM_Y anchor, TCM_Y w)
+{
+    hyst_num_t c[HYST_EVERETT_MAX_DEGREE];
+    TCM_Y q;
+    switch (n) {
+    case 4u: TCM_NAME(table_coefs)(row, 4u, anchor, c); q = TCM_NAME(poly_at)(c, 4u, w); break;
+    case 3u: TCM_NAME(table_coefs)(row, 3u, anchor, c); q = TCM_NAME(poly_at)(c, 3u, w); break;
+    case 2u: TCM_NAME(table_coefs)(row, 2u, anchor, c); q = TCM_NAME(poly_at)(c, 2u, w); break;
+    default: q = YV(row[0]); break;
+    }
+    return NUM_MUL_G(q, w);
+}
 
 /* A TP pushed since the last derive (more TPs than then: pushes add one per
  * sample, wipe-outs and merges add none) is stored at the output the model
@@ -264,7 +302,7 @@ HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y 
  * strictly between the TP's neighbours in the input's order (rounding, or a
  * reversal smaller than the table's error). Integer inputs keep the desired
  * output (a code cannot hold it). */
-static void TCM_NAME(achieved_top)(hyst_tcm_t *S)
+HYST_INLINE void TCM_NAME(achieved_top)(hyst_tcm_t *S)
 {
     const hyst_curve_t *c = S->curve;
     const size_t tps = S->n_ltp + S->n_rtp;
@@ -272,7 +310,7 @@ static void TCM_NAME(achieved_top)(hyst_tcm_t *S)
     const size_t t = fall ? S->n_rtp - 1u : S->n_ltp - 1u; /* the current TP */
     TCM_X *x_top;
     TCM_X x_parent, lower, upper, x_hat;
-    TCM_Y y_parent, p;
+    TCM_Y y_parent, w;
     const int fresh = tps > S->tps_derived;
     S->tps_derived = tps;
     if (!fresh || (!fall && t == 0u)) { /* not new, or A0 */
@@ -281,42 +319,52 @@ static void TCM_NAME(achieved_top)(hyst_tcm_t *S)
     /* an RTP t ended the rising branch from LTP t; an LTP t the falling one from RTP t - 1 */
     x_parent = fall ? XV(S->xltp)[t] : XV(S->xrtp)[t - 1u];
     y_parent = fall ? YV(S->yltp)[t] : YV(S->yrtp)[t - 1u];
-    /* that branch's p(w) into S->coef, free here: derive_blend() empties
-     * the blend it holds */
-    TCM_NAME(table_coefs)(fall ? c->u.everett.rise : c->u.everett.fall, c->u.everett.degree,
-                          TCM_NAME(drive_anchor)(S, y_parent), S->coef);
-    p = NUM_NAME(horner)(S->coef, c->u.everett.degree,
-                         NUM_NAME(abs)(YV(S->y_ctp) - y_parent) * YV(c->u.everett.inv_span));
-    x_hat = x_parent + (fall ? p : -p) / YV(S->unit);
+    /* that branch's p(w) */
+    w = NUM_NAME(abs)(YV(S->y_ctp) - y_parent) * YV(c->u.everett.inv_span);
+    w = TCM_NAME(branch_p)(fall ? c->u.everett.rise : c->u.everett.fall, c->u.everett.degree,
+                           TCM_NAME(drive_anchor)(S, y_parent), w) /
+        YV(S->unit);
+    x_hat = fall ? x_parent + w : x_parent - w;
     x_top = fall ? &XV(S->xrtp)[t] : &XV(S->xltp)[t];
     /* the input now is on the new branch: below an RTP, above an LTP */
     lower = fall ? XV(S->window[1]) : XV(S->xltp)[t - 1u];
     upper = fall ? (t > 0u ? XV(S->xrtp)[t - 1u] : XV(S->hi)) : XV(S->window[0]);
-    if (x_hat > lower && x_hat < upper) {
-        *x_top = TCM_NORM(x_hat);
-        YV(S->x_ctp) = *x_top;
+    if (x_hat > lower && x_hat < upper) { /* not -0: x_parent is stored normalised
+                                          * (TCM_NORM), and x +- w is +0 when 0 */
+        *x_top = x_hat;
+        YV(S->x_ctp) = x_hat;
     }
 }
 #else
-static void TCM_NAME(achieved_top)(hyst_tcm_t *S) { (void)S; }
+HYST_INLINE void TCM_NAME(achieved_top)(hyst_tcm_t *S) { (void)S; }
 #endif
+
+/* S's table_rows, table_intervals, v_least: derive_blend()'s constants
+ * (out of line: init() stays small enough to stay out of line itself). */
+static TCM_NOINLINE void TCM_NAME(blend_dims)(hyst_tcm_t *S, const hyst_curve_t *curve)
+{
+    const int blended = curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE;
+    const TCM_Y n = blended ? (TCM_Y)curve->u.everett.intervals : 0;
+    YV(S->table_rows) = blended ? (TCM_Y)curve->u.everett.rows : 0;
+    YV(S->table_intervals) = n;
+    YV(S->v_least) = TCM_D(XV(S->hi), XV(S->lo)) * (n * NUM_C(9.313225746154785e-10));
+}
 
 /* The branch's rows, weights and index scale (derive()): cubic Lagrange
  * weights on the four rows around its anchor a (rows base .. base + 3 of
  * its direction, at x = a rows - base in 0..3), and v_scale = N / V(a), V
  * the branch's whole output step (V at least 2^-30 N of the desired
  * output range: s stays far below 2^32). */
-static void TCM_NAME(derive_blend)(hyst_tcm_t *S)
+HYST_INLINE void TCM_NAME(derive_blend)(hyst_tcm_t *S)
 {
     const hyst_curve_t *c = S->curve;
-    const unsigned fall = S->moving_end != 0u ? 1u : 0u;
+    const unsigned fall = S->moving_end; /* 0 or 1 */
     const unsigned long rows = (unsigned long)c->u.everett.rows;
     const unsigned long n = (unsigned long)c->u.everett.intervals;
     const TCM_Y anchor = TCM_NAME(drive_anchor)(S, YV(S->y_ctp));
-    const TCM_Y least = TCM_D(XV(S->hi), XV(S->lo)) * ((TCM_Y)n * NUM_C(9.313225746154785e-10));
-    TCM_Y x = anchor * (TCM_Y)rows, range = 0;
+    const TCM_Y least = YV(S->v_least);
+    TCM_Y x = anchor * YV(S->table_rows), range;
     unsigned long j = x > 0 ? (unsigned long)x : 0u, base;
-    unsigned m;
     TCM_NAME(achieved_top)(S);
     j = j > rows - 1u ? rows - 1u : j;
     base = j < 1u ? 0u : (j - 1u > rows - 3u ? rows - 3u : j - 1u);
@@ -327,15 +375,19 @@ static void TCM_NAME(derive_blend)(hyst_tcm_t *S)
     YV(S->blend[3]) = x * (x - 1) * (x - 2) / 6;
     S->table.TCM_YF = c->u.everett.table.TCM_YF +
                       ((fall != 0u ? rows + 1u : 0u) + base) * HYST_INV_TABLE_LEN(n);
-    for (m = 0u; m <= c->u.everett.degree; ++m) {
-        range = range * anchor + YV(c->u.everett.v_end[fall][m]);
-    }
-    YV(S->v_scale) = (TCM_Y)n / (range > least ? range : least);
+    range = TCM_NAME(poly_at)(c->u.everett.v_end[fall], c->u.everett.degree, anchor) * anchor +
+            YV(c->u.everett.v_end[fall][c->u.everett.degree]);
+    YV(S->v_scale) = YV(S->table_intervals) / (range > least ? range : least);
     S->cached_k = ULONG_MAX; /* no interval blended yet */
 }
 #else
 #define TCM_BLEND_G(S, u) ((void)(S), (u)) /* never: the variant refuses the kind */
 static void TCM_NAME(derive_blend)(hyst_tcm_t *S) { (void)S; }
+static void TCM_NAME(blend_dims)(hyst_tcm_t *S, const hyst_curve_t *curve)
+{
+    (void)curve;
+    YV(S->table_rows) = YV(S->table_intervals) = YV(S->v_least) = 0;
+}
 #endif
 
 /* G at u, any kind: Horner for polynomials, solved for the asymmetric
@@ -533,7 +585,21 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const in
  * the interval is blended first (the last one, N, past the branch's end by
  * rounding). Ends as emit() does, with the numbers blend_g() gives. */
 #ifndef NUM_FIXED
-static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
+/* blended_sample()'s end in an interval every row marks solved: G from
+ * blend_g() (which solves it), guarded as emit() guards it. emit_rare()'s
+ * numbers without its serve(): no request is pending where a blended sample
+ * runs (S->horner is the blend's), and the way back through serve() to
+ * derive() would make the call graph a cycle (bench/analyse.py bounds the
+ * stack). */
+static TCM_NOINLINE TCM_Y TCM_NAME(blended_solved)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    const TCM_Y g = TCM_NAME(branch_g)(S, x);
+    const TCM_Y y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
+    YV(S->y_prev) = y;
+    return y;
+}
+
+HYST_INLINE TCM_Y TCM_NAME(blended_sample)(hyst_tcm_t *S, TCM_X x, const int how)
 {
     const unsigned long n = (unsigned long)S->curve->u.everett.intervals;
     const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
@@ -541,17 +607,41 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const i
     unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 (derive_blend()) */
     TCM_Y g, y;
     if (k != S->cached_k) {
+        TCM_Y v[4];
+        unsigned i;
         k = k < n ? k : n;
-        TCM_NAME(blend_coefs)(S, k, S->coef);
+        TCM_NAME(blend_coefs)(S, k, v);
+        for (i = 0u; i < 4u; ++i) {
+            YV(S->coef[i]) = v[i];
+        }
         S->cached_k = k;
+        g = TCM_NAME(cubic_of)(v[0], v[1], v[2], v[3], s - (TCM_Y)k);
+    } else {
+        g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
     }
-    g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
     if (g < 0) { /* a solved interval */
-        return TCM_NAME(emit_rare)(S, x, how);
+        return TCM_NAME(blended_solved)(S, x, how);
     }
     y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
     YV(S->y_prev) = y;
     return y;
+}
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    return TCM_NAME(blended_sample)(S, x, how);
+}
+
+/* A slow sample of the tabulated asymmetric compensator that starts a
+ * branch: derive_blend(), then the sample, in one frame (the weights and
+ * the rows' address stay in registers). derive() keeps its own copy of
+ * derive_blend() for the rare paths: calling this frame instead would save
+ * about 1 KB of flash per variant, but cost the sample 6 instructions and
+ * put serve()'s path on top of this one in the static call graph (the
+ * stack bound, bench/analyse.py). */
+static TCM_NOINLINE TCM_Y TCM_NAME(derive_emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    TCM_NAME(derive_blend)(S);
+    return TCM_NAME(blended_sample)(S, x, how);
 }
 #endif
 
@@ -628,10 +718,9 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
     case HYST_HORNER_BLEND_: /* the tabulated asymmetric compensator: a sample in the
                               * interval blended last costs one cubic, inline; the others
                               * (and a new branch: no interval blended yet) out of line */
-        if (derive != TCM_KEEP) {
-            if (TCM_DERIVES(derive)) {
-                TCM_NAME(derive)(S);
-            }
+        if (TCM_DERIVES(derive)) {
+            return TCM_NAME(derive_emit_blended)(S, x, how);
+        } else if (derive != TCM_KEEP) {
             return TCM_NAME(emit_blended)(S, x, how);
         } else {
             const TCM_Y s = u * YV(S->v_scale);
@@ -887,6 +976,7 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
     }
     S->cached_k = ULONG_MAX;
     S->tps_derived = 0u;
+    TCM_NAME(blend_dims)(S, curve);
     for (k = 0u; k < HYST_MAX_DEGREE; ++k) { /* the asymmetric kind's: per branch, settle() */
         YV(S->coef[k]) = curve->kind == (unsigned)HYST_CURVE_POLY && k < S->degree
                              ? YV(curve->u.poly.a[k])

@@ -170,6 +170,11 @@ typedef struct hyst_tcm {
     hyst_num_t v_scale;
     hyst_num_t blend[4];
     unsigned long cached_k;
+    /** the same, fixed at init (a slow sample does not convert them): its
+     *  table's rows and intervals as reals, and the least whole output step
+     *  of a branch that v_scale divides by, 2^-30 intervals of the desired
+     *  output range */
+    hyst_num_t table_rows, table_intervals, v_least;
     /** TPs stored at the last derive of the tabulated asymmetric
      *  compensator: one more, and the new TP's input becomes the model's
      *  output for its drive */
