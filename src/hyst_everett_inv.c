@@ -193,8 +193,13 @@ static void fill_row(build_t *b, int fall, size_t r)
     }
     for (k = 0u; k <= n; ++k) {
         const hyst_wide_t v = (hyst_wide_t)k * range / (hyst_wide_t)n;
+        const hyst_wide_t w_prev = w;
         hyst_wide_t dp, d, m;
         w = branch_solve(&br, v, w);
+        /* knots never fall: where p's rounding is coarser than the step
+         * between two knots' outputs (subnormal outputs), its steps are flat
+         * and the solver may stop anywhere on one */
+        w = w < w_prev ? w_prev : w;
         (void)branch_p(&br, w, &dp);
         d = w * b->span;
         m = dp > 0 ? range / (hyst_wide_t)n * b->span / dp : -1; /* -1: infinite */
