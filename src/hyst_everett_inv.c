@@ -348,6 +348,24 @@ static int intervals_ok(unsigned long n) { return n >= 1ul && n <= MAX_INTERVALS
 /* Everything of the table's curve but its numbers, and the build's state:
  * the checks both constructors make, then the solved compensator's curve
  * (the solved intervals' numbers) with the table's kind, shape and V(a). */
+/* The engine's least output step of a branch, (y_hi - y_lo) intervals 2^-30
+ * (tcm_engine.h, blend_dims()), and the index scale it bounds, intervals /
+ * least: normal and finite in the variant's type (with a factor 2 for the
+ * type's rounding), else a slow sample's interval index could overflow
+ * (desired outputs spanning a few subnormal numbers). */
+static int index_scale_ok(const hyst_curve_t *inv, size_t intervals)
+{
+    const unsigned variant = inv->variant;
+    const hyst_wide_t n = (hyst_wide_t)intervals;
+    const hyst_wide_t least =
+        (hyst_num_get(&inv->hi, variant) - hyst_num_get(&inv->lo, variant)) *
+        (n * (hyst_wide_t)9.313225746154785e-10);
+    const int f32 = variant == (unsigned)HYST_VARIANT_F32;
+    const hyst_wide_t min = f32 ? (hyst_wide_t)FLT_MIN : HYST_WIDE_MIN;
+    const hyst_wide_t max = f32 ? (hyst_wide_t)FLT_MAX : HYST_WIDE_MAX;
+    return least >= 2 * min && n / least <= max / 2;
+}
+
 static hyst_status_t prepare(hyst_curve_t *out, build_t *b, const hyst_curve_t *inv,
                              const hyst_curve_t *fwd, hyst_cptr_t table, size_t rows,
                              size_t intervals, unsigned variant)
@@ -371,6 +389,9 @@ static hyst_status_t prepare(hyst_curve_t *out, build_t *b, const hyst_curve_t *
     st = hyst_curve_inverse(out, fwd); /* HYST_CURVE_EVERETT_INV: the solved intervals' */
     if (st != HYST_OK) {
         return st;
+    }
+    if (!index_scale_ok(out, intervals)) {
+        return HYST_ERR_ILL_CONDITIONED;
     }
     out->kind = HYST_CURVE_EVERETT_INV_TABLE;
     out->u.everett.table = table;

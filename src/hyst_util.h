@@ -13,9 +13,11 @@
 #ifdef HYST_NO_DOUBLE
 #define HYST_WIDE_EPS ((hyst_wide_t)FLT_EPSILON)
 #define HYST_WIDE_MIN ((hyst_wide_t)FLT_MIN)
+#define HYST_WIDE_MAX ((hyst_wide_t)FLT_MAX)
 #else
 #define HYST_WIDE_EPS ((hyst_wide_t)DBL_EPSILON)
 #define HYST_WIDE_MIN ((hyst_wide_t)DBL_MIN)
+#define HYST_WIDE_MAX ((hyst_wide_t)DBL_MAX)
 #endif
 
 /* Finite test without libm: NaN fails v == v, +-Inf gives Inf - Inf = NaN. */

@@ -14,6 +14,7 @@
 #include "support.h"
 #include "unity.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -328,6 +329,43 @@ static void test_bad_input_and_arguments(void)
     TEST_ASSERT_EQUAL_MEMORY(&inv, &other, sizeof other); /* nothing written */
 }
 
+/* Outputs spanning so little (E = e w, e about 2^31 over the type's largest
+ * number: 6e-30 in float, 1.2e-299 in double) that a branch's interval
+ * index, intervals over 2^-30 of the range, could overflow: the table is
+ * refused (built or from flash; E = 8 least subnormals times w over a 1e303
+ * domain, found by fuzzing, overflowed it), the solved compensator takes the
+ * curve; four times more and the table is built. */
+static void test_tiny_output_range(void)
+{
+#ifdef HYST_USE_DOUBLE
+    const double tiny = 0x1p30 / DBL_MAX;
+#else
+    const double tiny = 0x1p30 / (double)FLT_MAX;
+#endif
+    hyst_everett_t e;
+    hyst_curve_t other;
+    hyst_table_seal_t seal;
+    memset(&e, 0, sizeof e);
+    e.degree = 1u;
+    e.lo = 0.0;
+    e.hi = 1.0;
+    e.e[0][0] = tiny;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&fwd, &e));
+    memcpy(&other, &inv, sizeof other);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ILL_CONDITIONED,
+                          hyst_curve_everett_inverse_table(&other, &fwd, table, ROWS, INTERVALS));
+    memset(&seal, 0, sizeof seal); /* refused before the seal is read */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ILL_CONDITIONED,
+                          hyst_curve_everett_inverse_table_const(&other, &fwd, table, ROWS,
+                                                                 INTERVALS, &seal));
+    TEST_ASSERT_EQUAL_MEMORY(&inv, &other, sizeof other); /* nothing written */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&solved, &fwd));
+    e.e[0][0] = 4.0 * tiny;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&fwd, &e));
+    TEST_ASSERT_EQUAL_INT(HYST_OK,
+                          hyst_curve_everett_inverse_table(&other, &fwd, table, ROWS, INTERVALS));
+}
+
 #ifndef HYST_USE_DOUBLE
 /* Desired outputs as integer codes 0..4095 over the major loop's range
  * (the code variant). */
@@ -367,6 +405,7 @@ int main(void)
     RUN_TEST(test_block_and_snapshots);
     RUN_TEST(test_bounded_memory);
     RUN_TEST(test_bad_input_and_arguments);
+    RUN_TEST(test_tiny_output_range);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_codes_drive_the_tabulated_compensator);
 #endif

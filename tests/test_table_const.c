@@ -128,42 +128,6 @@ static hyst_status_t everett_from_flash(size_t rows, size_t intervals)
                                                   &seal);
 }
 
-#ifdef HYST_USE_DOUBLE
-/* E = e w with e eight times the least subnormal double (and a domain of
- * about 1e303): the branch's outputs are 8 subnormal steps apart, p is a
- * staircase and the build's solver may stop anywhere on a step. The knots it
- * stores still rise, so its table, sealed, is accepted from flash (it was
- * refused as another model's, HYST_ERR_CURVE). */
-static void test_subnormal_outputs_table_from_flash(void)
-{
-    hyst_everett_t e;
-    size_t k;
-    memset(&e, 0, sizeof e);
-    e.degree = 1u;
-    e.lo = -0x1.0200a10144ff8p+1009;
-    e.hi = -0x1.c648050c8c828p+937;
-    e.y_lo = 0x0.005fa6002008cp-1022;
-    e.e[0][0] = 0x0.0000000000008p-1022;
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&fwd, &e));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_inverse_table(&inv, &fwd, built, 15u, 21u));
-    for (k = 0u; k < 2u * 16u; ++k) { /* every row's knots rise */
-        const hyst_real_t *row = built + k * HYST_INV_TABLE_LEN(21u);
-        size_t i;
-        hyst_real_t knot = 0;
-        for (i = 0u; i < 21u; ++i) {
-            if (row[4u * i] >= 0) {
-                TEST_ASSERT_TRUE(row[4u * i] >= knot);
-                knot = row[4u * i];
-            }
-        }
-    }
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_table_seal(&inv, &seal));
-    memcpy(flash, built, HYST_EVERETT_INV_TABLE_LEN(15u, 21u) * sizeof built[0]);
-    TEST_ASSERT_EQUAL_INT(HYST_OK, everett_from_flash(15u, 21u));
-    assert_same_curve(&inv, &from_flash);
-}
-#endif
-
 static void test_damage_is_refused(void)
 {
     int trial;
@@ -332,9 +296,6 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_everett_table_from_flash_is_the_build);
     RUN_TEST(test_damage_is_refused);
-#ifdef HYST_USE_DOUBLE
-    RUN_TEST(test_subnormal_outputs_table_from_flash);
-#endif
     RUN_TEST(test_another_models_table_is_refused);
     RUN_TEST(test_sealed_garbage_is_refused);
     RUN_TEST(test_symmetric_table_from_flash_is_the_build);

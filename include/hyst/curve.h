@@ -373,7 +373,10 @@ hyst_status_t hyst_f64_curve_inverse_table(hyst_curve_t *inv, const hyst_curve_t
  * @param[in]  intervals 1 .. 2^20 (HYST_EVERETT_INV_INTERVALS by default).
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT (a curve of another variant),
  *         HYST_ERR_ARG (not an asymmetric curve, or rows or intervals out of
- *         range) or HYST_ERR_NOT_INVERTIBLE.
+ *         range), HYST_ERR_NOT_INVERTIBLE or HYST_ERR_ILL_CONDITIONED (the
+ *         output range so small, about 1e-299 in double, 1e-29 in float, that
+ *         a branch's interval index, intervals over 2^-30 of it, overflows the
+ *         variant's type; hyst_curve_inverse() solves such a curve).
  */
 /**@{*/
 hyst_status_t hyst_f32_curve_everett_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
