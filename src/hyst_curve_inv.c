@@ -354,8 +354,12 @@ static hyst_status_t table_prepare(hyst_curve_t *out, table_build_t *b, const hy
     }
     (void)hyst_num_set(&out->u.inv_table.span, variant, span);
     (void)hyst_num_set(&out->u.inv_table.u_per_d, variant, 1 / span);
-    /* s = e unit, as the samples compute it: the knots sit where they see them */
-    (void)hyst_num_set(&out->unit, variant, (hyst_wide_t)intervals / range);
+    /* s = e unit, as the samples compute it: the knots sit where they see them;
+     * an output range so small (subnormal) that the scale overflows the
+     * variant's type would put every sample in one interval */
+    if (!hyst_num_set(&out->unit, variant, (hyst_wide_t)intervals / range)) {
+        return HYST_ERR_ILL_CONDITIONED;
+    }
     memset(b, 0, sizeof *b);
     b->span = span;
     b->e_per_s = 1 / hyst_num_get(&out->unit, variant);

@@ -351,6 +351,38 @@ static void test_constructor_checks(void)
     TEST_ASSERT_EQUAL_DOUBLE(0.0, (double)hyst_curve_inverse_error(NULL));
 }
 
+/* f0 = c x on [0, 1] with c subnormal: the table's scale, intervals / c,
+ * overflows the variant's type (every desired output would fall in one
+ * interval: the drive was 0 for c / 2); refused, the exact inverse takes the
+ * curve. A normal c is tabulated. */
+static void test_tiny_output_range(void)
+{
+#ifdef HYST_USE_DOUBLE
+    const double tiny = 1e-320, normal = 1e-300;
+#else
+    const double tiny = 1e-42, normal = 1e-34;
+#endif
+    hyst_poly_t p;
+    hyst_curve_t out;
+    hyst_t S;
+    memset(&p, 0, sizeof p);
+    p.degree = 1u;
+    p.lo = 0.0;
+    p.hi = 1.0;
+    p.coeffs[0] = tiny;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&fwd, &p));
+    memset(&out, 0x5a, sizeof out);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ILL_CONDITIONED,
+                          hyst_curve_inverse_table(&out, &fwd, table, HYST_INV_TABLE));
+    TEST_ASSERT_EQUAL_UINT(0x5a5a5a5au, out.kind); /* nothing written */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&inv, &fwd));
+    p.coeffs[0] = normal;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&fwd, &p));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse_table(&inv, &fwd, table, HYST_INV_TABLE));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&S, &inv, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.5f, (float)hyst_step(&S, (hyst_real_t)(normal / 2)));
+}
+
 int main(void)
 {
     hyst_port_init();
@@ -364,6 +396,7 @@ int main(void)
     RUN_TEST(test_snapshot_round_trip);
     RUN_TEST(test_define_and_init_macros);
     RUN_TEST(test_constructor_checks);
+    RUN_TEST(test_tiny_output_range);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_code_variant_runs_the_table);
 #endif

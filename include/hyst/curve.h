@@ -332,8 +332,10 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
  * @param[in]  intervals 1 .. 2^20 (HYST_INV_TABLE by default: docs/pi_and_inverse.md
  *             gives the size/error trade-off).
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT (a curve of another variant),
- *         HYST_ERR_ARG (not a polynomial curve, or intervals out of range) or
- *         HYST_ERR_NOT_INVERTIBLE.
+ *         HYST_ERR_ARG (not a polynomial curve, or intervals out of range),
+ *         HYST_ERR_NOT_INVERTIBLE or HYST_ERR_ILL_CONDITIONED (the output
+ *         range so small, subnormal, that intervals over it overflows the
+ *         variant's type; hyst_curve_inverse() takes such a curve).
  */
 /**@{*/
 hyst_status_t hyst_f32_curve_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
