@@ -14,11 +14,12 @@
  *   config   raw: lo, hi, coeffs as 8-byte doubles; structured: small grids
  *   then     opcodes: 0xF0..0xFF are control opcodes (the switch in
  *            LLVMFuzzerTestOneInput: reset, snapshot twin, forged restores,
- *            block through hyst_process, bit-flipped snapshot, accessors);
+ *            block through hyst_process, requests from another context
+ *            applied by the next step, bit-flipped snapshot, accessors);
  *            any other byte is one sample of kind op & 7 (next_sample).
  *
- * Adding an entry point: give it a control opcode in that switch (0xF5 and
- * 0xF7..0xFF fall to the default case, the accessors, today) and a seed in
+ * Adding an entry point: give it a control opcode in that switch (0xF7..0xFF
+ * fall to the default case, the accessors, today) and a seed in
  * fuzz/make_corpus.py that uses it. fuzz/run lists every function declared in
  * include/hyst/ (all headers, by glob) that neither this file nor
  * fuzz_models.c (PI, PWL, inverse, identification) calls. */
@@ -278,6 +279,42 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 if (st == HYST_WARN_FULL || (hyst_events(&A.S) & HYST_EVENT_FULL)) full = 1;
                 break;
             }
+            case 5: { /* requests, posted as from a context the stepping one preempts
+                       * (byte: bit0 the reset posted twice, bit1 a clear of the
+                       * events too), then one sample of kind 4 (in the domain):
+                       * that step computes its output, then applies them, once,
+                       * as the immediate calls between it and the next sample */
+                const unsigned what = rd_u8(&r);
+                const double x = next_sample(&r, &f, 4u);
+                hyst_real_t y, yb;
+                double yr;
+                CHECK(hyst_request_pending(&A.S) == 0 && hyst_request_pending(&B.S) == 0);
+                CHECK(hyst_request_reset(&A.S) == HYST_OK && hyst_request_reset(&B.S) == HYST_OK);
+                if (what & 1u) {
+                    CHECK(hyst_request_reset(&A.S) == HYST_OK && hyst_request_reset(&B.S) == HYST_OK);
+                }
+                if (what & 2u) {
+                    CHECK(hyst_request_clear_events(&A.S) == HYST_OK &&
+                          hyst_request_clear_events(&B.S) == HYST_OK);
+                }
+                CHECK(hyst_request_pending(&A.S) == 1 && hyst_request_pending(&B.S) == 1);
+                CHECK(hyst_request_reset(NULL) == HYST_ERR_NULL && hyst_request_pending(NULL) == 0);
+                y = hyst_step(&A.S, x);
+                yb = hyst_step(&B.S, x);
+                yr = ref_step(&ref, x);
+                CHECK(memcmp(&y, &yb, sizeof(y)) == 0);
+                if (hyst_status(&A.S) == HYST_WARN_FULL) full = 1;
+                if (compare && !full) { /* the sample on the state before the reset */
+                    CHECK(fabs(y - yr) <= 1e-9 * range + ((double)ref_tp_count(&ref) + 2.0) * tol0);
+                }
+                /* then the reset: at A0, events cleared */
+                CHECK(hyst_request_pending(&A.S) == 0 && hyst_request_pending(&B.S) == 0);
+                CHECK(hyst_tp_count(&A.S) == 0u && hyst_events(&A.S) == 0u);
+                CHECK(hyst_input(&A.S) == (hyst_real_t)f.lo);
+                ref_init(&ref, f.coeffs, f.degree, f.lo, f.hi);
+                full = 0;
+                break;
+            }
             case 6: { /* a real snapshot of A with one bit flipped: always refused */
                 size_t len = 0, bit;
                 CHECK(hyst_snapshot_save(&A.S, snap, sizeof(snap), &len) == HYST_OK);
@@ -295,6 +332,10 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 (void)hyst_input(&A.S);
                 (void)hyst_ltp_count(&A.S);
                 (void)hyst_rtp_count(&A.S);
+                /* the rounding bound of a polynomial curve: what init checked */
+                CHECK(hyst_rounding_bound(&A.S) >= 0 &&
+                      hyst_rounding_bound(&A.S) <= HYST_MAX_ROUNDING * range * (1 + 1e-12));
+                CHECK(hyst_error_bound(&A.S) >= 0 && isfinite(hyst_error_bound(&A.S)));
                 break;
             }
         } else { /* one sample to A, B and the reference */

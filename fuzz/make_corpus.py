@@ -47,6 +47,8 @@ seeds = {
     "nonfinite_ends_codes": structured(0, 8, *cubic) + bytes([0, 1, 9]) + bytes([2]) + struct.pack("<d", 1e300)
         + bytes([3, 11, 4, 200, 4, 200, 4, 10, 4, 150, 0x0C, 4, 20]),
     "tiny_capacity_full": structured(0, 2, *cubic) + shrinking(5, 3),
+    "requests_reset": structured(0, 40, *cubic) + shrinking(3) + bytes([0xF5, 3, 128]) + shrinking(2)
+        + bytes([0xF5, 0, 0, 0xF7]) + shrinking(1),
     "linear_via_curve": structured(2, 6, 1, -1.0, 2.0, [1.0, 0.5], 0) + shrinking(4, 2),
     "degree9": structured(0, 47, 9, 0.0, 1.0, [0.1] * 10, 40) + shrinking(7, 3),
     "not_increasing": structured(0, 10, 2, -1.0, 2.0, [1.0, 0.0, 0.0], 0) + s16(0.5),

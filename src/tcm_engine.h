@@ -1371,6 +1371,17 @@ static TCM_Y TCM_NAME(finish_book)(hyst_tcm_t *S, TCM_X x, int how)
 /* Out of line, off the worst path: NaN, inputs outside (lo, hi) (clamped)
  * and inputs at lo or hi, which pass every stored TP: back at A0 without a
  * search. */
+/* The end of a step_edge() sample that leaves the input where it was (a
+ * NaN, or clamped to the end the input is at) while a request is pending:
+ * the output stays, then the requests are applied, as every step's. Out of
+ * line (a tail call): the clamped sample that moves keeps its registers. */
+static TCM_NOINLINE TCM_Y TCM_NAME(serve_unmoved)(hyst_tcm_t *S)
+{
+    const TCM_Y y = YV(S->y_prev);
+    TCM_NAME(serve)(S);
+    return y;
+}
+
 static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
 {
     const TCM_X x_prev = XV(S->window[S->moving_end]);
@@ -1378,8 +1389,11 @@ static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
     /* not fresh(): a TCM_STALE left set costs the next sample a detour that
      * clears it, where clearing it here would cost the worst path */
     S->status = HYST_OK;
-    if (!TCM_ADMIT(S, x_in, &x) || x == x_prev) {
+    if (!TCM_ADMIT(S, x_in, &x) || x == x_prev) { /* NaN, or clamped where it was */
         TCM_NAME(ended_not_ok)(S);
+        if (S->horner == HYST_HORNER_REQUEST_) { /* its requests, as every step's */
+            return TCM_NAME(serve_unmoved)(S);
+        }
         return YV(S->y_prev);
     }
     S->n_ltp = 1u;

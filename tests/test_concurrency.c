@@ -267,10 +267,37 @@ static void test_requests_applied_by_a_repeated_sample(void)
     TEST_ASSERT_FALSE(hyst_request_pending(NULL));
 }
 
+/* A step that evaluates nothing, a sample clamped where the input already
+ * is (the drive saturated at hi) or a NaN, applies the requests too: a
+ * reset posted while the input sat at hi waited for the input to move. */
+static void test_requests_applied_by_a_clamped_or_nan_sample(void)
+{
+    hyst_real_t y;
+    init_all();
+    (void)hyst_step(&S, (hyst_real_t)10.0);
+    y = hyst_step(&S, (hyst_real_t)50.0); /* Eq. 20: 0..40 V, clamped at 40 */
+    TEST_ASSERT_EQUAL_INT(HYST_WARN_CLAMPED, hyst_status(&S));
+    (void)hyst_step(&S, (hyst_real_t)5.0);
+    (void)hyst_step(&S, (hyst_real_t)45.0); /* back at 40: an RTP, then clamped again */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_request_reset(&S));
+    TEST_ASSERT_EQUAL_FLOAT(y, hyst_step(&S, (hyst_real_t)60.0)); /* clamped at 40 again */
+    TEST_ASSERT_FALSE(hyst_request_pending(&S));
+    TEST_ASSERT_EQUAL_size_t(0u, hyst_tp_count(&S));
+    TEST_ASSERT_EQUAL_FLOAT(hyst_output(&R), hyst_output(&S)); /* at A0, as R */
+    (void)hyst_step(&S, (hyst_real_t)25.0);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_request_clear_events(&S));
+    y = hyst_step(&S, (hyst_real_t)NAN);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NONFINITE, hyst_status(&S));
+    TEST_ASSERT_FALSE(hyst_request_pending(&S));
+    TEST_ASSERT_EQUAL_UINT(0u, hyst_events(&S));
+    TEST_ASSERT_EQUAL_FLOAT(y, hyst_output(&S)); /* nothing lost */
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_requests_applied_by_a_repeated_sample);
+    RUN_TEST(test_requests_applied_by_a_clamped_or_nan_sample);
     RUN_TEST(test_save_while_the_interrupt_steps);
     RUN_TEST(test_requests_while_the_interrupt_steps);
     return UNITY_END();

@@ -61,9 +61,10 @@
  *    HYST_ERR_BUSY, never a torn snapshot, never a write past the buffer);
  *  - hyst_request_reset(), hyst_*_request_deadband(),
  *    hyst_request_clear_events(): requests applied by the stepping context
- *    at its next step (at the latest at the next sample that changes the
- *    input: a block call applies them at its next slow sample or next
- *    call), before that step's output is computed; hyst_request_pending();
+ *    at the end of its next step, once that step's output is computed, as
+ *    the immediate calls would be between that sample and the next (a block
+ *    call sees a request posted during it at its next slow sample or its
+ *    next call); hyst_request_pending();
  *  - every read: hyst_status(), hyst_events(), the counts, hyst_rising(),
  *    hyst_capacity(), hyst_*_output(), hyst_*_input(),
  *    hyst_*_error_bound() (multi-field reads are re-read until consistent).
@@ -367,9 +368,10 @@ void hyst_reset(hyst_tcm_t *S);
 /**
  * @name Requests from another context (see "Concurrency" above)
  * @brief Safe while the stepping context may preempt the caller: the
- *        request is recorded now and applied by the stepping context at its
- *        next step, before that step's output. Posting one again before it
- *        is applied applies it once (a deadband request: the last width).
+ *        request is recorded now and applied by the stepping context at the
+ *        end of its next step, after that step's output (the next output is
+ *        the first to see it). Posting one again before it is applied
+ *        applies it once (a deadband request: the last width).
  * @return HYST_OK, HYST_ERR_NULL, or HYST_ERR_ARG (an uninitialised
  *         instance; a deadband as hyst_*_set_deadband() refuses it).
  */
