@@ -23,10 +23,12 @@
  * fit never fails on a record it accepted but for E the monotone
  * conditions cannot give, its E is accepted by the curve and its RMS is
  * finite; the
- * compensator's drive, fed to the model, gives the outputs back (on the
+ * compensator's drive stays on the domain (up to 8 units in the last place
+ * of its larger end: the output range tcm.h states), fed to the model gives
+ * the outputs back (on the
  * structured grids, until either memory fills), never moves against them,
  * and its block call equals its steps; the tabulated compensator (if its
- * builder accepts the curve) keeps its drive on the domain and never
+ * builder accepts the curve) keeps its drive on the domain (as above) and never
  * against the outputs, agrees with the exact one within twice the error
  * its init measured (a sampled figure) on the structured grids until the
  * outputs first turn back (from there on its turning points carry its own
@@ -64,9 +66,19 @@ static double sampled_slack(const hyst_everett_t *e, double scale)
     return worst / (2.0 * h * scale / span);
 }
 
+/* x in E's domain up to 8 units in the last place of its larger end (the
+ * output range tcm.h states: the rounding of a turning point's value plus a
+ * step). */
+static int on_domain(const hyst_everett_t *e, double x)
+{
+    const double end = fmax(fabs(e->lo), fabs(e->hi)), ulp = nextafter(end, INFINITY) - end;
+    return x >= e->lo - 8.0 * ulp && x <= e->hi + 8.0 * ulp;
+}
+
 /* The compensator of the accepted curve on the desired outputs ys[0..n):
  * see the header. */
-static void check_compensator(const hyst_curve_t *curve, double scale, int raw, size_t n)
+static void check_compensator(const hyst_curve_t *curve, const hyst_everett_t *e, double scale,
+                              int raw, size_t n)
 {
     static double cl[MAX_CAP], cyl[MAX_CAP], cr[MAX_CAP], cyr[MAX_CAP];
     hyst_curve_t inv;
@@ -81,7 +93,7 @@ static void check_compensator(const hyst_curve_t *curve, double scale, int raw, 
         const double y = hyst_step(&M, x);
         drive[k] = x;
         full |= hyst_status(&C) == HYST_WARN_FULL || hyst_status(&M) == HYST_WARN_FULL;
-        CHECK(hyst_status(&C) >= 0 && isfinite(x));
+        CHECK(hyst_status(&C) >= 0 && isfinite(x) && on_domain(e, x));
         if (k > 0u && !full) { /* monotone: never against the desired output */
             CHECK(ys[k] > ys[k - 1u] ? x >= drive[k - 1u] : ys[k] < ys[k - 1u] ? x <= drive[k - 1u] : 1);
         }
@@ -140,7 +152,7 @@ static void check_tabulated(const hyst_curve_t *curve, const hyst_everett_t *e, 
         const double x = hyst_step(&C, ys[k]);
         tab[k] = x;
         full |= hyst_status(&C) == HYST_WARN_FULL;
-        CHECK(hyst_status(&C) >= 0 && isfinite(x) && x >= e->lo && x <= e->hi);
+        CHECK(hyst_status(&C) >= 0 && isfinite(x) && on_domain(e, x));
         if (k > 0u && !full) {
             CHECK(ys[k] > ys[k - 1u] ? x >= tab[k - 1u] : ys[k] < ys[k - 1u] ? x <= tab[k - 1u] : 1);
             first_sweep &= ys[k] >= ys[k - 1u];
@@ -208,12 +220,13 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         return 0;
     }
     CHECK(hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, cap) == HYST_OK);
-    while (rd.at < rd.n && n < MAX_SAMPLES) {
-        xs[n++] = e.lo + (e.hi - e.lo) * (double)rd_u8(&rd) / 255.0;
+    while (rd.at < rd.n && n < MAX_SAMPLES) { /* on the domain: lo + (hi - lo) rounds past hi */
+        const double x = e.lo + (e.hi - e.lo) * (double)rd_u8(&rd) / 255.0;
+        xs[n++] = x < e.hi ? x : e.hi;
     }
     ref_everett_init(&ref, &e);
     for (k = 0u; k < n; ++k) {
-        const double x = xs[k] < e.hi ? xs[k] : e.hi;
+        const double x = xs[k];
         const double y = hyst_step(&S, x), y_ref = ref_everett_step(&ref, x);
         /* rounding: a few ulps of the scale per stacked TP */
         const double tol = 64.0 * DBL_EPSILON * (scale + fabs(e.y_lo)) * (double)(ref.n + 1);
@@ -232,7 +245,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     CHECK(hyst_process(&T, xs, ys2, n) >= 0);
     CHECK(n == 0u || memcmp(ys, ys2, n * sizeof ys[0]) == 0);
     if (flags & 4u) {
-        check_compensator(&curve, scale, (int)(flags & 1u), n);
+        check_compensator(&curve, &e, scale, (int)(flags & 1u), n);
         check_tabulated(&curve, &e, flags, n);
     }
     if ((flags & 2u) && n > 0u) {

@@ -329,6 +329,60 @@ static void test_bad_input_and_arguments(void)
     TEST_ASSERT_EQUAL_MEMORY(&inv, &other, sizeof other); /* nothing written */
 }
 
+/* The drive's range (tcm.h, "Output range"): desired outputs climbing to
+ * within 12 units of the top after a descent, on domains whose ends are not
+ * binary fractions, give a drive within 8 units in the last place of hi
+ * (the rounding of the turning point's drive plus the step; tabulated and
+ * solved). */
+static void test_drive_within_8_units_of_the_top(void)
+{
+    hyst_everett_t e;
+    long above = 0, n = 0;
+    double worst_units = 0.0;
+    int trial;
+    memset(&e, 0, sizeof e);
+    e.degree = 2u;
+    e.y_lo = -0.3;
+    e.e[0][0] = 1.0;
+    e.e[1][0] = 0.5;
+    e.e[0][1] = 0.25;
+    for (trial = 0; trial < 40; ++trial) {
+        hyst_real_t top, y, hi;
+        double allowed, worst = 0.0;
+        long k;
+        int j;
+        e.lo = rng_range(&rng, 0.05, 0.15);
+        e.hi = e.lo + rng_range(&rng, 0.3, 1.3);
+        prepare(&e);
+        top = CURVE_NUM(inv.hi);
+        hi = CURVE_NUM(inv.y_hi);
+        allowed = 8.0 * (double)(NEXT(hi, (hyst_real_t)3.0) - hi);
+        for (k = 0; k < 200; ++k) {
+            const hyst_real_t low = (hyst_real_t)((double)CURVE_NUM(inv.lo) +
+                                                  ((double)top - (double)CURVE_NUM(inv.lo)) *
+                                                      rng_range(&rng, 0.0, 0.05));
+            (void)hyst_step(&T, low);
+            (void)hyst_step(&X, low);
+            for (j = 12; j > 0; --j) { /* climbing: the fast path's samples */
+                double xt, xs;
+                int m;
+                y = top;
+                for (m = 0; m < j; ++m) {
+                    y = NEXT(y, (hyst_real_t)-1.0);
+                }
+                xt = (double)hyst_step(&T, y);
+                xs = (double)hyst_step(&X, y);
+                above += (xt > (double)hi) + (xs > (double)hi);
+                n += 2;
+                worst = fmax(worst, fmax(xt, xs) - (double)hi);
+                TEST_ASSERT_TRUE(xt <= (double)hi + allowed && xs <= (double)hi + allowed);
+            }
+        }
+        worst_units = fmax(worst_units, worst / (allowed / 8.0));
+    }
+    TEST_PRINTF("%ld of %ld drives near the top above hi, at most %g units", above, n, worst_units);
+}
+
 /* Outputs spanning so little (E = e w, e about 2^31 over the type's largest
  * number: 6e-30 in float, 1.2e-299 in double) that a branch's interval
  * index, intervals over 2^-30 of the range, could overflow: the table is
@@ -406,6 +460,7 @@ int main(void)
     RUN_TEST(test_bounded_memory);
     RUN_TEST(test_bad_input_and_arguments);
     RUN_TEST(test_tiny_output_range);
+    RUN_TEST(test_drive_within_8_units_of_the_top);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_codes_drive_the_tabulated_compensator);
 #endif
