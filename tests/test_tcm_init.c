@@ -112,6 +112,14 @@ static void test_slope_dip_is_located(void)
         TEST_ASSERT_EQUAL_INT(0, hyst_poly_is_increasing(e, 3u, 0.0, 200.0, &turn));
         TEST_ASSERT_TRUE(turn > 157.0 && turn < 160.0);
     }
+    /* a shallow dip, 13 % of the domain wide: 1.03125 x^9 + 0.15625 x^8 falls on
+     * (-0.1347, 0) with slopes down to -5e-8 (1e-9 of the range lost; it was
+     * accepted as rounding, and identification then missed f0 by that) */
+    {
+        const hyst_wide_t d[10] = {1.03125, 0.15625, 0, 0, 0, 0, 0, 0, 0, -1.0625};
+        TEST_ASSERT_EQUAL_INT(0, hyst_poly_is_increasing(d, 9u, -1.0, 1.0, &turn));
+        TEST_ASSERT_TRUE(turn > -0.1348 && turn < 0.0);
+    }
 }
 
 static void test_zero_slope_at_isolated_points_is_accepted(void)
@@ -121,6 +129,14 @@ static void test_zero_slope_at_isolated_points_is_accepted(void)
     const hyst_poly_t cube = {3u, HYST_REAL_C(-1.0), HYST_REAL_C(1.0), {HYST_REAL_C(1.0), 0, 0, 0}};
     TEST_ASSERT_EQUAL_INT(HYST_OK, init_with(&sq));
     TEST_ASSERT_EQUAL_INT(HYST_OK, init_with(&cube));
+    /* the same in rounded coefficients: x^9 on [-1, 1], and (x - 500)^3
+     * expanded on [0, 1000] (its slope's terms cancel to 0 at 500) */
+    {
+        const hyst_wide_t x9[10] = {1.0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+        const hyst_wide_t shifted[4] = {1.0, -1500.0, 750000.0, -125000000.0};
+        TEST_ASSERT_EQUAL_INT(1, hyst_poly_is_increasing(x9, 9u, -1.0, 1.0, NULL));
+        TEST_ASSERT_EQUAL_INT(1, hyst_poly_is_increasing(shifted, 3u, 0.0, 1000.0, NULL));
+    }
 }
 
 static void test_failed_init_leaves_instance_untouched(void)
