@@ -266,6 +266,24 @@ static void test_major_loops_alone_are_singular_above_degree_2(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_SINGULAR, hyst_everett_fit_solve_unconstrained(&fit, &e, NULL));
 }
 
+/* A record whose output never moves fits E = 0, which the curve refuses
+ * (it never rises): the fit says so (it returned OK). */
+static void test_flat_record_is_refused(void)
+{
+    static hyst_everett_fit_t fit;
+    hyst_everett_t e;
+    hyst_curve_t curve;
+    long k;
+    for (k = 0; k < 400L; ++k) {
+        rx[k] = 5.0 - 10.0 * cos(6.283185307179586 * (double)k / 100.0) * (double)(k % 7) / 6.0;
+        ry[k] = 0.25;
+    }
+    fit_record(&fit, 2u, PLANT_LO, PLANT_HI, 400L);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_MONOTONE, hyst_everett_fit_solve(&fit, &e, NULL));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_MONOTONE, hyst_curve_from_everett(&curve, &e));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve_unconstrained(&fit, &e, NULL));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -273,5 +291,6 @@ int main(void)
     RUN_TEST(test_monotone_fit_where_least_squares_is_not);
     RUN_TEST(test_monotone_least_squares_is_kept_bit_for_bit);
     RUN_TEST(test_major_loops_alone_are_singular_above_degree_2);
+    RUN_TEST(test_flat_record_is_refused);
     return UNITY_END();
 }

@@ -440,7 +440,9 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
  *         turning points for the coefficients: a record of major loops
  *         alone determines degree 2 at most); HYST_ERR_NOT_MONOTONE (the
  *         constrained solution did not converge to an E the curve accepts,
- *         a rounding-level failure; @p e and @p rms hold it all the same).
+ *         a rounding-level failure, or the E fitted is flat, E(hi, lo) not
+ *         above 0: outputs that never rise, or rise by less than the
+ *         type resolves; @p e and @p rms hold it all the same).
  */
 hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
                                      hyst_wide_t *rms);

@@ -79,7 +79,9 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
     }
     st = fit_samples(cfg->degree, t_degree, lo, hi, x, y, skip, end, delay, &res->e, &res->used,
                      &res->ls_rms);
-    if (st != HYST_OK) {
+    /* HYST_ERR_NOT_MONOTONE: E is returned all the same; the curve's own
+     * refusal below says why (curve_status) */
+    if (st != HYST_OK && st != HYST_ERR_NOT_MONOTONE) {
         return st;
     }
     res->curve_status = hyst_f64_curve_from_everett(&curve, &res->e);
