@@ -194,6 +194,16 @@ static hyst_wide_t derivatives(const hyst_everett_t *e, bipoly_t *rw, bipoly_t *
     return scale;
 }
 
+hyst_wide_t hyst_everett_range_(const hyst_everett_t *e)
+{
+    hyst_wide_t range = 0;
+    unsigned i;
+    for (i = 0u; i < e->degree; ++i) {
+        range += e->e[i][0];
+    }
+    return range;
+}
+
 int hyst_everett_monotone_(const hyst_everett_t *e)
 {
     bipoly_t rw, diff;
@@ -267,7 +277,7 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
 {
     bipoly_t rise, fall;
     hyst_curve_t out;
-    hyst_wide_t range = 0, eps, bound, ymax, w_rise, w_fall;
+    hyst_wide_t range, eps, bound, ymax, w_rise, w_fall;
     unsigned n, i, j;
     int finite = 1;
     if (curve == NULL || e == NULL) {
@@ -297,10 +307,10 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
             }
             if (i + j <= n) {
                 rise.c[i][j] = c;
-                range += j == 0u ? c : 0; /* E(hi, lo): w = 1, t = 0 */
             }
         }
     }
+    range = hyst_everett_range_(e);
     falling(e, &fall);
     memset(&out, 0, sizeof out);
     out.kind = HYST_CURVE_EVERETT;

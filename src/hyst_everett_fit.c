@@ -267,17 +267,6 @@ static void to_everett(const hyst_everett_fit_t *fit, const hyst_wide_t *s, hyst
 
 /* Least squares into e and rms; if `constrained` and the curve would
  * refuse that E, the least-squares E of the sufficient conditions. */
-/* E(hi, lo), the major loop's height: w = 1, t = 0. */
-static hyst_wide_t everett_range(const hyst_everett_t *e)
-{
-    hyst_wide_t range = 0;
-    unsigned i;
-    for (i = 0u; i < e->degree; ++i) {
-        range += e->e[i][0];
-    }
-    return range;
-}
-
 static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hyst_wide_t *rms,
                            int constrained)
 {
@@ -334,7 +323,7 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
             st = HYST_ERR_NOT_MONOTONE;
         }
     }
-    if (constrained && st == HYST_OK && !(everett_range(e) > 0)) {
+    if (constrained && st == HYST_OK && !(hyst_everett_range_(e) > 0)) {
         st = HYST_ERR_NOT_MONOTONE; /* flat: the curve refuses an E that never rises */
     }
     /* residual: y'y - 2 s'A'y + s'A s */

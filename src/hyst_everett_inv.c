@@ -196,9 +196,9 @@ static void fill_row(build_t *b, int fall, size_t r)
         const hyst_wide_t w_prev = w;
         hyst_wide_t dp, d, m;
         w = branch_solve(&br, v, w);
-        /* knots never fall: where p's rounding is coarser than the step
-         * between two knots' outputs (subnormal outputs), its steps are flat
-         * and the solver may stop anywhere on one */
+        /* knots never fall (a table from flash is checked for it): where
+         * p's rounding is coarser than the step between two knots' outputs,
+         * p is flat there and the solver may stop anywhere on it */
         w = w < w_prev ? w_prev : w;
         (void)branch_p(&br, w, &dp);
         d = w * b->span;
@@ -345,9 +345,6 @@ static void fill_direction(build_t *b, int fall)
 static int rows_ok(unsigned long n) { return n >= 3ul && n <= MAX_ROWS; }
 static int intervals_ok(unsigned long n) { return n >= 1ul && n <= MAX_INTERVALS; }
 
-/* Everything of the table's curve but its numbers, and the build's state:
- * the checks both constructors make, then the solved compensator's curve
- * (the solved intervals' numbers) with the table's kind, shape and V(a). */
 /* The engine's least output step of a branch, (y_hi - y_lo) intervals 2^-30
  * (tcm_engine.h, blend_dims()), and the index scale it bounds, intervals /
  * least: normal and finite in the variant's type (with a factor 2 for the
@@ -359,13 +356,16 @@ static int index_scale_ok(const hyst_curve_t *inv, size_t intervals)
     const hyst_wide_t n = (hyst_wide_t)intervals;
     const hyst_wide_t least =
         (hyst_num_get(&inv->hi, variant) - hyst_num_get(&inv->lo, variant)) *
-        (n * (hyst_wide_t)9.313225746154785e-10);
+        (n * (hyst_wide_t)HYST_BLEND_LEAST_STEP);
     const int f32 = variant == (unsigned)HYST_VARIANT_F32;
     const hyst_wide_t min = f32 ? (hyst_wide_t)FLT_MIN : HYST_WIDE_MIN;
     const hyst_wide_t max = f32 ? (hyst_wide_t)FLT_MAX : HYST_WIDE_MAX;
     return least >= 2 * min && n / least <= max / 2;
 }
 
+/* Everything of the table's curve but its numbers, and the build's state:
+ * the checks both constructors make, then the solved compensator's curve
+ * (the solved intervals' numbers) with the table's kind, shape and V(a). */
 static hyst_status_t prepare(hyst_curve_t *out, build_t *b, const hyst_curve_t *inv,
                              const hyst_curve_t *fwd, hyst_cptr_t table, size_t rows,
                              size_t intervals, unsigned variant)

@@ -181,6 +181,15 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
  * coefficients, subdivided where undecided). */
 int hyst_everett_monotone_(const hyst_everett_t *e);
 
+/* E(hi, lo), the major loop's height (w = 1, t = 0): the curve refuses an E
+ * whose height is not above 0, and the fit reports one. */
+hyst_wide_t hyst_everett_range_(const hyst_everett_t *e);
+
+/* 2^-30: a tabulated asymmetric branch's least output step, as a fraction
+ * of the desired outputs' range per interval (tcm_engine.h, blend_dims());
+ * its table's builder checks that step and its index scale fit the type. */
+#define HYST_BLEND_LEAST_STEP 9.313225746154785e-10
+
 /* Most Bernstein-Bezier coefficients hyst_everett_bernstein_() gives. */
 #define HYST_EVERETT_BERNSTEIN_MAX (HYST_EVERETT_MAX_DEGREE * (HYST_EVERETT_MAX_DEGREE + 1))
 

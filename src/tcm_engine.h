@@ -347,7 +347,7 @@ static TCM_NOINLINE void TCM_NAME(blend_dims)(hyst_tcm_t *S, const hyst_curve_t 
     const TCM_Y n = blended ? (TCM_Y)curve->u.everett.intervals : 0;
     YV(S->table_rows) = blended ? (TCM_Y)curve->u.everett.rows : 0;
     YV(S->table_intervals) = n;
-    YV(S->v_least) = TCM_D(XV(S->hi), XV(S->lo)) * (n * NUM_C(9.313225746154785e-10));
+    YV(S->v_least) = TCM_D(XV(S->hi), XV(S->lo)) * (n * (TCM_Y)HYST_BLEND_LEAST_STEP);
 }
 
 /* The branch's rows, weights and index scale (derive()): cubic Lagrange
@@ -1368,9 +1368,6 @@ static TCM_Y TCM_NAME(finish_book)(hyst_tcm_t *S, TCM_X x, int how)
     return y;
 }
 
-/* Out of line, off the worst path: NaN, inputs outside (lo, hi) (clamped)
- * and inputs at lo or hi, which pass every stored TP: back at A0 without a
- * search. */
 /* The end of a step_edge() sample that leaves the input where it was (a
  * NaN, or clamped to the end the input is at) while a request is pending:
  * the output stays, then the requests are applied, as every step's. Out of
@@ -1382,6 +1379,9 @@ static TCM_NOINLINE TCM_Y TCM_NAME(serve_unmoved)(hyst_tcm_t *S)
     return y;
 }
 
+/* Out of line, off the worst path: NaN, inputs outside (lo, hi) (clamped)
+ * and inputs at lo or hi, which pass every stored TP: back at A0 without a
+ * search. */
 static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
 {
     const TCM_X x_prev = XV(S->window[S->moving_end]);
