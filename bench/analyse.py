@@ -354,10 +354,12 @@ def main():
     # linear in t, what the identification chooses on the measured record)
     # and its compensators (solved; tabulated, the default table) on the same
     # trajectory: the typical sample and the costliest of any kind (targets
-    # 40 / 160, met by degree 3 and asserted by the ctest everett_budget;
-    # 50 / 160 for the compensator, not met: docs/timing.md). The tabulated
-    # one's traced init takes minutes.
+    # 40 / 160, met by both and asserted by the ctests everett_budget and
+    # everett4_budget, which also runs degree 4 across zero; 50 / 160 for the
+    # compensator, the worst not met: docs/timing.md). The tabulated one's
+    # traced init takes minutes.
     for name, prefix in (("bench_budget_everett", "everett"), ("bench_budget_everett4", "everett4"),
+                         ("bench_budget_everett4_bipolar", "everett4_bipolar"),
                          ("bench_budget_everett_inv", "everett_inv"),
                          ("bench_budget_everett_inv_table", "everett_inv_table")):
         run = qemu_count.measure(os.path.join(args.m4, "bench", name), qemu)

@@ -272,6 +272,40 @@ static hyst_wide_t fill_table(hyst_num_t *out, const bipoly_t *p, unsigned n, un
     return weight > 0 ? weight : (hyst_wide_t)DBL_MIN;
 }
 
+/* Whether every row of a table is at most linear in the anchor. */
+static int linear_in_anchor(const bipoly_t *p, unsigned n)
+{
+    unsigned i, j;
+    for (i = 1u; i <= n; ++i) {
+        for (j = 2u; i + j <= n; ++j) {
+            if (p->c[i][j] != 0) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
+/* lin_x (curve.h) of a table linear in the anchor t = (x - lo) / span:
+ * c0 + c1 t = (c1 / span) x + (c0 - c1 lo / span), each rounded once.
+ * Returns 0 if a number is not finite in the variant's type. */
+static int fill_lines(hyst_num_t *out, const bipoly_t *p, unsigned n, hyst_wide_t lo,
+                      hyst_wide_t span, unsigned variant)
+{
+    unsigned i, at = 1u;
+    if (!hyst_num_set(&out[0], variant, p->c[n][0])) {
+        return 0;
+    }
+    for (i = n - 1u; i >= 1u; --i) {
+        const hyst_wide_t slope = p->c[i][1] / span;
+        if (!hyst_num_set(&out[at++], variant, slope) ||
+            !hyst_num_set(&out[at++], variant, p->c[i][0] - slope * lo)) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, unsigned variant,
                                   unsigned long layout)
 {
@@ -333,6 +367,16 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
     if (!hyst_everett_monotone_(e)) {
         return HYST_ERR_NOT_MONOTONE;
     }
+    /* Within |lo| <= span, |x| <= 2 span: a coefficient from lin_x errs by
+     * at most 4 eps of its row's |entries|, one more than from the anchor */
+    if (linear_in_anchor(&rise, n) && linear_in_anchor(&fall, n) &&
+        hyst_wide_abs(e->lo) <= e->hi - e->lo) {
+        if (!fill_lines(out.u.everett.lin_x[0], &rise, n, e->lo, e->hi - e->lo, variant) ||
+            !fill_lines(out.u.everett.lin_x[1], &fall, n, e->lo, e->hi - e->lo, variant)) {
+            return HYST_ERR_COEFF;
+        }
+        out.u.everett.linear_x = 1u;
+    }
     /* One branch evaluation y_k +- G: the anchor, each coefficient's Horner
      * in it and Horner in w with the final product err by at most
      * gamma(4n + 4) sum over the powers i of i sum |row i| (a-priori bounds,
@@ -341,7 +385,8 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
     eps = variant == (unsigned)HYST_VARIANT_F64 ? (hyst_wide_t)DBL_EPSILON / 2
                                                 : (hyst_wide_t)FLT_EPSILON / 2;
     ymax = hyst_wide_abs(e->y_lo) + hyst_wide_abs(range);
-    bound = ((hyst_wide_t)(4u * n + 4u) * eps / (1 - (hyst_wide_t)(4u * n + 4u) * eps)) *
+    bound = ((hyst_wide_t)(4u * n + 4u + out.u.everett.linear_x) * eps /
+             (1 - (hyst_wide_t)(4u * n + 4u + out.u.everett.linear_x) * eps)) *
                 (w_rise > w_fall ? w_rise : w_fall) +
             eps * ymax;
     bound *= (hyst_wide_t)1.01;

@@ -452,34 +452,19 @@ HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y 
     }
 }
 
-/* table_coefs() of a table whose rows are at most linear in the anchor
- * (linear_anchor()): the same numbers (the zero terms add exact zeros),
- * fewer operations. */
-HYST_INLINE void TCM_NAME(table_coefs_linear)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
-                                              hyst_num_t *coef)
+/* The branch's coefficients from the curve's rows as functions of the
+ * TP's input itself (lin_x, curve.h: rows at most linear in the anchor):
+ * no anchor to compute, one multiply-add each. */
+HYST_INLINE void TCM_NAME(table_coefs_x)(const hyst_num_t *lin, unsigned n, TCM_Y x,
+                                         hyst_num_t *coef)
 {
     switch (n) {
-    case 4u: YV(coef[3]) = YV(row[8]) * anchor + YV(row[9]); /* fall through */
-    case 3u: YV(coef[2]) = YV(row[4]) * anchor + YV(row[5]); /* fall through */
-    case 2u: YV(coef[1]) = YV(row[1]) * anchor + YV(row[2]); /* fall through */
-    case 1u: YV(coef[0]) = YV(row[0]); /* fall through */
+    case 4u: YV(coef[3]) = YV(lin[5]) * x + YV(lin[6]); /* fall through */
+    case 3u: YV(coef[2]) = YV(lin[3]) * x + YV(lin[4]); /* fall through */
+    case 2u: YV(coef[1]) = YV(lin[1]) * x + YV(lin[2]); /* fall through */
+    case 1u: YV(coef[0]) = YV(lin[0]); /* fall through */
     default: break;
     }
-}
-
-/* Whether the rows of both tables of an everett curve are at most linear in
- * the anchor: entry j of row k multiplies anchor^(k - j). */
-static int TCM_NAME(linear_anchor)(const hyst_curve_t *c)
-{
-    unsigned k, j, at = 0u;
-    for (k = 0u; k < (unsigned)HYST_EVERETT_MAX_DEGREE; ++k) {
-        for (j = 0u; j <= k; ++j, ++at) {
-            if (j + 2u <= k && (YV(c->u.everett.rise[at]) != 0 || YV(c->u.everett.fall[at]) != 0)) {
-                return 0;
-            }
-        }
-    }
-    return 1;
 }
 
 /* E(a, b), a >= b: g(a - b) for the symmetric kinds; the asymmetric
@@ -670,21 +655,28 @@ static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S);
  * (HYST_HORNER_ASYM_ + n): a slow sample's `derive` first derives the
  * branch's coefficients, the degree a constant, so that Horner's rule takes
  * them from registers (the worst sample, a wipe-out at Nu = 4096, within
- * its budget); the fast path evaluates the cached ones. */
-#define TCM_ASYM_CASE_(base, coefs, n)                                                      \
-    case base + n##u:                                                                       \
-        if (TCM_DERIVES(derive)) {                                                          \
-            TCM_NAME(coefs)(derive == TCM_DERIVE_RISE ? S->curve->u.everett.rise            \
-                                                      : S->curve->u.everett.fall,           \
-                            n##u, TCM_NAME(input_anchor)(S), S->coef);                      \
-        }                                                                                   \
-        acc = NUM_HORNER##n##_(S->coef, u);                                                 \
+ * its budget); the fast path evaluates the cached ones. Its rows at most
+ * linear in the anchor (HYST_HORNER_ASYM_LINEAR_ + n), from the TP's input
+ * itself (table_coefs_x()). */
+#define TCM_ASYM_CASE_(base, n, derivation)       \
+    case base + n##u:                             \
+        if (TCM_DERIVES(derive)) {                \
+            derivation;                           \
+        }                                         \
+        acc = NUM_HORNER##n##_(S->coef, u);       \
         break
-#define TCM_ASYM_CASES_(base, coefs)  \
-    TCM_ASYM_CASE_(base, coefs, 1);   \
-    TCM_ASYM_CASE_(base, coefs, 2);   \
-    TCM_ASYM_CASE_(base, coefs, 3);   \
-    TCM_ASYM_CASE_(base, coefs, 4)
+#define TCM_ASYM_ROWS_(n)                                                                   \
+    TCM_NAME(table_coefs)(derive == TCM_DERIVE_RISE ? S->curve->u.everett.rise              \
+                                                    : S->curve->u.everett.fall,             \
+                          n, TCM_NAME(input_anchor)(S), S->coef)
+#define TCM_ASYM_LINES_(n)                                                                  \
+    TCM_NAME(table_coefs_x)(S->curve->u.everett.lin_x[derive == TCM_DERIVE_RISE ? 0 : 1], n, \
+                            YV(S->x_ctp), S->coef)
+#define TCM_ASYM_CASES_(base, derivation)             \
+    TCM_ASYM_CASE_(base, 1, derivation(1u));          \
+    TCM_ASYM_CASE_(base, 2, derivation(2u));          \
+    TCM_ASYM_CASE_(base, 3, derivation(3u));          \
+    TCM_ASYM_CASE_(base, 4, derivation(4u))
 
 /* The end of a sample on a polynomial branch: its output, stored as y_prev
  * (and as the moving window end on the fast path). Degrees up to 8 inline;
@@ -707,8 +699,8 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
         u = NUM_G_ONE;
         break;
     NUM_HORNER_CASES_(S->coef, u, acc);
-    TCM_ASYM_CASES_(HYST_HORNER_ASYM_, table_coefs);
-    TCM_ASYM_CASES_(HYST_HORNER_ASYM_LINEAR_, table_coefs_linear);
+    TCM_ASYM_CASES_(HYST_HORNER_ASYM_, TCM_ASYM_ROWS_);
+    TCM_ASYM_CASES_(HYST_HORNER_ASYM_LINEAR_, TCM_ASYM_LINES_);
     case HYST_HORNER_SOLVE_:
         if (TCM_DERIVES(derive)) {
             TCM_NAME(derive)(S);
@@ -758,7 +750,7 @@ static unsigned TCM_NAME(idle_horner)(const hyst_tcm_t *S)
     if (S->curve == NULL || S->curve->kind != (unsigned)HYST_CURVE_EVERETT) {
         return S->degree;
     }
-    return (TCM_NAME(linear_anchor)(S->curve) ? HYST_HORNER_ASYM_LINEAR_ : HYST_HORNER_ASYM_) +
+    return (S->curve->u.everett.linear_x ? HYST_HORNER_ASYM_LINEAR_ : HYST_HORNER_ASYM_) +
            S->degree;
 }
 
@@ -869,6 +861,9 @@ static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S)
         TCM_NAME(derive_blend)(S);
     } else if (S->degree == HYST_HORNER_SOLVE_) {
         TCM_NAME(newton_state)(S, S->coef, &YV(S->curv), &YV(S->w_end), &YV(S->secant));
+    } else if (c->u.everett.linear_x) { /* the per-sample cases' numbers */
+        TCM_NAME(table_coefs_x)(c->u.everett.lin_x[S->moving_end == 0u ? 0 : 1],
+                                c->u.everett.degree, YV(S->x_ctp), S->coef);
     } else {
         TCM_NAME(table_coefs)(S->moving_end == 0u ? c->u.everett.rise : c->u.everett.fall,
                               c->u.everett.degree, TCM_NAME(input_anchor)(S), S->coef);

@@ -343,6 +343,62 @@ static void test_identification_recovers_e(void)
     TEST_ASSERT_TRUE(worst < 1.0);
 }
 
+/* E at most linear in t: on a domain with |lo| <= hi - lo a slow sample
+ * derives a branch from the TP's input itself (curve.h, lin_x), on one
+ * farther from zero from its anchor. Either way every output is within
+ * (d + 1) stated rounding bounds of the double reference (d: stored TPs,
+ * at most; float only, the reference computing in double) and the domain
+ * decides the form. */
+static void test_linear_e_within_the_rounding_bound(void)
+{
+    int trial, near = 0, far = 0;
+    double worst[2] = {0.0, 0.0};
+    for (trial = 0; trial < 40; ++trial) {
+        static ref_everett_t r;
+        hyst_everett_t e = random_e();
+        const double span = e.hi - e.lo;
+        const int x_form = trial % 2 == 0;
+        unsigned i, j;
+        size_t depth = 0u;
+        double bound;
+        long k;
+        for (i = 0u; i < (unsigned)N; ++i) {
+            for (j = 2u; j < (unsigned)N; ++j) {
+                e.e[i][j] = 0.0;
+            }
+        }
+        e.lo = (double)(float)(x_form ? span * rng_range(&rng, -1.0, 1.0)
+                                      : span * rng_range(&rng, 1.5, 20.0) * (trial % 4 == 1 ? -1 : 1));
+        e.hi = (double)(float)(e.lo + span);
+        if (init_e(&S, &curve, &e, xl, yl, xr, yr, CAP) != HYST_OK) {
+            continue;
+        }
+        TEST_ASSERT_EQUAL_UINT(fabs(e.lo) <= e.hi - e.lo ? 1u : 0u, curve.u.everett.linear_x);
+        near += curve.u.everett.linear_x != 0u;
+        far += curve.u.everett.linear_x == 0u;
+        bound = (double)hyst_rounding_bound(&S);
+        TEST_ASSERT_TRUE(bound > 0.0);
+        ref_everett_init(&r, &e);
+        walk(&e, xs, SAMPLES);
+        for (k = 0; k < SAMPLES; ++k) {
+            const double y = (double)hyst_step(&S, xs[k]);
+            const double ratio = fabs(y - ref_everett_step(&r, (double)xs[k])) /
+                                 ((double)(depth + 1u) * bound);
+            double *w = &worst[curve.u.everett.linear_x != 0u];
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&S));
+            *w = ratio > *w ? ratio : *w;
+            depth = hyst_tp_count(&S) > depth ? hyst_tp_count(&S) : depth;
+        }
+    }
+    TEST_PRINTF("E linear in t: %d curves from the inputs, %d from the anchor; worst |y - y_ref| / "
+                "((d + 1) bound) %g and %g",
+                near, far, worst[1], worst[0]);
+    TEST_ASSERT_TRUE(near >= 10 && far >= 10);
+#ifndef HYST_USE_DOUBLE
+    TEST_ASSERT_TRUE_MESSAGE(worst[0] <= 1.0 && worst[1] <= 1.0, "an output beyond its stated rounding bound");
+#endif
+}
+
 #ifndef HYST_USE_DOUBLE
 /* The integer-code variant runs the same curve: on codes 0..4095 of the
  * domain, bit for bit the f32 variant's outputs. */
@@ -379,6 +435,7 @@ int main(void)
     RUN_TEST(test_block_and_snapshots);
     RUN_TEST(test_bounded_memory_keeps_its_bound);
     RUN_TEST(test_identification_recovers_e);
+    RUN_TEST(test_linear_e_within_the_rounding_bound);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_codes_run_the_asymmetric_kind);
 #endif

@@ -147,6 +147,14 @@ typedef struct hyst_curve {
              *  anchor powers highest first, rows of n - i + 1 entries */
             hyst_num_t rise[HYST_EVERETT_TERMS];
             hyst_num_t fall[HYST_EVERETT_TERMS];
+            /** EVERETT with every row at most linear in the anchor, on a
+             *  domain with |lo| <= hi - lo (linear_x = 1): the same rows as
+             *  functions of the turning point's input x itself, rising then
+             *  falling, row i = n..1 a pair (slope in x, value at x = 0)
+             *  after the top one's single entry; a slow sample then derives
+             *  a branch without computing its anchor. 0 and unused else. */
+            hyst_num_t lin_x[2][2 * HYST_EVERETT_MAX_DEGREE - 1];
+            unsigned linear_x;
             hyst_num_t span;     /**< the drive's span hi - lo (of the forward curve) */
             hyst_num_t inv_span; /**< 1 / span */
             /** EVERETT_INV: Newton's last step, in w, at which the drive is
