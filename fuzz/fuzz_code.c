@@ -41,7 +41,13 @@
  *   0xF0 reset all, 0xF1 block through hyst_code_process, 0xF2 n nested
  *   reversals (16 n deep, n % 40 else; converging on the middle), 0xF3
  *   snapshot twin (T saved, C reset and restored from it, then both go on
- *   bit for bit; a double instance's snapshot refused), 0xF4.. accessors;
+ *   bit for bit; a double instance's snapshot refused), 0xF4 w op: a
+ *   deadband of w codes requested (hyst_code_request_deadband(), from
+ *   "another context") on C, immediately set on T after its next step, and
+ *   requested on F in volts: that step (one code of kind op) applies it, C
+ *   and T stay bit for bit (an invalid width is refused, nothing posted);
+ *   0xF5.. accessors, among them hyst_code_rounding_bound(), which must
+ *   cover every exact-mode output (depth times it plus the reference's TOL);
  *   any other byte one code of kind op & 7 (next_code). */
 #include "hyst/hyst.h"
 #include "ref_tcm.h"
@@ -53,6 +59,7 @@
 
 #define MAX_CAP 4100u /* flag bit7: deep stacks, every rung of the binary search */
 #define MAX_SAMPLES 4096u
+#define NO_REQUEST 0xFFFFFFFFul
 
 typedef struct { /* outputs of the code variant are float */
     hyst_t S;
@@ -81,13 +88,13 @@ static f32inst_t F32;
 static hyst_curve_t code_curve;
 /* How often the checks had something to check: FUZZ_CODE_STATS=1 prints
  * these at exit (reported in docs/reliability.md). */
-static unsigned long n_exact, n_vs_real, n_bounded, n_merge, n_window, n_nonzero;
+static unsigned long n_exact, n_vs_real, n_bounded, n_merge, n_window, n_nonzero, n_requests;
 
 static void print_stats(void)
 {
     fprintf(stderr, "fuzz_code: samples exact %lu, code vs real %lu, bounded %lu (bound > 0: %lu), "
-                    "merges checked %lu, deadband windows checked %lu\n",
-            n_exact, n_vs_real, n_bounded, n_nonzero, n_merge, n_window);
+                    "merges checked %lu, deadband windows checked %lu, deadband requests applied %lu\n",
+            n_exact, n_vs_real, n_bounded, n_nonzero, n_merge, n_window, n_requests);
 }
 static finst_t F, F0, keepf;
 static ref_tcm_t ref;
@@ -158,8 +165,10 @@ static double float_bound(const hyst_poly_t *f, double y_lo, double y_hi)
 }
 
 /* all entries when whole is set or the stack is shallow; else the top four
- * (below the top, a stack that cannot merge, capacity 4100, never changes) */
-static void check_code_invariants(const cinst_t *I, int whole)
+ * (below the top, a stack that cannot merge, capacity 4100, never changes);
+ * db_floor: the narrowest deadband since the last reset (TPs stored under a
+ * wider one keep their wider gaps) */
+static void check_code_invariants(const cinst_t *I, int whole, unsigned long db_floor)
 {
     const hyst_t *S = &I->S;
     const size_t nl = S->n_ltp, nr = S->n_rtp;
@@ -178,8 +187,8 @@ static void check_code_invariants(const cinst_t *I, int whole)
     /* a reversal nearer than the deadband is never stored; a merge keeps this
      * (x_R2 - x_V >= x_R2 - x_P > x_R1 - x_P >= deadband) */
     for (i = from; i < nr; ++i) {
-        CHECK((unsigned long)(I->xr[i] - I->xl[i]) >= S->deadband.code);
-        if (i + 1u < nl) CHECK((unsigned long)(I->xr[i] - I->xl[i + 1u]) >= S->deadband.code);
+        CHECK((unsigned long)(I->xr[i] - I->xl[i]) >= db_floor);
+        if (i + 1u < nl) CHECK((unsigned long)(I->xr[i] - I->xl[i + 1u]) >= db_floor);
     }
 }
 
@@ -321,7 +330,12 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     const int via_curve = (int)(flags & 2u);
     hyst_status_t st;
     unsigned long dbc = 0;
-    double dbv = 0.0, range, tol0, fl0, resid, step_v;
+    /* the widest deadband since the start (an open window keeps its error
+     * until the stack changes, after a narrower request too); whether any
+     * was ever on (Z and F0, never given one, then differ) */
+    double dbv = 0.0, dbv_max, range, tol0, fl0, resid, step_v, code_round;
+    unsigned long db_floor;
+    int db_ever;
     facts_t q;
     track_t tc, tf;
     int compare, proven;
@@ -411,6 +425,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         CHECK(hyst_code_set_deadband(&C.S, chi - clo) == HYST_OK); /* the widest allowed */
         CHECK(hyst_code_set_deadband(&C.S, 0u) == HYST_OK);
     }
+    dbv_max = dbv;
+    db_ever = dbc != 0u;
+    db_floor = dbc;
     /* Deadband 0 set explicitly on C, T, F; Z and F0 never see the call. */
     CHECK(hyst_code_set_deadband(&C.S, dbc) == HYST_OK);
     CHECK(hyst_code_set_deadband(&T.S, dbc) == HYST_OK);
@@ -423,6 +440,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     range = fabs(F.S.y_hi.HYST_R - F.S.y_lo.HYST_R);
     tol0 = horner_bound(&f);
     fl0 = compare ? float_bound(&f, F.S.y_lo.HYST_R, F.S.y_hi.HYST_R) : 0.0;
+    code_round = (double)hyst_code_rounding_bound(&C.S);
+    CHECK(code_round >= 0.0 && code_round == (double)hyst_code_rounding_bound(&T.S));
     resid = (q.slope_max - q.slope_min) * step_v; /* a merged TP rounded to a code */
     last_code = clo;
     memset(&tc, 0, sizeof(tc));
@@ -434,7 +453,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     tc.tol_prev = 1e-9 * range + 2.0 * (tol0 + fl0); /* A0: depth 0 */
 
     for (n = 0; done < MAX_SAMPLES && r.at < r.n; ++n) {
-        const unsigned op = rd_u8(&r);
+        unsigned op = rd_u8(&r);
+        unsigned long pend = NO_REQUEST; /* a deadband requested for this sample's end */
         unsigned m = 1u, k;
         int blk_full = 0;
         if (op == 0xF0u) { /* reset everything; the deadband is kept */
@@ -443,6 +463,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             hyst_reset(&Z.S);
             hyst_reset(&F.S);
             hyst_reset(&F0.S);
+            db_floor = dbc; /* no TP stored under an earlier width */
             ref_init(&ref, f.coeffs, f.degree, f.lo, f.hi);
             CHECK(hyst_tp_count(&C.S) == 0u && hyst_events(&C.S) == 0u);
             CHECK(hyst_code_error_bound(&C.S) == 0.0 && hyst_error_bound(&F.S) == 0.0);
@@ -477,7 +498,23 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             CHECK(hyst_code_error_bound(&C.S) == hyst_code_error_bound(&T.S));
             continue; /* every later sample compares C with T bit for bit */
         }
+        if (op == 0xF4u) { /* a deadband requested on C and F, set on T after the step */
+            const unsigned long w = (unsigned long)rd_u16(&r) % ((chi - clo) / 4u + 2u);
+            const int valid = w <= chi - clo;
+            memcpy(&keepc, &C, sizeof(C));
+            st = hyst_code_request_deadband(&C.S, w);
+            CHECK(st == (valid ? HYST_OK : HYST_ERR_ARG));
+            CHECK(hyst_request_pending(&C.S) == valid);
+            if (!valid) {
+                CHECK(memcmp(&keepc, &C, sizeof(C)) == 0);
+                continue;
+            }
+            CHECK(hyst_request_deadband(&F.S, (double)w * step_v) == HYST_OK);
+            op = rd_u8(&r) & 0xEFu; /* one code (never a control opcode) that applies it */
+            pend = w;
+        }
         if (op > 0xF2u) { /* accessors, clear events */
+            CHECK((double)hyst_code_rounding_bound(&C.S) == code_round);
             (void)hyst_status(&C.S);
             (void)hyst_rising(&C.S);
             CHECK(hyst_capacity(&C.S) == cap && hyst_ltp_count(&C.S) + hyst_rtp_count(&C.S) ==
@@ -532,13 +569,16 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 CHECK(hyst_status(&F.S) != HYST_WARN_CLAMPED); /* volts() stays in [lo, hi] */
                 if (hyst_status(&T.S) == HYST_WARN_FULL) tc.forgot = tc.full = blk_full = 1;
                 if (hyst_status(&F.S) == HYST_WARN_FULL) tf.forgot = tf.full = 1;
-                if (dbc == 0u) { /* deadband 0 is no deadband, bit for bit */
+                if (!db_ever) { /* deadband 0 is no deadband, bit for bit */
                     CHECK(memcmp(&y, &yz, sizeof(y)) == 0 && same_code(&T, &Z));
                     CHECK(memcmp(&yf, &yf0, sizeof(yf)) == 0 && same_real(&F, &F0));
                 }
                 if (compare && !tc.forgot) { /* exact: TCM over codes = reference */
                     CHECK(hyst_tp_count(&T.S) == (size_t)ref_tp_count(&ref));
                     CHECK(fabs(y - yr) <= ftol);
+                    /* the library's own stated bound (tcm.h, "rounding"): per
+                     * TP an output hangs on, plus the reference's TOL */
+                    CHECK(fabs(y - yr) <= depth * code_round + tol);
                     CHECK(hyst_code_error_bound(&T.S) == 0.0);
                     ++n_exact;
                 }
@@ -564,20 +604,33 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                         CHECK(bc - tc.b_prev <= q.curv_max * w * w / 4.0 + resid + ftol);
                         ++n_merge;
                     } else if (bc > tc.b_prev) { /* a deadband window opened or widened */
-                        CHECK(bc - tc.b_prev <= q.curv_max * dbv * dbv / 4.0 + resid + ftol);
+                        CHECK(bc - tc.b_prev <= q.curv_max * dbv_max * dbv_max / 4.0 + resid + ftol);
                         ++n_window;
                     }
                     if (bf > tf.b_prev && hyst_status(&F.S) != HYST_WARN_FULL) {
-                        CHECK(bf - tf.b_prev <= q.curv_max * dbv * dbv / 4.0 + tol);
+                        CHECK(bf - tf.b_prev <= q.curv_max * dbv_max * dbv_max / 4.0 + tol);
                     }
                     if (!tc.full) { /* no merge: only the open window counts */
-                        CHECK(bc <= q.curv_max * dbv * dbv / 4.0 + ftol);
+                        CHECK(bc <= q.curv_max * dbv_max * dbv_max / 4.0 + ftol);
                     }
                     if (!tf.full) {
-                        CHECK(bf <= q.curv_max * dbv * dbv / 4.0 + tol);
+                        CHECK(bf <= q.curv_max * dbv_max * dbv_max / 4.0 + tol);
                     }
                     tc.b_prev = bc;
                     tf.b_prev = bf;
+                }
+                if (pend != NO_REQUEST) { /* applied at the step's end: as set now */
+                    CHECK(!hyst_request_pending(&C.S) && !hyst_request_pending(&F.S));
+                    CHECK(C.S.deadband.code == pend && F.S.deadband.HYST_R == (double)pend * step_v);
+                    CHECK(hyst_code_set_deadband(&T.S, pend) == HYST_OK);
+                    dbc = pend;
+                    db_floor = pend < db_floor ? pend : db_floor;
+                    dbv = (double)pend * step_v;
+                    dbv_max = fmax(dbv_max, dbv);
+                    db_ever |= pend != 0u;
+                    tc.forgot |= pend != 0u;
+                    tf.forgot |= pend != 0u;
+                    ++n_requests;
                 }
                 tc.x_prev = tf.x_prev = x;
                 tc.tol_prev = ftol;
@@ -586,7 +639,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 if (op != 0xF1u) CHECK(memcmp(&ys[0], &y, sizeof(y)) == 0 && same_code(&C, &T));
                 if (op == 0xF1u) ys[k] = y; /* expected block output */
             }
-            check_code_invariants(&T, (k & 255u) == 255u || k + 1u == m);
+            check_code_invariants(&T, (k & 255u) == 255u || k + 1u == m, db_floor);
             CHECK(F.S.n_ltp <= cap && F.S.n_rtp <= cap);
         }
         if (op == 0xF1u) { /* the block through C equals T's steps */

@@ -22,7 +22,9 @@
  * fills, then within the stated error bound; always, finite outputs; the block call equals the per-sample call bit for bit; the
  * fit never fails on a record it accepted but for E the monotone
  * conditions cannot give, its E is accepted by the curve and its RMS is
- * finite; the
+ * finite; the plain least squares (hyst_everett_fit_solve_unconstrained())
+ * is singular where the fit is, is the fit's E bit for bit where the curve
+ * accepts it, and else has no larger a residual; the
  * compensator's drive stays on the domain (up to 8 units in the last place
  * of its larger end: the output range tcm.h states), fed to the model gives
  * the outputs back (on the
@@ -266,6 +268,26 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         st = hyst_everett_fit_solve(&fit, &got, &rms);
         /* NOT_MONOTONE: no E of the sufficient conditions fits (ident.h) */
         CHECK(st == HYST_OK || st == HYST_ERR_SINGULAR || st == HYST_ERR_NOT_MONOTONE);
+        { /* the plain least squares (ident.h): singular alike; the same E bit for
+           * bit where the curve accepts it; else a residual no larger than the
+           * monotone fit's (up to the solvers' rounding: 1e-9 of it and of the
+           * outputs' scale) */
+            hyst_everett_t free_e;
+            hyst_wide_t rms_free = -1, scale_y = 0;
+            hyst_curve_t free_curve;
+            const hyst_status_t su = hyst_everett_fit_solve_unconstrained(&fit, &free_e, &rms_free);
+            CHECK(su == HYST_OK || su == HYST_ERR_SINGULAR);
+            CHECK((su == HYST_ERR_SINGULAR) == (st == HYST_ERR_SINGULAR));
+            for (k = 0u; k < n; ++k) scale_y = fmax(scale_y, fabs((double)ys[k]));
+            if (su == HYST_OK) {
+                CHECK(rms_free >= 0 && isfinite(rms_free));
+                if (hyst_curve_from_everett(&free_curve, &free_e) == HYST_OK) {
+                    CHECK(st == HYST_OK && memcmp(&got, &free_e, sizeof got) == 0 && rms == rms_free);
+                } else {
+                    CHECK(rms_free <= rms * (1 + 1e-9) + 1e-9 * scale_y);
+                }
+            }
+        }
         if (st == HYST_OK) {
             hyst_curve_t fitted;
             CHECK(rms >= 0 && isfinite(rms));
