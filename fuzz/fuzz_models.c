@@ -5,7 +5,8 @@
  * snapshots. Built with HYST_USE_DOUBLE; any failed CHECK aborts.
  *
  * Input layout (reads past the end yield zeros, so every input is valid):
- *   [0]  module (byte % 4): 0 PI, 1 PWL curve, 2 polynomial inverse, 3 ident
+ *   [0]  module (byte % 4): 0 PI, 1 PWL curve, 2 polynomial inverse, 3 ident;
+ *        252..255: creep (fuzz_creep())
  *   [1]  flags: bit1 raw parameters (arbitrary doubles) else structured
  *        grids; bit2 a module-specific corruption (ident: REFLECT, or the
  *        domain from the data; PI fit: a workspace one entry short); bit3
@@ -1436,10 +1437,175 @@ static void fuzz_pi_fit(reader_t *rd, unsigned flags)
     }
 }
 
+/* ----------------------------------------------------------------- creep --- */
+
+/* Config: terms byte (% 6: 0 and 5 refused), then per term a time constant
+ * (structured: 1 + b^2 / 4 samples, up to 16 257, or 0.5 for b = 255; raw: any
+ * double), a weight ((signed char) / 16; raw: any double), then the rest
+ * drive ((signed char) / 8; raw: any double). Opcodes: 0xF0 reset to the
+ * rest drive; 0xF1 a NaN sample; 0xF2 the fit of the samples so far; any
+ * other byte a drive sample (structured: (signed char) b2 / 8; raw: a
+ * double). Each sample also goes into a fit as the residual r = c_ref +
+ * 0.25 + the drive's low bits (a known lag plus an offset plus noise).
+ * Checks: init refuses exactly what creep.h says, in its order, writing
+ * nothing; output() is bit for bit the next step's value; each value
+ * within the header's bound of a double reference of the same lags (its
+ * rates 1 / tau computed here: the same rounding); the states stay in the
+ * drives' hull (one step past it for tau < 2); a NaN sample changes no
+ * state and says HYST_ERR_NONFINITE; the fit's solution zeroes the gradient
+ * of its least-squares objective (to 1e-9 of its terms' scale), or the fit
+ * says SINGULAR. */
+static void fuzz_creep(reader_t *rd, unsigned flags)
+{
+    static hyst_creep_t C, keep_c;
+    static hyst_creep_fit_t F;
+    const int raw = (flags & 2u) != 0u;
+    const size_t n = rd_u8(rd) % 6u;
+    hyst_wide_t tau[HYST_CREEP_MAX_TERMS + 1u], w[HYST_CREEP_MAX_TERMS + 1u], x_rest;
+    double s_ref[HYST_CREEP_MAX_TERMS + 1u], a_ref[HYST_CREEP_MAX_TERMS + 1u];
+    double lo_x, hi_x, sum_w = 0.0, xs[MAX_OPS], rs[MAX_OPS];
+    hyst_status_t st, want = HYST_OK;
+    size_t k, count = 0u;
+    unsigned ops;
+    for (k = 0u; k < n; ++k) {
+        const unsigned b = rd_u8(rd);
+        tau[k] = raw ? rd_f64(rd) : b == 255u ? 0.5 : 1.0 + (double)(b * b) / 4.0;
+        w[k] = raw ? rd_f64(rd) : (double)(signed char)rd_u8(rd) / 16.0;
+    }
+    x_rest = raw ? rd_f64(rd) : (double)(signed char)rd_u8(rd) / 8.0;
+    /* creep.h's order: the count, then per term its tau, weight and the rest drive */
+    if (n < 1u || n > HYST_CREEP_MAX_TERMS) {
+        want = HYST_ERR_ARG;
+    }
+    for (k = 0u; want == HYST_OK && k < n; ++k) {
+        if (!(isfinite(tau[k]) && tau[k] >= 1.0)) {
+            want = HYST_ERR_ARG;
+        } else if (!isfinite(w[k])) {
+            want = HYST_ERR_WEIGHTS;
+        } else if (!isfinite(x_rest)) {
+            want = HYST_ERR_NONFINITE;
+        }
+    }
+    memset(&C, 0x5A, sizeof C);
+    memcpy(&keep_c, &C, sizeof C);
+    st = hyst_creep_init(&C, n, tau, w, x_rest);
+    CHECK(st == want);
+    if (st != HYST_OK) {
+        CHECK(memcmp(&C, &keep_c, sizeof C) == 0);
+        return;
+    }
+    CHECK(hyst_creep_size(&C) == n && hyst_creep_status(&C) == HYST_OK);
+    CHECK(hyst_creep_fit_init(&F, n, tau, x_rest) == HYST_OK);
+    for (k = 0u; k < n; ++k) {
+        a_ref[k] = 1.0 / tau[k];
+        s_ref[k] = x_rest;
+        sum_w += fabs(w[k]);
+    }
+    lo_x = hi_x = x_rest;
+    for (ops = 0u; ops < MAX_OPS && rd->at < rd->n; ++ops) {
+        const unsigned op = rd_u8(rd);
+        double x, c_ref = 0.0, m, bound;
+        hyst_real_t out, y;
+        if (op == 0xF0u) {
+            CHECK(hyst_creep_reset(&C, x_rest) == HYST_OK && hyst_creep_events(&C) == 0u);
+            for (k = 0u; k < n; ++k) s_ref[k] = x_rest;
+            lo_x = hi_x = x_rest;
+            continue;
+        }
+        if (op == 0xF2u) { /* the fit so far: the gradient of its objective at its answer */
+            hyst_wide_t wf[HYST_CREEP_MAX_TERMS], off = 0, rms = 0;
+            const hyst_status_t fs = hyst_creep_fit_solve(&F, wf, &off, &rms);
+            CHECK(fs == HYST_OK || fs == HYST_ERR_SINGULAR);
+            if (fs == HYST_OK && count > 0u) {
+                /* re-run the lags over the samples fitted, in double */
+                double sf[HYST_CREEP_MAX_TERMS], g[HYST_CREEP_MAX_TERMS + 1u];
+                double scale[HYST_CREEP_MAX_TERMS + 1u], sq[HYST_CREEP_MAX_TERMS];
+                size_t i, j;
+                CHECK(isfinite(rms) && rms >= 0);
+                for (j = 0u; j < n; ++j) sf[j] = x_rest;
+                for (j = 0u; j < n; ++j) sq[j] = 0.0;
+                for (j = 0u; j <= n; ++j) g[j] = scale[j] = 0.0;
+                for (i = 0u; i < count; ++i) {
+                    /* e and the sum of its terms' sizes: the scale its rounding has */
+                    double e = rs[i] - off, size_e = fabs(rs[i]) + fabs(off);
+                    for (j = 0u; j < n; ++j) {
+                        e -= wf[j] * sf[j];
+                        size_e += fabs(wf[j] * sf[j]);
+                    }
+                    g[n] += e;
+                    scale[n] += size_e;
+                    for (j = 0u; j < n; ++j) {
+                        g[j] += e * sf[j];
+                        scale[j] += size_e * fabs(sf[j]);
+                        sq[j] += sf[j] * sf[j];
+                        sf[j] += a_ref[j] * (xs[i] - sf[j]);
+                    }
+                }
+                /* A lag whose squares reach the subnormals (raw drives of 1e-150 and
+                 * less) has no relative accuracy left in its co-moments: the
+                 * solve's status and finite numbers are all that is checked there. */
+                for (j = 0u; j < n; ++j) {
+                    if (!(sq[j] >= DBL_MIN / EPS)) break;
+                }
+                for (i = 0u; j == n && i <= n; ++i) {
+                    CLOSE("creep_fit_gradient", fabs(g[i]), 1e-9 * scale[i] + 1e-300);
+                }
+            }
+            continue;
+        }
+        if (op == 0xF1u) { /* NaN: nothing moves */
+            memcpy(&keep_c, &C, sizeof C);
+            y = hyst_creep_step(&C, (hyst_real_t)NAN);
+            CHECK(hyst_creep_status(&C) == HYST_ERR_NONFINITE);
+            CHECK((hyst_creep_events(&C) & HYST_EVENT_NONFINITE) != 0u);
+            CHECK(memcmp(C.state, keep_c.state, sizeof C.state) == 0);
+            CHECK(isnan(y) || y == hyst_creep_output(&C));
+            continue;
+        }
+        x = raw ? rd_f64(rd) : (double)(signed char)rd_u8(rd) / 8.0;
+        if (!isfinite(x)) continue;
+        lo_x = fmin(lo_x, x);
+        hi_x = fmax(hi_x, x);
+        out = hyst_creep_output(&C);
+        y = hyst_creep_step(&C, x);
+        CHECK(memcmp(&out, &y, sizeof y) == 0 || (isnan(out) && isnan(y)));
+        CHECK(hyst_creep_status(&C) == HYST_OK);
+        for (k = 0u; k < n; ++k) {
+            c_ref += w[k] * s_ref[k];
+            s_ref[k] += a_ref[k] * (x - s_ref[k]);
+        }
+        /* creep.h's bound, M the largest |drive| so far, tau below 2 as M doubled */
+        m = fmax(fabs(lo_x), fabs(hi_x));
+        bound = 0.0;
+        for (k = 0u; k < n; ++k) {
+            bound += fabs(w[k]) * (tau[k] + 4.0 * (double)n + 12.0) * (tau[k] < 2.0 ? 2.0 : 1.0);
+        }
+        bound *= m * EPS; /* twice the header's: the reference rounds alike */
+        if (isfinite(c_ref) && isfinite(bound)) {
+            CLOSE("creep_vs_reference", fabs(y - c_ref), bound + UNDER);
+        }
+        for (k = 0u; k < n; ++k) { /* the drives' hull */
+            const double sk = C.state[k].HYST_R, slack = (tau[k] < 2.0 ? 2.0 : 1.0) * EPS * m;
+            CHECK(sk >= lo_x - slack && sk <= hi_x + slack);
+        }
+        if (count < MAX_OPS) { /* a known lag, an offset and noise as the residual */
+            const double r = c_ref + 0.25 + ldexp((double)(rd->at & 7u), -12);
+            if (isfinite(r) && hyst_creep_fit_add(&F, x, r) == HYST_OK) {
+                xs[count] = x;
+                rs[count] = r;
+                ++count;
+            }
+        }
+    }
+    (void)sum_w;
+}
+
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
 {
     reader_t r = {data, size, 0};
-    const unsigned module = rd_u8(&r) % 4u;
+    const unsigned b0 = rd_u8(&r);
+    /* 252..255: the creep module; below, the others (as before it came) */
+    const unsigned module = b0 >= 252u ? 4u : b0 % 4u;
     const unsigned flags = rd_u8(&r);
     g_raw = (int)(flags & 2u);
     { /* every status has a distinct, non-empty name; unknown codes one too */
@@ -1452,7 +1618,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     case 0: fuzz_pi(&r, flags); break;
     case 1: fuzz_pwl(&r, flags); break;
     case 2: fuzz_inverse(&r, flags); break;
-    default: fuzz_ident(&r, flags); break;
+    case 3: fuzz_ident(&r, flags); break;
+    default: fuzz_creep(&r, flags); break;
     }
     return 0;
 }

@@ -32,5 +32,6 @@
 #include "hyst/snapshot.h"
 #include "hyst/inverse.h"
 #include "hyst/pi.h"
+#include "hyst/creep.h"
 
 #endif /* HYST_HYST_H */

@@ -3,7 +3,7 @@
 # `hyst fit` without --degree: degree and delay chosen by hold-out. A record
 # made by the model itself (Eq. 20, degree 3) on its major loop, the output
 # lagging by 3 samples, plus noise: the choice must be degree 3 and delay 3,
-# every candidate reported, the parameter count printed.
+# without a creep term, every candidate reported, the parameter count printed.
 #   select.sh <hyst> <work dir>
 set -euo pipefail
 tool=$1 work=$2
@@ -25,6 +25,8 @@ awk 'NR == FNR { x[NR] = $1; n = NR; next } { y[FNR] = $1 }
 "$tool" fit rec.txt > fit.txt || fail "fit without --degree: $(cat fit.txt)"
 grep -q '^# chosen by hold-out: degree 3, delay 3 ' fit.txt || fail "choice: $(grep chosen fit.txt)"
 grep -q '^# parameters 4$' fit.txt || fail "parameter count: $(grep parameters fit.txt)"
+# no creep in the record: the creep term tried, not chosen
+grep -q '^# creep: none (hold-out rms ' fit.txt || fail "creep: $(grep creep fit.txt)"
 grep -q '^# delay 3 samples$' fit.txt || fail "delay line"
 [ "$(grep -c '^# candidate degree' fit.txt)" -eq 81 ] || fail "candidates: $(grep -c candidate fit.txt)"
 grep -q '^# candidate degree 3 delay 3: .*(chosen)$' fit.txt || fail "chosen mark"

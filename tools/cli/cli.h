@@ -129,6 +129,9 @@ void cli_replace_discard(cli_replace_t *r);
 
 /* ---- model files, hyst-model-text 1 (model_file.c) ---- */
 
+/* Creep terms a model file may hold (HYST_CREEP_MAX_TERMS). */
+#define CLI_CREEP_MAX_TERMS 4
+
 /* The kinds a model file holds (its key `kind`). */
 enum { CLI_MODEL_POLY = 0, CLI_MODEL_EVERETT = 1 };
 
@@ -144,6 +147,13 @@ typedef struct cli_model {
      * i = 1..degree, then j = 0..degree - i */
     double terms[HYST_EVERETT_TERMS];
     size_t nterms;     /* everett: degree (degree + 1) / 2 */
+    /* creep (hyst/creep.h), either kind: lags of the model's input with
+     * these time constants (samples) and weights, added to its output; 0
+     * terms: none */
+    double creep_tau[CLI_CREEP_MAX_TERMS];
+    double creep_weight[CLI_CREEP_MAX_TERMS];
+    size_t ncreep;
+    size_t ncreep_weights; /* as read (the reader checks it equals ncreep) */
 } cli_model_t;
 
 /* Reads a model file; 0, or 1 after a message naming file, line and field. */
@@ -265,9 +275,10 @@ void cli_c_number(char *buf, size_t len, double v, int digits);
 #define CLI_HELP_EXIT                                                                 \
     "Exit status: 0 success, 1 bad option or input (nothing is printed then).\n"
 
-/* Relative rounding of a number printed with 9 significant digits (5e-10),
- * with margin: clamping by less than this is not warned. */
-#define CLI_PRINT_TOL 1e-9
+/* Relative rounding of a number printed with 9 significant digits (at most
+ * half a unit of the 9th digit: 5e-9 of 1.00000000), with margin: clamping
+ * by less than this is not warned. */
+#define CLI_PRINT_TOL 1e-8
 
 typedef struct cli_samples {
     const char *file;   /* NULL or "-": standard input */
@@ -294,6 +305,10 @@ typedef struct cli_map {
     unsigned long (*col2)(void *ctx);
     const char *clamp_what; /* for the clamp warning: "inputs", ... */
     double lo, hi;          /* the interval inputs are clamped to */
+    /* 1: the step clamps something else than the input (inv with a creep
+     * term: the desired output less the creep's share) and sets *clamped
+     * only beyond the printing tolerance of [lo, hi] itself */
+    int step_checks_range;
     int digits;             /* significant digits printed (9; 17 gives the doubles exactly) */
 } cli_map_t;
 

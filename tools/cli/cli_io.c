@@ -338,8 +338,9 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
         }
         /* A bound printed with 9 digits (sim's f0(lo) fed to inv) may land just
          * outside: rounding, not an unreachable target, so not warned. */
-        if (clamped && (x < m->lo - CLI_PRINT_TOL * fabs(m->lo) ||
-                        x > m->hi + CLI_PRINT_TOL * fabs(m->hi)) &&
+        if (clamped &&
+            (m->step_checks_range || x < m->lo - CLI_PRINT_TOL * fabs(m->lo) ||
+             x > m->hi + CLI_PRINT_TOL * fabs(m->hi)) &&
             nclamped++ == 0u) {
             first = rd.lineno;
         }

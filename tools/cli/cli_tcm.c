@@ -4,6 +4,7 @@
 #include "cli.h"
 #include "hyst/hyst.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +20,9 @@ typedef struct tcm_run {
     hyst_curve_t inv; /* the compensator's curve, kept by S */
     double *late;     /* sim --model with a delay: the last `delay` outputs, a ring */
     unsigned long delay, at;
+    const cli_model_t *model; /* its creep term (model->ncreep > 0), or NULL */
+    hyst_creep_t creep;       /* lags of the model's input (sim) or of the drive (inv) */
+    double lo, hi;            /* inv with creep: the range the engine clamps its input to */
 } tcm_run_t;
 
 /* Longest delay a model file may give sim (outputs held in memory). */
@@ -103,6 +107,18 @@ static int tcm_begin(void *ctx)
     if (st != HYST_OK) {
         return cli_fail(r->cmd, "%s", hyst_status_str(st));
     }
+    if (r->model != NULL) { /* at rest at the drive's low end, as the fit assumed */
+        hyst_wide_t tau[CLI_CREEP_MAX_TERMS], w[CLI_CREEP_MAX_TERMS];
+        hyst_status_t cst;
+        for (i = 0u; i < r->model->ncreep; ++i) {
+            tau[i] = (hyst_wide_t)r->model->creep_tau[i];
+            w[i] = (hyst_wide_t)r->model->creep_weight[i];
+        }
+        cst = hyst_creep_init(&r->creep, r->model->ncreep, tau, w, (hyst_wide_t)r->model->lo);
+        if (cst != HYST_OK) {
+            return cli_fail(r->cmd, "the model's creep term: %s", hyst_status_str(cst));
+        }
+    }
     if (r->delay > 0u) { /* before the first input arrives: the model at rest, f0(lo) */
         if ((r->late = (double *)malloc(r->delay * sizeof(double))) == NULL) {
             return cli_fail(r->cmd, "out of memory");
@@ -148,7 +164,21 @@ static int tcm_step(void *ctx, double x, double *y, int *clamped)
         tcm_grow(r) != 0) {
         return 1;
     }
-    *y = (double)hyst_step(&r->S, (hyst_real_t)x);
+    if (r->model != NULL && r->inverse) { /* the desired output less the creep's share */
+        const double v = x - (double)hyst_creep_output(&r->creep);
+        const double drive = (double)hyst_step(&r->S, (hyst_real_t)v);
+        (void)hyst_creep_step(&r->creep, (hyst_real_t)drive);
+        *y = drive;
+        /* clamped beyond the rounding of a printed x (cli_map_samples() tests
+         * x itself for the others) */
+        const double tol = CLI_PRINT_TOL * fmax(fabs(x), fmax(fabs(r->lo), fabs(r->hi)));
+        *clamped = hyst_status(&r->S) == HYST_WARN_CLAMPED && (v < r->lo - tol || v > r->hi + tol);
+    } else if (r->model != NULL) { /* the creep of the input as the model took it */
+        *y = (double)hyst_step(&r->S, (hyst_real_t)x);
+        *y += (double)hyst_creep_step(&r->creep, hyst_input(&r->S));
+    } else {
+        *y = (double)hyst_step(&r->S, (hyst_real_t)x);
+    }
     if (r->late != NULL) { /* the sensor's reading now is the output `delay` samples ago */
         const double now = *y;
         *y = r->late[r->at];
@@ -158,7 +188,9 @@ static int tcm_step(void *ctx, double x, double *y, int *clamped)
     if ((hyst_events(&r->S) & HYST_EVENT_FULL) != 0u) {
         return cli_fail(r->cmd, "internal error: turning-point memory full");
     }
-    *clamped = hyst_status(&r->S) == HYST_WARN_CLAMPED;
+    if (r->model == NULL || !r->inverse) {
+        *clamped = hyst_status(&r->S) == HYST_WARN_CLAMPED;
+    }
     return 0;
 }
 
@@ -361,6 +393,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     r.late = NULL;
     r.delay = inverse ? 0u : model.delay;
     r.at = 0u;
+    r.model = model.ncreep > 0u ? &model : NULL;
     m.ctx = &r;
     m.begin = tcm_begin;
     m.step = tcm_step;
@@ -378,6 +411,12 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
         m.clamp_what = "inputs";
         m.lo = range[0];
         m.hi = range[1];
+    }
+    m.step_checks_range = inverse && r.model != NULL;
+    if (m.step_checks_range) {
+        m.clamp_what = "desired outputs less the creep term";
+        r.lo = m.lo;
+        r.hi = m.hi;
     }
     rc = cli_map_samples(cmd, &s, &m);
     if (rc == 0 && intervals > 0ul) {

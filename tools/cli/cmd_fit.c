@@ -21,7 +21,7 @@
 static const char help[] =
     "usage: hyst fit [--kind tcm|everett] [--degree N] [--t-degree K] [--skip S]\n"
     "                [--delay D] [--xcol I --ycol J] [--method joint|reflect]\n"
-    "                [--domain LO,HI]\n"
+    "                [--domain LO,HI] [--creep none|auto|TAU]\n"
     "                [--header NAME] [--header-dir DIR] [--save MODEL]\n"
     "                [--compare-pi N] [--decimal-comma] FILE\n"
     "       hyst fit --kind pi [--operators N] [--skip S] [--delay D]\n"
@@ -53,7 +53,17 @@ static const char help[] =
     "  --method M     estimator of f0: joint (default): both branches in one\n"
     "                 least-squares problem; reflect: the paper's Eq. 14\n"
     "  --domain LO,HI domain of the model (default: the range of the inputs used);\n"
-    "                 samples outside it are ignored\n"
+    "                 samples outside it are ignored\n";
+
+/* More of the help text (one literal would pass the length C99 promises). */
+static const char help_more[] =
+    "  --creep C      a creep term (docs/creep.md): the output plus a weight\n"
+    "                 times a lag of the input, for a drift under a sustained\n"
+    "                 drive. auto (default): each candidate is scored alone and\n"
+    "                 with one lag, its time constant the best of 100, 200, 500,\n"
+    "                 ..., 20000 samples on the hold-out and its weight one\n"
+    "                 parameter more, by the same rule; none: no creep term;\n"
+    "                 TAU: a lag of TAU samples (1..1e9), always\n"
     "  --decimal-comma ',' is the decimal mark (1,5 is 1.5); fields are then\n"
     "                 separated by blanks or ';'\n"
     "  --header NAME  also write NAME.h holding\n"
@@ -62,7 +72,7 @@ static const char help[] =
     "                 (in the current directory, or in DIR with --header-dir)\n"
     "  --header-dir DIR  directory of NAME.h (an existing directory; needs --header)\n"
     "  --save MODEL   also write the model file MODEL (format hyst-model-text 1:\n"
-    "                 the kind, f0 or E, the domain and the delay), which\n"
+    "                 the kind, f0 or E, the domain, the delay and the creep), which\n"
     "                 'hyst sim --model' and 'hyst header --model' read\n"
     "  --compare-pi N also fit a Prandtl-Ishlinskii model of N operators (see\n"
     "                 --kind pi) on the same first two thirds, with the same skip\n"
@@ -78,7 +88,7 @@ static const char help[] =
     "  --operators N  --kind pi: the number of operators, 1..64 (default 10)\n"
     "  --help         this text\n";
 
-/* The rest of the help text (one literal would pass the length C99 promises). */
+/* The rest of the help text. */
 static const char help_output[] =
     "\n"
     "Output: line 1 the coefficients cN,...,c0 (highest power first; kind everett:\n"
@@ -112,6 +122,10 @@ typedef struct fit_opts {
     int have_method;      /* --method given */
     size_t operators;     /* --operators, 0 when not given */
     size_t compare_pi;    /* --compare-pi N, 0 when not given */
+    double creep_tau;     /* --creep: -1 none, 0 auto (default), > 0 that time constant */
+    int with_creep;       /* the model fitted has a creep term, of time constant creep.tau */
+    fit_creep_t creep;    /* its hold-out figures (training fit) */
+    double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
 } fit_opts_t;
 
@@ -145,6 +159,7 @@ static int parse(fit_opts_t *o, int argc, char **argv)
         }
         if (cli_is(&a, "--help") || cli_is(&a, "-h")) {
             (void)fputs(help, stdout);
+            (void)fputs(help_more, stdout);
             (void)fputs(help_output, stdout);
             return -1;
         }
@@ -222,6 +237,17 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             o->header = v;
         } else if (cli_is(&a, "--save")) {
             o->save = v;
+        } else if (cli_is(&a, "--creep")) {
+            double tau;
+            if (strcmp(v, "none") == 0 || strcmp(v, "auto") == 0) {
+                o->creep_tau = v[0] == 'n' ? -1.0 : 0.0;
+            } else if (!cli_parse_double(v, &tau) || !(tau >= 1.0) || !(tau <= 1e9)) {
+                return cli_fail(a.cmd, "option --creep: %s is not none, auto or a time constant "
+                                       "of 1 to 1e9 samples",
+                                cli_quote(q, v));
+            } else {
+                o->creep_tau = tau;
+            }
         } else if (cli_is(&a, "--header-dir")) {
             if (v[0] == '\0' || strlen(v) > CLI_HEADER_DIR_MAX) {
                 return cli_fail(a.cmd, "option --header-dir: %s is empty or longer than %u bytes",
@@ -298,9 +324,10 @@ static const char everett_singular[] =
 static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
 {
     n_candidates = fit_select(&o->cfg, candidate_kinds(o), 0u,
-                              o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, t->col[0],
-                              t->col[1], t->n, o->have_delay ? o->cfg.delay : FIT_MAX_DELAY,
-                              candidates, MAX_CANDIDATES, &best_candidate);
+                              o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, o->creep_tau,
+                              t->col[0], t->col[1], t->n,
+                              o->have_delay ? o->cfg.delay : FIT_MAX_DELAY, candidates,
+                              MAX_CANDIDATES, &best_candidate, &o->with_creep);
     if (best_candidate == (size_t)-1) {
         return cli_fail("fit", "%s: no candidate degree gave %s that could predict the last "
                                "third of the record (give --degree)",
@@ -314,7 +341,30 @@ static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
     o->cfg.degree = candidates[best_candidate].degree;
     o->t_degree = candidates[best_candidate].t_degree;
     o->cfg.delay = candidates[best_candidate].delay;
+    o->creep = candidates[best_candidate].creep;
+    o->holdout = candidates[best_candidate].holdout_rms;
     return 0;
+}
+
+/* --degree given: the creep term of the model as given, scored by the same
+ * hold-out (with it only if the model without it errs by more than
+ * FIT_PARSIMONY over it; always with --creep TAU). */
+static void choose_creep(fit_opts_t *o, const cli_table_t *t)
+{
+    hyst_status_t st;
+    fit_creep_t *creep = o->creep_tau >= 0 ? &o->creep : NULL;
+    o->creep.tau = o->creep_tau > 0 ? o->creep_tau : 0.0;
+    if (o->final_kind == FIT_EVERETT) {
+        fit_everett_result_t train;
+        o->holdout = fit_everett_holdout(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n, &st,
+                                         &train, creep);
+    } else {
+        hyst_ident_result_t train;
+        o->holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train, creep);
+    }
+    o->with_creep = creep != NULL && o->creep.tau > 0 && isfinite(o->creep.holdout_rms) &&
+                    (o->creep_tau > 0 ||
+                     !(o->holdout <= o->creep.holdout_rms * (1.0 + FIT_PARSIMONY)));
 }
 
 static void print_candidates(const fit_opts_t *o)
@@ -324,12 +374,13 @@ static void print_candidates(const fit_opts_t *o)
     if (o->final_kind == FIT_EVERETT) {
         (void)snprintf(t_deg, sizeof t_deg, "t-degree %u, ", o->t_degree);
     }
-    (void)printf("# chosen by hold-out: degree %u, delay %lu (kind %s, %s%u parameters: the "
+    (void)printf("# chosen by hold-out: degree %u, delay %lu (kind %s, %s%s%u parameters: the "
                  "fewest within 1 %% of the lowest RMS prediction error on the last third of "
                  "the record, fitted on the first two thirds; kinds compared: %s)\n",
                  o->cfg.degree, (unsigned long)o->cfg.delay,
                  o->final_kind == FIT_EVERETT ? "everett" : "poly", t_deg,
-                 fit_parameters(o->final_kind, o->cfg.degree, o->t_degree),
+                 o->with_creep ? "creep, " : "",
+                 fit_option_parameters(&candidates[best_candidate], o->with_creep),
                  candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
                  : candidate_kinds(o) == FIT_EVERETT           ? "everett"
                                                                : "poly");
@@ -343,9 +394,16 @@ static void print_candidates(const fit_opts_t *o)
             (void)snprintf(name, sizeof name, "degree %u", c->degree);
         }
         if (isfinite(c->holdout_rms)) {
-            (void)printf("# candidate %s delay %lu: hold-out rms %.6g, fit rms %.6g%s\n", name,
-                         (unsigned long)c->delay, c->holdout_rms, c->fit_rms,
-                         i == best_candidate ? " (chosen)" : "");
+            char creep[96] = "";
+            if (c->creep.tau > 0 && isfinite(c->creep.holdout_rms)) {
+                (void)snprintf(creep, sizeof creep, "; with creep tau %.6g: %.6g", c->creep.tau,
+                               c->creep.holdout_rms);
+            }
+            (void)printf("# candidate %s delay %lu: hold-out rms %.6g, fit rms %.6g%s%s\n", name,
+                         (unsigned long)c->delay, c->holdout_rms, c->fit_rms, creep,
+                         i != best_candidate ? ""
+                         : o->with_creep     ? " (chosen, with creep)"
+                                             : " (chosen)");
         } else {
             (void)printf("# candidate %s delay %lu: not scored (%s)\n", name,
                          (unsigned long)c->delay,
@@ -456,31 +514,72 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
     return not_finite(name, f);
 }
 
+/* The creep term of the model fitted on the whole record: its weight and
+ * offset fitted to that model's residual over every sample (the offset
+ * folded into the model: f0's constant, or E's y_lo); the residual printed
+ * then is the model's with it. 0, or 1 after a message. */
+static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_table_t *t,
+                           fit_final_t *f)
+{
+    cli_model_t *m = &f->model;
+    fit_creep_t c;
+    hyst_poly_t f0;
+    hyst_curve_t curve;
+    unsigned k;
+    const size_t end = t->n - o->cfg.delay; /* every sample before it: no hold-out */
+    memset(&c, 0, sizeof c);
+    c.tau = o->creep.tau;
+    if (m->kind == CLI_MODEL_EVERETT) {
+        if (hyst_f64_curve_from_everett(&curve, &f->ev.e) != HYST_OK) {
+            return 0; /* refused: reported as such, nothing written */
+        }
+        (void)fit_model_run_creep(NULL, &curve, t->col[0], t->col[1], t->n, o->cfg.skip,
+                                  o->cfg.delay, end, NULL, NULL, &c);
+    } else {
+        memset(&f0, 0, sizeof f0);
+        f0.degree = f->r.degree;
+        f0.lo = (double)f->r.lo;
+        f0.hi = (double)f->r.hi;
+        for (k = 0u; k <= f->r.degree; ++k) {
+            f0.coeffs[k] = (double)f->r.coeffs[k];
+        }
+        (void)fit_model_run_creep(&f0, NULL, t->col[0], t->col[1], t->n, o->cfg.skip,
+                                  o->cfg.delay, end, NULL, NULL, &c);
+    }
+    if (!(c.tau > 0) || !isfinite(c.weight) || !isfinite(c.offset)) {
+        return cli_fail("fit", "%s: the creep term of time constant %g samples could not be "
+                               "fitted to the model's residual (a drive that never moves?)",
+                        name, o->creep.tau);
+    }
+    m->ncreep = 1u;
+    m->creep_tau[0] = c.tau;
+    m->creep_weight[0] = c.weight;
+    if (m->kind == CLI_MODEL_EVERETT) {
+        m->y_lo += c.offset;
+    } else {
+        m->coeffs[m->ncoef - 1u] += c.offset;
+    }
+    f->rms = c.fit_rms;
+    f->max_abs = c.max_abs;
+    return 0;
+}
+
 /* The --compare-pi line into line[0..size). */
 static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, size_t size)
 {
-    char tcm[64];
-    double holdout;
-    hyst_status_t st;
-    if (!o->have_degree) {
-        holdout = candidates[best_candidate].holdout_rms;
-    } else if (o->final_kind == FIT_EVERETT) {
-        fit_everett_result_t train;
-        holdout = fit_everett_holdout(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n, &st,
-                                      &train);
-    } else {
-        hyst_ident_result_t train;
-        holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train);
-    }
+    char tcm[96];
+    const double holdout = o->with_creep ? o->creep.holdout_rms : o->holdout;
     if (o->final_kind == FIT_EVERETT) {
-        (void)snprintf(tcm, sizeof tcm, "asymmetric (everett) TCM degree %u t-degree %u",
-                       o->cfg.degree, o->t_degree);
+        (void)snprintf(tcm, sizeof tcm, "asymmetric (everett) TCM degree %u t-degree %u%s",
+                       o->cfg.degree, o->t_degree, o->with_creep ? " with creep" : "");
     } else {
-        (void)snprintf(tcm, sizeof tcm, "TCM degree %u", o->cfg.degree);
+        (void)snprintf(tcm, sizeof tcm, "TCM degree %u%s", o->cfg.degree,
+                       o->with_creep ? " with creep" : "");
     }
     fit_pi_compare(t, o->compare_pi, o->cfg.skip, o->cfg.delay, tcm,
-                   fit_parameters(o->final_kind, o->cfg.degree, o->t_degree), holdout, line,
-                   size);
+                   fit_parameters(o->final_kind, o->cfg.degree, o->t_degree) +
+                       (o->with_creep ? 1u : 0u),
+                   holdout, line, size);
 }
 
 /* Lines 1 to 3 and the line that says what they are. */
@@ -496,15 +595,17 @@ static void print_result(const fit_final_t *f, unsigned t_degree, size_t pairs)
     (void)printf("\n%.15g,%.15g\n%.6g,%.6g\n", m->lo, m->hi, f->rms, f->max_abs);
     if (m->kind == CLI_MODEL_EVERETT) {
         (void)printf("# residual rms,max above: the asymmetric model (kind everett, degree %u, "
-                     "t-degree %u, y_lo %.15g) run over the record, %lu of %lu samples used%s; "
+                     "t-degree %u, y_lo %.15g%s) run over the record, %lu of %lu samples used%s; "
                      "line 1 E's terms e[i-1][j] of w^i t^j, i = 1..%u, j = 0..%u - i (0 above "
                      "the t-degree)\n",
-                     m->degree, t_degree, m->y_lo, (unsigned long)f->ev.used, (unsigned long)pairs,
+                     m->degree, t_degree, m->y_lo, m->ncreep > 0u ? ", with its creep term" : "",
+                     (unsigned long)f->ev.used, (unsigned long)pairs,
                      f->usable ? "" : " (least-squares residual: the model cannot run)",
                      m->degree, m->degree);
     } else {
-        (void)printf("# residual rms,max above; %s estimator, degree %u, %lu of %lu samples "
+        (void)printf("# residual rms,max above%s; %s estimator, degree %u, %lu of %lu samples "
                      "used (%lu rising, %lu falling)\n",
+                     m->ncreep > 0u ? " (the model with its creep term, run over the record)" : "",
                      method_name(f->r.method), f->r.degree, (unsigned long)f->r.used,
                      (unsigned long)pairs, (unsigned long)f->r.rising,
                      (unsigned long)f->r.falling);
@@ -675,8 +776,13 @@ int cmd_fit(int argc, char **argv)
             return 1;
         }
         pairs = t.n - o.cfg.skip - o.cfg.delay; /* at the chosen delay (fit_select() left samples) */
+    } else if (pairs > 0u && (o.creep_tau >= 0 || o.compare_pi != 0u)) {
+        choose_creep(&o, &t);
     }
     rc = fit_final(&o, name, &t, pairs, &f);
+    if (rc == 0 && o.with_creep && f.usable) {
+        rc = fit_final_creep(&o, name, &t, &f);
+    }
     if (rc == 0 && o.compare_pi != 0u) {
         compare_line(&o, &t, compare, sizeof compare);
     }
@@ -704,8 +810,19 @@ int cmd_fit(int argc, char **argv)
     if (!o.have_degree) {
         print_candidates(&o);
     }
-    (void)printf("# delay %lu samples\n# parameters %u\n", (unsigned long)o.cfg.delay,
-                 fit_parameters(o.final_kind, o.cfg.degree, o.t_degree));
+    (void)printf("# delay %lu samples\n", (unsigned long)o.cfg.delay);
+    if (o.with_creep && f.model.ncreep > 0u) {
+        (void)printf("# creep: tau %.6g samples, weight %.9g (hold-out rms %.6g; without it "
+                     "%.6g)\n",
+                     f.model.creep_tau[0], f.model.creep_weight[0], o.creep.holdout_rms,
+                     o.holdout);
+    } else if (o.creep_tau >= 0 && o.creep.tau > 0 && isfinite(o.creep.holdout_rms)) {
+        (void)printf("# creep: none (hold-out rms %.6g; with the best creep term, tau %.6g "
+                     "samples, %.6g)\n",
+                     o.holdout, o.creep.tau, o.creep.holdout_rms);
+    }
+    (void)printf("# parameters %u\n", fit_parameters(o.final_kind, o.cfg.degree, o.t_degree) +
+                                          (o.with_creep && f.model.ncreep > 0u ? 1u : 0u));
     (void)fputs(compare, stdout);
     print_usable(&f);
     if (fflush(stdout) != 0 || ferror(stdout)) {

@@ -138,5 +138,6 @@ int cmd_pi(int argc, char **argv)
     m.digits = 9;
     m.clamp_what = "inputs";
     m.lo = m.hi = 0.0;
+    m.step_checks_range = 0;
     return cli_map_samples(a.cmd, &s, &m);
 }

@@ -35,18 +35,38 @@ double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const dou
                      const double *y, size_t n, size_t skip, size_t delay, size_t from,
                      double *before_rms, double *max_abs)
 {
+    return fit_model_run_creep(f0, curve, x, y, n, skip, delay, from, before_rms, max_abs, NULL);
+}
+
+double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
+                           const double *y, size_t n, size_t skip, size_t delay, size_t from,
+                           double *before_rms, double *max_abs, fit_creep_t *creep)
+{
     hyst_tcm_t S;
     const size_t cap = n > delay + skip ? (n - delay - skip) / 2u + 2u : 2u;
-    double *mem, ss = 0.0, ss_before = 0.0, worst = 0.0;
+    const size_t len = n > delay + skip ? n - delay - skip : 0u;
+    double *mem, *u = NULL, *r = NULL, ss = 0.0, ss_before = 0.0, worst = 0.0;
     size_t k, used = 0u, before = 0u;
     hyst_status_t st;
+    const double tau = creep != NULL ? creep->tau : 0.0;
     if (before_rms != NULL) {
         *before_rms = NAN;
     }
     if (max_abs != NULL) {
         *max_abs = NAN;
     }
+    if (creep != NULL) {
+        memset(creep, 0, sizeof *creep);
+        creep->holdout_rms = NAN;
+        creep->fit_rms = NAN;
+        /* the model's inputs and residuals, for the creep fitted to them */
+        if (len == 0u || (u = (double *)malloc(2u * len * sizeof(double))) == NULL) {
+            return NAN;
+        }
+        r = u + len;
+    }
     if ((mem = (double *)malloc(4u * cap * sizeof(double))) == NULL) {
+        free(u);
         return NAN;
     }
     st = f0 != NULL ? hyst_f64_init(&S, f0, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap)
@@ -54,11 +74,17 @@ double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const dou
                                           mem + 3u * cap, cap);
     if (st != HYST_OK) {
         free(mem);
+        free(u);
         return NAN;
     }
     for (k = skip; k + delay < n; ++k) {
         const double ym = hyst_f64_step(&S, x[k]);
-        if (isfinite(x[k]) && isfinite(y[k + delay])) {
+        const int ok = isfinite(x[k]) && isfinite(y[k + delay]);
+        if (u != NULL) { /* the input as the model took it (clamped; the last one for NaN) */
+            u[k - skip] = hyst_f64_input(&S);
+            r[k - skip] = ok ? y[k + delay] - ym : NAN;
+        }
+        if (ok) {
             const double e = ym - y[k + delay];
             if (k >= from) {
                 ss += e * e;
@@ -71,6 +97,11 @@ double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const dou
         }
     }
     free(mem);
+    if (u != NULL) {
+        const double x_rest = f0 != NULL ? (double)f0->lo : curve->lo.f64;
+        fit_creep_score(u, r, len, from > skip ? from - skip : 0u, x_rest, tau, creep);
+        free(u);
+    }
     if (before_rms != NULL && before > 0u) {
         *before_rms = sqrt(ss_before / (double)before);
     }
@@ -87,7 +118,8 @@ static size_t train_count(size_t n, size_t skip, size_t delay)
 }
 
 double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
-                       size_t n, hyst_status_t *status, hyst_ident_result_t *fit)
+                       size_t n, hyst_status_t *status, hyst_ident_result_t *fit,
+                       fit_creep_t *creep)
 {
     hyst_ident_t work;
     hyst_poly_t f0;
@@ -110,13 +142,13 @@ double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const do
     for (i = 0u; i <= fit->degree; ++i) {
         f0.coeffs[i] = (double)fit->coeffs[i];
     }
-    return fit_model_run(&f0, NULL, x, y, n, cfg->skip, cfg->delay, cfg->skip + train, NULL,
-                         NULL);
+    return fit_model_run_creep(&f0, NULL, x, y, n, cfg->skip, cfg->delay, cfg->skip + train,
+                               NULL, NULL, creep);
 }
 
 double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
                            const double *y, size_t n, hyst_status_t *status,
-                           fit_everett_result_t *fit)
+                           fit_everett_result_t *fit, fit_creep_t *creep)
 {
     hyst_curve_t curve;
     size_t train;
@@ -133,8 +165,8 @@ double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, co
     if (*status != HYST_OK || hyst_f64_curve_from_everett(&curve, &fit->e) != HYST_OK) {
         return NAN;
     }
-    return fit_model_run(NULL, &curve, x, y, n, cfg->skip, cfg->delay, cfg->skip + train, NULL,
-                         NULL);
+    return fit_model_run_creep(NULL, &curve, x, y, n, cfg->skip, cfg->delay, cfg->skip + train,
+                               NULL, NULL, creep);
 }
 
 double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const double *y,
@@ -168,28 +200,47 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
-/* Candidate c fitted and scored: kind, degree (t_degree) and delay set by the caller. */
+/* Candidate c fitted and scored: kind, degree (t_degree) and delay set by
+ * the caller; with a creep term too unless creep_tau < 0 (0: its time
+ * constant chosen). */
 static void score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                  fit_candidate_t *c)
+                  double creep_tau, fit_candidate_t *c)
 {
     hyst_ident_config_t cfg = *base;
+    fit_creep_t *creep = creep_tau >= 0 ? &c->creep : NULL;
     cfg.degree = c->degree;
     cfg.delay = c->delay;
+    c->creep.tau = creep_tau >= 0 ? creep_tau : 0.0;
+    c->creep.holdout_rms = NAN;
     if (c->kind == FIT_EVERETT) {
         fit_everett_result_t ev;
-        c->holdout_rms = fit_everett_holdout(&cfg, c->t_degree, x, y, n, &c->status, &ev);
+        c->holdout_rms = fit_everett_holdout(&cfg, c->t_degree, x, y, n, &c->status, &ev, creep);
         c->fit_rms = ev.rms;
     } else {
-        c->holdout_rms = fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit);
+        c->holdout_rms = fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit, creep);
         c->fit_rms = (double)c->fit.rms;
     }
+    if (!isfinite(c->holdout_rms)) {
+        c->creep.tau = 0.0; /* the model itself could not be scored */
+        c->creep.holdout_rms = NAN;
+    }
+}
+
+double fit_option_rms(const fit_candidate_t *c, int with_creep)
+{
+    return with_creep ? (c->creep.tau > 0 ? c->creep.holdout_rms : NAN) : c->holdout_rms;
+}
+
+unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
+{
+    return fit_parameters(c->kind, c->degree, c->t_degree) + (with_creep ? 1u : 0u);
 }
 
 /* Adds candidate (kind, degree, t_degree, delay), scored, at cand[*count]
  * unless cand is full; *best the lowest hold-out RMS so far. */
 static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                int kind, unsigned degree, unsigned t_degree, size_t delay,
-                fit_candidate_t *cand, size_t max_cand, size_t *count, size_t *best)
+                double creep_tau, int kind, unsigned degree, unsigned t_degree, size_t delay,
+                fit_candidate_t *cand, size_t max_cand, size_t *count)
 {
     fit_candidate_t *c = &cand[*count];
     if (*count >= max_cand) {
@@ -200,49 +251,68 @@ static void add(const hyst_ident_config_t *base, const double *x, const double *
     c->degree = degree;
     c->t_degree = t_degree;
     c->delay = delay;
-    score(base, x, y, n, c);
-    if (isfinite(c->holdout_rms) &&
-        (*best == (size_t)-1 || c->holdout_rms < cand[*best].holdout_rms)) {
-        *best = *count;
-    }
+    score(base, x, y, n, creep_tau, c);
     ++*count;
 }
 
 size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
-                  unsigned t_degree, const double *x, const double *y, size_t n,
-                  size_t max_delay, fit_candidate_t *cand, size_t max_cand, size_t *best)
+                  unsigned t_degree, double creep_tau, const double *x, const double *y,
+                  size_t n, size_t max_delay, fit_candidate_t *cand, size_t max_cand,
+                  size_t *best, int *with_creep)
 {
     size_t count = 0u, d, i;
     unsigned deg, k;
+    /* the options compared: without creep unless a time constant is given,
+     * with it unless creep_tau < 0 */
+    const int wc_first = creep_tau > 0 ? 1 : 0, wc_last = creep_tau < 0 ? 0 : 1;
+    int wc, low_creep = 0;
+    double lowest = NAN;
     *best = (size_t)-1;
+    *with_creep = 0;
     for (d = base->delay; d <= max_delay; ++d) {
         if (n <= base->skip + d) {
             break;
         }
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
-            add(base, x, y, n, FIT_POLY, deg, 0u, d, cand, max_cand, &count, best);
+            add(base, x, y, n, creep_tau, FIT_POLY, deg, 0u, d, cand, max_cand, &count);
         }
         for (deg = 1u; (kinds & FIT_EVERETT) != 0 && deg <= HYST_EVERETT_MAX_DEGREE; ++deg) {
             for (k = 0u; k < deg && (everett_degree == 0u || deg == everett_degree); ++k) {
                 if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
-                    add(base, x, y, n, FIT_EVERETT, deg, k, d, cand, max_cand, &count, best);
+                    add(base, x, y, n, creep_tau, FIT_EVERETT, deg, k, d, cand, max_cand,
+                        &count);
                 }
             }
         }
     }
-    if (*best != (size_t)-1) { /* parsimony: the fewest parameters within 1 % of the best */
-        const double limit = cand[*best].holdout_rms * (1.0 + FIT_PARSIMONY);
-        for (i = 0u; i < count; ++i) {
-            const fit_candidate_t *c = &cand[i], *b = &cand[*best];
-            const unsigned pc = fit_parameters(c->kind, c->degree, c->t_degree);
-            const unsigned pb = fit_parameters(b->kind, b->degree, b->t_degree);
-            /* between as many parameters: the symmetric kind (its
-             * compensator is a table), then the lower error */
-            const int sym_c = c->kind == FIT_POLY, sym_b = b->kind == FIT_POLY;
-            if (isfinite(c->holdout_rms) && c->holdout_rms <= limit &&
-                (pc < pb || (pc == pb && (sym_c > sym_b || (sym_c == sym_b &&
-                                                            c->holdout_rms < b->holdout_rms))))) {
+    /* every option (a candidate without, or with its creep term): the lowest error */
+    for (i = 0u; i < count; ++i) {
+        for (wc = wc_first; wc <= wc_last; ++wc) {
+            const double e = fit_option_rms(&cand[i], wc);
+            if (isfinite(e) && !(lowest <= e)) {
+                lowest = e;
                 *best = i;
+                low_creep = wc;
+            }
+        }
+    }
+    *with_creep = low_creep;
+    if (*best != (size_t)-1) { /* parsimony: the fewest parameters within 1 % of the best */
+        const double limit = lowest * (1.0 + FIT_PARSIMONY);
+        for (i = 0u; i < count; ++i) {
+            for (wc = wc_first; wc <= wc_last; ++wc) {
+                const fit_candidate_t *c = &cand[i], *b = &cand[*best];
+                const double ec = fit_option_rms(c, wc), eb = fit_option_rms(b, *with_creep);
+                const unsigned pc = fit_option_parameters(c, wc);
+                const unsigned pb = fit_option_parameters(b, *with_creep);
+                /* between as many parameters: the symmetric kind (its
+                 * compensator is a table), then the lower error */
+                const int sym_c = c->kind == FIT_POLY, sym_b = b->kind == FIT_POLY;
+                if (isfinite(ec) && ec <= limit &&
+                    (pc < pb || (pc == pb && (sym_c > sym_b || (sym_c == sym_b && ec < eb))))) {
+                    *best = i;
+                    *with_creep = wc;
+                }
             }
         }
     }

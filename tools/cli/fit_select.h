@@ -24,6 +24,24 @@ enum { FIT_POLY = 1, FIT_EVERETT = 2 };
 /* Everett candidates of each delay: (degree d, t-degree 0..d - 1), d = 1..4. */
 #define FIT_EVERETT_CANDIDATES (HYST_EVERETT_MAX_DEGREE * (HYST_EVERETT_MAX_DEGREE + 1u) / 2u)
 
+/* The creep term of a candidate (fit_creep.c): one lag of time constant
+ * tau samples (0: none), its weight and the offset it needs, fitted on the
+ * training part of the model's residual; the model with it scored on the
+ * hold-out part (NaN: not scored). */
+typedef struct fit_creep {
+    double tau, weight, offset;
+    double holdout_rms, fit_rms;
+    double max_abs; /* the largest error of the model with it, over every sample */
+} fit_creep_t;
+
+/* The creep on a model's run: u[k] its inputs, r[k] the measurement minus
+ * its prediction (NaN where missing), k < len; fitted on k < train, scored
+ * on the rest. tau > 0: that time constant; 0: each of a 1-2-5 series from
+ * 100 samples up to len, the lowest hold-out error into *best (its tau 0
+ * if none could be fitted, e.g. train == len leaves no hold-out). */
+void fit_creep_score(const double *u, const double *r, size_t len, size_t train, double x_rest,
+                     double tau, fit_creep_t *best);
+
 typedef struct fit_candidate {
     int kind;                 /* FIT_POLY or FIT_EVERETT */
     unsigned degree;
@@ -33,6 +51,7 @@ typedef struct fit_candidate {
     hyst_ident_result_t fit;  /* poly: on the first two thirds */
     double fit_rms;           /* residual of the training fit (poly: fit.rms) */
     double holdout_rms;       /* model's RMS error on the last third; NaN: not scored */
+    fit_creep_t creep;        /* the model with a creep term (creep.tau 0: none) */
 } fit_candidate_t;
 
 /* The asymmetric kind fitted on a record (fit_everett.c). */
@@ -58,11 +77,20 @@ double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const dou
                      const double *y, size_t n, size_t skip, size_t delay, size_t from,
                      double *before_rms, double *max_abs);
 
+/* fit_model_run() and, creep not NULL, the creep term fitted to its residual
+ * on the samples before `from` and scored after (fit_creep_score(); creep->tau
+ * on entry: the time constant, 0 to choose one). */
+double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
+                           const double *y, size_t n, size_t skip, size_t delay, size_t from,
+                           double *before_rms, double *max_abs, fit_creep_t *creep);
+
 /* The TCM of cfg (degree, delay, skip...) fitted on the first two thirds of
  * the record and run over all of it from rest: its RMS error on the last
- * third (NaN if the fit failed, *status, or f0 is not increasing). */
+ * third (NaN if the fit failed, *status, or f0 is not increasing); creep (may
+ * be NULL): as fit_model_run_creep(). */
 double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
-                       size_t n, hyst_status_t *status, hyst_ident_result_t *fit);
+                       size_t n, hyst_status_t *status, hyst_ident_result_t *fit,
+                       fit_creep_t *creep);
 
 /* E of degree cfg->degree, its terms w^i t^j with j <= t_degree, fitted to x[k] with y[k + delay], skip <= k <
  * n - delay (the model from rest at sample skip), on [cfg->lo, cfg->hi]
@@ -77,7 +105,7 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
  * library refused E (*status says which). */
 double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
                            const double *y, size_t n, hyst_status_t *status,
-                           fit_everett_result_t *fit);
+                           fit_everett_result_t *fit, fit_creep_t *creep);
 
 /* The same for the PI model of cfg (operators, skip, delay; the thresholds
  * uniform over the training part's inputs unless given): r, w its N
@@ -87,17 +115,27 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
                       size_t n, hyst_status_t *status, hyst_pi_fit_result_t *fit, double *r,
                       double *w);
 
+/* A candidate's two options: the model alone, or with its creep term
+ * (with_creep): the hold-out RMS (NaN: not scored) and the parameters (the
+ * creep's weight is one more; its time constant is chosen from a series,
+ * like the delay, and not counted). */
+double fit_option_rms(const fit_candidate_t *c, int with_creep);
+unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep);
+
 /* Fits each kind of the mask `kinds` (poly degree 1..HYST_MAX_DEGREE,
  * everett degree 1..HYST_EVERETT_MAX_DEGREE with each t-degree 0..degree - 1;
  * everett_degree, when not 0, the only everett degree, t_degree, when not
  * FIT_ANY_T_DEGREE, the only t-degree) at each delay from base->delay to
- * max_delay (base: method, domain, skip) into cand[0..max_cand); returns
- * the count, *best the index chosen: the fewest parameters within
- * FIT_PARSIMONY of the lowest hold-out RMS; between as many parameters the
- * symmetric kind (its compensator is a table, the asymmetric kind's solves),
- * then the lower RMS ((size_t)-1: none could be scored). */
+ * max_delay (base: method, domain, skip) into cand[0..max_cand), each also
+ * with a creep term unless creep_tau < 0 (0: its time constant chosen,
+ * fit_creep_score()); returns the count, *best the index chosen and
+ * *with_creep its option: the fewest parameters within FIT_PARSIMONY of the
+ * lowest hold-out RMS of all options; between as many parameters the
+ * symmetric kind (its compensator is a table, the asymmetric kind's
+ * solves), then the lower RMS ((size_t)-1: none could be scored). */
 size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
-                  unsigned t_degree, const double *x, const double *y, size_t n,
-                  size_t max_delay, fit_candidate_t *cand, size_t max_cand, size_t *best);
+                  unsigned t_degree, double creep_tau, const double *x, const double *y,
+                  size_t n, size_t max_delay, fit_candidate_t *cand, size_t max_cand,
+                  size_t *best, int *with_creep);
 
 #endif

@@ -83,9 +83,22 @@ static unsigned long field_at(const char *line, unsigned long col)
 #define MODEL_MAX_FIELDS \
     (HYST_MAX_DEGREE + 2 > HYST_EVERETT_TERMS + 1 ? HYST_MAX_DEGREE + 2 : HYST_EVERETT_TERMS + 1)
 
-enum { K_KIND, K_LO, K_HI, K_COEFFS, K_DELAY, K_Y_LO, K_DEGREE, K_TERMS, K_COUNT };
-static const char *const keys[K_COUNT] = {"kind", "lo",   "hi",     "coeffs",
-                                          "delay", "y_lo", "degree", "terms"};
+enum {
+    K_KIND,
+    K_LO,
+    K_HI,
+    K_COEFFS,
+    K_DELAY,
+    K_Y_LO,
+    K_DEGREE,
+    K_TERMS,
+    K_CREEP_TAU,
+    K_CREEP_WEIGHT,
+    K_COUNT
+};
+static const char *const keys[K_COUNT] = {"kind",  "lo",   "hi",     "coeffs",    "delay",
+                                          "y_lo",  "degree", "terms", "creep_tau",
+                                          "creep_weight"};
 
 /* What a key's line needs: 0 if n fields are right, else a message. */
 static int model_count(const char *cmd, const char *path, unsigned long no, int k, size_t n)
@@ -101,6 +114,11 @@ static int model_count(const char *cmd, const char *path, unsigned long no, int 
         most = HYST_EVERETT_TERMS + 1u;
         (void)snprintf(text, sizeof text, "1 to %u numbers (E's coefficients)",
                        (unsigned)HYST_EVERETT_TERMS);
+        needs = text;
+    } else if (k == K_CREEP_TAU || k == K_CREEP_WEIGHT) {
+        most = CLI_CREEP_MAX_TERMS + 1u;
+        (void)snprintf(text, sizeof text, "1 to %u numbers (one per creep term)",
+                       (unsigned)CLI_CREEP_MAX_TERMS);
         needs = text;
     }
     if (n < least) {
@@ -134,6 +152,9 @@ static int model_value(const char *cmd, const char *path, unsigned long no, int 
     } else if (ok && k == K_DEGREE) {
         ok = whole(v, 1.0, (double)HYST_EVERETT_MAX_DEGREE);
         what = "a degree in 1.." STR(HYST_EVERETT_MAX_DEGREE);
+    } else if (ok && k == K_CREEP_TAU) {
+        ok = v >= 1.0;
+        what = "a time constant of at least 1 sample";
     }
     if (!ok) {
         return cli_fail(cmd, "%s:%lu: field %lu: %s is not %s", path, no, (unsigned long)(i + 1u),
@@ -146,6 +167,8 @@ static int model_value(const char *cmd, const char *path, unsigned long no, int 
     case K_Y_LO: m->y_lo = v; break;
     case K_DEGREE: m->degree = (unsigned)v; break;
     case K_TERMS: m->terms[i - 1u] = v; break;
+    case K_CREEP_TAU: m->creep_tau[i - 1u] = v; break;
+    case K_CREEP_WEIGHT: m->creep_weight[i - 1u] = v; break;
     default: m->coeffs[i - 1u] = v; break;
     }
     return 0;
@@ -180,6 +203,18 @@ static int model_complete(const char *cmd, const char *path, const unsigned long
             return cli_fail(cmd, "%s: the key %s is missing", path, keys[need[i]]);
         }
     }
+    if ((line[K_CREEP_TAU] != 0ul) != (line[K_CREEP_WEIGHT] != 0ul)) {
+        const int k_has = line[K_CREEP_TAU] != 0ul ? K_CREEP_TAU : K_CREEP_WEIGHT;
+        return cli_fail(cmd, "%s:%lu: field 1: %s needs %s too (creep: both or neither)", path,
+                        line[k_has], keys[k_has],
+                        keys[k_has == K_CREEP_TAU ? K_CREEP_WEIGHT : K_CREEP_TAU]);
+    }
+    if (m->ncreep != m->ncreep_weights) {
+        return cli_fail(cmd, "%s:%lu: creep_weight and creep_tau differ in length (%lu and %lu "
+                        "numbers: one of each per term)",
+                        path, line[K_CREEP_WEIGHT], (unsigned long)m->ncreep_weights,
+                        (unsigned long)m->ncreep);
+    }
     if (everett && m->nterms != cli_everett_terms(m->degree)) {
         const size_t want = cli_everett_terms(m->degree);
         return cli_fail(cmd, "%s:%lu: field %lu%s: terms needs %lu numbers for degree %u", path,
@@ -195,11 +230,12 @@ int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
 {
     char line[1024], *f[MODEL_MAX_FIELDS + 1];
     char q[CLI_QUOTE_SIZE];
-    unsigned long seen[K_COUNT] = {0ul, 0ul, 0ul, 0ul, 0ul, 0ul, 0ul, 0ul}; /* line of each key */
+    unsigned long seen[K_COUNT]; /* line of each key */
     unsigned long no = 0ul, nul;
     size_t n, i;
     int k, longer;
     memset(m, 0, sizeof *m);
+    memset(seen, 0, sizeof seen);
     while (model_line(in, line, sizeof line, &nul, &longer)) {
         ++no;
         if (longer) {
@@ -226,8 +262,9 @@ int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
         }
         if (k == K_COUNT || seen[k] != 0ul) {
             return cli_fail(cmd, "%s:%lu: field 1: %s %s", path, no, cli_quote(q, f[0]),
-                            k == K_COUNT ? "is not a key (kind, lo, hi, delay, coeffs; "
-                                           "kind everett: y_lo, degree, terms)"
+                            k == K_COUNT ? "is not a key (kind, lo, hi, delay, coeffs, "
+                                           "creep_tau, creep_weight; kind everett: y_lo, "
+                                           "degree, terms)"
                                          : "given twice");
         }
         seen[k] = no;
@@ -251,6 +288,10 @@ int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
             m->ncoef = n - 1u;
         } else if (k == K_TERMS) {
             m->nterms = n - 1u;
+        } else if (k == K_CREEP_TAU) {
+            m->ncreep = n - 1u;
+        } else if (k == K_CREEP_WEIGHT) {
+            m->ncreep_weights = n - 1u;
         }
     }
     if (no == 0ul) {
@@ -306,6 +347,15 @@ size_t cli_model_text(const cli_model_t *m, char *buf, size_t size)
                                 "kind poly\nlo %.17g\nhi %.17g\ndelay %lu\ncoeffs",
                           m->delay, m->lo, m->hi, m->delay);
         over |= append_numbers(buf, size, &len, m->coeffs, m->ncoef);
+    }
+    if (m->ncreep > 0u) {
+        over |= cli_append(buf, size, &len,
+                           "\n# creep: the output plus sum of creep_weight[k] s_k, s_k the "
+                           "input lagged with time constant creep_tau[k] samples (from lo at "
+                           "rest)\ncreep_tau");
+        over |= append_numbers(buf, size, &len, m->creep_tau, m->ncreep);
+        over |= cli_append(buf, size, &len, "\ncreep_weight");
+        over |= append_numbers(buf, size, &len, m->creep_weight, m->ncreep);
     }
     over |= cli_append(buf, size, &len, "\n");
     return over ? 0u : len;
@@ -402,6 +452,33 @@ static int header_everett(char *buf, size_t size, size_t *len, const char *name,
     return over | cli_append(buf, size, len, "}};\n");
 }
 
+/* The creep term, if any: its count, time constants and weights, for
+ * hyst_creep_init() with the domain's lo as the rest drive. */
+static int header_creep(char *buf, size_t size, size_t *len, const char *name,
+                        const cli_model_t *m)
+{
+    size_t i;
+    int over;
+    if (m->ncreep == 0u) {
+        return 0;
+    }
+    over = cli_append(buf, size, len,
+                      "\n/* creep: add hyst_creep_step() of the model's input to its output\n"
+                      " * (hyst/creep.h): hyst_creep_init(&creep, %s_CREEP_TERMS,\n"
+                      " * %s_creep_tau, %s_creep_weight, lo) */\n#define %s_CREEP_TERMS %luu\n"
+                      "static const hyst_wide_t %s_creep_tau[%s_CREEP_TERMS] = {",
+                      name, name, name, name, (unsigned long)m->ncreep, name, name);
+    for (i = 0u; i < m->ncreep; ++i) {
+        over |= append_real(buf, size, len, i ? ", " : "", m->creep_tau[i]);
+    }
+    over |= cli_append(buf, size, len, "};\nstatic const hyst_wide_t %s_creep_weight[%s_CREEP_TERMS] = {",
+                       name, name);
+    for (i = 0u; i < m->ncreep; ++i) {
+        over |= append_real(buf, size, len, i ? ", " : "", m->creep_weight[i]);
+    }
+    return over | cli_append(buf, size, len, "};\n");
+}
+
 /* The include guard of NAME.h: NAME in capitals, then _H. */
 static void guard_of(const char *name, char *guard, size_t size)
 {
@@ -418,10 +495,10 @@ int cli_header_open(char *buf, size_t size, size_t *len, const char *name, const
     size_t i;
     int over;
     guard_of(name, guard, sizeof guard);
-    over = cli_append(buf, size, len, "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n\n",
-                      guard, guard);
+    over = cli_append(buf, size, len, "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n%s\n",
+                      guard, guard, m->ncreep > 0u ? "#include \"hyst/creep.h\"\n" : "");
     if (m->kind == CLI_MODEL_EVERETT) {
-        return over | header_everett(buf, size, len, name, m);
+        return over | header_everett(buf, size, len, name, m) | header_creep(buf, size, len, name, m);
     }
     over |= cli_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,", name,
                        (unsigned)(m->ncoef - 1u));
@@ -431,7 +508,7 @@ int cli_header_open(char *buf, size_t size, size_t *len, const char *name, const
     for (i = 0u; i < m->ncoef; ++i) {
         over |= append_real(buf, size, len, i ? ",\n     " : "", m->coeffs[i]);
     }
-    return over | cli_append(buf, size, len, "}};\n");
+    return over | cli_append(buf, size, len, "}};\n") | header_creep(buf, size, len, name, m);
 }
 
 int cli_header_close(char *buf, size_t size, size_t *len, const char *name)

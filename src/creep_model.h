@@ -1,0 +1,79 @@
+/* SPDX-License-Identifier: MIT */
+/* The creep model's per-sample functions in one real type (creep.h).
+ * Included by src/hyst_creep.c once per real variant, after NUM_T (the
+ * type), NUM_F (its member of hyst_num_t), NUM_NAME (the prefix) and
+ * NUM_VARIANT; no include guard for that reason. */
+#if !defined(NUM_T) || !defined(NUM_F) || !defined(NUM_NAME) || !defined(NUM_VARIANT)
+#error "creep_model.h: define NUM_T, NUM_F, NUM_NAME and NUM_VARIANT first"
+#endif
+
+/* Finite without libm and without widening (a float-to-double conversion
+ * is a call on single-precision FPUs). */
+HYST_INLINE int NUM_NAME(creep_finite_)(NUM_T v)
+{
+    const NUM_T z = v - v;
+    return z == z;
+}
+
+hyst_status_t NUM_NAME(creep_init_)(hyst_creep_t *C, size_t n_terms, const hyst_wide_t *tau,
+                                    const hyst_wide_t *weight, hyst_wide_t x_rest,
+                                    unsigned long layout)
+{
+    return init_any(C, n_terms, tau, weight, x_rest, NUM_VARIANT, layout);
+}
+
+hyst_status_t NUM_NAME(creep_reset)(hyst_creep_t *C, NUM_T x_rest)
+{
+    size_t k;
+    if (C == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (C->variant != (unsigned)NUM_VARIANT) {
+        return HYST_ERR_LAYOUT;
+    }
+    if (!NUM_NAME(creep_finite_)(x_rest)) {
+        return HYST_ERR_NONFINITE;
+    }
+    for (k = 0u; k < C->n; ++k) {
+        C->state[k].NUM_F = x_rest;
+    }
+    C->status = HYST_OK;
+    C->events = 0u;
+    return HYST_OK;
+}
+
+/* The same sum, in the same order, as the step's: output() is bit for bit
+ * what the next step returns. */
+NUM_T NUM_NAME(creep_output)(const hyst_creep_t *C)
+{
+    NUM_T c = 0;
+    size_t k;
+    if (C == NULL) {
+        return 0;
+    }
+    for (k = 0u; k < C->n; ++k) {
+        c += C->weight[k].NUM_F * C->state[k].NUM_F;
+    }
+    return c;
+}
+
+NUM_T NUM_NAME(creep_step)(hyst_creep_t *C, NUM_T x)
+{
+    NUM_T c = 0;
+    size_t k;
+    if (C == NULL) {
+        return 0;
+    }
+    if (!NUM_NAME(creep_finite_)(x)) {
+        C->status = HYST_ERR_NONFINITE;
+        C->events |= HYST_EVENT_NONFINITE;
+        return NUM_NAME(creep_output)(C);
+    }
+    for (k = 0u; k < C->n; ++k) {
+        const NUM_T s = C->state[k].NUM_F;
+        c += C->weight[k].NUM_F * s;
+        C->state[k].NUM_F = s + C->alpha[k].NUM_F * (x - s);
+    }
+    C->status = HYST_OK;
+    return c;
+}

@@ -1,0 +1,266 @@
+/* SPDX-License-Identifier: MIT */
+/* Creep (creep.h): the checks, accessors and identification written once;
+ * the per-sample functions of each real variant from src/creep_model.h. */
+#include "hyst/creep.h"
+
+#include "hyst_util.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#if defined(HYST_NO_DOUBLE)
+#define WIDE_SQRT(v) sqrtf(v) /* no double math linked */
+#else
+#define WIDE_SQRT(v) sqrt(v)
+#endif
+
+/* A time constant both the model and its fit accept. */
+static int tau_ok(hyst_wide_t tau) { return hyst_wide_is_finite(tau) && tau >= 1; }
+
+/* a = 1 / tau in the variant's type into *alpha; 0 if tau is refused or a
+ * is not a normal number there (a subnormal a loses its precision, and
+ * cores that flush subnormals would freeze the lag). */
+static int lag_rate(hyst_wide_t tau, unsigned variant, hyst_num_t *alpha)
+{
+    const hyst_wide_t least =
+        variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_MIN : HYST_WIDE_MIN;
+    if (!tau_ok(tau)) {
+        return 0;
+    }
+    (void)hyst_num_set(alpha, variant, 1 / tau);
+    return hyst_num_get(alpha, variant) >= least;
+}
+
+/* The init of every real variant: the instance is built aside and copied
+ * whole, so an error writes nothing. */
+static hyst_status_t init_any(hyst_creep_t *C, size_t n_terms, const hyst_wide_t *tau,
+                              const hyst_wide_t *weight, hyst_wide_t x_rest, unsigned variant,
+                              unsigned long layout)
+{
+    hyst_creep_t out;
+    size_t k;
+    if (C == NULL || tau == NULL || weight == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
+    }
+    if (n_terms < 1u || n_terms > HYST_CREEP_MAX_TERMS) {
+        return HYST_ERR_ARG;
+    }
+    memset(&out, 0, sizeof out);
+    for (k = 0u; k < n_terms; ++k) {
+        if (!lag_rate(tau[k], variant, &out.alpha[k])) {
+            return HYST_ERR_ARG;
+        }
+        if (!hyst_num_set(&out.weight[k], variant, weight[k])) { /* NaN fails too */
+            return HYST_ERR_WEIGHTS;
+        }
+        if (!hyst_num_set(&out.state[k], variant, x_rest)) {
+            return HYST_ERR_NONFINITE;
+        }
+    }
+    out.variant = variant;
+    out.n = n_terms;
+    out.status = HYST_OK;
+    *C = out;
+    return HYST_OK;
+}
+
+#define NUM_T float
+#define NUM_F f32
+#define NUM_NAME(n) hyst_f32_##n
+#define NUM_VARIANT HYST_VARIANT_F32
+#include "creep_model.h"
+#undef NUM_T
+#undef NUM_F
+#undef NUM_NAME
+#undef NUM_VARIANT
+
+#if HYST_ENABLE_F64
+#define NUM_T double
+#define NUM_F f64
+#define NUM_NAME(n) hyst_f64_##n
+#define NUM_VARIANT HYST_VARIANT_F64
+#include "creep_model.h"
+#undef NUM_T
+#undef NUM_F
+#undef NUM_NAME
+#undef NUM_VARIANT
+#endif
+
+int hyst_creep_status(const hyst_creep_t *C) { return C != NULL ? C->status : HYST_ERR_NULL; }
+
+unsigned hyst_creep_events(const hyst_creep_t *C) { return C != NULL ? C->events : 0u; }
+
+void hyst_creep_clear_events(hyst_creep_t *C)
+{
+    if (C != NULL) {
+        C->events = 0u;
+    }
+}
+
+size_t hyst_creep_size(const hyst_creep_t *C) { return C != NULL ? C->n : 0u; }
+
+/* ---- Identification ---- */
+
+hyst_status_t hyst_creep_fit_init(hyst_creep_fit_t *F, size_t n_terms, const hyst_wide_t *tau,
+                                  hyst_wide_t x_rest)
+{
+    hyst_creep_fit_t out;
+    size_t k;
+    if (F == NULL || tau == NULL) {
+        return HYST_ERR_NULL;
+    }
+    memset(&out, 0, sizeof out);
+    if (n_terms < 1u || n_terms > HYST_CREEP_MAX_TERMS) {
+        return HYST_ERR_ARG;
+    }
+    for (k = 0u; k < n_terms; ++k) {
+        if (!tau_ok(tau[k])) {
+            return HYST_ERR_ARG;
+        }
+        out.alpha[k] = 1 / tau[k];
+        out.state[k] = x_rest;
+    }
+    if (!hyst_wide_is_finite(x_rest)) {
+        return HYST_ERR_NONFINITE;
+    }
+    out.n = n_terms;
+    *F = out;
+    return HYST_OK;
+}
+
+/* The lags take the drive x in, as hyst_*_creep_step() does. */
+static void fit_advance(hyst_creep_fit_t *F, hyst_wide_t x)
+{
+    size_t k;
+    for (k = 0u; k < F->n; ++k) {
+        F->state[k] += F->alpha[k] * (x - F->state[k]);
+    }
+}
+
+hyst_status_t hyst_creep_fit_feed(hyst_creep_fit_t *F, hyst_wide_t x)
+{
+    if (F == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (!hyst_wide_is_finite(x)) {
+        return HYST_ERR_NONFINITE;
+    }
+    fit_advance(F, x);
+    return HYST_OK;
+}
+
+hyst_status_t hyst_creep_fit_add(hyst_creep_fit_t *F, hyst_wide_t x, hyst_wide_t residual)
+{
+    hyst_wide_t dev[HYST_CREEP_MAX_TERMS], dr, share, keep;
+    size_t i, j;
+    if (F == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (!hyst_wide_is_finite(x) || !hyst_wide_is_finite(residual)) {
+        return HYST_ERR_NONFINITE;
+    }
+    /* Welford: deviations from the means before this equation; the
+     * co-moments grow by (k - 1) / k of their products. */
+    ++F->used;
+    share = 1 / (hyst_wide_t)F->used;
+    keep = (hyst_wide_t)(F->used - 1u) * share;
+    for (i = 0u; i < F->n; ++i) {
+        dev[i] = F->state[i] - F->mean[i];
+        F->mean[i] += dev[i] * share;
+    }
+    dr = residual - F->mean_r;
+    F->mean_r += dr * share;
+    for (i = 0u; i < F->n; ++i) {
+        const hyst_wide_t di = dev[i] * keep;
+        for (j = i; j < F->n; ++j) {
+            F->css[i * HYST_CREEP_MAX_TERMS + j] += di * dev[j];
+        }
+        F->csr[i] += di * dr;
+    }
+    F->crr += dr * dr * keep;
+    fit_advance(F, x);
+    return HYST_OK;
+}
+
+hyst_status_t hyst_creep_fit_solve(const hyst_creep_fit_t *F, hyst_wide_t *weight,
+                                   hyst_wide_t *offset, hyst_wide_t *rms)
+{
+    enum { M = HYST_CREEP_MAX_TERMS };
+    hyst_wide_t scale[M], l[M * M], u[M], w[M], ss, off;
+    size_t n, i, j, k;
+    if (F == NULL || weight == NULL || offset == NULL) {
+        return HYST_ERR_NULL;
+    }
+    n = F->n;
+    if (n < 1u || n > (size_t)M || F->used <= n) {
+        return HYST_ERR_SINGULAR;
+    }
+    for (i = 0u; i < n; ++i) {
+        const hyst_wide_t cii = F->css[i * M + i];
+        if (!(cii > 0) || !hyst_wide_is_finite(cii)) {
+            return HYST_ERR_SINGULAR; /* a lag that never moved */
+        }
+        scale[i] = 1 / WIDE_SQRT(cii);
+    }
+    /* R = D C D (unit diagonal) = L L' */
+    for (i = 0u; i < n; ++i) {
+        for (j = 0u; j <= i; ++j) {
+            hyst_wide_t sum = F->css[j * M + i] * scale[i] * scale[j];
+            for (k = 0u; k < j; ++k) {
+                sum -= l[i * M + k] * l[j * M + k];
+            }
+            if (j < i) {
+                l[i * M + j] = sum / l[j * M + j];
+                continue;
+            }
+            /* The pivot is the share of the lag's variance the earlier
+             * lags leave; refused at 1e4 rounding units of its uncentred
+             * sum of squares (the constant column's share counted). */
+            if (!(sum > HYST_WIDE_EPS * (hyst_wide_t)1e4 *
+                            (1 + (hyst_wide_t)F->used * F->mean[i] * F->mean[i] *
+                                     scale[i] * scale[i]))) {
+                return HYST_ERR_SINGULAR;
+            }
+            l[i * M + i] = WIDE_SQRT(sum);
+        }
+    }
+    ss = F->crr;
+    for (i = 0u; i < n; ++i) { /* L u = D c */
+        u[i] = F->csr[i] * scale[i];
+        for (k = 0u; k < i; ++k) {
+            u[i] -= l[i * M + k] * u[k];
+        }
+        u[i] /= l[i * M + i];
+        ss -= u[i] * u[i];
+    }
+    off = F->mean_r;
+    for (i = n; i-- > 0u;) { /* L' v = u, w = D v */
+        w[i] = u[i];
+        for (k = i + 1u; k < n; ++k) {
+            w[i] -= l[k * M + i] * w[k];
+        }
+        w[i] /= l[i * M + i];
+    }
+    for (i = 0u; i < n; ++i) {
+        w[i] *= scale[i];
+        off -= w[i] * F->mean[i];
+        if (!hyst_wide_is_finite(w[i])) {
+            return HYST_ERR_SINGULAR;
+        }
+    }
+    if (!hyst_wide_is_finite(off)) {
+        return HYST_ERR_SINGULAR;
+    }
+    for (i = 0u; i < n; ++i) {
+        weight[i] = w[i];
+    }
+    *offset = off;
+    if (rms != NULL) {
+        *rms = WIDE_SQRT((ss > 0 ? ss : 0) / (hyst_wide_t)F->used);
+    }
+    return HYST_OK;
+}
