@@ -264,6 +264,10 @@ def main():
     put("tcm_wipe_samples_measured", len(wipes))
     put("tcm_fit_insns_per_p", "%.2f" % a)
     put("tcm_fit_insns_const", "%.2f" % c)
+    for name in ("creep1", "creep2"):  # hyst_creep_step(): one lag, two (hyst/creep.h)
+        got = [r["insns"] for r in b if r["kind"] == name]
+        if got:
+            put("%s_step_insns" % name, max(got))
     put("pi10_insns", max(pi))
     put("pi10_min_insns", min(pi))
     put("tcm_typical_over_pi10", "%.3f" % (typ / float(max(pi))))

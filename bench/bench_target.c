@@ -596,6 +596,36 @@ static void bench_pi(void)
 }
 #endif
 
+#if BENCH_PI && !defined(BENCH_Q31) && !defined(BENCH_Q31_INV)
+BENCH_TIMED(creep, hyst_creep_t)
+
+/* The creep term (hyst/creep.h) beside the model: one lag (the
+ * identification's choice on the measured record) and two, on the same walk
+ * over [0, 1] as PI-10. */
+static void bench_creep(void)
+{
+    static const hyst_wide_t tau[2] = {5000, 300}, weight[2] = {0.32, -0.05};
+    static const char *const kind[2] = {"creep1", "creep2"};
+    hyst_creep_t C;
+    unsigned t, n, lcg = 12345u;
+    hyst_real_t x = HYST_REAL_C(0.0);
+    for (n = 1u; n <= 2u; ++n) {
+        if (hyst_creep_init(&C, n, tau, weight, 0) != HYST_OK) {
+            failures |= 64;
+            return;
+        }
+        record("cal_creep", 0u, 0u, 0u);
+        timed_creep(null_creep, &C, HYST_REAL_C(0.5));
+        for (t = 0u; t < 32u; ++t) {
+            lcg = lcg * 1664525u + 1013904223u;
+            x = (hyst_real_t)(lcg >> 8) * HYST_REAL_C(5.9604645e-8);
+            timed_creep(hyst_creep_step, &C, x);
+            record(kind[n - 1u], n, 0u, 0u);
+        }
+    }
+}
+#endif
+
 /* Small buffered writer: printf per record would dominate the run (every
  * instruction of it is logged too). */
 static char out_buf[4096];
@@ -654,6 +684,9 @@ int main(void)
 #endif
 #if BENCH_PI
     bench_pi();
+#endif
+#if BENCH_PI && !defined(BENCH_Q31) && !defined(BENCH_Q31_INV)
+    bench_creep();
 #endif
     for (r = 0u; r < n_records && r < MAX_RECORDS; ++r) {
         out_str("@pulse ");
