@@ -32,10 +32,29 @@ function f = hyst_fit(x, y, varargin)
 %   (default 3), 'skip' samples dropped at the start (default 0), 'delay'
 %   samples the output lags the input (default 0), 'method' 'joint'
 %   (default) or 'reflect' (kind poly), 'domain' [LO HI] (default: the
-%   range of the inputs).
+%   range of the inputs), 'creep' (below).
+%
+%   'creep' chooses a creep term as 'hyst fit --degree D --creep C' does
+%   (docs/matlab.md, "Creep"): 'auto' (the default) fits the model on the
+%   first two thirds of the record, runs it over all of it and fits one lag
+%   of its input to its residual (its time constant the best of 100, 200,
+%   500, ..., 20000 samples on the last third); the model gets it when the
+%   model alone errs by more than 1 % more on the last third. 'none':
+%   never; a number TAU (1..1e9): always a lag of TAU samples. The creep
+%   term chosen gets its weight and a constant from the residual of the
+%   model fitted on the whole record, the constant folded into the model
+%   (f0's constant, E's y_lo), and F the fields
+%     creep_tau, creep_weight  the creep term (HYST_SIM, HYST_INV,
+%                 HYST_MODEL_SAVE and HYST_HEADER take it)
+%     creep       a struct: tau, weight, offset (folded in), rms and max_abs
+%                 of the model with it over the record, holdout_rms with it
+%                 and holdout_rms_without it on the last third
+%   (none of them without a creep term). rms and max_abs stay the
+%   hysteresis fit's own.
 %   A library error raises hyst:<status name>, e.g. hyst:ERR_SINGULAR.
   opts = hyst_options(varargin, struct('kind', 'poly', 'degree', 3, 'skip', 0, 'delay', 0, ...
-                                       'method', 'joint', 'domain', [], 'tdegree', []), ...
+                                       'method', 'joint', 'domain', [], 'tdegree', [], ...
+                                       'creep', 'auto'), ...
                       'hyst_fit');
   if ~isempty(opts.tdegree) && ~strcmp(opts.kind, 'everett')
     error('hyst:usage', 'hyst_fit: tdegree needs kind ''everett''');
@@ -55,29 +74,111 @@ function f = hyst_fit(x, y, varargin)
   else
     error('hyst:usage', 'hyst_fit: domain is [LO HI] with LO < HI');
   end
-  switch opts.kind
-    case 'poly'
-      f = hyst_mex('fit', double(x(:)), double(y(:)), double(opts.degree), method, ...
-                   domain(1), domain(2), double(opts.skip), double(opts.delay));
-      if ~f.increasing
-        warning('hyst:not_increasing', ...
-                'hyst_fit: the fitted f0 is not increasing on [%g, %g] (slope negative at %g): try another degree', ...
-                f.lo, f.hi, f.turn);
-      end
-    case 'everett'
-      tdegree = opts.tdegree;
-      if isempty(tdegree)
-        tdegree = opts.degree - 1;  % all of E's terms
-      end
-      f = hyst_mex('fit_everett', double(x(:)), double(y(:)), double(opts.degree), ...
-                   domain(1), domain(2), double(opts.skip), double(opts.delay), ...
-                   double(tdegree));
-      if ~f.monotone
-        warning('hyst:not_monotone', ...
-                'hyst_fit: the fitted E is not increasing in a and decreasing in b on [%g, %g]: try another degree', ...
-                f.lo, f.hi);
-      end
-    otherwise
-      error('hyst:usage', 'hyst_fit: kind is ''poly'' or ''everett''');
+  if ~ischar(opts.kind) || ~any(strcmp(opts.kind, {'poly', 'everett'}))
+    error('hyst:usage', 'hyst_fit: kind is ''poly'' or ''everett''');
+  end
+  creep_tau = creep_option(opts.creep);
+  tdegree = opts.tdegree;
+  if isempty(tdegree)
+    tdegree = opts.degree - 1;  % all of E's terms
+  end
+  x = double(x(:));
+  y = double(y(:));
+  f = fit_part(opts, method, domain, tdegree, x, y);
+  if strcmp(opts.kind, 'poly') && ~f.increasing
+    warning('hyst:not_increasing', ...
+            'hyst_fit: the fitted f0 is not increasing on [%g, %g] (slope negative at %g): try another degree', ...
+            f.lo, f.hi, f.turn);
+  elseif strcmp(opts.kind, 'everett') && ~f.monotone
+    warning('hyst:not_monotone', ...
+            'hyst_fit: the fitted E is not increasing in a and decreasing in b on [%g, %g]: try another degree', ...
+            f.lo, f.hi);
+  end
+  skip = double(opts.skip);
+  delay = double(opts.delay);
+  if creep_tau < 0 || numel(x) <= skip + delay || ~usable(f)
+    return;
+  end
+  % the creep term scored by hold-out as hyst fit scores it: the model fitted
+  % on the first two thirds (of the samples it sees), run over the record
+  train = floor(2 * (numel(x) - skip - delay) / 3);
+  c = [];
+  without = NaN;
+  try
+    n = skip + train + delay;
+    ft = fit_part(opts, method, domain, tdegree, x(1:n), y(1:n));
+    if usable(ft)
+      [without, c] = holdout(ft, x, y, skip, delay, skip + train, creep_tau);
+    end
+  catch err
+    if ~strncmp(err.identifier, 'hyst:ERR_', 9)
+      rethrow(err);
+    end
+  end
+  if isempty(c) || ~(c.tau > 0) || ~isfinite(c.holdout_rms) || ...
+     (creep_tau == 0 && without <= c.holdout_rms * 1.01)
+    return;
+  end
+  % its weight and a constant fitted to the residual of the model fitted on
+  % the whole record (no hold-out), the constant folded into the model
+  [~, cf] = holdout(f, x, y, skip, delay, numel(x) - delay, c.tau);
+  if ~(cf.tau > 0 && isfinite(cf.weight) && isfinite(cf.offset))
+    error('hyst:creep', ['hyst_fit: the creep term of time constant %g samples could not be ' ...
+                         'fitted to the model''s residual (a drive that never moves?)'], c.tau);
+  end
+  if strcmp(opts.kind, 'everett')
+    f.y_lo = f.y_lo + cf.offset;
+  else
+    f.coeffs(end) = f.coeffs(end) + cf.offset;
+  end
+  f.creep_tau = cf.tau;
+  f.creep_weight = cf.weight;
+  f.creep = struct('tau', cf.tau, 'weight', cf.weight, 'offset', cf.offset, 'rms', cf.fit_rms, ...
+                   'max_abs', cf.max_abs, 'holdout_rms', c.holdout_rms, ...
+                   'holdout_rms_without', without);
+end
+
+function f = fit_part(opts, method, domain, tdegree, x, y)
+% The library's fit of the model to the samples x, y (a record's start, or all of it).
+  if strcmp(opts.kind, 'poly')
+    f = hyst_mex('fit', x, y, double(opts.degree), method, domain(1), domain(2), ...
+                 double(opts.skip), double(opts.delay));
+  else
+    f = hyst_mex('fit_everett', x, y, double(opts.degree), domain(1), domain(2), ...
+                 double(opts.skip), double(opts.delay), double(tdegree));
+  end
+end
+
+function ok = usable(f)
+% f0 increasing, or E accepted by the library: a model that runs.
+  if isfield(f, 'kind') && strcmp(f.kind, 'everett')
+    ok = f.monotone;
+  else
+    ok = f.increasing;
+  end
+end
+
+function [rms, c] = holdout(f, x, y, skip, delay, from, tau)
+% The model f run from rest over the record as hyst fit scores it (the
+% gateway's holdout: its RMS error from sample from + 1 on), and the creep
+% term of time constant tau (0: the best of hyst fit's series) fitted to
+% its residual before that sample and scored after.
+  if isfield(f, 'kind') && strcmp(f.kind, 'everett')
+    [rms, c] = hyst_mex('holdout_everett', f.degree, f.lo, f.hi, f.y_lo, f.terms, x, y, ...
+                        skip, delay, from, tau);
+  else
+    [rms, c] = hyst_mex('holdout', f.coeffs, f.lo, f.hi, x, y, skip, delay, from, tau);
+  end
+end
+
+function tau = creep_option(c)
+% 'creep' as hyst fit's --creep: -1 none, 0 auto, or the time constant.
+  if ischar(c) && any(strcmp(c, {'none', 'auto'}))
+    tau = -double(strcmp(c, 'none'));
+  elseif isnumeric(c) && isscalar(c) && isreal(c) && c >= 1 && c <= 1e9
+    tau = double(c);
+  else
+    error('hyst:usage', ['hyst_fit: ''creep'' is ''none'', ''auto'' or a time constant of ' ...
+                         '1 to 1e9 samples']);
   end
 end

@@ -24,6 +24,14 @@ function text = hyst_header(model, name, varargin)
 %   'rows', R (3..4096; default HYST_EVERETT_INV_ROWS, 16) size the table;
 %   they need 'compensator', true.
 %
+%   A model with a creep term (fields creep_tau, creep_weight) also gets
+%   '#include "hyst/creep.h"' and, after its declaration, NAME_CREEP_TERMS,
+%   NAME_creep_tau and NAME_creep_weight (hyst_wide_t arrays of HYST_REAL_C()
+%   literals) for hyst_creep_init(&creep, NAME_CREEP_TERMS, NAME_creep_tau,
+%   NAME_creep_weight, lo), as the host tool writes them; the compensator's
+%   table is the hysteresis model's alone (firmware subtracts
+%   hyst_creep_output() from the desired output before it).
+%
 %   HYST_HEADER(..., 'file', F) also writes TEXT to the file F, whole or not
 %   at all: a temporary file beside F, renamed to F once written; on failure
 %   it is removed and an error hyst:model_file raised.
@@ -62,9 +70,12 @@ function text = hyst_header(model, name, varargin)
     table = compensator_text(p, name, intervals, rows);
   end
   guard = [upper(name) '_H'];
-  text = [model_comment(p), sprintf('#ifndef %s\n#define %s\n\n#include "hyst/curve.h"\n\n', ...
-                                    guard, guard), ...
-          declaration(p, name), table, sprintf('\n#endif /* %s */\n', guard)];
+  includes = sprintf('#include "hyst/curve.h"\n');
+  if ~isempty(p.creep_tau)
+    includes = [includes sprintf('#include "hyst/creep.h"\n')];
+  end
+  text = [model_comment(p), sprintf('#ifndef %s\n#define %s\n\n%s\n', guard, guard, includes), ...
+          declaration(p, name), creep_text(p, name), table, sprintf('\n#endif /* %s */\n', guard)];
   if ~isempty(opts.file)
     hyst_write_whole(opts.file, text, caller);
   end
@@ -127,6 +138,23 @@ function text = declaration(p, name)
                    numel(p.coeffs) - 1, strjoin(lit([p.lo p.hi]), ', '), ...
                    strjoin(lit(p.coeffs), sprintf(',\n     ')));
   end
+end
+
+function text = creep_text(p, name)
+% The creep term's block, as the host tool writes it after the declaration
+% (header_creep() in tools/cli/model_file.c); '' without a creep term.
+  text = '';
+  if isempty(p.creep_tau)
+    return;
+  end
+  lit = @(v) strjoin(strcat('HYST_REAL_C(', c_numbers(v, 17), ')'), ', ');
+  text = sprintf(['\n/* creep: add hyst_creep_step() of the model''s input to its output\n' ...
+                  ' * (hyst/creep.h): hyst_creep_init(&creep, %s_CREEP_TERMS,\n' ...
+                  ' * %s_creep_tau, %s_creep_weight, lo) */\n#define %s_CREEP_TERMS %du\n' ...
+                  'static const hyst_wide_t %s_creep_tau[%s_CREEP_TERMS] = {%s};\n' ...
+                  'static const hyst_wide_t %s_creep_weight[%s_CREEP_TERMS] = {%s};\n'], ...
+                 name, name, name, name, numel(p.creep_tau), name, name, lit(p.creep_tau), ...
+                 name, name, lit(p.creep_weight));
 end
 
 function text = compensator_text(p, name, intervals, rows)

@@ -25,5 +25,13 @@ function [x, status, tp_count, inv_err] = hyst_inv(model, y, varargin)
 %   'rows' needs N > 0 and the asymmetric kind. INV_ERR is the worst error
 %   against the exact inverse that the table's init measured, as a fraction
 %   of the drive range (hyst_curve_inverse_error(); 0 without a table).
+%
+%   A MODEL with a creep term (fields creep_tau, creep_weight, as HYST_SIM
+%   takes them) gives, for each desired output Y(k), the compensator's drive
+%   for Y(k) less the creep's contribution (known before the sample: it
+%   depends on the drives before), and the creep's lags then take that
+%   drive in: the numbers of 'hyst inv --model' (which, like HYST_INV, does
+%   not compensate the model's delay). With a table, the table is the
+%   hysteresis model's alone, as firmware's.
   [x, status, tp_count, inv_err] = hyst_run('inv', model, y, varargin);
 end

@@ -7,11 +7,17 @@
  *
  *   v = hyst_mex('version')                      HYST_VERSION_STRING
  *   s = hyst_mex('status_str', code)             hyst_status_str(code)
- *   [y, st, ntp] = hyst_mex('sim', coeffs, lo, hi, x, capacity, deadband)
- *   [x, st, ntp, err] = hyst_mex('inv', coeffs, lo, hi, y, capacity, deadband, intervals)
- *   [y, st, ntp] = hyst_mex('sim_everett', degree, lo, hi, y_lo, terms, x, capacity, deadband)
+ *   [y, st, ntp] = hyst_mex('sim', coeffs, lo, hi, x, capacity, deadband[, ctau, cweight])
+ *   [x, st, ntp, err] = hyst_mex('inv', coeffs, lo, hi, y, capacity, deadband, intervals
+ *                                [, ctau, cweight])
+ *   [y, st, ntp] = hyst_mex('sim_everett', degree, lo, hi, y_lo, terms, x, capacity, deadband
+ *                           [, ctau, cweight])
  *   [x, st, ntp, err] = hyst_mex('inv_everett', degree, lo, hi, y_lo, terms, y, capacity,
- *                                deadband, intervals, rows)
+ *                                deadband, intervals, rows[, ctau, cweight])
+ *   [c, st] = hyst_mex('creep', tau, weight, x_rest, x)
+ *   [rms, creep] = hyst_mex('holdout', coeffs, lo, hi, x, y, skip, delay, from, tau)
+ *   [rms, creep] = hyst_mex('holdout_everett', degree, lo, hi, y_lo, terms, x, y, skip, delay,
+ *                           from, tau)
  *   [t, crc, max_err, exact, err] = hyst_mex('inv_table', coeffs, lo, hi, intervals, class)
  *   [t, crc, max_err, exact, err] = hyst_mex('inv_table_everett', degree, lo, hi, y_lo, terms,
  *                                            intervals, rows, class)
@@ -50,6 +56,26 @@
  * result has the class and the shape of x; st is the status of the block
  * call (0, or a warning: 1 clamped, 2 memory full; a non-finite sample gives
  * -7 and is ignored as in firmware), ntp the turning points stored at the end.
+ * ctau, cweight (both or neither; [] and []: none): a creep term (hyst/creep.h),
+ * 1..HYST_CREEP_MAX_TERMS lags of time constants ctau (samples) and weights
+ * cweight, every lag at lo at rest, run as `hyst sim --model` and `hyst inv
+ * --model` run it (tools/cli/cli_tcm.c): sim adds hyst_*_creep_step() of the
+ * input as the model took it (hyst_*_input()) to each output; inv inverts the
+ * hysteresis model for the desired output less hyst_*_creep_output(), then
+ * the lags take the drive in. Sample by sample then, the block call's
+ * statuses folded as it folds them; the library checks the numbers
+ * (hyst_*_creep_init(): hyst:ERR_ARG, hyst:ERR_WEIGHTS).
+ * creep: the creep term alone over x (hyst_f64_creep_step, or _f32 for x
+ * single), every lag at x_rest first: its contributions c (x's class and
+ * shape) and st, 0 or -7 (a non-finite sample, ignored).
+ * holdout, holdout_everett: the model in f64 from rest over a record as
+ * `hyst fit` scores it (tools/cli/fit_select.c): x(k) paired with
+ * y(k + delay), k > skip (1-based); rms its RMS error from sample from + 1
+ * on (NaN: none); tau >= 0: the creep term fitted to its residual before
+ * sample from + 1 and scored after (tools/cli/fit_creep.c; tau 0: the best
+ * of 100, 200, 500, ..., 20000 samples up to the record's length), a struct
+ * of tau (0: none could be fitted), weight, offset, holdout_rms, fit_rms and
+ * max_abs; tau < 0: creep is [].
  * fit: method 1 joint, 2 reflect; lo == hi takes the domain from the data.
  * fit_everett: E by hyst_everett_fit_*, the record starting from rest at
  * sample skip, inputs clamped to the domain as the model clamps them.
@@ -207,7 +233,28 @@ typedef struct model_arg {
     size_t rows;        /* E's tabulated compensator: rows per direction */
     hyst_poly_t f0;
     hyst_everett_t e;
+    size_t ncreep;      /* lags of its creep term; 0: none */
+    hyst_wide_t creep_tau[HYST_CREEP_MAX_TERMS], creep_weight[HYST_CREEP_MAX_TERMS];
 } model_arg_t;
+
+/* A creep term's time constants and weights into m: two real double
+ * vectors of 1..HYST_CREEP_MAX_TERMS entries each, as many, or both empty
+ * (none). Their values are the library's to check. */
+static void creep_arg(model_arg_t *m, const mxArray *tau, const mxArray *weight)
+{
+    const size_t n = mxGetNumberOfElements(tau);
+    size_t i;
+    if (!is_real_double(tau) || !is_real_double(weight) ||
+        mxGetNumberOfElements(weight) != n || n > HYST_CREEP_MAX_TERMS) {
+        usage("creep_tau and creep_weight must be real double vectors of 1 to "
+              "HYST_CREEP_MAX_TERMS entries, as many of each (or both empty: no creep term)");
+    }
+    m->ncreep = n;
+    for (i = 0u; i < n; ++i) {
+        m->creep_tau[i] = (hyst_wide_t)((const double *)mxGetData(tau))[i];
+        m->creep_weight[i] = (hyst_wide_t)((const double *)mxGetData(weight))[i];
+    }
+}
 
 /* Numbers of the table m's compensator needs (0: none), counted in double
  * where size_t could wrap (rows and intervals at their largest need 2^35). */
@@ -286,12 +333,63 @@ DEFINE_BUILD(f64, double)
 DEFINE_BUILD(f32, float)
 #undef DEFINE_BUILD
 
+/* run_f64, run_f32: x[0..n) through S into y in variant P of number type T:
+ * the block call, or with m's creep term C sample by sample as `hyst sim
+ * --model` (the output plus the creep of the input as the model took it)
+ * and `hyst inv --model` (the hysteresis compensator of the desired output
+ * less the creep's share, whose lags then take the drive in) run it, the
+ * statuses folded as the block call folds them. */
+#define DEFINE_RUN(P, T)                                                                    \
+    static int run_##P(hyst_tcm_t *S, hyst_creep_t *C, const model_arg_t *m, const T *x,     \
+                       T *y, size_t n)                                                      \
+    {                                                                                       \
+        int worst = HYST_OK, failed = 0, st;                                                \
+        size_t i;                                                                           \
+        if (m->ncreep == 0u) {                                                              \
+            return hyst_##P##_process(S, x, y, n);                                          \
+        }                                                                                   \
+        for (i = 0u; i < n; ++i) {                                                          \
+            const T xi = x[i];                                                              \
+            if (m->inverse) {                                                               \
+                const T v = xi - hyst_##P##_creep_output(C);                                \
+                const T drive = hyst_##P##_step(S, v);                                      \
+                (void)hyst_##P##_creep_step(C, drive);                                      \
+                y[i] = drive;                                                               \
+            } else {                                                                        \
+                const T h = hyst_##P##_step(S, xi);                                         \
+                y[i] = h + hyst_##P##_creep_step(C, hyst_##P##_input(S));                   \
+            }                                                                               \
+            st = hyst_status(S);                                                            \
+            if (st < 0) {                                                                   \
+                failed = 1;                                                                 \
+            } else if (st > worst) {                                                        \
+                worst = st;                                                                 \
+            }                                                                               \
+        }                                                                                   \
+        return failed ? HYST_ERR_NONFINITE : worst;                                         \
+    }
+DEFINE_RUN(f64, double)
+DEFINE_RUN(f32, float)
+#undef DEFINE_RUN
+
+/* The creep term of m in variant f64 (or f32), every lag at the domain's lo. */
+static int creep_init(hyst_creep_t *C, const model_arg_t *m, int f32)
+{
+    const hyst_wide_t x_rest = (hyst_wide_t)(m->everett ? m->e.lo : m->f0.lo);
+    if (m->ncreep == 0u) {
+        return HYST_OK;
+    }
+    return f32 ? hyst_f32_creep_init(C, m->ncreep, m->creep_tau, m->creep_weight, x_rest)
+               : hyst_f64_creep_init(C, m->ncreep, m->creep_tau, m->creep_weight, x_rest);
+}
+
 /* Runs model m over x: prhs = x, capacity, deadband. */
 static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArray *prhs[])
 {
     const char *context = m->inverse ? "hyst_inv" : "hyst_sim";
     hyst_tcm_t S;
     hyst_curve_t curve;
+    hyst_creep_t creep;
     const mxArray *x = prhs[0];
     mxArray *y;
     size_t n, cap, len;
@@ -314,8 +412,11 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
         if (st == HYST_OK) {
             st = hyst_f64_set_deadband(&S, scalar(prhs[2], "deadband"));
         }
+        if (st == HYST_OK) {
+            st = creep_init(&creep, m, 0);
+        }
         if (st == HYST_OK && n > 0u) {
-            st = hyst_f64_process(&S, (const double *)mxGetData(x), (double *)mxGetData(y), n);
+            st = run_f64(&S, &creep, m, (const double *)mxGetData(x), (double *)mxGetData(y), n);
         }
         if (st < 0 && st != HYST_ERR_NONFINITE) {
             mxFree(tp);
@@ -329,8 +430,11 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
         if (st == HYST_OK) {
             st = hyst_f32_set_deadband(&S, (float)scalar(prhs[2], "deadband"));
         }
+        if (st == HYST_OK) {
+            st = creep_init(&creep, m, 1);
+        }
         if (st == HYST_OK && n > 0u) {
-            st = hyst_f32_process(&S, (const float *)mxGetData(x), (float *)mxGetData(y), n);
+            st = run_f32(&S, &creep, m, (const float *)mxGetData(x), (float *)mxGetData(y), n);
         }
         if (st < 0 && st != HYST_ERR_NONFINITE) {
             mxFree(tp);
@@ -354,18 +458,24 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
 }
 
 /* sim or inv: prhs = coeffs, lo, hi, x, capacity, deadband; inv also
- * intervals (0: the exact compensator). */
+ * intervals (0: the exact compensator); then, optionally, the creep term's
+ * ctau, cweight. */
 static void run_poly(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     model_arg_t m;
-    if (nrhs != (inverse ? 7 : 6)) {
-        usage(inverse ? "inv takes coeffs, lo, hi, x, capacity, deadband, intervals"
-                      : "sim takes coeffs, lo, hi, x, capacity, deadband");
+    const int args = inverse ? 7 : 6;
+    if (nrhs != args && nrhs != args + 2) {
+        usage(inverse ? "inv takes coeffs, lo, hi, x, capacity, deadband, intervals[, ctau, "
+                        "cweight]"
+                      : "sim takes coeffs, lo, hi, x, capacity, deadband[, ctau, cweight]");
     }
     memset(&m, 0, sizeof m);
     m.inverse = inverse;
     m.intervals = inverse ? count(prhs[6], "intervals", 0.0, INTERVALS_MAX) : 0u;
     m.f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
+    if (nrhs == args + 2) {
+        creep_arg(&m, prhs[args], prhs[args + 1]);
+    }
     run_tcm(&m, nlhs, plhs, prhs + 3);
 }
 
@@ -374,10 +484,12 @@ static void run_poly(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxA
 static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     model_arg_t m;
-    if (nrhs != (inverse ? 10 : 8)) {
+    const int args = inverse ? 10 : 8;
+    if (nrhs != args && nrhs != args + 2) {
         usage(inverse ? "inv_everett takes degree, lo, hi, y_lo, terms, y, capacity, deadband, "
-                        "intervals, rows"
-                      : "sim_everett takes degree, lo, hi, y_lo, terms, x, capacity, deadband");
+                        "intervals, rows[, ctau, cweight]"
+                      : "sim_everett takes degree, lo, hi, y_lo, terms, x, capacity, "
+                        "deadband[, ctau, cweight]");
     }
     memset(&m, 0, sizeof m);
     m.everett = 1;
@@ -387,6 +499,9 @@ static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const 
         m.rows = count(prhs[9], "rows", ROWS_MIN, ROWS_MAX);
     }
     m.e = everett_arg(prhs, inverse ? "hyst_inv" : "hyst_sim");
+    if (nrhs == args + 2) {
+        creep_arg(&m, prhs[args], prhs[args + 1]);
+    }
     run_tcm(&m, nlhs, plhs, prhs + 5);
 }
 
@@ -644,12 +759,192 @@ static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     plhs[0] = s;
 }
 
+/* creep: prhs = tau, weight, x_rest, x; plhs = c (x's class and shape), st. */
+static void run_creep(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    model_arg_t m;
+    hyst_creep_t C;
+    const mxArray *x;
+    mxArray *c;
+    size_t n, i;
+    int st, failed = 0;
+    if (nrhs != 4) {
+        usage("creep takes tau, weight, x_rest, x");
+    }
+    memset(&m, 0, sizeof m);
+    creep_arg(&m, prhs[0], prhs[1]);
+    x = prhs[3];
+    if (mxIsComplex(x) || mxIsSparse(x) || !(mxIsDouble(x) || mxIsSingle(x))) {
+        usage("the input must be a real double or single array");
+    }
+    st = mxIsDouble(x) ? hyst_f64_creep_init(&C, m.ncreep, m.creep_tau, m.creep_weight,
+                                             (hyst_wide_t)scalar(prhs[2], "x_rest"))
+                       : hyst_f32_creep_init(&C, m.ncreep, m.creep_tau, m.creep_weight,
+                                             (hyst_wide_t)scalar(prhs[2], "x_rest"));
+    if (st != HYST_OK) {
+        fail_status("hyst_mex creep", st);
+    }
+    n = mxGetNumberOfElements(x);
+    c = mxCreateNumericArray(mxGetNumberOfDimensions(x), mxGetDimensions(x), mxGetClassID(x),
+                             mxREAL);
+    for (i = 0u; i < n; ++i) {
+        if (mxIsDouble(x)) {
+            const double xi = ((const double *)mxGetData(x))[i];
+            ((double *)mxGetData(c))[i] = hyst_f64_creep_step(&C, xi);
+        } else {
+            const float xi = ((const float *)mxGetData(x))[i];
+            ((float *)mxGetData(c))[i] = hyst_f32_creep_step(&C, xi);
+        }
+        failed |= hyst_creep_status(&C) < 0;
+    }
+    plhs[0] = c;
+    if (nlhs > 1) {
+        plhs[1] = mxCreateDoubleScalar(failed ? (double)HYST_ERR_NONFINITE : 0.0);
+    }
+}
+
+/* A creep term of one lag fitted as `hyst fit` fits it (tools/cli/fit_creep.c):
+ * tau (0: none could be fitted), weight, offset, the scores. */
+typedef struct creep_fitted {
+    double tau, weight, offset, holdout_rms, fit_rms, max_abs;
+} creep_fitted_t;
+
+/* One time constant: weight and offset from the equations of [0, train),
+ * the creep from rest over u[0..len), scored on [train, len) (NaN when
+ * train == len): hyst_creep_fit_holdout(), u the model's inputs, r its
+ * residual, NaN where missing. */
+static void creep_one(const double *u, const double *r, size_t len, size_t train, double x_rest,
+                      double tau, creep_fitted_t *out)
+{
+    const hyst_wide_t t = (hyst_wide_t)tau;
+    hyst_creep_holdout_t h;
+    memset(out, 0, sizeof *out);
+    out->holdout_rms = NAN;
+    out->fit_rms = NAN;
+    if (hyst_creep_fit_holdout(1u, &t, (hyst_wide_t)x_rest, u, r, len, train < len ? train : len,
+                               &h) != HYST_OK) {
+        return;
+    }
+    out->tau = tau;
+    out->weight = (double)h.weight[0];
+    out->offset = (double)h.offset;
+    out->fit_rms = (double)h.fit_rms;
+    out->max_abs = (double)h.max_abs;
+    out->holdout_rms = h.holdout_used > 0u ? (double)h.holdout_rms : NAN;
+}
+
+/* Time constants hyst fit --creep auto tries (samples), those up to the run's length. */
+static const double creep_taus[] = {100.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0, 10000.0, 20000.0};
+
+/* holdout (prhs = coeffs, lo, hi, x, y, skip, delay, from, tau) or
+ * holdout_everett (prhs = degree, lo, hi, y_lo, terms, x, y, skip, delay,
+ * from, tau): the model run from rest over the record as `hyst fit` scores
+ * it (fit_model_run_creep() in tools/cli/fit_select.c); plhs = its RMS error
+ * from sample from on (0-based), and the creep term fitted to its residual
+ * before `from` and scored after (tau > 0 that time constant, 0 the best of
+ * creep_taus; tau < 0: none, []). */
+static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *fields[] = {"tau", "weight", "offset", "holdout_rms", "fit_rms",
+                                   "max_abs"};
+    const int at = everett ? 5 : 3; /* x, then y, skip, delay, from, tau */
+    model_arg_t m;
+    hyst_tcm_t S;
+    hyst_curve_t curve;
+    creep_fitted_t best;
+    const double *x, *y;
+    double *tp, *u = NULL, *r = NULL, tau, ss = 0.0, x_rest;
+    size_t n, skip, delay, from, cap, len, k, used = 0u, i;
+    int st;
+    if (nrhs != at + 6) {
+        usage(everett ? "holdout_everett takes degree, lo, hi, y_lo, terms, x, y, skip, delay, "
+                        "from, tau"
+                      : "holdout takes coeffs, lo, hi, x, y, skip, delay, from, tau");
+    }
+    memset(&m, 0, sizeof m);
+    m.everett = everett;
+    if (everett) {
+        m.e = everett_arg(prhs, "hyst_fit");
+    } else {
+        m.f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
+    }
+    if (!is_real_double(prhs[at]) || !is_real_double(prhs[at + 1])) {
+        usage("x and y must be real double vectors");
+    }
+    n = mxGetNumberOfElements(prhs[at]);
+    if (mxGetNumberOfElements(prhs[at + 1]) != n) {
+        usage("x and y must have the same number of elements");
+    }
+    x = (const double *)mxGetData(prhs[at]);
+    y = (const double *)mxGetData(prhs[at + 1]);
+    skip = count(prhs[at + 2], "skip", 0.0, 1e15);
+    delay = count(prhs[at + 3], "delay", 0.0, 1e15);
+    from = count(prhs[at + 4], "from", 0.0, 1e15);
+    tau = scalar(prhs[at + 5], "tau");
+    len = n > delay + skip ? n - delay - skip : 0u;
+    cap = len / 2u + 2u;
+    x_rest = everett ? m.e.lo : m.f0.lo;
+    tp = mxMalloc((4u * cap + (tau >= 0 ? 2u * len : 0u)) * sizeof *tp);
+    if (tau >= 0) {
+        u = tp + 4u * cap;
+        r = u + len;
+    }
+    st = init_f64(&S, &curve, &m, tp, cap, NULL);
+    if (st != HYST_OK) {
+        mxFree(tp);
+        fail_status("hyst_fit", st);
+    }
+    for (k = skip; k + delay < n; ++k) {
+        const double ym = hyst_f64_step(&S, x[k]);
+        const int ok = isfinite(x[k]) && isfinite(y[k + delay]);
+        if (u != NULL) { /* the input as the model took it (clamped; the last one for NaN) */
+            u[k - skip] = hyst_f64_input(&S);
+            r[k - skip] = ok ? y[k + delay] - ym : NAN;
+        }
+        if (ok && k >= from) {
+            const double e = ym - y[k + delay];
+            ss += e * e;
+            ++used;
+        }
+    }
+    plhs[0] = mxCreateDoubleScalar(used > 0u ? sqrt(ss / (double)used) : NAN);
+    if (nlhs > 1 && (tau < 0 || len == 0u)) {
+        plhs[1] = mxCreateDoubleMatrix(0, 0, mxREAL);
+    } else if (nlhs > 1) {
+        const size_t train = from > skip ? from - skip : 0u;
+        memset(&best, 0, sizeof best);
+        best.holdout_rms = NAN;
+        best.fit_rms = NAN;
+        if (tau > 0) {
+            creep_one(u, r, len, train, x_rest, tau, &best);
+        }
+        for (i = 0u; tau == 0 && i < sizeof creep_taus / sizeof creep_taus[0] &&
+                     creep_taus[i] <= (double)len;
+             ++i) {
+            creep_fitted_t c;
+            creep_one(u, r, len, train, x_rest, creep_taus[i], &c);
+            if (isfinite(c.holdout_rms) && !(best.holdout_rms <= c.holdout_rms)) {
+                best = c;
+            }
+        }
+        plhs[1] = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
+        set_field(plhs[1], "tau", mxCreateDoubleScalar(best.tau));
+        set_field(plhs[1], "weight", mxCreateDoubleScalar(best.weight));
+        set_field(plhs[1], "offset", mxCreateDoubleScalar(best.offset));
+        set_field(plhs[1], "holdout_rms", mxCreateDoubleScalar(best.holdout_rms));
+        set_field(plhs[1], "fit_rms", mxCreateDoubleScalar(best.fit_rms));
+        set_field(plhs[1], "max_abs", mxCreateDoubleScalar(best.max_abs));
+    }
+    mxFree(tp);
+}
+
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     char cmd[24];
     if (nrhs < 1 || !mxIsChar(prhs[0]) || mxGetString(prhs[0], cmd, sizeof cmd) != 0) {
         usage("the first argument is a command: version, status_str, config, sim, inv, "
-              "sim_everett, inv_everett, inv_table, inv_table_everett, fit or fit_everett");
+              "sim_everett, inv_everett, inv_table, inv_table_everett, fit, fit_everett, creep, "
+              "holdout or holdout_everett");
     }
     if (strcmp(cmd, "version") == 0) {
         plhs[0] = mxCreateString(HYST_VERSION_STRING);
@@ -672,8 +967,12 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_fit(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "fit_everett") == 0) {
         run_fit_everett(plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "creep") == 0) {
+        run_creep(nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "holdout") == 0 || strcmp(cmd, "holdout_everett") == 0) {
+        run_holdout(cmd[7] == '_', nlhs, plhs, nrhs - 1, prhs + 1);
     } else {
         usage("unknown command (version, status_str, config, sim, inv, sim_everett, inv_everett, "
-              "inv_table, inv_table_everett, fit, fit_everett)");
+              "inv_table, inv_table_everett, fit, fit_everett, creep, holdout, holdout_everett)");
     }
 }

@@ -11,10 +11,16 @@ function model = hyst_model_load(file)
 %   keys kind (poly or everett), lo, hi, each once, coeffs (kind poly) or
 %   y_lo, degree (1..4) and terms (degree (degree + 1) / 2 numbers; kind
 %   everett), and optionally delay (the output follows its input this many
-%   samples later; written by 'hyst fit --save'). Anything else (another
-%   format or version, an unknown or repeated key, a key of the other kind,
-%   a number that is not finite) raises hyst:model_file naming the file and
-%   the line.
+%   samples later; written by 'hyst fit --save') and a creep term, the keys
+%   creep_tau (1 to 4 time constants, samples, each at least 1) and
+%   creep_weight (as many weights), both or neither: then MODEL also has the
+%   fields creep_tau and creep_weight (rows), which HYST_SIM, HYST_INV,
+%   HYST_MODEL_SAVE and HYST_HEADER take (docs/matlab.md, "Creep").
+%   Anything else (another format or version, an unknown or repeated key, a
+%   key of the other kind, a number that is not finite, a creep key alone or
+%   of another length than the other) raises hyst:model_file naming the
+%   file and the line (for the creep keys also the field, in the words of
+%   the host tool's reader).
   [fid, msg] = fopen(file, 'r');
   if fid < 0
     error('hyst:model_file', 'hyst_model_load: %s: %s', file, msg);
@@ -41,7 +47,8 @@ function model = hyst_model_load(file)
     end
     [key, rest] = strtok(line);
     where = sprintf('hyst_model_load: %s:%d', file, k);
-    if ~any(strcmp(key, {'kind', 'lo', 'hi', 'coeffs', 'delay', 'y_lo', 'degree', 'terms'}))
+    if ~any(strcmp(key, {'kind', 'lo', 'hi', 'coeffs', 'delay', 'y_lo', 'degree', 'terms', ...
+                         'creep_tau', 'creep_weight'}))
       error('hyst:model_file', '%s: unknown key ''%s''', where, key);
     end
     if isfield(seen, key)
@@ -53,6 +60,10 @@ function model = hyst_model_load(file)
         error('hyst:model_file', '%s: kind ''%s'' is not poly or everett', where, strtrim(rest));
       end
       seen.kind = strtrim(rest);
+      continue;
+    end
+    if any(strcmp(key, {'creep_tau', 'creep_weight'}))
+      seen.(key) = creep_numbers(where, key, rest);
       continue;
     end
     words = strsplit(strtrim(rest));
@@ -90,20 +101,67 @@ function model = hyst_model_load(file)
       error('hyst:model_file', 'hyst_model_load: %s: key ''%s'' is missing', file, key{1});
     end
   end
+  % the creep term: both keys or neither, as many numbers in each (the host
+  % tool's checks and words, after the model's keys)
+  if isfield(seen, 'creep_tau') ~= isfield(seen, 'creep_weight')
+    keys = {'creep_tau', 'creep_weight'};
+    has = keys{1 + isfield(seen, 'creep_weight')};
+    other = keys{2 - isfield(seen, 'creep_weight')};
+    error('hyst:model_file', ...
+          'hyst_model_load: %s:%d: field 1: %s needs %s too (creep: both or neither)', ...
+          file, at.(has), has, other);
+  end
+  if isfield(seen, 'creep_tau') && numel(seen.creep_tau) ~= numel(seen.creep_weight)
+    error('hyst:model_file', ['hyst_model_load: %s:%d: creep_weight and creep_tau differ in ' ...
+                              'length (%d and %d numbers: one of each per term)'], ...
+          file, at.creep_weight, numel(seen.creep_weight), numel(seen.creep_tau));
+  end
   delay = 0;
   if isfield(seen, 'delay')
     delay = seen.delay;
   end
   if strcmp(seen.kind, 'poly')
     model = struct('coeffs', seen.coeffs, 'lo', seen.lo, 'hi', seen.hi, 'delay', delay);
-    return;
+  else
+    if numel(seen.terms) ~= seen.degree * (seen.degree + 1) / 2
+      error('hyst:model_file', 'hyst_model_load: %s:%d: terms needs %d numbers for degree %d, not %d', ...
+            file, at.terms, seen.degree * (seen.degree + 1) / 2, seen.degree, numel(seen.terms));
+    end
+    model = struct('kind', 'everett', 'lo', seen.lo, 'hi', seen.hi, 'y_lo', seen.y_lo, ...
+                   'degree', seen.degree, 'terms', seen.terms, 'delay', delay);
   end
-  if numel(seen.terms) ~= seen.degree * (seen.degree + 1) / 2
-    error('hyst:model_file', 'hyst_model_load: %s:%d: terms needs %d numbers for degree %d, not %d', ...
-          file, at.terms, seen.degree * (seen.degree + 1) / 2, seen.degree, numel(seen.terms));
+  if isfield(seen, 'creep_tau')
+    model.creep_tau = seen.creep_tau;
+    model.creep_weight = seen.creep_weight;
   end
-  model = struct('kind', 'everett', 'lo', seen.lo, 'hi', seen.hi, 'y_lo', seen.y_lo, ...
-                 'degree', seen.degree, 'terms', seen.terms, 'delay', delay);
+end
+
+function v = creep_numbers(where, key, rest)
+% The numbers of a creep_tau or creep_weight line, checked as the host
+% tool's reader checks them (tools/cli/model_file.c), with its words.
+  words = strsplit(strtrim(rest));
+  if isempty(strtrim(rest))
+    words = {};
+  end
+  needs = sprintf('%s needs 1 to 4 numbers (one per creep term)', key);
+  if isempty(words)
+    error('hyst:model_file', '%s: field 2 is missing: %s', where, needs);
+  end
+  if numel(words) > 4
+    error('hyst:model_file', '%s: field 6: one too many: %s', where, needs);
+  end
+  v = str2double(words);
+  for i = 1:numel(words)
+    if ~isfinite(v(i))
+      error('hyst:model_file', '%s: field %d: ''%s'' is not a finite number', where, i + 1, ...
+            words{i});
+    end
+    if strcmp(key, 'creep_tau') && ~(v(i) >= 1)
+      error('hyst:model_file', ...
+            '%s: field %d: ''%s'' is not a time constant of at least 1 sample', where, i + 1, ...
+            words{i});
+    end
+  end
 end
 
 function r = ifelse_(c, a, b)

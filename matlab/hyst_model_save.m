@@ -13,7 +13,10 @@ function hyst_model_save(file, model)
 %     coeffs -6.1875999999999998e-06 0.0011949 0.086443999999999993 0.58516999999999997
 %
 %   A model of kind 'everett' (HYST_SIM) is written with the keys kind
-%   everett, lo, hi, y_lo, delay (when not 0), degree and terms.
+%   everett, lo, hi, y_lo, delay (when not 0), degree and terms. A model
+%   with a creep term (fields creep_tau and creep_weight, 1 to 4 numbers
+%   each) gets a comment line and the keys creep_tau and creep_weight after
+%   its own, as the host tool writes them ('hyst fit --save').
 %   Numbers are written with 17 significant digits, so HYST_MODEL_LOAD gives
 %   the same doubles back. The file is written whole or not at all (a
 %   temporary file beside FILE, renamed to it; on failure removed and an
@@ -42,6 +45,12 @@ function hyst_model_save(file, model)
     text = [text, sprintf('degree %d\nterms', p.degree), sprintf(' %.17g', p.terms)];
   else
     text = [text, 'coeffs', sprintf(' %.17g', p.coeffs)];
+  end
+  if ~isempty(p.creep_tau)
+    text = [text, sprintf(['\n# creep: the output plus sum of creep_weight[k] s_k, s_k the ' ...
+                           'input lagged with time constant creep_tau[k] samples (from lo at ' ...
+                           'rest)\ncreep_tau']), sprintf(' %.17g', p.creep_tau), ...
+            sprintf('\ncreep_weight'), sprintf(' %.17g', p.creep_weight)];
   end
   hyst_write_whole(file, [text sprintf('\n')], 'hyst_model_save');
 end

@@ -12,6 +12,13 @@ function [y, status, tp_count] = hyst_sim(model, x, varargin)
 %   and terms, the coefficients e[i-1][j] of w^i t^j of the branch function
 %   E for i = 1..degree, then j = 0..degree-i (docs/matlab.md).
 %
+%   A MODEL with a creep term (the fields creep_tau, 1 to 4 time constants
+%   in samples, and creep_weight, as many weights: what HYST_MODEL_LOAD and
+%   HYST_FIT return for one) adds to each output sum_k creep_weight(k) s_k,
+%   s_k a first-order lag (hyst/creep.h) of the input as the model took it
+%   (clamped to [lo, hi]) from lo at rest, strictly causal: the numbers of
+%   'hyst sim --model' (docs/matlab.md, "Creep").
+%
 %   Options (name/value): 'capacity' turning points per array (default
 %   2048: never full for inputs taking at most 4096 distinct values),
 %   'deadband' noise deadband (default 0).

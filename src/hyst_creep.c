@@ -264,3 +264,61 @@ hyst_status_t hyst_creep_fit_solve(const hyst_creep_fit_t *F, hyst_wide_t *weigh
     }
     return HYST_OK;
 }
+
+/* The model the scores are of: the f64 creep where double is linked. */
+#if HYST_ENABLE_F64
+#define CREEP_SCORE_INIT hyst_f64_creep_init
+#define CREEP_SCORE_STEP(C, x) (hyst_wide_t)hyst_f64_creep_step((C), (double)(x))
+#else
+#define CREEP_SCORE_INIT hyst_f32_creep_init
+#define CREEP_SCORE_STEP(C, x) (hyst_wide_t)hyst_f32_creep_step((C), (float)(x))
+#endif
+
+hyst_status_t hyst_creep_fit_holdout(size_t n_terms, const hyst_wide_t *tau, hyst_wide_t x_rest,
+                                     const hyst_wide_t *u, const hyst_wide_t *r, size_t len,
+                                     size_t train, hyst_creep_holdout_t *out)
+{
+    hyst_creep_fit_t F;
+    hyst_creep_holdout_t got;
+    hyst_creep_t C;
+    hyst_wide_t ss = 0;
+    hyst_status_t st;
+    size_t k;
+    if (u == NULL || r == NULL || out == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (train > len) {
+        return HYST_ERR_ARG;
+    }
+    memset(&got, 0, sizeof got);
+    st = hyst_creep_fit_init(&F, n_terms, tau, x_rest);
+    for (k = 0u; st == HYST_OK && k < train; ++k) { /* a missing residual: the lags go on */
+        st = hyst_wide_is_finite(r[k]) ? hyst_creep_fit_add(&F, u[k], r[k])
+                                       : hyst_creep_fit_feed(&F, u[k]);
+    }
+    if (st == HYST_OK) {
+        st = hyst_creep_fit_solve(&F, got.weight, &got.offset, &got.fit_rms);
+    }
+    if (st == HYST_OK) {
+        st = CREEP_SCORE_INIT(&C, n_terms, tau, got.weight, x_rest);
+    }
+    for (k = 0u; st == HYST_OK && k < len; ++k) { /* from rest, as a user runs it */
+        const hyst_wide_t e = r[k] - CREEP_SCORE_STEP(&C, u[k]) - got.offset;
+        if (!hyst_wide_is_finite(u[k])) {
+            st = HYST_ERR_NONFINITE;
+        } else if (hyst_wide_is_finite(r[k])) {
+            const hyst_wide_t a = e < 0 ? -e : e;
+            got.max_abs = a > got.max_abs ? a : got.max_abs;
+            if (k >= train) {
+                ss += e * e;
+                ++got.holdout_used;
+            }
+        }
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    got.holdout_rms = got.holdout_used > 0u ? WIDE_SQRT(ss / (hyst_wide_t)got.holdout_used) : 0;
+    *out = got;
+    return HYST_OK;
+}

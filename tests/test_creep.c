@@ -555,6 +555,54 @@ static void test_fit_refuses_bad_input(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_creep_fit_feed(NULL, 0.0));
 }
 
+/* hyst_creep_fit_holdout(): a residual made of a known lag and offset,
+ * one sample missing, gives them back fitted on the first part and scores
+ * the rest at rounding level; with noise added to the hold-out part only,
+ * its score is that noise's RMS; bad arguments refused, nothing written. */
+static void test_fit_holdout_scores_the_rest(void)
+{
+    enum { LEN = 3000, TRAIN = 2000 };
+    static hyst_wide_t u[LEN], r[LEN];
+    static const hyst_wide_t tau = 700.0, tau_bad = 0.5;
+    hyst_creep_holdout_t h, keep;
+    ref_creep_t ref;
+    const hyst_wide_t w = 0.4;
+    double x = 0.5, ss = 0.0;
+    long k;
+    ref_init(&ref, 1u, &tau, &w, 0.0);
+    for (k = 0; k < LEN; ++k) {
+        u[k] = (hyst_wide_t)walk(&x, 0.0, 1.0);
+        r[k] = (hyst_wide_t)(ref_step(&ref, (double)u[k]) - 0.2);
+    }
+    r[17] = (hyst_wide_t)NAN; /* missing: the lag goes on */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_fit_holdout(1u, &tau, 0, u, r, LEN, TRAIN, &h));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.4, (double)h.weight[0]);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, -0.2, (double)h.offset);
+    TEST_ASSERT_EQUAL_UINT((unsigned)(LEN - TRAIN), (unsigned)h.holdout_used);
+    TEST_ASSERT_TRUE(h.holdout_rms < 1e-6 && h.fit_rms < 1e-6 && h.max_abs < 1e-6);
+    for (k = TRAIN; k < LEN; ++k) { /* noise the fit never sees */
+        const double e = rng_range(&rng, -0.01, 0.01);
+        r[k] += (hyst_wide_t)e;
+        ss += e * e;
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_fit_holdout(1u, &tau, 0, u, r, LEN, TRAIN, &h));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.4, (double)h.weight[0]);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, sqrt(ss / (double)(LEN - TRAIN)), (double)h.holdout_rms);
+    TEST_ASSERT_TRUE(h.fit_rms < 1e-6);
+    /* no hold-out part: the fit alone */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_fit_holdout(1u, &tau, 0, u, r, TRAIN, TRAIN, &h));
+    TEST_ASSERT_EQUAL_UINT(0u, (unsigned)h.holdout_used);
+    memset(&keep, 0x5A, sizeof keep);
+    h = keep;
+    UNCHANGED(&keep, &h, HYST_ERR_ARG, hyst_creep_fit_holdout(1u, &tau, 0, u, r, TRAIN, LEN, &h));
+    UNCHANGED(&keep, &h, HYST_ERR_ARG, hyst_creep_fit_holdout(1u, &tau_bad, 0, u, r, LEN, TRAIN, &h));
+    UNCHANGED(&keep, &h, HYST_ERR_NULL, hyst_creep_fit_holdout(1u, &tau, 0, NULL, r, LEN, TRAIN, &h));
+    UNCHANGED(&keep, &h, HYST_ERR_SINGULAR, hyst_creep_fit_holdout(1u, &tau, 0, u, r, LEN, 1u, &h));
+    u[TRAIN + 5] = (hyst_wide_t)NAN;
+    UNCHANGED(&keep, &h, HYST_ERR_NONFINITE, hyst_creep_fit_holdout(1u, &tau, 0, u, r, LEN, TRAIN, &h));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_creep_fit_holdout(1u, &tau, 0, u, r, LEN, TRAIN, NULL));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -570,5 +618,6 @@ int main(void)
     RUN_TEST(test_fit_and_instance_share_the_convention);
     RUN_TEST(test_fit_singular_cases);
     RUN_TEST(test_fit_refuses_bad_input);
+    RUN_TEST(test_fit_holdout_scores_the_rest);
     return UNITY_END();
 }

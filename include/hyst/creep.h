@@ -246,6 +246,36 @@ hyst_status_t hyst_creep_fit_add(hyst_creep_fit_t *F, hyst_wide_t x, hyst_wide_t
 hyst_status_t hyst_creep_fit_solve(const hyst_creep_fit_t *F, hyst_wide_t *weight,
                                    hyst_wide_t *offset, hyst_wide_t *rms);
 
+/**
+ * @brief A creep term scored as a hold-out scores it (what `hyst fit` and
+ *        the Python and MATLAB/Octave front ends choose its time constants
+ *        by): fitted on the first samples, run from rest over all of them.
+ */
+typedef struct hyst_creep_holdout {
+    hyst_wide_t weight[HYST_CREEP_MAX_TERMS]; /**< fitted on samples [0, train) */
+    hyst_wide_t offset;                       /**< the constant fitted with them */
+    hyst_wide_t fit_rms;                      /**< RMS residual over those equations */
+    hyst_wide_t holdout_rms; /**< RMS of r - c - offset over [train, len) (0: none) */
+    size_t holdout_used;     /**< the finite residuals it is over */
+    hyst_wide_t max_abs;     /**< largest |r - c - offset| over every finite residual */
+} hyst_creep_holdout_t;
+
+/**
+ * @brief Fits @p n_terms lags of time constants @p tau to the residual @p r
+ *        of a model over its drive @p u on samples [0, @p train)
+ *        (hyst_creep_fit_*(), from @p x_rest; a NaN residual is missing:
+ *        the lags take its drive in), then runs the creep with those weights
+ *        from rest over [0, @p len) (hyst_*_creep_step(), the f64 variant
+ *        where double is linked) and scores it on [train, len).
+ * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_ARG (train > len, n_terms or a
+ *         tau as hyst_creep_fit_init()); HYST_ERR_NONFINITE (x_rest or a
+ *         drive); HYST_ERR_SINGULAR (as hyst_creep_fit_solve()); the
+ *         weights' refusal by hyst_*_creep_init(). Nothing written on error.
+ */
+hyst_status_t hyst_creep_fit_holdout(size_t n_terms, const hyst_wide_t *tau, hyst_wide_t x_rest,
+                                     const hyst_wide_t *u, const hyst_wide_t *r, size_t len,
+                                     size_t train, hyst_creep_holdout_t *out);
+
 #ifdef __cplusplus
 }
 #endif

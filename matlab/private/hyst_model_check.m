@@ -3,8 +3,11 @@ function hyst_model_check(p, caller)
 % HYST_MODEL_CHECK  The parts P of a model (HYST_MODEL_PARTS) as a model
 % file and a header hold them: finite numbers, lo and hi scalars, for the
 % asymmetric kind a degree 1..4 and degree (degree + 1) / 2 terms, a delay
-% of whole samples. Another model raises hyst:usage. The curve itself
-% (increasing, monotone) is the library's to check.
+% of whole samples, a creep term as a model file holds it (creep_tau and
+% creep_weight both empty, or 1..4 numbers each, as many, the time
+% constants at least 1 sample, all finite). Another model raises
+% hyst:usage. The curve itself (increasing, monotone) is the library's to
+% check.
   if strcmp(p.kind, 'everett')
     numbers = [p.terms p.y_lo];
     if ~isscalar(p.degree) || ~any(p.degree == 1:4) || ...
@@ -20,5 +23,12 @@ function hyst_model_check(p, caller)
   end
   if ~hyst_is_whole(p.delay) || p.delay < 0
     error('hyst:usage', '%s: delay must be a whole number of samples', caller);
+  end
+  n = numel(p.creep_tau);
+  if n ~= numel(p.creep_weight) || n > 4 || ~all(isfinite([p.creep_tau p.creep_weight])) || ...
+     ~all(p.creep_tau >= 1)
+    error('hyst:usage', ['%s: creep_tau and creep_weight: 1 to 4 numbers each, as many ' ...
+                         '(one per creep term), time constants of at least 1 sample, finite ' ...
+                         'weights (or both empty: no creep term)'], caller);
   end
 end

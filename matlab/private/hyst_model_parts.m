@@ -5,8 +5,10 @@ function p = hyst_model_parts(model, caller)
 % highest power first), P.lo, P.hi; or P.kind 'everett' (MODEL.kind is
 % 'everett') with P.degree, P.lo, P.hi, P.y_lo, P.terms (a row). P.delay:
 % MODEL.delay, 0 without one (the sensor's delay in samples: not part of the
-% model, kept in its file and stated in its header). Not checked here:
-% HYST_MODEL_CHECK, or the library.
+% model, kept in its file and stated in its header). P.creep_tau and
+% P.creep_weight: the creep term's time constants (samples) and weights,
+% rows, from MODEL's fields of those names ([] and [] without: no creep
+% term). Not checked here: HYST_MODEL_CHECK, or the library.
   if isstruct(model) && isfield(model, 'kind') && strcmp(model.kind, 'everett')
     if ~all(isfield(model, {'degree', 'lo', 'hi', 'y_lo', 'terms'}))
       error('hyst:usage', '%s: an everett model is a struct with fields kind, degree, lo, hi, y_lo, terms', ...
@@ -26,5 +28,19 @@ function p = hyst_model_parts(model, caller)
   p.delay = 0;
   if isfield(model, 'delay')
     p.delay = double(model.delay);
+  end
+  p.creep_tau = [];
+  p.creep_weight = [];
+  if isfield(model, 'creep_tau') ~= isfield(model, 'creep_weight')
+    error('hyst:usage', '%s: a creep term needs the fields creep_tau and creep_weight (both or neither)', ...
+          caller);
+  end
+  if isfield(model, 'creep_tau')
+    if ~isnumeric(model.creep_tau) || ~isnumeric(model.creep_weight) || ...
+       ~isreal(model.creep_tau) || ~isreal(model.creep_weight)
+      error('hyst:usage', '%s: creep_tau and creep_weight are real vectors', caller);
+    end
+    p.creep_tau = double(model.creep_tau(:)');
+    p.creep_weight = double(model.creep_weight(:)');
   end
 end

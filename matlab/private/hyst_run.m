@@ -7,7 +7,9 @@ function [out, status, tp_count, inv_err] = hyst_run(command, model, in, args)
 %   exact, or solved for the asymmetric kind) and, for the asymmetric kind
 %   with 'intervals', 'rows' (default: the library's HYST_EVERETT_INV_ROWS).
 %   Table sizes out of the library's range are refused here
-%   (HYST_TABLE_SIZES), before the gateway allocates anything.
+%   (HYST_TABLE_SIZES), before the gateway allocates anything. A model with
+%   a creep term (fields creep_tau, creep_weight) runs it too, as 'hyst sim
+%   --model' and 'hyst inv --model' do (the gateway's ctau, cweight).
   caller = ['hyst_' command];
   defaults = struct('capacity', 2048, 'deadband', 0);
   if strcmp(command, 'inv')
@@ -20,19 +22,21 @@ function [out, status, tp_count, inv_err] = hyst_run(command, model, in, args)
   if strcmp(command, 'inv')
     [intervals, rows] = hyst_table_sizes(opts.intervals, opts.rows, p.kind, caller, true);
   end
+  creep = {p.creep_tau, p.creep_weight};
   if strcmp(p.kind, 'everett') && strcmp(command, 'inv')
     [out, status, tp_count, inv_err] = hyst_mex('inv_everett', p.degree, p.lo, p.hi, p.y_lo, ...
                                                 p.terms, in, double(opts.capacity), ...
-                                                double(opts.deadband), intervals, rows);
+                                                double(opts.deadband), intervals, rows, creep{:});
   elseif strcmp(p.kind, 'everett')
     [out, status, tp_count] = hyst_mex('sim_everett', p.degree, p.lo, p.hi, p.y_lo, ...
-                                       p.terms, in, double(opts.capacity), double(opts.deadband));
+                                       p.terms, in, double(opts.capacity), ...
+                                       double(opts.deadband), creep{:});
   elseif strcmp(command, 'inv')
     [out, status, tp_count, inv_err] = hyst_mex(command, p.coeffs, p.lo, p.hi, in, ...
                                                 double(opts.capacity), double(opts.deadband), ...
-                                                intervals);
+                                                intervals, creep{:});
   else
     [out, status, tp_count] = hyst_mex(command, p.coeffs, p.lo, p.hi, in, ...
-                                       double(opts.capacity), double(opts.deadband));
+                                       double(opts.capacity), double(opts.deadband), creep{:});
   end
 end

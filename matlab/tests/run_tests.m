@@ -16,7 +16,9 @@ function failed = run_tests(root, ref, cli)
            @t_everett_save_load, @t_everett_load_rejects, @t_everett_inv, ...
            @t_everett_inv_table_bitexact, @t_everett_inv_table_error, ...
            @t_everett_inv_table_monotone, @t_everett_inv_table_arguments, ...
-           @t_header_equals_cli, @t_header_tables, @t_header_file, @t_header_arguments};
+           @t_header_equals_cli, @t_header_tables, @t_header_file, @t_header_arguments, ...
+           @t_creep_sim_inv_equal_cli, @t_creep_sum_of_lags, @t_creep_save_load, ...
+           @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -299,7 +301,15 @@ function t_save_load_roundtrip(ctx)
   hyst_model_save(file, f);
   m = hyst_model_load(file);
   check(isequal(m.coeffs, f.coeffs) && m.lo == f.lo && m.hi == f.hi, 'not the same doubles');
-  check(isequal(fieldnames(m), {'coeffs'; 'lo'; 'hi'; 'delay'}) && m.delay == 0, 'fields');
+  % the record drifts: hyst_fit (creep 'auto', as hyst fit) fitted a creep term too
+  check(isequal(fieldnames(m), {'coeffs'; 'lo'; 'hi'; 'delay'; 'creep_tau'; 'creep_weight'}) && ...
+        m.delay == 0, 'fields');
+  check(isequal([m.creep_tau m.creep_weight], [f.creep_tau f.creep_weight]), 'the creep term');
+  g = hyst_fit(d(:, 1), d(:, 5), 'degree', 5, 'skip', 350, 'delay', 1, 'creep', 'none');
+  hyst_model_save(file, g);
+  check(isequal(fieldnames(hyst_model_load(file)), {'coeffs'; 'lo'; 'hi'; 'delay'}), ...
+        'fields without a creep term');
+  hyst_model_save(file, f);
   % the host tool's model file (hyst fit --save), delay included
   cli_file = fullfile(ctx.tmp, 'cli.hyst');
   run_cli(ctx, ['fit --degree 4 --skip 350 --delay 2 --xcol 1 --ycol 5 --save "' cli_file '" "' ...
@@ -1006,4 +1016,287 @@ function t_header_arguments(~)
   expect_error('hyst:usage', @() hyst_mex('inv_table', p{:}, 64, 'int8'));
   expect_error('hyst:usage', @() hyst_mex('inv_table', p{:}, 64));
   expect_error('hyst:ERR_NOT_INCREASING', @() hyst_mex('inv_table', [-1 0], 0, 1, 8, 'double'));
+end
+
+% ---- the creep term (hyst/creep.h, docs/creep.md) ----
+
+function m = creep_plant()
+  % tests/cli/creep.sh's plant: Eq. 20 on [0, 40] V, delay 3, one lag of
+  % 2000 samples weighing 0.05
+  m = paper_f0();
+  m.delay = 3;
+  m.creep_tau = 2000;
+  m.creep_weight = 0.05;
+end
+
+function e = creep_everett()
+  % an asymmetric model with two lags, one of negative weight
+  e = header_everett();
+  e.delay = 2;
+  e.creep_tau = [300 5000];
+  e.creep_weight = [0.02 -0.01];
+end
+
+function m = creep_poly()
+  % f0 on a domain that does not start at 0 (the lags rest at lo), four lags
+  m = paper_f0();
+  m.lo = 5;
+  m.delay = 0;
+  m.creep_tau = [1 50 700.5 1e6];
+  m.creep_weight = [0.01 -0.02 0.03 0.5];
+end
+
+function v = read_numbers(text)
+  v = str2double(strsplit(strtrim(text), sprintf('\n')))';
+end
+
+function write_numbers(file, v)
+  fid = fopen(file, 'w');
+  fprintf(fid, '%.17g\n', v);
+  fclose(fid);
+end
+
+function t_creep_sim_inv_equal_cli(ctx)
+  % a model with a creep term runs bit for bit as hyst sim --model (whose
+  % output comes delay samples later) and its compensator as hyst inv
+  % --model; the compensator gives sim's inputs back (clamped)
+  file = fullfile(ctx.tmp, 'creep.hyst');
+  fx = fullfile(ctx.tmp, 'creep_x.txt');
+  fy = fullfile(ctx.tmp, 'creep_y.txt');
+  models = {creep_plant(), creep_everett(), creep_poly()};
+  for k = 1:numel(models)
+    m = models{k};
+    hyst_model_save(file, m);
+    x = signal(3000, m.lo, m.hi, 20 + k);
+    write_numbers(fx, x);
+    [y, st] = hyst_sim(m, x);
+    check(st == 1, 'model %d: status %d (1: clamped samples)', k, st);
+    c = read_numbers(run_cli(ctx, sprintf('sim --model "%s" --digits 17 "%s" 2>/dev/null', ...
+                                          file, fx)));
+    d = hyst_model_load(file).delay;
+    check(d == m.delay && isequal(c(d + 1:end), y(1:end - d)), ...
+          'model %d: sim differs from hyst sim --model', k);
+    write_numbers(fy, y);
+    c = read_numbers(run_cli(ctx, sprintf('inv --model "%s" --digits 17 "%s" 2>/dev/null', ...
+                                          file, fy)));
+    xd = hyst_inv(m, y);
+    check(isequal(c, xd), 'model %d: inv differs from hyst inv --model', k);
+    err = max(abs(xd - min(max(x, m.lo), m.hi)));
+    check(err < 1e-9 * (m.hi - m.lo), 'model %d: |inv(sim(x)) - x| up to %g', k, err);
+  end
+end
+
+function t_creep_sum_of_lags(~)
+  % the model's output is the hysteresis model's plus the library's creep
+  % (hyst_mex creep) of the inputs as the model took them (clamped), in
+  % double and in single; the creep alone is the lag of its definition,
+  % strictly causal, a NaN sample ignored (status -7)
+  m = creep_poly();
+  bare = rmfield(m, {'creep_tau', 'creep_weight'});
+  for cls = {'double', 'single'}
+    x = cast(signal(3000, m.lo, m.hi, 30), cls{1});
+    c = hyst_mex('creep', m.creep_tau, m.creep_weight, m.lo, min(max(x, m.lo), m.hi));
+    y = hyst_sim(m, x);
+    check(strcmp(class(c), cls{1}) && isequal(y, hyst_sim(bare, x) + c), '%s: not the sum', ...
+          cls{1});
+    check(any(y ~= hyst_sim(bare, x)), '%s: the creep term changed nothing', cls{1});
+  end
+  tau = [5 300];
+  w = [0.7 -0.2];
+  u = signal(2000, -1, 3, 31);
+  [c, st] = hyst_mex('creep', tau, w, 0.5, u);
+  s = [0.5 0.5];
+  ref = zeros(size(u));
+  for k = 1:numel(u)
+    ref(k) = w * s';
+    s = s + (u(k) - s) ./ tau;
+  end
+  check(max(abs(c - ref)) < 1e-12 && st == 0, 'the lag: %g from its definition', ...
+        max(abs(c - ref)));
+  check(abs(c(1) - 0.5 * sum(w)) < 1e-15, 'not causal: c(1) = %g', c(1));
+  u(7) = NaN;
+  [c2, st] = hyst_mex('creep', tau, w, 0.5, u);
+  check(st == -7 && c2(7) == c(7) && c2(8) == c(7), 'a NaN sample');
+end
+
+function t_creep_save_load(ctx)
+  % written and read back: the same doubles, the host tool's creep lines
+  % after the model's; the host tool's file (hyst fit --save) read, its
+  % creep lines written back as they were; none without a creep term
+  file = fullfile(ctx.tmp, 'creep_rt.hyst');
+  models = {creep_plant(), creep_everett(), creep_poly()};
+  for k = 1:numel(models)
+    hyst_model_save(file, models{k});
+    m = hyst_model_load(file);
+    check(isequal(typecast([m.creep_tau m.creep_weight], 'uint64'), ...
+                  typecast([models{k}.creep_tau models{k}.creep_weight], 'uint64')), ...
+          'model %d: not the same creep term', k);
+    lines = strsplit(strtrim(fileread(file)), sprintf('\n'));
+    check(strcmp(lines{end - 2}, ['# creep: the output plus sum of creep_weight[k] s_k, s_k ' ...
+                                  'the input lagged with time constant creep_tau[k] samples ' ...
+                                  '(from lo at rest)']) && ...
+          strncmp(lines{end - 1}, 'creep_tau ', 10) && strncmp(lines{end}, 'creep_weight ', 13), ...
+          'model %d: the creep lines', k);
+    x = signal(1000, m.lo, m.hi, 40 + k);
+    check(isequal(hyst_sim(m, x), hyst_sim(models{k}, x)), 'model %d: runs differently', k);
+  end
+  cli_file = fullfile(ctx.tmp, 'creep_cli.hyst');
+  data = fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat');
+  run_cli(ctx, sprintf('fit --degree 3 --skip 350 --delay 1 --xcol 1 --ycol 5 --save "%s" "%s" 2>&1', ...
+                       cli_file, data));
+  c = hyst_model_load(cli_file);
+  check(isfield(c, 'creep_tau') && c.creep_tau == 5000, 'hyst fit --save''s creep term');
+  hyst_model_save(file, c);
+  a = strsplit(strtrim(fileread(file)), sprintf('\n'));
+  b = strsplit(strtrim(fileread(cli_file)), sprintf('\n'));
+  check(isequal(a(end - 2:end), b(end - 2:end)), 'the creep lines differ from the host tool''s');
+  hyst_model_save(file, paper_f0());
+  check(isempty(strfind(fileread(file), 'creep')) && ~isfield(hyst_model_load(file), 'creep_tau'), ...
+        'a creep term without one');
+end
+
+function t_creep_load_rejects(ctx)
+  % a broken creep term is refused in the host tool's words, naming the
+  % file, the line and the field: hyst_model_load's message after its name
+  % is hyst sim's after 'hyst sim: '
+  file = fullfile(ctx.tmp, 'bad_creep.hyst');
+  good = {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 1', 'coeffs 1 0'};
+  bad = {
+    {'creep_tau 100'}, ':6: field 1: creep_tau needs creep_weight too (creep: both or neither)'
+    {'creep_weight 0.1'}, ':6: field 1: creep_weight needs creep_tau too (creep: both or neither)'
+    {'creep_tau 100 1000', 'creep_weight 0.5'}, ...
+    ':7: creep_weight and creep_tau differ in length (1 and 2 numbers: one of each per term)'
+    {'creep_tau 0.5', 'creep_weight 0.5'}, ...
+    ':6: field 2: ''0.5'' is not a time constant of at least 1 sample'
+    {'creep_tau 100 -3', 'creep_weight 0.5 1'}, ...
+    ':6: field 3: ''-3'' is not a time constant of at least 1 sample'
+    {'creep_tau 1 2 3 4 5', 'creep_weight 1 1 1 1 1'}, ...
+    ':6: field 6: one too many: creep_tau needs 1 to 4 numbers (one per creep term)'
+    {'creep_tau 1', 'creep_weight 1 1 1 1 1'}, ...
+    ':7: field 6: one too many: creep_weight needs 1 to 4 numbers (one per creep term)'
+    {'creep_tau', 'creep_weight 1'}, ...
+    ':6: field 2 is missing: creep_tau needs 1 to 4 numbers (one per creep term)'
+    {'creep_tau 10', 'creep_weight nan'}, ':7: field 2: ''nan'' is not a finite number'
+    {'creep_tau 10', 'creep_weight 0.1 x'}, ':7: field 3: ''x'' is not a finite number'
+  };
+  for k = 1:size(bad, 1)
+    write_lines(file, [good bad{k, 1}]);
+    msg = error_message(@() hyst_model_load(file));
+    expect_error('hyst:model_file', @() hyst_model_load(file));
+    check(strcmp(msg, ['hyst_model_load: ' file bad{k, 2}]), 'case %d: message ''%s''', k, msg);
+    [rc, out] = system(sprintf('echo 0.5 | "%s" sim --model "%s" 2>&1', ctx.cli, file));
+    check(rc ~= 0 && strcmp(strtrim(out), ['hyst sim: ' file bad{k, 2}]), ...
+          'case %d: hyst sim says ''%s''', k, strtrim(out));
+  end
+  % either kind, the creep keys anywhere
+  write_lines(file, {'hyst-model-text 1', 'creep_weight 0.25', 'kind everett', 'lo 0', 'hi 2', ...
+                     'creep_tau 7', 'y_lo 1', 'degree 1', 'terms 2'});
+  e = hyst_model_load(file);
+  check(strcmp(e.kind, 'everett') && e.creep_tau == 7 && e.creep_weight == 0.25, ...
+        'kind everett with a creep term');
+end
+
+function t_creep_header_equals_cli(ctx)
+  % hyst_header's text is hyst header's but for the first line, the creep
+  % block included (after the declaration, before the compensator's table)
+  file = fullfile(ctx.tmp, 'creep_header.hyst');
+  cases = {creep_plant(), {}, ''
+           creep_plant(), {'compensator', true}, '--compensator'
+           creep_everett(), {}, ''
+           creep_everett(), {'compensator', true, 'intervals', 16, 'rows', 8}, ...
+           '--compensator --intervals 16 --rows 8'
+           creep_poly(), {}, ''};
+  for k = 1:size(cases, 1)
+    m = cases{k, 1};
+    hyst_model_save(file, m);
+    run_cli(ctx, sprintf('header --model "%s" --dir "%s" %s comp 2>&1', file, ctx.tmp, ...
+                         cases{k, 3}));
+    cli_text = fileread(fullfile(ctx.tmp, 'comp.h'));
+    text = hyst_header(m, 'comp', cases{k, 2}{:});
+    check(strcmp(after_first_line(text), after_first_line(cli_text)), ...
+          'case %d (%s): the text differs from hyst header''s', k, cases{k, 3});
+    check(~isempty(strfind(text, sprintf('#include "hyst/curve.h"\n#include "hyst/creep.h"\n'))) ...
+          && ~isempty(strfind(text, sprintf('#define comp_CREEP_TERMS %du\n', ...
+                                            numel(m.creep_tau)))), 'case %d: the creep block', k);
+  end
+end
+
+function t_creep_fit(ctx)
+  % hyst_fit's creep term is hyst fit --degree's (its option 'creep' as
+  % --creep): the same model file, bit for bit (the constant with the creep
+  % term's offset), the same creep line; 'none' and a time constant as the
+  % tool; kind everett too
+  data = fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat');
+  d = load(data);
+  cli_file = fullfile(ctx.tmp, 'creep_fit.hyst');
+  cases = {'auto', '', 'poly', 5000
+           'none', '--creep none', 'poly', []
+           500, '--creep 500', 'poly', 500
+           'auto', '--kind everett', 'everett', 5000};
+  for k = 1:size(cases, 1)
+    [creep, args, kind, tau] = cases{k, :};
+    degree = 3 - strcmp(kind, 'everett');
+    f = hyst_fit(d(:, 1), d(:, 5), 'kind', kind, 'degree', degree, 'skip', 350, 'delay', 1, ...
+                 'creep', creep);
+    out = run_cli(ctx, sprintf(['fit --degree %d --skip 350 --delay 1 --xcol 1 --ycol 5 %s ' ...
+                                '--save "%s" "%s" 2>&1'], degree, args, cli_file, data));
+    c = hyst_model_load(cli_file);
+    check(isfield(f, 'creep_tau') == ~isempty(tau) && isfield(c, 'creep_tau') == ~isempty(tau), ...
+          'case %d: a creep term or not', k);
+    if strcmp(kind, 'everett')
+      check(isequal([c.terms c.y_lo], [f.terms f.y_lo]), 'case %d: E differs', k);
+    else
+      check(isequal(c.coeffs, f.coeffs), 'case %d: f0 differs', k);
+    end
+    if isempty(tau)
+      check(isempty(strfind(out, '# creep: tau')), 'case %d: hyst fit has a creep term', k);
+      continue;
+    end
+    check(f.creep_tau == tau && c.creep_tau == tau && c.creep_weight == f.creep_weight, ...
+          'case %d: creep %g, weight %.17g (hyst fit: %g, %.17g)', k, f.creep_tau, ...
+          f.creep_weight, c.creep_tau, c.creep_weight);
+    line = sprintf('# creep: tau %.6g samples, weight %.9g (hold-out rms %.6g; without it %.6g)', ...
+                   f.creep_tau, f.creep_weight, f.creep.holdout_rms, f.creep.holdout_rms_without);
+    check(~isempty(strfind(out, line)), 'case %d: no line ''%s''', k, line);
+    % the model with it predicts the record better than without it
+    x = d(351:end, 1);
+    y = d(352:end, 5);
+    e = hyst_sim(f, x)(1:end - 1) - y;
+    e0 = hyst_sim(rmfield(f, {'creep_tau', 'creep_weight'}), x)(1:end - 1) - y;
+    check(sqrt(mean(e .^ 2)) < sqrt(mean(e0 .^ 2)), 'case %d: no better with creep', k);
+  end
+end
+
+function t_creep_errors(ctx)
+  % a creep term the wrappers refuse (hyst:usage) or the library does
+  % (hyst:<status>), before anything runs
+  m = creep_plant();
+  x = linspace(0, 40, 50)';
+  bad = rmfield(m, 'creep_weight');
+  expect_error('hyst:usage', @() hyst_sim(bad, x));
+  bad = m;
+  bad.creep_weight = [0.1 0.2];
+  expect_error('hyst:usage', @() hyst_sim(bad, x));
+  expect_error('hyst:usage', @() hyst_model_save(fullfile(ctx.tmp, 'b.hyst'), bad));
+  expect_error('hyst:usage', @() hyst_header(bad, 'm'));
+  bad = m;
+  bad.creep_tau = 0.5;
+  expect_error('hyst:ERR_ARG', @() hyst_sim(bad, x));
+  expect_error('hyst:ERR_ARG', @() hyst_inv(bad, x));
+  expect_error('hyst:usage', @() hyst_model_save(fullfile(ctx.tmp, 'b.hyst'), bad));
+  bad = m;
+  bad.creep_weight = Inf;
+  expect_error('hyst:ERR_WEIGHTS', @() hyst_sim(bad, x));
+  expect_error('hyst:usage', @() hyst_header(bad, 'm'));
+  bad = m;
+  bad.creep_tau = 1:5;
+  bad.creep_weight = 1:5;
+  expect_error('hyst:usage', @() hyst_sim(bad, x));
+  expect_error('hyst:usage', @() hyst_model_save(fullfile(ctx.tmp, 'b.hyst'), bad));
+  check(~exist(fullfile(ctx.tmp, 'b.hyst'), 'file'), 'a refused model was written');
+  for c = {'sometimes', 0.5, 2e9, [100 200], true}
+    expect_error('hyst:usage', @() hyst_fit(x, x, 'creep', c{1}));
+  end
+  expect_error('hyst:usage', @() hyst_mex('creep', [1 2], 1, 0, x));
+  expect_error('hyst:ERR_ARG', @() hyst_mex('creep', 0.5, 1, 0, x));
 end

@@ -14,6 +14,7 @@ See docs/python.md in the repository.
 from ._errors import HystError
 from ._hyst import (
     CODE_MAX,
+    CREEP_MAX_TERMS,
     EVERETT_MAX_DEGREE,
     EVENT_CLAMPED,
     EVENT_FULL,
@@ -21,6 +22,8 @@ from ._hyst import (
     MAX_DEGREE,
     SNAPSHOT_VERSION,
     CodeModel,
+    CreepF32,
+    CreepF64,
     ModelF32,
     ModelF64,
     PIF32,
@@ -37,6 +40,7 @@ from ._api import (
     INV_TABLE,
     PI,
     Compensator,
+    Creep,
     Fit,
     Model,
     ModelFromEverett,
@@ -49,9 +53,10 @@ from ._model_file import ModelFileError, header_text, load_model, save_model
 from ._plot import plot
 
 __all__ = [
-    "CODE_MAX", "EVERETT_MAX_DEGREE", "EVENT_CLAMPED", "EVENT_FULL", "EVENT_NONFINITE",
-    "MAX_DEGREE", "SNAPSHOT_VERSION", "DEFAULT_CAPACITY", "EVERETT_INV_INTERVALS",
-    "EVERETT_INV_ROWS", "INV_TABLE", "CodeModel", "Compensator", "Fit",
+    "CODE_MAX", "CREEP_MAX_TERMS", "EVERETT_MAX_DEGREE", "EVENT_CLAMPED", "EVENT_FULL",
+    "EVENT_NONFINITE", "MAX_DEGREE", "SNAPSHOT_VERSION", "DEFAULT_CAPACITY",
+    "EVERETT_INV_INTERVALS", "EVERETT_INV_ROWS", "INV_TABLE", "CodeModel", "Compensator",
+    "Creep", "CreepF32", "CreepF64", "Fit",
     "HystError", "Model", "ModelFromEverett", "ModelFromPoints", "ModelF32", "ModelF64", "PI",
     "PIF32", "PIF64", "Status", "Tcm", "__version__", "compensator_from", "fit", "model_from",
     "plot", "status_str",

@@ -6,7 +6,7 @@ import numpy as np
 
 from . import _hyst
 from ._errors import HystError
-from ._model_file import everett_terms, header_text, save_model
+from ._model_file import _creep_args, everett_terms, header_text, save_model
 
 MAX_DEGREE = _hyst.MAX_DEGREE
 EVERETT_MAX_DEGREE = _hyst.EVERETT_MAX_DEGREE
@@ -34,17 +34,44 @@ def _variant(dtype, f32, f64):
     raise TypeError(f"dtype must be float32 or float64, not {dt}")
 
 
-def Model(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, deadband=0.0):
+def _with_creep(m, creep_tau, creep_weight):
+    """m with the creep term (creep_tau, creep_weight), if any: the library's
+    lags (hyst_*_creep_*), every one at lo at rest."""
+    tau, weight = _creep_args(creep_tau, creep_weight)
+    if tau is not None:
+        m.set_creep(tau, weight)
+    return m
+
+
+def Creep(tau, weight, x_rest, *, dtype=np.float64):
+    """A creep term alone (hyst/creep.h): lags of a drive of time constants
+    ``tau`` (samples, each >= 1) and weights ``weight`` (1 to 4 of each),
+    every lag at ``x_rest`` after init and reset. ``step(x)`` returns
+    c[n] = sum_k weight[k] s_k[n] (from the drives before x), then takes x in;
+    ``output`` is c[n] of the next sample. float64 runs hyst_f64_creep_*,
+    float32 hyst_f32_creep_*."""
+    return _variant(dtype, _hyst.CreepF32, _hyst.CreepF64)(
+        list(map(float, tau)), list(map(float, weight)), float(x_rest))
+
+
+def Model(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, deadband=0.0,
+          creep_tau=None, creep_weight=None):
     """A TCM model with polynomial f0 (coefficients highest power first) on [lo, hi].
 
     float64 runs the library's ``hyst_f64_*`` variant, float32 ``hyst_f32_*``.
     The instance owns ``capacity`` entries per turning-point array.
+    ``creep_tau``, ``creep_weight`` (1 to 4 numbers each, as a model file
+    holds them) add a creep term: the output is the hysteresis model's plus
+    sum_k creep_weight[k] s_k, s_k a first-order lag (time constant
+    creep_tau[k] samples, hyst_*_creep_*()) of the input as the model took
+    it (clamped to [lo, hi]), every lag at lo at rest; strictly causal, as
+    ``hyst sim --model`` runs it.
     """
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
         list(map(float, coeffs)), float(lo), float(hi), int(capacity), False)
     if deadband:
         m.deadband = deadband
-    return m
+    return _with_creep(m, creep_tau, creep_weight)
 
 
 #: Intervals of the firmware's compensator table (HYST_INV_TABLE, the default
@@ -58,7 +85,8 @@ EVERETT_INV_ROWS = _hyst.EVERETT_INV_ROWS
 EVERETT_INV_INTERVALS = _hyst.EVERETT_INV_INTERVALS
 
 
-def Compensator(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, intervals=0):
+def Compensator(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, intervals=0,
+                creep_tau=None, creep_weight=None):
     """The inverse model of Model(coeffs, lo, hi): desired output in, drive out.
 
     ``intervals=0`` (the default, as ``hyst inv``) runs the exact inverse, the
@@ -67,9 +95,14 @@ def Compensator(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, 
     for bit: its ``inverse_error`` is the worst error against the exact
     inverse that init measured, as a fraction of the drive range. Intervals
     outside 0 .. 2^20 raise ``HystError`` (ERR_ARG) before any table is
-    allocated."""
-    return _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
-        list(map(float, coeffs)), float(lo), float(hi), int(capacity), True, _count(intervals))
+    allocated. With a creep term (``creep_tau``, ``creep_weight``: the
+    model's, as :func:`Model` takes them) each desired output y gives the
+    drive of the hysteresis compensator for y - c, c the creep's
+    contribution (``creep_output``, from the drives before), whose lags then
+    take that drive in: ``hyst inv --model``'s compensator, bit for bit."""
+    return _with_creep(_variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
+        list(map(float, coeffs)), float(lo), float(hi), int(capacity), True, _count(intervals)),
+        creep_tau, creep_weight)
 
 
 def ModelFromPoints(xs, ys, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inverse=False):
@@ -82,7 +115,7 @@ def ModelFromPoints(xs, ys, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inve
 
 def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
                      capacity=DEFAULT_CAPACITY, deadband=0.0, inverse=False, intervals=0,
-                     rows=None):
+                     rows=None, creep_tau=None, creep_weight=None):
     """The asymmetric kind (hyst_everett_t): rising from a turning point
     (b, y_b) the output is y_b + E(x, b), falling from (a, y_a) it is
     y_a - E(a, x), with E(a, b) the sum of e[i-1][j] w^i t^j over i >= 1,
@@ -106,24 +139,33 @@ def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
     and ``intervals``, ``rows`` say which table it is (0 for the solved
     one). Bad table arguments (out of range, ``rows`` without intervals,
     either without ``inverse=True``) raise ``HystError`` (ERR_ARG) before
-    the table is allocated."""
+    the table is allocated. ``creep_tau``, ``creep_weight``: a creep term,
+    as :func:`Model` (the model) and :func:`Compensator` (its compensator)
+    take it."""
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
         int(degree), float(lo), float(hi), float(y_lo), list(map(float, terms)), int(capacity),
         bool(inverse), _count(intervals), None if rows is None else _count(rows))
     if deadband:
         m.deadband = deadband
-    return m
+    return _with_creep(m, creep_tau, creep_weight)
+
+
+def _creep_of(desc):
+    """The creep keys of a description (none when it has no creep term)."""
+    return {"creep_tau": desc.get("creep_tau"), "creep_weight": desc.get("creep_weight")}
 
 
 def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
     """The model a description gives: a :func:`hyst.load_model` dict (its
     delay is not the model's: apply it to the comparison) or
     ``Fit.description()``; kind poly (``coeffs``, ``lo``, ``hi``) when the
-    dict has no ``kind``."""
+    dict has no ``kind``; with its creep term when it has ``creep_tau`` and
+    ``creep_weight``."""
     if desc.get("kind", "poly") == "everett":
         return ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
-                                desc["terms"], dtype=dtype, capacity=capacity)
-    return Model(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity)
+                                desc["terms"], dtype=dtype, capacity=capacity, **_creep_of(desc))
+    return Model(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity,
+                 **_creep_of(desc))
 
 
 def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, intervals=0,
@@ -133,16 +175,18 @@ def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inter
     default) gives the exact one; ``intervals=N`` the tabulated one firmware
     runs: kind poly as in :func:`Compensator`, kind everett as in
     :func:`ModelFromEverett` (with its ``rows``). ``rows`` is the asymmetric
-    kind's: given for kind poly, it raises ``HystError`` (ERR_ARG)."""
+    kind's: given for kind poly, it raises ``HystError`` (ERR_ARG). With
+    the description's creep term, the compensator subtracts the creep's
+    contribution from each desired output first (:func:`Compensator`)."""
     if desc.get("kind", "poly") == "everett":
         return ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
                                 desc["terms"], dtype=dtype, capacity=capacity, inverse=True,
-                                intervals=intervals, rows=rows)
+                                intervals=intervals, rows=rows, **_creep_of(desc))
     if rows is not None:
         raise HystError(_hyst.Status.ERR_ARG,
                         "rows is the asymmetric kind's table (kind everett), not kind poly's")
     return Compensator(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity,
-                       intervals=intervals)
+                       intervals=intervals, **_creep_of(desc))
 
 
 def PI(thresholds, weights, *, dtype=np.float64):
@@ -165,9 +209,19 @@ class Fit:
     ``t_degree`` None). Model
     calls (``process``, ``step``, ``reset``...) go to ``model``, so a Fit is
     used as the model itself.
+
+    ``creep`` is the creep term fitted with the model (:func:`fit`'s
+    ``creep``), or None: a dict of ``tau`` (samples), ``weight``, ``offset``
+    (the constant fitted with it, already folded into the model: f0's
+    constant or E's ``y_lo``), ``rms`` and ``max_abs`` of the model with it
+    over the record, and ``holdout_rms`` with it and ``holdout_rms_without``
+    it, the hold-out scores that chose it. ``creep_tau`` and
+    ``creep_weight`` are the model's (lists; empty without one), and
+    ``model``, ``predict``, ``save`` and ``header`` include it. ``rms`` and
+    ``max_abs`` stay the hysteresis fit's own.
     """
 
-    def __init__(self, result, dtype, capacity, delay=0, candidates=None):
+    def __init__(self, result, dtype, capacity, delay=0, candidates=None, creep=None):
         self.__dict__.update(result)
         self.kind = result.get("kind", "poly")
         self.t_degree = result.get("t_degree")
@@ -175,15 +229,23 @@ class Fit:
             self.method = {v: k for k, v in _METHODS.items()}[result["method"]]
         self.delay = int(delay)
         self.candidates = candidates or []
+        self.creep = creep
+        self.creep_tau = [creep["tau"]] if creep else []
+        self.creep_weight = [creep["weight"]] if creep else []
         self.model = model_from(self.description(), dtype=dtype, capacity=capacity)
 
     def description(self):
         """The model's parameters as :func:`hyst.load_model` returns them
-        (without the delay): ``save_model(path, **fit.description())``."""
+        (without the delay), its creep term included when it has one:
+        ``save_model(path, **fit.description())``."""
         if self.kind == "everett":
-            return {"kind": "everett", "degree": self.degree, "lo": self.lo, "hi": self.hi,
-                    "y_lo": self.y_lo, "terms": list(self.terms)}
-        return {"kind": "poly", "coeffs": list(self.coeffs), "lo": self.lo, "hi": self.hi}
+            d = {"kind": "everett", "degree": self.degree, "lo": self.lo, "hi": self.hi,
+                 "y_lo": self.y_lo, "terms": list(self.terms)}
+        else:
+            d = {"kind": "poly", "coeffs": list(self.coeffs), "lo": self.lo, "hi": self.hi}
+        if self.creep_tau:
+            d.update(creep_tau=list(self.creep_tau), creep_weight=list(self.creep_weight))
+        return d
 
     def save(self, path):
         """Writes the model file (hyst-model-text 1, delay included) that
@@ -209,15 +271,17 @@ class Fit:
         return m.process(np.ascontiguousarray(x, dtype=self.model.dtype))
 
     def __repr__(self):
+        creep = (f", creep_tau={self.creep_tau[0]:.6g}, creep_weight={self.creep_weight[0]:.9g}"
+                 if self.creep_tau else "")
         if self.kind == "everett":
             t = ", ".join(f"{v:.9g}" for v in self.terms)
             return (f"Fit(kind='everett', degree={self.degree}, t_degree={self.t_degree}, "
                     f"terms=[{t}], "
                     f"y_lo={self.y_lo:.9g}, lo={self.lo:.9g}, hi={self.hi:.9g}, "
-                    f"rms={self.rms:.6g})")
+                    f"rms={self.rms:.6g}{creep})")
         c = ", ".join(f"{v:.9g}" for v in self.coeffs)
         return (f"Fit(coeffs=[{c}], lo={self.lo:.9g}, hi={self.hi:.9g}, "
-                f"rms={self.rms:.6g}, max_abs={self.max_abs:.6g}, method={self.method!r})")
+                f"rms={self.rms:.6g}, max_abs={self.max_abs:.6g}, method={self.method!r}{creep})")
 
 
 #: Delays tried by fit() when none is given, and the parsimony margin of the
@@ -257,17 +321,15 @@ def _refusal(res):
     return None if res["increasing"] else "f0 not increasing"
 
 
-def _holdout(res, x, y, skip, delay, first):
+def _holdout(res, x, y, skip, delay, first, creep_tau=-1.0):
     """RMS error of the model (res, double) over x[skip:n-delay], scored
-    from sample ``first`` on against y[k + delay]."""
+    from sample ``first`` on against y[k + delay], and, creep_tau >= 0, the
+    creep term fitted to its residual before ``first`` and scored after
+    (a dict, or None): the library's run, as hyst fit scores it."""
     n = len(x) - delay
     m = model_from(res, capacity=(n - skip) // 2 + 2)
-    pred = m.process(np.ascontiguousarray(x[skip:n]))
-    meas = y[skip + delay:n + delay]
-    k = slice(first - skip, None)
-    err = pred[k] - meas[k]
-    ok = np.isfinite(x[skip:n][k]) & np.isfinite(meas[k])
-    return math.sqrt(float(np.mean(err[ok] ** 2))) if ok.any() else math.nan
+    h = _hyst.holdout(m, x, y, skip, delay, first, creep_tau)
+    return h["rms"], h["creep"]
 
 
 def _shapes(kind, t_degree):
@@ -280,54 +342,112 @@ def _shapes(kind, t_degree):
             if t_degree is None or k == t_degree]
 
 
-def _select(x, y, kinds, method, lo, hi, skip, delays, t_degree=None):
+def _score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau):
+    """One candidate (kind, degree deg, t_degree k, delay d): fitted on the
+    first two thirds, scored by its prediction of the last third; with
+    creep_tau >= 0 also the creep term fitted to its residual and scored
+    alike (hyst fit's score(), tools/cli/fit_select.c)."""
+    c = {"kind": kind, "degree": deg, "t_degree": k, "delay": d,
+         "params": _params(kind, deg, k),
+         "holdout_rms": math.nan, "fit_rms": math.nan, "status": "OK",
+         "creep_tau": 0.0, "creep_weight": math.nan, "creep_holdout_rms": math.nan}
+    train = (2 * (len(x) - skip - d)) // 3
+    try:
+        n = skip + train + d  # the training part, as hyst fit passes it
+        res = _fit_one(np.ascontiguousarray(x[:n]), np.ascontiguousarray(y[:n]),
+                       kind, deg, method, lo, hi, skip, d, k)
+        c["fit_rms"] = res["rms"]
+        refusal = _refusal(res)
+        if refusal is None:
+            c["holdout_rms"], creep = _holdout(res, x, y, skip, d, skip + train, creep_tau)
+            if creep is not None and math.isfinite(c["holdout_rms"]):
+                c.update(creep_tau=creep["tau"], creep_weight=creep["weight"],
+                         creep_holdout_rms=creep["holdout_rms"])
+        else:
+            c["status"] = refusal
+    except HystError as e:
+        c["status"] = e.name
+    return c
+
+
+def _select(x, y, kinds, method, lo, hi, skip, delays, t_degree=None, creep_tau=-1.0):
     """Every candidate (kind, degree, t_degree, delay): fitted on the first
-    two thirds, scored by its prediction of the last third; the fewest
-    parameters within PARSIMONY of the lowest error win (hyst fit's rule);
-    between candidates with as many parameters the symmetric kind, then the
-    lower error."""
+    two thirds, scored by its prediction of the last third, alone and with
+    its creep term (creep_tau >= 0); the fewest parameters within PARSIMONY
+    of the lowest error win (hyst fit's rule); between candidates with as
+    many parameters the symmetric kind, then the lower error. Returns the
+    candidates, the index chosen (None: none) and whether with its creep."""
     cands = []
     for d in delays:
         if len(x) <= skip + d:
             break
-        train = (2 * (len(x) - skip - d)) // 3
         for kind in kinds:
             for deg, k in _shapes(kind, t_degree):
-                c = {"kind": kind, "degree": deg, "t_degree": k, "delay": d,
-                     "params": _params(kind, deg, k),
-                     "holdout_rms": math.nan, "fit_rms": math.nan, "status": "OK"}
-                try:
-                    n = skip + train + d  # the training part, as hyst fit passes it
-                    res = _fit_one(np.ascontiguousarray(x[:n]), np.ascontiguousarray(y[:n]),
-                                   kind, deg, method, lo, hi, skip, d, k)
-                    c["fit_rms"] = res["rms"]
-                    refusal = _refusal(res)
-                    if refusal is None:
-                        c["holdout_rms"] = _holdout(res, x, y, skip, d, skip + train)
-                    else:
-                        c["status"] = refusal
-                except HystError as e:
-                    c["status"] = e.name
-                cands.append(c)
-    return cands, _choose(cands)
+                cands.append(_score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau))
+    return (cands, *_choose(cands, creep_tau))
 
 
-def _choose(cands):
-    """The index of the candidate hyst fit's rule picks (None if none was
-    scored): the fewest parameters within PARSIMONY of the lowest hold-out
-    error; between as many, the symmetric kind (its compensator is a table),
-    then the lower error."""
-    scored = [i for i, c in enumerate(cands) if math.isfinite(c["holdout_rms"])]
-    if not scored:
-        return None
-    limit = min(cands[i]["holdout_rms"] for i in scored) * (1 + PARSIMONY)
-    return min((i for i in scored if cands[i]["holdout_rms"] <= limit),
-               key=lambda i: (cands[i]["params"], cands[i]["kind"] != "poly",
-                              cands[i]["holdout_rms"], i))
+def _option_rms(c, with_creep):
+    """The hold-out error of a candidate alone, or with its creep term (NaN
+    when it has none)."""
+    if with_creep:
+        return c["creep_holdout_rms"] if c["creep_tau"] > 0 else math.nan
+    return c["holdout_rms"]
+
+
+def _choose(cands, creep_tau=-1.0):
+    """(index, with_creep) of the option hyst fit's rule picks ((None,
+    False) if none was scored) among every candidate alone (unless a time
+    constant is given: creep_tau > 0) and with its creep term (unless
+    creep_tau < 0; one parameter more): the fewest parameters within
+    PARSIMONY of the lowest hold-out error; between as many, the symmetric
+    kind (its compensator is a table), then the lower error."""
+    ways = range(1 if creep_tau > 0 else 0, 1 if creep_tau < 0 else 2)
+    options = [(i, wc) for i, c in enumerate(cands) for wc in ways
+               if math.isfinite(_option_rms(c, wc))]
+    if not options:
+        return None, False
+    limit = min(_option_rms(cands[i], wc) for i, wc in options) * (1 + PARSIMONY)
+    i, wc = min((o for o in options if _option_rms(cands[o[0]], o[1]) <= limit),
+                key=lambda o: (cands[o[0]]["params"] + o[1], cands[o[0]]["kind"] != "poly",
+                               _option_rms(cands[o[0]], o[1]), o[0], o[1]))
+    return i, bool(wc)
+
+
+def _creep_option(creep):
+    """fit()'s ``creep`` as hyst fit's --creep: -1 none, 0 auto, or the time constant."""
+    if isinstance(creep, str) and creep in ("none", "auto"):
+        return -1.0 if creep == "none" else 0.0
+    try:
+        tau = float(creep)
+    except (TypeError, ValueError):
+        tau = math.nan
+    if isinstance(creep, (str, bool)) or not 1.0 <= tau <= 1e9:
+        raise ValueError("creep must be 'none', 'auto' or a time constant of 1 to 1e9 samples, "
+                         f"not {creep!r}")
+    return tau
+
+
+def _final_creep(res, x, y, kind, skip, delay, tau):
+    """The creep term of time constant tau fitted to the residual of the
+    model fitted on the whole record (hyst fit's fit_final_creep()), its
+    offset folded into the model (res: f0's constant or E's y_lo)."""
+    n = len(x) - delay
+    m = model_from(res, capacity=(n - skip) // 2 + 2)
+    c = _hyst.holdout(m, x, y, skip, delay, n, tau)["creep"]
+    if c is None or not (c["tau"] > 0 and math.isfinite(c["weight"]) and
+                         math.isfinite(c["offset"])):
+        raise ValueError(f"the creep term of time constant {tau:g} samples could not be fitted "
+                         "to the model's residual (a drive that never moves?)")
+    if kind == "everett":
+        res["y_lo"] += c["offset"]
+    else:
+        res["coeffs"][-1] += c["offset"]
+    return c
 
 
 def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None, skip=0,
-        delay=0, dtype=np.float64, capacity=DEFAULT_CAPACITY):
+        delay=0, creep="auto", dtype=np.float64, capacity=DEFAULT_CAPACITY):
     """Identifies a model from a recorded drive ``x`` and response ``y``.
 
     Sample i (skip <= i < n - delay) pairs x[i] with y[i + delay]; the domain
@@ -346,8 +466,22 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
     the parameter count is degree + 1 for poly, E's terms fitted + 1 for
     everett): every candidate is in the result's ``candidates`` (dicts:
     kind, degree, t_degree (None for poly), delay, params, holdout_rms,
-    fit_rms, status, chosen). With a degree given, ``kind=None`` means poly
-    and ``t_degree=None`` all of E's terms (degree - 1). Returns a
+    fit_rms, status, chosen; with a creep term scored also creep_tau (0:
+    none), creep_weight, creep_holdout_rms, with_creep: chosen with it).
+    With a degree given, ``kind=None`` means poly and ``t_degree=None`` all
+    of E's terms (degree - 1).
+
+    ``creep`` chooses a creep term as ``hyst fit --creep`` does
+    (docs/creep.md): ``"auto"`` (the default) scores each candidate alone
+    and with one lag of the input, its time constant the best of 100, 200,
+    500, ..., 20000 samples on the hold-out (those up to the record's
+    length) and its weight one parameter more, by the same rule (with a
+    degree given: the model with it when the model alone errs by more than
+    PARSIMONY over it); ``"none"`` fits none; a number TAU (1..1e9) always
+    fits one lag of TAU samples. The creep term chosen gets its weight and a
+    constant from the residual of the model fitted on the whole record, the
+    constant folded into the model (f0's constant, E's y_lo): the result's
+    ``creep``, ``creep_tau`` and ``creep_weight`` (:class:`Fit`). Returns a
     :class:`Fit`.
     """
     if method not in _METHODS:
@@ -359,24 +493,46 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
     if t_degree is not None and not (0 <= int(t_degree) < EVERETT_MAX_DEGREE and (
             degree is None or int(t_degree) < int(degree))):
         raise ValueError(f"t_degree must be 0..degree-1, not {t_degree!r}")
+    creep_tau = _creep_option(creep)
     lo, hi = (0.0, 0.0) if domain is None else (float(domain[0]), float(domain[1]))
     x = np.ascontiguousarray(x, dtype=np.float64)
     y = np.ascontiguousarray(y, dtype=np.float64)
-    cands = None
+    skip = int(skip)
+    cands, chosen, with_creep = None, None, False
     if degree is None:
         delays = range(0, MAX_DELAY + 1) if delay is None else [int(delay)]
         kinds = KINDS if kind is None else (kind,)
-        cands, best = _select(x, y, kinds, method, lo, hi, int(skip), delays,
-                              None if t_degree is None else int(t_degree))
+        cands, best, with_creep = _select(x, y, kinds, method, lo, hi, skip, delays,
+                                          None if t_degree is None else int(t_degree),
+                                          creep_tau)
         if best is None:
             raise ValueError("no candidate gave a model (an increasing f0, a monotone E) "
-                             "that could predict the last third of the record")
-        kind, degree, delay = cands[best]["kind"], cands[best]["degree"], cands[best]["delay"]
-        t_degree = cands[best]["t_degree"]
+                             "that could predict the last third of the record"
+                             + (" with the creep term given" if creep_tau > 0 else ""))
+        chosen = cands[best]
+        kind, degree, delay = chosen["kind"], chosen["degree"], chosen["delay"]
+        t_degree = chosen["t_degree"]
         for i, c in enumerate(cands):
             c["chosen"] = i == best
+            c["with_creep"] = i == best and with_creep
     elif delay is None:
         raise ValueError("delay=None (chosen) needs degree=None")
-    res = _fit_one(x, y, kind or "poly", int(degree), method, lo, hi, int(skip), int(delay),
+    elif creep_tau >= 0 and len(x) > skip + int(delay):
+        # the model as given, its creep term scored by the same hold-out
+        k = None if (kind or "poly") == "poly" else (
+            int(degree) - 1 if t_degree is None else int(t_degree))
+        chosen = _score(x, y, kind or "poly", int(degree), k, int(delay), method, lo, hi, skip,
+                        creep_tau)
+        with_creep = (chosen["creep_tau"] > 0 and math.isfinite(chosen["creep_holdout_rms"]) and
+                      (creep_tau > 0 or not chosen["holdout_rms"] <=
+                       chosen["creep_holdout_rms"] * (1 + PARSIMONY)))
+    res = _fit_one(x, y, kind or "poly", int(degree), method, lo, hi, skip, int(delay),
                    t_degree)
-    return Fit(res, dtype, capacity, delay=delay, candidates=cands)
+    creep_info = None
+    if with_creep and _refusal(res) is None:
+        c = _final_creep(res, x, y, kind or "poly", skip, int(delay), chosen["creep_tau"])
+        creep_info = {"tau": c["tau"], "weight": c["weight"], "offset": c["offset"],
+                      "rms": c["fit_rms"], "max_abs": c["max_abs"],
+                      "holdout_rms": chosen["creep_holdout_rms"],
+                      "holdout_rms_without": chosen["holdout_rms"]}
+    return Fit(res, dtype, capacity, delay=delay, candidates=cands, creep=creep_info)

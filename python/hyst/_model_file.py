@@ -10,12 +10,18 @@ import struct
 import tempfile
 
 MAGIC = "hyst-model-text 1"
-_KEYS = ("kind", "lo", "hi", "coeffs", "delay", "y_lo", "degree", "terms")
+_KEYS = ("kind", "lo", "hi", "coeffs", "delay", "y_lo", "degree", "terms", "creep_tau",
+         "creep_weight")
 #: Keys each kind needs, and keys only the other kind has.
 _NEEDS = {"poly": ("lo", "hi", "coeffs"), "everett": ("lo", "hi", "y_lo", "degree", "terms")}
 _REFUSES = {"poly": ("y_lo", "degree", "terms"), "everett": ("coeffs",)}
 _MAX_COEFFS = 10  # HYST_MAX_DEGREE + 1 in the default build
 _EVERETT_MAX_DEGREE = 4  # HYST_EVERETT_MAX_DEGREE
+_CREEP_MAX_TERMS = 4  # HYST_CREEP_MAX_TERMS
+_CREEP_KEYS = ("creep_tau", "creep_weight")
+#: The comment line before a creep term, as the host tool writes it.
+_CREEP_COMMENT = ("# creep: the output plus sum of creep_weight[k] s_k, s_k the input lagged "
+                  "with time constant creep_tau[k] samples (from lo at rest)")
 
 
 def everett_terms(degree):
@@ -44,11 +50,81 @@ def _numbers(path, no, key, values):
     return numbers
 
 
+def _creep_numbers(path, no, key, values):
+    """The numbers of a creep_tau or creep_weight line, checked as the host
+    tool checks them (tools/cli/model_file.c), with its messages."""
+    needs = f"{key} needs 1 to {_CREEP_MAX_TERMS} numbers (one per creep term)"
+    if not values:
+        raise ModelFileError(f"{path}:{no}: field 2 is missing: {needs}")
+    if len(values) > _CREEP_MAX_TERMS:
+        raise ModelFileError(f"{path}:{no}: field {_CREEP_MAX_TERMS + 2}: one too many: {needs}")
+    numbers = []
+    for i, v in enumerate(values, start=2):
+        try:
+            x = float(v)
+        except ValueError:
+            x = math.nan
+        if not math.isfinite(x):
+            raise ModelFileError(f"{path}:{no}: field {i}: '{v}' is not a finite number")
+        if key == "creep_tau" and not x >= 1.0:
+            raise ModelFileError(f"{path}:{no}: field {i}: '{v}' is not a time constant of "
+                                 "at least 1 sample")
+        numbers.append(x)
+    return numbers
+
+
+def _creep_complete(path, seen, where):
+    """Both creep keys or neither, as many numbers in each (the host tool's
+    checks and messages, after the model's keys)."""
+    has = [k for k in _CREEP_KEYS if k in seen]
+    if len(has) == 1:
+        other = _CREEP_KEYS[1] if has[0] == _CREEP_KEYS[0] else _CREEP_KEYS[0]
+        raise ModelFileError(f"{path}:{where[has[0]]}: field 1: {has[0]} needs {other} too "
+                             "(creep: both or neither)")
+    if has and len(seen["creep_tau"]) != len(seen["creep_weight"]):
+        raise ModelFileError(f"{path}:{where['creep_weight']}: creep_weight and creep_tau differ "
+                             f"in length ({len(seen['creep_weight'])} and "
+                             f"{len(seen['creep_tau'])} numbers: one of each per term)")
+
+
+def _creep_args(creep_tau, creep_weight):
+    """Checks a creep term as the model file holds it: both or neither, 1 to
+    4 of each, as many, time constants >= 1 (samples), finite numbers.
+    Returns (tau, weight) as lists of floats, or (None, None)."""
+    if creep_tau is None and creep_weight is None:
+        return None, None
+    if creep_tau is None or creep_weight is None:
+        raise ValueError("a creep term needs creep_tau and creep_weight (both or neither)")
+    tau = [float(v) for v in creep_tau]
+    weight = [float(v) for v in creep_weight]
+    if not tau and not weight:
+        return None, None
+    if len(tau) != len(weight) or not 1 <= len(tau) <= _CREEP_MAX_TERMS:
+        raise ValueError(f"creep_tau and creep_weight: 1 to {_CREEP_MAX_TERMS} numbers each, "
+                         "as many of each (one per creep term)")
+    if not all(math.isfinite(v) for v in tau + weight) or not all(v >= 1.0 for v in tau):
+        raise ValueError("creep_tau: time constants of at least 1 sample; creep_weight: finite "
+                         "numbers")
+    return tau, weight
+
+
+def _creep_text(tau, weight):
+    """The creep term's lines after the model's, as the host tool writes them
+    (cli_model_text())."""
+    if tau is None:
+        return ""
+    return (_CREEP_COMMENT + "\ncreep_tau" + "".join(f" {v:.17g}" for v in tau) +
+            "\ncreep_weight" + "".join(f" {v:.17g}" for v in weight) + "\n")
+
+
 def load_model(path):
     """Reads a model file. Returns a dict: ``kind`` ("poly" or "everett"),
     ``lo``, ``hi``, ``delay`` (samples, 0 when absent) and, for poly,
     ``coeffs`` (highest power first); for everett ``y_lo``, ``degree`` and
-    ``terms`` (e[i-1][j] of w^i t^j, i = 1..degree, then j = 0..degree-i)."""
+    ``terms`` (e[i-1][j] of w^i t^j, i = 1..degree, then j = 0..degree-i);
+    with a creep term also ``creep_tau`` (time constants, samples) and
+    ``creep_weight`` (lists of 1 to 4 numbers, one per lag; the keys are
+    absent when the file has none)."""
     with open(path, encoding="utf-8") as f:
         lines = f.read().splitlines()
     if not lines or lines[0].strip() != MAGIC:
@@ -69,6 +145,9 @@ def load_model(path):
             if len(values) != 1 or values[0] not in _NEEDS:
                 raise ModelFileError(f"{path}:{no}: field 2: kind must be 'poly' or 'everett'")
             seen[key] = values[0]
+            continue
+        if key in _CREEP_KEYS:
+            seen[key] = _creep_numbers(path, no, key, values)
             continue
         if key == "coeffs" and not 2 <= len(values) <= _MAX_COEFFS:
             raise ModelFileError(f"{path}:{no}: coeffs needs 2 to {_MAX_COEFFS} numbers")
@@ -91,15 +170,18 @@ def load_model(path):
     for key in _NEEDS[kind]:
         if key not in seen:
             raise ModelFileError(f"{path}: the key {key} is missing")
+    _creep_complete(path, seen, where)
     model = {"kind": kind, "lo": seen["lo"], "hi": seen["hi"], "delay": int(seen.get("delay", 0))}
     if kind == "poly":
         model["coeffs"] = seen["coeffs"]
-        return model
-    degree = int(seen["degree"])
-    if len(seen["terms"]) != everett_terms(degree):
-        raise ModelFileError(f"{path}:{where['terms']}: terms needs {everett_terms(degree)} "
-                             f"numbers for degree {degree}, not {len(seen['terms'])}")
-    model.update(y_lo=seen["y_lo"], degree=degree, terms=seen["terms"])
+    else:
+        degree = int(seen["degree"])
+        if len(seen["terms"]) != everett_terms(degree):
+            raise ModelFileError(f"{path}:{where['terms']}: terms needs {everett_terms(degree)} "
+                                 f"numbers for degree {degree}, not {len(seen['terms'])}")
+        model.update(y_lo=seen["y_lo"], degree=degree, terms=seen["terms"])
+    if "creep_tau" in seen:
+        model.update(creep_tau=seen["creep_tau"], creep_weight=seen["creep_weight"])
     return model
 
 
@@ -130,11 +212,15 @@ def _poly_args(coeffs, kind, degree, y_lo, terms):
 
 
 def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", degree=None,
-               y_lo=None, terms=None):
+               y_lo=None, terms=None, creep_tau=None, creep_weight=None):
     """Writes a model file (17 significant digits: the same doubles read
     back), replacing ``path`` whole or not at all. ``kind="everett"`` writes
     the asymmetric kind from ``degree``, ``y_lo`` and ``terms`` (no
-    ``coeffs``). ``save_model(path, **load_model(other))`` copies a file."""
+    ``coeffs``). ``creep_tau`` and ``creep_weight`` (both or neither, 1 to 4
+    numbers each, time constants >= 1 sample) add a creep term, written after
+    the model as ``hyst fit --save`` writes it.
+    ``save_model(path, **load_model(other))`` copies a file."""
+    creep_tau, creep_weight = _creep_args(creep_tau, creep_weight)
     if lo is None or hi is None or not all(math.isfinite(float(v)) for v in (lo, hi)):
         raise ValueError("a finite domain lo, hi is needed")
     if int(delay) != delay or delay < 0:
@@ -155,6 +241,7 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
                 f"the output {int(delay)} samples after its input (docs/cli.md)\n"
                 f"kind poly\nlo {float(lo):.17g}\nhi {float(hi):.17g}\ndelay {int(delay)}\n"
                 "coeffs " + " ".join(f"{c:.17g}" for c in coeffs) + "\n")
+    text += _creep_text(creep_tau, creep_weight)
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=os.path.basename(path) + ".")
     try:
@@ -238,8 +325,25 @@ def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals
     return text
 
 
+def _creep_header(name, tau, weight):
+    """The creep term's block of a header, as ``hyst header`` writes it
+    (header_creep() in tools/cli/model_file.c): its count, time constants and
+    weights for hyst_creep_init() with the domain's lo as the rest drive."""
+    if tau is None:
+        return ""
+    return ("\n/* creep: add hyst_creep_step() of the model's input to its output\n"
+            f" * (hyst/creep.h): hyst_creep_init(&creep, {name}_CREEP_TERMS,\n"
+            f" * {name}_creep_tau, {name}_creep_weight, lo) */\n"
+            f"#define {name}_CREEP_TERMS {len(tau)}u\n"
+            f"static const hyst_wide_t {name}_creep_tau[{name}_CREEP_TERMS] = {{"
+            + ", ".join(_literal(v) for v in tau) + "};\n"
+            f"static const hyst_wide_t {name}_creep_weight[{name}_CREEP_TERMS] = {{"
+            + ", ".join(_literal(v) for v in weight) + "};\n")
+
+
 def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,
-                terms=None, delay=0, compensator=False, intervals=None, rows=None):
+                terms=None, delay=0, compensator=False, intervals=None, rows=None,
+                creep_tau=None, creep_weight=None):
     """C header declaring the firmware's model as ``hyst fit --header``
     writes it: ``static const hyst_poly_t name`` (f0), or for
     ``kind="everett"`` ``static const hyst_everett_t name`` (degree, lo, hi,
@@ -252,7 +356,14 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
     ``name_INTERVALS`` (and ``name_ROWS``), for firmware's
     ``hyst_curve_inverse_table_const()`` or
     ``hyst_curve_everett_inverse_table_const()`` (``intervals``, ``rows``:
-    the table's size, the library's defaults when None)."""
+    the table's size, the library's defaults when None). A creep term
+    (``creep_tau``, ``creep_weight``, as :func:`save_model` takes them) adds
+    ``#include "hyst/creep.h"``, ``name_CREEP_TERMS``, ``name_creep_tau`` and
+    ``name_creep_weight`` after the model, as ``hyst header`` writes them,
+    for ``hyst_creep_init(&creep, name_CREEP_TERMS, name_creep_tau,
+    name_creep_weight, lo)`` (the compensator's table is the hysteresis
+    model's alone: firmware subtracts ``hyst_creep_output()`` before it)."""
+    creep_tau, creep_weight = _creep_args(creep_tau, creep_weight)
     if not name.isidentifier() or not name.isascii():
         raise ValueError(f"{name!r} is not a C identifier")
     if not compensator and (intervals is not None or rows is not None):
@@ -279,6 +390,10 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
                 f"{_literal(lo)}, {_literal(hi)},\n    {{{body}}}}};")
     table = (_compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows)
              if compensator else "")
+    includes = '#include "hyst/curve.h"\n'
+    if creep_tau is not None:
+        includes += '#include "hyst/creep.h"\n'
     return (f"/* Generated by the Python package hyst: {what}. */\n"
-            f"#ifndef {guard}\n#define {guard}\n\n#include \"hyst/curve.h\"\n\n"
-            f"{decl}\n{table}\n#endif /* {guard} */\n")
+            f"#ifndef {guard}\n#define {guard}\n\n{includes}\n"
+            f"{decl}\n{_creep_header(name, creep_tau, creep_weight)}{table}\n"
+            f"#endif /* {guard} */\n")

@@ -4,8 +4,10 @@
  * computed by the library in src/; this file only owns the memory (the
  * instances, their turning-point arrays, curves, PI parameters), maps numpy
  * arrays onto the library's pointers without copies, and turns error codes
- * into hyst.HystError. The friendly layer (dtype choice, fit(), plot()) is
- * python/hyst/.
+ * into hyst.HystError; the creep term's fit is scored here as the `hyst`
+ * tool scores it (holdout(), creep_score(): tools/cli/fit_select.c and
+ * fit_creep.c), on the library's lags and fit. The friendly layer (dtype
+ * choice, fit(), plot()) is python/hyst/.
  */
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
@@ -14,6 +16,7 @@
 #include <nanobind/stl/unique_ptr.h>
 #include <nanobind/stl/vector.h>
 
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -118,6 +121,22 @@ size_t table_rows(std::optional<long long> rows, size_t intervals)
     return static_cast<size_t>(*rows);
 }
 
+/* A creep term's time constants and weights (creep.h) as the library
+ * takes them: as many of each, 1 .. HYST_CREEP_MAX_TERMS; the values are
+ * the library's to check (hyst_*_creep_init()). */
+std::pair<std::vector<hyst_wide_t>, std::vector<hyst_wide_t>>
+creep_params(const std::vector<double> &tau, const std::vector<double> &weight)
+{
+    if (tau.size() != weight.size()) {
+        raise_status(HYST_ERR_ARG, "creep_tau and creep_weight differ in length");
+    }
+    if (tau.empty() || tau.size() > HYST_CREEP_MAX_TERMS) {
+        raise_status(HYST_ERR_ARG, "a creep term has 1 .. HYST_CREEP_MAX_TERMS lags");
+    }
+    return {std::vector<hyst_wide_t>(tau.begin(), tau.end()),
+            std::vector<hyst_wide_t>(weight.begin(), weight.end())};
+}
+
 /* The library's functions of one real variant, by number type. */
 template <class T> struct Ops;
 #define HYST_PY_OPS(T, P, NAME)                                             \
@@ -141,6 +160,10 @@ template <class T> struct Ops;
         static constexpr auto pi_step = hyst_##P##_pi_step;                 \
         static constexpr auto pi_process = hyst_##P##_pi_process;           \
         static constexpr auto pi_output = hyst_##P##_pi_output;             \
+        static constexpr auto creep_init = hyst_##P##_creep_init_;          \
+        static constexpr auto creep_reset = hyst_##P##_creep_reset;         \
+        static constexpr auto creep_step = hyst_##P##_creep_step;           \
+        static constexpr auto creep_output = hyst_##P##_creep_output;       \
         static constexpr const char *dtype = NAME;                          \
     };
 HYST_PY_OPS(float, f32, "float32")
@@ -189,6 +212,10 @@ struct Tcm {
     Tcm() = default;
     Tcm(const Tcm &) = delete;
     Tcm &operator=(const Tcm &) = delete;
+    virtual ~Tcm() = default;
+
+    /* Back at rest: A0, and a creep term's lags at lo (Real). */
+    virtual void reset() { hyst_reset(&S); }
 
     nb::bytes save() const
     {
@@ -226,6 +253,11 @@ template <class T> struct Real : Owned<T, T> {
     size_t intervals = 0u; /* the table's intervals (per row); 0: the exact compensator */
     size_t rows = 0u;      /* the asymmetric kind's table: rows per direction; 0: none */
     double deadband = 0.0;
+    /* A creep term (creep.h), when set_creep() gave one: lags of the model's
+     * input (of the drive, for a compensator), every lag at lo at rest */
+    bool has_creep = false;
+    hyst_creep_t creep{};
+    std::vector<double> creep_tau, creep_weight;
 
     /* The instance on fwd, or on its inverse (the compensator): the one
      * hyst_curve_inverse() prepares, or the table inv already holds. */
@@ -314,19 +346,238 @@ template <class T> struct Real : Owned<T, T> {
         this->lo = lo_;
         this->hi = hi_;
     }
-    T step(T x) { return O::step(&this->S, x); }
+    /* One sample, with the creep term when there is one, as `hyst sim
+     * --model` and `hyst inv --model` run it (tools/cli/cli_tcm.c): the
+     * model's output plus the creep of its input as the model took it
+     * (clamped); the compensator inverts the hysteresis model for the
+     * desired output less the creep's share, whose lags then take the drive
+     * in. */
+    T step(T x)
+    {
+        if (!has_creep) {
+            return O::step(&this->S, x);
+        }
+        if (inverse) {
+            const T v = x - O::creep_output(&creep);
+            const T drive = O::step(&this->S, v);
+            (void)O::creep_step(&creep, drive);
+            return drive;
+        }
+        const T y = O::step(&this->S, x);
+        return y + O::creep_step(&creep, O::input(&this->S));
+    }
+    /* The block call; with a creep term sample by sample (step(), the same
+     * numbers as the library's block call for the hysteresis model) and
+     * the statuses folded as the block call folds them. */
+    void run_block(const T *px, T *py, size_t n)
+    {
+        if (!has_creep) {
+            this->block_status = O::process(&this->S, px, py, n);
+            return;
+        }
+        int worst = HYST_OK;
+        bool failed = false;
+        for (size_t i = 0u; i < n; ++i) {
+            py[i] = step(px[i]);
+            const int st = hyst_status(&this->S);
+            if (st < 0) {
+                failed = true;
+            } else if (st > worst) {
+                worst = st;
+            }
+        }
+        this->block_status = failed ? HYST_ERR_NONFINITE : worst;
+    }
     nb::object process(const In<T> &x, nb::handle out)
     {
-        return block<T, T>(x, out, [this](const T *px, T *py, size_t n) {
-            this->block_status = O::process(&this->S, px, py, n);
-        });
+        return block<T, T>(x, out,
+                           [this](const T *px, T *py, size_t n) { run_block(px, py, n); });
     }
     void set_deadband(double w)
     {
         check(O::set_deadband(&this->S, static_cast<T>(w)), "deadband");
         deadband = static_cast<double>(static_cast<T>(w));
     }
+    /* A creep term of lags of time constants tau (samples) and weights
+     * weight (hyst_*_creep_init(), every lag at lo); empty lists remove it.
+     * Also puts the model back at rest, so that both start together. */
+    void set_creep(const std::vector<double> &tau, const std::vector<double> &weight)
+    {
+        if (tau.empty() && weight.empty()) {
+            has_creep = false;
+            creep_tau.clear();
+            creep_weight.clear();
+            hyst_reset(&this->S);
+            return;
+        }
+        const auto p = creep_params(tau, weight);
+        hyst_creep_t c{};
+        check(O::creep_init(&c, p.first.size(), p.first.data(), p.second.data(),
+                            static_cast<hyst_wide_t>(this->lo), HYST_LAYOUT),
+              "creep init");
+        creep = c;
+        has_creep = true;
+        creep_tau = tau;
+        creep_weight = weight;
+        hyst_reset(&this->S);
+    }
+    void reset() override
+    {
+        hyst_reset(&this->S);
+        if (has_creep) {
+            (void)O::creep_reset(&creep, static_cast<T>(this->lo));
+        }
+    }
 };
+
+/* A creep term alone (creep.h) of a real variant: the lags of a drive and
+ * their weighted sum, the library's numbers. */
+template <class T> struct Creep {
+    using O = Ops<T>;
+    hyst_creep_t C{};
+    std::vector<double> tau, weight;
+    double x_rest;
+    int block_status = HYST_OK;
+
+    Creep(const std::vector<double> &tau_, const std::vector<double> &weight_, double x_rest_)
+        : tau(tau_), weight(weight_), x_rest(x_rest_)
+    {
+        const auto p = creep_params(tau_, weight_);
+        check(O::creep_init(&C, p.first.size(), p.first.data(), p.second.data(),
+                            static_cast<hyst_wide_t>(x_rest_), HYST_LAYOUT),
+              "creep init");
+    }
+    T step(T x) { return O::creep_step(&C, x); }
+    nb::object process(const In<T> &x, nb::handle out)
+    {
+        return block<T, T>(x, out, [this](const T *px, T *py, size_t n) {
+            bool failed = false;
+            for (size_t i = 0u; i < n; ++i) {
+                py[i] = O::creep_step(&C, px[i]);
+                failed = failed || hyst_creep_status(&C) < 0;
+            }
+            block_status = failed ? HYST_ERR_NONFINITE : HYST_OK;
+        });
+    }
+    void reset(std::optional<double> at)
+    {
+        check(O::creep_reset(&C, static_cast<T>(at ? *at : x_rest)), "creep reset");
+    }
+};
+
+/* One creep term of time constant tau fitted as `hyst fit` fits it
+ * (hyst_creep_fit_holdout(): its weight and offset from the equations of
+ * [0, train), u the model's inputs, r its residual, NaN where missing, then
+ * the creep run from rest over all of u, scored on [train, len); NaN when
+ * train == len). */
+struct CreepFitted {
+    double tau = 0.0, weight = 0.0, offset = 0.0;
+    double holdout_rms = NAN, fit_rms = NAN, max_abs = 0.0;
+};
+
+CreepFitted creep_one(const std::vector<double> &u, const std::vector<double> &r, size_t train,
+                      double x_rest, double tau)
+{
+    CreepFitted out;
+    hyst_creep_holdout_t h;
+    const hyst_wide_t t = static_cast<hyst_wide_t>(tau);
+    const size_t len = u.size();
+    if (hyst_creep_fit_holdout(1u, &t, static_cast<hyst_wide_t>(x_rest), u.data(), r.data(), len,
+                               train < len ? train : len, &h) != HYST_OK) {
+        return out;
+    }
+    out.tau = tau;
+    out.weight = static_cast<double>(h.weight[0]);
+    out.offset = static_cast<double>(h.offset);
+    out.fit_rms = static_cast<double>(h.fit_rms);
+    out.max_abs = static_cast<double>(h.max_abs);
+    out.holdout_rms = h.holdout_used > 0u ? static_cast<double>(h.holdout_rms) : NAN;
+    return out;
+}
+
+/* Time constants `hyst fit --creep auto` tries (samples): those up to the
+ * run's length (tools/cli/fit_creep.c). */
+constexpr double CREEP_TAUS[] = {100.0,  200.0,  500.0,   1000.0,
+                                 2000.0, 5000.0, 10000.0, 20000.0};
+
+/* The creep term `hyst fit` fits to a model's run (fit_creep_score()): tau
+ * > 0 that time constant; 0 each of CREEP_TAUS up to the run's length, the
+ * lowest hold-out error kept. A dict of tau (0: none could be fitted),
+ * weight, offset, holdout_rms, fit_rms, max_abs. */
+nb::dict creep_score(const std::vector<double> &u, const std::vector<double> &r, size_t train,
+                     double x_rest, double tau)
+{
+    if (r.size() != u.size()) {
+        raise_status(HYST_ERR_ARG, "u and r differ in length");
+    }
+    CreepFitted best;
+    if (tau > 0) {
+        best = creep_one(u, r, train, x_rest, tau);
+    } else {
+        for (const double t : CREEP_TAUS) {
+            if (t > static_cast<double>(u.size())) {
+                break;
+            }
+            const CreepFitted c = creep_one(u, r, train, x_rest, t);
+            if (std::isfinite(c.holdout_rms) && !(best.holdout_rms <= c.holdout_rms)) {
+                best = c;
+            }
+        }
+    }
+    nb::dict d;
+    d["tau"] = best.tau;
+    d["weight"] = best.weight;
+    d["offset"] = best.offset;
+    d["holdout_rms"] = best.holdout_rms;
+    d["fit_rms"] = best.fit_rms;
+    d["max_abs"] = best.max_abs;
+    return d;
+}
+
+/*
+ * A model of double run over a record as `hyst fit` scores it
+ * (tools/cli/fit_select.c, fit_model_run_creep()): from rest, x[k] paired
+ * with y[k + delay] for skip <= k < n - delay; its RMS error over k >= from
+ * (NaN when none), and, creep_tau >= 0, the creep term fitted to its
+ * residual on the samples before `from` and scored after (creep_score()).
+ */
+nb::dict holdout(Real<double> &m, const In<double> &x, const In<double> &y, size_t skip,
+                 size_t delay, size_t from, double creep_tau)
+{
+    const size_t n = x.shape(0);
+    if (y.shape(0) != n) {
+        raise_status(HYST_ERR_ARG, "x and y differ in length");
+    }
+    if (m.has_creep || m.inverse) {
+        raise_status(HYST_ERR_ARG, "holdout runs a model without a creep term");
+    }
+    const double *px = x.data(), *py = y.data();
+    const size_t len = n > delay + skip ? n - delay - skip : 0u;
+    std::vector<double> u(creep_tau >= 0 ? len : 0u), r(u.size());
+    double ss = 0.0;
+    size_t used = 0u;
+    for (size_t k = skip; k + delay < n; ++k) {
+        const double ym = hyst_f64_step(&m.S, px[k]);
+        const bool ok = std::isfinite(px[k]) && std::isfinite(py[k + delay]);
+        if (!u.empty()) { /* the input as the model took it (clamped; the last one for NaN) */
+            u[k - skip] = hyst_f64_input(&m.S);
+            r[k - skip] = ok ? py[k + delay] - ym : NAN;
+        }
+        if (ok && k >= from) {
+            const double e = ym - py[k + delay];
+            ss += e * e;
+            ++used;
+        }
+    }
+    nb::dict d;
+    d["rms"] = used > 0u ? std::sqrt(ss / static_cast<double>(used)) : NAN;
+    if (creep_tau >= 0 && len > 0u) {
+        d["creep"] = creep_score(u, r, from > skip ? from - skip : 0u, m.lo, creep_tau);
+    } else {
+        d["creep"] = nb::none();
+    }
+    return d;
+}
 
 /* The code variant: integer DAC codes in, float out. */
 struct Code : Owned<hyst_code_word_t, float> {
@@ -583,6 +834,15 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
                                       static_cast<double>(seal.max_err));
             },
             "hyst_curve_table_seal() of the table: (crc, max_err).")
+        .def("set_creep", &R::set_creep, "tau"_a, "weight"_a,
+             "A creep term (hyst/creep.h): lags of the model's input of time constants tau "
+             "(samples) and weights weight, every lag at lo; empty lists remove it. Puts the "
+             "model back at rest.")
+        .def_ro("creep_tau", &R::creep_tau)
+        .def_ro("creep_weight", &R::creep_weight)
+        .def_prop_ro("creep_output",
+                     [](const R &s) { return s.has_creep ? Ops<T>::creep_output(&s.creep) : T(0); },
+                     "The creep's contribution to the next sample (0 without a creep term).")
         .def_prop_ro("dtype", [](const R &) { return Ops<T>::dtype; });
     def_process<T, R>(model_cls);
 
@@ -604,6 +864,30 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
         .def_ro("block_status", &P::block_status)
         .def_prop_ro("dtype", [](const P &) { return Ops<T>::dtype; });
     def_process<T, P>(pi_cls);
+}
+
+template <class T> void bind_creep(nb::module_ &m, const char *name)
+{
+    using C = Creep<T>;
+    nb::class_<C> cls(m, name, "A creep term alone (hyst/creep.h): lags of a drive, weighted.");
+    cls.def(nb::init<const std::vector<double> &, const std::vector<double> &, double>(),
+            "tau"_a, "weight"_a, "x_rest"_a)
+        .def("step", &C::step, "x"_a,
+             "The contribution c[n] (from the drives before x), then takes x in.")
+        .def("reset", &C::reset, "x_rest"_a = nb::none(),
+             "Every lag at x_rest (the one given at init when None).")
+        .def("clear_events", [](C &s) { hyst_creep_clear_events(&s.C); })
+        .def_prop_ro("output", [](const C &s) { return Ops<T>::creep_output(&s.C); },
+                     "c[n] of the next sample, whatever drive it takes.")
+        .def_prop_ro("status", [](const C &s) { return hyst_creep_status(&s.C); })
+        .def_prop_ro("events", [](const C &s) { return hyst_creep_events(&s.C); })
+        .def_prop_ro("size", [](const C &s) { return hyst_creep_size(&s.C); })
+        .def_ro("tau", &C::tau)
+        .def_ro("weight", &C::weight)
+        .def_ro("x_rest", &C::x_rest)
+        .def_ro("block_status", &C::block_status)
+        .def_prop_ro("dtype", [](const C &) { return Ops<T>::dtype; });
+    def_process<T, C>(cls);
 }
 
 } // namespace
@@ -652,7 +936,8 @@ NB_MODULE(_hyst, m)
         .value("ERR_NOT_MONOTONE", HYST_ERR_NOT_MONOTONE);
 
     nb::class_<Tcm>(m, "Tcm", "What every TCM instance has (model, compensator, code model).")
-        .def("reset", [](Tcm &s) { hyst_reset(&s.S); }, "Back at A0 = (lo, f0(lo)).")
+        .def("reset", &Tcm::reset,
+             "Back at rest: A0 = (lo, f0(lo)), and a creep term's lags at lo.")
         .def("clear_events", [](Tcm &s) { hyst_clear_events(&s.S); })
         .def("save", &Tcm::save, "Snapshot of the memory (bytes, the library's format).")
         .def("restore", &Tcm::restore, "b"_a, "Restores a snapshot taken with the same curve.")
@@ -673,6 +958,9 @@ NB_MODULE(_hyst, m)
 
     bind_real<float>(m, "ModelF32", "PIF32");
     bind_real<double>(m, "ModelF64", "PIF64");
+    bind_creep<float>(m, "CreepF32");
+    bind_creep<double>(m, "CreepF64");
+    m.attr("CREEP_MAX_TERMS") = static_cast<unsigned long>(HYST_CREEP_MAX_TERMS);
 
     nb::class_<Code, Tcm> code_cls(m, "CodeModel");
     code_cls
@@ -692,6 +980,12 @@ NB_MODULE(_hyst, m)
 
     m.def("fit", &fit, "x"_a, "y"_a, "degree"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a);
+    m.def("holdout", &holdout, "model"_a, "x"_a, "y"_a, "skip"_a, "delay"_a, "first"_a,
+          "creep_tau"_a = -1.0,
+          "A fresh float64 model run over the record as hyst fit scores it: its RMS error from "
+          "sample first on and, creep_tau >= 0, the creep term fitted to its residual.");
+    m.def("creep_score", &creep_score, "u"_a, "r"_a, "train"_a, "x_rest"_a, "tau"_a,
+          "The creep term hyst fit fits to a model's inputs u and residual r.");
     m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a = -1);
 }

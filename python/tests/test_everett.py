@@ -238,15 +238,30 @@ def test_choice_rule_fewest_parameters_then_symmetric_then_lower_error():
     best = 1.0
     within = best * (1 + PARSIMONY / 2)
     # the fewest parameters within the margin, whatever its kind
-    assert _choose([cand("poly", 5, best), cand("everett", 4, within)]) == 1
+    assert _choose([cand("poly", 5, best), cand("everett", 4, within)]) == (1, False)
     # as many parameters: the symmetric kind, even with the higher error
-    assert _choose([cand("everett", 4, best), cand("poly", 4, within)]) == 1
+    assert _choose([cand("everett", 4, best), cand("poly", 4, within)]) == (1, False)
     # outside the margin, fewer parameters do not win
-    assert _choose([cand("poly", 5, best), cand("poly", 4, best * (1 + 2 * PARSIMONY))]) == 0
+    assert _choose([cand("poly", 5, best),
+                    cand("poly", 4, best * (1 + 2 * PARSIMONY))]) == (0, False)
     # between equals of one kind, the lower error; unscored ones never
     assert _choose([cand("everett", 6, within), cand("everett", 6, best),
-                    cand("poly", 2, float("nan"))]) == 1
-    assert _choose([cand("poly", 2, float("nan"))]) is None
+                    cand("poly", 2, float("nan"))]) == (1, False)
+    assert _choose([cand("poly", 2, float("nan"))]) == (None, False)
+
+    # with creep terms (hyst fit --creep auto): each candidate alone and with
+    # its creep term, one parameter more, by the same rule
+    def crept(kind, params, rms, creep_rms):
+        return dict(cand(kind, params, rms), creep_tau=1000.0, creep_holdout_rms=creep_rms)
+    two = [crept("poly", 4, 2.0, best), crept("poly", 5, 1.5, within)]
+    assert _choose(two, 0.0) == (0, True)       # 4 + 1 parameters within the margin
+    assert _choose(two, -1.0) == (1, False)     # --creep none: the candidates alone
+    assert _choose(two, 1000.0) == (0, True)    # --creep TAU: with it, always
+    # the creep term only where it is worth its parameter
+    assert _choose([crept("poly", 4, best, within)], 0.0) == (0, False)
+    assert _choose([crept("poly", 4, 1.5, best)], 0.0) == (0, True)
+    # a candidate whose creep term could not be fitted (tau 0) has no creep option
+    assert _choose([dict(crept("poly", 4, 1.5, best), creep_tau=0.0)], 1000.0) == (None, False)
 
 
 def test_major_loops_determine_e_linear_in_t():

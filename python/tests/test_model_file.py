@@ -22,8 +22,9 @@ def test_cli_model_file_round_trip(c_build, tmp_path):
                    check=True, capture_output=True)
     m = hyst.load_model(path)
     assert m["delay"] == 2 and len(m["coeffs"]) == 5
+    assert len(m["creep_tau"]) == 1  # hyst fit --creep auto chose a creep term
     x = np.loadtxt(DATA, usecols=0)[350:1350]
-    y = hyst.Model(m["coeffs"], m["lo"], m["hi"]).process(x)
+    y = hyst.model_from(m).process(x)
     inp = tmp_path / "x.txt"
     np.savetxt(inp, x, fmt="%.17g")
     out = subprocess.run([str(c_build["cli"]), "sim", "--model", str(path), str(inp)],
@@ -34,8 +35,10 @@ def test_cli_model_file_round_trip(c_build, tmp_path):
     assert np.all(cli[:2] == cli[0])
     # written back by Python, read by Python and by the CLI: the same doubles
     again = tmp_path / "again.hyst"
-    hyst.save_model(again, m["coeffs"], m["lo"], m["hi"], delay=m["delay"])
+    hyst.save_model(again, m["coeffs"], m["lo"], m["hi"], delay=m["delay"],
+                    creep_tau=m["creep_tau"], creep_weight=m["creep_weight"])
     assert hyst.load_model(again) == m
+    assert again.read_text() == path.read_text()  # the CLI's text, creep lines included
     out2 = subprocess.run([str(c_build["cli"]), "sim", "--model", str(again), str(inp)],
                           check=True, capture_output=True, text=True).stdout
     assert out2.split() == out
@@ -80,9 +83,14 @@ def test_fit_chooses_as_the_cli_and_the_header_reproduces_it(c_build, tmp_path):
                          text=True).stdout
     chosen = [c for c in a.candidates if c["chosen"]][0]
     t_deg = f"t-degree {a.t_degree}, " if a.kind == "everett" else ""
+    # the record drifts: both choose a creep term too, one parameter more
+    assert chosen["with_creep"] and a.creep is not None
     assert f"# chosen by hold-out: degree {a.degree}, delay {a.delay} (kind {a.kind}, " \
-           f"{t_deg}{chosen['params']} parameters:" in cli
-    assert f"\n# parameters {chosen['params']}\n" in cli
+           f"{t_deg}creep, {chosen['params'] + 1} parameters:" in cli
+    assert f"\n# parameters {chosen['params'] + 1}\n" in cli
+    assert f"\n# creep: tau {a.creep_tau[0]:.6g} samples, weight {a.creep_weight[0]:.9g} " \
+           f"(hold-out rms {a.creep['holdout_rms']:.6g}; without it " \
+           f"{a.creep['holdout_rms_without']:.6g})\n" in cli
     assert (a.kind, a.degree, a.t_degree) == ("everett", 4, 1)  # E linear in t
     everett = [c for c in a.candidates if c["kind"] == "everett"]
     assert len(everett) == 90 and cli.count("# candidate everett degree") == 90
@@ -91,11 +99,15 @@ def test_fit_chooses_as_the_cli_and_the_header_reproduces_it(c_build, tmp_path):
                f"delay {c['delay']}: "
         assert line + (f"hold-out rms {c['holdout_rms']:.6g}," if np.isfinite(c["holdout_rms"])
                        else "not scored") in cli, line
+        if c["creep_tau"] > 0:  # and its creep term, scored alike
+            assert f"; with creep tau {c['creep_tau']:.6g}: {c['creep_holdout_rms']:.6g}" in \
+                cli.split(line)[1].split("\n")[0], line
 
     model = tmp_path / "m.hyst"
     f.save(model)
+    assert f.creep is not None and hyst.load_model(model)["creep_tau"] == f.creep_tau
     xs = x[350:2350]
-    want = hyst.Model(f.coeffs, f.lo, f.hi).process(xs)
+    want = hyst.model_from(f.description()).process(xs)
     inp = tmp_path / "x.txt"
     np.savetxt(inp, xs, fmt="%.17g")
     out = subprocess.run([str(c_build["cli"]), "sim", "--model", str(model), "--digits", "17",
@@ -104,8 +116,9 @@ def test_fit_chooses_as_the_cli_and_the_header_reproduces_it(c_build, tmp_path):
     assert np.array_equal(got[f.delay:], want[:len(want) - f.delay])  # bit for bit
 
     out = run_on_header(tmp_path, "f0_fit", f.header("f0_fit"),
-                        "hyst_init(&S, &f0_fit, xl, yl, xr, yr, 4096) != HYST_OK", inp)
-    assert np.array_equal(out, want)  # bit for bit
+                        "hyst_init(&S, &f0_fit, xl, yl, xr, yr, 4096) != HYST_OK" + CREEP_INIT,
+                        inp, CREEP_DECLARATION, step=CREEP_STEP)
+    assert np.array_equal(out, want)  # bit for bit, the creep term included
 
 
 RUN_C = r"""
@@ -123,21 +136,31 @@ int main(int argc, char **argv)
         return 1;
     }
     while (fscanf(in, "%lf", &x) == 1) {
-        printf("%.17g\n", hyst_step(&S, x));
+        printf("%.17g\n", STEP);
     }
     return fclose(in) != 0;
 }
 """
 
+# A model with a creep term in firmware: the creep of the input as the model
+# took it added to its output (hyst/creep.h), every lag at lo at rest
+CREEP_DECLARATION = "hyst_creep_t creep;"
+CREEP_INIT = (" ||\n        hyst_creep_init(&creep, NAME_CREEP_TERMS, NAME_creep_tau, "
+              "NAME_creep_weight, NAME.lo) != HYST_OK")
+CREEP_STEP = "hyst_step(&S, x) + hyst_creep_step(&creep, hyst_input(&S))"
 
-def run_on_header(tmp_path, name, header, init_fails, inputs, declarations=""):
+
+def run_on_header(tmp_path, name, header, init_fails, inputs, declarations="",
+                  step="hyst_step(&S, x)"):
     """Builds a C program on `header` (NAME.h) and the library's sources, in
     double, with the project's warnings as errors: `init_fails` is the
-    condition that prepares the instance S, true on failure. Runs it on the
-    file `inputs`; returns its outputs (17 digits)."""
+    condition that prepares the instance S, true on failure; `step` the
+    output of an input x. Runs it on the file `inputs`; returns its outputs
+    (17 digits)."""
     (tmp_path / f"{name}.h").write_text(header)
-    program = RUN_C.replace("NAME", name).replace("DECLARATIONS", declarations)
-    (tmp_path / "run.c").write_text(program.replace("INIT_FAILS", init_fails))
+    program = RUN_C.replace("DECLARATIONS", declarations).replace("STEP", step)
+    program = program.replace("INIT_FAILS", init_fails).replace("NAME", name)
+    (tmp_path / "run.c").write_text(program)
     root = os.path.join(os.path.dirname(__file__), "..", "..")
     srcs = sorted(os.path.join(root, "src", s) for s in os.listdir(os.path.join(root, "src"))
                   if s.endswith(".c"))
@@ -293,13 +316,16 @@ def test_everett_header_compiles_and_reproduces_the_model(tmp_path):
     f = hyst.fit(x, y, 2, kind="everett", skip=350, delay=1)
     text = f.header("e_fit")
     assert "static const hyst_everett_t e_fit = {\n    2u, " in text
+    assert f.creep is not None and "#define e_fit_CREEP_TERMS 1u\n" in text
     xs = x[350:2350]
     inp = tmp_path / "x.txt"
     np.savetxt(inp, xs, fmt="%.17g")
     out = run_on_header(tmp_path, "e_fit", text,
                         "hyst_curve_from_everett(&curve, &e_fit) != HYST_OK ||\n"
-                        "        hyst_init_curve(&S, &curve, xl, yl, xr, yr, 4096) != HYST_OK",
-                        inp, declarations="hyst_curve_t curve;")
+                        "        hyst_init_curve(&S, &curve, xl, yl, xr, yr, 4096) != HYST_OK" +
+                        CREEP_INIT, inp,
+                        declarations="hyst_curve_t curve;\n    " + CREEP_DECLARATION,
+                        step=CREEP_STEP)
     assert np.array_equal(out, hyst.model_from(f.description()).process(xs))  # bit for bit
     # the same header from the model file, passed whole
     f.save(tmp_path / "e.hyst")

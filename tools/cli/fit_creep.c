@@ -17,44 +17,20 @@ static const double creep_taus[] = {100.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0,
 static void creep_one(const double *u, const double *r, size_t len, size_t train, double x_rest,
                       double tau, fit_creep_t *out)
 {
-    hyst_creep_fit_t F;
-    hyst_creep_t C;
     const hyst_wide_t t = (hyst_wide_t)tau;
-    hyst_wide_t w = 0, offset = 0, rms = 0;
-    double ss = 0.0;
-    size_t k, used = 0u;
+    hyst_creep_holdout_t h;
     memset(out, 0, sizeof *out);
     out->holdout_rms = NAN;
     out->fit_rms = NAN;
-    if (hyst_creep_fit_init(&F, 1u, &t, (hyst_wide_t)x_rest) != HYST_OK) {
-        return;
-    }
-    for (k = 0u; k < train; ++k) {
-        if (isfinite(r[k])) {
-            (void)hyst_creep_fit_add(&F, (hyst_wide_t)u[k], (hyst_wide_t)r[k]);
-        } else {
-            (void)hyst_creep_fit_feed(&F, (hyst_wide_t)u[k]);
-        }
-    }
-    if (hyst_creep_fit_solve(&F, &w, &offset, &rms) != HYST_OK ||
-        hyst_f64_creep_init(&C, 1u, &t, &w, (hyst_wide_t)x_rest) != HYST_OK) {
+    if (hyst_creep_fit_holdout(1u, &t, (hyst_wide_t)x_rest, u, r, len, train, &h) != HYST_OK) {
         return;
     }
     out->tau = tau;
-    out->weight = (double)w;
-    out->offset = (double)offset;
-    out->fit_rms = (double)rms;
-    for (k = 0u; k < len; ++k) { /* the creep as hyst sim runs it, from rest */
-        const double e = r[k] - hyst_f64_creep_step(&C, u[k]) - (double)offset;
-        if (isfinite(r[k])) {
-            out->max_abs = fabs(e) > out->max_abs ? fabs(e) : out->max_abs;
-            if (k >= train) {
-                ss += e * e;
-                ++used;
-            }
-        }
-    }
-    out->holdout_rms = used > 0u ? sqrt(ss / (double)used) : NAN;
+    out->weight = (double)h.weight[0];
+    out->offset = (double)h.offset;
+    out->fit_rms = (double)h.fit_rms;
+    out->max_abs = (double)h.max_abs;
+    out->holdout_rms = h.holdout_used > 0u ? (double)h.holdout_rms : NAN;
 }
 
 void fit_creep_score(const double *u, const double *r, size_t len, size_t train, double x_rest,
