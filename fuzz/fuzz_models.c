@@ -1443,18 +1443,22 @@ static void fuzz_pi_fit(reader_t *rd, unsigned flags)
  * (structured: 1 + b^2 / 4 samples, up to 16 257, or 0.5 for b = 255; raw: any
  * double), a weight ((signed char) / 16; raw: any double), then the rest
  * drive ((signed char) / 8; raw: any double). Opcodes: 0xF0 reset to the
- * rest drive; 0xF1 a NaN sample; 0xF2 the fit of the samples so far; any
- * other byte a drive sample (structured: (signed char) b2 / 8; raw: a
- * double). Each sample also goes into a fit as the residual r = c_ref +
- * 0.25 + the drive's low bits (a known lag plus an offset plus noise).
+ * rest drive; 0xF1 a NaN sample; 0xF2 the fit of the samples so far; 0xF3
+ * the next sample fed to the fit without its equation (a missing
+ * residual); any other byte a drive sample (structured: (signed char) b2 /
+ * 8; raw: a double). Each sample also goes into a fit as the residual r =
+ * c_ref + 0.25 + the drive's low bits (a known lag plus an offset plus
+ * noise).
  * Checks: init refuses exactly what creep.h says, in its order, writing
  * nothing; output() is bit for bit the next step's value; each value
  * within the header's bound of a double reference of the same lags (its
  * rates 1 / tau computed here: the same rounding); the states stay in the
  * drives' hull (one step past it for tau < 2); a NaN sample changes no
- * state and says HYST_ERR_NONFINITE; the fit's solution zeroes the gradient
- * of its least-squares objective (to 1e-9 of its terms' scale), or the fit
- * says SINGULAR. */
+ * state and says HYST_ERR_NONFINITE (cleared by hyst_creep_clear_events());
+ * the fit's solution zeroes the gradient of its least-squares objective (to
+ * 1e-9 of its terms' scale), or the fit says SINGULAR, and
+ * hyst_creep_fit_holdout() over the same samples gives the same numbers bit
+ * for bit (the same fit, the same order). */
 static void fuzz_creep(reader_t *rd, unsigned flags)
 {
     static hyst_creep_t C, keep_c;
@@ -1467,6 +1471,7 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
     hyst_status_t st, want = HYST_OK;
     size_t k, count = 0u;
     unsigned ops;
+    int missing = 0; /* 0xF3: the next sample's residual is missing */
     for (k = 0u; k < n; ++k) {
         const unsigned b = rd_u8(rd);
         tau[k] = raw ? rd_f64(rd) : b == 255u ? 0.5 : 1.0 + (double)(b * b) / 4.0;
@@ -1516,6 +1521,15 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
             hyst_wide_t wf[HYST_CREEP_MAX_TERMS], off = 0, rms = 0;
             const hyst_status_t fs = hyst_creep_fit_solve(&F, wf, &off, &rms);
             CHECK(fs == HYST_OK || fs == HYST_ERR_SINGULAR);
+            { /* the same fit through the hold-out scorer, no hold-out part */
+                hyst_creep_holdout_t h;
+                const hyst_status_t hs = hyst_creep_fit_holdout(n, tau, x_rest, xs, rs, count, count, &h);
+                CHECK(hs == fs || (fs == HYST_OK && hs == HYST_ERR_WEIGHTS));
+                if (hs == HYST_OK) {
+                    CHECK(memcmp(h.weight, wf, n * sizeof wf[0]) == 0 && h.offset == off &&
+                          h.fit_rms == rms && h.holdout_used == 0u);
+                }
+            }
             if (fs == HYST_OK && count > 0u) {
                 /* re-run the lags over the samples fitted, in double */
                 double sf[HYST_CREEP_MAX_TERMS], g[HYST_CREEP_MAX_TERMS + 1u];
@@ -1528,6 +1542,10 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
                 for (i = 0u; i < count; ++i) {
                     /* e and the sum of its terms' sizes: the scale its rounding has */
                     double e = rs[i] - off, size_e = fabs(rs[i]) + fabs(off);
+                    if (isnan(rs[i])) { /* fed without its equation: the lags move on */
+                        for (j = 0u; j < n; ++j) sf[j] += a_ref[j] * (xs[i] - sf[j]);
+                        continue;
+                    }
                     for (j = 0u; j < n; ++j) {
                         e -= wf[j] * sf[j];
                         size_e += fabs(wf[j] * sf[j]);
@@ -1560,6 +1578,12 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
             CHECK((hyst_creep_events(&C) & HYST_EVENT_NONFINITE) != 0u);
             CHECK(memcmp(C.state, keep_c.state, sizeof C.state) == 0);
             CHECK(isnan(y) || y == hyst_creep_output(&C));
+            hyst_creep_clear_events(&C);
+            CHECK(hyst_creep_events(&C) == 0u);
+            continue;
+        }
+        if (op == 0xF3u) {
+            missing = 1;
             continue;
         }
         x = raw ? rd_f64(rd) : (double)(signed char)rd_u8(rd) / 8.0;
@@ -1588,7 +1612,12 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
             const double sk = C.state[k].HYST_R, slack = (tau[k] < 2.0 ? 2.0 : 1.0) * EPS * m;
             CHECK(sk >= lo_x - slack && sk <= hi_x + slack);
         }
-        if (count < MAX_OPS) { /* a known lag, an offset and noise as the residual */
+        if (count < MAX_OPS && missing) { /* the residual missing: the lags move on */
+            CHECK(hyst_creep_fit_feed(&F, x) == HYST_OK);
+            xs[count] = x;
+            rs[count] = NAN;
+            ++count;
+        } else if (count < MAX_OPS) { /* a known lag, an offset and noise as the residual */
             const double r = c_ref + 0.25 + ldexp((double)(rd->at & 7u), -12);
             if (isfinite(r) && hyst_creep_fit_add(&F, x, r) == HYST_OK) {
                 xs[count] = x;
@@ -1596,6 +1625,7 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
                 ++count;
             }
         }
+        missing = 0;
     }
     (void)sum_w;
 }

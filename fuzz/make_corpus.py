@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """Writes the seed corpora (small, committed): fuzz/corpus/ for fuzz_hyst.c,
-fuzz/corpus_models/ for fuzz_models.c, fuzz/corpus_code/ for fuzz_code.c (layouts in their header comments)
-and fuzz/corpus_model_file/ for fuzz_model_file.c (model files: tests/cli/models/*.hyst, a valid one
+fuzz/corpus_models/ for fuzz_models.c, fuzz/corpus_code/ for fuzz_code.c, fuzz/corpus_q31/ for fuzz_q31.c
+(layouts in their header comments) and fuzz/corpus_model_file/ for fuzz_model_file.c (model files: tests/cli/models/*.hyst, a valid one
 in several spellings, and malformed variants of it).
 regress_* files are fuzzer finds, kept by hand, never written here."""
 import os, struct, math
@@ -171,6 +171,28 @@ models = {
     "pifit_few_samples": bytes([IDENT, PIFIT, 5, 0, 31]) + add(0.1) + add(0.9) + bytes([SOLVE]),
 }
 
+# fuzz_models.c's creep module (first byte 252..255): [flags][terms] then per term tau byte
+# (1 + b^2 / 4 samples; 255: 0.5) and weight ((signed char) / 16), the rest drive ((signed
+# char) / 8), then ops: 0xF0 reset, 0xF1 NaN, 0xF2 fit, 0xF3 next residual missing, else a
+# sample (op, (signed char) / 8)
+CREEP = 252
+
+def creep(terms, taus, weights, rest, drives, ops=b"", flags=0):
+    b = bytes([CREEP, flags, terms]) + b"".join(bytes([t]) + sbyte(w * 16) for t, w in zip(taus, weights))
+    return b + sbyte(rest * 8) + b"".join(bytes([1]) + sbyte(d * 8) for d in drives) + ops
+
+steps = [((i * 37) % 33) / 2.0 - 8.0 for i in range(60)]  # a deterministic jumpy drive
+models.update({
+    "creep_one_lag": creep(1, [40], [0.5], 1.0, steps, bytes([0xF2, 0xF1, 0xF0, 1, 24, 0xF2])),
+    "creep_two_lags_missing": creep(2, [20, 90], [0.75, -0.25], 0.0, steps[:30],
+                                    bytes([0xF3, 1, 40, 0xF2]) + b"".join(bytes([1]) + sbyte(d * 8) for d in steps[30:]) + b"\xf2"),
+    "creep_four_fast": creep(4, [0, 1, 2, 3], [0.5, 0.5, -0.5, 1.0], -2.0, steps[:40], b"\xf2\xf1\xf2"),
+    "creep_tau_half": creep(1, [255], [0.5], 0.0, steps[:4]),
+    "creep_terms5": creep(5, [9] * 5, [0.1] * 5, 0.0, steps[:4]),
+    "creep_raw": bytes([CREEP, 2, 1]) + struct.pack("<3d", 5000.0, 0.3, 0.0)
+        + b"".join(bytes([1]) + struct.pack("<d", d / 4) for d in steps[:20]) + b"\xf2",
+})
+
 # ---- fuzz_code.c: [flags][cap % 20] config, code range, [deadband], ops ----
 RAWCFG, VIACURVE, CNULLS, CKIND, RAWRANGE, DEADBAND, BADDB, DEEP = 1, 2, 4, 8, 16, 32, 64, 128
 convex = (3, 0.0, 3.9, [1 / 64, 8 / 64, 32 / 64, 0.0], 2)    # f0'' > 0
@@ -306,10 +328,99 @@ everett_seeds = {
         "8040a0648c78827d03e0fa0580932d732c018e40a0648c78827dfa058020932d732c018e78827dfa"
         "07e0804049"),
 }
+# fuzz_q31.c: [flags][cap % 20] config, code range, [intervals], [deadband], [bad width], ops
+QRAW, QCOMP, QPROBES, QRAWRANGE, QDEADBAND, QBADDB, QDEEP, QWIDE = 1, 2, 4, 8, 16, 32, 64, 128
+eq20_like = (3, 0.0, 3.9375, [-1 / 64, 8 / 64, 55 / 64, 37 / 64], 0)  # Eq. 20 on [0, 40], x = 10 t
+cube = (3, -1.0, 2.0, [1.0, 0.0, 0.0, 0.0], 0)                       # flat at 0: marked intervals
+
+def q31_cfg(flags, cap, curve, clo=0, span=4095, intervals=None, db=None, bad=None):
+    if flags & QRAW:
+        b = raw(0, cap, *curve)[2:]
+    else:
+        b = structured(0, cap, *curve)[2:]
+    b = bytes([flags, cap]) + b
+    if flags & QRAWRANGE:
+        b += struct.pack("<I", clo)[:3] + struct.pack("<I", clo + span)[:3]
+    else:
+        b += bytes([0]) + struct.pack("<HH", span, clo)
+    if flags & QCOMP:
+        b += struct.pack("<H", intervals) if flags & QWIDE else bytes([intervals])
+    if flags & QDEADBAND:
+        b += struct.pack("<H", db) if not flags & QCOMP else struct.pack("<I", db)[:3]
+    if flags & QBADDB:
+        b += bytes([bad or 0])
+    return b
+
+def qc(v):  # one in-range code, kind 0 (u16 % (span + 1))
+    return bytes([0]) + struct.pack("<H", v)
+
+def qd(frac):  # one desired output, kind 0: -2^27 + frac 2^28 (24 bits)
+    return bytes([0]) + struct.pack("<I", max(0, min(0xFFFFFF, int(round(frac * 0xFFFFFF)))))[:3]
+
+def q_shrink(unit, levels=6, steps=4, top=1.0):
+    b, at = b"", 0.0
+    for k in range(levels):
+        for target in (top * (1 - 0.07 * k), top * 0.07 * (k + 1)):
+            for i in range(1, steps + 1):
+                b += unit(at + (target - at) * i / steps)
+            at = target
+    return b
+
+def qcodes(frac, top=4095):
+    return qc(int(round(frac * top)))
+
+qnoise = qc(2000) + b"".join(bytes([10, v & 0xFF]) for v in (5, -3, 4, -6, 2, 7, -2, -5) * 3)
+dnoise = qd(0.5) + b"".join(bytes([10, v & 0xFF]) for v in (5, -3, 4, -6, 2, 7, -2, -5) * 3)
+q31_seeds = {
+    # the model: Eq. 20-like cubic on 12-bit codes, nested loops, a block, reset, accessors
+    "model_eq20_12bit": q31_cfg(0, 19, eq20_like) + q_shrink(qcodes) + bytes([0xF1, 5, 0, 0, 4, 3, 11, 0x10, 0x00, 0x14, 9])
+        + bytes([0xF4, 0xF0]) + q_shrink(qcodes, 2, 3),
+    "model_deep_nesting": q31_cfg(QDEEP, 255, eq20_like, span=65535) + bytes([0xF2, 200]) + qc(60000)
+        + bytes([0xF0, 0xF2, 100]) + qc(30000),
+    "model_deadband_requests": q31_cfg(QDEADBAND | QBADDB, 6, eq20_like, db=6, bad=3) + qnoise
+        + bytes([0xF3, 1]) + struct.pack("<H", 0) + bytes([0]) + struct.pack("<H", 100) + qnoise
+        + bytes([0xF3, 7]) + struct.pack("<H", 9) + bytes([0]) + struct.pack("<H", 3000) + qnoise
+        + bytes([0xF3, 9, 5, 3, 0xF5]),
+    "model_clamped": q31_cfg(0, 5, eq20_like, clo=1000, span=2000) + bytes([4, 7, 0x14, 9, 0x0C, 1, 2, 3, 3, 11, 0x1C, 4, 0])
+        + bytes([0xF1, 6, 3, 11, 4, 7, 0, 0x10, 0x00, 0x14, 9, 0x1C, 0x0C, 1, 2, 3]) + bytes([0xF6]),
+    "model_merge_cap2": q31_cfg(0, 2, eq20_like, span=65535) + q_shrink(lambda u: qcodes(u, 65535), 6, 3),
+    "model_probes": q31_cfg(QPROBES | QBADDB, 8, eq20_like, bad=200) + q_shrink(qcodes, 2, 2) + bytes([0xF7]),
+    "model_raw_eq20": q31_cfg(QRAW, 40, (3, 0.0, 40.0, [-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1]))
+        + q_shrink(qcodes, 3, 3),
+    # the compensator (flag bit1): intervals, then desired outputs
+    "comp_eq20_12bit": q31_cfg(QCOMP, 19, eq20_like, intervals=32) + q_shrink(qd)
+        + bytes([0xF1, 64 | 5, 0, 0, 0, 4, 0x0C, 3, 0x0B, 2, 200, 0x24, 1, 2, 3]) + bytes([0xF4, 0xF0]) + q_shrink(qd, 2, 3),
+    "comp_flat_x3": q31_cfg(QCOMP, 12, cube, span=65535, intervals=64) + q_shrink(qd, 4, 4)
+        + bytes([0xF2, 30]),
+    "comp_deadband_requests": q31_cfg(QCOMP | QDEADBAND | QBADDB, 6, eq20_like, intervals=16, db=1 << 16, bad=9) + dnoise
+        + bytes([0xF3, 1]) + struct.pack("<I", 0)[:3] + qd(0.9) + dnoise
+        + bytes([0xF3, 7]) + struct.pack("<I", 1 << 12)[:3] + qd(0.1) + dnoise,
+    "comp_clamped_blocks": q31_cfg(QCOMP, 3, eq20_like, clo=100, span=4095, intervals=8)
+        + bytes([0x0C, 4, 0x1C, 0, 0x14, 0x24, 1, 2, 3, 0x2C, 4, 0x2C]) + bytes([0xF1, 8]) + qd(0.3) + qd(0.7)
+        + bytes([0x0C, 4, 0x1C, 9, 0x03, 0x0B, 0x05]) + q_shrink(qd, 3, 2),
+    "comp_wide_n_probes": q31_cfg(QCOMP | QWIDE | QPROBES, 10, eq20_like, intervals=1000) + q_shrink(qd, 2, 3),
+    "comp_deep_nesting": q31_cfg(QCOMP | QDEEP, 250, eq20_like, span=65535, intervals=255) + bytes([0xF2, 150]),
+    # slow sweeps over the flat point of x^3 (one code, one q per sample), where rounding
+    # alone could step the output back: the monotone guard
+    "model_flat_sweep": q31_cfg(0, 8, cube, span=65535) + qc(32740) + bytes([0x0A, 1]) * 60
+        + bytes([0x0A, 0xFF]) * 60,
+    "comp_flat_sweep": q31_cfg(QCOMP, 8, cube, span=65535, intervals=64) + qd(0.4999) + bytes([0x02, 1]) * 60
+        + bytes([0x02, 0xFF]) * 60,
+    # refusals
+    "bad_cap1": q31_cfg(0, 1, eq20_like),
+    "bad_range_empty": q31_cfg(QRAWRANGE, 8, eq20_like, clo=500, span=0),
+    "bad_range_wide": q31_cfg(QRAWRANGE, 8, eq20_like, clo=0, span=70000),
+    "bad_not_increasing": q31_cfg(QPROBES, 8, (2, -1.0, 2.0, [1.0, 0.0, 0.0], 0)),
+    "bad_raw_coeff_x7": q31_cfg(QRAW, 8, (7, 0.0, 1.0, [1.0, -3.5, 5.25, -4.375, 2.1875, -0.65625, 0.109375, -0.0078125])),
+    "comp_bad_intervals0": q31_cfg(QCOMP | QPROBES, 8, eq20_like, intervals=0),
+    "comp_bad_cap1": q31_cfg(QCOMP, 1, eq20_like, intervals=4),
+    "comp_raw_coeff_x7": q31_cfg(QCOMP | QRAW, 8, (7, 0.0, 1.0, [1.0, -3.5, 5.25, -4.375, 2.1875, -0.65625, 0.109375, -0.0078125]), intervals=8),
+}
 for d, group in ((out, seeds), (os.path.join(here, "corpus_models"), models),
                  (os.path.join(here, "corpus_code"), code_seeds),
                  (os.path.join(here, "corpus_model_file"), model_files),
-                 (os.path.join(here, "corpus_everett"), everett_seeds)):
+                 (os.path.join(here, "corpus_everett"), everett_seeds),
+                 (os.path.join(here, "corpus_q31"), q31_seeds)):
     os.makedirs(d, exist_ok=True)
     for name, data in group.items():
         assert len(data) < (1300 if group is model_files else 300), name

@@ -112,9 +112,16 @@ function model = hyst_model_load(file)
           file, at.(has), has, other);
   end
   if isfield(seen, 'creep_tau') && numel(seen.creep_tau) ~= numel(seen.creep_weight)
-    error('hyst:model_file', ['hyst_model_load: %s:%d: creep_weight and creep_tau differ in ' ...
-                              'length (%d and %d numbers: one of each per term)'], ...
-          file, at.creep_weight, numel(seen.creep_weight), numel(seen.creep_tau));
+    n_w = numel(seen.creep_weight);
+    n_t = numel(seen.creep_tau);
+    if n_w < n_t
+      what = sprintf('%d is missing', n_w + 2);
+    else
+      what = sprintf('%d: one too many', n_t + 2);
+    end
+    error('hyst:model_file', ...
+          'hyst_model_load: %s:%d: field %s: creep_weight needs %d numbers, one per creep_tau', ...
+          file, at.creep_weight, what, n_t);
   end
   delay = 0;
   if isfield(seen, 'delay')

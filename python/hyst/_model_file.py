@@ -82,9 +82,10 @@ def _creep_complete(path, seen, where):
         raise ModelFileError(f"{path}:{where[has[0]]}: field 1: {has[0]} needs {other} too "
                              "(creep: both or neither)")
     if has and len(seen["creep_tau"]) != len(seen["creep_weight"]):
-        raise ModelFileError(f"{path}:{where['creep_weight']}: creep_weight and creep_tau differ "
-                             f"in length ({len(seen['creep_weight'])} and "
-                             f"{len(seen['creep_tau'])} numbers: one of each per term)")
+        n_w, n_t = len(seen["creep_weight"]), len(seen["creep_tau"])
+        what = f"{n_w + 2} is missing" if n_w < n_t else f"{n_t + 2}: one too many"
+        raise ModelFileError(f"{path}:{where['creep_weight']}: field {what}: creep_weight needs "
+                             f"{n_t} numbers, one per creep_tau")
 
 
 def _creep_args(creep_tau, creep_weight):

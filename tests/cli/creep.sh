@@ -106,7 +106,8 @@ bad() { # name, the lines after coeffs, the message expected
     grep -qF "$3" "$1.err" || fail "$1: $(cat "$1.err")"
 }
 bad tau_alone 'creep_tau 100\n' "tau_alone.hyst:6: field 1: creep_tau needs creep_weight too"
-bad lengths 'creep_tau 100 1000\ncreep_weight 0.5\n' "lengths.hyst:7: creep_weight and creep_tau differ in length"
+bad lengths 'creep_tau 100 1000\ncreep_weight 0.5\n' "lengths.hyst:7: field 3 is missing: creep_weight needs 2 numbers, one per creep_tau"
+bad lengths_many 'creep_tau 100\ncreep_weight 0.5 0.1\n' "lengths_many.hyst:7: field 3: one too many: creep_weight needs 1 numbers"
 bad short_tau 'creep_tau 0.5\ncreep_weight 0.5\n' "short_tau.hyst:6: field 2: '0.5' is not a time constant of at least 1 sample"
 bad many 'creep_tau 1 2 3 4 5\ncreep_weight 1 1 1 1 1\n' "many.hyst:6: field 6: one too many: creep_tau needs 1 to 4 numbers"
 

@@ -210,10 +210,11 @@ static int model_complete(const char *cmd, const char *path, const unsigned long
                         keys[k_has == K_CREEP_TAU ? K_CREEP_WEIGHT : K_CREEP_TAU]);
     }
     if (m->ncreep != m->ncreep_weights) {
-        return cli_fail(cmd, "%s:%lu: creep_weight and creep_tau differ in length (%lu and %lu "
-                        "numbers: one of each per term)",
-                        path, line[K_CREEP_WEIGHT], (unsigned long)m->ncreep_weights,
-                        (unsigned long)m->ncreep);
+        const int short_w = m->ncreep_weights < m->ncreep; /* else one too many */
+        return cli_fail(cmd, "%s:%lu: field %lu%s: creep_weight needs %lu numbers, one per creep_tau",
+                        path, line[K_CREEP_WEIGHT],
+                        (unsigned long)(short_w ? m->ncreep_weights : m->ncreep) + 2ul,
+                        short_w ? " is missing" : ": one too many", (unsigned long)m->ncreep);
     }
     if (everett && m->nterms != cli_everett_terms(m->degree)) {
         const size_t want = cli_everett_terms(m->degree);
