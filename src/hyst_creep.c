@@ -9,12 +9,6 @@
 #include <math.h>
 #include <string.h>
 
-#if defined(HYST_NO_DOUBLE)
-#define WIDE_SQRT(v) sqrtf(v) /* no double math linked */
-#else
-#define WIDE_SQRT(v) sqrt(v)
-#endif
-
 /* A time constant both the model and its fit accept. */
 static int tau_ok(hyst_wide_t tau) { return hyst_wide_is_finite(tau) && tau >= 1; }
 
@@ -204,7 +198,7 @@ hyst_status_t hyst_creep_fit_solve(const hyst_creep_fit_t *F, hyst_wide_t *weigh
         if (!(cii > 0) || !hyst_wide_is_finite(cii)) {
             return HYST_ERR_SINGULAR; /* a lag that never moved */
         }
-        scale[i] = 1 / WIDE_SQRT(cii);
+        scale[i] = 1 / HYST_WIDE_SQRT(cii);
     }
     /* R = D C D (unit diagonal) = L L' */
     for (i = 0u; i < n; ++i) {
@@ -225,7 +219,7 @@ hyst_status_t hyst_creep_fit_solve(const hyst_creep_fit_t *F, hyst_wide_t *weigh
                                      scale[i] * scale[i]))) {
                 return HYST_ERR_SINGULAR;
             }
-            l[i * M + i] = WIDE_SQRT(sum);
+            l[i * M + i] = HYST_WIDE_SQRT(sum);
         }
     }
     ss = F->crr;
@@ -260,7 +254,7 @@ hyst_status_t hyst_creep_fit_solve(const hyst_creep_fit_t *F, hyst_wide_t *weigh
     }
     *offset = off;
     if (rms != NULL) {
-        *rms = WIDE_SQRT((ss > 0 ? ss : 0) / (hyst_wide_t)F->used);
+        *rms = HYST_WIDE_SQRT((ss > 0 ? ss : 0) / (hyst_wide_t)F->used);
     }
     return HYST_OK;
 }
@@ -318,7 +312,8 @@ hyst_status_t hyst_creep_fit_holdout(size_t n_terms, const hyst_wide_t *tau, hys
     if (st != HYST_OK) {
         return st;
     }
-    got.holdout_rms = got.holdout_used > 0u ? WIDE_SQRT(ss / (hyst_wide_t)got.holdout_used) : 0;
+    got.holdout_rms =
+        got.holdout_used > 0u ? HYST_WIDE_SQRT(ss / (hyst_wide_t)got.holdout_used) : 0;
     *out = got;
     return HYST_OK;
 }

@@ -11,12 +11,6 @@
 #include <math.h>
 #include <string.h>
 
-#if defined(HYST_NO_DOUBLE)
-#define WIDE_SQRT(v) sqrtf(v) /* no double math linked */
-#else
-#define WIDE_SQRT(v) sqrt(v)
-#endif
-
 /* The highest power of t fitted with w^i: the fitted terms are i = 1..n,
  * j = 0..last_j(i), in this order (column 1 on; column 0 is the output at
  * lo). */
@@ -213,7 +207,7 @@ static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
             vi[k] /= l[k * N + k];
             len += vi[k] * vi[k];
         }
-        len = len > 0 ? WIDE_SQRT(len) : 1; /* a zero row constrains nothing */
+        len = len > 0 ? HYST_WIDE_SQRT(len) : 1; /* a zero row constrains nothing */
         rhs[i] = 0;
         for (k = 0u; k < n; ++k) {
             vi[k] /= len;
@@ -232,7 +226,7 @@ static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
     p.l = lp;
     p.most = n - 1u; /* independent rows of V: at most its n - 1 non-zero entries */
     /* |rhs_i| <= |u|: a gradient below this share of it is rounding */
-    done = hyst_nnls_(&p, WIDE_SQRT(unorm) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m));
+    done = hyst_nnls_(&p, HYST_WIDE_SQRT(unorm) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m));
     for (k = 0u; k < n; ++k) { /* z = u + V lambda, into s */
         s[k] = u[k];
         for (i = 0u; i < m; ++i) {
@@ -293,7 +287,7 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
             if (i > j) {
                 l[i * HYST_EVERETT_FIT_COLS + j] = sum / l[j * HYST_EVERETT_FIT_COLS + j];
             } else if (sum > fit->ata[i * HYST_EVERETT_FIT_COLS + i] * HYST_WIDE_EPS * (hyst_wide_t)1e4) {
-                l[i * HYST_EVERETT_FIT_COLS + i] = WIDE_SQRT(sum);
+                l[i * HYST_EVERETT_FIT_COLS + i] = HYST_WIDE_SQRT(sum);
             } else {
                 return HYST_ERR_SINGULAR; /* a column in the span of the others */
             }
@@ -338,7 +332,7 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
         ss += s[i] * (as - 2 * fit->aty[i]);
     }
     if (rms != NULL) {
-        *rms = WIDE_SQRT((ss > 0 ? ss : 0) / (hyst_wide_t)fit->used);
+        *rms = HYST_WIDE_SQRT((ss > 0 ? ss : 0) / (hyst_wide_t)fit->used);
     }
     return st;
 }

@@ -7,12 +7,6 @@
 
 #include <math.h>
 
-#if defined(HYST_NO_DOUBLE)
-#define WIDE_SQRT(v) sqrtf(v) /* no double math linked */
-#else
-#define WIDE_SQRT(v) sqrt(v)
-#endif
-
 
 
 /* Offset of row i of an m-column packed upper-triangular factor. */
@@ -74,7 +68,7 @@ static void givens_add(hyst_wide_t *r, unsigned m, hyst_wide_t *v)
             continue;
         }
         a = ri[0];
-        rho = WIDE_SQRT(a * a + v[i] * v[i]);
+        rho = HYST_WIDE_SQRT(a * a + v[i] * v[i]);
         c = a / rho;
         s = v[i] / rho;
         ri[0] = rho;
@@ -313,7 +307,7 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
     ra += s * rb;
     rc *= s;
     out.used = id->rising + id->falling;
-    out.rms = out.used > 0u ? WIDE_SQRT((ra * ra + rc * rc) / (hyst_wide_t)out.used) : 0;
+    out.rms = out.used > 0u ? HYST_WIDE_SQRT((ra * ra + rc * rc) / (hyst_wide_t)out.used) : 0;
     out.max_abs = -1;
     out.degree = n;
     out.method = id->method;
@@ -382,7 +376,7 @@ hyst_status_t hyst_ident_residuals(const hyst_ident_t *id, hyst_ident_result_t *
     if (id->phase != 1 || id->checked == 0u) {
         return HYST_ERR_ARG;
     }
-    res->rms = WIDE_SQRT(id->ss / (hyst_wide_t)id->checked);
+    res->rms = HYST_WIDE_SQRT(id->ss / (hyst_wide_t)id->checked);
     res->max_abs = id->max_abs;
     return HYST_OK;
 }
@@ -678,7 +672,7 @@ static int nnls_passive_solve(const hyst_nnls_t *f)
                 if (!(sum > f->gram(f->ctx, i, i) * HYST_WIDE_EPS * (hyst_wide_t)1e4)) {
                     return 0;
                 }
-                l[p * m + p] = WIDE_SQRT(sum);
+                l[p * m + p] = HYST_WIDE_SQRT(sum);
             }
             ++q;
         }
@@ -850,7 +844,7 @@ hyst_status_t hyst_pi_fit_solve(hyst_pi_fit_t *fit, hyst_wide_t *w, hyst_pi_fit_
     }
     syy = *pi_scalar(fit, PI_SYY);
     /* |cy_i| <= sqrt(C_ii syy): a gradient below this share of the bound is rounding */
-    tol = WIDE_SQRT(big * syy) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * n);
+    tol = HYST_WIDE_SQRT(big * syy) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * n);
     pi_nnls(fit, tol);
     wk = pi_vec(fit, PI_W);
     cy = pi_vec(fit, PI_CY);
@@ -870,7 +864,7 @@ hyst_status_t hyst_pi_fit_solve(hyst_pi_fit_t *fit, hyst_wide_t *w, hyst_pi_fit_
         w[i] = wk[i];
     }
     out.offset = offset;
-    out.rms = WIDE_SQRT((rss > 0 ? rss : 0) / (hyst_wide_t)fit->used);
+    out.rms = HYST_WIDE_SQRT((rss > 0 ? rss : 0) / (hyst_wide_t)fit->used);
     out.max_abs = -1;
     out.used = fit->used;
     out.invertible = wk[0] > 0;
@@ -946,7 +940,7 @@ hyst_status_t hyst_pi_fit_record(const hyst_pi_fit_config_t *cfg, const hyst_wid
         e = hyst_wide_abs(e);
         worst = e > worst ? e : worst;
     }
-    out.rms = WIDE_SQRT(ss / (hyst_wide_t)count);
+    out.rms = HYST_WIDE_SQRT(ss / (hyst_wide_t)count);
     out.max_abs = worst;
     *res = out;
     return HYST_OK;

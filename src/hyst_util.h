@@ -20,6 +20,14 @@
 #define HYST_WIDE_MAX ((hyst_wide_t)DBL_MAX)
 #endif
 
+/* Square root in hyst_wide_t, for set-up and identification (the files
+ * that use it include <math.h>); sqrtf where double must not be linked. */
+#ifdef HYST_NO_DOUBLE
+#define HYST_WIDE_SQRT(v) sqrtf(v)
+#else
+#define HYST_WIDE_SQRT(v) sqrt(v)
+#endif
+
 /* Finite test without libm: NaN fails v == v, +-Inf gives Inf - Inf = NaN. */
 HYST_INLINE int hyst_wide_is_finite(hyst_wide_t v)
 {

@@ -15,7 +15,9 @@
  *  - hyst/ident.h:  identification of f0 from measured data.
  *  - hyst/snapshot.h: save/restore of an instance's memory (CRC-checked);
  *  - hyst/inverse.h: the inverse TCM, a feedforward compensator;
- *  - hyst/pi.h:     the Prandtl-Ishlinskii model and its inverse.
+ *  - hyst/pi.h:     the Prandtl-Ishlinskii model and its inverse;
+ *  - hyst/creep.h:  creep, lags of the drive added to any model's output,
+ *                   and their identification.
  */
 #ifndef HYST_HYST_H
 #define HYST_HYST_H
