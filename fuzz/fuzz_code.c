@@ -216,42 +216,6 @@ static int same_real(const finst_t *a, const finst_t *b)
            a->S.forgot.HYST_R == b->S.forgot.HYST_R && a->S.db_err.HYST_R == b->S.db_err.HYST_R;
 }
 
-static unsigned long rd_u24(reader_t *r)
-{
-    const unsigned long lo = rd_u16(r);
-    return lo | ((unsigned long)rd_u8(r) << 16);
-}
-
-/* Code range, deadband in codes, run state. */
-static unsigned long clo, chi, last_code;
-static double vlo, vhi;
-
-static double volts(unsigned long c)
-{
-    if (c <= clo) return vlo;
-    if (c >= chi) return vhi;
-    return vlo + (double)(c - clo) * ((vhi - vlo) / (double)(chi - clo));
-}
-
-static unsigned long next_code(reader_t *r, unsigned op)
-{
-    const unsigned long span = chi - clo;
-    long v;
-    switch (op & 7u) {
-    case 0:
-    case 1: return clo + (unsigned long)rd_u16(r) % (span + 1u);
-    case 2: /* a small move: noise around the last code, reversals */
-        v = (long)last_code + (long)(signed char)rd_u8(r) / ((op & 8u) ? 1 : 16);
-        return v < 0 ? 0ul : (unsigned long)v;
-    case 3: return (op & 8u) ? chi : clo;
-    case 4: /* out of range: clamped */
-        if (op & 8u) return rd_u24(r) | 0x1000000ul;
-        return (op & 16u) && clo > 0u ? clo - 1u - (unsigned long)rd_u8(r) % clo
-                                      : chi + 1u + rd_u8(r);
-    case 5: return last_code;
-    default: return clo + (span * rd_u8(r)) / 255u;
-    }
-}
 
 /* Expected init status of a code instance: capacity, then a curve error
  * (the same as the real engine reports: the f32 one, whose curves the code

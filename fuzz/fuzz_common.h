@@ -77,6 +77,45 @@ FUZZ_MAYBE_UNUSED static void read_config(reader_t *r, int raw, hyst_poly_t *f)
     }
 }
 
+/* A 24-bit number, low byte first. */
+FUZZ_MAYBE_UNUSED static unsigned long rd_u24(reader_t *r)
+{
+    const unsigned long lo = rd_u16(r);
+    return lo | ((unsigned long)rd_u8(r) << 16);
+}
+
+/* The code harnesses (fuzz_code.c, fuzz_q31.c): the code range, its map
+ * onto the volts of f0's domain, and the next code of kind op & 7. */
+FUZZ_MAYBE_UNUSED static unsigned long clo, chi, last_code;
+FUZZ_MAYBE_UNUSED static double vlo, vhi;
+
+FUZZ_MAYBE_UNUSED static double volts(unsigned long c)
+{
+    if (c <= clo) return vlo;
+    if (c >= chi) return vhi;
+    return vlo + (double)(c - clo) * ((vhi - vlo) / (double)(chi - clo));
+}
+
+FUZZ_MAYBE_UNUSED static unsigned long next_code(reader_t *r, unsigned op)
+{
+    const unsigned long span = chi - clo;
+    long v;
+    switch (op & 7u) {
+    case 0:
+    case 1: return clo + (unsigned long)rd_u16(r) % (span + 1u);
+    case 2: /* a small move: noise around the last code, reversals */
+        v = (long)last_code + (long)(signed char)rd_u8(r) / ((op & 8u) ? 1 : 16);
+        return v < 0 ? 0ul : (unsigned long)v;
+    case 3: return (op & 8u) ? chi : clo;
+    case 4: /* out of range: clamped */
+        if (op & 8u) return rd_u24(r) | 0x1000000ul;
+        return (op & 16u) && clo > 0u ? clo - 1u - (unsigned long)rd_u8(r) % clo
+                                      : chi + 1u + rd_u8(r);
+    case 5: return last_code;
+    default: return clo + (span * rd_u8(r)) / 255u;
+    }
+}
+
 /* Rounding allowance of the differential comparison: Horner's error bound on
  * the raw coefficients (the reference evaluates those; the core a shifted,
  * scaled copy), times the depth of turning points each output hangs on. */

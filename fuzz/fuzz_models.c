@@ -1467,7 +1467,7 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
     const size_t n = rd_u8(rd) % 6u;
     hyst_wide_t tau[HYST_CREEP_MAX_TERMS + 1u], w[HYST_CREEP_MAX_TERMS + 1u], x_rest;
     double s_ref[HYST_CREEP_MAX_TERMS + 1u], a_ref[HYST_CREEP_MAX_TERMS + 1u];
-    double lo_x, hi_x, sum_w = 0.0, xs[MAX_OPS], rs[MAX_OPS];
+    double lo_x, hi_x, xs[MAX_OPS], rs[MAX_OPS];
     hyst_status_t st, want = HYST_OK;
     size_t k, count = 0u;
     unsigned ops;
@@ -1504,7 +1504,6 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
     for (k = 0u; k < n; ++k) {
         a_ref[k] = 1.0 / tau[k];
         s_ref[k] = x_rest;
-        sum_w += fabs(w[k]);
     }
     lo_x = hi_x = x_rest;
     for (ops = 0u; ops < MAX_OPS && rd->at < rd->n; ++ops) {
@@ -1627,7 +1626,6 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
         }
         missing = 0;
     }
-    (void)sum_w;
 }
 
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)

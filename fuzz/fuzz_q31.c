@@ -212,12 +212,6 @@ static void print_stats(void)
             n_kinit_ok, n_marked, n_ksamples, n_round_trip, worst_rt, n_kforgot, over_model);
 }
 
-static unsigned long rd_u24(reader_t *r)
-{
-    const unsigned long lo = rd_u16(r);
-    return lo | ((unsigned long)rd_u8(r) << 16);
-}
-
 /* ---- curve facts, computed here in double, independently of the library ---- */
 
 typedef struct {
@@ -277,37 +271,6 @@ static facts_t curve_facts(const hyst_poly_t *f)
     return q;
 }
 
-/* ---- codes, the model's inputs (as fuzz_code.c) ---- */
-
-static unsigned long clo, chi, last_code;
-static double vlo, vhi;
-
-static double volts(unsigned long c)
-{
-    if (c <= clo) return vlo;
-    if (c >= chi) return vhi;
-    return vlo + (double)(c - clo) * ((vhi - vlo) / (double)(chi - clo));
-}
-
-static unsigned long next_code(reader_t *r, unsigned op)
-{
-    const unsigned long span = chi - clo;
-    long v;
-    switch (op & 7u) {
-    case 0:
-    case 1: return clo + (unsigned long)rd_u16(r) % (span + 1u);
-    case 2: /* a small move: noise around the last code, reversals */
-        v = (long)last_code + (long)(signed char)rd_u8(r) / ((op & 8u) ? 1 : 16);
-        return v < 0 ? 0ul : (unsigned long)v;
-    case 3: return (op & 8u) ? chi : clo;
-    case 4: /* out of range: clamped */
-        if (op & 8u) return rd_u24(r) | 0x1000000ul;
-        return (op & 16u) && clo > 0u ? clo - 1u - (unsigned long)rd_u8(r) % clo
-                                      : chi + 1u + rd_u8(r);
-    case 5: return last_code;
-    default: return clo + (span * rd_u8(r)) / 255u;
-    }
-}
 
 /* ---- desired outputs, the compensator's inputs ---- */
 
