@@ -14,10 +14,15 @@
  *   (a) through the hysteresis compensator alone (the tabulated inverse of
  *       Eq. 20, HYST_INIT_INVERSE);
  *   (b) through the same compensator on the desired output less the creep's
- *       share, the creep instance fed with the drive (strictly causal).
+ *       share, the creep instance fed with the drive (strictly causal);
+ *   (c) as (b), with a brown-out half-way: the firmware saves the
+ *       compensator's and the creep's snapshots (hyst/snapshot.h) to its
+ *       "non-volatile memory", reboots (both instances back at rest),
+ *       restores both and goes on, the plant keeping its state.
  * Prints both RMS and maximum tracking errors and their ratio; exits
- * non-zero unless the time constant found is the plant's and (b) cuts the
- * RMS error at least five-fold. Host and QEMU (float). */
+ * non-zero unless the time constant found is the plant's, (b) cuts the
+ * RMS error at least five-fold and (c) tracks exactly as (b): the same
+ * drives, bit for bit. Host and QEMU (float). */
 #include "hyst/hyst.h"
 #include "hyst_port.h"
 
@@ -37,6 +42,22 @@ HYST_DEFINE(plant_h, CAP);
 HYST_DEFINE(model_h, CAP);
 HYST_DEFINE_INVERSE(comp, 4096);
 static hyst_creep_t plant_c, comp_c;
+static unsigned char nvm[HYST_SNAPSHOT_SIZE(HYST_CAPACITY(4096)) + HYST_CREEP_SNAPSHOT_SIZE];
+
+/* The brown-out of run (c): both snapshots saved, the instances back at
+ * rest as after a reboot's init, then both restored. 0 on success. */
+static size_t len, creep_len; /* the octets saved */
+static int brown_out(void)
+{
+    if (hyst_snapshot_save(&comp, nvm, sizeof nvm, &len) != HYST_OK ||
+        hyst_creep_snapshot_save(&comp_c, nvm + len, sizeof nvm - len, &creep_len) != HYST_OK) {
+        return 1;
+    }
+    hyst_reset(&comp);
+    (void)hyst_creep_reset(&comp_c, 0);
+    return hyst_snapshot_restore(&comp, nvm, len) != HYST_OK ||
+           hyst_creep_snapshot_restore(&comp_c, nvm + len, creep_len) != HYST_OK;
+}
 static unsigned long lcg = 12345ul;
 
 /* The sensor's noise: +-0.005 um, deterministic (an LCG). */
@@ -93,9 +114,9 @@ int main(void)
     const hyst_wide_t plant_tau[2] = {PLANT_TAU, 300.0}, plant_w[2] = {PLANT_W, 0.002};
     hyst_creep_holdout_t best, h;
     hyst_wide_t tau = 0;
-    double y_lo, y_hi, ss[2] = {0.0, 0.0}, worst[2] = {0.0, 0.0}, rms[2];
+    double y_lo, y_hi, ss[3] = {0.0, 0.0, 0.0}, worst[3] = {0.0, 0.0, 0.0}, rms[2];
     long k;
-    int way, ok;
+    int way, ok, restored = 0;
     size_t i;
     hyst_port_init();
     if (HYST_INIT(plant_h, &eq20) != HYST_OK || HYST_INIT(model_h, &eq20) != HYST_OK ||
@@ -127,24 +148,32 @@ int main(void)
                  (double)tau, (double)best.weight[0], (double)best.offset, PLANT_TAU, PLANT_W);
     y_lo = (double)hyst_poly_eval(&eq20, eq20.lo);
     y_hi = (double)hyst_poly_eval(&eq20, eq20.hi);
-    /* tracking: (a) the hysteresis compensator alone, (b) with the creep's share taken off */
-    for (way = 0; way < 2; ++way) {
+    /* tracking: (a) the hysteresis compensator alone, (b) with the creep's share taken off,
+     * (c) as (b) through a brown-out */
+    for (way = 0; way < 3; ++way) {
         hyst_reset(&plant_h);
         hyst_reset(&comp);
         (void)hyst_creep_reset(&plant_c, 0);
         (void)hyst_creep_reset(&comp_c, 0);
         for (k = 0; k < RUN_SAMPLES; ++k) {
             const double yd = reference(k, y_lo, y_hi);
-            const double c = way == 1 ? (double)hyst_creep_output(&comp_c) : 0.0;
-            const hyst_real_t x = hyst_step(&comp, (hyst_real_t)(yd - c));
-            const double e = plant_step(x) - yd;
-            if (way == 1) {
+            double c, e;
+            hyst_real_t x;
+            if (way == 2 && k == RUN_SAMPLES / 2L) {
+                restored = brown_out() == 0;
+            }
+            c = way > 0 ? (double)hyst_creep_output(&comp_c) : 0.0;
+            x = hyst_step(&comp, (hyst_real_t)(yd - c));
+            e = plant_step(x) - yd;
+            if (way > 0) {
                 (void)hyst_creep_step(&comp_c, x);
             }
             ss[way] += e * e;
             worst[way] = e < 0 ? (-e > worst[way] ? -e : worst[way]) : (e > worst[way] ? e : worst[way]);
         }
-        rms[way] = ss[way] / (double)RUN_SAMPLES;
+        if (way < 2) {
+            rms[way] = ss[way] / (double)RUN_SAMPLES;
+        }
     }
     for (way = 0; way < 2; ++way) {
         double r = rms[way], s = r > 0 ? r : 0; /* square root by Newton: no libm on the target */
@@ -156,7 +185,12 @@ int main(void)
                      way == 0 ? "hysteresis compensator alone" : "with creep compensation",
                      rms[way], worst[way], y_hi - y_lo);
     }
-    ok = tau == plant_tau[0] && rms[1] * 5.0 <= rms[0];
+    (void)printf("through a brown-out at sample %ld (snapshots of %lu + %lu octets): %s\n",
+                 RUN_SAMPLES / 2L, (unsigned long)len, (unsigned long)creep_len,
+                 restored && ss[2] == ss[1] && worst[2] == worst[1] ? "the same tracking, bit for bit"
+                                                                    : "FAILED");
+    ok = tau == plant_tau[0] && rms[1] * 5.0 <= rms[0] && restored && ss[2] == ss[1] &&
+         worst[2] == worst[1];
     (void)printf("creep compensation cuts the RMS tracking error %.1f-fold: %s\n",
                  rms[1] > 0 ? rms[0] / rms[1] : 0.0, ok ? "ok" : "FAILED");
     return ok ? 0 : 1;

@@ -1445,7 +1445,9 @@ static void fuzz_pi_fit(reader_t *rd, unsigned flags)
  * drive ((signed char) / 8; raw: any double). Opcodes: 0xF0 reset to the
  * rest drive; 0xF1 a NaN sample; 0xF2 the fit of the samples so far; 0xF3
  * the next sample fed to the fit without its equation (a missing
- * residual); any other byte a drive sample (structured: (signed char) b2 /
+ * residual); 0xF4 a snapshot (two bytes: an octet to damage, a mask) that
+ * a twin refuses damaged, changing nothing, and then restores whole: its
+ * states, status and events bit for bit; any other byte a drive sample (structured: (signed char) b2 /
  * 8; raw: a double). Each sample also goes into a fit as the residual r =
  * c_ref + 0.25 + the drive's low bits (a known lag plus an offset plus
  * noise).
@@ -1583,6 +1585,25 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
         }
         if (op == 0xF3u) {
             missing = 1;
+            continue;
+        }
+        if (op == 0xF4u) { /* a snapshot: restored whole into a twin, or refused damaged */
+            static hyst_creep_t twin, keep_twin;
+            static unsigned char buf[HYST_CREEP_SNAPSHOT_SIZE + 1u];
+            const unsigned at = rd_u8(rd), flip = rd_u8(rd) | 1u;
+            size_t len = 0u;
+            CHECK(hyst_creep_snapshot_save(&C, buf, sizeof buf, &len) == HYST_OK);
+            CHECK(len == hyst_creep_snapshot_size(&C) && len <= HYST_CREEP_SNAPSHOT_SIZE);
+            CHECK(hyst_creep_init(&twin, n, tau, w, 0.0) == HYST_OK);
+            memcpy(&keep_twin, &twin, sizeof twin);
+            buf[at % len] = (unsigned char)(buf[at % len] ^ (flip & 0xFFu));
+            CHECK(hyst_creep_snapshot_restore(&twin, buf, len) != HYST_OK);
+            CHECK(memcmp(&twin, &keep_twin, sizeof twin) == 0);
+            buf[at % len] = (unsigned char)(buf[at % len] ^ (flip & 0xFFu));
+            CHECK(hyst_creep_snapshot_restore(&twin, buf, len) == HYST_OK);
+            CHECK(memcmp(twin.state, C.state, sizeof C.state) == 0);
+            CHECK(hyst_creep_status(&twin) == hyst_creep_status(&C) &&
+                  hyst_creep_events(&twin) == hyst_creep_events(&C));
             continue;
         }
         x = raw ? rd_f64(rd) : (double)(signed char)rd_u8(rd) / 8.0;

@@ -173,8 +173,8 @@ models = {
 
 # fuzz_models.c's creep module (first byte 252..255): [flags][terms] then per term tau byte
 # (1 + b^2 / 4 samples; 255: 0.5) and weight ((signed char) / 16), the rest drive ((signed
-# char) / 8), then ops: 0xF0 reset, 0xF1 NaN, 0xF2 fit, 0xF3 next residual missing, else a
-# sample (op, (signed char) / 8)
+# char) / 8), then ops: 0xF0 reset, 0xF1 NaN, 0xF2 fit, 0xF3 next residual missing, 0xF4
+# snapshot (octet to damage, mask), else a sample (op, (signed char) / 8)
 CREEP = 252
 
 def creep(terms, taus, weights, rest, drives, ops=b"", flags=0):
@@ -189,6 +189,9 @@ models.update({
     "creep_four_fast": creep(4, [0, 1, 2, 3], [0.5, 0.5, -0.5, 1.0], -2.0, steps[:40], b"\xf2\xf1\xf2"),
     "creep_tau_half": creep(1, [255], [0.5], 0.0, steps[:4]),
     "creep_terms5": creep(5, [9] * 5, [0.1] * 5, 0.0, steps[:4]),
+    "creep_snapshot": creep(3, [5, 60, 200], [0.5, -0.25, 1.0], 2.0, steps[:25],
+                            bytes([0xF4, 0, 1, 0xF1, 0xF4, 30, 0x80]) + b"".join(bytes([1]) + sbyte(d * 8) for d in steps[25:35])
+                            + bytes([0xF4, 255, 0x41])),
     "creep_raw": bytes([CREEP, 2, 1]) + struct.pack("<3d", 5000.0, 0.3, 0.0)
         + b"".join(bytes([1]) + struct.pack("<d", d / 4) for d in steps[:20]) + b"\xf2",
 })

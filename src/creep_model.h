@@ -34,6 +34,7 @@ hyst_status_t NUM_NAME(creep_reset)(hyst_creep_t *C, NUM_T x_rest)
     if (!NUM_NAME(creep_finite_)(x_rest)) {
         return HYST_ERR_NONFINITE;
     }
+    ++C->seq;
     for (k = 0u; k < C->n; ++k) {
         C->state[k].NUM_F = x_rest;
     }
@@ -64,6 +65,7 @@ NUM_T NUM_NAME(creep_step)(hyst_creep_t *C, NUM_T x)
     if (C == NULL) {
         return 0;
     }
+    ++C->seq; /* every sample changes the state (snapshot.c) */
     if (!NUM_NAME(creep_finite_)(x)) {
         C->status = HYST_ERR_NONFINITE;
         C->events |= HYST_EVENT_NONFINITE;

@@ -91,6 +91,7 @@ unsigned hyst_creep_events(const hyst_creep_t *C) { return C != NULL ? C->events
 void hyst_creep_clear_events(hyst_creep_t *C)
 {
     if (C != NULL) {
+        ++C->seq;
         C->events = 0u;
     }
 }

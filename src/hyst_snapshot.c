@@ -1,11 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* Snapshot/restore of a TCM instance of any variant, in a CHAR_BIT-
- * independent octet format (layout in include/hyst/snapshot.h). */
+/* Snapshot/restore of a TCM instance of any variant, and of a creep term's
+ * lags, in a CHAR_BIT-independent octet format (layouts in
+ * include/hyst/snapshot.h). */
 #include "hyst/snapshot.h"
 #include "hyst_util.h"
 
 #include <float.h>
 #include <stdint.h>
+#include <string.h>
 
 #if FLT_MANT_DIG != 24 || FLT_MAX_EXP != 128
 #error "hyst snapshots assume IEEE-754 binary32 float"
@@ -612,5 +614,158 @@ hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf, siz
     default: hyst_code_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book); break;
     }
     S->events = (unsigned)events;
+    return HYST_OK;
+}
+
+/* ---- Creep snapshots (snapshot.h, "Creep snapshots") ---- */
+
+#define CREEP_HEADER_OCTETS 28u
+
+/* The octets per real and the number type of an initialised creep
+ * instance's variant; 0 if it is none. */
+static unsigned creep_format(const hyst_creep_t *C, num_type_t *t)
+{
+    if (C->n < 1u || C->n > HYST_CREEP_MAX_TERMS) {
+        return 0u;
+    }
+    switch (C->variant) {
+    case HYST_VARIANT_F32: *t = NUM_F32; return 4u;
+#if HYST_ENABLE_F64
+    case HYST_VARIANT_F64: *t = NUM_F64; return 8u;
+#endif
+    default: return 0u;
+    }
+}
+
+/* What a snapshot restores into only the same creep term: the variant, the
+ * lags' count, rates and weights. */
+static unsigned long creep_id(const hyst_creep_t *C, num_type_t t)
+{
+    unsigned long crc = crc_word(0ul, (unsigned long)C->variant);
+    size_t k;
+    crc = crc_word(crc, (unsigned long)C->n);
+    for (k = 0u; k < C->n; ++k) {
+        crc = crc_num(crc, &C->alpha[k], t);
+        crc = crc_num(crc, &C->weight[k], t);
+    }
+    return crc;
+}
+
+size_t hyst_creep_snapshot_size(const hyst_creep_t *C)
+{
+    num_type_t t;
+    const unsigned r = C != NULL ? creep_format(C, &t) : 0u;
+    return r != 0u ? CREEP_HEADER_OCTETS + r * C->n + CRC_OCTETS : 0u;
+}
+
+hyst_status_t hyst_creep_snapshot_save(const hyst_creep_t *C, unsigned char *buf, size_t size,
+                                       size_t *len)
+{
+    const volatile hyst_creep_t *V = C;
+    num_type_t t;
+    unsigned r, attempt;
+    size_t need, k;
+    if (C == NULL || buf == NULL) {
+        return HYST_ERR_NULL;
+    }
+    r = creep_format(C, &t);
+    if (r == 0u) {
+        return HYST_ERR_ARG;
+    }
+    need = CREEP_HEADER_OCTETS + r * C->n + CRC_OCTETS; /* n, variant: set by init only */
+    if (size < need) {
+        return HYST_ERR_NOSPACE;
+    }
+    for (attempt = 0u; attempt < HYST_READ_ATTEMPTS; ++attempt) {
+        const unsigned long seq = V->seq;
+        HYST_BARRIER();
+        buf[0] = MAGIC0;
+        buf[1] = MAGIC1;
+        buf[2] = MAGIC2;
+        buf[3] = 0x43u; /* 'C' */
+        put_u16(buf + 4, HYST_CREEP_SNAPSHOT_VERSION);
+        buf[6] = (unsigned char)r;
+        buf[7] = (unsigned char)C->variant;
+        put_u32(buf + 8, (unsigned long)need);
+        put_u32(buf + 12, creep_id(C, t));
+        put_u32(buf + 16, (unsigned long)C->n);
+        put_u32(buf + 20, (unsigned long)C->events);
+        put_u16(buf + 24, (unsigned)C->status & 0xFFFFu); /* two's complement */
+        put_u16(buf + 26, 0u);
+        for (k = 0u; k < C->n; ++k) {
+            put_num(buf + CREEP_HEADER_OCTETS + r * k, &C->state[k], t);
+        }
+        HYST_BARRIER();
+        /* a volatile re-read: a step may have run meanwhile */
+        /* cppcheck-suppress knownConditionTrueFalse */
+        if (V->seq != seq) {
+            continue;
+        }
+        put_u32(buf + need - CRC_OCTETS, hyst_crc32(0ul, buf, need - CRC_OCTETS));
+        if (len != NULL) {
+            *len = need;
+        }
+        return HYST_OK;
+    }
+    buf[0] = 0u;
+    return HYST_ERR_BUSY;
+}
+
+hyst_status_t hyst_creep_snapshot_restore(hyst_creep_t *C, const unsigned char *buf, size_t len)
+{
+    hyst_num_t state[HYST_CREEP_MAX_TERMS];
+    num_type_t t;
+    unsigned long length, events;
+    unsigned r, status16;
+    int status;
+    size_t k, n;
+    if (C == NULL || buf == NULL) {
+        return HYST_ERR_NULL;
+    }
+    r = creep_format(C, &t);
+    if (r == 0u) {
+        return HYST_ERR_ARG;
+    }
+    memset(state, 0, sizeof state); /* a float leaves the rest of its union as init does: 0 */
+    if (len < CREEP_HEADER_OCTETS + CRC_OCTETS || buf[0] != MAGIC0 || buf[1] != MAGIC1 ||
+        buf[2] != MAGIC2 || buf[3] != 0x43u) {
+        return HYST_ERR_FORMAT;
+    }
+    if (get_u16(buf + 4) != HYST_CREEP_SNAPSHOT_VERSION || buf[6] != r || buf[7] != C->variant) {
+        return HYST_ERR_VERSION;
+    }
+    length = get_u32(buf + 8);
+    n = (size_t)get_u32(buf + 16);
+    if (get_u32(buf + 16) < 1ul || get_u32(buf + 16) > (unsigned long)HYST_CREEP_MAX_TERMS ||
+        length != CREEP_HEADER_OCTETS + r * n + CRC_OCTETS || length > len) {
+        return HYST_ERR_FORMAT; /* truncated, or length and count disagree */
+    }
+    if (hyst_crc32(0ul, buf, (size_t)length - CRC_OCTETS) !=
+        get_u32(buf + (size_t)length - CRC_OCTETS)) {
+        return HYST_ERR_CRC;
+    }
+    if (get_u32(buf + 12) != creep_id(C, t)) {
+        return HYST_ERR_CURVE;
+    }
+    events = get_u32(buf + 20);
+    status16 = get_u16(buf + 24);
+    status = status16 >= 0x8000u ? -(int)(0xFFFFu - status16) - 1 : (int)status16;
+    if (n != C->n || (events & ~(unsigned long)HYST_EVENT_NONFINITE) != 0u ||
+        (status != HYST_OK && status != HYST_ERR_NONFINITE) || get_u16(buf + 26) != 0u) {
+        return HYST_ERR_FORMAT;
+    }
+    for (k = 0u; k < n; ++k) {
+        (void)get_num(buf + CREEP_HEADER_OCTETS + r * k, &state[k], t);
+        if (!hyst_wide_is_finite(wide_of(&state[k], t))) {
+            return HYST_ERR_FORMAT;
+        }
+    }
+    /* Everything checked: only now write the instance. */
+    ++C->seq;
+    for (k = 0u; k < n; ++k) {
+        C->state[k] = state[k];
+    }
+    C->status = status;
+    C->events = (unsigned)events;
     return HYST_OK;
 }

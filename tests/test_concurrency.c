@@ -31,8 +31,13 @@ static hyst_real_t input[N_INPUTS];
 static unsigned char snap[HYST_SNAPSHOT_SIZE(CAP) + GUARD];
 static unsigned char ref_snap[HYST_SNAPSHOT_SIZE(CAP)];
 
+static hyst_creep_t K, KR, KT; /* a creep term: stepped, reference, restored */
+static unsigned char creep_snap[HYST_CREEP_SNAPSHOT_SIZE + GUARD];
+static unsigned char creep_ref[HYST_CREEP_SNAPSHOT_SIZE];
+
 /* Shared with the handler. */
 static volatile sig_atomic_t stepping;
+static volatile sig_atomic_t stepping_creep; /* the handler steps K instead of S */
 static volatile long k_done;   /* samples the handler has stepped */
 static volatile long served_k; /* the sample at whose end a request was applied */
 
@@ -42,6 +47,11 @@ static void on_tick(int sig)
     unsigned before;
     (void)sig;
     if (!stepping || k_done >= N_INPUTS) {
+        return;
+    }
+    if (stepping_creep) {
+        (void)hyst_creep_step(&K, input[k_done]);
+        k_done = k_done + 1;
         return;
     }
     before = S.done_reset + S.done_clear + S.done_deadband;
@@ -73,6 +83,7 @@ static void timer_stop(void)
     memset(&it, 0, sizeof it);
     (void)setitimer(ITIMER_REAL, &it, NULL);
     stepping = 0;
+    stepping_creep = 0;
 }
 
 /* Waits (busy: the handler runs meanwhile) until the handler has stepped
@@ -181,6 +192,65 @@ static void test_save_while_the_interrupt_steps(void)
     printf("saves %ld: ok %ld, nospace %ld, busy %ld; interrupted by the handler %ld; "
            "samples %ld\n",
            saves, ok, nospace, busy, interrupted, (long)k_done);
+    TEST_ASSERT_TRUE_MESSAGE(interrupted > 0, "no save was ever interrupted: nothing tested");
+    TEST_ASSERT_TRUE(ok > 0);
+}
+
+/* The same for a creep term's snapshot (snapshot.h, "Creep snapshots"):
+ * every snapshot that reports OK restores the lags after one of the
+ * samples stepped during the save. */
+static void test_creep_save_while_the_interrupt_steps(void)
+{
+    static const hyst_wide_t tau[3] = {7, 150, 3000};
+    static const hyst_wide_t weight[3] = {0.5, -0.25, 0.125};
+    long k_ref = 0, saves = 0, ok = 0, busy = 0, interrupted = 0;
+    fill_inputs();
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&K, 3u, tau, weight, 20.0));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KR, 3u, tau, weight, 20.0));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KT, 3u, tau, weight, 20.0));
+    k_done = 0;
+    stepping_creep = 1;
+    stepping = 1;
+    timer_start();
+    while (interrupted < 200 && k_done < N_INPUTS - 10L) {
+        const long k0 = k_done;
+        const size_t size = hyst_creep_snapshot_size(&K);
+        size_t len = 0u, g, rlen = 0u;
+        long k1, k;
+        int st, matched = 0;
+        memset(creep_snap, GUARD_BYTE, sizeof creep_snap);
+        st = hyst_creep_snapshot_save(&K, creep_snap, size, &len);
+        k1 = k_done;
+        ++saves;
+        interrupted += k1 > k0;
+        for (g = size; g < size + GUARD; ++g) {
+            TEST_ASSERT_EQUAL_HEX8_MESSAGE(GUARD_BYTE, creep_snap[g], "save wrote past its buffer");
+        }
+        if (st == HYST_ERR_BUSY) {
+            ++busy;
+            TEST_ASSERT_NOT_EQUAL_MESSAGE(0x48u, creep_snap[0], "a BUSY buffer still looks like a snapshot");
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, st);
+        ++ok;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_snapshot_restore(&KT, creep_snap, len));
+        for (; k_ref < k0; ++k_ref) {
+            (void)hyst_creep_step(&KR, input[k_ref]);
+        }
+        for (k = k0; k <= k1 && !matched; ++k) {
+            TEST_ASSERT_EQUAL_INT(HYST_OK,
+                                  hyst_creep_snapshot_save(&KR, creep_ref, sizeof creep_ref, &rlen));
+            matched = rlen == len && memcmp(creep_ref, creep_snap, len) == 0;
+            if (!matched && k < k1) {
+                (void)hyst_creep_step(&KR, input[k_ref]);
+                ++k_ref;
+            }
+        }
+        TEST_ASSERT_TRUE_MESSAGE(matched, "a creep snapshot is no state the lags were in");
+    }
+    timer_stop();
+    printf("creep saves %ld: ok %ld, busy %ld; interrupted by the handler %ld; samples %ld\n",
+           saves, ok, busy, interrupted, (long)k_done);
     TEST_ASSERT_TRUE_MESSAGE(interrupted > 0, "no save was ever interrupted: nothing tested");
     TEST_ASSERT_TRUE(ok > 0);
 }
@@ -299,6 +369,7 @@ int main(void)
     RUN_TEST(test_requests_applied_by_a_repeated_sample);
     RUN_TEST(test_requests_applied_by_a_clamped_or_nan_sample);
     RUN_TEST(test_save_while_the_interrupt_steps);
+    RUN_TEST(test_creep_save_while_the_interrupt_steps);
     RUN_TEST(test_requests_while_the_interrupt_steps);
     return UNITY_END();
 }

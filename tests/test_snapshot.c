@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Snapshot/restore: octet format, round trip, and refusal of every damaged
- * snapshot (each bit flipped once, each truncation) with the instance untouched. */
+ * snapshot (each bit flipped once, each truncation) with the instance untouched;
+ * the same for a creep term's snapshot. */
 #include "support.h"
 #include "unity.h"
 
@@ -441,6 +442,158 @@ static void test_piecewise_linear_curve_identity_covers_every_point(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, work, len));
 }
 
+/* ---- Creep snapshots ---- */
+
+static hyst_creep_t KA, KB, Kkeep;
+static const hyst_wide_t creep_tau[2] = {300, 4000};
+static const hyst_wide_t creep_w[2] = {(hyst_wide_t)0.05, (hyst_wide_t)-0.02};
+
+/* Two lags, stepped on a triangle with a NaN among the samples. */
+static size_t creep_snapshot(void)
+{
+    size_t len = 0u;
+    int k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KA, 2u, creep_tau, creep_w, 3.0));
+    for (k = 0; k < 700; ++k) {
+        (void)hyst_creep_step(&KA, (hyst_real_t)(k % 200 < 100 ? k % 100 : 100 - k % 100) /
+                                       HYST_REAL_C(2.5));
+    }
+    (void)hyst_creep_step(&KA, (hyst_real_t)NAN);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_snapshot_save(&KA, snap, sizeof snap, &len));
+    TEST_ASSERT_EQUAL_size_t(hyst_creep_snapshot_size(&KA), len);
+    TEST_ASSERT_EQUAL_size_t(32u + 2u * R, len);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KB, 2u, creep_tau, creep_w, 0.0));
+    Kkeep = KB;
+    return len;
+}
+
+static void assert_creep_untouched(void)
+{
+    TEST_ASSERT_EQUAL_MEMORY(&Kkeep, &KB, sizeof KB);
+}
+
+static void test_creep_round_trip_continues_bit_identically(void)
+{
+    const size_t len = creep_snapshot();
+    unsigned char again[HYST_CREEP_SNAPSHOT_SIZE];
+    size_t len2 = 0u;
+    int k;
+    TEST_ASSERT_EQUAL_UINT8_ARRAY("HYSC", snap, 4);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_snapshot_restore(&KB, snap, len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NONFINITE, hyst_creep_status(&KB));
+    TEST_ASSERT_EQUAL_UINT(HYST_EVENT_NONFINITE, hyst_creep_events(&KB));
+    TEST_ASSERT_EQUAL_MEMORY(KA.state, KB.state, sizeof KA.state);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_snapshot_save(&KB, again, sizeof again, &len2));
+    TEST_ASSERT_EQUAL_size_t(len, len2);
+    TEST_ASSERT_EQUAL_MEMORY(snap, again, len);
+    for (k = 0; k < 500; ++k) {
+        const hyst_real_t x = (hyst_real_t)(k % 37) + HYST_REAL_C(0.25);
+        const hyst_real_t ca = hyst_creep_step(&KA, x), cb = hyst_creep_step(&KB, x);
+        TEST_ASSERT_EQUAL_MEMORY(&ca, &cb, sizeof ca);
+    }
+    /* an instance that did not restore continues otherwise */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KB, 2u, creep_tau, creep_w, 0.0));
+    TEST_ASSERT_FALSE(hyst_creep_output(&KB) == hyst_creep_output(&KA));
+}
+
+/* Each bit flip is refused with its field's error; the instance unchanged. */
+static void test_creep_every_bit_flip_and_truncation_is_refused(void)
+{
+    const size_t len = creep_snapshot();
+    size_t i;
+    unsigned bit;
+    for (i = 0u; i < len; ++i) {
+        for (bit = 0u; bit < 8u; ++bit) {
+            const int expected = i < 4u || (i >= 8u && i < 12u) || (i >= 16u && i < 20u)
+                                     ? HYST_ERR_FORMAT /* magic, length, count */
+                                     : i < 8u ? HYST_ERR_VERSION : HYST_ERR_CRC;
+            memcpy(work, snap, len);
+            work[i] = (unsigned char)(work[i] ^ (1u << bit));
+            TEST_ASSERT_EQUAL_INT_MESSAGE(expected, hyst_creep_snapshot_restore(&KB, work, len),
+                                          "flipped bit not refused as expected");
+            assert_creep_untouched();
+        }
+    }
+    for (i = 0u; i < len; ++i) {
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_creep_snapshot_restore(&KB, snap, i));
+        assert_creep_untouched();
+    }
+    /* extra octets after it are ignored (fixed-size NVM slots) */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_snapshot_restore(&KB, snap, sizeof snap));
+}
+
+/* Values no instance can hold, under a valid CRC: refused as FORMAT. */
+static void test_creep_forged_values_with_a_valid_crc_are_refused(void)
+{
+    const size_t len = creep_snapshot();
+    static const size_t at[4] = {20u, 24u, 26u, 28u + R - 1u};
+    static const unsigned char value[4] = {0x04u, 0x05u, 0x01u, 0x7Fu};
+    unsigned i;
+    for (i = 0u; i < 4u; ++i) { /* an unknown event, status 5, reserved, a state's exponent */
+        memcpy(work, snap, len);
+        work[at[i]] = value[i];
+        if (i == 3u) { /* every exponent bit: infinity or NaN */
+            work[at[i] - 1u] = (unsigned char)(work[at[i] - 1u] | (R == 4u ? 0x80u : 0xF0u));
+        }
+        refix_crc(work, len);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_creep_snapshot_restore(&KB, work, len));
+        assert_creep_untouched();
+    }
+    memcpy(work, snap, len);
+    work[4] = (unsigned char)(HYST_CREEP_SNAPSHOT_VERSION + 1u);
+    refix_crc(work, len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_VERSION, hyst_creep_snapshot_restore(&KB, work, len));
+    assert_creep_untouched();
+}
+
+/* Another creep term (a weight, a time constant, one lag fewer), another
+ * variant, an instance not initialised, NULL, a small buffer. */
+static void test_creep_other_term_and_bad_calls_are_refused(void)
+{
+    const size_t len = creep_snapshot();
+    const hyst_wide_t w2[2] = {creep_w[0], (hyst_wide_t)-0.021};
+    const hyst_wide_t tau2[2] = {creep_tau[0], 4001};
+    hyst_creep_t blank;
+    unsigned char small[HYST_CREEP_SNAPSHOT_SIZE];
+    size_t got = 99u;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KB, 2u, creep_tau, w2, 0.0));
+    Kkeep = KB;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_creep_snapshot_restore(&KB, snap, len));
+    assert_creep_untouched();
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KB, 2u, tau2, creep_w, 0.0));
+    Kkeep = KB;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_creep_snapshot_restore(&KB, snap, len));
+    assert_creep_untouched();
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KB, 1u, creep_tau, creep_w, 0.0));
+    Kkeep = KB;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_creep_snapshot_restore(&KB, snap, len));
+    assert_creep_untouched();
+#if HYST_ENABLE_F64
+    {
+        hyst_creep_t other;
+#ifdef HYST_USE_DOUBLE
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f32_creep_init(&other, 2u, creep_tau, creep_w, 0.0));
+#else
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_creep_init(&other, 2u, creep_tau, creep_w, 0.0));
+#endif
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_VERSION, hyst_creep_snapshot_restore(&other, snap, len));
+    }
+#endif
+    memset(&blank, 0, sizeof blank);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_creep_snapshot_restore(&blank, snap, len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_creep_snapshot_save(&blank, small, sizeof small, &got));
+    TEST_ASSERT_EQUAL_size_t(0u, hyst_creep_snapshot_size(&blank));
+    TEST_ASSERT_EQUAL_size_t(0u, hyst_creep_snapshot_size(NULL));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_creep_snapshot_restore(NULL, snap, len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_creep_snapshot_restore(&KA, NULL, len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_creep_snapshot_save(NULL, small, sizeof small, &got));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_creep_snapshot_save(&KA, NULL, sizeof small, &got));
+    memset(small, 0xA5, sizeof small);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOSPACE, hyst_creep_snapshot_save(&KA, small, len - 1u, &got));
+    TEST_ASSERT_EQUAL_size_t(99u, got);
+    TEST_ASSERT_EACH_EQUAL_HEX8(0xA5, small, sizeof small);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -460,5 +613,9 @@ int main(void)
     RUN_TEST(test_negative_zero_turning_point_restores_as_zero);
     RUN_TEST(test_forged_values_with_a_valid_crc_are_refused);
     RUN_TEST(test_piecewise_linear_curve_identity_covers_every_point);
+    RUN_TEST(test_creep_round_trip_continues_bit_identically);
+    RUN_TEST(test_creep_every_bit_flip_and_truncation_is_refused);
+    RUN_TEST(test_creep_forged_values_with_a_valid_crc_are_refused);
+    RUN_TEST(test_creep_other_term_and_bad_calls_are_refused);
     return UNITY_END();
 }

@@ -41,6 +41,13 @@
  * Cost per sample: per term one subtraction and two multiply-adds (the
  * lag's update, the weighted sum), with no division and no call; the
  * instance is statically sized and keeps no pointer.
+ *
+ * Snapshots (snapshot.h, hyst_creep_snapshot_save() and _restore()) keep
+ * the lags through a brown-out, as hyst_snapshot_save() keeps the
+ * hysteresis model's turning points. Concurrency as tcm.h's: one stepping
+ * context calls step, init, reset, clear_events, output and restore; a
+ * context it preempts on the same core may save a snapshot and read the
+ * status, the events and the size at any time.
  */
 #ifndef HYST_CREEP_H
 #define HYST_CREEP_H
@@ -67,6 +74,8 @@ typedef struct hyst_creep {
     hyst_num_t state[HYST_CREEP_MAX_TERMS];  /**< s_k, the lags of the drive */
     int status;                              /**< hyst_status_t of the last sample */
     unsigned events;                         /**< sticky HYST_EVENT_* flags */
+    unsigned long seq;                       /**< changed by every change of the state
+                                                  (a snapshot's consistency check) */
 } hyst_creep_t;
 
 /**

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /**
  * @file snapshot.h
- * @brief Snapshot and restore of a TCM instance's memory (turning points).
+ * @brief Snapshot and restore of a TCM instance's memory (turning points),
+ *        and of a creep term's lags.
  *
  * A piezo stage keeps its hysteresis state through a brown-out only if the
  * model does: save the instance to non-volatile memory, restore it at boot.
@@ -52,6 +53,7 @@
 #ifndef HYST_SNAPSHOT_H
 #define HYST_SNAPSHOT_H
 
+#include "hyst/creep.h"
 #include "hyst/status.h"
 #include "hyst/tcm.h"
 
@@ -124,6 +126,78 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf,
  */
 hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf,
                                     size_t len);
+
+/**
+ * @name Creep snapshots
+ * @brief The lags of a creep term (creep.h) through a brown-out, beside the
+ *        hysteresis model's snapshot: a compensator with a creep term
+ *        restores both to continue bit for bit.
+ *
+ * Octets as above (little-endian, reals as IEEE-754 bits; R octets per
+ * real of the instance's variant, 4 for f32, 8 for f64):
+ *
+ * | offset  | octets | field                                                |
+ * |---------|--------|------------------------------------------------------|
+ * | 0       | 4      | magic 0x48 0x59 0x53 0x43 ("HYSC")                   |
+ * | 4       | 2      | format version, HYST_CREEP_SNAPSHOT_VERSION          |
+ * | 6       | 1      | R: octets per real, 4 or 8                           |
+ * | 7       | 1      | variant (hyst_variant_t)                             |
+ * | 8       | 4      | L: total length in octets, CRC included              |
+ * | 12      | 4      | creep id: hyst_crc32 of the variant, n and every a_k |
+ * |         |        | and w_k, serialised as here                          |
+ * | 16      | 4      | n: lags                                              |
+ * | 20      | 4      | sticky event flags (HYST_EVENT_*)                    |
+ * | 24      | 2      | status of the last sample, 16-bit two's complement   |
+ * | 26      | 2      | reserved, 0                                          |
+ * | 28      | R n    | the lags' states s_k                                 |
+ * | L - 4   | 4      | CRC-32 of octets [0, L - 4)                          |
+ *
+ * L = 32 + R n. Save may run in a context the stepping one preempts (the
+ * copy is taken between two reads of the instance's sequence counter,
+ * retried, at worst HYST_ERR_BUSY with the magic cleared); restore only
+ * where no step can run, and it changes nothing unless every check passes.
+ */
+/**@{*/
+/** Format version written and accepted by this library. */
+#define HYST_CREEP_SNAPSHOT_VERSION 1u
+/** Buffer length, in octets, that holds a snapshot of any creep instance. */
+#define HYST_CREEP_SNAPSHOT_SIZE (32u + 8u * HYST_CREEP_MAX_TERMS)
+
+/**
+ * @brief Length in octets of a snapshot of @p C (32 + R n).
+ * @return that length; 0 for NULL or an instance not initialised.
+ */
+size_t hyst_creep_snapshot_size(const hyst_creep_t *C);
+
+/**
+ * @brief Writes the lags, the status and the sticky events of @p C, with
+ *        its creep id, into @p buf.
+ * @param[in]  C    initialised instance (not modified).
+ * @param[out] buf  @p size elements; each receives one octet (0..255).
+ * @param[in]  size elements available in @p buf.
+ * @param[out] len  if not NULL: octets written.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (not initialised),
+ *         HYST_ERR_NOSPACE (nothing written) or HYST_ERR_BUSY (a step
+ *         changed the state during every attempt; the magic is cleared).
+ */
+hyst_status_t hyst_creep_snapshot_save(const hyst_creep_t *C, unsigned char *buf, size_t size,
+                                       size_t *len);
+
+/**
+ * @brief Restores a creep snapshot into an instance initialised with the
+ *        same lags and weights (the same creep id).
+ *
+ * Checks, in this order: magic, version and real width, length, CRC, creep
+ * id, then the values (states finite in the type, a known status and known
+ * events, reserved octets 0). On any error @p C is left exactly as it was.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (C not initialised),
+ *         HYST_ERR_FORMAT (bad magic, truncated, inconsistent length,
+ *         impossible values), HYST_ERR_VERSION (other version or variant),
+ *         HYST_ERR_CRC (corrupted) or HYST_ERR_CURVE (other time constants
+ *         or weights).
+ */
+hyst_status_t hyst_creep_snapshot_restore(hyst_creep_t *C, const unsigned char *buf, size_t len);
+/**@}*/
 
 /**
  * @brief CRC-32/ISO-HDLC of octets (as used by snapshots), for callers that

@@ -217,18 +217,56 @@ struct Tcm {
     /* Back at rest: A0, and a creep term's lags at lo (Real). */
     virtual void reset() { hyst_reset(&S); }
 
+    /* The creep term's lags, when the instance has one (Real). */
+    virtual const hyst_creep_t *creep_of() const { return nullptr; }
+    virtual void set_creep_state(const hyst_creep_t &) {}
+
+    /* The library's snapshot; with a creep term, its creep snapshot after it
+     * (snapshot.h: each says its own length). */
     nb::bytes save() const
     {
-        std::vector<unsigned char> buf(HYST_SNAPSHOT_SIZE(hyst_capacity(&S)));
-        size_t len = 0u;
+        std::vector<unsigned char> buf(HYST_SNAPSHOT_SIZE(hyst_capacity(&S)) +
+                                       HYST_CREEP_SNAPSHOT_SIZE);
+        size_t len = 0u, creep_len = 0u;
         check(hyst_snapshot_save(&S, buf.data(), buf.size(), &len), "snapshot save");
-        return nb::bytes(reinterpret_cast<const char *>(buf.data()), len);
+        if (const hyst_creep_t *c = creep_of()) {
+            check(hyst_creep_snapshot_save(c, buf.data() + len, buf.size() - len, &creep_len),
+                  "creep snapshot save");
+        }
+        return nb::bytes(reinterpret_cast<const char *>(buf.data()), len + creep_len);
     }
+    /* Both parts checked before either is written: all or nothing. */
     void restore(const nb::bytes &b)
     {
-        check(hyst_snapshot_restore(&S, reinterpret_cast<const unsigned char *>(b.c_str()),
-                                    b.size()),
-              "snapshot restore");
+        const auto *p = reinterpret_cast<const unsigned char *>(b.c_str());
+        const size_t n = b.size();
+        /* the model's part ends at its length field's value (octets 8..11) */
+        const size_t len = n >= 12u ? (size_t)p[8] | (size_t)p[9] << 8 | (size_t)p[10] << 16 |
+                                          (size_t)p[11] << 24
+                                    : n;
+        const bool creep_follows = n >= 4u && len <= n - 4u && p[len] == 0x48u &&
+                                   p[len + 1u] == 0x59u && p[len + 2u] == 0x53u &&
+                                   p[len + 3u] == 0x43u;
+        const hyst_creep_t *c = creep_of();
+        hyst_creep_t lags{};
+        if (c != nullptr) {
+            lags = *c;
+            if (len <= n && !creep_follows) {
+                raise_status(HYST_ERR_FORMAT,
+                             "snapshot restore: the model has a creep term, the snapshot none");
+            }
+            if (len <= n) {
+                check(hyst_creep_snapshot_restore(&lags, p + len, n - len),
+                      "creep snapshot restore");
+            }
+        } else if (creep_follows) {
+            raise_status(HYST_ERR_FORMAT,
+                         "snapshot restore: the snapshot has a creep term, the model none");
+        }
+        check(hyst_snapshot_restore(&S, p, n), "snapshot restore");
+        if (c != nullptr) {
+            set_creep_state(lags);
+        }
     }
 };
 
@@ -421,6 +459,8 @@ template <class T> struct Real : Owned<T, T> {
         creep_weight = weight;
         hyst_reset(&this->S);
     }
+    const hyst_creep_t *creep_of() const override { return has_creep ? &creep : nullptr; }
+    void set_creep_state(const hyst_creep_t &c) override { creep = c; }
     void reset() override
     {
         hyst_reset(&this->S);
@@ -939,8 +979,11 @@ NB_MODULE(_hyst, m)
         .def("reset", &Tcm::reset,
              "Back at rest: A0 = (lo, f0(lo)), and a creep term's lags at lo.")
         .def("clear_events", [](Tcm &s) { hyst_clear_events(&s.S); })
-        .def("save", &Tcm::save, "Snapshot of the memory (bytes, the library's format).")
-        .def("restore", &Tcm::restore, "b"_a, "Restores a snapshot taken with the same curve.")
+        .def("save", &Tcm::save,
+             "Snapshot of the memory (bytes, the library's format; with a creep term, its "
+             "lags' snapshot after it).")
+        .def("restore", &Tcm::restore, "b"_a,
+             "Restores a snapshot taken with the same curve (and creep term): all or nothing.")
         .def_prop_ro("status", [](const Tcm &s) { return hyst_status(&s.S); })
         .def_prop_ro("events", [](const Tcm &s) { return hyst_events(&s.S); })
         .def_prop_ro("tp_count", [](const Tcm &s) { return hyst_tp_count(&s.S); })
