@@ -144,7 +144,10 @@
  *   0xF2 n nested reversals (16 n deep at capacity 4100, n % 40 else;
  *   converging on the middle), 0xF3 b requests (b bit0 deadband, bit3 an
  *   invalid one instead, bit1 clear events, bit2 reset) and one step, 0xF4..
- *   accessors, snapshot refusals and clear events; any other byte one code
+ *   p m accessors, a snapshot of the twin (T, KT) restored into the block
+ *   instance (M, K): with octet p len / 256 xor (m | 1) refused, nothing
+ *   written; whole, the same state, then bit for bit at every later sample;
+ *   and clear events; any other byte one code
  *   (model: next_code) or desired output (next_desired) of kind op & 7. */
 #include "hyst/hyst.h"
 #include "ref_tcm.h"
@@ -188,7 +191,7 @@ static hyst_curve_t inv, inv_t, keep_inv;
 static hyst_q31_t table[HYST_Q31_INV_TABLE_LEN(MAX_INTERVALS)];
 static hyst_q31_t table_t[HYST_Q31_INV_TABLE_LEN(MAX_INTERVALS)];
 static hyst_q31_t keep_table[HYST_Q31_INV_TABLE_LEN(MAX_INTERVALS)];
-static unsigned char snap[64];
+static unsigned char snap[HYST_SNAPSHOT_SIZE(MAX_CAP)];
 static ref_tcm_t ref, rid;
 
 /* How often the checks had something to check, and how close they came:
@@ -343,6 +346,27 @@ static int same_comp(const kinst_t *a, const kinst_t *b)
            a->S.events == b->S.events && a->S.deadband.q31 == b->S.deadband.q31 &&
            hyst_q31_inv_input(&a->S) == hyst_q31_inv_input(&b->S) &&
            hyst_q31_inv_error_bound(&a->S) == hyst_q31_inv_error_bound(&b->S);
+}
+
+/* A snapshot of the sample-by-sample twin `from` restored into the block
+ * instance `to` (the whole of which, arrays included, is `whole`): first
+ * with one octet damaged (the reader's choice): refused, nothing written;
+ * then whole: OK, and the caller checks that the two are the same state
+ * (they then go on bit for bit, checked at every later sample). */
+static void snapshot_into(const hyst_t *from, hyst_t *to, const void *whole, void *keep,
+                          size_t size, reader_t *r)
+{
+    const unsigned pick = rd_u8(r), mask = rd_u8(r) | 1u;
+    size_t len = 0u, at;
+    CHECK(hyst_snapshot_save(from, snap, sizeof(snap), &len) == HYST_OK);
+    CHECK(len == hyst_snapshot_size(from) && len <= sizeof(snap));
+    at = (size_t)pick * len / 256u;
+    snap[at] = (unsigned char)(snap[at] ^ mask);
+    memcpy(keep, whole, size);
+    CHECK(hyst_snapshot_restore(to, snap, len) != HYST_OK);
+    CHECK(memcmp(keep, whole, size) == 0);
+    snap[at] = (unsigned char)(snap[at] ^ mask);
+    CHECK(hyst_snapshot_restore(to, snap, len) == HYST_OK);
 }
 
 /* Counts, order and nesting of the stored inputs, the deadband spacing (a
@@ -532,18 +556,14 @@ static void run_model(reader_t *r, unsigned flags, const ctx_t *c, hyst_status_t
             prev_y = -QHALF;
             continue;
         }
-        if (op >= 0xF4u) { /* accessors, snapshot refusals, clear events */
-            size_t len = 7u;
+        if (op >= 0xF4u) { /* accessors, T's snapshot into M, clear events */
             CHECK(hyst_q31_output(&T.S) == prev_y && hyst_q31_input(&T.S) == prev_c);
             CHECK(hyst_q31_rounding_bound(&T.S) == rb && hyst_q31_error_bound(&T.S) >= 0);
             CHECK(hyst_capacity(&T.S) == c->cap &&
                   hyst_ltp_count(&T.S) + hyst_rtp_count(&T.S) == hyst_tp_count(&T.S));
             (void)hyst_status(&T.S);
-            memcpy(&keepm, &T, sizeof(T));
-            CHECK(hyst_snapshot_size(&T.S) == 0u);
-            CHECK(hyst_snapshot_save(&T.S, snap, sizeof(snap), &len) == HYST_ERR_ARG);
-            CHECK(hyst_snapshot_restore(&T.S, snap, sizeof(snap)) == HYST_ERR_ARG);
-            CHECK(memcmp(&keepm, &T, sizeof(T)) == 0);
+            snapshot_into(&T.S, &M.S, &M, &keepm, sizeof(M), r);
+            CHECK(same_model(&M, &T));
             hyst_clear_events(&M.S);
             hyst_clear_events(&T.S);
             hyst_clear_events(&Z.S);
@@ -841,16 +861,12 @@ static void run_comp(reader_t *r, unsigned flags, const ctx_t *c, hyst_status_t 
             continue;
         }
         if (op >= 0xF4u) {
-            size_t len = 7u;
             CHECK(hyst_q31_inv_output(&KT.S) == prev_d && hyst_q31_inv_input(&KT.S) == prev_in);
             CHECK(hyst_q31_rounding_bound(&KT.S) == rb_k && hyst_q31_inv_error_bound(&KT.S) >= 0);
             CHECK(hyst_q31_inv_drive_bits(&KT.S) == bits);
             CHECK(hyst_ltp_count(&KT.S) + hyst_rtp_count(&KT.S) == hyst_tp_count(&KT.S));
-            memcpy(&keepk, &KT, sizeof(KT));
-            CHECK(hyst_snapshot_size(&KT.S) == 0u);
-            CHECK(hyst_snapshot_save(&KT.S, snap, sizeof(snap), &len) == HYST_ERR_ARG);
-            CHECK(hyst_snapshot_restore(&KT.S, snap, sizeof(snap)) == HYST_ERR_ARG);
-            CHECK(memcmp(&keepk, &KT, sizeof(KT)) == 0);
+            snapshot_into(&KT.S, &K.S, &K, &keepk, sizeof(K), r);
+            CHECK(same_comp(&K, &KT));
             hyst_clear_events(&K.S);
             hyst_clear_events(&KT.S);
             CHECK(hyst_events(&KT.S) == 0u && same_comp(&K, &KT));

@@ -377,22 +377,22 @@ dnoise = qd(0.5) + b"".join(bytes([10, v & 0xFF]) for v in (5, -3, 4, -6, 2, 7, 
 q31_seeds = {
     # the model: Eq. 20-like cubic on 12-bit codes, nested loops, a block, reset, accessors
     "model_eq20_12bit": q31_cfg(0, 19, eq20_like) + q_shrink(qcodes) + bytes([0xF1, 5, 0, 0, 4, 3, 11, 0x10, 0x00, 0x14, 9])
-        + bytes([0xF4, 0xF0]) + q_shrink(qcodes, 2, 3),
+        + bytes([0xF4, 128, 1, 0xF0]) + q_shrink(qcodes, 2, 3),
     "model_deep_nesting": q31_cfg(QDEEP, 255, eq20_like, span=65535) + bytes([0xF2, 200]) + qc(60000)
-        + bytes([0xF0, 0xF2, 100]) + qc(30000),
+        + bytes([0xF0, 0xF2, 100, 0xF4, 200, 0x41]) + qc(30000),
     "model_deadband_requests": q31_cfg(QDEADBAND | QBADDB, 6, eq20_like, db=6, bad=3) + qnoise
         + bytes([0xF3, 1]) + struct.pack("<H", 0) + bytes([0]) + struct.pack("<H", 100) + qnoise
         + bytes([0xF3, 7]) + struct.pack("<H", 9) + bytes([0]) + struct.pack("<H", 3000) + qnoise
-        + bytes([0xF3, 9, 5, 3, 0xF5]),
+        + bytes([0xF3, 9, 5, 3, 0xF5, 255, 0x80]),
     "model_clamped": q31_cfg(0, 5, eq20_like, clo=1000, span=2000) + bytes([4, 7, 0x14, 9, 0x0C, 1, 2, 3, 3, 11, 0x1C, 4, 0])
-        + bytes([0xF1, 6, 3, 11, 4, 7, 0, 0x10, 0x00, 0x14, 9, 0x1C, 0x0C, 1, 2, 3]) + bytes([0xF6]),
+        + bytes([0xF1, 6, 3, 11, 4, 7, 0, 0x10, 0x00, 0x14, 9, 0x1C, 0x0C, 1, 2, 3]) + bytes([0xF6, 30, 4]),
     "model_merge_cap2": q31_cfg(0, 2, eq20_like, span=65535) + q_shrink(lambda u: qcodes(u, 65535), 6, 3),
-    "model_probes": q31_cfg(QPROBES | QBADDB, 8, eq20_like, bad=200) + q_shrink(qcodes, 2, 2) + bytes([0xF7]),
+    "model_probes": q31_cfg(QPROBES | QBADDB, 8, eq20_like, bad=200) + q_shrink(qcodes, 2, 2) + bytes([0xF7, 0, 2]),
     "model_raw_eq20": q31_cfg(QRAW, 40, (3, 0.0, 40.0, [-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1]))
         + q_shrink(qcodes, 3, 3),
     # the compensator (flag bit1): intervals, then desired outputs
     "comp_eq20_12bit": q31_cfg(QCOMP, 19, eq20_like, intervals=32) + q_shrink(qd)
-        + bytes([0xF1, 64 | 5, 0, 0, 0, 4, 0x0C, 3, 0x0B, 2, 200, 0x24, 1, 2, 3]) + bytes([0xF4, 0xF0]) + q_shrink(qd, 2, 3),
+        + bytes([0xF1, 64 | 5, 0, 0, 0, 4, 0x0C, 3, 0x0B, 2, 200, 0x24, 1, 2, 3]) + bytes([0xF4, 128, 1, 0xF0]) + q_shrink(qd, 2, 3),
     "comp_flat_x3": q31_cfg(QCOMP, 12, cube, span=65535, intervals=64) + q_shrink(qd, 4, 4)
         + bytes([0xF2, 30]),
     "comp_deadband_requests": q31_cfg(QCOMP | QDEADBAND | QBADDB, 6, eq20_like, intervals=16, db=1 << 16, bad=9) + dnoise
@@ -402,7 +402,8 @@ q31_seeds = {
         + bytes([0x0C, 4, 0x1C, 0, 0x14, 0x24, 1, 2, 3, 0x2C, 4, 0x2C]) + bytes([0xF1, 8]) + qd(0.3) + qd(0.7)
         + bytes([0x0C, 4, 0x1C, 9, 0x03, 0x0B, 0x05]) + q_shrink(qd, 3, 2),
     "comp_wide_n_probes": q31_cfg(QCOMP | QWIDE | QPROBES, 10, eq20_like, intervals=1000) + q_shrink(qd, 2, 3),
-    "comp_deep_nesting": q31_cfg(QCOMP | QDEEP, 250, eq20_like, span=65535, intervals=255) + bytes([0xF2, 150]),
+    "comp_deep_nesting": q31_cfg(QCOMP | QDEEP, 250, eq20_like, span=65535, intervals=255) + bytes([0xF2, 150])
+        + bytes([0xF4, 100, 0x10]) + q_shrink(qd, 2, 2),
     # slow sweeps over the flat point of x^3 (one code, one q per sample), where rounding
     # alone could step the output back: the monotone guard
     "model_flat_sweep": q31_cfg(0, 8, cube, span=65535) + qc(32740) + bytes([0x0A, 1]) * 60

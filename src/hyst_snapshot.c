@@ -26,9 +26,10 @@
 #define MAX_COUNT 0x03FFFFFFul /* keeps L below 2^31 */
 #define EVENTS_KNOWN (HYST_EVENT_NONFINITE | HYST_EVENT_CLAMPED | HYST_EVENT_FULL)
 
-/* How the numbers of a variant travel: R octets per real (outputs), X per
- * stored input; the types of its inputs and outputs. */
-typedef enum { NUM_CODE, NUM_F32, NUM_F64 } num_type_t;
+/* How the numbers of a variant travel: R octets per output, X per stored
+ * input; the types of its inputs and outputs (NUM_Q31: a fixed-point
+ * number, 4 octets of two's complement). */
+typedef enum { NUM_CODE, NUM_F32, NUM_F64, NUM_Q31 } num_type_t;
 typedef struct {
     unsigned r, x;
     num_type_t xt, yt;
@@ -42,6 +43,8 @@ static int format_of(unsigned variant, format_t *f)
     case HYST_VARIANT_F64: f->r = 8u; f->x = 8u; f->xt = NUM_F64; f->yt = NUM_F64; return 1;
 #endif
     case HYST_VARIANT_CODE: f->r = 4u; f->x = 4u; f->xt = NUM_CODE; f->yt = NUM_F32; return 1;
+    case HYST_VARIANT_Q31: f->r = 4u; f->x = 4u; f->xt = NUM_CODE; f->yt = NUM_Q31; return 1;
+    case HYST_VARIANT_Q31_INV: f->r = 4u; f->x = 4u; f->xt = NUM_Q31; f->yt = NUM_Q31; return 1;
     default: return 0;
     }
 }
@@ -114,6 +117,10 @@ static void put_num(unsigned char *p, const hyst_num_t *v, num_type_t t)
         put_u32(p, (unsigned long)b.u);
         return;
     }
+    if (t == NUM_Q31) { /* two's complement without implementation-defined casts */
+        put_u32(p, v->q31 < 0 ? 0xFFFFFFFFul - (unsigned long)(-(v->q31 + 1)) : (unsigned long)v->q31);
+        return;
+    }
     put_u32(p, (unsigned long)v->code);
 }
 
@@ -138,6 +145,11 @@ static int get_num(const unsigned char *p, hyst_num_t *v, num_type_t t)
         v->f32 = b.r;
         return 1;
     }
+    if (t == NUM_Q31) {
+        const unsigned long u = get_u32(p);
+        v->q31 = u >= 0x80000000ul ? -(hyst_q31_t)(0xFFFFFFFFul - u) - 1 : (hyst_q31_t)u;
+        return 1;
+    }
     if (get_u32(p) > (unsigned long)HYST_CODE_MAX) {
         v->code = 0u; /* defined, though refused */
         return 0;
@@ -154,7 +166,9 @@ static hyst_wide_t wide_of(const hyst_num_t *v, num_type_t t)
         return (hyst_wide_t)v->f64;
     }
 #endif
-    return t == NUM_F32 ? (hyst_wide_t)v->f32 : (hyst_wide_t)v->code;
+    return t == NUM_F32   ? (hyst_wide_t)v->f32
+           : t == NUM_Q31 ? (hyst_wide_t)v->q31
+                          : (hyst_wide_t)v->code;
 }
 
 /* Entry i of a caller array, as a number. */
@@ -169,6 +183,8 @@ static hyst_num_t elem(hyst_ptr_t a, size_t i, num_type_t t)
 #endif
     if (t == NUM_F32) {
         v.f32 = a.f32[i];
+    } else if (t == NUM_Q31) {
+        v.q31 = a.q31[i];
     } else {
         v.code = a.code[i];
     }
@@ -185,6 +201,8 @@ static void set_elem(hyst_ptr_t a, size_t i, const hyst_num_t *v, num_type_t t)
 #endif
     if (t == NUM_F32) {
         a.f32[i] = v->f32;
+    } else if (t == NUM_Q31) {
+        a.q31[i] = v->q31;
     } else {
         a.code[i] = v->code;
     }
@@ -269,8 +287,17 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
         crc = crc_word(crc, (unsigned long)c->u.inv_table.intervals);
         for (i = 0u; i < HYST_INV_TABLE_LEN(c->u.inv_table.intervals); ++i) { /* the pieces */
             hyst_num_t v; /* exact: the table has the curve's type */
-            (void)hyst_num_set(&v, c->variant, hyst_cptr_get(c->u.inv_table.table, i, c->variant));
+            if (f->yt == NUM_Q31) {
+                v.q31 = c->u.inv_table.table.q31[i];
+            } else {
+                (void)hyst_num_set(&v, c->variant,
+                                   hyst_cptr_get(c->u.inv_table.table, i, c->variant));
+            }
             crc = crc_num(crc, &v, f->yt);
+        }
+        if (f->yt == NUM_Q31) { /* the drive's format: its fraction bits and first code */
+            crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_bits);
+            crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_code_lo);
         }
     } else if (c->kind == (unsigned)HYST_CURVE_PWL || c->kind == (unsigned)HYST_CURVE_PWL_INV) {
         size_t i;
@@ -611,6 +638,12 @@ hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf, siz
         hyst_f64_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book);
         break;
 #endif
+    case HYST_VARIANT_Q31:
+        hyst_q31_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book);
+        break;
+    case HYST_VARIANT_Q31_INV:
+        hyst_q31_inv_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book);
+        break;
     default: hyst_code_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book); break;
     }
     S->events = (unsigned)events;

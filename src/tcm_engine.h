@@ -1418,6 +1418,18 @@ static void TCM_NAME(release_held)(hyst_tcm_t *S)
     }
 }
 
+/* Is a reversal whose excursion from the current TP is d skipped? Below
+ * the deadband, or inside the open window's widest skipped excursion: a
+ * deadband narrowed while a window is open must not store a TP where the
+ * output still carries the window's error (it stays on the branch it
+ * moved back along until the input leaves the window's reach, where the
+ * full model has wiped the skipped loops too). Without a change of the
+ * deadband the reach is below it and the second test never decides. */
+HYST_INLINE int TCM_NAME(skips)(const hyst_tcm_t *S, TCM_X d)
+{
+    return d < XV(S->deadband) || d < XV(S->db_reach);
+}
+
 /* Reversal on a falling branch without a wipe-out, with a detour (a flag
  * of S->detour, or a full LTP array): (x_prev, y_prev) becomes LTP nl,
  * unless the deadband skips it or a full array merges it. */
@@ -1426,7 +1438,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_p
     size_t nl = S->n_ltp, nr = S->n_rtp;
     TCM_NAME(fresh)(S);
     TCM_NAME(release_held)(S);
-    if ((TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev) < XV(S->deadband)) {
+    if (TCM_NAME(skips)(S, (TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev))) {
         TCM_NAME(skip)(S, x_prev, XV(S->xrtp)[nr - 1u]); /* keep falling */
     } else {
         if (nl == S->capacity) {
@@ -1454,7 +1466,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(reverse_down)(hyst_tcm_t *S, TCM_X x, TCM_X x
     const size_t nl = S->n_ltp, nr = S->n_rtp;
     TCM_NAME(fresh)(S);
     TCM_NAME(release_held)(S);
-    if ((TCM_X)(x_prev - XV(S->xltp)[nl - 1u]) < XV(S->deadband)) {
+    if (TCM_NAME(skips)(S, (TCM_X)(x_prev - XV(S->xltp)[nl - 1u]))) {
         TCM_NAME(skip)(S, XV(S->xltp)[nl - 1u], x_prev); /* keep rising */
     } else {
         XV(S->xrtp)[nr] = TCM_NORM(x_prev);

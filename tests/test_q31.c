@@ -333,13 +333,72 @@ static void test_bad_arguments_are_refused(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_q31_set_deadband(NULL, 3u));
     TEST_ASSERT_EQUAL_INT32(0, hyst_q31_step(NULL, 5u));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_q31_process(&Q, NULL, outs, 3u));
-    /* snapshots: not for this variant yet, and said so */
-    TEST_ASSERT_EQUAL_UINT(0u, (unsigned)hyst_snapshot_size(&Q));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_snapshot_save(&Q, buf, sizeof buf, &len));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_snapshot_restore(&Q, buf, sizeof buf));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOSPACE, hyst_snapshot_save(&Q, buf, 8u, &len));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_request_reset(&Q));
     (void)hyst_q31_step(&Q, 7u);
     TEST_ASSERT_EQUAL_UINT32(0u, hyst_q31_input(&Q));
+}
+
+/* Snapshots (snapshot.h; q31 numbers travel as 4-octet two's complement):
+ * a restored instance continues bit for bit, merged loops and an open
+ * deadband window included; a damaged or truncated snapshot is refused with
+ * the instance and its arrays untouched. */
+#define SNAP_CAP 48u
+static hyst_code_word_t sx[2][SNAP_CAP];
+static hyst_q31_t sy[2][SNAP_CAP];
+static hyst_t Q2, Q2_kept;
+static hyst_code_word_t sx_kept[2][SNAP_CAP];
+static hyst_q31_t sy_kept[2][SNAP_CAP];
+static unsigned char snap[HYST_SNAPSHOT_SIZE(SNAP_CAP)], snap_again[HYST_SNAPSHOT_SIZE(SNAP_CAP)];
+static unsigned char damaged[HYST_SNAPSHOT_SIZE(SNAP_CAP)];
+
+static void assert_q2_untouched(void)
+{
+    TEST_ASSERT_EQUAL_MEMORY(&Q2_kept, &Q2, sizeof Q2);
+    TEST_ASSERT_EQUAL_MEMORY(sx_kept, sx, sizeof sx);
+    TEST_ASSERT_EQUAL_MEMORY(sy_kept, sy, sizeof sy);
+}
+
+static void test_snapshot_round_trips_bit_identically(void)
+{
+    size_t len = 0u, len2 = 0u, i;
+    long k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_init(&Q, &paper_eq20, 0u, 4095u, qx[0], qy[0], qx[1],
+                                                 qy[1], SNAP_CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_set_deadband(&Q, 3u));
+    for (k = 0; k < 6000; ++k) { /* shrinking triangles: deep nests, then wiped out */
+        const long amp = 2000L - (k % 1700L);
+        codes[k] = (uint_least32_t)(2048L + (k % 2L == 0L ? amp : -amp) + (long)rng_below(&rng, 3u));
+    }
+    for (k = 0; k < 2600; ++k) {
+        (void)hyst_q31_step(&Q, codes[k]);
+    }
+    TEST_ASSERT_TRUE((hyst_events(&Q) & HYST_EVENT_FULL) != 0u); /* loops were merged */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&Q, snap, sizeof snap, &len));
+    TEST_ASSERT_EQUAL_size_t(hyst_snapshot_size(&Q), len);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_init(&Q2, &paper_eq20, 0u, 4095u, sx[0], sy[0],
+                                                 sx[1], sy[1], SNAP_CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_set_deadband(&Q2, 3u));
+    (void)hyst_q31_step(&Q2, 2000u);
+    memcpy(&Q2_kept, &Q2, sizeof Q2);
+    memcpy(sx_kept, sx, sizeof sx);
+    memcpy(sy_kept, sy, sizeof sy);
+    for (i = 0u; i < len; ++i) { /* one bit of every octet */
+        memcpy(damaged, snap, len);
+        damaged[i] = (unsigned char)(damaged[i] ^ (1u << (i % 8u)));
+        TEST_ASSERT_TRUE(hyst_snapshot_restore(&Q2, damaged, len) != HYST_OK);
+        assert_q2_untouched();
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&Q2, snap, i));
+        assert_q2_untouched();
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&Q2, snap, len));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&Q2, snap_again, sizeof snap_again, &len2));
+    TEST_ASSERT_EQUAL_size_t(len, len2);
+    TEST_ASSERT_EQUAL_MEMORY(snap, snap_again, len);
+    for (k = 2600; k < 6000; ++k) {
+        TEST_ASSERT_EQUAL_INT32(hyst_q31_step(&Q, codes[k]), hyst_q31_step(&Q2, codes[k]));
+        TEST_ASSERT_EQUAL_INT32(hyst_q31_error_bound(&Q), hyst_q31_error_bound(&Q2));
+    }
 }
 
 int main(void)
@@ -352,6 +411,7 @@ int main(void)
     RUN_TEST(test_scaling_and_monotone_sweeps);
     RUN_TEST(test_small_capacity_merges_stay_bounded);
     RUN_TEST(test_overflowing_curves_are_refused);
+    RUN_TEST(test_snapshot_round_trips_bit_identically);
     RUN_TEST(test_bad_arguments_are_refused);
     return UNITY_END();
 }

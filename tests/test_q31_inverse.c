@@ -317,13 +317,13 @@ static void test_table_sizes_and_macros(void)
 }
 
 /* Curves the model refuses are refused; arguments checked in the stated
- * order; nothing written on error; snapshots refused clearly. */
+ * order; nothing written on error. */
 static void test_bad_arguments_are_refused(void)
 {
     static const hyst_poly_t wild = {7u, 0.0, 1.0,
                                      {1.0, -3.5, 5.25, -4.375, 2.1875, -0.65625, 0.109375,
                                       -0.0078125}};
-    unsigned char buf[64];
+    unsigned char buf[512];
     size_t len = 0u;
     memset(&C, 0, sizeof C);
     memset(&inv, 0, sizeof inv);
@@ -365,10 +365,12 @@ static void test_bad_arguments_are_refused(void)
     TEST_ASSERT_EQUAL_INT32(0, hyst_q31_inv_error_bound(NULL));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_q31_inv_process(&C, NULL, drives, 3u));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_inv_process(&C, NULL, NULL, 0u));
-    /* snapshots: not for this variant yet, and said so */
-    TEST_ASSERT_EQUAL_UINT(0u, (unsigned)hyst_snapshot_size(&C));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_snapshot_save(&C, buf, sizeof buf, &len));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_snapshot_restore(&C, buf, sizeof buf));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOSPACE, hyst_snapshot_save(&C, buf, 8u, &len));
+    /* a snapshot of the compensator restores into the compensator only */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&C, buf, sizeof buf, &len));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_init(&M, &paper_eq20, 0u, 4095u, mx[0], my[0], mx[1],
+                                                 my[1], CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_VERSION, hyst_snapshot_restore(&M, buf, len));
     /* requests and reset reach this variant's engine */
     (void)hyst_q31_inv_step(&C, 12345);
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_request_reset(&C));
@@ -378,6 +380,78 @@ static void test_bad_arguments_are_refused(void)
     hyst_reset(&C);
     TEST_ASSERT_EQUAL_INT32(0, hyst_q31_inv_output(&C));
     TEST_ASSERT_EQUAL_UINT(0u, (unsigned)hyst_tp_count(&C));
+}
+
+/* Snapshots: the compensator restored from one (into an instance whose
+ * table was built again from the same model: the same curve id) drives
+ * bit for bit as the one saved, merged loops and an open deadband window
+ * included; a damaged or truncated snapshot is refused with the instance
+ * and its arrays untouched; another model's table is another curve. */
+#define SNAP_CAP 48u
+static hyst_q31_t sx[2][SNAP_CAP], sy[2][SNAP_CAP], sx_kept[2][SNAP_CAP], sy_kept[2][SNAP_CAP];
+static hyst_q31_t table2[HYST_Q31_INV_TABLE_LEN(INTERVALS)];
+static hyst_curve_t inv2;
+static hyst_t C2, C2_kept;
+static unsigned char snap[HYST_SNAPSHOT_SIZE(SNAP_CAP)], snap_again[HYST_SNAPSHOT_SIZE(SNAP_CAP)];
+static unsigned char damaged[HYST_SNAPSHOT_SIZE(SNAP_CAP)];
+
+static hyst_status_t init_comp2(const hyst_poly_t *f0)
+{
+    return hyst_q31_init_inverse_table(&C2, &inv2, f0, 0u, 4095u, table2, INTERVALS, sx[0],
+                                       sy[0], sx[1], sy[1], SNAP_CAP);
+}
+
+static void assert_c2_untouched(void)
+{
+    TEST_ASSERT_EQUAL_MEMORY(&C2_kept, &C2, sizeof C2);
+    TEST_ASSERT_EQUAL_MEMORY(sx_kept, sx, sizeof sx);
+    TEST_ASSERT_EQUAL_MEMORY(sy_kept, sy, sizeof sy);
+}
+
+static void test_snapshot_round_trips_bit_identically(void)
+{
+    hyst_poly_t other = paper_eq20;
+    size_t len = 0u, len2 = 0u, i;
+    long k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_comp(&paper_eq20, 0u, 4095u, INTERVALS, SNAP_CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_inv_set_deadband(&C, 1 << 10));
+    for (k = 0; k < MAXN && k < 6000L; ++k) { /* shrinking triangles: deep nests, wiped out */
+        const long amp = 60000L - 35L * (k % 1700L);
+        desired[k] = (hyst_q31_t)((k % 2L == 0L ? amp : -amp) * 2048L +
+                                  (hyst_q31_t)rng_below(&rng, 1000u));
+    }
+    for (k = 0; k < 2600; ++k) {
+        (void)hyst_q31_inv_step(&C, desired[k]);
+    }
+    TEST_ASSERT_TRUE((hyst_events(&C) & HYST_EVENT_FULL) != 0u); /* loops were merged */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&C, snap, sizeof snap, &len));
+    TEST_ASSERT_EQUAL_size_t(hyst_snapshot_size(&C), len);
+    other.coeffs[1] = other.coeffs[1] * HYST_REAL_C(1.001);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_comp2(&other));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&C2, snap, len));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_comp2(&paper_eq20));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_inv_set_deadband(&C2, 1 << 10));
+    (void)hyst_q31_inv_step(&C2, 12345);
+    memcpy(&C2_kept, &C2, sizeof C2);
+    memcpy(sx_kept, sx, sizeof sx);
+    memcpy(sy_kept, sy, sizeof sy);
+    for (i = 0u; i < len; ++i) { /* one bit of every octet; every truncation */
+        memcpy(damaged, snap, len);
+        damaged[i] = (unsigned char)(damaged[i] ^ (1u << (i % 8u)));
+        TEST_ASSERT_TRUE(hyst_snapshot_restore(&C2, damaged, len) != HYST_OK);
+        assert_c2_untouched();
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_snapshot_restore(&C2, snap, i));
+        assert_c2_untouched();
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&C2, snap, len));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&C2, snap_again, sizeof snap_again, &len2));
+    TEST_ASSERT_EQUAL_size_t(len, len2);
+    TEST_ASSERT_EQUAL_MEMORY(snap, snap_again, len);
+    for (k = 2600; k < 6000; ++k) {
+        TEST_ASSERT_EQUAL_INT32(hyst_q31_inv_step(&C, desired[k]),
+                                hyst_q31_inv_step(&C2, desired[k]));
+        TEST_ASSERT_EQUAL_INT32(hyst_q31_inv_error_bound(&C), hyst_q31_inv_error_bound(&C2));
+    }
 }
 
 int main(void)
@@ -392,6 +466,7 @@ int main(void)
     RUN_TEST(test_block_equals_step);
     RUN_TEST(test_small_capacity_merges_stay_bounded);
     RUN_TEST(test_table_sizes_and_macros);
+    RUN_TEST(test_snapshot_round_trips_bit_identically);
     RUN_TEST(test_bad_arguments_are_refused);
     return UNITY_END();
 }

@@ -41,8 +41,10 @@
  * the double reference: at most 1.9e-7 of the range (tests/test_q31.c).
  *
  * Bounded memory (merges, deadband) works as in hyst/code.h; the merge
- * error bound saturates at HYST_Q31_BOUND_MAX. Snapshots are not supported
- * yet: hyst_snapshot_*() on a q31 instance return HYST_ERR_ARG.
+ * error bound saturates at HYST_Q31_BOUND_MAX. Snapshots (snapshot.h) work
+ * for the model and the compensator as for the other variants: codes and
+ * q31 numbers travel as 4-octet integers (q31 in two's complement), and a
+ * restored instance continues bit for bit.
  *
  * Compensator (hyst_q31_inv_*: the inverse model, a feedforward for the
  * same f0 and codes, docs/pi_and_inverse.md). Its input is a desired

@@ -13,10 +13,12 @@
  * a snapshot written on a 16-bit-char DSP (TI C28x) reads back on a PC.
  * Multi-octet integers are little-endian; reals are their IEEE-754 bit
  * patterns (binary32 for the f32 and code variants, binary64 for f64),
- * stored as little-endian integers; codes are 4-octet integers. One format
- * and one implementation serve every variant: "R" below is the octets of
- * a real of the instance's variant, "X" the octets of a stored input (R for
- * the real variants, 4 for codes).
+ * stored as little-endian integers; codes are 4-octet integers; the q31
+ * variants' fixed-point numbers (the model's outputs, the compensator's
+ * desired outputs and drives, q31.h) are 4-octet two's complement. One
+ * format and one implementation serve every variant: "R" below is the
+ * octets of an output of the instance's variant, "X" the octets of a
+ * stored input (R for the real variants, 4 for codes and q31).
  *
  * | offset        | octets    | field                                                  |
  * |---------------|-----------|--------------------------------------------------------|
