@@ -348,6 +348,23 @@ static int same_comp(const kinst_t *a, const kinst_t *b)
            hyst_q31_inv_error_bound(&a->S) == hyst_q31_inv_error_bound(&b->S);
 }
 
+/* The clear-events (b bit1) and reset (b bit2) requests of opcode 0xF3 on
+ * the sample-by-sample twin S (model or compensator: the same calls), after
+ * its deadband request; returns the bits it posted (2, 4). */
+static unsigned post_clear_and_reset(hyst_t *S, unsigned b)
+{
+    unsigned posted = 0u;
+    if (b & 2u) {
+        CHECK(hyst_request_clear_events(S) == HYST_OK);
+        posted |= 2u;
+    }
+    if (b & 4u) {
+        CHECK(hyst_request_reset(S) == HYST_OK);
+        posted |= 4u;
+    }
+    return posted;
+}
+
 /* A snapshot of the sample-by-sample twin `from` restored into the block
  * instance `to` (the whole of which, arrays included, is `whole`): first
  * with one octet damaged (the reader's choice): refused, nothing written;
@@ -583,14 +600,7 @@ static void run_model(reader_t *r, unsigned flags, const ctx_t *c, hyst_status_t
                     posted |= 1u;
                 }
             }
-            if (b & 2u) {
-                CHECK(hyst_request_clear_events(&T.S) == HYST_OK);
-                posted |= 2u;
-            }
-            if (b & 4u) {
-                CHECK(hyst_request_reset(&T.S) == HYST_OK);
-                posted |= 4u;
-            }
+            posted |= post_clear_and_reset(&T.S, b);
             CHECK(hyst_request_pending(&T.S) == (posted != 0u));
             if (posted != 0u) ++n_requests;
         }
@@ -886,14 +896,7 @@ static void run_comp(reader_t *r, unsigned flags, const ctx_t *c, hyst_status_t 
                     posted |= 1u;
                 }
             }
-            if (b & 2u) {
-                CHECK(hyst_request_clear_events(&KT.S) == HYST_OK);
-                posted |= 2u;
-            }
-            if (b & 4u) {
-                CHECK(hyst_request_reset(&KT.S) == HYST_OK);
-                posted |= 4u;
-            }
+            posted |= post_clear_and_reset(&KT.S, b);
             CHECK(hyst_request_pending(&KT.S) == (posted != 0u));
             if (posted != 0u) ++n_requests;
         }

@@ -20,6 +20,7 @@
 #define MAGIC1 0x59u /* 'Y' */
 #define MAGIC2 0x53u /* 'S' */
 #define MAGIC3 0x53u /* 'S' */
+#define MAGIC3_CREEP 0x43u /* 'C': a creep term's snapshot */
 #define HEADER_OCTETS 32u
 #define NO_LEVEL 0xFFFFFFFFul /* no live merge */
 #define CRC_OCTETS 4u
@@ -83,6 +84,16 @@ static unsigned get_u16(const unsigned char *p)
 static unsigned long get_u32(const unsigned char *p)
 {
     return (unsigned long)get_u16(p) | ((unsigned long)get_u16(p + 2) << 16);
+}
+
+/* A status as 16-bit two's complement, and back to int without
+ * implementation-defined casts. */
+static void put_status(unsigned char *p, int status) { put_u16(p, (unsigned)status & 0xFFFFu); }
+
+static int get_status(const unsigned char *p)
+{
+    const unsigned v = get_u16(p);
+    return v >= 0x8000u ? -(int)(0xFFFFu - v) - 1 : (int)v;
 }
 
 /* Reals travel as their IEEE-754 bits; the unions read the representation
@@ -379,7 +390,7 @@ static size_t put_body(const hyst_tcm_t *S, const format_t *f, unsigned char *bu
     put_u32(buf + 16, (unsigned long)nl);
     put_u32(buf + 20, (unsigned long)nr);
     put_u32(buf + 24, (unsigned long)S->events);
-    put_u16(buf + 28, (unsigned)S->status & 0xFFFFu); /* two's complement */
+    put_status(buf + 28, S->status);
     put_u16(buf + 30, 0u);
     at = HEADER_OCTETS + f->x + f->r;
     for (i = 0u; i < nl + nr; ++i, at += f->x + f->r) {
@@ -566,7 +577,6 @@ hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf, siz
     hyst_tcm_book_t book;
     format_t f;
     size_t nl, nr, i, at;
-    unsigned status16;
     int status;
     hyst_num_t x, y;
 
@@ -603,9 +613,7 @@ hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf, siz
         return HYST_ERR_CAPACITY;
     }
     events = get_u32(buf + 24);
-    status16 = get_u16(buf + 28);
-    /* 16-bit two's complement back to int without implementation-defined casts */
-    status = status16 >= 0x8000u ? -(int)(0xFFFFu - status16) - 1 : (int)status16;
+    status = get_status(buf + 28);
     if (nl < 1u || (nr != nl && nr + 1u != nl) || (events & ~(unsigned long)EVENTS_KNOWN) != 0u ||
         !status_is_known(status) || get_u16(buf + 30) != 0u ||
         !state_is_valid(S, &f, buf + HEADER_OCTETS, nl, nr)) {
@@ -684,11 +692,14 @@ static unsigned long creep_id(const hyst_creep_t *C, num_type_t t)
     return crc;
 }
 
+/* L of a creep snapshot: n states of r octets. */
+static size_t creep_length(unsigned r, size_t n) { return CREEP_HEADER_OCTETS + r * n + CRC_OCTETS; }
+
 size_t hyst_creep_snapshot_size(const hyst_creep_t *C)
 {
     num_type_t t;
     const unsigned r = C != NULL ? creep_format(C, &t) : 0u;
-    return r != 0u ? CREEP_HEADER_OCTETS + r * C->n + CRC_OCTETS : 0u;
+    return r != 0u ? creep_length(r, C->n) : 0u;
 }
 
 hyst_status_t hyst_creep_snapshot_save(const hyst_creep_t *C, unsigned char *buf, size_t size,
@@ -705,7 +716,7 @@ hyst_status_t hyst_creep_snapshot_save(const hyst_creep_t *C, unsigned char *buf
     if (r == 0u) {
         return HYST_ERR_ARG;
     }
-    need = CREEP_HEADER_OCTETS + r * C->n + CRC_OCTETS; /* n, variant: set by init only */
+    need = creep_length(r, C->n); /* n, variant: set by init only */
     if (size < need) {
         return HYST_ERR_NOSPACE;
     }
@@ -715,7 +726,7 @@ hyst_status_t hyst_creep_snapshot_save(const hyst_creep_t *C, unsigned char *buf
         buf[0] = MAGIC0;
         buf[1] = MAGIC1;
         buf[2] = MAGIC2;
-        buf[3] = 0x43u; /* 'C' */
+        buf[3] = MAGIC3_CREEP;
         put_u16(buf + 4, HYST_CREEP_SNAPSHOT_VERSION);
         buf[6] = (unsigned char)r;
         buf[7] = (unsigned char)C->variant;
@@ -723,7 +734,7 @@ hyst_status_t hyst_creep_snapshot_save(const hyst_creep_t *C, unsigned char *buf
         put_u32(buf + 12, creep_id(C, t));
         put_u32(buf + 16, (unsigned long)C->n);
         put_u32(buf + 20, (unsigned long)C->events);
-        put_u16(buf + 24, (unsigned)C->status & 0xFFFFu); /* two's complement */
+        put_status(buf + 24, C->status);
         put_u16(buf + 26, 0u);
         for (k = 0u; k < C->n; ++k) {
             put_num(buf + CREEP_HEADER_OCTETS + r * k, &C->state[k], t);
@@ -749,7 +760,7 @@ hyst_status_t hyst_creep_snapshot_restore(hyst_creep_t *C, const unsigned char *
     hyst_num_t state[HYST_CREEP_MAX_TERMS];
     num_type_t t;
     unsigned long length, events;
-    unsigned r, status16;
+    unsigned r;
     int status;
     size_t k, n;
     if (C == NULL || buf == NULL) {
@@ -761,7 +772,7 @@ hyst_status_t hyst_creep_snapshot_restore(hyst_creep_t *C, const unsigned char *
     }
     memset(state, 0, sizeof state); /* a float leaves the rest of its union as init does: 0 */
     if (len < CREEP_HEADER_OCTETS + CRC_OCTETS || buf[0] != MAGIC0 || buf[1] != MAGIC1 ||
-        buf[2] != MAGIC2 || buf[3] != 0x43u) {
+        buf[2] != MAGIC2 || buf[3] != MAGIC3_CREEP) {
         return HYST_ERR_FORMAT;
     }
     if (get_u16(buf + 4) != HYST_CREEP_SNAPSHOT_VERSION || buf[6] != r || buf[7] != C->variant) {
@@ -770,7 +781,7 @@ hyst_status_t hyst_creep_snapshot_restore(hyst_creep_t *C, const unsigned char *
     length = get_u32(buf + 8);
     n = (size_t)get_u32(buf + 16);
     if (get_u32(buf + 16) < 1ul || get_u32(buf + 16) > (unsigned long)HYST_CREEP_MAX_TERMS ||
-        length != CREEP_HEADER_OCTETS + r * n + CRC_OCTETS || length > len) {
+        length != creep_length(r, n) || length > len) {
         return HYST_ERR_FORMAT; /* truncated, or length and count disagree */
     }
     if (hyst_crc32(0ul, buf, (size_t)length - CRC_OCTETS) !=
@@ -781,8 +792,7 @@ hyst_status_t hyst_creep_snapshot_restore(hyst_creep_t *C, const unsigned char *
         return HYST_ERR_CURVE;
     }
     events = get_u32(buf + 20);
-    status16 = get_u16(buf + 24);
-    status = status16 >= 0x8000u ? -(int)(0xFFFFu - status16) - 1 : (int)status16;
+    status = get_status(buf + 24);
     if (n != C->n || (events & ~(unsigned long)HYST_EVENT_NONFINITE) != 0u ||
         (status != HYST_OK && status != HYST_ERR_NONFINITE) || get_u16(buf + 26) != 0u) {
         return HYST_ERR_FORMAT;
