@@ -17,6 +17,7 @@
 #   readme_figures.sh <README.md> <source root> <work dir>
 # Exit 77 (skipped) without arm-none-eabi-gcc.
 set -euo pipefail
+shopt -s inherit_errexit # a failed build inside $(image ...) fails the test
 readme=$1 root=$2 work=$3
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 cc=arm-none-eabi-gcc
@@ -41,19 +42,21 @@ for v in want_ram want_flash want_nd want_cc; do
     [ -n "${!v}" ] || { echo "FAIL: README.md states no ${v#want_} figure next to the example"; exit 1; }
 done
 
-image() { # <name> [defines...]: the library, the example and the two images; prints the flash
-    local name=$1; shift
+image() { # <name> <sources file> [defines...]: the library, the example and the two images; prints the flash
+    local name=$1 sources=$2; shift 2
     local dir="$work/$name"
+    rm -rf "$dir/lib"
     mkdir -p "$dir/lib"
-    ls "$root"/src/*.c | xargs -P 2 -I{} sh -c \
+    xargs -P 2 -I{} sh -c \
         'f={}; exec "$0" "$@" -I"'"$root"'/src" -c "$f" -o "'"$dir"'/lib/$(basename "$f" .c).o"' \
-        "$cc" "${F[@]}" "$@"
+        "$cc" "${F[@]}" "$@" <"$sources"
     rm -f "$dir/libhyst.a"
     arm-none-eabi-ar rcs "$dir/libhyst.a" "$dir"/lib/*.o
     "$cc" "${F[@]}" "$@" -include "$here/board.h" -c "$work/example.c" -o "$dir/example.o"
     "$cc" "${F[@]}" "$@" -c "$here/board_m4.c" -o "$dir/board.o"
     "$cc" "${F[@]}" "$@" -DREADME_EMPTY_EXAMPLE -c "$here/board_m4.c" -o "$dir/board_empty.o"
-    "$cc" "${F[@]}" "$dir/example.o" "$dir/board.o" "$dir/libhyst.a" "${L[@]}" -lm -o "$dir/example.elf"
+    "$cc" "${F[@]}" "$dir/example.o" "$dir/board.o" "$dir/libhyst.a" "${L[@]}" -Wl,-Map="$dir/example.map" \
+        -lm -o "$dir/example.elf"
     "$cc" "${F[@]}" "$dir/board_empty.o" "${L[@]}" -lm -o "$dir/empty.elf"
     local with without
     with=$(arm-none-eabi-size "$dir/example.elf" | awk 'NR == 2 { print $1 + $2 }')
@@ -61,8 +64,12 @@ image() { # <name> [defines...]: the library, the example and the two images; pr
     echo $((with - without))
 }
 
-flash=$(image default)
-flash_nd=$(image no_double -DHYST_NO_DOUBLE)
+ls "$root"/src/*.c >"$work/all_sources"
+flash=$(image default "$work/all_sources")
+# The HYST_NO_DOUBLE image links the same members: compile only those (a missing one fails the link).
+sed -n 's/.*libhyst\.a(\([a-z0-9_]*\)\.o).*/\1/p' "$work/default/example.map" | sort -u |
+    sed "s|.*|$root/src/&.c|" >"$work/linked_sources"
+flash_nd=$(image no_double "$work/linked_sources" -DHYST_NO_DOUBLE)
 # RAM: the example's own objects (data and bss, any binding), as laid out for the M4F.
 ram=$(arm-none-eabi-nm -S --radix=d "$work/default/example.o" |
       awk 'NF == 4 && $3 ~ /^[bBdD]$/ { s += $2 } END { print s + 0 }')
