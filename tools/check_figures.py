@@ -3,6 +3,7 @@
 """Checks that every measured figure the docs quote equals docs/results.md; Python 3, no dependencies.
 
     tools/check_figures.py [--list] [FILE.md ...]
+    tools/check_figures.py --self-test
 
 docs/results.md, written by ./tools/demo, is the one place a measured figure
 is written. Its keys are the `key` | value rows of its tables and the
@@ -20,7 +21,10 @@ or a target ("budget", "target", "holds", "<="): those are the tests' limits,
 not measurements.
 
 Prints one line per problem (file:line: what) and exits 1 if there is any;
---list prints the keys of results.md and the quotes found.
+--list prints the keys of results.md and the quotes found; --self-test checks
+the checker on made-up lines against the real results.md (a right quote
+passes; a wrong value, an unknown key, a split quote and a bare instruction
+count fail; a budget line passes).
 """
 import os
 import re
@@ -115,7 +119,37 @@ def check(rel, keys, errors, quotes):
                               f"(quote it as `key = value` from {RESULTS})")
 
 
+def self_test():
+    """The checker on made-up files: each case's count of problems."""
+    import tempfile
+    keys = results_keys([])
+    key = "tcm_typical_insns"
+    value = keys[key][0]
+    wrong = str(int(float(value)) + 1)
+    cases = [("right quote", f"costs `{key} = {value}` instructions", 0),
+             ("wrong value", f"costs `{key} = {wrong}` instructions", 1),
+             ("unknown key", "costs `no_such_key_insns = 3` instructions", 1),
+             ("split quote", f"costs `{key} =\n{value}` instructions", 1),
+             ("bare count", "a sample costs 38 instructions", 1),
+             ("budget line", "a ctest holds it to 40 instructions (budget)", 0),
+             ("code, not a quote", "the paper's `index = right`", 0)]
+    failed = 0
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, text, want in cases:
+            path = os.path.join(tmp, "case.md")
+            with open(path, "w", encoding="utf-8") as fh:
+                fh.write(text + "\n")
+            errors = []
+            check(os.path.relpath(path, ROOT), keys, errors, [])
+            ok = len(errors) == want
+            failed += not ok
+            print(f"self-test {name}: {len(errors)} problem(s), want {want}: {'ok' if ok else 'FAIL'}")
+    return 1 if failed else 0
+
+
 def main(argv):
+    if argv == ["--self-test"]:
+        return self_test()
     listing = "--list" in argv
     files = [a for a in argv if a != "--list"] or docs()
     errors, quotes = [], []
