@@ -11,6 +11,8 @@ function f = hyst_fit(x, y, varargin)
 %     used, rising, falling  samples used, by branch
 %     increasing  true if f0 increases on [lo, hi] (else turn: where not)
 %     degree, method
+%     delay       the 'delay' it was fitted at (samples), which
+%                 HYST_MODEL_SAVE writes to the model file
 %
 %   F = HYST_FIT(X, Y, 'kind', 'everett') fits the asymmetric kind's branch
 %   function E of total degree 'degree' (1..4) by hyst_everett_fit_*: the
@@ -85,6 +87,9 @@ function f = hyst_fit(x, y, varargin)
   x = double(x(:));
   y = double(y(:));
   f = fit_part(opts, method, domain, tdegree, x, y);
+  % the delay the model was fitted at: HYST_MODEL_SAVE writes it,
+  % HYST_HEADER states it
+  f.delay = double(opts.delay);
   if strcmp(opts.kind, 'poly') && ~f.increasing
     warning('hyst:not_increasing', ...
             'hyst_fit: the fitted f0 is not increasing on [%g, %g] (slope negative at %g): try another degree', ...

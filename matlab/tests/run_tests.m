@@ -18,7 +18,8 @@ function failed = run_tests(root, ref, cli)
            @t_everett_inv_table_monotone, @t_everett_inv_table_arguments, ...
            @t_header_equals_cli, @t_header_tables, @t_header_file, @t_header_arguments, ...
            @t_creep_sim_inv_equal_cli, @t_creep_sum_of_lags, @t_creep_save_load, ...
-           @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors};
+           @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors, ...
+           @t_readers_agree, @t_fit_delay_saved};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -1299,4 +1300,53 @@ function t_creep_errors(ctx)
   end
   expect_error('hyst:usage', @() hyst_mex('creep', [1 2], 1, 0, x));
   expect_error('hyst:ERR_ARG', @() hyst_mex('creep', 0.5, 1, 0, x));
+end
+
+function t_readers_agree(ctx)
+  % every crafted file of tests/model_files (line ends, blanks, hexadecimal
+  % and decimal-comma numbers, long lines, counts, limits, an empty domain):
+  % hyst_model_load reads the values 'hyst header --model' reads (its
+  % header, from the guard on, and the delay it states), or refuses the
+  % file in the tool's words (python/tests/test_model_readers.py: the
+  % Python package likewise)
+  folder = fullfile(ctx.root, 'tests', 'model_files');
+  files = dir(fullfile(folder, '*.hyst'));
+  check(numel(files) >= 45, 'only %d crafted files', numel(files));
+  out = fullfile(ctx.tmp, 'agree');
+  mkdir(out);
+  for k = 1:numel(files)
+    name = files(k).name;
+    file = fullfile(folder, name);
+    [rc, said] = system(sprintf('"%s" header --model "%s" --dir "%s" m 2>&1', ctx.cli, file, out));
+    said = strtrim(said);
+    ok = strncmp(name, 'ok_', 3);
+    check((rc == 0) == ok, '%s: hyst header says "%s"', name, said);
+    if ~ok
+      msg = error_message(@() hyst_model_load(file));
+      mine = ['hyst header: ' msg(numel('hyst_model_load: ') + 1:end)];
+      check(strcmp(mine, said), '%s: "%s" where hyst header says "%s"', name, msg, said);
+      continue;
+    end
+    m = hyst_model_load(file);
+    cli = fileread(fullfile(out, 'm.h'));
+    delay = str2double(regexp(cli, 'follows its input\s+\*?\s*(\d+) samples later', 'tokens', 'once'));
+    check(m.delay == delay, '%s: delay %g, hyst header %g', name, m.delay, delay);
+    mine = hyst_header(m, 'm');
+    check(strcmp(mine(strfind(mine, '#ifndef'):end), cli(strfind(cli, '#ifndef'):end)), ...
+          '%s: the header differs from that of hyst header', name);
+  end
+end
+
+function t_fit_delay_saved(ctx)
+  % hyst_fit's 'delay' is the model's: in its result, in the model file
+  % hyst_model_save writes, read back by hyst_model_load and by hyst sim
+  d = load(fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat'));
+  f = hyst_fit(d(:, 1), d(:, 5), 'degree', 3, 'skip', 350, 'delay', 3, 'creep', 'none');
+  check(isfield(f, 'delay') && f.delay == 3, 'hyst_fit returned no delay 3');
+  file = fullfile(ctx.tmp, 'delayed.hyst');
+  hyst_model_save(file, f);
+  check(hyst_model_load(file).delay == 3, 'the saved model reads back another delay');
+  [rc, out] = system(sprintf('printf "3\\n3\\n3\\n3\\n3\\n" | "%s" sim --model "%s"', ctx.cli, file));
+  y = str2double(strsplit(strtrim(out)));
+  check(rc == 0 && all(y(1:3) == y(1)) && y(4) ~= y(1), 'hyst sim does not delay by 3: %s', out);
 end

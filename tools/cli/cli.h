@@ -120,6 +120,11 @@ int cli_header_path(const char *cmd, const char *option, const char *dir, const 
 /* Before anything is computed or printed: a target that cannot be replaced
  * (too long a path, a directory). 0, or 1 after a message. */
 int cli_replace_check(cli_replace_t *r, const char *cmd, const char *what, const char *path);
+/* Before anything is read: the files a command writes (header, save: NULL
+ * when not written) are neither its input (NULL or "-": standard input)
+ * nor each other (checked by inode where they exist, else by directory and
+ * name). 0, or 1 after a message naming the options. */
+int cli_outputs_distinct(const char *cmd, const char *input, const char *header, const char *save);
 /* The text into the temporary file, synced and closed: 0, or 1 after a
  * message (and no temporary file left). */
 int cli_replace_write(cli_replace_t *r, const char *text, size_t len);

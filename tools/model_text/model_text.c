@@ -18,7 +18,8 @@
 #define MAX_FIELDS \
     (HYST_MAX_DEGREE + 2 > HYST_EVERETT_TERMS + 1 ? HYST_MAX_DEGREE + 2 : HYST_EVERETT_TERMS + 1)
 
-/* The longest number read (a 17-digit number needs 24 characters). */
+/* The longest number read without an allocation (a 17-digit number needs
+ * 24 characters). */
 #define MAX_NUMBER 1023u
 
 enum {
@@ -134,14 +135,15 @@ static size_t digits(const char *s, size_t n, size_t i)
  * the decimal mark whatever the locale. 1 on success. */
 static int parse_number(const char *s, size_t n, double *out)
 {
-    char buf[MAX_NUMBER + 1u], *end;
+    char small[MAX_NUMBER + 1u], *buf = small, *end;
     const struct lconv *lc = localeconv();
     const char point = lc != NULL && lc->decimal_point != NULL && lc->decimal_point[0] != '\0'
                            ? lc->decimal_point[0]
                            : '.';
     size_t i = 0u, mantissa, k;
     double v;
-    if (n == 0u || n > MAX_NUMBER) {
+    int ok;
+    if (n == 0u) {
         return 0;
     }
     i += s[i] == '+' || s[i] == '-' ? 1u : 0u;
@@ -168,16 +170,22 @@ static int parse_number(const char *s, size_t n, double *out)
     if (i != n) {
         return 0;
     }
+    if (n > MAX_NUMBER && (buf = (char *)malloc(n + 1u)) == NULL) {
+        return 0;
+    }
     for (k = 0u; k < n; ++k) {
         buf[k] = s[k] == '.' ? point : s[k];
     }
     buf[n] = '\0';
     v = strtod(buf, &end);
-    if (end != buf + n || !isfinite(v)) {
-        return 0;
+    ok = end == buf + n && isfinite(v);
+    if (buf != small) {
+        free(buf);
     }
-    *out = v;
-    return 1;
+    if (ok) {
+        *out = v;
+    }
+    return ok;
 }
 
 /* What key k's line needs: 0 if its n fields (the key's included) are
@@ -231,7 +239,7 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
     int ok = parse_number(f->s, f->n, &v);
     if (ok && k == K_DELAY) {
         ok = whole(v, 0.0, (double)MODEL_TEXT_MAX_DELAY);
-        what = "a whole number of samples in 0.." STR(MODEL_TEXT_MAX_DELAY);
+        what = "a whole number of samples in 0..1000000000";
     } else if (ok && k == K_DEGREE) {
         ok = whole(v, 1.0, (double)HYST_EVERETT_MAX_DEGREE);
         what = "a degree in 1.." STR(HYST_EVERETT_MAX_DEGREE);
@@ -240,8 +248,9 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
         what = "a time constant of at least 1 sample";
     }
     if (!ok) {
-        return fail(r, "%s:%lu: field %lu: %s is not %s", r->path, no, (unsigned long)(i + 1u),
-                    model_text_quote(q, f->s, f->n), what);
+        return fail(r, "%s:%lu: field %lu: %s is not %s%s", r->path, no, (unsigned long)(i + 1u),
+                    model_text_quote(q, f->s, f->n), what,
+                    memchr(f->s, ',', f->n) != NULL ? " (the decimal mark is '.')" : "");
     }
     switch (k) {
     case K_LO:
@@ -493,7 +502,7 @@ int model_text_check(const model_text_t *m, char *msg, size_t msg_size)
     } else if (!(m->lo < m->hi)) {
         why = "the domain is empty: hi is not above lo";
     } else if (m->delay > MODEL_TEXT_MAX_DELAY) {
-        why = "delay is not a whole number of samples in 0.." STR(MODEL_TEXT_MAX_DELAY);
+        why = "delay is not a whole number of samples in 0..1000000000";
     } else if (m->ncreep > MODEL_TEXT_CREEP_MAX_TERMS || m->ncreep != m->ncreep_weights) {
         why = "creep_tau and creep_weight need as many numbers, 1 to " STR(
             MODEL_TEXT_CREEP_MAX_TERMS) " (one per creep term)";

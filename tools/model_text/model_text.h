@@ -18,7 +18,7 @@
 /* Creep terms a model file may hold (HYST_CREEP_MAX_TERMS). */
 #define MODEL_TEXT_CREEP_MAX_TERMS 4
 
-/* The longest delay a file may give (samples). */
+/* The longest delay a file may give (samples; its messages spell it out). */
 #define MODEL_TEXT_MAX_DELAY 1000000000ul
 
 /* A file larger than this is refused before it is parsed (a model file is
