@@ -962,7 +962,7 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     mxFree(text);
     mxFree(path);
     if (rc != 0) {
-        mexErrMsgIdAndTxt("hyst:model_file", "hyst_model_load: %s", msg);
+        mexErrMsgIdAndTxt("hyst:model_file", "%s", msg);
     }
     if (m.kind == MODEL_TEXT_EVERETT) {
         s = mxCreateStructMatrix(1, 1, 7, everett);

@@ -32,5 +32,10 @@ function model = hyst_model_load(file)
   fclose(fid);
   % the format's one reader (tools/model_text), the one 'hyst sim --model'
   % and the Python package call: hyst:model_file with its words
-  model = hyst_mex('model_parse', bytes, file);
+  try
+    model = hyst_mex('model_parse', bytes, file);
+  catch err
+    % Octave puts the MEX file's name before its message, MATLAB does not
+    error(err.identifier, 'hyst_model_load: %s', regexprep(err.message, '^hyst_mex: ', ''));
+  end
 end

@@ -264,11 +264,29 @@ class Fit:
         # only called for names not found on the Fit itself
         return getattr(self.__dict__["model"], name)
 
+    def make_model(self, *, dtype=None, capacity=None):
+        """A new model, at rest, of everything the fit chose: its kind's
+        curve and its creep term (``dtype`` and ``capacity`` the Fit's
+        unless given). ``hyst.Model(f.coeffs, f.lo, f.hi)`` would drop the
+        creep term and the asymmetric kind. The delay is the measurement's,
+        not the model's: the model's output k goes with the measured output
+        k + ``delay``."""
+        return model_from(self.description(),
+                          dtype=self.model.dtype if dtype is None else dtype,
+                          capacity=self.model.capacity if capacity is None else capacity)
+
+    def make_compensator(self, *, dtype=None, capacity=None, intervals=0, rows=None):
+        """The compensator of :meth:`make_model`'s model (creep term
+        included): desired output in, drive out (:func:`compensator_from`;
+        ``intervals=N`` the tabulated one firmware runs)."""
+        return compensator_from(self.description(),
+                                dtype=self.model.dtype if dtype is None else dtype,
+                                capacity=self.model.capacity if capacity is None else capacity,
+                                intervals=intervals, rows=rows)
+
     def predict(self, x):
         """Outputs of a fresh model (at A0) for the inputs x; ``model`` is untouched."""
-        m = model_from(self.description(), dtype=self.model.dtype,
-                       capacity=self.model.capacity)
-        return m.process(np.ascontiguousarray(x, dtype=self.model.dtype))
+        return self.make_model().process(np.ascontiguousarray(x, dtype=self.model.dtype))
 
     def __repr__(self):
         creep = (f", creep_tau={self.creep_tau[0]:.6g}, creep_weight={self.creep_weight[0]:.9g}"

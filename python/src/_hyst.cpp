@@ -18,7 +18,10 @@
 #include <nanobind/stl/vector.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <limits>
+#include <string>
 #include <memory>
 #include <optional>
 #include <type_traits>
@@ -196,6 +199,17 @@ template <class X, class Y, class Fn> nb::object block(const In<X> &x, nb::handl
         }
         if (o.shape(0) != n) {
             throw nb::value_error("out must have as many entries as the input");
+        }
+        /* y may be x itself (the library reads each sample before it writes
+         * its output), never another view into it: a sample would be
+         * computed from an output already written over it */
+        const char *xb = reinterpret_cast<const char *>(x.data());
+        const char *ob = reinterpret_cast<const char *>(o.data());
+        if (n > 0u && ob < xb + n * sizeof(X) && xb < ob + n * sizeof(Y) &&
+            !(ob == xb && sizeof(X) == sizeof(Y))) {
+            throw nb::value_error("out overlaps the input without being the input itself: its "
+                                  "outputs would overwrite inputs not yet read (pass out=x, or "
+                                  "an array of its own)");
         }
         fn(x.data(), o.data(), n);
         return nb::borrow(out);
@@ -981,8 +995,35 @@ template <class X, class C, class Cls> void def_process(Cls &cls)
             const char *dtype = std::is_floating_point_v<X>
                                     ? (sizeof(X) == 4u ? "float32" : "float64")
                                     : (sizeof(X) == 2u ? "uint16" : "uint32");
-            nb::object a = nb::module_::import_("numpy").attr("ascontiguousarray")(
-                x, "dtype"_a = dtype);
+            nb::module_ np = nb::module_::import_("numpy");
+            nb::object a = np.attr("asarray")(x);
+            const int ndim = nb::cast<int>(a.attr("ndim"));
+            if (ndim != 1) {
+                throw nb::value_error(("process takes a 1-d array of samples, not a " +
+                                       std::to_string(ndim) + "-d one")
+                                          .c_str());
+            }
+            if constexpr (!std::is_floating_point_v<X>) {
+                /* codes: whole numbers the code type holds, as step() takes
+                 * them; numpy's cast would wrap -1 to full scale and NaN to 0 */
+                nb::object f = np.attr("asarray")(a, "dtype"_a = "float64");
+                nb::object ok = np.attr("isfinite")(f) & (f.attr("__eq__")(np.attr("floor")(f))) &
+                                (f.attr("__ge__")(0)) &
+                                (f.attr("__le__")(static_cast<double>(std::numeric_limits<X>::max())));
+                /* numpy's scalars to Python's: bool, int */
+                if (!nb::cast<bool>(np.attr("all")(ok).attr("__bool__")())) {
+                    const size_t i = nb::cast<size_t>(np.attr("argmin")(ok).attr("__index__")());
+                    const double v =
+                        nb::cast<double>(f.attr("__getitem__")(i).attr("__float__")());
+                    char msg[128];
+                    (void)std::snprintf(msg, sizeof msg,
+                                        "code %.17g at index %zu is not a whole number in 0..%lu",
+                                        v, i,
+                                        static_cast<unsigned long>(std::numeric_limits<X>::max()));
+                    throw nb::value_error(msg);
+                }
+            }
+            a = np.attr("ascontiguousarray")(a, "dtype"_a = dtype);
             return self.process(nb::cast<In<X>>(a), out);
         },
         "x"_a, "out"_a = nb::none());
