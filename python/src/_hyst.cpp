@@ -671,9 +671,9 @@ template <class T> struct Pi {
     std::vector<double> weights() const { return std::vector<double>(w.begin(), w.begin() + static_cast<long>(P.n)); }
 };
 
-/* Identification of f0 from recorded arrays (hyst_ident_fit()). */
-nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int method, double lo,
-             double hi, size_t skip, size_t delay)
+/* A fit's configuration (ident.h) from fit()'s and select()'s arguments. */
+hyst_ident_config_t ident_config(const In<double> &x, const In<double> &y, unsigned degree,
+                                 int method, double lo, double hi, size_t skip, size_t delay)
 {
     if (x.shape(0) != y.shape(0)) {
         raise_status(HYST_ERR_ARG, "x and y differ in length");
@@ -685,6 +685,14 @@ nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int meth
     cfg.hi = hi;
     cfg.skip = skip;
     cfg.delay = delay;
+    return cfg;
+}
+
+/* Identification of f0 from recorded arrays (hyst_ident_fit()). */
+nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int method, double lo,
+             double hi, size_t skip, size_t delay)
+{
+    const hyst_ident_config_t cfg = ident_config(x, y, degree, method, lo, hi, skip, delay);
     hyst_ident_t work;
     hyst_ident_result_t res;
     check(hyst_ident_fit(&cfg, x.data(), y.data(), x.shape(0), &work, &res), "fit");
@@ -911,18 +919,10 @@ nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds,
                  double creep_tau)
 {
     const size_t n = x.shape(0);
-    if (y.shape(0) != n) {
-        raise_status(HYST_ERR_ARG, "x and y differ in length");
-    }
+    const hyst_ident_config_t base = ident_config(x, y, 0u, method, lo, hi, skip, delay_first);
     if (max_delay < delay_first || max_delay > FIT_MAX_DELAY + 1000u) {
         raise_status(HYST_ERR_ARG, "delays out of range");
     }
-    hyst_ident_config_t base{};
-    base.method = method;
-    base.lo = lo;
-    base.hi = hi;
-    base.skip = skip;
-    base.delay = delay_first;
     std::vector<fit_candidate_t> cand((HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES) *
                                       (max_delay - delay_first + 1u));
     size_t best = 0u;
