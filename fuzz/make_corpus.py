@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """Writes the seed corpora (small, committed): fuzz/corpus/ for fuzz_hyst.c,
 fuzz/corpus_models/ for fuzz_models.c, fuzz/corpus_code/ for fuzz_code.c, fuzz/corpus_q31/ for fuzz_q31.c
-(layouts in their header comments) and fuzz/corpus_model_file/ for fuzz_model_file.c (model files: tests/cli/models/*.hyst, a valid one
+(layouts in their header comments) and fuzz/corpus_model_file/ for fuzz_model_file.c (model files: tests/cli/models/*.hyst, tests/model_files/*.hyst, a valid one
 in several spellings, and malformed variants of it).
 regress_* files are fuzzer finds, kept by hand, never written here."""
 import os, struct, math

@@ -24,6 +24,8 @@
  *   c = hyst_mex('config')                       the compensators' default table sizes
  *   f = hyst_mex('fit', x, y, degree, method, lo, hi, skip, delay)
  *   f = hyst_mex('fit_everett', x, y, degree, lo, hi, skip, delay)
+ *   [cands, best, with_creep] = hyst_mex('select', x, y, kinds, method, lo, hi, skip,
+ *                                        delay_first, max_delay, t_degree, creep_tau)
  *   m = hyst_mex('model_parse', bytes, file)    the reader of tools/model_text
  *   t = hyst_mex('model_write', kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau, cweight)
  *   t = hyst_mex('header_open', name, kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau,
@@ -876,6 +878,82 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     }
 }
 
+/* select: prhs = x, y, kinds (1 poly, 2 everett, 3 both), method, lo, hi,
+ * skip, delay_first, max_delay, t_degree (-1: any), creep_tau; fit's
+ * hold-out choice by the `hyst` tool's own code (fit_select(),
+ * tools/cli/fit_select.c). plhs = the candidates (a struct array: kind,
+ * degree, t_degree, delay, params, holdout_rms, fit_rms, status, creep_tau,
+ * creep_weight, creep_holdout_rms), the index chosen (1-based; 0: none)
+ * and whether with its creep term. */
+static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *fields[] = {"kind",        "degree",  "t_degree", "delay",
+                                   "params",      "holdout_rms", "fit_rms", "status",
+                                   "creep_tau",   "creep_weight", "creep_holdout_rms"};
+    hyst_ident_config_t base;
+    fit_candidate_t *cand;
+    size_t n, scored, best = 0u, i, max_delay, most;
+    long t_degree;
+    int kinds, with_creep = 0;
+    mxArray *s;
+    if (nrhs != 11 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+        mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
+        usage("select takes x, y (real double vectors of one length), kinds, method, lo, hi, "
+              "skip, delay_first, max_delay, t_degree, creep_tau");
+    }
+    n = mxGetNumberOfElements(prhs[0]);
+    memset(&base, 0, sizeof base);
+    kinds = (int)count(prhs[2], "kinds", 1.0, 3.0);
+    base.method = (int)count(prhs[3], "method", 1.0, 2.0);
+    base.lo = scalar(prhs[4], "lo");
+    base.hi = scalar(prhs[5], "hi");
+    base.skip = count(prhs[6], "skip", 0.0, 1e15);
+    base.delay = count(prhs[7], "delay_first", 0.0, (double)FIT_MAX_DELAY);
+    max_delay = count(prhs[8], "max_delay", (double)base.delay, (double)FIT_MAX_DELAY);
+    t_degree = (long)scalar(prhs[9], "t_degree");
+    most = (HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES) * (max_delay - base.delay + 1u);
+    cand = (fit_candidate_t *)mxCalloc(most, sizeof *cand);
+    scored = fit_select(&base, kinds, 0u,
+                       t_degree < 0 || t_degree >= HYST_EVERETT_MAX_DEGREE ? FIT_ANY_T_DEGREE
+                                                                           : (unsigned)t_degree,
+                       scalar(prhs[10], "creep_tau"), (const double *)mxGetData(prhs[0]),
+                       (const double *)mxGetData(prhs[1]), n, max_delay, cand, most, &best,
+                       &with_creep);
+    s = mxCreateStructMatrix(1, (mwSize)scored, (int)(sizeof fields / sizeof fields[0]), fields);
+    for (i = 0u; i < scored; ++i) {
+        const fit_candidate_t *c = &cand[i];
+        const int everett = c->kind == FIT_EVERETT;
+        const char *status = c->status == HYST_ERR_NOT_MONOTONE ? "E not monotone"
+                             : c->status != HYST_OK             ? status_name(c->status)
+                             : !everett && !c->fit.increasing   ? "f0 not increasing"
+                                                                : "OK";
+        mxSetField(s, (mwIndex)i, "kind", mxCreateString(everett ? "everett" : "poly"));
+        mxSetField(s, (mwIndex)i, "degree", mxCreateDoubleScalar((double)c->degree));
+        mxSetField(s, (mwIndex)i, "t_degree",
+                   everett ? mxCreateDoubleScalar((double)c->t_degree)
+                           : mxCreateDoubleMatrix(0, 0, mxREAL));
+        mxSetField(s, (mwIndex)i, "delay", mxCreateDoubleScalar((double)c->delay));
+        mxSetField(s, (mwIndex)i, "params",
+                   mxCreateDoubleScalar((double)fit_parameters(c->kind, c->degree, c->t_degree)));
+        mxSetField(s, (mwIndex)i, "holdout_rms", mxCreateDoubleScalar(c->holdout_rms));
+        mxSetField(s, (mwIndex)i, "fit_rms", mxCreateDoubleScalar(c->fit_rms));
+        mxSetField(s, (mwIndex)i, "status", mxCreateString(status));
+        mxSetField(s, (mwIndex)i, "creep_tau", mxCreateDoubleScalar(c->creep.tau));
+        mxSetField(s, (mwIndex)i, "creep_weight",
+                   mxCreateDoubleScalar(c->creep.tau > 0 ? c->creep.weight : NAN));
+        mxSetField(s, (mwIndex)i, "creep_holdout_rms",
+                   mxCreateDoubleScalar(c->creep.tau > 0 ? c->creep.holdout_rms : NAN));
+    }
+    mxFree(cand);
+    plhs[0] = s;
+    if (nlhs > 1) {
+        plhs[1] = mxCreateDoubleScalar(best == (size_t)-1 ? 0.0 : (double)best + 1.0);
+    }
+    if (nlhs > 2) {
+        plhs[2] = mxCreateDoubleScalar(with_creep ? 1.0 : 0.0);
+    }
+}
+
 /* ---- the model file format, its one implementation (tools/model_text) ---- */
 
 /* A real double vector argument into a[0..cap), its length into *n (the
@@ -1060,6 +1138,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_creep(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "holdout") == 0 || strcmp(cmd, "holdout_everett") == 0) {
         run_holdout(cmd[7] == '_', nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "select") == 0) {
+        run_select(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "model_parse") == 0) {
         run_model_parse(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "model_write") == 0 || strcmp(cmd, "header_open") == 0 ||

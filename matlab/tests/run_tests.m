@@ -19,7 +19,7 @@ function failed = run_tests(root, ref, cli)
            @t_header_equals_cli, @t_header_tables, @t_header_file, @t_header_arguments, ...
            @t_creep_sim_inv_equal_cli, @t_creep_sum_of_lags, @t_creep_save_load, ...
            @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors, ...
-           @t_readers_agree, @t_fit_delay_saved};
+           @t_readers_agree, @t_fit_delay_saved, @t_fit_chooses_as_cli};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -1352,4 +1352,33 @@ function t_fit_delay_saved(ctx)
   [rc, out] = system(sprintf('printf "3\\n3\\n3\\n3\\n3\\n" | "%s" sim --model "%s"', ctx.cli, file));
   y = str2double(strsplit(strtrim(out)));
   check(rc == 0 && all(y(1:3) == y(1)) && y(4) ~= y(1), 'hyst sim does not delay by 3: %s', out);
+end
+
+function t_fit_chooses_as_cli(ctx)
+  % 'degree', [] chooses with the hyst tool's own code (fit_select()): the
+  % choice, the coefficients and the creep term 'hyst fit --kind tcm' prints
+  data = fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat');
+  d = load(data);
+  f = hyst_fit(d(:, 1), d(:, 5), 'kind', 'poly', 'degree', [], 'delay', [], 'skip', 350);
+  out = run_cli(ctx, ['fit --kind tcm --skip 350 --xcol 1 --ycol 5 "' data '"']);
+  lines = strsplit(out, "\n");
+  c = str2double(strsplit(lines{1}, ','));
+  check(numel(c) == numel(f.coeffs) && all(abs(c - f.coeffs) <= 1e-14 * abs(f.coeffs) + 1e-300), ...
+        'coefficients %s vs %s', lines{1}, mat2str(f.coeffs, 15));
+  delay = str2double(regexp(out, '# delay (\d+) samples', 'tokens', 'once'));
+  check(f.delay == delay, 'delay %g, hyst fit %g', f.delay, delay);
+  tau = str2double(regexp(out, '# creep: tau (\d+) samples', 'tokens', 'once'));
+  check(isfield(f, 'creep_tau') && f.creep_tau == tau, 'creep term, hyst fit: tau %g', tau);
+  check(numel(f.candidates) == 81 && sum([f.candidates.chosen]) == 1, '%d candidates', ...
+        numel(f.candidates));
+  % both kinds compared when 'kind' is not given: hyst fit's 171 candidates
+  g = hyst_fit(d(:, 1), d(:, 5), 'degree', [], 'delay', [], 'skip', 350, 'creep', 'none');
+  out = run_cli(ctx, ['fit --skip 350 --creep none --xcol 1 --ycol 5 "' data '"']);
+  t = regexp(out, 'chosen by hold-out: degree (\d+), delay (\d+) \(kind (\w+)', 'tokens', 'once');
+  kind = 'poly';
+  if isfield(g, 'kind')
+    kind = g.kind;
+  end
+  check(numel(g.candidates) == 171 && strcmp(kind, t{3}) && g.degree == str2double(t{1}) && ...
+        g.delay == str2double(t{2}), 'the choice differs from hyst fit''s: %s', strjoin(t, ' '));
 end
