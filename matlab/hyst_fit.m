@@ -11,6 +11,8 @@ function f = hyst_fit(x, y, varargin)
 %     used, rising, falling  samples used, by branch
 %     increasing  true if f0 increases on [lo, hi] (else turn: where not)
 %     degree, method
+%     delay       the 'delay' it was fitted at (samples), which
+%                 HYST_MODEL_SAVE writes to the model file
 %
 %   F = HYST_FIT(X, Y, 'kind', 'everett') fits the asymmetric kind's branch
 %   function E of total degree 'degree' (1..4) by hyst_everett_fit_*: the
@@ -29,10 +31,20 @@ function f = hyst_fit(x, y, varargin)
 %                 hyst:ERR_NOT_MONOTONE)
 %
 %   Options (name/value): 'kind' 'poly' (default) or 'everett', 'degree'
-%   (default 3), 'skip' samples dropped at the start (default 0), 'delay'
-%   samples the output lags the input (default 0), 'method' 'joint'
+%   (default 3; [] chooses it), 'skip' samples dropped at the start
+%   (default 0), 'delay' samples the output lags the input (default 0; []
+%   chooses it among 0..8, with 'degree' []), 'method' 'joint'
 %   (default) or 'reflect' (kind poly), 'domain' [LO HI] (default: the
 %   range of the inputs), 'creep' (below).
+%
+%   'degree', [] chooses the kind (both compared unless 'kind' is given),
+%   the degree, the t-degree and, with 'delay', [], the delay by hold-out
+%   with the hyst tool's own code ('hyst fit' without --degree; the Python
+%   package's fit(degree=None) alike): F also has the field candidates, a
+%   struct array of every candidate (kind, degree, t_degree, delay, params,
+%   holdout_rms, fit_rms, status, creep_tau, creep_weight,
+%   creep_holdout_rms, chosen, with_creep). The creep term is then the one
+%   chosen with the model.
 %
 %   'creep' chooses a creep term as 'hyst fit --degree D --creep C' does
 %   (docs/matlab.md, "Creep"): 'auto' (the default) fits the model on the
@@ -52,10 +64,16 @@ function f = hyst_fit(x, y, varargin)
 %   (none of them without a creep term). rms and max_abs stay the
 %   hysteresis fit's own.
 %   A library error raises hyst:<status name>, e.g. hyst:ERR_SINGULAR.
-  opts = hyst_options(varargin, struct('kind', 'poly', 'degree', 3, 'skip', 0, 'delay', 0, ...
+  opts = hyst_options(varargin, struct('kind', '', 'degree', 3, 'skip', 0, 'delay', 0, ...
                                        'method', 'joint', 'domain', [], 'tdegree', [], ...
                                        'creep', 'auto'), ...
                       'hyst_fit');
+  kinds = 3;  % the choice compares both kinds unless 'kind' names one
+  if isempty(opts.kind)
+    opts.kind = 'poly';
+  elseif ischar(opts.kind)
+    kinds = 1 + strcmp(opts.kind, 'everett');
+  end
   if ~isempty(opts.tdegree) && ~strcmp(opts.kind, 'everett')
     error('hyst:usage', 'hyst_fit: tdegree needs kind ''everett''');
   end
@@ -78,13 +96,25 @@ function f = hyst_fit(x, y, varargin)
     error('hyst:usage', 'hyst_fit: kind is ''poly'' or ''everett''');
   end
   creep_tau = creep_option(opts.creep);
+  x = double(x(:));
+  y = double(y(:));
+  cands = [];
+  if isempty(opts.degree)
+    [opts, cands, creep_tau] = choose(opts, kinds, method, domain, x, y, creep_tau);
+  elseif isempty(opts.delay)
+    error('hyst:usage', 'hyst_fit: ''delay'', [] (chosen) needs ''degree'', [] (chosen)');
+  end
   tdegree = opts.tdegree;
   if isempty(tdegree)
     tdegree = opts.degree - 1;  % all of E's terms
   end
-  x = double(x(:));
-  y = double(y(:));
   f = fit_part(opts, method, domain, tdegree, x, y);
+  if ~isempty(cands)
+    f.candidates = cands;
+  end
+  % the delay the model was fitted at: HYST_MODEL_SAVE writes it,
+  % HYST_HEADER states it
+  f.delay = double(opts.delay);
   if strcmp(opts.kind, 'poly') && ~f.increasing
     warning('hyst:not_increasing', ...
             'hyst_fit: the fitted f0 is not increasing on [%g, %g] (slope negative at %g): try another degree', ...
@@ -136,6 +166,42 @@ function f = hyst_fit(x, y, varargin)
   f.creep = struct('tau', cf.tau, 'weight', cf.weight, 'offset', cf.offset, 'rms', cf.fit_rms, ...
                    'max_abs', cf.max_abs, 'holdout_rms', c.holdout_rms, ...
                    'holdout_rms_without', without);
+end
+
+function [opts, cands, creep_tau] = choose(opts, kinds, method, domain, x, y, creep_tau)
+% The kind, degree, t-degree and delay (and whether with a creep term)
+% chosen by hold-out with the hyst tool's own code (the gateway's select:
+% fit_select() of tools/cli/fit_select.c), as 'hyst fit' without --degree
+% and the Python package's fit(degree=None) choose.
+  delays = [0 8];  % FIT_MAX_DELAY
+  if ~isempty(opts.delay)
+    delays = [1 1] * double(opts.delay);
+  end
+  tdegree = -1;
+  if ~isempty(opts.tdegree)
+    tdegree = double(opts.tdegree);
+  end
+  [cands, best, with_creep] = hyst_mex('select', x, y, kinds, method, domain(1), domain(2), ...
+                                       double(opts.skip), delays(1), delays(2), tdegree, ...
+                                       creep_tau);
+  if best == 0
+    error('hyst:no_candidate', ['hyst_fit: no candidate gave a model (an increasing f0, a ' ...
+                                'monotone E) that could predict the last third of the record']);
+  end
+  for k = 1:numel(cands)
+    cands(k).chosen = k == best;
+    cands(k).with_creep = k == best && with_creep;
+  end
+  c = cands(best);
+  opts.kind = c.kind;
+  opts.degree = c.degree;
+  opts.delay = c.delay;
+  opts.tdegree = c.t_degree;
+  % the creep term chosen with it, or none: fitted below as 'creep', TAU does
+  creep_tau = -1;
+  if with_creep
+    creep_tau = c.creep_tau;
+  end
 end
 
 function f = fit_part(opts, method, domain, tdegree, x, y)

@@ -69,13 +69,11 @@ function text = hyst_header(model, name, varargin)
     [intervals, rows] = hyst_table_sizes(opts.intervals, opts.rows, p.kind, caller, false);
     table = compensator_text(p, name, intervals, rows);
   end
-  guard = [upper(name) '_H'];
-  includes = sprintf('#include "hyst/curve.h"\n');
-  if ~isempty(p.creep_tau)
-    includes = [includes sprintf('#include "hyst/creep.h"\n')];
-  end
-  text = [model_comment(p), sprintf('#ifndef %s\n#define %s\n\n%s\n', guard, guard, includes), ...
-          declaration(p, name), creep_text(p, name), table, sprintf('\n#endif /* %s */\n', guard)];
+  % the guard, the declaration and the creep term: the format's one
+  % implementation (tools/model_text), as 'hyst header' writes them
+  parts = model_args(p);
+  text = [model_comment(p), hyst_mex('header_open', name, parts{:}), table, ...
+          hyst_mex('header_close', name)];
   if ~isempty(opts.file)
     hyst_write_whole(opts.file, text, caller);
   end
@@ -111,50 +109,13 @@ function text = model_comment(p)
   end
 end
 
-function text = declaration(p, name)
-% 'static const hyst_poly_t NAME = {...};' or, for kind everett, 'static
-% const hyst_everett_t NAME = {...};' with every row of e[][] written out
-% (zeros above the degree: no brace is elided), as the host tool writes them.
-  lit = @(v) strcat('HYST_REAL_C(', c_numbers(v, 17), ')');
+function parts = model_args(p)
+% The model's parts as the gateway's header_open takes them.
   if strcmp(p.kind, 'everett')
-    n = 4;                            % HYST_EVERETT_MAX_DEGREE
-    e = zeros(n, n);
-    k = 1;
-    for i = 1:p.degree
-      for j = 0:p.degree - i
-        e(i, j + 1) = p.terms(k);
-        k = k + 1;
-      end
-    end
-    rows = cell(1, n);
-    for i = 1:n
-      rows{i} = ['{' strjoin(lit(e(i, :)), ', ') '}'];
-    end
-    text = sprintf('static const hyst_everett_t %s = {\n    %du, %s,\n    {%s}};\n', name, ...
-                   p.degree, strjoin(lit([p.lo p.hi p.y_lo]), ', '), ...
-                   strjoin(rows, sprintf(',\n     ')));
+    parts = {'everett', p.lo, p.hi, 0, [], p.degree, p.y_lo, p.terms, p.creep_tau, p.creep_weight};
   else
-    text = sprintf('static const hyst_poly_t %s = {\n    %du, %s,\n    {%s}};\n', name, ...
-                   numel(p.coeffs) - 1, strjoin(lit([p.lo p.hi]), ', '), ...
-                   strjoin(lit(p.coeffs), sprintf(',\n     ')));
+    parts = {'poly', p.lo, p.hi, 0, p.coeffs, 0, 0, [], p.creep_tau, p.creep_weight};
   end
-end
-
-function text = creep_text(p, name)
-% The creep term's block, as the host tool writes it after the declaration
-% (header_creep() in tools/cli/model_file.c); '' without a creep term.
-  text = '';
-  if isempty(p.creep_tau)
-    return;
-  end
-  lit = @(v) strjoin(strcat('HYST_REAL_C(', c_numbers(v, 17), ')'), ', ');
-  text = sprintf(['\n/* creep: add hyst_creep_step() of the model''s input to its output\n' ...
-                  ' * (hyst/creep.h): hyst_creep_init(&creep, %s_CREEP_TERMS,\n' ...
-                  ' * %s_creep_tau, %s_creep_weight, lo) */\n#define %s_CREEP_TERMS %du\n' ...
-                  'static const hyst_wide_t %s_creep_tau[%s_CREEP_TERMS] = {%s};\n' ...
-                  'static const hyst_wide_t %s_creep_weight[%s_CREEP_TERMS] = {%s};\n'], ...
-                 name, name, name, name, numel(p.creep_tau), name, name, lit(p.creep_tau), ...
-                 name, name, lit(p.creep_weight));
 end
 
 function text = compensator_text(p, name, intervals, rows)

@@ -24,6 +24,12 @@
  *   c = hyst_mex('config')                       the compensators' default table sizes
  *   f = hyst_mex('fit', x, y, degree, method, lo, hi, skip, delay)
  *   f = hyst_mex('fit_everett', x, y, degree, lo, hi, skip, delay)
+ *   [cands, best, with_creep] = hyst_mex('select', x, y, kinds, method, lo, hi, skip,
+ *                                        delay_first, max_delay, t_degree, creep_tau)
+ *   m = hyst_mex('model_parse', bytes, file)    the reader of tools/model_text
+ *   t = hyst_mex('model_write', kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau, cweight)
+ *   t = hyst_mex('header_open', name, kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau,
+ *                cweight), hyst_mex('header_close', name)
  *
  * sim_everett runs the asymmetric kind (hyst_everett_t; terms are e[i-1][j]
  * of w^i t^j for i = 1..degree, then j = 0..degree-i), inv_everett its
@@ -92,6 +98,11 @@
 #include "mex.h"
 
 #include "hyst/hyst.h"
+
+/* host modules shared with the `hyst` tool and the Python package: the
+ * model file format and fit's hold-out scoring */
+#include "fit_select.h"
+#include "model_text.h"
 
 /* The name of a status as in status.h without the HYST_ prefix. */
 static const char *status_name(int st)
@@ -803,70 +814,40 @@ static void run_creep(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     }
 }
 
-/* A creep term of one lag fitted as `hyst fit` fits it (tools/cli/fit_creep.c):
- * tau (0: none could be fitted), weight, offset, the scores. */
-typedef struct creep_fitted {
-    double tau, weight, offset, holdout_rms, fit_rms, max_abs;
-} creep_fitted_t;
-
-/* One time constant: weight and offset from the equations of [0, train),
- * the creep from rest over u[0..len), scored on [train, len) (NaN when
- * train == len): hyst_creep_fit_holdout(), u the model's inputs, r its
- * residual, NaN where missing. */
-static void creep_one(const double *u, const double *r, size_t len, size_t train, double x_rest,
-                      double tau, creep_fitted_t *out)
-{
-    const hyst_wide_t t = (hyst_wide_t)tau;
-    hyst_creep_holdout_t h;
-    memset(out, 0, sizeof *out);
-    out->holdout_rms = NAN;
-    out->fit_rms = NAN;
-    if (hyst_creep_fit_holdout(1u, &t, (hyst_wide_t)x_rest, u, r, len, train < len ? train : len,
-                               &h) != HYST_OK) {
-        return;
-    }
-    out->tau = tau;
-    out->weight = (double)h.weight[0];
-    out->offset = (double)h.offset;
-    out->fit_rms = (double)h.fit_rms;
-    out->max_abs = (double)h.max_abs;
-    out->holdout_rms = h.holdout_used > 0u ? (double)h.holdout_rms : NAN;
-}
-
-/* Time constants hyst fit --creep auto tries (samples), those up to the run's length. */
-static const double creep_taus[] = {100.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0, 10000.0, 20000.0};
-
 /* holdout (prhs = coeffs, lo, hi, x, y, skip, delay, from, tau) or
  * holdout_everett (prhs = degree, lo, hi, y_lo, terms, x, y, skip, delay,
  * from, tau): the model run from rest over the record as `hyst fit` scores
- * it (fit_model_run_creep() in tools/cli/fit_select.c); plhs = its RMS error
- * from sample from on (0-based), and the creep term fitted to its residual
- * before `from` and scored after (tau > 0 that time constant, 0 the best of
- * creep_taus; tau < 0: none, []). */
+ * it, by the tool's own code (fit_model_run_creep(), tools/cli/fit_select.c);
+ * plhs = its RMS error from sample from on (0-based), and the creep term
+ * fitted to its residual before `from` and scored after (tau > 0 that time
+ * constant, 0 the best of the tool's series; tau < 0: none, []). */
 static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"tau", "weight", "offset", "holdout_rms", "fit_rms",
                                    "max_abs"};
     const int at = everett ? 5 : 3; /* x, then y, skip, delay, from, tau */
     model_arg_t m;
-    hyst_tcm_t S;
     hyst_curve_t curve;
-    creep_fitted_t best;
-    const double *x, *y;
-    double *tp, *u = NULL, *r = NULL, tau, ss = 0.0, x_rest;
-    size_t n, skip, delay, from, cap, len, k, used = 0u, i;
-    int st;
+    fit_creep_t best;
+    double rms;
+    size_t n, skip, delay, from;
+    int st = HYST_OK;
     if (nrhs != at + 6) {
         usage(everett ? "holdout_everett takes degree, lo, hi, y_lo, terms, x, y, skip, delay, "
                         "from, tau"
                       : "holdout takes coeffs, lo, hi, x, y, skip, delay, from, tau");
     }
     memset(&m, 0, sizeof m);
-    m.everett = everett;
+    memset(&best, 0, sizeof best);
     if (everett) {
         m.e = everett_arg(prhs, "hyst_fit");
+        st = hyst_f64_curve_from_everett(&curve, &m.e);
     } else {
         m.f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
+        st = hyst_f64_curve_from_poly(&curve, &m.f0);
+    }
+    if (st != HYST_OK) {
+        fail_status("hyst_fit", st);
     }
     if (!is_real_double(prhs[at]) || !is_real_double(prhs[at + 1])) {
         usage("x and y must be real double vectors");
@@ -875,58 +856,18 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     if (mxGetNumberOfElements(prhs[at + 1]) != n) {
         usage("x and y must have the same number of elements");
     }
-    x = (const double *)mxGetData(prhs[at]);
-    y = (const double *)mxGetData(prhs[at + 1]);
     skip = count(prhs[at + 2], "skip", 0.0, 1e15);
     delay = count(prhs[at + 3], "delay", 0.0, 1e15);
     from = count(prhs[at + 4], "from", 0.0, 1e15);
-    tau = scalar(prhs[at + 5], "tau");
-    len = n > delay + skip ? n - delay - skip : 0u;
-    cap = len / 2u + 2u;
-    x_rest = everett ? m.e.lo : m.f0.lo;
-    tp = mxMalloc((4u * cap + (tau >= 0 ? 2u * len : 0u)) * sizeof *tp);
-    if (tau >= 0) {
-        u = tp + 4u * cap;
-        r = u + len;
-    }
-    st = init_f64(&S, &curve, &m, tp, cap, NULL);
-    if (st != HYST_OK) {
-        mxFree(tp);
-        fail_status("hyst_fit", st);
-    }
-    for (k = skip; k + delay < n; ++k) {
-        const double ym = hyst_f64_step(&S, x[k]);
-        const int ok = isfinite(x[k]) && isfinite(y[k + delay]);
-        if (u != NULL) { /* the input as the model took it (clamped; the last one for NaN) */
-            u[k - skip] = hyst_f64_input(&S);
-            r[k - skip] = ok ? y[k + delay] - ym : NAN;
-        }
-        if (ok && k >= from) {
-            const double e = ym - y[k + delay];
-            ss += e * e;
-            ++used;
-        }
-    }
-    plhs[0] = mxCreateDoubleScalar(used > 0u ? sqrt(ss / (double)used) : NAN);
-    if (nlhs > 1 && (tau < 0 || len == 0u)) {
+    best.tau = scalar(prhs[at + 5], "tau");
+    rms = fit_model_run_creep(everett ? NULL : &m.f0, everett ? &curve : NULL,
+                              (const double *)mxGetData(prhs[at]),
+                              (const double *)mxGetData(prhs[at + 1]), n, skip, delay, from, NULL,
+                              NULL, best.tau >= 0 ? &best : NULL);
+    plhs[0] = mxCreateDoubleScalar(rms);
+    if (nlhs > 1 && (scalar(prhs[at + 5], "tau") < 0 || n <= delay + skip)) {
         plhs[1] = mxCreateDoubleMatrix(0, 0, mxREAL);
     } else if (nlhs > 1) {
-        const size_t train = from > skip ? from - skip : 0u;
-        memset(&best, 0, sizeof best);
-        best.holdout_rms = NAN;
-        best.fit_rms = NAN;
-        if (tau > 0) {
-            creep_one(u, r, len, train, x_rest, tau, &best);
-        }
-        for (i = 0u; tau == 0 && i < sizeof creep_taus / sizeof creep_taus[0] &&
-                     creep_taus[i] <= (double)len;
-             ++i) {
-            creep_fitted_t c;
-            creep_one(u, r, len, train, x_rest, creep_taus[i], &c);
-            if (isfinite(c.holdout_rms) && !(best.holdout_rms <= c.holdout_rms)) {
-                best = c;
-            }
-        }
         plhs[1] = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
         set_field(plhs[1], "tau", mxCreateDoubleScalar(best.tau));
         set_field(plhs[1], "weight", mxCreateDoubleScalar(best.weight));
@@ -935,7 +876,233 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
         set_field(plhs[1], "fit_rms", mxCreateDoubleScalar(best.fit_rms));
         set_field(plhs[1], "max_abs", mxCreateDoubleScalar(best.max_abs));
     }
-    mxFree(tp);
+}
+
+/* select: prhs = x, y, kinds (1 poly, 2 everett, 3 both), method, lo, hi,
+ * skip, delay_first, max_delay, t_degree (-1: any), creep_tau; fit's
+ * hold-out choice by the `hyst` tool's own code (fit_select(),
+ * tools/cli/fit_select.c). plhs = the candidates (a struct array: kind,
+ * degree, t_degree, delay, params, holdout_rms, fit_rms, status, creep_tau,
+ * creep_weight, creep_holdout_rms), the index chosen (1-based; 0: none)
+ * and whether with its creep term. */
+static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *fields[] = {"kind",        "degree",  "t_degree", "delay",
+                                   "params",      "holdout_rms", "fit_rms", "status",
+                                   "creep_tau",   "creep_weight", "creep_holdout_rms"};
+    hyst_ident_config_t base;
+    fit_candidate_t *cand;
+    size_t n, scored, best = 0u, i, max_delay, most;
+    long t_degree;
+    int kinds, with_creep = 0;
+    mxArray *s;
+    if (nrhs != 11 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+        mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
+        usage("select takes x, y (real double vectors of one length), kinds, method, lo, hi, "
+              "skip, delay_first, max_delay, t_degree, creep_tau");
+    }
+    n = mxGetNumberOfElements(prhs[0]);
+    memset(&base, 0, sizeof base);
+    kinds = (int)count(prhs[2], "kinds", 1.0, 3.0);
+    base.method = (int)count(prhs[3], "method", 1.0, 2.0);
+    base.lo = scalar(prhs[4], "lo");
+    base.hi = scalar(prhs[5], "hi");
+    base.skip = count(prhs[6], "skip", 0.0, 1e15);
+    base.delay = count(prhs[7], "delay_first", 0.0, (double)FIT_MAX_DELAY);
+    max_delay = count(prhs[8], "max_delay", (double)base.delay, (double)FIT_MAX_DELAY);
+    t_degree = (long)scalar(prhs[9], "t_degree");
+    most = (HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES) * (max_delay - base.delay + 1u);
+    cand = (fit_candidate_t *)mxCalloc(most, sizeof *cand);
+    scored = fit_select(&base, kinds, 0u,
+                       t_degree < 0 || t_degree >= HYST_EVERETT_MAX_DEGREE ? FIT_ANY_T_DEGREE
+                                                                           : (unsigned)t_degree,
+                       scalar(prhs[10], "creep_tau"), (const double *)mxGetData(prhs[0]),
+                       (const double *)mxGetData(prhs[1]), n, max_delay, cand, most, &best,
+                       &with_creep);
+    s = mxCreateStructMatrix(1, (mwSize)scored, (int)(sizeof fields / sizeof fields[0]), fields);
+    for (i = 0u; i < scored; ++i) {
+        const fit_candidate_t *c = &cand[i];
+        const int everett = c->kind == FIT_EVERETT;
+        const char *status = c->status == HYST_ERR_NOT_MONOTONE ? "E not monotone"
+                             : c->status != HYST_OK             ? status_name(c->status)
+                             : !everett && !c->fit.increasing   ? "f0 not increasing"
+                                                                : "OK";
+        mxSetField(s, (mwIndex)i, "kind", mxCreateString(everett ? "everett" : "poly"));
+        mxSetField(s, (mwIndex)i, "degree", mxCreateDoubleScalar((double)c->degree));
+        mxSetField(s, (mwIndex)i, "t_degree",
+                   everett ? mxCreateDoubleScalar((double)c->t_degree)
+                           : mxCreateDoubleMatrix(0, 0, mxREAL));
+        mxSetField(s, (mwIndex)i, "delay", mxCreateDoubleScalar((double)c->delay));
+        mxSetField(s, (mwIndex)i, "params",
+                   mxCreateDoubleScalar((double)fit_parameters(c->kind, c->degree, c->t_degree)));
+        mxSetField(s, (mwIndex)i, "holdout_rms", mxCreateDoubleScalar(c->holdout_rms));
+        mxSetField(s, (mwIndex)i, "fit_rms", mxCreateDoubleScalar(c->fit_rms));
+        mxSetField(s, (mwIndex)i, "status", mxCreateString(status));
+        mxSetField(s, (mwIndex)i, "creep_tau", mxCreateDoubleScalar(c->creep.tau));
+        mxSetField(s, (mwIndex)i, "creep_weight",
+                   mxCreateDoubleScalar(c->creep.tau > 0 ? c->creep.weight : NAN));
+        mxSetField(s, (mwIndex)i, "creep_holdout_rms",
+                   mxCreateDoubleScalar(c->creep.tau > 0 ? c->creep.holdout_rms : NAN));
+    }
+    mxFree(cand);
+    plhs[0] = s;
+    if (nlhs > 1) {
+        plhs[1] = mxCreateDoubleScalar(best == (size_t)-1 ? 0.0 : (double)best + 1.0);
+    }
+    if (nlhs > 2) {
+        plhs[2] = mxCreateDoubleScalar(with_creep ? 1.0 : 0.0);
+    }
+}
+
+/* ---- the model file format, its one implementation (tools/model_text) ---- */
+
+/* A real double vector argument into a[0..cap), its length into *n (the
+ * checks refuse a length beyond cap before they read a). */
+static void numbers_arg(const mxArray *v, const char *name, double *a, size_t cap, size_t *n)
+{
+    char msg[96];
+    size_t i;
+    if (!is_real_double(v)) {
+        (void)snprintf(msg, sizeof msg, "%s must be a real double vector", name);
+        usage(msg);
+    }
+    *n = mxGetNumberOfElements(v);
+    for (i = 0u; i < *n && i < cap; ++i) {
+        a[i] = ((const double *)mxGetData(v))[i];
+    }
+}
+
+/* A model from prhs = kind, lo, hi, delay, coeffs, degree, y_lo, terms,
+ * ctau, cweight (the parts of hyst_model_parts.m), checked as the reader
+ * checks a file: hyst:usage with its reason otherwise. */
+static void model_text_arg(model_text_t *m, const mxArray *const prhs[10], const char *caller)
+{
+    char kind[8], msg[MODEL_TEXT_MSG_SIZE];
+    double v;
+    memset(m, 0, sizeof *m);
+    if (!mxIsChar(prhs[0]) || mxGetString(prhs[0], kind, sizeof kind) != 0 ||
+        (strcmp(kind, "poly") != 0 && strcmp(kind, "everett") != 0)) {
+        usage("kind must be 'poly' or 'everett'");
+    }
+    m->kind = strcmp(kind, "everett") == 0 ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
+    m->lo = scalar(prhs[1], "lo");
+    m->hi = scalar(prhs[2], "hi");
+    m->delay = (unsigned long)count(prhs[3], "delay", 0.0, (double)MODEL_TEXT_MAX_DELAY);
+    if (m->kind == MODEL_TEXT_EVERETT) {
+        v = scalar(prhs[5], "degree");
+        m->degree = v >= 1.0 && v <= HYST_EVERETT_MAX_DEGREE && v == floor(v) ? (unsigned)v : 0u;
+        m->y_lo = scalar(prhs[6], "y_lo");
+        numbers_arg(prhs[7], "terms", m->terms, HYST_EVERETT_TERMS, &m->nterms);
+    } else {
+        numbers_arg(prhs[4], "coeffs", m->coeffs, HYST_MAX_DEGREE + 1u, &m->ncoef);
+    }
+    numbers_arg(prhs[8], "creep_tau", m->creep_tau, MODEL_TEXT_CREEP_MAX_TERMS, &m->ncreep);
+    numbers_arg(prhs[9], "creep_weight", m->creep_weight, MODEL_TEXT_CREEP_MAX_TERMS,
+                &m->ncreep_weights);
+    if (model_text_check(m, msg, sizeof msg) != 0) {
+        mexErrMsgIdAndTxt("hyst:usage", "%s: %s", caller, msg);
+    }
+}
+
+static mxArray *row_of(const double *v, size_t n)
+{
+    mxArray *a = mxCreateDoubleMatrix(1, (mwSize)n, mxREAL);
+    size_t i;
+    for (i = 0u; i < n; ++i) {
+        mxGetPr(a)[i] = v[i];
+    }
+    return a;
+}
+
+/* model_parse: prhs = the file's bytes (uint8 or char), its name; plhs = the
+ * struct hyst_model_load returns, or hyst:model_file with the reader's
+ * message. */
+static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *poly[] = {"coeffs", "lo", "hi", "delay"};
+    static const char *everett[] = {"kind", "lo", "hi", "y_lo", "degree", "terms", "delay"};
+    model_text_t m;
+    char msg[MODEL_TEXT_MSG_SIZE], *path, *text;
+    size_t n, i;
+    int rc;
+    mxArray *s;
+    if (nrhs != 2 || !mxIsChar(prhs[1]) || !(mxIsUint8(prhs[0]) || mxIsChar(prhs[0]))) {
+        usage("model_parse takes the file's bytes (uint8) and its name");
+    }
+    n = mxGetNumberOfElements(prhs[0]);
+    text = (char *)mxMalloc(n + 1u);
+    for (i = 0u; i < n; ++i) { /* char is 16-bit in MATLAB: its low byte */
+        text[i] = mxIsUint8(prhs[0]) ? (char)((const unsigned char *)mxGetData(prhs[0]))[i]
+                                     : (char)((unsigned)((const mxChar *)mxGetData(prhs[0]))[i] & 0xFFu);
+    }
+    path = mxArrayToString(prhs[1]);
+    rc = model_text_parse(text, n, path, &m, msg, sizeof msg);
+    mxFree(text);
+    mxFree(path);
+    if (rc != 0) {
+        mexErrMsgIdAndTxt("hyst:model_file", "%s", msg);
+    }
+    if (m.kind == MODEL_TEXT_EVERETT) {
+        s = mxCreateStructMatrix(1, 1, 7, everett);
+        set_field(s, "kind", mxCreateString("everett"));
+        set_field(s, "y_lo", mxCreateDoubleScalar(m.y_lo));
+        set_field(s, "degree", mxCreateDoubleScalar((double)m.degree));
+        set_field(s, "terms", row_of(m.terms, m.nterms));
+    } else {
+        s = mxCreateStructMatrix(1, 1, 4, poly);
+        set_field(s, "coeffs", row_of(m.coeffs, m.ncoef));
+    }
+    set_field(s, "lo", mxCreateDoubleScalar(m.lo));
+    set_field(s, "hi", mxCreateDoubleScalar(m.hi));
+    set_field(s, "delay", mxCreateDoubleScalar((double)m.delay));
+    if (m.ncreep > 0u) {
+        (void)mxAddField(s, "creep_tau");
+        (void)mxAddField(s, "creep_weight");
+        set_field(s, "creep_tau", row_of(m.creep_tau, m.ncreep));
+        set_field(s, "creep_weight", row_of(m.creep_weight, m.ncreep));
+    }
+    plhs[0] = s;
+}
+
+/* model_write: prhs = kind, lo, hi, delay, coeffs, degree, y_lo, terms,
+ * ctau, cweight; plhs = the file's text. header_open: prhs = name and the
+ * same; plhs = the header's guard, declaration and creep term.
+ * header_close: prhs = name. */
+static void run_model_text(const char *cmd, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const int header = cmd[0] == 'h', close = strcmp(cmd, "header_close") == 0;
+    model_text_t m;
+    char name[256], *buf;
+    const size_t size = 32768u;
+    size_t len = 0u;
+    int over;
+    if (nrhs != (close ? 1 : header ? 11 : 10)) {
+        usage("model_write takes kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau, "
+              "creep_weight; header_open NAME and the same; header_close NAME");
+    }
+    if (header && (!mxIsChar(prhs[0]) || mxGetString(prhs[0], name, sizeof name) != 0 ||
+                   !model_text_identifier(name))) {
+        usage("NAME must be a C identifier");
+    }
+    if (!close) {
+        model_text_arg(&m, prhs + (header ? 1 : 0), header ? "hyst_header" : "hyst_model_save");
+    }
+    buf = (char *)mxMalloc(size);
+    if (close) {
+        over = model_text_header_close(buf, size, &len, name);
+    } else if (header) {
+        over = model_text_header_open(buf, size, &len, name, &m);
+    } else {
+        len = model_text_write(&m, buf, size);
+        over = len == 0u;
+    }
+    if (over) {
+        mxFree(buf);
+        usage("text too long");
+    }
+    buf[len] = '\0';
+    plhs[0] = mxCreateString(buf);
+    mxFree(buf);
 }
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
@@ -971,6 +1138,13 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_creep(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "holdout") == 0 || strcmp(cmd, "holdout_everett") == 0) {
         run_holdout(cmd[7] == '_', nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "select") == 0) {
+        run_select(nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "model_parse") == 0) {
+        run_model_parse(plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "model_write") == 0 || strcmp(cmd, "header_open") == 0 ||
+               strcmp(cmd, "header_close") == 0) {
+        run_model_text(cmd, plhs, nrhs - 1, prhs + 1);
     } else {
         usage("unknown command (version, status_str, config, sim, inv, sim_everett, inv_everett, "
               "inv_table, inv_table_everett, fit, fit_everett, creep, holdout, holdout_everett)");

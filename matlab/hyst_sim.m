@@ -4,7 +4,8 @@ function [y, status, tp_count] = hyst_sim(model, x, varargin)
 %   Y = HYST_SIM(MODEL, X) is the model's output for the input sequence X,
 %   from the start state (lo, f0(lo)), by one block call of the C library:
 %   X of class double runs hyst_f64_process, single runs hyst_f32_process
-%   (what a Cortex-M4F computes). Y has the class and the shape of X.
+%   (a Cortex-M4F fuses its multiply-adds: its single results can differ in
+%   the last bits, docs/porting.md). Y has the class and the shape of X.
 %   MODEL is a struct with fields coeffs (f0, highest power first), lo, hi:
 %   what HYST_FIT and HYST_MODEL_LOAD return; or, for the asymmetric kind
 %   (hyst_everett_t: hyst_*_curve_from_everett, hyst_*_init_curve), with

@@ -18,7 +18,8 @@ function failed = run_tests(root, ref, cli)
            @t_everett_inv_table_monotone, @t_everett_inv_table_arguments, ...
            @t_header_equals_cli, @t_header_tables, @t_header_file, @t_header_arguments, ...
            @t_creep_sim_inv_equal_cli, @t_creep_sum_of_lags, @t_creep_save_load, ...
-           @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors};
+           @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors, ...
+           @t_readers_agree, @t_fit_delay_saved, @t_fit_chooses_as_cli};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -302,8 +303,9 @@ function t_save_load_roundtrip(ctx)
   m = hyst_model_load(file);
   check(isequal(m.coeffs, f.coeffs) && m.lo == f.lo && m.hi == f.hi, 'not the same doubles');
   % the record drifts: hyst_fit (creep 'auto', as hyst fit) fitted a creep term too
+  % the delay hyst_fit fitted at is the model's: saved and read back
   check(isequal(fieldnames(m), {'coeffs'; 'lo'; 'hi'; 'delay'; 'creep_tau'; 'creep_weight'}) && ...
-        m.delay == 0, 'fields');
+        m.delay == 1, 'fields');
   check(isequal([m.creep_tau m.creep_weight], [f.creep_tau f.creep_weight]), 'the creep term');
   g = hyst_fit(d(:, 1), d(:, 5), 'degree', 5, 'skip', 350, 'delay', 1, 'creep', 'none');
   hyst_model_save(file, g);
@@ -342,13 +344,14 @@ function t_load_rejects(ctx)
   bad = {
     {'hyst-model-text 2', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 2'}, 'hyst-model-text 1'
     {'kind poly', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':1:'
-    [good {'gain 3'}], 'unknown key ''gain'''
-    [good {'lo 1'}], 'given twice'
-    good([1 2 3 5]), 'key ''hi'' is missing'
-    {'hyst-model-text 1', 'kind pwl', 'lo 0', 'hi 40', 'coeffs 1 2'}, 'is not poly'
-    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi Inf', 'coeffs 1 2'}, 'hi needs one finite number'
-    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 x'}, 'coeffs needs'
-    [good {'delay 2.5'}], 'not a whole number of samples'
+    [good {'gain 3'}], ':6: field 1: ''gain'' is not a key'
+    [good {'lo 1'}], ':6: field 1: ''lo'' given twice'
+    good([1 2 3 5]), 'the key hi is missing'
+    {'hyst-model-text 1', 'kind pwl', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':2: field 2: kind must be ''poly'' or ''everett'''
+    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi Inf', 'coeffs 1 2'}, ':4: field 2: ''Inf'' is not a finite number'
+    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 x'}, ':5: field 3: ''x'' is not a finite number'
+    [good {'delay 2.5'}], ':6: field 2: ''2.5'' is not a whole number of samples'
+    {'hyst-model-text 1', 'kind poly', 'lo 1,5', 'hi 40', 'coeffs 1 2'}, ':3: field 2: ''1,5'' is not a finite number (the decimal mark is ''.'')'
   };
   write_lines(file, [good {'', '# a comment'}]);
   m = hyst_model_load(file);
@@ -577,8 +580,9 @@ function t_everett_save_load(ctx)
   x = signal(2000, e.lo, e.hi, 14);
   check(isequal(hyst_sim(hyst_model_load(file), x), hyst_sim(e, x)), 'simulations differ');
   text = fileread(file);
-  check(isempty(strfind(text, 'delay')) && ~isempty(strfind(text, sprintf('\nkind everett\n'))), ...
-        'text: %s', text);
+  % the host tool's text (tools/model_text): every key, the delay too
+  check(~isempty(strfind(text, sprintf('\ndelay 0\n'))) && ...
+        ~isempty(strfind(text, sprintf('\nkind everett\n'))), 'text: %s', text);
   % the format's example, as the host tool writes it
   write_lines(file, {'hyst-model-text 1', '# comment lines as now', 'kind everett', 'lo 0', ...
                      'hi 3.6000000000000001', 'y_lo -0.035382239014971697', 'delay 3', ...
@@ -593,19 +597,19 @@ function t_everett_load_rejects(ctx)
   good = {'hyst-model-text 1', 'kind everett', 'lo 0', 'hi 3.6', 'y_lo 0', 'degree 2', ...
           'terms 0.61 0.02 -0.1'};
   bad = {
-    [good {'coeffs 1 2'}], ':8: key ''coeffs'' is not a key of kind everett'
-    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'terms 1', 'coeffs 1 2'}, ':5: key ''terms'' is not a key of kind poly'
-    {'hyst-model-text 1', 'kind poly', 'y_lo 0', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':3: key ''y_lo'' is not a key of kind poly'
-    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 2', 'degree 1'}, ':6: key ''degree'' is not a key of kind poly'
-    good([1:4 6 7]), 'key ''y_lo'' is missing'
-    good([1:5 7]), 'key ''degree'' is missing'
-    good(1:6), 'key ''terms'' is missing'
-    [good(1:5) {'degree 5'} good(7)], ':6: degree 5 is not a whole number 1..4'
-    [good(1:5) {'degree 1.5'} good(7)], ':6: degree 1.5 is not'
-    [good(1:6) {'terms 1 2'}], ':7: terms needs 3 numbers for degree 2, not 2'
-    [good(1:6) {'terms 1 NaN 2'}], ':7: terms needs one or more finite numbers'
-    [good(1:4) {'y_lo Inf'} good(6:7)], ':5: y_lo needs one finite number'
-    [{'hyst-model-text 1', 'kind preisach'} good(3:7)], 'is not poly or everett'
+    [good {'coeffs 1 2'}], ':8: field 1: coeffs is not a key of kind everett'
+    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'terms 1', 'coeffs 1 2'}, ':5: field 1: terms is not a key of kind poly'
+    {'hyst-model-text 1', 'kind poly', 'y_lo 0', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':3: field 1: y_lo is not a key of kind poly'
+    {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 2', 'degree 1'}, ':6: field 1: degree is not a key of kind poly'
+    good([1:4 6 7]), 'the key y_lo is missing'
+    good([1:5 7]), 'the key degree is missing'
+    good(1:6), 'the key terms is missing'
+    [good(1:5) {'degree 5'} good(7)], ':6: field 2: ''5'' is not a degree in 1..4'
+    [good(1:5) {'degree 1.5'} good(7)], ':6: field 2: ''1.5'' is not a degree in 1..4'
+    [good(1:6) {'terms 1 2'}], ':7: field 4 is missing: terms needs 3 numbers for degree 2'
+    [good(1:6) {'terms 1 NaN 2'}], ':7: field 3: ''NaN'' is not a finite number'
+    [good(1:4) {'y_lo Inf'} good(6:7)], ':5: field 2: ''Inf'' is not a finite number'
+    [{'hyst-model-text 1', 'kind preisach'} good(3:7)], ':2: field 2: kind must be ''poly'' or ''everett'''
   };
   expect_load_errors(file, bad);
 end
@@ -1299,4 +1303,82 @@ function t_creep_errors(ctx)
   end
   expect_error('hyst:usage', @() hyst_mex('creep', [1 2], 1, 0, x));
   expect_error('hyst:ERR_ARG', @() hyst_mex('creep', 0.5, 1, 0, x));
+end
+
+function t_readers_agree(ctx)
+  % every crafted file of tests/model_files (line ends, blanks, hexadecimal
+  % and decimal-comma numbers, long lines, counts, limits, an empty domain):
+  % hyst_model_load reads the values 'hyst header --model' reads (its
+  % header, from the guard on, and the delay it states), or refuses the
+  % file in the tool's words (python/tests/test_model_readers.py: the
+  % Python package likewise)
+  folder = fullfile(ctx.root, 'tests', 'model_files');
+  files = dir(fullfile(folder, '*.hyst'));
+  check(numel(files) >= 45, 'only %d crafted files', numel(files));
+  out = fullfile(ctx.tmp, 'agree');
+  mkdir(out);
+  for k = 1:numel(files)
+    name = files(k).name;
+    file = fullfile(folder, name);
+    [rc, said] = system(sprintf('"%s" header --model "%s" --dir "%s" m 2>&1', ctx.cli, file, out));
+    said = strtrim(said);
+    ok = strncmp(name, 'ok_', 3);
+    check((rc == 0) == ok, '%s: hyst header says "%s"', name, said);
+    if ~ok
+      msg = error_message(@() hyst_model_load(file));
+      mine = ['hyst header: ' msg(numel('hyst_model_load: ') + 1:end)];
+      check(strcmp(mine, said), '%s: "%s" where hyst header says "%s"', name, msg, said);
+      continue;
+    end
+    m = hyst_model_load(file);
+    cli = fileread(fullfile(out, 'm.h'));
+    delay = str2double(regexp(cli, 'follows its input\s+\*?\s*(\d+) samples later', 'tokens', 'once'));
+    check(m.delay == delay, '%s: delay %g, hyst header %g', name, m.delay, delay);
+    mine = hyst_header(m, 'm');
+    check(strcmp(mine(strfind(mine, '#ifndef'):end), cli(strfind(cli, '#ifndef'):end)), ...
+          '%s: the header differs from that of hyst header', name);
+  end
+end
+
+function t_fit_delay_saved(ctx)
+  % hyst_fit's 'delay' is the model's: in its result, in the model file
+  % hyst_model_save writes, read back by hyst_model_load and by hyst sim
+  d = load(fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat'));
+  f = hyst_fit(d(:, 1), d(:, 5), 'degree', 3, 'skip', 350, 'delay', 3, 'creep', 'none');
+  check(isfield(f, 'delay') && f.delay == 3, 'hyst_fit returned no delay 3');
+  file = fullfile(ctx.tmp, 'delayed.hyst');
+  hyst_model_save(file, f);
+  check(hyst_model_load(file).delay == 3, 'the saved model reads back another delay');
+  [rc, out] = system(sprintf('printf "3\\n3\\n3\\n3\\n3\\n" | "%s" sim --model "%s"', ctx.cli, file));
+  y = str2double(strsplit(strtrim(out)));
+  check(rc == 0 && all(y(1:3) == y(1)) && y(4) ~= y(1), 'hyst sim does not delay by 3: %s', out);
+end
+
+function t_fit_chooses_as_cli(ctx)
+  % 'degree', [] chooses with the hyst tool's own code (fit_select()): the
+  % choice, the coefficients and the creep term 'hyst fit --kind tcm' prints
+  data = fullfile(ctx.root, 'tests', 'data', 'piezo_major_loop.dat');
+  d = load(data);
+  f = hyst_fit(d(:, 1), d(:, 5), 'kind', 'poly', 'degree', [], 'delay', [], 'skip', 350);
+  out = run_cli(ctx, ['fit --kind tcm --skip 350 --xcol 1 --ycol 5 "' data '"']);
+  lines = strsplit(out, "\n");
+  c = str2double(strsplit(lines{1}, ','));
+  check(numel(c) == numel(f.coeffs) && all(abs(c - f.coeffs) <= 1e-14 * abs(f.coeffs) + 1e-300), ...
+        'coefficients %s vs %s', lines{1}, mat2str(f.coeffs, 15));
+  delay = str2double(regexp(out, '# delay (\d+) samples', 'tokens', 'once'));
+  check(f.delay == delay, 'delay %g, hyst fit %g', f.delay, delay);
+  tau = str2double(regexp(out, '# creep: tau (\d+) samples', 'tokens', 'once'));
+  check(isfield(f, 'creep_tau') && f.creep_tau == tau, 'creep term, hyst fit: tau %g', tau);
+  check(numel(f.candidates) == 81 && sum([f.candidates.chosen]) == 1, '%d candidates', ...
+        numel(f.candidates));
+  % both kinds compared when 'kind' is not given: hyst fit's 171 candidates
+  g = hyst_fit(d(:, 1), d(:, 5), 'degree', [], 'delay', [], 'skip', 350, 'creep', 'none');
+  out = run_cli(ctx, ['fit --skip 350 --creep none --xcol 1 --ycol 5 "' data '"']);
+  t = regexp(out, 'chosen by hold-out: degree (\d+), delay (\d+) \(kind (\w+)', 'tokens', 'once');
+  kind = 'poly';
+  if isfield(g, 'kind')
+    kind = g.kind;
+  end
+  check(numel(g.candidates) == 171 && strcmp(kind, t{3}) && g.degree == str2double(t{1}) && ...
+        g.delay == str2double(t{2}), 'the choice differs from hyst fit''s: %s', strjoin(t, ' '));
 end

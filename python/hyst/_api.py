@@ -264,11 +264,29 @@ class Fit:
         # only called for names not found on the Fit itself
         return getattr(self.__dict__["model"], name)
 
+    def make_model(self, *, dtype=None, capacity=None):
+        """A new model, at rest, of everything the fit chose: its kind's
+        curve and its creep term (``dtype`` and ``capacity`` the Fit's
+        unless given). ``hyst.Model(f.coeffs, f.lo, f.hi)`` would drop the
+        creep term and the asymmetric kind. The delay is the measurement's,
+        not the model's: the model's output k goes with the measured output
+        k + ``delay``."""
+        return model_from(self.description(),
+                          dtype=self.model.dtype if dtype is None else dtype,
+                          capacity=self.model.capacity if capacity is None else capacity)
+
+    def make_compensator(self, *, dtype=None, capacity=None, intervals=0, rows=None):
+        """The compensator of :meth:`make_model`'s model (creep term
+        included): desired output in, drive out (:func:`compensator_from`;
+        ``intervals=N`` the tabulated one firmware runs)."""
+        return compensator_from(self.description(),
+                                dtype=self.model.dtype if dtype is None else dtype,
+                                capacity=self.model.capacity if capacity is None else capacity,
+                                intervals=intervals, rows=rows)
+
     def predict(self, x):
         """Outputs of a fresh model (at A0) for the inputs x; ``model`` is untouched."""
-        m = model_from(self.description(), dtype=self.model.dtype,
-                       capacity=self.model.capacity)
-        return m.process(np.ascontiguousarray(x, dtype=self.model.dtype))
+        return self.make_model().process(np.ascontiguousarray(x, dtype=self.model.dtype))
 
     def __repr__(self):
         creep = (f", creep_tau={self.creep_tau[0]:.6g}, creep_weight={self.creep_weight[0]:.9g}"
@@ -286,8 +304,8 @@ class Fit:
 
 #: Delays tried by fit() when none is given, and the parsimony margin of the
 #: choice: the same as ``hyst fit`` without --degree (docs/cli.md).
-MAX_DELAY = 8
-PARSIMONY = 0.01
+MAX_DELAY = _hyst.FIT_MAX_DELAY
+PARSIMONY = _hyst.FIT_PARSIMONY
 
 
 #: The kinds fit() knows.
@@ -332,16 +350,6 @@ def _holdout(res, x, y, skip, delay, first, creep_tau=-1.0):
     return h["rms"], h["creep"]
 
 
-def _shapes(kind, t_degree):
-    """(degree, t_degree) of the candidates of a kind, in hyst fit's order:
-    poly 1..MAX_DEGREE (t_degree None); everett each degree with each
-    t-degree below it, or only ``t_degree`` when given."""
-    if kind == "poly":
-        return [(deg, None) for deg in range(1, MAX_DEGREE + 1)]
-    return [(deg, k) for deg in range(1, EVERETT_MAX_DEGREE + 1) for k in range(deg)
-            if t_degree is None or k == t_degree]
-
-
 def _score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau):
     """One candidate (kind, degree deg, t_degree k, delay d): fitted on the
     first two thirds, scored by its prediction of the last third; with
@@ -370,48 +378,41 @@ def _score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau):
     return c
 
 
+def _status(c):
+    """Why a candidate of the tool's choice has no score ("OK" when it has
+    one): its fit's status, an f0 that does not increase, an E the library
+    refuses."""
+    st = c.pop("status_code")
+    increasing = c.pop("increasing")
+    if st == _hyst.Status.ERR_NOT_MONOTONE:
+        return "E not monotone"
+    if st != _hyst.Status.OK:
+        return _hyst.Status(st).name
+    return "OK" if increasing else "f0 not increasing"
+
+
 def _select(x, y, kinds, method, lo, hi, skip, delays, t_degree=None, creep_tau=-1.0):
-    """Every candidate (kind, degree, t_degree, delay): fitted on the first
-    two thirds, scored by its prediction of the last third, alone and with
-    its creep term (creep_tau >= 0); the fewest parameters within PARSIMONY
-    of the lowest error win (hyst fit's rule); between candidates with as
-    many parameters the symmetric kind, then the lower error. Returns the
-    candidates, the index chosen (None: none) and whether with its creep."""
-    cands = []
-    for d in delays:
-        if len(x) <= skip + d:
-            break
-        for kind in kinds:
-            for deg, k in _shapes(kind, t_degree):
-                cands.append(_score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau))
-    return (cands, *_choose(cands, creep_tau))
-
-
-def _option_rms(c, with_creep):
-    """The hold-out error of a candidate alone, or with its creep term (NaN
-    when it has none)."""
-    if with_creep:
-        return c["creep_holdout_rms"] if c["creep_tau"] > 0 else math.nan
-    return c["holdout_rms"]
+    """Every candidate (kind, degree, t_degree, delay) and the choice, made
+    by the `hyst` tool's own code (fit_select(), tools/cli/fit_select.c):
+    fitted on the first two thirds, scored by its prediction of the last
+    third, alone and with its creep term (creep_tau >= 0); the fewest
+    parameters within PARSIMONY of the lowest error win; between as many,
+    the symmetric kind, then the lower error. Returns the candidates, the
+    index chosen (None: none) and whether with its creep term."""
+    mask = ((_hyst.FIT_POLY if "poly" in kinds else 0) |
+            (_hyst.FIT_EVERETT if "everett" in kinds else 0))
+    cands, best, with_creep = _hyst.select(
+        x, y, mask, _METHODS[method], lo, hi, skip, delays[0], delays[-1],
+        -1 if t_degree is None else int(t_degree), creep_tau)
+    for c in cands:
+        c["status"] = _status(c)
+    return cands, best, with_creep
 
 
 def _choose(cands, creep_tau=-1.0):
-    """(index, with_creep) of the option hyst fit's rule picks ((None,
-    False) if none was scored) among every candidate alone (unless a time
-    constant is given: creep_tau > 0) and with its creep term (unless
-    creep_tau < 0; one parameter more): the fewest parameters within
-    PARSIMONY of the lowest hold-out error; between as many, the symmetric
-    kind (its compensator is a table), then the lower error."""
-    ways = range(1 if creep_tau > 0 else 0, 1 if creep_tau < 0 else 2)
-    options = [(i, wc) for i, c in enumerate(cands) for wc in ways
-               if math.isfinite(_option_rms(c, wc))]
-    if not options:
-        return None, False
-    limit = min(_option_rms(cands[i], wc) for i, wc in options) * (1 + PARSIMONY)
-    i, wc = min((o for o in options if _option_rms(cands[o[0]], o[1]) <= limit),
-                key=lambda o: (cands[o[0]]["params"] + o[1], cands[o[0]]["kind"] != "poly",
-                               _option_rms(cands[o[0]], o[1]), o[0], o[1]))
-    return i, bool(wc)
+    """(index, with_creep) of the option hyst fit's rule picks among scored
+    candidates ((None, False) if none was scored): fit_choose(), the tool's."""
+    return _hyst.choose(cands, creep_tau)
 
 
 def _creep_option(creep):
@@ -500,7 +501,7 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
     skip = int(skip)
     cands, chosen, with_creep = None, None, False
     if degree is None:
-        delays = range(0, MAX_DELAY + 1) if delay is None else [int(delay)]
+        delays = [0, MAX_DELAY] if delay is None else [int(delay)]
         kinds = KINDS if kind is None else (kind,)
         cands, best, with_creep = _select(x, y, kinds, method, lo, hi, skip, delays,
                                           None if t_degree is None else int(t_degree),

@@ -10,18 +10,10 @@ import struct
 import tempfile
 
 MAGIC = "hyst-model-text 1"
-_KEYS = ("kind", "lo", "hi", "coeffs", "delay", "y_lo", "degree", "terms", "creep_tau",
-         "creep_weight")
-#: Keys each kind needs, and keys only the other kind has.
-_NEEDS = {"poly": ("lo", "hi", "coeffs"), "everett": ("lo", "hi", "y_lo", "degree", "terms")}
-_REFUSES = {"poly": ("y_lo", "degree", "terms"), "everett": ("coeffs",)}
 _MAX_COEFFS = 10  # HYST_MAX_DEGREE + 1 in the default build
+_MAX_BYTES = 1 << 20  # MODEL_TEXT_MAX_BYTES: a larger file is refused unread
 _EVERETT_MAX_DEGREE = 4  # HYST_EVERETT_MAX_DEGREE
 _CREEP_MAX_TERMS = 4  # HYST_CREEP_MAX_TERMS
-_CREEP_KEYS = ("creep_tau", "creep_weight")
-#: The comment line before a creep term, as the host tool writes it.
-_CREEP_COMMENT = ("# creep: the output plus sum of creep_weight[k] s_k, s_k the input lagged "
-                  "with time constant creep_tau[k] samples (from lo at rest)")
 
 
 def everett_terms(degree):
@@ -31,61 +23,6 @@ def everett_terms(degree):
 
 class ModelFileError(ValueError):
     """A malformed model file; the message names the file and the line."""
-
-
-def _numbers(path, no, key, values):
-    """The numbers of one line (a whole number for delay and degree)."""
-    whole = key in ("delay", "degree")
-    numbers = []
-    for i, v in enumerate(values, start=2):
-        try:
-            x = float(v)
-        except ValueError:
-            x = math.nan
-        if not math.isfinite(x) or (whole and (x < 0 or x != int(x))):
-            what = {"delay": "a whole number of samples",
-                    "degree": "a whole number"}.get(key, "a finite number")
-            raise ModelFileError(f"{path}:{no}: field {i}: {v!r} is not {what}")
-        numbers.append(x)
-    return numbers
-
-
-def _creep_numbers(path, no, key, values):
-    """The numbers of a creep_tau or creep_weight line, checked as the host
-    tool checks them (tools/cli/model_file.c), with its messages."""
-    needs = f"{key} needs 1 to {_CREEP_MAX_TERMS} numbers (one per creep term)"
-    if not values:
-        raise ModelFileError(f"{path}:{no}: field 2 is missing: {needs}")
-    if len(values) > _CREEP_MAX_TERMS:
-        raise ModelFileError(f"{path}:{no}: field {_CREEP_MAX_TERMS + 2}: one too many: {needs}")
-    numbers = []
-    for i, v in enumerate(values, start=2):
-        try:
-            x = float(v)
-        except ValueError:
-            x = math.nan
-        if not math.isfinite(x):
-            raise ModelFileError(f"{path}:{no}: field {i}: '{v}' is not a finite number")
-        if key == "creep_tau" and not x >= 1.0:
-            raise ModelFileError(f"{path}:{no}: field {i}: '{v}' is not a time constant of "
-                                 "at least 1 sample")
-        numbers.append(x)
-    return numbers
-
-
-def _creep_complete(path, seen, where):
-    """Both creep keys or neither, as many numbers in each (the host tool's
-    checks and messages, after the model's keys)."""
-    has = [k for k in _CREEP_KEYS if k in seen]
-    if len(has) == 1:
-        other = _CREEP_KEYS[1] if has[0] == _CREEP_KEYS[0] else _CREEP_KEYS[0]
-        raise ModelFileError(f"{path}:{where[has[0]]}: field 1: {has[0]} needs {other} too "
-                             "(creep: both or neither)")
-    if has and len(seen["creep_tau"]) != len(seen["creep_weight"]):
-        n_w, n_t = len(seen["creep_weight"]), len(seen["creep_tau"])
-        what = f"{n_w + 2} is missing" if n_w < n_t else f"{n_t + 2}: one too many"
-        raise ModelFileError(f"{path}:{where['creep_weight']}: field {what}: creep_weight needs "
-                             f"{n_t} numbers, one per creep_tau")
 
 
 def _creep_args(creep_tau, creep_weight):
@@ -109,13 +46,17 @@ def _creep_args(creep_tau, creep_weight):
     return tau, weight
 
 
-def _creep_text(tau, weight):
-    """The creep term's lines after the model's, as the host tool writes them
-    (cli_model_text())."""
-    if tau is None:
-        return ""
-    return (_CREEP_COMMENT + "\ncreep_tau" + "".join(f" {v:.17g}" for v in tau) +
-            "\ncreep_weight" + "".join(f" {v:.17g}" for v in weight) + "\n")
+def _model_call(what, kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
+                creep_weight, *before):
+    """The extension's model_write or model_header (tools/model_text), the
+    model given by its parts (checked there as the reader checks a file)."""
+    from . import _hyst
+    args = [kind, float(lo), float(hi)]
+    if what == "model_write":
+        args.append(float(delay))
+    args += [list(coeffs or []), float(degree or 0), float(y_lo or 0.0), list(terms or []),
+             list(creep_tau or []), list(creep_weight or [])]
+    return getattr(_hyst, what)(*before, *args)
 
 
 def load_model(path):
@@ -125,64 +66,17 @@ def load_model(path):
     ``terms`` (e[i-1][j] of w^i t^j, i = 1..degree, then j = 0..degree-i);
     with a creep term also ``creep_tau`` (time constants, samples) and
     ``creep_weight`` (lists of 1 to 4 numbers, one per lag; the keys are
-    absent when the file has none)."""
-    with open(path, encoding="utf-8") as f:
-        lines = f.read().splitlines()
-    if not lines or lines[0].strip() != MAGIC:
-        first = lines[0].strip() if lines else ""
-        raise ModelFileError(f"{path}:1: {first!r} is not {MAGIC!r} (another format or version)")
-    seen, where = {}, {}
-    for no, line in enumerate(lines[1:], start=2):
-        fields = line.split()
-        if not fields or fields[0].startswith("#"):
-            continue
-        key, values = fields[0], fields[1:]
-        if key not in _KEYS:
-            raise ModelFileError(f"{path}:{no}: field 1: {key!r} is not a key {_KEYS}")
-        if key in seen:
-            raise ModelFileError(f"{path}:{no}: field 1: {key!r} given twice")
-        where[key] = no
-        if key == "kind":
-            if len(values) != 1 or values[0] not in _NEEDS:
-                raise ModelFileError(f"{path}:{no}: field 2: kind must be 'poly' or 'everett'")
-            seen[key] = values[0]
-            continue
-        if key in _CREEP_KEYS:
-            seen[key] = _creep_numbers(path, no, key, values)
-            continue
-        if key == "coeffs" and not 2 <= len(values) <= _MAX_COEFFS:
-            raise ModelFileError(f"{path}:{no}: coeffs needs 2 to {_MAX_COEFFS} numbers")
-        if key == "terms" and not values:
-            raise ModelFileError(f"{path}:{no}: terms needs numbers")
-        if key not in ("coeffs", "terms") and len(values) != 1:
-            raise ModelFileError(f"{path}:{no}: {key} needs one value")
-        numbers = _numbers(path, no, key, values)
-        if key == "degree" and not 1 <= numbers[0] <= _EVERETT_MAX_DEGREE:
-            raise ModelFileError(f"{path}:{no}: field 2: degree must be 1 to "
-                                 f"{_EVERETT_MAX_DEGREE}")
-        seen[key] = numbers if key in ("coeffs", "terms") else numbers[0]
-    if "kind" not in seen:
-        raise ModelFileError(f"{path}: the key kind is missing")
-    kind = seen["kind"]
-    for key in _REFUSES[kind]:
-        if key in seen:
-            raise ModelFileError(f"{path}:{where[key]}: field 1: {key!r} is not a key of "
-                                 f"kind {kind}")
-    for key in _NEEDS[kind]:
-        if key not in seen:
-            raise ModelFileError(f"{path}: the key {key} is missing")
-    _creep_complete(path, seen, where)
-    model = {"kind": kind, "lo": seen["lo"], "hi": seen["hi"], "delay": int(seen.get("delay", 0))}
-    if kind == "poly":
-        model["coeffs"] = seen["coeffs"]
-    else:
-        degree = int(seen["degree"])
-        if len(seen["terms"]) != everett_terms(degree):
-            raise ModelFileError(f"{path}:{where['terms']}: terms needs {everett_terms(degree)} "
-                                 f"numbers for degree {degree}, not {len(seen['terms'])}")
-        model.update(y_lo=seen["y_lo"], degree=degree, terms=seen["terms"])
-    if "creep_tau" in seen:
-        model.update(creep_tau=seen["creep_tau"], creep_weight=seen["creep_weight"])
+    absent when the file has none). The file is read by the format's one
+    reader in C (tools/model_text), the one ``hyst sim --model`` and the
+    MATLAB/Octave functions call: a malformed file raises
+    :class:`ModelFileError` with its words, naming the file, the line and
+    the field."""
+    from . import _hyst  # the extension: this module stays importable without it
+    with open(path, "rb") as f:
+        data = f.read(_MAX_BYTES + 1)
+    model = _hyst.model_parse(data, os.fsdecode(path))
+    if isinstance(model, str):
+        raise ModelFileError(model)
     return model
 
 
@@ -222,27 +116,16 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
     the model as ``hyst fit --save`` writes it.
     ``save_model(path, **load_model(other))`` copies a file."""
     creep_tau, creep_weight = _creep_args(creep_tau, creep_weight)
-    if lo is None or hi is None or not all(math.isfinite(float(v)) for v in (lo, hi)):
-        raise ValueError("a finite domain lo, hi is needed")
-    if int(delay) != delay or delay < 0:
-        raise ValueError("delay must be a whole number of samples")
+    if lo is None or hi is None:
+        raise ValueError("a domain lo, hi is needed")
     if kind == "everett":
         if coeffs is not None:
             raise ValueError("kind 'everett' has terms, not coeffs")
         degree, y_lo, terms = _everett_args(degree, y_lo, terms)
-        text = (f"{MAGIC}\n# hyst model: asymmetric, branch function E on [lo, hi] "
-                "(output at lo y_lo), terms e[i-1][j] of w^i t^j for i = 1..degree, "
-                f"j = 0..degree-i, the output {int(delay)} samples after its input "
-                f"(docs/cli.md)\nkind everett\nlo {float(lo):.17g}\nhi {float(hi):.17g}\n"
-                f"y_lo {y_lo:.17g}\ndelay {int(delay)}\ndegree {degree}\n"
-                "terms " + " ".join(f"{t:.17g}" for t in terms) + "\n")
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
-        text = (f"{MAGIC}\n# hyst model: f0 on [lo, hi], coefficients highest power first, "
-                f"the output {int(delay)} samples after its input (docs/cli.md)\n"
-                f"kind poly\nlo {float(lo):.17g}\nhi {float(hi):.17g}\ndelay {int(delay)}\n"
-                "coeffs " + " ".join(f"{c:.17g}" for c in coeffs) + "\n")
-    text += _creep_text(creep_tau, creep_weight)
+    text = _model_call("model_write", kind, lo, hi, delay, coeffs, degree, y_lo, terms,
+                       creep_tau, creep_weight)
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=os.path.basename(path) + ".")
     try:
@@ -326,22 +209,6 @@ def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals
     return text
 
 
-def _creep_header(name, tau, weight):
-    """The creep term's block of a header, as ``hyst header`` writes it
-    (header_creep() in tools/cli/model_file.c): its count, time constants and
-    weights for hyst_creep_init() with the domain's lo as the rest drive."""
-    if tau is None:
-        return ""
-    return ("\n/* creep: add hyst_creep_step() of the model's input to its output\n"
-            f" * (hyst/creep.h): hyst_creep_init(&creep, {name}_CREEP_TERMS,\n"
-            f" * {name}_creep_tau, {name}_creep_weight, lo) */\n"
-            f"#define {name}_CREEP_TERMS {len(tau)}u\n"
-            f"static const hyst_wide_t {name}_creep_tau[{name}_CREEP_TERMS] = {{"
-            + ", ".join(_literal(v) for v in tau) + "};\n"
-            f"static const hyst_wide_t {name}_creep_weight[{name}_CREEP_TERMS] = {{"
-            + ", ".join(_literal(v) for v in weight) + "};\n")
-
-
 def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,
                 terms=None, delay=0, compensator=False, intervals=None, rows=None,
                 creep_tau=None, creep_weight=None):
@@ -370,31 +237,19 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
     if not compensator and (intervals is not None or rows is not None):
         raise ValueError("intervals and rows size the compensator's table (compensator=True)")
     del delay
-    guard = name.upper() + "_H"
     if kind == "everett":
         degree, y_lo, terms = _everett_args(degree, y_lo, terms)
-        e_rows, k = [], 0
-        for i in range(1, degree + 1):
-            n = degree - i + 1  # j = 0..degree - i
-            e_rows.append("{" + ", ".join(_literal(t) for t in terms[k:k + n]) + "}")
-            k += n
         what = (f"asymmetric model (branch function E),\n * degree {degree}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
-        decl = (f"static const hyst_everett_t {name} = {{\n    {degree}u, {_literal(lo)}, "
-                f"{_literal(hi)}, {_literal(y_lo)},\n    {{" + ",\n     ".join(e_rows) + "}};")
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
-        body = ",\n     ".join(_literal(c) for c in coeffs)
         what = (f"major ascending curve f0,\n * degree {len(coeffs) - 1}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
-        decl = (f"static const hyst_poly_t {name} = {{\n    {len(coeffs) - 1}u, "
-                f"{_literal(lo)}, {_literal(hi)},\n    {{{body}}}}};")
+    head = _model_call("model_header", kind, lo, hi, 0, coeffs, degree, y_lo, terms, creep_tau,
+                       creep_weight, name, True)
     table = (_compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows)
              if compensator else "")
-    includes = '#include "hyst/curve.h"\n'
-    if creep_tau is not None:
-        includes += '#include "hyst/creep.h"\n'
-    return (f"/* Generated by the Python package hyst: {what}. */\n"
-            f"#ifndef {guard}\n#define {guard}\n\n{includes}\n"
-            f"{decl}\n{_creep_header(name, creep_tau, creep_weight)}{table}\n"
-            f"#endif /* {guard} */\n")
+    from . import _hyst
+    return (f"/* Generated by the Python package hyst: {what}. */\n" + head + table +
+            _hyst.model_header(name, False, kind, 0.0, 1.0, [], 0.0, 0.0, [], [], []))
+

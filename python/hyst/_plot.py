@@ -22,14 +22,24 @@ def plot(x, y_model, y_measured=None, *, path=None, title=None):
     prediction vs measurement over the samples and the error.
 
     ``y_model`` is an array of outputs or a model (anything with
-    ``process``), which is then run on ``x`` as it is (not reset).
+    ``process``), which is then run on ``x`` as it is (not reset); a
+    :class:`Fit` with its delay: the prediction of measured output k is its
+    output for input k - delay (its output at the start before), as
+    ``hyst sim --model`` delays it.
     Saves the figure to ``path`` if given; returns the matplotlib figure.
     matplotlib is imported here only: without it this raises ImportError.
     """
     plt = _pyplot()
     x = np.asarray(x)
     if hasattr(y_model, "process"):
-        y_model = y_model.process(np.asarray(x, dtype=y_model.dtype))
+        # a Fit's delay is the measurement's: its output k is the model's for
+        # input k - delay, the model at rest before (as hyst sim --model)
+        delay = int(getattr(y_model, "delay", 0) or 0)
+        rest = y_model.output
+        y_model = np.asarray(y_model.process(np.asarray(x, dtype=y_model.dtype)), dtype=np.float64)
+        if delay > 0:
+            y_model = np.concatenate([np.full(min(delay, y_model.size), float(rest)),
+                                      y_model[:max(y_model.size - delay, 0)]])
     y_model = np.asarray(y_model, dtype=np.float64)
     rows = 1 if y_measured is None else 3
     fig, axes = plt.subplots(rows, 1, figsize=(7, 3 + 2.5 * (rows - 1)), squeeze=False)

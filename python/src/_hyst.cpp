@@ -13,11 +13,15 @@
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/pair.h>
+#include <nanobind/stl/string.h>
 #include <nanobind/stl/unique_ptr.h>
 #include <nanobind/stl/vector.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <limits>
+#include <string>
 #include <memory>
 #include <optional>
 #include <type_traits>
@@ -26,6 +30,13 @@
 
 #include "hyst/hyst.h"
 #include "hyst/version.h"
+
+/* Host modules shared with the `hyst` tool and the MEX gateway: the model
+ * file format (tools/model_text) and fit's hold-out choice (tools/cli). */
+extern "C" {
+#include "fit_select.h"
+#include "model_text.h"
+}
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -188,6 +199,17 @@ template <class X, class Y, class Fn> nb::object block(const In<X> &x, nb::handl
         }
         if (o.shape(0) != n) {
             throw nb::value_error("out must have as many entries as the input");
+        }
+        /* y may be x itself (the library reads each sample before it writes
+         * its output), never another view into it: a sample would be
+         * computed from an output already written over it */
+        const char *xb = reinterpret_cast<const char *>(x.data());
+        const char *ob = reinterpret_cast<const char *>(o.data());
+        if (n > 0u && ob < xb + n * sizeof(X) && xb < ob + n * sizeof(Y) &&
+            !(ob == xb && sizeof(X) == sizeof(Y))) {
+            throw nb::value_error("out overlaps the input without being the input itself: its "
+                                  "outputs would overwrite inputs not yet read (pass out=x, or "
+                                  "an array of its own)");
         }
         fn(x.data(), o.data(), n);
         return nb::borrow(out);
@@ -505,81 +527,41 @@ template <class T> struct Creep {
     }
 };
 
-/* One creep term of time constant tau fitted as `hyst fit` fits it
- * (hyst_creep_fit_holdout(): its weight and offset from the equations of
- * [0, train), u the model's inputs, r its residual, NaN where missing, then
- * the creep run from rest over all of u, scored on [train, len); NaN when
- * train == len). */
-struct CreepFitted {
-    double tau = 0.0, weight = 0.0, offset = 0.0;
-    double holdout_rms = NAN, fit_rms = NAN, max_abs = 0.0;
-};
-
-CreepFitted creep_one(const std::vector<double> &u, const std::vector<double> &r, size_t train,
-                      double x_rest, double tau)
+/* A creep term as a dict: tau (0: none could be fitted), weight, offset,
+ * holdout_rms, fit_rms, max_abs. */
+nb::dict creep_dict(const fit_creep_t &c)
 {
-    CreepFitted out;
-    hyst_creep_holdout_t h;
-    const hyst_wide_t t = static_cast<hyst_wide_t>(tau);
-    const size_t len = u.size();
-    if (hyst_creep_fit_holdout(1u, &t, static_cast<hyst_wide_t>(x_rest), u.data(), r.data(), len,
-                               train < len ? train : len, &h) != HYST_OK) {
-        return out;
-    }
-    out.tau = tau;
-    out.weight = static_cast<double>(h.weight[0]);
-    out.offset = static_cast<double>(h.offset);
-    out.fit_rms = static_cast<double>(h.fit_rms);
-    out.max_abs = static_cast<double>(h.max_abs);
-    out.holdout_rms = h.holdout_used > 0u ? static_cast<double>(h.holdout_rms) : NAN;
-    return out;
+    nb::dict d;
+    d["tau"] = c.tau;
+    d["weight"] = c.weight;
+    d["offset"] = c.offset;
+    d["holdout_rms"] = c.holdout_rms;
+    d["fit_rms"] = c.fit_rms;
+    d["max_abs"] = c.max_abs;
+    return d;
 }
 
-/* Time constants `hyst fit --creep auto` tries (samples): those up to the
- * run's length (tools/cli/fit_creep.c). */
-constexpr double CREEP_TAUS[] = {100.0,  200.0,  500.0,   1000.0,
-                                 2000.0, 5000.0, 10000.0, 20000.0};
-
-/* The creep term `hyst fit` fits to a model's run (fit_creep_score()): tau
- * > 0 that time constant; 0 each of CREEP_TAUS up to the run's length, the
- * lowest hold-out error kept. A dict of tau (0: none could be fitted),
- * weight, offset, holdout_rms, fit_rms, max_abs. */
+/* The creep term `hyst fit` fits to a model's run (fit_creep_score(): u the
+ * model's inputs, r its residual, fitted on [0, train) and scored after;
+ * tau > 0 that time constant, 0 the best of the tool's series). */
 nb::dict creep_score(const std::vector<double> &u, const std::vector<double> &r, size_t train,
                      double x_rest, double tau)
 {
     if (r.size() != u.size()) {
         raise_status(HYST_ERR_ARG, "u and r differ in length");
     }
-    CreepFitted best;
-    if (tau > 0) {
-        best = creep_one(u, r, train, x_rest, tau);
-    } else {
-        for (const double t : CREEP_TAUS) {
-            if (t > static_cast<double>(u.size())) {
-                break;
-            }
-            const CreepFitted c = creep_one(u, r, train, x_rest, t);
-            if (std::isfinite(c.holdout_rms) && !(best.holdout_rms <= c.holdout_rms)) {
-                best = c;
-            }
-        }
-    }
-    nb::dict d;
-    d["tau"] = best.tau;
-    d["weight"] = best.weight;
-    d["offset"] = best.offset;
-    d["holdout_rms"] = best.holdout_rms;
-    d["fit_rms"] = best.fit_rms;
-    d["max_abs"] = best.max_abs;
-    return d;
+    fit_creep_t c;
+    fit_creep_score(u.data(), r.data(), u.size(), train < u.size() ? train : u.size(), x_rest,
+                    tau, &c);
+    return creep_dict(c);
 }
 
 /*
  * A model of double run over a record as `hyst fit` scores it
- * (tools/cli/fit_select.c, fit_model_run_creep()): from rest, x[k] paired
+ * (fit_model_run_creep(), tools/cli/fit_select.c): from rest, x[k] paired
  * with y[k + delay] for skip <= k < n - delay; its RMS error over k >= from
  * (NaN when none), and, creep_tau >= 0, the creep term fitted to its
- * residual on the samples before `from` and scored after (creep_score()).
+ * residual on the samples before `from` and scored after.
  */
 nb::dict holdout(Real<double> &m, const In<double> &x, const In<double> &y, size_t skip,
                  size_t delay, size_t from, double creep_tau)
@@ -588,34 +570,23 @@ nb::dict holdout(Real<double> &m, const In<double> &x, const In<double> &y, size
     if (y.shape(0) != n) {
         raise_status(HYST_ERR_ARG, "x and y differ in length");
     }
-    if (m.has_creep || m.inverse) {
-        raise_status(HYST_ERR_ARG, "holdout runs a model without a creep term");
+    if (m.has_creep || m.inverse || std::strcmp(m.kind, "pwl") == 0) {
+        raise_status(HYST_ERR_ARG, "holdout runs a model of kind poly or everett, without a "
+                                   "creep term");
     }
-    const double *px = x.data(), *py = y.data();
-    const size_t len = n > delay + skip ? n - delay - skip : 0u;
-    std::vector<double> u(creep_tau >= 0 ? len : 0u), r(u.size());
-    double ss = 0.0;
-    size_t used = 0u;
-    for (size_t k = skip; k + delay < n; ++k) {
-        const double ym = hyst_f64_step(&m.S, px[k]);
-        const bool ok = std::isfinite(px[k]) && std::isfinite(py[k + delay]);
-        if (!u.empty()) { /* the input as the model took it (clamped; the last one for NaN) */
-            u[k - skip] = hyst_f64_input(&m.S);
-            r[k - skip] = ok ? py[k + delay] - ym : NAN;
-        }
-        if (ok && k >= from) {
-            const double e = ym - py[k + delay];
-            ss += e * e;
-            ++used;
-        }
+    hyst_poly_t f0{};
+    const bool poly = std::strcmp(m.kind, "poly") == 0;
+    if (poly) {
+        f0 = make_poly(m.coeffs, m.lo, m.hi);
     }
+    fit_creep_t c{};
+    c.tau = creep_tau >= 0 ? creep_tau : 0.0;
+    const double rms = fit_model_run_creep(poly ? &f0 : nullptr, poly ? nullptr : &m.fwd,
+                                           x.data(), y.data(), n, skip, delay, from, nullptr,
+                                           nullptr, creep_tau >= 0 ? &c : nullptr);
     nb::dict d;
-    d["rms"] = used > 0u ? std::sqrt(ss / static_cast<double>(used)) : NAN;
-    if (creep_tau >= 0 && len > 0u) {
-        d["creep"] = creep_score(u, r, from > skip ? from - skip : 0u, m.lo, creep_tau);
-    } else {
-        d["creep"] = nb::none();
-    }
+    d["rms"] = rms;
+    d["creep"] = creep_tau >= 0 && n > skip + delay ? nb::object(creep_dict(c)) : nb::none();
     return d;
 }
 
@@ -700,9 +671,9 @@ template <class T> struct Pi {
     std::vector<double> weights() const { return std::vector<double>(w.begin(), w.begin() + static_cast<long>(P.n)); }
 };
 
-/* Identification of f0 from recorded arrays (hyst_ident_fit()). */
-nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int method, double lo,
-             double hi, size_t skip, size_t delay)
+/* A fit's configuration (ident.h) from fit()'s and select()'s arguments. */
+hyst_ident_config_t ident_config(const In<double> &x, const In<double> &y, unsigned degree,
+                                 int method, double lo, double hi, size_t skip, size_t delay)
 {
     if (x.shape(0) != y.shape(0)) {
         raise_status(HYST_ERR_ARG, "x and y differ in length");
@@ -714,6 +685,14 @@ nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int meth
     cfg.hi = hi;
     cfg.skip = skip;
     cfg.delay = delay;
+    return cfg;
+}
+
+/* Identification of f0 from recorded arrays (hyst_ident_fit()). */
+nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int method, double lo,
+             double hi, size_t skip, size_t delay)
+{
+    const hyst_ident_config_t cfg = ident_config(x, y, degree, method, lo, hi, skip, delay);
     hyst_ident_t work;
     hyst_ident_result_t res;
     check(hyst_ident_fit(&cfg, x.data(), y.data(), x.shape(0), &work, &res), "fit");
@@ -803,6 +782,204 @@ nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, 
     return d;
 }
 
+/* ---- the model file format, one implementation (tools/model_text) ---- */
+
+/* The load_model() dict of a model as the reader gives it. */
+nb::dict model_dict(const model_text_t &m)
+{
+    nb::dict d;
+    d["kind"] = m.kind == MODEL_TEXT_EVERETT ? "everett" : "poly";
+    d["lo"] = m.lo;
+    d["hi"] = m.hi;
+    d["delay"] = m.delay;
+    if (m.kind == MODEL_TEXT_EVERETT) {
+        d["y_lo"] = m.y_lo;
+        d["degree"] = m.degree;
+        d["terms"] = std::vector<double>(m.terms, m.terms + m.nterms);
+    } else {
+        d["coeffs"] = std::vector<double>(m.coeffs, m.coeffs + m.ncoef);
+    }
+    if (m.ncreep > 0u) {
+        d["creep_tau"] = std::vector<double>(m.creep_tau, m.creep_tau + m.ncreep);
+        d["creep_weight"] = std::vector<double>(m.creep_weight, m.creep_weight + m.ncreep);
+    }
+    return d;
+}
+
+/* A whole file's bytes read as a model: its dict, or the reader's message
+ * (a str) naming path, line and field. */
+nb::object model_parse(const nb::bytes &data, const std::string &path)
+{
+    model_text_t m;
+    char msg[MODEL_TEXT_MSG_SIZE];
+    if (model_text_parse(data.c_str(), data.size(), path.c_str(), &m, msg, sizeof msg) != 0) {
+        return nb::str(msg);
+    }
+    return model_dict(m);
+}
+
+/* Copies v into a[0..cap) and sets *n to its length (the checks refuse a
+ * length beyond cap before they read a). */
+void copy_numbers(const std::vector<double> &v, double *a, size_t cap, size_t *n)
+{
+    std::memcpy(a, v.data(), (v.size() < cap ? v.size() : cap) * sizeof(double));
+    *n = v.size();
+}
+
+/* A model from its parts, checked as the reader checks a file (ValueError
+ * with the reason otherwise). */
+model_text_t model_of(const std::string &kind, double lo, double hi, double delay,
+                      const std::vector<double> &coeffs, double degree, double y_lo,
+                      const std::vector<double> &terms, const std::vector<double> &creep_tau,
+                      const std::vector<double> &creep_weight)
+{
+    model_text_t m;
+    char msg[MODEL_TEXT_MSG_SIZE];
+    std::memset(&m, 0, sizeof m);
+    if (kind != "poly" && kind != "everett") {
+        throw nb::value_error("kind must be 'poly' or 'everett'");
+    }
+    if (!(delay >= 0.0 && delay <= static_cast<double>(MODEL_TEXT_MAX_DELAY)) ||
+        delay != std::floor(delay)) {
+        throw nb::value_error("delay is not a whole number of samples in 0..1000000000");
+    }
+    m.kind = kind == "everett" ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
+    m.lo = lo;
+    m.hi = hi;
+    m.delay = static_cast<unsigned long>(delay);
+    if (m.kind == MODEL_TEXT_EVERETT) {
+        if (!(degree >= 1.0 && degree <= HYST_EVERETT_MAX_DEGREE) || degree != std::floor(degree)) {
+            throw nb::value_error("degree is not a degree in 1..4");
+        }
+        m.degree = static_cast<unsigned>(degree);
+        m.y_lo = y_lo;
+        copy_numbers(terms, m.terms, HYST_EVERETT_TERMS, &m.nterms);
+    } else {
+        copy_numbers(coeffs, m.coeffs, HYST_MAX_DEGREE + 1u, &m.ncoef);
+    }
+    copy_numbers(creep_tau, m.creep_tau, MODEL_TEXT_CREEP_MAX_TERMS, &m.ncreep);
+    copy_numbers(creep_weight, m.creep_weight, MODEL_TEXT_CREEP_MAX_TERMS, &m.ncreep_weights);
+    if (model_text_check(&m, msg, sizeof msg) != 0) {
+        throw nb::value_error(msg);
+    }
+    return m;
+}
+
+/* The file's text of a model (model_text_write()). */
+std::string model_write(const std::string &kind, double lo, double hi, double delay,
+                        const std::vector<double> &coeffs, double degree, double y_lo,
+                        const std::vector<double> &terms, const std::vector<double> &creep_tau,
+                        const std::vector<double> &creep_weight)
+{
+    const model_text_t m =
+        model_of(kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau, creep_weight);
+    std::vector<char> buf(16384u);
+    const size_t len = model_text_write(&m, buf.data(), buf.size());
+    if (len == 0u) {
+        raise_status(HYST_ERR_NOSPACE, "model file text too long");
+    }
+    return std::string(buf.data(), len);
+}
+
+/* A header's parts around a compensator's table: open (the guard, the
+ * model's declaration and its creep term) or, open false, the close. */
+std::string model_header(const std::string &name, bool open, const std::string &kind, double lo,
+                         double hi, const std::vector<double> &coeffs, double degree,
+                         double y_lo, const std::vector<double> &terms,
+                         const std::vector<double> &creep_tau,
+                         const std::vector<double> &creep_weight)
+{
+    if (!model_text_identifier(name.c_str()) || name.size() != std::strlen(name.c_str())) {
+        throw nb::value_error(("'" + name + "' is not a C identifier").c_str());
+    }
+    std::vector<char> buf(32768u);
+    size_t len = 0u;
+    int over;
+    if (open) {
+        const model_text_t m =
+            model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, creep_tau, creep_weight);
+        over = model_text_header_open(buf.data(), buf.size(), &len, name.c_str(), &m);
+    } else {
+        over = model_text_header_close(buf.data(), buf.size(), &len, name.c_str());
+    }
+    if (over != 0) {
+        raise_status(HYST_ERR_NOSPACE, "header text too long");
+    }
+    return std::string(buf.data(), len);
+}
+
+/* ---- fit's hold-out choice, the `hyst` tool's (tools/cli/fit_select.c) ---- */
+
+/* Every candidate of the kinds (FIT_POLY | FIT_EVERETT) at each delay
+ * delay_first..max_delay, fitted on the first two thirds and scored on the
+ * last (fit_select()): a list of dicts, the index chosen (None: none) and
+ * whether with its creep term. */
+nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds, int method, double lo,
+                 double hi, size_t skip, size_t delay_first, size_t max_delay, long t_degree,
+                 double creep_tau)
+{
+    const size_t n = x.shape(0);
+    const hyst_ident_config_t base = ident_config(x, y, 0u, method, lo, hi, skip, delay_first);
+    if (max_delay < delay_first || max_delay > FIT_MAX_DELAY + 1000u) {
+        raise_status(HYST_ERR_ARG, "delays out of range");
+    }
+    std::vector<fit_candidate_t> cand((HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES) *
+                                      (max_delay - delay_first + 1u));
+    size_t best = 0u;
+    int with_creep = 0;
+    const size_t count =
+        fit_select(&base, kinds, 0u, t_degree < 0 ? FIT_ANY_T_DEGREE : static_cast<unsigned>(t_degree),
+                   creep_tau, x.data(), y.data(), n, max_delay, cand.data(), cand.size(), &best,
+                   &with_creep);
+    nb::list out;
+    for (size_t i = 0u; i < count; ++i) {
+        const fit_candidate_t &c = cand[i];
+        const bool everett = c.kind == FIT_EVERETT;
+        nb::dict d;
+        d["kind"] = everett ? "everett" : "poly";
+        d["degree"] = c.degree;
+        d["t_degree"] = everett ? nb::cast(c.t_degree) : nb::none();
+        d["delay"] = c.delay;
+        d["params"] = fit_parameters(c.kind, c.degree, c.t_degree);
+        d["holdout_rms"] = c.holdout_rms;
+        d["fit_rms"] = c.fit_rms;
+        d["status_code"] = static_cast<int>(c.status);
+        d["increasing"] = everett || c.fit.increasing != 0;
+        d["creep_tau"] = c.creep.tau;
+        d["creep_weight"] = c.creep.tau > 0 ? c.creep.weight : NAN;
+        d["creep_holdout_rms"] = c.creep.tau > 0 ? c.creep.holdout_rms : NAN;
+        out.append(d);
+    }
+    return nb::make_tuple(out, best == (size_t)-1 ? nb::none() : nb::cast(best),
+                          with_creep != 0);
+}
+
+/* fit_choose() over candidates given as dicts (kind, degree, t_degree,
+ * holdout_rms and, optionally, creep_tau, creep_holdout_rms): the rule
+ * select() applies, alone. */
+nb::tuple choose(const nb::list &cands, double creep_tau)
+{
+    std::vector<fit_candidate_t> cand(nb::len(cands));
+    for (size_t i = 0u; i < cand.size(); ++i) {
+        const nb::dict d = nb::cast<nb::dict>(cands[i]);
+        fit_candidate_t &c = cand[i];
+        std::memset(&c, 0, sizeof c);
+        c.kind = nb::cast<std::string>(d["kind"]) == "everett" ? FIT_EVERETT : FIT_POLY;
+        c.degree = nb::cast<unsigned>(d["degree"]);
+        c.t_degree = d.contains("t_degree") && !d["t_degree"].is_none()
+                         ? nb::cast<unsigned>(d["t_degree"])
+                         : 0u;
+        c.holdout_rms = nb::cast<double>(d["holdout_rms"]);
+        c.creep.tau = d.contains("creep_tau") ? nb::cast<double>(d["creep_tau"]) : 0.0;
+        c.creep.holdout_rms =
+            d.contains("creep_holdout_rms") ? nb::cast<double>(d["creep_holdout_rms"]) : NAN;
+    }
+    size_t best = 0u;
+    int with_creep = 0;
+    fit_choose(cand.data(), cand.size(), creep_tau, &best, &with_creep);
+    return nb::make_tuple(best == (size_t)-1 ? nb::none() : nb::cast(best), with_creep != 0);
+}
+
 /*
  * Binds process(x, out=None) of class C: numpy arrays of the input dtype map
  * without a copy, other arrays and sequences go through numpy.asarray.
@@ -818,8 +995,35 @@ template <class X, class C, class Cls> void def_process(Cls &cls)
             const char *dtype = std::is_floating_point_v<X>
                                     ? (sizeof(X) == 4u ? "float32" : "float64")
                                     : (sizeof(X) == 2u ? "uint16" : "uint32");
-            nb::object a = nb::module_::import_("numpy").attr("ascontiguousarray")(
-                x, "dtype"_a = dtype);
+            nb::module_ np = nb::module_::import_("numpy");
+            nb::object a = np.attr("asarray")(x);
+            const int ndim = nb::cast<int>(a.attr("ndim"));
+            if (ndim != 1) {
+                throw nb::value_error(("process takes a 1-d array of samples, not a " +
+                                       std::to_string(ndim) + "-d one")
+                                          .c_str());
+            }
+            if constexpr (!std::is_floating_point_v<X>) {
+                /* codes: whole numbers the code type holds, as step() takes
+                 * them; numpy's cast would wrap -1 to full scale and NaN to 0 */
+                nb::object f = np.attr("asarray")(a, "dtype"_a = "float64");
+                nb::object ok = np.attr("isfinite")(f) & (f.attr("__eq__")(np.attr("floor")(f))) &
+                                (f.attr("__ge__")(0)) &
+                                (f.attr("__le__")(static_cast<double>(std::numeric_limits<X>::max())));
+                /* numpy's scalars to Python's: bool, int */
+                if (!nb::cast<bool>(np.attr("all")(ok).attr("__bool__")())) {
+                    const size_t i = nb::cast<size_t>(np.attr("argmin")(ok).attr("__index__")());
+                    const double v =
+                        nb::cast<double>(f.attr("__getitem__")(i).attr("__float__")());
+                    char msg[128];
+                    (void)std::snprintf(msg, sizeof msg,
+                                        "code %.17g at index %zu is not a whole number in 0..%lu",
+                                        v, i,
+                                        static_cast<unsigned long>(std::numeric_limits<X>::max()));
+                    throw nb::value_error(msg);
+                }
+            }
+            a = np.attr("ascontiguousarray")(a, "dtype"_a = dtype);
             return self.process(nb::cast<In<X>>(a), out);
         },
         "x"_a, "out"_a = nb::none());
@@ -1029,6 +1233,23 @@ NB_MODULE(_hyst, m)
           "sample first on and, creep_tau >= 0, the creep term fitted to its residual.");
     m.def("creep_score", &creep_score, "u"_a, "r"_a, "train"_a, "x_rest"_a, "tau"_a,
           "The creep term hyst fit fits to a model's inputs u and residual r.");
+    m.def("model_parse", &model_parse, "data"_a, "path"_a,
+          "A model file's bytes read by the format's one reader: its dict, or the message.");
+    m.def("model_write", &model_write, "kind"_a, "lo"_a, "hi"_a, "delay"_a, "coeffs"_a,
+          "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
+          "A model file's text (ValueError for what the reader would refuse).");
+    m.def("model_header", &model_header, "name"_a, "open"_a, "kind"_a, "lo"_a, "hi"_a,
+          "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
+          "A firmware header's opening (the model) or close, as `hyst header` writes them.");
+    m.def("select", &select_candidates, "x"_a, "y"_a, "kinds"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
+          "delay_first"_a, "max_delay"_a, "t_degree"_a, "creep_tau"_a,
+          "hyst fit's hold-out choice (fit_select()): (candidates, index chosen, with creep).");
+    m.def("choose", &choose, "candidates"_a, "creep_tau"_a = -1.0,
+          "hyst fit's rule (fit_choose()) over scored candidates: (index or None, with creep).");
+    m.attr("FIT_POLY") = static_cast<int>(FIT_POLY);
+    m.attr("FIT_EVERETT") = static_cast<int>(FIT_EVERETT);
+    m.attr("FIT_MAX_DELAY") = static_cast<unsigned long>(FIT_MAX_DELAY);
+    m.attr("FIT_PARSIMONY") = FIT_PARSIMONY;
     m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a = -1);
 }

@@ -233,8 +233,13 @@ def test_auto_choice_on_major_loops_of_a_symmetric_plant():
 def test_choice_rule_fewest_parameters_then_symmetric_then_lower_error():
     from hyst._api import PARSIMONY, _choose
 
+    # the rule is the tool's (fit_choose()), which counts a candidate's
+    # parameters from its shape: poly degree + 1, everett E's terms + 1
+    shape = {("everett", 4): (2, 1), ("everett", 6): (3, 1)}
+
     def cand(kind, params, rms):
-        return {"kind": kind, "params": params, "holdout_rms": rms}
+        degree, t_degree = shape[kind, params] if kind == "everett" else (params - 1, None)
+        return {"kind": kind, "degree": degree, "t_degree": t_degree, "holdout_rms": rms}
     best = 1.0
     within = best * (1 + PARSIMONY / 2)
     # the fewest parameters within the margin, whatever its kind

@@ -10,6 +10,7 @@
 #define HYST_CLI_H
 
 #include "hyst/curve.h"
+#include "model_text.h"
 
 #include <stddef.h>
 #include <stdio.h>
@@ -35,8 +36,8 @@ int cli_fail(const char *cmd, const char *fmt, ...)
  * beyond the first CLI_QUOTE_MAX bytes "..." and the length in bytes:
  * '7777...' (1048577 bytes). cli_quote_n() takes @p len bytes of @p s, NULs
  * included. Both write into @p buf (CLI_QUOTE_SIZE chars) and return it. */
-#define CLI_QUOTE_MAX 40
-#define CLI_QUOTE_SIZE (4 * CLI_QUOTE_MAX + 40)
+#define CLI_QUOTE_MAX MODEL_TEXT_QUOTE_MAX
+#define CLI_QUOTE_SIZE MODEL_TEXT_QUOTE_SIZE
 const char *cli_quote(char *buf, const char *s);
 const char *cli_quote_n(char *buf, const char *s, size_t len);
 
@@ -119,6 +120,11 @@ int cli_header_path(const char *cmd, const char *option, const char *dir, const 
 /* Before anything is computed or printed: a target that cannot be replaced
  * (too long a path, a directory). 0, or 1 after a message. */
 int cli_replace_check(cli_replace_t *r, const char *cmd, const char *what, const char *path);
+/* Before anything is read: the files a command writes (header, save: NULL
+ * when not written) are neither its input (NULL or "-": standard input)
+ * nor each other (checked by inode where they exist, else by directory and
+ * name). 0, or 1 after a message naming the options. */
+int cli_outputs_distinct(const char *cmd, const char *input, const char *header, const char *save);
 /* The text into the temporary file, synced and closed: 0, or 1 after a
  * message (and no temporary file left). */
 int cli_replace_write(cli_replace_t *r, const char *text, size_t len);
@@ -127,49 +133,31 @@ int cli_replace_commit(cli_replace_t *r);
 /* Removes the temporary file, if any. */
 void cli_replace_discard(cli_replace_t *r);
 
-/* ---- model files, hyst-model-text 1 (model_file.c) ---- */
+/* ---- model files, hyst-model-text 1 (model_file.c over tools/model_text) ---- */
 
-/* Creep terms a model file may hold (HYST_CREEP_MAX_TERMS). */
-#define CLI_CREEP_MAX_TERMS 4
-
-/* The kinds a model file holds (its key `kind`). */
-enum { CLI_MODEL_POLY = 0, CLI_MODEL_EVERETT = 1 };
-
-typedef struct cli_model {
-    int kind;          /* CLI_MODEL_POLY or CLI_MODEL_EVERETT */
-    double coeffs[10]; /* poly: c_n ... c_0, highest power first */
-    size_t ncoef;      /* poly: degree + 1 */
-    double lo, hi;     /* domain */
-    unsigned long delay; /* the output follows its input this many samples later */
-    unsigned degree;   /* everett: total degree of E, 1..HYST_EVERETT_MAX_DEGREE */
-    double y_lo;       /* everett: the output at lo after reset */
-    /* everett: e[i - 1][j], the coefficient of w^i t^j, in the file's order
-     * i = 1..degree, then j = 0..degree - i */
-    double terms[HYST_EVERETT_TERMS];
-    size_t nterms;     /* everett: degree (degree + 1) / 2 */
-    /* creep (hyst/creep.h), either kind: lags of the model's input with
-     * these time constants (samples) and weights, added to its output; 0
-     * terms: none */
-    double creep_tau[CLI_CREEP_MAX_TERMS];
-    double creep_weight[CLI_CREEP_MAX_TERMS];
-    size_t ncreep;
-    size_t ncreep_weights; /* as read (the reader checks it equals ncreep) */
-} cli_model_t;
+/* The format's one implementation, under the tool's names. */
+#define CLI_CREEP_MAX_TERMS MODEL_TEXT_CREEP_MAX_TERMS
+#define CLI_MODEL_POLY MODEL_TEXT_POLY
+#define CLI_MODEL_EVERETT MODEL_TEXT_EVERETT
+typedef model_text_t cli_model_t;
+#define cli_model_text model_text_write
+#define cli_header_open model_text_header_open
+#define cli_header_close model_text_header_close
+#define cli_everett_terms model_text_everett_terms
+#define cli_model_to_everett model_text_to_everett
+#define cli_model_from_everett model_text_from_everett
+#define cli_c_identifier model_text_identifier
+#define cli_append model_text_append
 
 /* Reads a model file; 0, or 1 after a message naming file, line and field. */
 int cli_model_read(const char *cmd, const char *path, cli_model_t *m);
 /* The same from an open stream (path names it in messages); not closed. */
 int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m);
-/* The file's text into buf; its length, or 0 if it did not fit. */
-size_t cli_model_text(const cli_model_t *m, char *buf, size_t size);
 /* Appends the firmware header's declaration of the model (include guard,
  * 'static const hyst_poly_t NAME = {...};' or, for the asymmetric kind,
  * 'static const hyst_everett_t NAME = {...};') to buf[*len..size); 1 when
  * it did not fit. */
 int cli_header_model(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m);
-/* The same in two parts: the guard's opening and the model, then its end. */
-int cli_header_open(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m);
-int cli_header_close(char *buf, size_t size, size_t *len, const char *name);
 /* header --compensator (header_table.c): the model's compensator table in
  * float and in double, sealed, for the const constructors (curve.h);
  * appended like the model. The size of buffer it needs at most, and the
@@ -178,24 +166,11 @@ size_t cli_header_table_size(const cli_model_t *m, size_t rows, size_t intervals
 int cli_header_table(const char *cmd, const char *model, char *buf, size_t size, size_t *len,
                      const char *name, const cli_model_t *m, size_t rows, size_t intervals);
 
-/* The asymmetric kind: E's terms in the file's order <-> hyst_everett_t. */
-size_t cli_everett_terms(unsigned degree);
-void cli_model_to_everett(const cli_model_t *m, hyst_everett_t *e);
-void cli_model_from_everett(cli_model_t *m, const hyst_everett_t *e, unsigned long delay);
 /* The library's curve of an everett model (hyst_f64_curve_from_everett(),
  * which checks that E is monotone on the triangle): 0, or 1 after a message
  * with the library's reason. */
 int cli_everett_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c);
 
-/* 1 if s is a C identifier of fewer than 200 characters (a header's NAME). */
-int cli_c_identifier(const char *s);
-
-/* Appends printf output to buf[*len..size); 1 when it did not fit. */
-int cli_append(char *buf, size_t size, size_t *len, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 4, 5)))
-#endif
-    ;
 
 /* ---- data files (cli_read.c): columns separated by blanks, ',' or ';' ---- */
 

@@ -23,40 +23,9 @@ int cli_fail(const char *cmd, const char *fmt, ...)
     return 1;
 }
 
-/* Appends byte @p c to @p out, escaped unless printable ASCII; returns the
- * new end. At most 4 chars. */
-static char *put_escaped(char *out, unsigned char c)
-{
-    static const char hex[] = "0123456789abcdef";
-    if (c == '\\' || c == '\'') {
-        *out++ = '\\';
-        *out++ = (char)c;
-    } else if (c >= 0x20u && c < 0x7fu) {
-        *out++ = (char)c;
-    } else {
-        *out++ = '\\';
-        *out++ = 'x';
-        *out++ = hex[c >> 4];
-        *out++ = hex[c & 0xfu];
-    }
-    return out;
-}
-
 const char *cli_quote_n(char *buf, const char *s, size_t len)
 {
-    char *out = buf;
-    size_t i;
-    *out++ = '\'';
-    for (i = 0u; i < len && i < CLI_QUOTE_MAX; ++i) {
-        out = put_escaped(out, (unsigned char)s[i]);
-    }
-    if (len > CLI_QUOTE_MAX) {
-        (void)sprintf(out, "...' (%lu bytes)", (unsigned long)len);
-    } else {
-        *out++ = '\'';
-        *out = '\0';
-    }
-    return buf;
+    return model_text_quote(buf, s, len);
 }
 
 const char *cli_quote(char *buf, const char *s) { return cli_quote_n(buf, s, strlen(s)); }
@@ -80,7 +49,7 @@ const char *cli_file_name(const char *path)
         if (*p == '\'') {
             *out++ = *p; /* the name is not quoted: no need to escape a quote */
         } else {
-            out = put_escaped(out, (unsigned char)*p);
+            out = model_text_escape(out, (unsigned char)*p);
         }
     }
     (void)strcpy(out, *p != '\0' ? "..." : "");
@@ -237,10 +206,7 @@ int cli_opt_list(const cli_args_t *a, const char *v, double *out, size_t min, si
 
 void cli_c_number(char *buf, size_t len, double v, int digits)
 {
-    (void)snprintf(buf, len, "%.*g", digits, v);
-    if (strpbrk(buf, ".eEn") == NULL && strlen(buf) + 3u < len) {
-        strcat(buf, ".0");
-    }
+    model_text_c_number(buf, len, v, digits);
 }
 
 void cli_c_literal(char *buf, size_t len, double v) { cli_c_number(buf, len, v, 17); }

@@ -301,6 +301,10 @@ int cli_reader_next(cli_reader_t *r, double *v)
             return -cli_fail(r->cmd, "%s:%lu: NUL byte at column %lu (not a text file?)",
                              r->name, r->lineno, (unsigned long)nul);
         }
+        if (r->lineno == 1ul && strncmp(r->line, "\xEF\xBB\xBF", 3u) == 0) {
+            /* a UTF-8 byte-order mark (a spreadsheet's "CSV UTF-8"): not data */
+            memmove(r->line, r->line + 3, strlen(r->line + 3) + 1u);
+        }
         while (is_space(*p)) {
             ++p;
         }

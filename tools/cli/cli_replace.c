@@ -66,6 +66,48 @@ int cli_replace_check(cli_replace_t *r, const char *cmd, const char *what, const
     return 0;
 }
 
+/* Whether paths a and b name one file: one inode when both exist, else the
+ * same name in the same directory. */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    const char *na = strrchr(a, '/'), *nb = strrchr(b, '/');
+    char da[CLI_PATH_MAX], db[CLI_PATH_MAX];
+    if (stat(a, &sa) == 0 && stat(b, &sb) == 0) {
+        return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    }
+    na = na != NULL ? na + 1 : a;
+    nb = nb != NULL ? nb + 1 : b;
+    if (strcmp(na, nb) != 0 || (size_t)(na - a) >= sizeof da || (size_t)(nb - b) >= sizeof db) {
+        return 0;
+    }
+    (void)sprintf(da, "%.*s", na == a ? 1 : (int)(na - a), na == a ? "." : a);
+    (void)sprintf(db, "%.*s", nb == b ? 1 : (int)(nb - b), nb == b ? "." : b);
+    return stat(da, &sa) == 0 && stat(db, &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
+int cli_outputs_distinct(const char *cmd, const char *input, const char *header, const char *save)
+{
+    const int from_file = input != NULL && strcmp(input, "-") != 0;
+    if (save != NULL && from_file && same_file(save, input)) {
+        return cli_fail(cmd, "option --save: %s is the record being read: the model file would "
+                             "replace it",
+                        cli_file_name(save));
+    }
+    if (header != NULL && from_file && same_file(header, input)) {
+        return cli_fail(cmd, "option --header: %s is the record being read: the header would "
+                             "replace it",
+                        cli_file_name(header));
+    }
+    if (header != NULL && save != NULL && same_file(header, save)) {
+        return cli_fail(cmd, "options --header and --save both name %s: the header and the model "
+                             "file would replace each other",
+                        cli_file_name(save));
+    }
+    return 0;
+}
+
 void cli_replace_discard(cli_replace_t *r)
 {
     if (r->tmp[0] != '\0') {

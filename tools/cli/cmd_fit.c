@@ -426,15 +426,21 @@ typedef struct fit_final {
 } fit_final_t;
 
 /* 1 after a message if a number of the result overflowed (the library sums
- * squared residuals: outputs near 1e154 are enough). */
+ * squared residuals: outputs near 1e154 are enough; a coefficient of x^k is
+ * about y / x^k: inputs spanning 1e-100 or less are enough too). */
 static int not_finite(const char *name, const fit_final_t *f)
 {
     static const char *const names[4] = {"domain LO", "domain HI", "RMS residual",
                                          "max residual"};
     const cli_model_t *m = &f->model;
     const double more[4] = {m->lo, m->hi, f->rms, f->max_abs};
-    static const char advice[] = "the numbers are too large, rescale them";
+    char advice[96] = "the numbers are too large, rescale them";
     size_t k;
+    if (m->hi - m->lo < 1e-100) {
+        (void)snprintf(advice, sizeof advice,
+                       "the inputs span only %g: the numbers are too small, rescale them",
+                       m->hi - m->lo);
+    }
     for (k = 0u; k < m->ncoef; ++k) {
         if (!isfinite(m->coeffs[k])) {
             return cli_fail("fit", "%s: the result is not finite (coefficient c%lu %g): %s", name,
@@ -751,6 +757,9 @@ int cmd_fit(int argc, char **argv)
         return 1;
     }
     if (o.save != NULL && cli_replace_check(&ms, "fit", "model file", o.save) != 0) {
+        return 1;
+    }
+    if (cli_outputs_distinct("fit", o.file, o.header != NULL ? h.path : NULL, o.save) != 0) {
         return 1;
     }
     name = cli_file_name(o.file);

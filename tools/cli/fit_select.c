@@ -260,15 +260,8 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
                   size_t n, size_t max_delay, fit_candidate_t *cand, size_t max_cand,
                   size_t *best, int *with_creep)
 {
-    size_t count = 0u, d, i;
+    size_t count = 0u, d;
     unsigned deg, k;
-    /* the options compared: without creep unless a time constant is given,
-     * with it unless creep_tau < 0 */
-    const int wc_first = creep_tau > 0 ? 1 : 0, wc_last = creep_tau < 0 ? 0 : 1;
-    int wc, low_creep = 0;
-    double lowest = NAN;
-    *best = (size_t)-1;
-    *with_creep = 0;
     for (d = base->delay; d <= max_delay; ++d) {
         if (n <= base->skip + d) {
             break;
@@ -285,6 +278,21 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
             }
         }
     }
+    fit_choose(cand, count, creep_tau, best, with_creep);
+    return count;
+}
+
+void fit_choose(const fit_candidate_t *cand, size_t count, double creep_tau, size_t *best,
+                int *with_creep)
+{
+    /* the options compared: without creep unless a time constant is given,
+     * with it unless creep_tau < 0 */
+    const int wc_first = creep_tau > 0 ? 1 : 0, wc_last = creep_tau < 0 ? 0 : 1;
+    int wc, low_creep = 0;
+    double lowest = NAN;
+    size_t i;
+    *best = (size_t)-1;
+    *with_creep = 0;
     /* every option (a candidate without, or with its creep term): the lowest error */
     for (i = 0u; i < count; ++i) {
         for (wc = wc_first; wc <= wc_last; ++wc) {
@@ -316,5 +324,4 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
             }
         }
     }
-    return count;
 }

@@ -138,4 +138,10 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
                   size_t n, size_t max_delay, fit_candidate_t *cand, size_t max_cand,
                   size_t *best, int *with_creep);
 
+/* The choice among cand[0..count) (scored), as fit_select() makes it:
+ * *best ((size_t)-1: none scored) and *with_creep its option; creep_tau < 0
+ * compares the candidates alone, > 0 with their creep terms only, 0 both. */
+void fit_choose(const fit_candidate_t *cand, size_t count, double creep_tau, size_t *best,
+                int *with_creep);
+
 #endif
