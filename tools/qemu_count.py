@@ -11,9 +11,10 @@ It adds one to a counter before every executed instruction and prints the
 counter at each store to the pin's register; QEMU's mps2_fpgaio_write trace
 event gives the stored value. A pulse's count is the difference of the
 counters of the stores that raised and lowered the pin. Profiles (per-address
-counts of chosen pulses) take a second run that logs the addresses inside
-those pulses only. A QEMU without plugin support (or HYST_QEMU_COUNT=trace)
-falls back to the instruction log below; so does the instruction hook.
+counts of chosen pulses) and the instruction hook take a second run that
+logs the addresses inside those pulses only (with the hook, every pulse's,
+and the disassembly of every instruction translated). A QEMU without plugin
+support (or HYST_QEMU_COUNT=trace) falls back to the instruction log below.
 
 Instruction log: runs an mps2-an386 ELF with one instruction per translation block
 (-singlestep -d exec,nochain: one "Trace" line per executed instruction) and
@@ -285,15 +286,25 @@ def _communicate(proc, timeout, parse):
     return b"".join(out_chunks).decode("utf-8", "replace")
 
 
-def _plugin_pass(elf, qemu, timeout, machine, so, windows=()):
+def _plugin_pass(elf, qemu, timeout, machine, so, windows=(), disas=False):
     """One run with the plugin: (exit code, stdout, pin values, counters at
-    the pin stores, total, {window rank: [pc...]})."""
-    arg = "%s,window=%s" % (so, ":".join(str(w) for w in windows)) if windows else so
+    the pin stores, total, {window rank: [pc...]}, {pc: (bytes, mnemonic,
+    operands)} when disas)."""
+    windows = frozenset(windows)
+    arg = so
+    listed = None
+    if windows:
+        fd, listed = tempfile.mkstemp(suffix=".txt", prefix="qemu_count_windows_")
+        with os.fdopen(fd, "w") as f:
+            f.write("\n".join(str(w) for w in sorted(windows)) + "\n")
+        arg += ",windows=" + listed
+    if disas:
+        arg += ",disas=on"
     args = qemu_args(machine)
     args[args.index("exec,nochain")] = "plugin"  # the plugin's lines, not every instruction
     args.remove("-singlestep")
     cmd = [qemu] + args + ["-plugin", arg, "-kernel", elf]
-    values, counts, pcs, other = [], [], {}, []
+    values, counts, pcs, other, code = [], [], {}, [], {}
     total = [None]
 
     def parse(stream):
@@ -305,7 +316,14 @@ def _plugin_pass(elf, qemu, timeout, machine, so, windows=()):
                 continue
             if line.startswith(b"@pin "):
                 counts.append(int(line[5:]))
-                current = pcs.setdefault(len(counts) - 1, []) if len(counts) - 1 in windows else None
+                rank = len(counts) - 1
+                current = pcs.setdefault(rank, []) if rank in windows else None
+                continue
+            if line.startswith(b"@insn "):
+                parts = line[6:].decode("ascii", "replace").rstrip().split(None, 3)
+                if len(parts) >= 3:
+                    code[int(parts[0], 16)] = (int(parts[1]), parts[2],
+                                               parts[3] if len(parts) > 3 else "")
                 continue
             if line.startswith(b"@total "):
                 total[0] = int(line[7:])
@@ -318,17 +336,21 @@ def _plugin_pass(elf, qemu, timeout, machine, so, windows=()):
             if len(other) < 20:
                 other.append(line.decode("utf-8", "replace").rstrip())
 
-    proc = _start(cmd)
-    text = _communicate(proc, timeout, parse)
+    try:
+        proc = _start(cmd)
+        text = _communicate(proc, timeout, parse)
+    finally:
+        if listed:
+            os.unlink(listed)
     if total[0] is None and not counts and any("plugin" in l.lower() for l in other):
         raise _NoPlugin("; ".join(other))
     if len(values) != len(counts):
         raise ToolError("%d pin writes traced, %d seen by the plugin" % (len(values), len(counts)))
-    return proc.returncode, text, values, counts, total[0], pcs
+    return proc.returncode, text, values, counts, total[0], pcs, code
 
 
-def _measure_plugin(elf, qemu, timeout, profile, machine, so, run):
-    code, text, values, counts, total, _ = _plugin_pass(elf, qemu, timeout, machine, so)
+def _measure_plugin(elf, qemu, timeout, profile, machine, so, run, hook=None):
+    code, text, values, counts, total, _, _ = _plugin_pass(elf, qemu, timeout, machine, so)
     led, start, rises = 0, 0, []
     for rank, (value, count) in enumerate(zip(values, counts)):
         bit = value & 1
@@ -343,17 +365,27 @@ def _measure_plugin(elf, qemu, timeout, profile, machine, so, run):
     run.exit_code, run.stdout_lines = code, text.splitlines()
     run.instructions = total or 0
     wanted = [i for i in sorted(profile) if i < len(run.pulses)]
-    if wanted:
-        _, _, _, again, _, pcs = _plugin_pass(elf, qemu, timeout, machine, so,
-                                               [rises[i] for i in wanted])
-        if again != counts:
-            raise ToolError("the profiling run counted differently")
-        for i in wanted:
-            for pc in pcs.get(rises[i], ()):
-                run.profile[(i, pc)] = run.profile.get((i, pc), 0) + 1
-            if len(pcs.get(rises[i], ())) != run.pulses[i].raw:
-                raise ToolError("pulse %d: %d addresses for %d instructions"
-                                % (i, len(pcs.get(rises[i], ())), run.pulses[i].raw))
+    traced = range(len(run.pulses)) if hook is not None else wanted
+    if not traced:
+        return
+    # a second run logs the addresses inside the pulses wanted, in order
+    _, _, _, again, _, pcs, run.disasm = _plugin_pass(
+        elf, qemu, timeout, machine, so, [rises[i] for i in traced], disas=hook is not None)
+    if again != counts:
+        raise ToolError("the second run counted differently")
+    for i in traced:
+        seen = pcs.get(rises[i], ())
+        if len(seen) != run.pulses[i].raw:
+            raise ToolError("pulse %d: %d addresses for %d instructions" % (i, len(seen), run.pulses[i].raw))
+    for i in wanted:
+        for pc in pcs.get(rises[i], ()):
+            run.profile[(i, pc)] = run.profile.get((i, pc), 0) + 1
+    if hook is not None:
+        for i in traced:
+            hook.begin(i)
+            for pc in pcs[rises[i]]:
+                hook.insn(pc, run.disasm.get(pc))
+            hook.end(run.pulses[i])
 
 
 def _measure_trace(elf, qemu, timeout, profile, machine, hook, run):
@@ -374,25 +406,23 @@ def measure(elf, qemu="qemu-system-arm", timeout=900, profile=(), machine=None, 
     in Run.profile[(index, pc)]. machine: the QEMU MPS2 machine (BOARDS);
     None reads it from the ELF (machine_of). hook: see the module text.
     method: "plugin" or "trace" (the module text); None: the plugin unless
-    a hook is given or HYST_QEMU_COUNT says otherwise, the instruction log
-    when the plugin cannot be built or loaded."""
+    HYST_QEMU_COUNT says otherwise, the instruction log when the plugin
+    cannot be built or loaded."""
     if not os.path.isfile(elf):
         raise ToolError("no such firmware image: %s" % elf)
     if machine is None:
         machine = machine_of(elf)
     if method is None:
-        method = "trace" if hook is not None else os.environ.get("HYST_QEMU_COUNT", "plugin")
+        method = os.environ.get("HYST_QEMU_COUNT", "plugin")
     if method not in ("plugin", "trace"):
         raise ToolError("unknown counting method %s" % method)
-    if method == "plugin" and hook is not None:
-        raise ToolError("the instruction hook needs the instruction log (method trace)")
     run = Run()
     run.machine = machine
     so = plugin_path() if method == "plugin" else None
     try:
         if so is None:
             raise _NoPlugin("no plugin")
-        _measure_plugin(elf, qemu, timeout, profile, machine, so, run)
+        _measure_plugin(elf, qemu, timeout, profile, machine, so, run, hook)
         run.method = "plugin"
     except _NoPlugin:
         run = Run()

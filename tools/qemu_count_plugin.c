@@ -9,9 +9,12 @@
  *   @pin <count>   at each store to PIN_ADDR (the FPGAIO LED register of the
  *                  MPS2 boards), count including the store itself; the stored
  *                  value is in the matching mps2_fpgaio_write trace event
- *   @pc <address>  with argument window=R1:R2:..., each instruction executed
- *                  after the pin store of rank Ri (from 0) up to and including
- *                  the next pin store (the per-address profile of those pulses)
+ *   @pc <address>  with argument windows=FILE (pin store ranks, from 0, one
+ *                  per line), each instruction executed after a listed pin
+ *                  store up to and including the next pin store, in order
+ *                  (the per-address profile of those pulses)
+ *   @insn <address> <size> <disassembly>
+ *                  with argument disas=on, each instruction translated
  *   @total <count> at exit
  *
  * An instruction that QEMU restarts (an I/O store in the middle of a block
@@ -54,6 +57,8 @@ void qemu_plugin_register_vcpu_tb_trans_cb(qemu_plugin_id_t id, tb_trans_cb_t cb
 size_t qemu_plugin_tb_n_insns(const struct qemu_plugin_tb *tb);
 struct qemu_plugin_insn *qemu_plugin_tb_get_insn(const struct qemu_plugin_tb *tb, size_t idx);
 uint64_t qemu_plugin_insn_vaddr(const struct qemu_plugin_insn *insn);
+size_t qemu_plugin_insn_size(const struct qemu_plugin_insn *insn);
+char *qemu_plugin_insn_disas(const struct qemu_plugin_insn *insn);
 void qemu_plugin_register_vcpu_insn_exec_inline(struct qemu_plugin_insn *insn, int op, void *ptr,
                                                 uint64_t imm);
 void qemu_plugin_register_vcpu_insn_exec_cb(struct qemu_plugin_insn *insn, vcpu_udata_cb_t cb,
@@ -67,18 +72,43 @@ EXPORT int qemu_plugin_version = 1;
 /* ---- end of the API ---- */
 
 #define PIN_ADDR 0x40028000u /* FPGAIO LED0..1 on mps2-an385/an386/an500 */
-#define MAX_WINDOWS 64
-
 static uint64_t executed;          /* every instruction, inline */
 static uint64_t pin_stores;        /* stores to PIN_ADDR so far */
-static uint64_t windows[MAX_WINDOWS];
-static size_t n_windows;
+static unsigned char *windows;     /* bit r: trace after the pin store of rank r */
+static uint64_t n_window_bits;
 static int tracing;                /* inside a window */
+static int disas;                  /* print each translated instruction */
+
+/* Reads the ranks of FILE into the windows bitmap; 0 on failure. */
+static int read_windows(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    unsigned long long rank;
+    if (f == NULL) {
+        return 0;
+    }
+    while (fscanf(f, "%llu", &rank) == 1) {
+        if (rank >= n_window_bits) {
+            const uint64_t bits = (rank + 1u) * 2u;
+            unsigned char *grown = realloc(windows, (size_t)((bits + 7u) / 8u));
+            if (grown == NULL) {
+                fclose(f);
+                return 0;
+            }
+            memset(grown + (n_window_bits + 7u) / 8u, 0,
+                   (size_t)((bits + 7u) / 8u - (n_window_bits + 7u) / 8u));
+            windows = grown;
+            n_window_bits = bits;
+        }
+        windows[rank / 8u] = (unsigned char)(windows[rank / 8u] | (1u << (rank % 8u)));
+    }
+    fclose(f);
+    return 1;
+}
 
 static void on_store(unsigned int vcpu, qemu_plugin_meminfo_t info, uint64_t vaddr, void *udata)
 {
     char line[48];
-    size_t i;
     (void)vcpu;
     (void)info;
     (void)udata;
@@ -87,10 +117,7 @@ static void on_store(unsigned int vcpu, qemu_plugin_meminfo_t info, uint64_t vad
     }
     (void)snprintf(line, sizeof line, "@pin %llu\n", (unsigned long long)executed);
     qemu_plugin_outs(line);
-    tracing = 0;
-    for (i = 0; i < n_windows; ++i) {
-        tracing |= windows[i] == pin_stores;
-    }
+    tracing = pin_stores < n_window_bits && (windows[pin_stores / 8u] >> (pin_stores % 8u)) & 1u;
     ++pin_stores;
 }
 
@@ -113,7 +140,16 @@ static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
         struct qemu_plugin_insn *insn = qemu_plugin_tb_get_insn(tb, i);
         qemu_plugin_register_vcpu_insn_exec_inline(insn, PLUGIN_INLINE_ADD_U64, &executed, 1u);
         qemu_plugin_register_vcpu_mem_cb(insn, on_store, PLUGIN_CB_NO_REGS, PLUGIN_MEM_W, NULL);
-        if (n_windows > 0u) {
+        if (disas) {
+            char *text = qemu_plugin_insn_disas(insn);
+            char line[160];
+            (void)snprintf(line, sizeof line, "@insn %lx %u %s\n",
+                           (unsigned long)qemu_plugin_insn_vaddr(insn),
+                           (unsigned)qemu_plugin_insn_size(insn), text != NULL ? text : "?");
+            qemu_plugin_outs(line);
+            free(text);
+        }
+        if (n_window_bits > 0u) {
             qemu_plugin_register_vcpu_insn_exec_cb(
                 insn, on_insn, PLUGIN_CB_NO_REGS,
                 (void *)(uintptr_t)qemu_plugin_insn_vaddr(insn));
@@ -138,16 +174,12 @@ EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_prefix_t *in
     int a;
     (void)info;
     for (a = 0; a < argc; ++a) {
-        if (strncmp(argv[a], "window=", 7u) == 0) {
-            const char *p = argv[a] + 7;
-            while (*p != '\0' && n_windows < MAX_WINDOWS) {
-                char *end;
-                windows[n_windows++] = strtoull(p, &end, 10);
-                if (end == p) {
-                    return 1;
-                }
-                p = *end == ':' ? end + 1 : end;
+        if (strncmp(argv[a], "windows=", 8u) == 0) {
+            if (!read_windows(argv[a] + 8)) {
+                return 1;
             }
+        } else if (strcmp(argv[a], "disas=on") == 0) {
+            disas = 1;
         } else {
             return 1;
         }
