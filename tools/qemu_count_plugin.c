@@ -14,7 +14,9 @@
  *                  store up to and including the next pin store, in order
  *                  (the per-address profile of those pulses)
  *   @insn <address> <size> <disassembly>
- *                  with argument disas=on, each instruction translated
+ *                  with argument disas=on, each instruction translated (size
+ *                  in bytes from its Thumb encoding: QEMU's own may include
+ *                  the next halfword, read ahead by the translator)
  *   @total <count> at exit
  *
  * An instruction that QEMU restarts (an I/O store in the middle of a block
@@ -58,6 +60,7 @@ size_t qemu_plugin_tb_n_insns(const struct qemu_plugin_tb *tb);
 struct qemu_plugin_insn *qemu_plugin_tb_get_insn(const struct qemu_plugin_tb *tb, size_t idx);
 uint64_t qemu_plugin_insn_vaddr(const struct qemu_plugin_insn *insn);
 size_t qemu_plugin_insn_size(const struct qemu_plugin_insn *insn);
+const void *qemu_plugin_insn_data(const struct qemu_plugin_insn *insn);
 char *qemu_plugin_insn_disas(const struct qemu_plugin_insn *insn);
 void qemu_plugin_register_vcpu_insn_exec_inline(struct qemu_plugin_insn *insn, int op, void *ptr,
                                                 uint64_t imm);
@@ -131,6 +134,17 @@ static void on_insn(unsigned int vcpu, void *udata)
     }
 }
 
+/* 2 or 4: a Thumb instruction is 32-bit when its first halfword starts with
+ * 0b11101, 0b11110 or 0b11111 (the MPS2 cores run Thumb only). */
+static unsigned thumb_size(const struct qemu_plugin_insn *insn)
+{
+    const unsigned char *b = qemu_plugin_insn_data(insn);
+    if (qemu_plugin_insn_size(insn) < 2u) {
+        return (unsigned)qemu_plugin_insn_size(insn);
+    }
+    return ((unsigned)b[1] >> 3) >= 0x1du ? 4u : 2u;
+}
+
 static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
 {
     const size_t n = qemu_plugin_tb_n_insns(tb);
@@ -145,7 +159,7 @@ static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
             char line[160];
             (void)snprintf(line, sizeof line, "@insn %lx %u %s\n",
                            (unsigned long)qemu_plugin_insn_vaddr(insn),
-                           (unsigned)qemu_plugin_insn_size(insn), text != NULL ? text : "?");
+                           thumb_size(insn), text != NULL ? text : "?");
             qemu_plugin_outs(line);
             free(text);
         }
