@@ -450,7 +450,7 @@ def bench_summary(path, md):
                    f"{b.get('pi10_insns', '?')}")
         say(title, f"library flash {b.get('core_flash_bytes_Os', '?')} bytes at -Os, engine "
                    f"{b.get('core_flash_bytes_O2_tcm', '?')} bytes at -O2; step stack "
-                   f"{b.get('step_stack_bytes', '?')} bytes; instance {b.get('sizeof_hyst_t', '?')} bytes")
+                   f"{b.get('step_stack_bytes', '?')} bytes")
         cores = "Per-sample cost on the other cores (instructions, typical / worst at Nu = 4096)"
         for label, prefix in (("Cortex-M3, soft float", "m3_f32"), ("Cortex-M3, q31 model", "m3_q31"),
                               ("Cortex-M3, q31 compensator", "m3_q31_inv"),
