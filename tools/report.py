@@ -362,8 +362,8 @@ def timing(path, md, out):
             table[p] = max(table.get(p, 0), n)
     md.append("## Computation time per sample (Fig. 8 analogue)\n")
     md.append("Instructions executed on the Cortex-M4F between the rising and the falling edge of the timing "
-              "pin (the FPGAIO LED register of mps2-an386) around one `hyst_step` call, counted exactly from "
-              "QEMU's instruction log by `tools/qemu_count.py` (same count on every run). p is the number of "
+              "pin (the FPGAIO LED register of mps2-an386) around one `hyst_step` call, counted exactly under "
+              "QEMU by `tools/qemu_count.py` (a TCG plugin counts every instruction; same count on every run). p is the number of "
               "comparisons of the binary search; each point is the worst sample (a wipe-out) with that p. The "
               "paper's line, 0.19 p + 0.57 µs on a 150 MHz DSP28335, is drawn in cycles (28.5 p + 85.5); M4 "
               "instructions and C28x cycles are not the same unit: compare shape and order of magnitude.\n")
