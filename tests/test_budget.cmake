@@ -85,7 +85,7 @@ if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
         hyst_budget_test(everett_inv_table_budget ${HYST_BUDGET_INV_TYPICAL_INSNS}
                          ${HYST_BUDGET_INV_WORST_INSNS}
                          --elf $<TARGET_FILE:bench_budget_everett_inv_table> --no-pi --worst-unmet)
-        # its init builds the table in soft double, traced instruction by instruction
+        # its init builds the table in soft double: minutes counted from QEMU's log (the fallback)
         set_tests_properties(everett_inv_table_budget PROPERTIES TIMEOUT 1500)
     endif()
 endif()
