@@ -332,7 +332,7 @@ def chosen_prediction(data, y_model, skip, delay, label, md, out):
     axs[0].plot(t, ymeas, lw=2, label="measured")
     axs[0].plot(t, ymod, "--", lw=1, label=label)
     axs[0].set_ylabel("output (sensor units)")
-    axs[0].legend(fontsize=8)
+    axs[0].legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=2, frameon=False)
     axs[1].plot(t, ymod - ymeas, lw=0.8)
     axs[1].set_ylabel("model − measured (sensor units)")
     axs[1].set_xlabel("time (s, 200 Hz rows)")
@@ -577,7 +577,7 @@ def asymmetric(sec, md, out):
             ax.set_ylabel("prediction − sensor (µm)")
             ax.set_title(f"asymmetric TCM {v['pi_predict_rms'] / v['everett_predict_rms']:.1f} times "
                          "lower RMS than PI-10", fontsize=9)
-            ax.legend(fontsize=8)
+            ax.legend(fontsize=8, loc="lower center")
             md.append(f"![prediction errors on the asymmetric plant]"
                       f"({save(fig, out, 'asymmetric_error.png')})\n")
     if "symmetric_comp_rms_ratio" in v:
@@ -626,7 +626,7 @@ def asymmetric(sec, md, out):
             ax.set_ylabel("tracking error (µm)")
             ax.set_title(f"RMS tracking error {v['comp_rms_ratio']:.1f}-fold lower (comp_rms_ratio)",
                          fontsize=9)
-            ax.legend(fontsize=8)
+            ax.legend(fontsize=8, loc="lower right")
             md.append(f"![compensation of the asymmetric plant]"
                       f"({save(fig, out, 'asymmetric_compensation.png')})\n")
     if t is not None and len(t["data"]):
