@@ -25,8 +25,9 @@
  *
  * Built by tools/qemu_count.py with the host's C compiler:
  *   cc -shared -fPIC -O2 -o qemu_count_plugin.so qemu_count_plugin.c
- * The declarations below are the part of QEMU's plugin API (version 1,
- * QEMU 4.2 to 8.1) that this plugin calls. */
+ * The declarations below are the part of QEMU's plugin API (version 1, as
+ * in QEMU 7.2) that this plugin calls; a QEMU that refuses the plugin makes
+ * tools/qemu_count.py count from its instruction log instead. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
