@@ -361,7 +361,7 @@ def main():
     # 40 / 160, met by both and asserted by the ctests everett_budget and
     # everett4_budget, which also runs degree 4 across zero; 50 / 160 for the
     # compensator, the worst not met: docs/timing.md). The tabulated one's
-    # traced init takes minutes.
+    # init takes minutes when counted from QEMU's log (the fallback).
     for name, prefix in (("bench_budget_everett", "everett"), ("bench_budget_everett4", "everett4"),
                          ("bench_budget_everett4_bipolar", "everett4_bipolar"),
                          ("bench_budget_everett_inv", "everett_inv"),

@@ -41,6 +41,18 @@ function(hyst_budget_test name typical worst)
     set_tests_properties(${name} PROPERTIES TIMEOUT 600 LABELS "budget")
 endfunction()
 
+# The counting plugin against QEMU's instruction log (tools/qemu_count.py):
+# the budgets below are counted with the plugin.
+if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_tcm_linear)
+    find_package(Python3 COMPONENTS Interpreter)
+    if(Python3_Interpreter_FOUND)
+        add_test(NAME qemu_count_methods
+                 COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/test_qemu_count.py
+                         --elf $<TARGET_FILE:bench_tcm_linear> --qemu ${HYST_QEMU})
+        set_tests_properties(qemu_count_methods PROPERTIES TIMEOUT 300 LABELS "budget"
+                             SKIP_RETURN_CODE 77)
+    endif()
+endif()
 if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
    AND TARGET bench_budget_bipolar)
     hyst_budget_test(tcm_budget ${HYST_BUDGET_TYPICAL_INSNS} ${HYST_BUDGET_WORST_INSNS}
@@ -73,7 +85,7 @@ if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
         hyst_budget_test(everett_inv_table_budget ${HYST_BUDGET_INV_TYPICAL_INSNS}
                          ${HYST_BUDGET_INV_WORST_INSNS}
                          --elf $<TARGET_FILE:bench_budget_everett_inv_table> --no-pi --worst-unmet)
-        # its init builds the table in soft double, traced instruction by instruction
+        # its init builds the table in soft double: minutes counted from QEMU's log (the fallback)
         set_tests_properties(everett_inv_table_budget PROPERTIES TIMEOUT 1500)
     endif()
 endif()

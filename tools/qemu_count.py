@@ -2,7 +2,21 @@
 # SPDX-License-Identifier: MIT
 """Exact instruction counts between GPIO edges of a firmware image under QEMU.
 
-Runs an mps2-an386 ELF with one instruction per translation block
+Two ways to count, the same counts (tests/test_qemu_count.py compares them):
+
+Plugin (the default): QEMU runs at its usual speed with a TCG plugin,
+tools/qemu_count_plugin.c, built here with the host's C compiler on first use
+(into build/qemu-plugin/ of this tree; HYST_QEMU_PLUGIN names another .so).
+It adds one to a counter before every executed instruction and prints the
+counter at each store to the pin's register; QEMU's mps2_fpgaio_write trace
+event gives the stored value. A pulse's count is the difference of the
+counters of the stores that raised and lowered the pin. Profiles (per-address
+counts of chosen pulses) and the instruction hook take a second run that
+logs the addresses inside those pulses only (with the hook, every pulse's,
+and the disassembly of every instruction translated). A QEMU without plugin
+support (or HYST_QEMU_COUNT=trace) falls back to the instruction log below.
+
+Instruction log: runs an mps2-an386 ELF with one instruction per translation block
 (-singlestep -d exec,nochain: one "Trace" line per executed instruction) and
 with the FPGAIO register writes traced (-trace mps2_fpgaio_write). A pulse is
 LED0 (bit 0 of FPGAIO offset 0) going 0 -> 1 -> 0; its count is the number of
@@ -44,7 +58,7 @@ at the falling edge, with the same instructions the counts include.
 
 Usage:
   qemu_count.py ELF [--csv out.csv] [--profile N,M --profile-out f.tsv]
-                [--machine mps2-an385|mps2-an386|mps2-an500]
+                [--machine mps2-an385|mps2-an386|mps2-an500] [--method plugin|trace]
 Prints one line per pulse: index raw net label... ; exit status is the
 firmware's, or 2 on a tool error. Import: measure(elf, ...) -> Run.
 """
@@ -53,7 +67,11 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
 import threading
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PLUGIN_SOURCE = os.path.join(HERE, "qemu_count_plugin.c")
 
 
 class ToolError(Exception):
@@ -136,6 +154,7 @@ class Run:
         self.profile = {}
         self.machine = DEFAULT_MACHINE
         self.disasm = {}
+        self.method = None
 
 
 def _parse_log(stream, run, profile, hook=None):
@@ -208,41 +227,208 @@ def _parse_log(stream, run, profile, hook=None):
         raise ToolError("the pin was still high when the firmware ended")
 
 
-def measure(elf, qemu="qemu-system-arm", timeout=900, profile=(), machine=None, hook=None):
-    """Runs elf under QEMU; returns a Run with labelled pulses.
-
-    profile: pulse indices whose instructions are also counted per address,
-    in Run.profile[(index, pc)]. machine: the QEMU MPS2 machine (BOARDS);
-    None reads it from the ELF (machine_of). hook: see the module text."""
-    if not os.path.isfile(elf):
-        raise ToolError("no such firmware image: %s" % elf)
-    if machine is None:
-        machine = machine_of(elf)
-    cmd = [qemu] + qemu_args(machine, in_asm=hook is not None) + ["-kernel", elf]
-    run = Run()
-    run.machine = machine
+def plugin_path(cc=None):
+    """The counting plugin's shared object, built from PLUGIN_SOURCE when
+    missing or older than it; None if it cannot be built (no C compiler)."""
+    given = os.environ.get("HYST_QEMU_PLUGIN")
+    if given:
+        return given
+    out_dir = os.path.join(HERE, "..", "build", "qemu-plugin")
+    so = os.path.join(out_dir, "qemu_count_plugin.so")
     try:
-        proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        if os.path.getmtime(so) >= os.path.getmtime(PLUGIN_SOURCE):
+            return so
+    except OSError:
+        pass
+    cc = cc or os.environ.get("CC") or "cc"
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+        # built under a temporary name, then renamed: parallel ctests share it
+        fd, tmp = tempfile.mkstemp(suffix=".so", dir=out_dir)
+        os.close(fd)
+        r = subprocess.run([cc, "-shared", "-fPIC", "-O2", "-o", tmp, PLUGIN_SOURCE],
+                           capture_output=True, text=True)
+        if r.returncode != 0:
+            os.unlink(tmp)
+            return None
+        os.replace(tmp, so)
+    except OSError:
+        return None
+    return so
+
+
+class _NoPlugin(Exception):
+    """QEMU could not load the plugin: count from the instruction log."""
+
+
+def _start(cmd):
+    try:
+        return subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                 stdin=subprocess.DEVNULL)
     except OSError as e:
-        raise ToolError("cannot start %s: %s" % (qemu, e))
+        raise ToolError("cannot start %s: %s" % (cmd[0], e))
+
+
+def _communicate(proc, timeout, parse):
+    """Runs parse(stderr) while stdout is collected; returns stdout's text."""
     out_chunks = []
     reader = threading.Thread(target=lambda: out_chunks.append(proc.stdout.read()))
     reader.start()
     timer = threading.Timer(timeout, proc.kill)
     timer.start()
     try:
-        _parse_log(proc.stderr, run, frozenset(profile), hook)
+        parse(proc.stderr)
     finally:
         proc.stderr.close()
-        run.exit_code = proc.wait()
+        proc.wait()
         timer.cancel()
         reader.join()
-    text = b"".join(out_chunks).decode("utf-8", "replace")
-    run.stdout_lines = text.splitlines()
+    return b"".join(out_chunks).decode("utf-8", "replace")
+
+
+def _plugin_pass(elf, qemu, timeout, machine, so, windows=(), disas=False):
+    """One run with the plugin: (exit code, stdout, pin values, counters at
+    the pin stores, total, {window rank: [pc...]}, {pc: (bytes, mnemonic,
+    operands)} when disas)."""
+    windows = frozenset(windows)
+    arg = so
+    listed = None
+    if windows:
+        fd, listed = tempfile.mkstemp(suffix=".txt", prefix="qemu_count_windows_")
+        with os.fdopen(fd, "w") as f:
+            f.write("\n".join(str(w) for w in sorted(windows)) + "\n")
+        arg += ",windows=" + listed
+    if disas:
+        arg += ",disas=on"
+    args = qemu_args(machine)
+    args[args.index("exec,nochain")] = "plugin"  # the plugin's lines, not every instruction
+    args.remove("-singlestep")
+    cmd = [qemu] + args + ["-plugin", arg, "-kernel", elf]
+    values, counts, pcs, other, code = [], [], {}, [], {}
+    total = [None]
+
+    def parse(stream):
+        current = None
+        for line in stream:
+            if line.startswith(b"@pc "):
+                if current is not None:
+                    current.append(int(line[4:], 16))
+                continue
+            if line.startswith(b"@pin "):
+                counts.append(int(line[5:]))
+                rank = len(counts) - 1
+                current = pcs.setdefault(rank, []) if rank in windows else None
+                continue
+            if line.startswith(b"@insn "):
+                parts = line[6:].decode("ascii", "replace").rstrip().split(None, 3)
+                if len(parts) >= 3:
+                    code[int(parts[0], 16)] = (int(parts[1]), parts[2],
+                                               parts[3] if len(parts) > 3 else "")
+                continue
+            if line.startswith(b"@total "):
+                total[0] = int(line[7:])
+                continue
+            m = FPGAIO_RE.search(line)
+            if m is not None:
+                if int(m.group(1), 16) == 0:
+                    values.append(int(m.group(2), 16))
+                continue
+            if len(other) < 20:
+                other.append(line.decode("utf-8", "replace").rstrip())
+
+    try:
+        proc = _start(cmd)
+        text = _communicate(proc, timeout, parse)
+    finally:
+        if listed:
+            os.unlink(listed)
+    if total[0] is None and not counts and any("plugin" in l.lower() for l in other):
+        raise _NoPlugin("; ".join(other))
+    if len(values) != len(counts):
+        raise ToolError("%d pin writes traced, %d seen by the plugin" % (len(values), len(counts)))
+    return proc.returncode, text, values, counts, total[0], pcs, code
+
+
+def _measure_plugin(elf, qemu, timeout, profile, machine, so, run, hook=None):
+    code, text, values, counts, total, _, _ = _plugin_pass(elf, qemu, timeout, machine, so)
+    led, start, rises = 0, 0, []
+    for rank, (value, count) in enumerate(zip(values, counts)):
+        bit = value & 1
+        if bit and not led:
+            start = count
+            rises.append(rank)
+        elif led and not bit:
+            run.pulses.append(Pulse(len(run.pulses), count - start))
+        led = bit
+    if led:
+        raise ToolError("the pin was still high when the firmware ended")
+    run.exit_code, run.stdout_lines = code, text.splitlines()
+    run.instructions = total or 0
+    wanted = [i for i in sorted(profile) if i < len(run.pulses)]
+    traced = range(len(run.pulses)) if hook is not None else wanted
+    if not traced:
+        return
+    # a second run logs the addresses inside the pulses wanted, in order
+    _, _, _, again, _, pcs, run.disasm = _plugin_pass(
+        elf, qemu, timeout, machine, so, [rises[i] for i in traced], disas=hook is not None)
+    if again != counts:
+        raise ToolError("the second run counted differently")
+    for i in traced:
+        seen = pcs.get(rises[i], ())
+        if len(seen) != run.pulses[i].raw:
+            raise ToolError("pulse %d: %d addresses for %d instructions" % (i, len(seen), run.pulses[i].raw))
+    for i in wanted:
+        for pc in pcs.get(rises[i], ()):
+            run.profile[(i, pc)] = run.profile.get((i, pc), 0) + 1
+    if hook is not None:
+        for i in traced:
+            hook.begin(i)
+            for pc in pcs[rises[i]]:
+                hook.insn(pc, run.disasm.get(pc))
+            hook.end(run.pulses[i])
+
+
+def _measure_trace(elf, qemu, timeout, profile, machine, hook, run):
+    cmd = [qemu] + qemu_args(machine, in_asm=hook is not None) + ["-kernel", elf]
+    proc = _start(cmd)
+    text = _communicate(proc, timeout, lambda s: _parse_log(s, run, frozenset(profile), hook))
+    run.exit_code, run.stdout_lines = proc.returncode, text.splitlines()
     if run.instructions == 0:
         raise ToolError("QEMU logged no instructions (exit %s): is -d exec supported?"
                         % run.exit_code)
+
+
+def measure(elf, qemu="qemu-system-arm", timeout=900, profile=(), machine=None, hook=None,
+            method=None):
+    """Runs elf under QEMU; returns a Run with labelled pulses.
+
+    profile: pulse indices whose instructions are also counted per address,
+    in Run.profile[(index, pc)]. machine: the QEMU MPS2 machine (BOARDS);
+    None reads it from the ELF (machine_of). hook: see the module text.
+    method: "plugin" or "trace" (the module text); None: the plugin unless
+    HYST_QEMU_COUNT says otherwise, the instruction log when the plugin
+    cannot be built or loaded."""
+    if not os.path.isfile(elf):
+        raise ToolError("no such firmware image: %s" % elf)
+    if machine is None:
+        machine = machine_of(elf)
+    if method is None:
+        method = os.environ.get("HYST_QEMU_COUNT", "plugin")
+    if method not in ("plugin", "trace"):
+        raise ToolError("unknown counting method %s" % method)
+    run = Run()
+    run.machine = machine
+    so = plugin_path() if method == "plugin" else None
+    try:
+        if so is None:
+            raise _NoPlugin("no plugin")
+        _measure_plugin(elf, qemu, timeout, profile, machine, so, run, hook)
+        run.method = "plugin"
+    except _NoPlugin:
+        run = Run()
+        run.machine = machine
+        _measure_trace(elf, qemu, timeout, profile, machine, hook, run)
+        run.method = "trace"
     labels = []
     for line in run.stdout_lines:
         if line.startswith("@pulse "):
@@ -286,10 +472,13 @@ def main(argv=None):
     ap.add_argument("--quiet", action="store_true", help="no per-pulse lines")
     ap.add_argument("--machine", choices=sorted(BOARDS),
                     help="QEMU machine (default: from the ELF's build attributes)")
+    ap.add_argument("--method", choices=("plugin", "trace"),
+                    help="count with the plugin (default) or from the instruction log")
     args = ap.parse_args(argv)
     try:
         wanted = [int(i) for i in args.profile.split(",") if i.strip()]
-        run = measure(args.elf, args.qemu, args.timeout, wanted, machine=args.machine)
+        run = measure(args.elf, args.qemu, args.timeout, wanted, machine=args.machine,
+                      method=args.method)
     except ToolError as e:
         print("qemu_count: %s" % e, file=sys.stderr)
         return 2
@@ -307,8 +496,8 @@ def main(argv=None):
     if not args.quiet:
         for r in rows:
             print("%d %d %s %s" % r)
-    print("# pulses %d instructions %d exit %d" % (len(rows), run.instructions, run.exit_code),
-          file=sys.stderr)
+    print("# pulses %d instructions %d exit %d method %s"
+          % (len(rows), run.instructions, run.exit_code, run.method), file=sys.stderr)
     return run.exit_code
 
 

@@ -3,12 +3,16 @@
 """Turns the target's printout (examples/paper_report.c) into a report.
 
 usage: report.py FIRMWARE_OUTPUT OUT_DIR [--timing CSV] [--bench SUMMARY]
-                 [--measured-fit HYST_FIT_OUTPUT --measured-data FILE]
+                 [--measured-fit HYST_FIT_OUTPUT --measured-data FILE
+                  [--measured-model-output HYST_SIM_OUTPUT]]
 
-Writes OUT_DIR/README.md and PNG figures. Every number comes from the files
-given (the measured record's bound on rate-independent models is computed
-here, from the record); the paper's own numbers are quoted beside them. Needs numpy and
-matplotlib (tools/pyenv.sh provides them); the C build never does.
+Writes OUT_DIR/README.md and PNG figures, and prints the headline figures
+by section, with their units. Every number comes from the files given (the
+measured record's bound on rate-independent models is computed here, from
+the record); the paper's own numbers are quoted beside them. Without
+--timing and --bench the per-sample cost is left out (./tools/demo writes
+the report first, then again with them). Needs numpy and matplotlib
+(tools/pyenv.sh provides them); the C build never does.
 """
 import argparse
 import os
@@ -57,6 +61,16 @@ def parse(path):
     return meta, sections
 
 
+CONSOLE = []  # (section title, [lines]) printed by main()
+
+
+def say(title, line):
+    """A headline figure for the console, under its section's title."""
+    if not CONSOLE or CONSOLE[-1][0] != title:
+        CONSOLE.append((title, []))
+    CONSOLE[-1][1].append(line)
+
+
 def col(table, name):
     return table["data"][:, table["cols"].index(name)]
 
@@ -87,6 +101,9 @@ def example1(sec, md):
         c = poly(m, v, 2)
         md.append(f"| {label} | {c[0]:.4f} | {c[1]:.4f} | {c[2]:.4f} | {fmt(v[m + '_rms'])} |")
     md.append("")
+    c = poly("joint", v, 2)
+    say("Example 1: f0 = x^2 identified (unitless)",
+        f"c2 {c[0]:.4f}, c1 {c[1]:.4f}, c0 {c[2]:.4f} (paper 1.0005, -0.0008, 0.0002)")
 
 
 def example2(sec, md, out):
@@ -98,13 +115,17 @@ def example2(sec, md, out):
     for key in sorted(k[:-len("_samples")] for k in v if k.endswith("_samples")):
         md.append(f"| {key} | {int(v[key + '_samples'])} | {fmt(v[key + '_max_diff'])} | "
                   f"{fmt(v[key + '_max_diff'] / v['range'])} |")
+    worst = max(v[k] for k in v if k.endswith("_max_diff"))
+    say("Example 2: TCM reproduces PI-10 (unitless)",
+        f"largest |TCM - PI| {fmt(worst / v['range'], 3)} of the output range over "
+        f"{sum(1 for k in v if k.endswith('_samples'))} signals")
     t = sec["tables"].get("trace")
     if t is not None and len(t["data"]):
         fig, ax = plt.subplots(figsize=(6, 4))
         ax.plot(col(t, "x"), col(t, "y_pi"), lw=2.5, label="PI (10 operators)")
         ax.plot(col(t, "x"), col(t, "y_tcm"), "--", lw=1, label="TCM, f0 = PI loading curve")
-        ax.set_xlabel("input x")
-        ax.set_ylabel("output y")
+        ax.set_xlabel("input x (normalised, 0-1)")
+        ax.set_ylabel("output y (normalised)")
         ax.legend()
         md.append(f"\n![TCM and PI]({save(fig, out, 'example2_pi.png')})\n")
     md.append("")
@@ -132,6 +153,10 @@ def experiment(sec, md, out):
     md.append(f"| RMS prediction error | — | {v['rms_error_um']:.3f} µm |")
     md.append(f"| max turning points | 14 (7 LTP + 7 RTP) | {int(v['max_tp'])} |")
     md.append("")
+    title = "The experiment: f0 from a Bouc-Wen piezo, then the paper's test signal"
+    say(title, f"max prediction error {v['max_error_um']:.3f} um ({v['max_error_pct']:.2f} % of the "
+               f"range; paper 0.12 um), RMS {v['rms_error_um']:.3f} um")
+    say(title, f"turning points held at most {int(v['max_tp'])} (paper 14)")
     i, x = col(t, "i"), col(t, "x_V")
     yp, ym, tp = col(t, "y_plant_um"), col(t, "y_model_um"), col(t, "tp")
     fig, ax = plt.subplots(figsize=(6, 4.5))
@@ -147,8 +172,8 @@ def experiment(sec, md, out):
     axs[1].plot(i, ym - yp)
     axs[1].set_ylabel("model − plant (µm)")
     axs[2].step(i, tp, where="post")
-    axs[2].set_ylabel("turning points")
-    axs[2].set_xlabel("sample")
+    axs[2].set_ylabel("turning points (count)")
+    axs[2].set_xlabel("sample (0.1 V steps)")
     md.append(f"![error and turning points (Fig. 14 analogue)]({save(fig, out, 'experiment_error_tp.png')})\n")
 
 
@@ -164,18 +189,7 @@ def measured(sec, md, out):
         md.append(f"| {m} | {c[0]:.5g} | {c[1]:.5g} | {c[2]:.5g} | {c[3]:.5g} | {fmt(v[m + '_rms'])} | "
                   f"{fmt(v[m + '_predict_rms'])} | {fmt(v[m + '_predict_max'])} |")
     md.append("")
-    t = sec["tables"].get("prediction")
-    if t is not None and len(t["data"]):
-        i, ymeas, ymod = col(t, "i"), col(t, "y_measured"), col(t, "y_model")
-        fig, axs = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
-        axs[0].plot(i, ymeas, lw=2, label="measured")
-        axs[0].plot(i, ymod, "--", lw=1, label="TCM (joint fit)")
-        axs[0].set_ylabel("sensor units")
-        axs[0].legend()
-        axs[1].plot(i, ymod - ymeas)
-        axs[1].set_ylabel("model − measured")
-        axs[1].set_xlabel("row")
-        md.append(f"![measured]({save(fig, out, 'measured_prediction.png')})\n")
+    md.append("The model `hyst fit` chooses on this record, and its prediction, follow.\n")
 
 
 CANDIDATE = re.compile(r"^# candidate (?:everett degree (\d+) t-degree (\d+)|degree (\d+)) delay (\d+): "
@@ -219,10 +233,11 @@ def periodic_bound(x, y, skip, delay):
     return period, learnable, scatter, means[-1] - means[0], cycles
 
 
-def measured_choice(fit_path, data_path, md):
+def measured_choice(fit_path, data_path, md, out, model_output=None):
     """The measured record's automatic choice by the host tool (hyst fit's
-    printout: every candidate without and with its creep term) and what
-    bounds any rate-independent model on that record."""
+    printout: every candidate without and with its creep term), the chosen
+    model's prediction (hyst sim --model over the record, model_output) and
+    what bounds any rate-independent model on that record."""
     # options: (kind, degree, t-degree, delay, parameters, hold-out, creep tau or None)
     cands, chosen, pi = [], None, None
     with open(fit_path, encoding="utf-8") as fh:
@@ -276,7 +291,13 @@ def measured_choice(fit_path, data_path, md):
               f"{name(small)} at delay {small[3]}, scores {fmt(small[5])}: PI-{pi[0]} / it = "
               f"**{pi[2] / small[5]:.2f}**. Without a creep term the best is {name(plain)} at delay {plain[3]}, "
               f"{fmt(plain[5])}: PI-{pi[0]} / it = {pi[2] / plain[5]:.2f}.\n")
+    title = "Measured record (real piezo): the model `hyst fit` chooses"
+    say(title, f"{name(picked)}, delay {delay} samples, {picked[4]} parameters")
+    say(title, f"hold-out RMS {fmt(picked[5])} sensor units; PI-{pi[0]} {fmt(pi[2])}: "
+               f"{pi[2] / picked[5]:.2f} times better")
     data = np.loadtxt(data_path)
+    if model_output:
+        chosen_prediction(data, np.loadtxt(model_output), 350, delay, name(picked), md, out)
     bound = periodic_bound(data[:, 0], data[:, 4], 350, delay)
     if bound is None:
         md.append("The record's drive does not repeat exactly: no bound computed.\n")
@@ -293,6 +314,33 @@ def measured_choice(fit_path, data_path, md):
               f"{fmt(picked[5])} on the last third, {100 * (1 - picked[5] / learnable):.0f} % below what any "
               "rate-independent model can reach there. Minor loops, which the goal names, are not in the "
               "record.\n")
+
+
+def chosen_prediction(data, y_model, skip, delay, label, md, out):
+    """measured_prediction.png: the chosen model (as `hyst fit --save` wrote
+    it, fitted on the whole record) run by `hyst sim --model` over the
+    record, against the measured output on the hold-out's rows (the last
+    third). The record is sampled at 200 Hz."""
+    n = len(data)
+    if len(y_model) != n:
+        sys.exit(f"report: hyst sim gave {len(y_model)} outputs for {n} rows")
+    start = skip + 2 * (n - skip - delay) // 3
+    rows = np.arange(start, n)
+    t, ymeas, ymod = rows / 200.0, data[start:, 4], y_model[start:]
+    rms = float(np.sqrt(np.mean((ymod - ymeas) ** 2)))
+    fig, axs = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
+    axs[0].plot(t, ymeas, lw=2, label="measured")
+    axs[0].plot(t, ymod, "--", lw=1, label=label)
+    axs[0].set_ylabel("output (sensor units)")
+    axs[0].legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=2, frameon=False)
+    axs[1].plot(t, ymod - ymeas, lw=0.8)
+    axs[1].set_ylabel("model − measured (sensor units)")
+    axs[1].set_xlabel("time (s, 200 Hz rows)")
+    axs[1].set_title(f"RMS {rms:.4g} on these rows", fontsize=9)
+    md.append(f"The chosen model as `hyst fit --save` writes it (refitted on the whole record) and run by "
+              f"`hyst sim --model` over the record, on the last third (rows {start}-{n - 1}): RMS "
+              f"{fmt(rms)} sensor units.\n")
+    md.append(f"![measured]({save(fig, out, 'measured_prediction.png')})\n")
 
 
 def timing(path, md, out):
@@ -314,8 +362,8 @@ def timing(path, md, out):
             table[p] = max(table.get(p, 0), n)
     md.append("## Computation time per sample (Fig. 8 analogue)\n")
     md.append("Instructions executed on the Cortex-M4F between the rising and the falling edge of the timing "
-              "pin (the FPGAIO LED register of mps2-an386) around one `hyst_step` call, counted exactly from "
-              "QEMU's instruction log by `tools/qemu_count.py` (same count on every run). p is the number of "
+              "pin (the FPGAIO LED register of mps2-an386) around one `hyst_step` call, counted exactly under "
+              "QEMU by `tools/qemu_count.py` (a TCG plugin counts every instruction; same count on every run). p is the number of "
               "comparisons of the binary search; each point is the worst sample (a wipe-out) with that p. The "
               "paper's line, 0.19 p + 0.57 µs on a 150 MHz DSP28335, is drawn in cycles (28.5 p + 85.5); M4 "
               "instructions and C28x cycles are not the same unit: compare shape and order of magnitude.\n")
@@ -395,7 +443,22 @@ def bench_summary(path, md):
             if len(parts) == 2:
                 rows.append(parts)
     if rows:
-        per_core(dict(rows), md)
+        b = dict(rows)
+        title = "Per-sample cost on the Cortex-M4F (exact instruction counts under QEMU)"
+        say(title, f"hyst_step: typical {b.get('tcm_typical_insns', '?')} instructions, worst at "
+                   f"Nu = 4096 {b.get('tcm_worst_clamped_insns_nu4096', '?')}; PI-10 "
+                   f"{b.get('pi10_insns', '?')}")
+        say(title, f"library flash {b.get('core_flash_bytes_Os', '?')} bytes at -Os, engine "
+                   f"{b.get('core_flash_bytes_O2_tcm', '?')} bytes at -O2; step stack "
+                   f"{b.get('step_stack_bytes', '?')} bytes")
+        cores = "Per-sample cost on the other cores (instructions, typical / worst at Nu = 4096)"
+        for label, prefix in (("Cortex-M3, soft float", "m3_f32"), ("Cortex-M3, q31 model", "m3_q31"),
+                              ("Cortex-M3, q31 compensator", "m3_q31_inv"),
+                              ("Cortex-M7, double FPU", "m7_f32")):
+            if f"{prefix}_typical_insns" in b:
+                say(cores, f"{label}: {b[prefix + '_typical_insns']} / "
+                           f"{b.get(prefix + '_worst_insns_nu4096', '?')}")
+        per_core(b, md)
         md.append("Benchmark summary (`bench/run`):\n")
         md.append("| key | value |\n|---|---|")
         md.extend(f"| `{k}` | {v} |" for k, v in rows)
@@ -409,6 +472,9 @@ def memory(sec, md, bench):
     # the M4F); the report's own build carries the test suite's f64 variant, a larger instance.
     inst = int(bench.get("sizeof_hyst_t", sec["values"]["instance_bytes"]))
     md.append("## Memory (Table 2 analogue)\n")
+    say("Memory (Table 2 analogue)",
+        f"instance {int(sec['values']['instance_bytes'])} bytes + 4 arrays of Nu/2 entries x "
+        f"{int(sec['values']['real_bytes'])} bytes; at 12 bits {int(t['data'][0][3]):,} bytes")
     md.append(f"One instance with arrays for Nu = 2^bits codes: 4 arrays × Nu/2 entries × "
               f"{int(sec['values']['real_bytes'])} bytes + {inst} bytes of "
               "instance. (The paper's table corresponds to 8 bytes per entry position at 12 and 16 bits and "
@@ -453,9 +519,12 @@ def compensation(sec, md, out):
         ax.plot(i, col(t, "y_open") - col(t, "y_ref"), label="open loop")
         ax.plot(i, col(t, "y_comp") - col(t, "y_ref"), label="inverse TCM")
         ax.set_xlabel("sample")
-        ax.set_ylabel("tracking error")
+        ax.set_ylabel("tracking error (µm)")
         ax.legend()
         md.append(f"![compensation]({save(fig, out, 'compensation.png')})\n")
+    say("Compensation of the Bouc-Wen plant",
+        f"RMS tracking error {fmt(v['comp_rms'])} um with the inverse TCM, {fmt(v['open_rms'])} um "
+        f"open loop: {v['open_rms'] / v['comp_rms']:.1f}-fold lower")
 
 
 def asymmetric(sec, md, out):
@@ -494,6 +563,27 @@ def asymmetric(sec, md, out):
                    f"{fmt(v['pi_holdout_rms'])}." if "everett6_holdout_rms" in v else "") + "\n")
     md.append("The symmetric TCM and PI-10 are both point-symmetric (rule 4), so neither can follow the plant's "
               "asymmetry: that, not their parameter count, bounds their error here.\n")
+    title = "Asymmetric plant with a lagging sensor"
+    t = sec["tables"].get("prediction")
+    if "everett_degree" in v:
+        say(title, f"prediction RMS: asymmetric TCM {fmt(v['everett_predict_rms'])} um, PI-10 "
+                   f"{fmt(v['pi_predict_rms'])} um: {v['pi_predict_rms'] / v['everett_predict_rms']:.1f} "
+                   f"times better ({int(v['everett_params'])} parameters against {int(v['pi_params'])})")
+        if t is not None and len(t["data"]) and "y_everett" in t["cols"]:
+            i, ys = col(t, "i"), col(t, "y_sensor")
+            fig, ax = plt.subplots(figsize=(7, 4))
+            for key, label, style in (("y_pi", "PI-10", "-"), ("y_tcm", "symmetric TCM", "-"),
+                                      ("y_everett", "asymmetric TCM", "-")):
+                err = col(t, key) - ys
+                ax.plot(i, err, style, lw=0.9,
+                        label=f"{label}: RMS {np.sqrt(np.mean(err ** 2)):.3g} µm")
+            ax.set_xlabel("sample (test signal)")
+            ax.set_ylabel("prediction − sensor (µm)")
+            ax.set_title(f"asymmetric TCM {v['pi_predict_rms'] / v['everett_predict_rms']:.1f} times "
+                         "lower RMS than PI-10", fontsize=9)
+            ax.legend(fontsize=8, loc="lower center")
+            md.append(f"![prediction errors on the asymmetric plant]"
+                      f"({save(fig, out, 'asymmetric_error.png')})\n")
     if "symmetric_comp_rms_ratio" in v:
         md.append("Compensation of the actuator along the test signal's shape (5-95 % of the stroke), RMS "
                   "tracking error in µm, open loop = linear scaling of the desired output onto the drive:\n")
@@ -525,7 +615,24 @@ def asymmetric(sec, md, out):
                   (" The directly identified compensator costs what the forward model costs per sample "
                    "(docs/timing.md) but fits its E to noisy readings as inputs: half the reduction of the "
                    "model's exact or tabulated inverse." if "comp_direct_rms_ratio" in v else "") + "\n")
-    t = sec["tables"].get("prediction")
+        say(title, f"compensation: RMS tracking error {fmt(v['comp_rms'])} um through the asymmetric TCM's "
+                   f"inverse, {fmt(v['open_rms'])} um open loop: {v['comp_rms_ratio']:.1f}-fold lower "
+                   f"(symmetric TCM's inverse: {v['symmetric_comp_rms_ratio']:.2f}-fold)")
+        tr = sec["tables"].get("tracking")
+        if tr is not None and len(tr["data"]):
+            i, ref = col(tr, "i"), col(tr, "y_ref")
+            fig, ax = plt.subplots(figsize=(7, 4))
+            ax.plot(i, col(tr, "y_open") - ref, lw=0.9,
+                    label=f"open loop (linear scaling): RMS {v['open_rms']:.3g} µm")
+            ax.plot(i, col(tr, "y_comp") - ref, lw=0.9,
+                    label=f"inverse of the asymmetric TCM: RMS {v['comp_rms']:.3g} µm")
+            ax.set_xlabel("sample (test signal)")
+            ax.set_ylabel("tracking error (µm)")
+            ax.set_title(f"RMS tracking error {v['comp_rms_ratio']:.1f}-fold lower (comp_rms_ratio)",
+                         fontsize=9)
+            ax.legend(fontsize=8, loc="lower right")
+            md.append(f"![compensation of the asymmetric plant]"
+                      f"({save(fig, out, 'asymmetric_compensation.png')})\n")
     if t is not None and len(t["data"]):
         fig, ax = plt.subplots(figsize=(7, 4))
         x = col(t, "x_V")
@@ -548,6 +655,10 @@ def main():
     ap.add_argument("--bench", help="bench/run summary (key value lines)")
     ap.add_argument("--measured-fit", help="hyst fit's printout on the measured record (host tool)")
     ap.add_argument("--measured-data", help="the measured record (tests/data/piezo_major_loop.dat)")
+    ap.add_argument("--console", choices=("all", "bench", "none"), default="all",
+                    help="headline figures printed: all, the per-sample cost's only, none")
+    ap.add_argument("--measured-model-output",
+                    help="hyst sim --model's outputs of the chosen model over the measured record")
     args = ap.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
     meta, secs = parse(args.firmware_output)
@@ -563,9 +674,14 @@ def main():
         if name in secs:
             fn(secs[name])
     if args.measured_fit and args.measured_data:
-        measured_choice(args.measured_fit, args.measured_data, md)
+        measured_choice(args.measured_fit, args.measured_data, md, args.out_dir,
+                        args.measured_model_output)
     if args.timing:
         timing(args.timing, md, args.out_dir)
+    else:
+        md.append("## Computation time per sample\n")
+        md.append("Not measured in this run: `./tools/demo` writes the report first, then measures the "
+                  "per-sample cost (`bench/run`) and writes it again with it.\n")
     if args.bench:
         bench_summary(args.bench, md)
     if "memory" in secs:
@@ -578,6 +694,13 @@ def main():
     md.append(f"---\nChecks that failed on the target: {failures}.\n")
     with open(os.path.join(args.out_dir, "README.md"), "w", encoding="utf-8") as fh:
         fh.write("\n".join(md) + "\n")
+    for title, lines in CONSOLE:
+        if args.console == "none" or (args.console == "bench" and not title.startswith("Per-sample")):
+            continue
+        print(f"  {title}")
+        for line in lines:
+            print(f"    {line}")
+    print(f"  checks that failed on the target: {failures}")
     print(f"report: {os.path.join(args.out_dir, 'README.md')}")
     return 0 if failures == "0" else 1
 
