@@ -50,12 +50,13 @@ static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
 #define TCM_NORM(a) ((a) + NUM_C(0.0)) /* -0 + +0 = +0 */
 #define TCM_REAL_INPUT 1
 #define TCM_ADMIT(S, x, out) NUM_NAME(admit)((S), (x), (out))
-#define TCM_G_OTHER(c, d) NUM_NAME(curve_g_other_)((c), (d))
+#define TCM_CURVE_G(c, d) NUM_NAME(curve_g_other_)((c), (d))
 #ifdef NUM_KEY_T
 #define TCM_KEY_T NUM_KEY_T
 #define TCM_UKEY_T NUM_UKEY_T
 #endif
 #include "tcm_engine.h"
+#include "kinds.h"
 
 hyst_status_t NUM_NAME(init_curve_)(hyst_tcm_t *S, const hyst_curve_t *curve, NUM_T *xltp,
                                     NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
@@ -66,8 +67,8 @@ hyst_status_t NUM_NAME(init_curve_)(hyst_tcm_t *S, const hyst_curve_t *curve, NU
     if (st != HYST_OK) {
         return st;
     }
-    NUM_NAME(attach)(S, curve, curve->lo.NUM_F, curve->hi.NUM_F, curve->unit.NUM_F, xltp, yltp,
-                     xrtp, yrtp, capacity);
+    NUM_NAME(attach)(S, curve, NUM_NAME(kind_of)(curve), curve->lo.NUM_F, curve->hi.NUM_F,
+                     curve->unit.NUM_F, xltp, yltp, xrtp, yrtp, capacity);
     return HYST_OK;
 }
 
@@ -84,8 +85,8 @@ hyst_status_t NUM_NAME(init_)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp,
         return st;
     }
     /* A polynomial is copied whole into the instance: no curve to keep. */
-    NUM_NAME(attach)(S, &curve, curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp, yltp,
-                     xrtp, yrtp, capacity);
+    NUM_NAME(attach)(S, &curve, NULL, curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
+                     yltp, xrtp, yrtp, capacity);
     S->curve = NULL;
     return HYST_OK;
 }
@@ -113,8 +114,9 @@ static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,
         return st;
     }
     *inv = curve; /* checked above: attach without checking again */
-    NUM_NAME(attach)(S, inv, inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F, xltp, yltp, xrtp,
-                     yrtp, capacity);
+    /* the inverted polynomial or its table: both the out-of-line kind */
+    NUM_NAME(attach)(S, inv, &NUM_NAME(kind_curve), inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F,
+                     xltp, yltp, xrtp, yrtp, capacity);
     return HYST_OK;
 }
 
