@@ -84,7 +84,7 @@ HYST_INLINE TCM_Y TCM_NAME(everett_emit)(hyst_tcm_t *S, TCM_X x, const int how, 
         }
         return TCM_NAME(emit_rare)(S, x, how);
     }
-    y = TCM_NAME(slow_guard)(S, NUM_MUL_G(acc, u), how);
+    y = TCM_NAME(held_guard)(S, NUM_MUL_G(acc, u), how);
     YV(S->y_prev) = y;
     return y;
 }

@@ -8,7 +8,7 @@
 #error "pi_model.h: include src/curve_eval.h first"
 #endif
 
-hyst_status_t NUM_NAME(pi_check)(const NUM_T *r, const NUM_T *w, size_t n)
+static hyst_status_t NUM_NAME(pi_check_impl)(const NUM_T *r, const NUM_T *w, size_t n)
 {
     hyst_wide_t sum = 0;
     size_t i;
@@ -35,12 +35,15 @@ hyst_status_t NUM_NAME(pi_check)(const NUM_T *r, const NUM_T *w, size_t n)
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(pi_init)(hyst_pi_t *P, const NUM_T *r, const NUM_T *w,
-                           NUM_T *z, size_t n)
+static hyst_status_t NUM_NAME(pi_init_impl)(hyst_pi_t *P, const NUM_T *r, const NUM_T *w, NUM_T *z, size_t n,
+                                 unsigned long layout)
 {
     hyst_status_t st;
     if (P == NULL || z == NULL) {
         return HYST_ERR_NULL;
+    }
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
     }
     st = NUM_NAME(pi_check)(r, w, n);
     if (st != HYST_OK) {
@@ -55,7 +58,7 @@ hyst_status_t NUM_NAME(pi_init)(hyst_pi_t *P, const NUM_T *r, const NUM_T *w,
     return HYST_OK;
 }
 
-NUM_T NUM_NAME(pi_step)(hyst_pi_t *P, NUM_T x)
+HYST_INLINE NUM_T NUM_NAME(pi_step_impl)(hyst_pi_t *P, NUM_T x)
 {
     const NUM_T *r, *w;
     NUM_T *z;
@@ -85,7 +88,7 @@ NUM_T NUM_NAME(pi_step)(hyst_pi_t *P, NUM_T x)
     return y;
 }
 
-hyst_status_t NUM_NAME(pi_process)(hyst_pi_t *P, const NUM_T *x, NUM_T *y,
+HYST_INLINE hyst_status_t NUM_NAME(pi_process_impl)(hyst_pi_t *P, const NUM_T *x, NUM_T *y,
                               size_t n)
 {
     int failed = 0;
@@ -114,7 +117,7 @@ static NUM_T NUM_NAME(inverse_weight)(const NUM_T *w, size_t i, hyst_wide_t slop
     return (NUM_T)(-(hyst_wide_t)w[i] / (slope * prev_slope));
 }
 
-hyst_status_t NUM_NAME(pi_inverse_params)(const NUM_T *r, const NUM_T *w,
+static hyst_status_t NUM_NAME(pi_inverse_params_impl)(const NUM_T *r, const NUM_T *w,
                                      size_t n, NUM_T *r_inv, NUM_T *w_inv)
 {
     hyst_wide_t slope, thr, sum;
@@ -166,13 +169,15 @@ hyst_status_t NUM_NAME(pi_inverse_params)(const NUM_T *r, const NUM_T *w,
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(pi_init_inverse)(hyst_pi_t *inv, const hyst_pi_t *fwd,
-                                   NUM_T *r_inv, NUM_T *w_inv,
-                                   NUM_T *z_inv)
+static hyst_status_t NUM_NAME(pi_init_inverse_impl)(hyst_pi_t *inv, const hyst_pi_t *fwd, NUM_T *r_inv,
+                                         NUM_T *w_inv, NUM_T *z_inv, unsigned long layout)
 {
     hyst_status_t st;
     if (inv == NULL || fwd == NULL || z_inv == NULL) {
         return HYST_ERR_NULL;
+    }
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
     }
     if (fwd->variant != (unsigned)NUM_VARIANT) {
         return HYST_ERR_ARG;
@@ -181,10 +186,10 @@ hyst_status_t NUM_NAME(pi_init_inverse)(hyst_pi_t *inv, const hyst_pi_t *fwd,
     if (st != HYST_OK) {
         return st;
     }
-    return NUM_NAME(pi_init)(inv, r_inv, w_inv, z_inv, fwd->n);
+    return NUM_NAME(pi_init_)(inv, r_inv, w_inv, z_inv, fwd->n, layout);
 }
 
-hyst_status_t NUM_NAME(pi_loading_curve)(hyst_curve_t *curve, const NUM_T *r,
+static hyst_status_t NUM_NAME(pi_loading_curve_impl)(hyst_curve_t *curve, const NUM_T *r,
                                     const NUM_T *w, size_t n, NUM_T hi,
                                     NUM_T *bx, NUM_T *by)
 {
@@ -212,6 +217,6 @@ hyst_status_t NUM_NAME(pi_loading_curve)(hyst_curve_t *curve, const NUM_T *r,
     return NUM_NAME(curve_from_pwl_)(curve, bx, by, n + 1u, HYST_LAYOUT);
 }
 
-NUM_T NUM_NAME(pi_output)(const hyst_pi_t *P) { return P != NULL ? P->y_prev.NUM_F : 0; }
+HYST_INLINE NUM_T NUM_NAME(pi_output_impl)(const hyst_pi_t *P) { return P != NULL ? P->y_prev.NUM_F : 0; }
 
 #endif /* HYST_PI_MODEL_H */

@@ -218,16 +218,29 @@ static void TCM_NAME(close_window)(hyst_tcm_t *S);
  *   sample is slow too. An open window thus always has
  *   y_prev == y_ctp +- g_prev, which is all the fast guard needs (and what
  *   a restore re-derives: resume_()). */
+HYST_INLINE TCM_Y TCM_NAME(slow_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
+{
+    TCM_Y y = TCM_NAME(on_branch)(S, g);
+    YV(S->g_prev) = g;
+    if (how == TCM_ROSE ? y < YV(S->y_prev) : y > YV(S->y_prev)) {
+        y = YV(S->y_prev);
+        TCM_NAME(close_window)(S);
+    }
+    return y;
+}
+
 /* The slow guard's rare end: the last output held, the window closed. Out
- * of line: a branch on the slow paths, not a select the compiler might
- * write into them. */
+ * of line: a branch on the slow path, not the selects a compiler may write
+ * into it otherwise (held_guard()). */
 static TCM_NOINLINE TCM_Y TCM_NAME(held)(hyst_tcm_t *S)
 {
     TCM_NAME(close_window)(S);
     return YV(S->y_prev);
 }
 
-HYST_INLINE TCM_Y TCM_NAME(slow_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
+/* slow_guard() with its rare end out of line (the asymmetric kind's slow
+ * sample: GCC writes the inline end there as four conditional moves). */
+HYST_INLINE TCM_Y TCM_NAME(held_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
 {
     const TCM_Y y = TCM_NAME(on_branch)(S, g);
     YV(S->g_prev) = g;
@@ -297,10 +310,7 @@ HYST_INLINE TCM_Y TCM_NAME(input_anchor)(const hyst_tcm_t *S)
         }                                         \
         acc = NUM_HORNER##n##_(S->coef, u);       \
         break
-#define TCM_KEPT_CASE_(n)                                                                   \
-    case n##u:                                                                              \
-    case HYST_HORNER_ASYM_ + n##u:                                                          \
-    case HYST_HORNER_ASYM_LINEAR_ + n##u: acc = NUM_HORNER##n##_(S->coef, u); break
+#define TCM_ASYM_KEPT_(n) (void)0
 #define TCM_ASYM_CASES_(base, derivation)             \
     TCM_ASYM_CASE_(base, 1, derivation(1u));          \
     TCM_ASYM_CASE_(base, 2, derivation(2u));          \
@@ -327,13 +337,12 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
         }
         u = NUM_G_ONE;
         break;
-    /* degrees 1..4: a polynomial's, or the coefficients an asymmetric kind
-     * derived (its own slow samples derive them: src/kind_everett.h) */
-    TCM_KEPT_CASE_(1);
-    TCM_KEPT_CASE_(2);
-    TCM_KEPT_CASE_(3);
-    TCM_KEPT_CASE_(4);
-    NUM_HORNER_CASES_HIGH_(S->coef, u, acc);
+    NUM_HORNER_CASES_(S->coef, u, acc);
+    /* the coefficients an asymmetric kind derived (its own slow samples
+     * derive them: src/kind_everett.h); cases of their own, not labels of
+     * the polynomial's: the fast path's code is laid out better so */
+    TCM_ASYM_CASES_(HYST_HORNER_ASYM_, TCM_ASYM_KEPT_);
+    TCM_ASYM_CASES_(HYST_HORNER_ASYM_LINEAR_, TCM_ASYM_KEPT_);
     case HYST_HORNER_SOLVE_: /* the kind's own evaluation */
         return TCM_KIND(S)->emit(S, x, how, derive);
 #ifndef NUM_FIXED

@@ -58,7 +58,7 @@ static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
 #include "tcm_engine.h"
 #include "kinds.h"
 
-hyst_status_t NUM_NAME(init_curve_)(hyst_tcm_t *S, const hyst_curve_t *curve, NUM_T *xltp,
+static hyst_status_t NUM_NAME(init_curve_impl)(hyst_tcm_t *S, const hyst_curve_t *curve, NUM_T *xltp,
                                     NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                     unsigned long layout)
 {
@@ -72,7 +72,7 @@ hyst_status_t NUM_NAME(init_curve_)(hyst_tcm_t *S, const hyst_curve_t *curve, NU
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(init_)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
+static hyst_status_t NUM_NAME(init_impl)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
                               NUM_T *xrtp, NUM_T *yrtp, size_t capacity, unsigned long layout)
 {
     hyst_curve_t curve;
@@ -120,7 +120,7 @@ static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(init_inverse_exact_)(hyst_tcm_t *S, hyst_curve_t *inv,
+static hyst_status_t NUM_NAME(init_inverse_exact_impl)(hyst_tcm_t *S, hyst_curve_t *inv,
                                             const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
                                             NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                             unsigned long layout)
@@ -129,7 +129,7 @@ hyst_status_t NUM_NAME(init_inverse_exact_)(hyst_tcm_t *S, hyst_curve_t *inv,
                                      layout);
 }
 
-hyst_status_t NUM_NAME(init_inverse_table_)(hyst_tcm_t *S, hyst_curve_t *inv,
+static hyst_status_t NUM_NAME(init_inverse_table_impl)(hyst_tcm_t *S, hyst_curve_t *inv,
                                             const hyst_poly_t *f0, NUM_T *table,
                                             size_t intervals, NUM_T *xltp, NUM_T *yltp,
                                             NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
@@ -151,7 +151,7 @@ static hyst_status_t NUM_NAME(deadband_check)(const hyst_tcm_t *S, NUM_T width)
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(set_deadband)(hyst_tcm_t *S, NUM_T width)
+static hyst_status_t NUM_NAME(set_deadband_impl)(hyst_tcm_t *S, NUM_T width)
 {
     const hyst_status_t st = NUM_NAME(deadband_check)(S, width);
     if (st != HYST_OK) {
@@ -163,7 +163,7 @@ hyst_status_t NUM_NAME(set_deadband)(hyst_tcm_t *S, NUM_T width)
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(request_deadband)(hyst_tcm_t *S, NUM_T width)
+static hyst_status_t NUM_NAME(request_deadband_impl)(hyst_tcm_t *S, NUM_T width)
 {
     const hyst_status_t st = NUM_NAME(deadband_check)(S, width);
     if (st != HYST_OK) {
@@ -173,20 +173,20 @@ hyst_status_t NUM_NAME(request_deadband)(hyst_tcm_t *S, NUM_T width)
     return hyst_post_request_(S, &S->req_deadband);
 }
 
-NUM_T NUM_NAME(step)(hyst_tcm_t *S, NUM_T x) { return NUM_NAME(sample)(S, x); }
+HYST_INLINE NUM_T NUM_NAME(step_impl)(hyst_tcm_t *S, NUM_T x) { return NUM_NAME(sample)(S, x); }
 
-hyst_status_t NUM_NAME(process)(hyst_tcm_t *S, const NUM_T *x, NUM_T *y, size_t n)
+HYST_INLINE hyst_status_t NUM_NAME(process_impl)(hyst_tcm_t *S, const NUM_T *x, NUM_T *y, size_t n)
 {
     return NUM_NAME(block)(S, x, y, n);
 }
 
-NUM_T NUM_NAME(output)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).y : 0; }
+HYST_INLINE NUM_T NUM_NAME(output_impl)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).y : 0; }
 
-NUM_T NUM_NAME(input)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).x : 0; }
+HYST_INLINE NUM_T NUM_NAME(input_impl)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).x : 0; }
 
-NUM_T NUM_NAME(rounding_bound)(const hyst_tcm_t *S) { return S != NULL ? S->rounding.NUM_F : 0; }
+HYST_INLINE NUM_T NUM_NAME(rounding_bound_impl)(const hyst_tcm_t *S) { return S != NULL ? S->rounding.NUM_F : 0; }
 
-NUM_T NUM_NAME(error_bound)(const hyst_tcm_t *S)
+HYST_INLINE NUM_T NUM_NAME(error_bound_impl)(const hyst_tcm_t *S)
 {
     return S != NULL ? NUM_NAME(view)(S).bound : 0;
 }
