@@ -452,7 +452,7 @@ static NUM_T NUM_NAME(curve_eval_impl)(const hyst_curve_t *curve, NUM_T x)
         return 0;
     }
     x = x < curve->lo.NUM_F ? curve->lo.NUM_F : (x > curve->hi.NUM_F ? curve->hi.NUM_F : x);
-    return curve->y_lo.NUM_F + NUM_NAME(curve_g)(curve, x - curve->lo.NUM_F);
+    return curve->y_lo.NUM_F + NUM_NAME(curve_g_impl)(curve, x - curve->lo.NUM_F);
 }
 
 #undef REAL_EPS

@@ -45,7 +45,7 @@ static hyst_status_t NUM_NAME(pi_init_impl)(hyst_pi_t *P, const NUM_T *r, const 
     if (layout != HYST_LAYOUT) {
         return HYST_ERR_LAYOUT;
     }
-    st = NUM_NAME(pi_check)(r, w, n);
+    st = NUM_NAME(pi_check_impl)(r, w, n);
     if (st != HYST_OK) {
         return st;
     }
@@ -97,7 +97,7 @@ HYST_INLINE hyst_status_t NUM_NAME(pi_process_impl)(hyst_pi_t *P, const NUM_T *x
         return HYST_ERR_NULL;
     }
     for (i = 0u; i < n; ++i) {
-        y[i] = NUM_NAME(pi_step)(P, x[i]);
+        y[i] = NUM_NAME(pi_step_impl)(P, x[i]);
         failed |= P->status < 0;
     }
     return failed ? HYST_ERR_NONFINITE : HYST_OK;
@@ -122,7 +122,7 @@ static hyst_status_t NUM_NAME(pi_inverse_params_impl)(const NUM_T *r, const NUM_
 {
     hyst_wide_t slope, thr, sum;
     size_t i;
-    hyst_status_t st = NUM_NAME(pi_check)(r, w, n);
+    hyst_status_t st = NUM_NAME(pi_check_impl)(r, w, n);
     if (st != HYST_OK) {
         return st;
     }
@@ -182,11 +182,11 @@ static hyst_status_t NUM_NAME(pi_init_inverse_impl)(hyst_pi_t *inv, const hyst_p
     if (fwd->variant != (unsigned)NUM_VARIANT) {
         return HYST_ERR_ARG;
     }
-    st = NUM_NAME(pi_inverse_params)(fwd->r.NUM_F, fwd->w.NUM_F, fwd->n, r_inv, w_inv);
+    st = NUM_NAME(pi_inverse_params_impl)(fwd->r.NUM_F, fwd->w.NUM_F, fwd->n, r_inv, w_inv);
     if (st != HYST_OK) {
         return st;
     }
-    return NUM_NAME(pi_init_)(inv, r_inv, w_inv, z_inv, fwd->n, layout);
+    return NUM_NAME(pi_init_impl)(inv, r_inv, w_inv, z_inv, fwd->n, layout);
 }
 
 static hyst_status_t NUM_NAME(pi_loading_curve_impl)(hyst_curve_t *curve, const NUM_T *r,
@@ -195,7 +195,7 @@ static hyst_status_t NUM_NAME(pi_loading_curve_impl)(hyst_curve_t *curve, const 
 {
     hyst_wide_t slope = 0, value = 0;
     size_t i;
-    hyst_status_t st = NUM_NAME(pi_check)(r, w, n);
+    hyst_status_t st = NUM_NAME(pi_check_impl)(r, w, n);
     if (st != HYST_OK) {
         return st;
     }
@@ -214,7 +214,7 @@ static hyst_status_t NUM_NAME(pi_loading_curve_impl)(hyst_curve_t *curve, const 
         bx[i] = x;
         by[i] = (NUM_T)value;
     }
-    return NUM_NAME(curve_from_pwl_)(curve, bx, by, n + 1u, HYST_LAYOUT);
+    return NUM_NAME(curve_from_pwl_impl)(curve, bx, by, n + 1u, HYST_LAYOUT);
 }
 
 HYST_INLINE NUM_T NUM_NAME(pi_output_impl)(const hyst_pi_t *P) { return P != NULL ? P->y_prev.NUM_F : 0; }

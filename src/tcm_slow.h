@@ -27,11 +27,14 @@
 
 static TCM_Y TCM_SLOW(step_slow)(hyst_tcm_t *S, TCM_ARG x_in);
 
-/* settle() of this copy's kinds. */
-static void TCM_SLOW(settle_slow)(hyst_tcm_t *S, TCM_X x)
-{
-    TCM_NAME(settle_as)(S, x, TCM_SLOW_PER_BRANCH);
-}
+/* settle() of this copy's kinds: the engine's own for a kind that derives
+ * its branches, one without that test for the others. */
+#if TCM_SLOW_PER_BRANCH
+#define TCM_SLOW_SETTLE(S, x) TCM_NAME(settle)((S), (x))
+#else
+static void TCM_SLOW(settle_slow)(hyst_tcm_t *S, TCM_X x) { TCM_NAME(settle_as)(S, x, 0); }
+#define TCM_SLOW_SETTLE(S, x) TCM_SLOW(settle_slow)((S), (x))
+#endif
 
 
 #if TCM_SLOW_PER_BRANCH
@@ -54,7 +57,7 @@ static TCM_NOINLINE TCM_Y TCM_SLOW(edge_derived)(hyst_tcm_t *S, TCM_X x, TCM_X x
 static TCM_Y TCM_SLOW(finish)(hyst_tcm_t *S, TCM_X x, int how)
 {
     TCM_Y y;
-    TCM_SLOW(settle_slow)(S, x);
+    TCM_SLOW_SETTLE(S, x);
     if ((S->detour & TCM_SLOW_ONLY) == 0u) {
         y = TCM_SLOW_EMIT(S, x, how, TCM_KEEP_SLOW); /* serves a pending request */
     } else {
@@ -260,6 +263,7 @@ static TCM_Y TCM_SLOW(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
 }
 
 #undef TCM_SLOW_DETOUR_OK
+#undef TCM_SLOW_SETTLE
 #undef TCM_SLOW
 #undef TCM_SLOW_EMIT
 #undef TCM_SLOW_PER_BRANCH

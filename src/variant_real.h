@@ -103,7 +103,7 @@ static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,
     /* curve errors first, then the instance's (inverse.h) */
     hyst_status_t st = inv == NULL ? HYST_ERR_NULL : hyst_curve_poly_(&fwd, f0, NUM_VARIANT, layout);
     if (st == HYST_OK) {
-        st = tabulate ? NUM_NAME(curve_inverse_table)(&curve, &fwd, table, intervals)
+        st = tabulate ? NUM_NAME(curve_inverse_table_impl)(&curve, &fwd, table, intervals)
                       : hyst_curve_inverse(&curve, &fwd);
     }
     if (st == HYST_OK) {
