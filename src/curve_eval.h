@@ -45,7 +45,7 @@ static int NUM_NAME(span_is_finite)(NUM_T a, NUM_T b)
     return NUM_NAME(is_finite)(d);
 }
 
-hyst_status_t NUM_NAME(curve_from_pwl_)(hyst_curve_t *curve, const NUM_T *x, const NUM_T *y,
+static hyst_status_t NUM_NAME(curve_from_pwl_impl)(hyst_curve_t *curve, const NUM_T *x, const NUM_T *y,
                                        size_t n, unsigned long layout)
 {
     hyst_curve_t out;
@@ -399,7 +399,7 @@ NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
     return NUM_NAME(pwl_eval)(curve, curve->lo.NUM_F + d) - curve->y_lo.NUM_F;
 }
 
-NUM_T NUM_NAME(curve_g)(const hyst_curve_t *curve, NUM_T d)
+static NUM_T NUM_NAME(curve_g_impl)(const hyst_curve_t *curve, NUM_T d)
 {
     if (curve == NULL || curve->variant != (unsigned)NUM_VARIANT) {
         return 0;
@@ -409,7 +409,7 @@ NUM_T NUM_NAME(curve_g)(const hyst_curve_t *curve, NUM_T d)
                : NUM_NAME(curve_g_other_)(curve, d * curve->unit.NUM_F); /* exact for unit 1 */
 }
 
-hyst_status_t NUM_NAME(curve_inverse_table)(hyst_curve_t *inv, const hyst_curve_t *fwd,
+static hyst_status_t NUM_NAME(curve_inverse_table_impl)(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                             NUM_T *table, size_t intervals)
 {
     hyst_ptr_t t;
@@ -417,7 +417,7 @@ hyst_status_t NUM_NAME(curve_inverse_table)(hyst_curve_t *inv, const hyst_curve_
     return hyst_curve_inverse_table_(inv, fwd, t, intervals, NUM_VARIANT);
 }
 
-hyst_status_t NUM_NAME(curve_everett_inverse_table)(hyst_curve_t *inv, const hyst_curve_t *fwd,
+static hyst_status_t NUM_NAME(curve_everett_inverse_table_impl)(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                                     NUM_T *table, size_t rows, size_t intervals)
 {
     hyst_ptr_t t;
@@ -425,7 +425,7 @@ hyst_status_t NUM_NAME(curve_everett_inverse_table)(hyst_curve_t *inv, const hys
     return hyst_curve_everett_inverse_table_(inv, fwd, t, rows, intervals, NUM_VARIANT);
 }
 
-hyst_status_t NUM_NAME(curve_inverse_table_const)(hyst_curve_t *inv, const hyst_curve_t *fwd,
+static hyst_status_t NUM_NAME(curve_inverse_table_const_impl)(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                                   const NUM_T *table, size_t intervals,
                                                   const hyst_table_seal_t *seal)
 {
@@ -434,7 +434,7 @@ hyst_status_t NUM_NAME(curve_inverse_table_const)(hyst_curve_t *inv, const hyst_
     return hyst_curve_inverse_table_const_(inv, fwd, t, intervals, seal, NUM_VARIANT);
 }
 
-hyst_status_t NUM_NAME(curve_everett_inverse_table_const)(hyst_curve_t *inv,
+static hyst_status_t NUM_NAME(curve_everett_inverse_table_const_impl)(hyst_curve_t *inv,
                                                           const hyst_curve_t *fwd,
                                                           const NUM_T *table, size_t rows,
                                                           size_t intervals,
@@ -446,13 +446,13 @@ hyst_status_t NUM_NAME(curve_everett_inverse_table_const)(hyst_curve_t *inv,
                                                    NUM_VARIANT);
 }
 
-NUM_T NUM_NAME(curve_eval)(const hyst_curve_t *curve, NUM_T x)
+static NUM_T NUM_NAME(curve_eval_impl)(const hyst_curve_t *curve, NUM_T x)
 {
     if (curve == NULL || curve->variant != (unsigned)NUM_VARIANT) {
         return 0;
     }
     x = x < curve->lo.NUM_F ? curve->lo.NUM_F : (x > curve->hi.NUM_F ? curve->hi.NUM_F : x);
-    return curve->y_lo.NUM_F + NUM_NAME(curve_g)(curve, x - curve->lo.NUM_F);
+    return curve->y_lo.NUM_F + NUM_NAME(curve_g_impl)(curve, x - curve->lo.NUM_F);
 }
 
 #undef REAL_EPS

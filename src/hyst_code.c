@@ -37,14 +37,16 @@ static int hyst_code_admit(hyst_tcm_t *S, uint_least32_t code, hyst_code_word_t 
 #define TCM_MID(a, b) ((hyst_code_word_t)((a) + ((b) - (a)) / 2u))
 #define TCM_NORM(a) (a)
 #define TCM_ADMIT(S, x, out) hyst_code_admit((S), (x), (out))
-#define TCM_G_OTHER(c, d) hyst_f32_curve_g_other_((c), (d))
+#define TCM_CURVE_G(c, d) hyst_f32_curve_g_other_((c), (d))
 #include "tcm_engine.h"
+#include "kinds.h"
 
 /* Checked set-up of an instance whose memory and curve were checked: the
  * code range (HYST_ERR_DOMAIN) and the unit of G, then attach. Out of line:
  * both inits call it, and one copy of attach() is enough flash. */
 static TCM_NOINLINE hyst_status_t hyst_code_attach_range(
-    hyst_tcm_t *S, const hyst_curve_t *curve, uint_least32_t code_lo, uint_least32_t code_hi,
+    hyst_tcm_t *S, const hyst_curve_t *curve, const hyst_code_kind_t *kind,
+    uint_least32_t code_lo, uint_least32_t code_hi,
     hyst_code_word_t *xltp, float *yltp, hyst_code_word_t *xrtp, float *yrtp, size_t capacity)
 {
     hyst_wide_t unit;
@@ -55,7 +57,7 @@ static TCM_NOINLINE hyst_status_t hyst_code_attach_range(
      * (hi - lo) / (code_hi - code_lo), folded in once, for every kind. */
     unit = (hyst_wide_t)curve->unit.f32 * ((hyst_wide_t)curve->hi.f32 - (hyst_wide_t)curve->lo.f32) /
            (hyst_wide_t)(code_hi - code_lo);
-    hyst_code_attach(S, curve, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, (float)unit,
+    hyst_code_attach(S, curve, kind, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, (float)unit,
                      xltp, yltp, xrtp, yrtp, capacity);
     return HYST_OK;
 }
@@ -69,8 +71,8 @@ hyst_status_t hyst_code_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve,
         hyst_check_init(S, curve, HYST_VARIANT_F32, xltp, yltp, xrtp, yrtp, capacity,
                         sizeof(hyst_code_word_t), sizeof(float), layout);
     return st != HYST_OK ? st
-                         : hyst_code_attach_range(S, curve, code_lo, code_hi, xltp, yltp, xrtp,
-                                                  yrtp, capacity);
+                         : hyst_code_attach_range(S, curve, hyst_code_kind_of(curve), code_lo,
+                                                  code_hi, xltp, yltp, xrtp, yrtp, capacity);
 }
 
 hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
@@ -85,7 +87,7 @@ hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32
         st = hyst_curve_poly_(&curve, f0, HYST_VARIANT_F32, layout);
     }
     if (st == HYST_OK) {
-        st = hyst_code_attach_range(S, &curve, code_lo, code_hi, xltp, yltp, xrtp, yrtp,
+        st = hyst_code_attach_range(S, &curve, NULL, code_lo, code_hi, xltp, yltp, xrtp, yrtp,
                                     capacity);
     }
     if (st == HYST_OK) {

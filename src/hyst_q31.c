@@ -150,7 +150,7 @@ hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_
     if (!(range > 0) || !hyst_q31_curve_(&q, g, n, range, c)) {
         return HYST_ERR_COEFF;
     }
-    hyst_q31_attach(S, &q, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit, xltp,
+    hyst_q31_attach(S, &q, NULL, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit, xltp,
                     yltp, xrtp, yrtp, capacity);
     S->curve = NULL; /* the polynomial is copied whole into the instance */
     return HYST_OK;

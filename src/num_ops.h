@@ -42,6 +42,9 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
     case 2: acc = NUM_HORNER2_(a, u); break;                                                  \
     case 3: acc = NUM_HORNER3_(a, u); break;                                                  \
     case 4: acc = NUM_HORNER4_(a, u); break;                                                  \
+    NUM_HORNER_CASES_HIGH_(a, u, acc)
+/* The cases 5..8 alone (a caller that writes 1..4 with labels of its own). */
+#define NUM_HORNER_CASES_HIGH_(a, u, acc)                                                    \
     case 5: acc = NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4); break;                            \
     case 6: acc = NUM_HORNER_(a, u, NUM_HORNER_(a, u, NUM_HORNER4_(a, u), 4), 5); break;      \
     case 7:                                                                                   \

@@ -8,7 +8,7 @@
 #error "pi_model.h: include src/curve_eval.h first"
 #endif
 
-hyst_status_t NUM_NAME(pi_check)(const NUM_T *r, const NUM_T *w, size_t n)
+static hyst_status_t NUM_NAME(pi_check_impl)(const NUM_T *r, const NUM_T *w, size_t n)
 {
     hyst_wide_t sum = 0;
     size_t i;
@@ -35,14 +35,17 @@ hyst_status_t NUM_NAME(pi_check)(const NUM_T *r, const NUM_T *w, size_t n)
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(pi_init)(hyst_pi_t *P, const NUM_T *r, const NUM_T *w,
-                           NUM_T *z, size_t n)
+static hyst_status_t NUM_NAME(pi_init_impl)(hyst_pi_t *P, const NUM_T *r, const NUM_T *w, NUM_T *z, size_t n,
+                                 unsigned long layout)
 {
     hyst_status_t st;
     if (P == NULL || z == NULL) {
         return HYST_ERR_NULL;
     }
-    st = NUM_NAME(pi_check)(r, w, n);
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
+    }
+    st = NUM_NAME(pi_check_impl)(r, w, n);
     if (st != HYST_OK) {
         return st;
     }
@@ -55,7 +58,7 @@ hyst_status_t NUM_NAME(pi_init)(hyst_pi_t *P, const NUM_T *r, const NUM_T *w,
     return HYST_OK;
 }
 
-NUM_T NUM_NAME(pi_step)(hyst_pi_t *P, NUM_T x)
+HYST_INLINE NUM_T NUM_NAME(pi_step_impl)(hyst_pi_t *P, NUM_T x)
 {
     const NUM_T *r, *w;
     NUM_T *z;
@@ -85,7 +88,7 @@ NUM_T NUM_NAME(pi_step)(hyst_pi_t *P, NUM_T x)
     return y;
 }
 
-hyst_status_t NUM_NAME(pi_process)(hyst_pi_t *P, const NUM_T *x, NUM_T *y,
+HYST_INLINE hyst_status_t NUM_NAME(pi_process_impl)(hyst_pi_t *P, const NUM_T *x, NUM_T *y,
                               size_t n)
 {
     int failed = 0;
@@ -94,7 +97,7 @@ hyst_status_t NUM_NAME(pi_process)(hyst_pi_t *P, const NUM_T *x, NUM_T *y,
         return HYST_ERR_NULL;
     }
     for (i = 0u; i < n; ++i) {
-        y[i] = NUM_NAME(pi_step)(P, x[i]);
+        y[i] = NUM_NAME(pi_step_impl)(P, x[i]);
         failed |= P->status < 0;
     }
     return failed ? HYST_ERR_NONFINITE : HYST_OK;
@@ -114,12 +117,12 @@ static NUM_T NUM_NAME(inverse_weight)(const NUM_T *w, size_t i, hyst_wide_t slop
     return (NUM_T)(-(hyst_wide_t)w[i] / (slope * prev_slope));
 }
 
-hyst_status_t NUM_NAME(pi_inverse_params)(const NUM_T *r, const NUM_T *w,
+static hyst_status_t NUM_NAME(pi_inverse_params_impl)(const NUM_T *r, const NUM_T *w,
                                      size_t n, NUM_T *r_inv, NUM_T *w_inv)
 {
     hyst_wide_t slope, thr, sum;
     size_t i;
-    hyst_status_t st = NUM_NAME(pi_check)(r, w, n);
+    hyst_status_t st = NUM_NAME(pi_check_impl)(r, w, n);
     if (st != HYST_OK) {
         return st;
     }
@@ -166,31 +169,33 @@ hyst_status_t NUM_NAME(pi_inverse_params)(const NUM_T *r, const NUM_T *w,
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(pi_init_inverse)(hyst_pi_t *inv, const hyst_pi_t *fwd,
-                                   NUM_T *r_inv, NUM_T *w_inv,
-                                   NUM_T *z_inv)
+static hyst_status_t NUM_NAME(pi_init_inverse_impl)(hyst_pi_t *inv, const hyst_pi_t *fwd, NUM_T *r_inv,
+                                         NUM_T *w_inv, NUM_T *z_inv, unsigned long layout)
 {
     hyst_status_t st;
     if (inv == NULL || fwd == NULL || z_inv == NULL) {
         return HYST_ERR_NULL;
     }
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
+    }
     if (fwd->variant != (unsigned)NUM_VARIANT) {
         return HYST_ERR_ARG;
     }
-    st = NUM_NAME(pi_inverse_params)(fwd->r.NUM_F, fwd->w.NUM_F, fwd->n, r_inv, w_inv);
+    st = NUM_NAME(pi_inverse_params_impl)(fwd->r.NUM_F, fwd->w.NUM_F, fwd->n, r_inv, w_inv);
     if (st != HYST_OK) {
         return st;
     }
-    return NUM_NAME(pi_init)(inv, r_inv, w_inv, z_inv, fwd->n);
+    return NUM_NAME(pi_init_impl)(inv, r_inv, w_inv, z_inv, fwd->n, layout);
 }
 
-hyst_status_t NUM_NAME(pi_loading_curve)(hyst_curve_t *curve, const NUM_T *r,
+static hyst_status_t NUM_NAME(pi_loading_curve_impl)(hyst_curve_t *curve, const NUM_T *r,
                                     const NUM_T *w, size_t n, NUM_T hi,
                                     NUM_T *bx, NUM_T *by)
 {
     hyst_wide_t slope = 0, value = 0;
     size_t i;
-    hyst_status_t st = NUM_NAME(pi_check)(r, w, n);
+    hyst_status_t st = NUM_NAME(pi_check_impl)(r, w, n);
     if (st != HYST_OK) {
         return st;
     }
@@ -209,9 +214,9 @@ hyst_status_t NUM_NAME(pi_loading_curve)(hyst_curve_t *curve, const NUM_T *r,
         bx[i] = x;
         by[i] = (NUM_T)value;
     }
-    return NUM_NAME(curve_from_pwl_)(curve, bx, by, n + 1u, HYST_LAYOUT);
+    return NUM_NAME(curve_from_pwl_impl)(curve, bx, by, n + 1u, HYST_LAYOUT);
 }
 
-NUM_T NUM_NAME(pi_output)(const hyst_pi_t *P) { return P != NULL ? P->y_prev.NUM_F : 0; }
+HYST_INLINE NUM_T NUM_NAME(pi_output_impl)(const hyst_pi_t *P) { return P != NULL ? P->y_prev.NUM_F : 0; }
 
 #endif /* HYST_PI_MODEL_H */

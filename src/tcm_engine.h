@@ -19,8 +19,9 @@
  *                        which the search by bit patterns needs)
  *   TCM_ADMIT(S, x, out) a function: 0 if the sample must be ignored, else
  *                        1 with *out inside the domain (clamped if needed)
- *   TCM_G_OTHER(c, d)    g of the curve kinds evaluated out of line
- * and optionally TCM_KEY_T, TCM_UKEY_T: signed and unsigned integers of
+ * and optionally TCM_G_OTHER(c, d): g of a fixed variant's kinds evaluated
+ * out of line (the real variants bind theirs: TCM_NAME(kind_t) below);
+ * TCM_KEY_T, TCM_UKEY_T: signed and unsigned integers of
  * TCM_X's size, to search reals by their bit patterns; and
  * TCM_LTP_BELOW(a, n, x), TCM_RTP_ABOVE(a, n, x): another search over the
  * sorted TP arrays than the binary search below (the benchmarks measure a
@@ -36,7 +37,7 @@
 #if !defined(TCM_NAME) || !defined(TCM_VARIANT) || !defined(TCM_X) || !defined(TCM_XF) ||   \
     !defined(TCM_Y) || !defined(TCM_YF) || !defined(TCM_ARG) || !defined(TCM_IN) ||          \
     !defined(TCM_R) || !defined(TCM_D) || !defined(TCM_MID) || !defined(TCM_NORM) ||         \
-    !defined(TCM_ADMIT) || !defined(TCM_G_OTHER)
+    !defined(TCM_ADMIT)
 #error "tcm_engine.h: the variant must define every TCM_* macro of the contract"
 #endif
 #ifndef HYST_NUM_OPS_H
@@ -50,8 +51,10 @@
 
 #if defined(__GNUC__)
 #define TCM_NOINLINE __attribute__((noinline))
+#define TCM_RARELY(c) __builtin_expect((c) != 0, 0)
 #else
 #define TCM_NOINLINE
+#define TCM_RARELY(c) (c)
 #endif
 
 #ifndef TCM_G_HALF
@@ -88,320 +91,47 @@
                           * monotone guard: the merges' error stays stated
                           * until it is back (finish_book()) */
 
-/* Evaluations of a branch by the asymmetric compensator's solve(), at most. */
-#define TCM_SOLVE_STEPS 48u
+/* A curve kind, as the engine sees it: the operations it binds at init
+ * (src/kinds.h: one table per kind, in the kind's own file). The engine
+ * calls them on slow and rare paths only; a kind the fast path's Horner
+ * cases evaluate needs none of them on a sample that stays on its branch.
+ * A kind never bound is never linked (--gc-sections). */
+typedef struct TCM_NAME(kind) {
+    /* G at u >= 0 on the current branch, out of line: the kinds that the
+     * Horner cases of emit() do not evaluate (rare paths, exact intervals) */
+    TCM_Y (*g)(const hyst_tcm_t *S, TCM_Y u);
+    /* the end of a sample that emit()'s cases do not end (the kind's own
+     * evaluation, derive: TCM_KEEP... below); NULL if none */
+    TCM_Y (*emit)(hyst_tcm_t *S, TCM_X x, int how, int derive);
+    /* the current branch's numbers, once it is settled (per-branch kinds:
+     * TCM_PER_BRANCH); NULL if none */
+    void (*derive)(hyst_tcm_t *S);
+    /* the kind's slow sample (src/tcm_slow.h); NULL: the engine's */
+    TCM_Y (*slow)(hyst_tcm_t *S, TCM_ARG x);
+    /* the deadband's error bound of a skipped loop [b, a]; NULL: the
+     * symmetric kinds' |g(a - b) - 2 g((a - b) / 2)| */
+    TCM_Y (*loop_error)(const hyst_tcm_t *S, TCM_X b, TCM_X a);
+    /* the kind's numbers of the instance, set once at init; NULL if none */
+    void (*attach)(hyst_tcm_t *S, const hyst_curve_t *curve);
+} TCM_NAME(kind_t);
 
-#ifndef NUM_FIXED /* real outputs only */
-/* p(w) = w q(w) and p'(w) on the current branch, q of degree n - 1 <= 3
- * (HYST_EVERETT_MAX_DEGREE), by Horner's rule unrolled. */
-#define TCM_HORNER_D_(c, n, w, p, dp)                                        \
-    do {                                                                   \
-        TCM_Y q_ = YV((c)[0]), dq_ = 0;                                    \
-        switch (n) {                                                       \
-        case 4u: dq_ = q_; q_ = q_ * (w) + YV((c)[1]);                     \
-            dq_ = dq_ * (w) + q_; q_ = q_ * (w) + YV((c)[2]);              \
-            dq_ = dq_ * (w) + q_; q_ = q_ * (w) + YV((c)[3]); break;       \
-        case 3u: dq_ = q_; q_ = q_ * (w) + YV((c)[1]);                     \
-            dq_ = dq_ * (w) + q_; q_ = q_ * (w) + YV((c)[2]); break;       \
-        case 2u: dq_ = q_; q_ = q_ * (w) + YV((c)[1]); break;              \
-        default: break;                                                    \
-        }                                                                  \
-        (p) = q_ * (w);                                                    \
-        (dp) = q_ + (w) * dq_;                                             \
-    } while (0)
+#define TCM_KIND(S) ((const TCM_NAME(kind_t) *)(S)->kind)
 
-/* The asymmetric compensator's G (HYST_CURVE_EVERETT_INV): the drive step
- * span w whose output step on the current forward branch, p(w) = w q(w)
- * (q's coefficients: derive()), is v. Newton's iteration from the last
- * output's w (a function of what a snapshot keeps, so a restore continues
- * bit for bit), bracketed: each evaluation's sign narrows [0, w_end] (p
- * increases), and a step that would leave it (or a zero slope) bisects
- * instead. A step s from w is taken as the answer once Taylor's bound on
- * its error, curv s^2 / (2 (p'(w) - 2 curv s)) with curv >= |p''| on the
- * branch, is at most tol: one evaluation for a sample that moves a little
- * along its branch. Also once s <= tol (s then estimates the error, or
- * bounds it where Newton converges fast) or the bracket is that narrow, and
- * at once on an exact root: at a branch's start p'(0) = 0 (and p''(0) may
- * be 0 too), where Newton's iteration only creeps towards the root and the
- * evaluations would run out far from it. */
-HYST_INLINE TCM_Y TCM_NAME(solve_with)(const hyst_curve_t *c, const hyst_num_t *coef, TCM_Y curv,
-                                       TCM_Y w_end, TCM_Y v, TCM_Y w)
-{
-    const unsigned n = c->u.everett.degree;
-    const TCM_Y tol = YV(c->u.everett.tol);
-    TCM_Y a = 0, b = w_end;
-    unsigned k;
-    w = w > 0 ? (w < b ? w : b) : 0; /* NaN: 0 */
-    for (k = 0u; k < TCM_SOLVE_STEPS; ++k) {
-        TCM_Y p, dp, f, step, next;
-        TCM_HORNER_D_(coef, n, w, p, dp);
-        f = p - v;
-        if (f > 0) {
-            b = w;
-        } else {
-            a = w;
-        }
-        step = f / dp;
-        next = w - step;
-        if (!(next >= a && next <= b)) { /* NaN too */
-            if (f == 0) { /* w is the root; p'(w) = 0 there (a branch's start) */
-                break;
-            }
-            next = a + (b - a) * NUM_C(0.5);
-            if (!(b - a > tol)) {
-                w = next;
-                break;
-            }
-        } else {
-            const TCM_Y s = NUM_NAME(abs)(step);
-            if (curv * s * s <= 2 * tol * (dp - 2 * curv * s) || s <= tol) {
-                w = next;
-                break;
-            }
-        }
-        w = next;
-    }
-    return w * YV(c->u.everett.span);
-}
+static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in);
 
-/* The same on the branch whose numbers derive() keeps in S. */
-HYST_INLINE TCM_Y TCM_NAME(solve_inline)(const hyst_tcm_t *S, TCM_Y v, TCM_Y w)
-{
-    return TCM_NAME(solve_with)(S->curve, S->coef, YV(S->curv), YV(S->w_end), v, w);
-}
-
-/* The same from the secant's point, out of line, for the rare paths (g()
- * of a merge, resume_()). */
-static TCM_NOINLINE TCM_Y TCM_NAME(solve)(const hyst_tcm_t *S, TCM_Y v)
-{
-    return TCM_NAME(solve_inline)(S, v, v * YV(S->secant));
-}
-#define TCM_SOLVE(S, v) TCM_NAME(solve)((S), (v))
-#define TCM_SOLVE_INLINE(S, v, w) TCM_NAME(solve_inline)((S), (v), (w))
+/* G of the kinds evaluated out of line: the variant's own (fixed point),
+ * else the bound kind's. */
+#ifdef TCM_G_OTHER
+#define TCM_KIND_G(S, u) TCM_G_OTHER((S)->curve, (u))
 #else
-#define TCM_SOLVE(S, v) ((void)(S), (v)) /* never: the variant refuses the kind */
-#define TCM_SOLVE_INLINE(S, v, w) ((void)(w), TCM_SOLVE(S, v))
+#define TCM_KIND_G(S, u) TCM_KIND(S)->g((S), (u))
 #endif
 
-/* The asymmetric compensator's anchor of a TP of drive y (the current
- * TP's: y_ctp): y, 0..1 over the drive range. */
-HYST_INLINE TCM_Y TCM_NAME(drive_anchor)(const hyst_tcm_t *S, TCM_Y y)
-{
-    return (y - YV(S->y_lo)) * YV(S->curve->u.everett.inv_span);
-}
-
-#ifndef NUM_FIXED /* real outputs only */
-/* The tabulated asymmetric compensator (HYST_CURVE_EVERETT_INV_TABLE,
- * S->degree HYST_HORNER_BLEND_): a branch's drive step at output step v is
- * the cubic of interval k = floor(s), s = v v_scale, blended from four rows
- * of the table (S->table: the first, S->blend: their weights; both set by
- * derive_blend() on the branch's slow sample). S->coef holds the blend of
- * interval S->cached_k: a sample in it costs one cubic. */
-
-/* Interval k's coefficients blended from the branch's rows, into v (locals:
- * in registers, where S->coef would be stored and read back, the compiler
- * assuming that the table's reads alias it). */
-HYST_INLINE void TCM_NAME(blend_coefs)(const hyst_tcm_t *S, unsigned long k, TCM_Y *v)
-{
-    const unsigned long row_len = HYST_INV_TABLE_LEN((unsigned long)S->curve->u.everett.intervals);
-    const TCM_Y *r0 = S->table.TCM_YF + 4u * k;
-    const TCM_Y *r1 = r0 + row_len;
-    const TCM_Y *r2 = r1 + row_len;
-    const TCM_Y *r3 = r2 + row_len;
-    unsigned i;
-    for (i = 0u; i < 4u; ++i) {
-        v[i] = ((YV(S->blend[0]) * r0[i] + YV(S->blend[1]) * r1[i]) + YV(S->blend[2]) * r2[i]) +
-               YV(S->blend[3]) * r3[i];
-    }
-}
-
-/* An interval's cubic at t in [0, 1], from S->coef or from blend_coefs(). */
-HYST_INLINE TCM_Y TCM_NAME(cubic_of)(TCM_Y c0, TCM_Y c1, TCM_Y c2, TCM_Y c3, TCM_Y t)
-{
-    return c0 + t * (c1 + t * (c2 + t * c3));
-}
-HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
-{
-    return TCM_NAME(cubic_of)(YV(c[0]), YV(c[1]), YV(c[2]), YV(c[3]), t);
-}
-
-static void TCM_NAME(newton_state)(const hyst_tcm_t *S, hyst_num_t *coef, TCM_Y *curv,
-                                   TCM_Y *w_end, TCM_Y *secant);
-
-/* An interval every row marks (c0 = -1: the blend is then negative) is
- * solved as the exact compensator solves it, from the secant's point. */
-static TCM_NOINLINE TCM_Y TCM_NAME(blend_exact)(const hyst_tcm_t *S, TCM_Y u)
-{
-    hyst_num_t coef[HYST_EVERETT_MAX_DEGREE];
-    TCM_Y curv, w_end, secant;
-    TCM_NAME(newton_state)(S, coef, &curv, &w_end, &secant);
-    return TCM_NAME(solve_with)(S->curve, coef, curv, w_end, u, u * secant);
-}
-
-/* G at output step u >= 0 for the rare paths (merges, a restore, the tail
- * of a sample that refilled the blend): the same numbers as the inline path
- * (the cached blend, or the same blend computed here). */
-static TCM_NOINLINE TCM_Y TCM_NAME(blend_g)(const hyst_tcm_t *S, TCM_Y u)
-{
-    const unsigned long n = (unsigned long)S->curve->u.everett.intervals;
-    const TCM_Y s = u * YV(S->v_scale);
-    unsigned long k = s < (TCM_Y)n ? (unsigned long)s : n; /* s >= 0 */
-    TCM_Y g;
-    if (k != S->cached_k) {
-        TCM_Y v[4];
-        TCM_NAME(blend_coefs)(S, k, v);
-        g = TCM_NAME(cubic_of)(v[0], v[1], v[2], v[3], s - (TCM_Y)k);
-    } else {
-        g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
-    }
-    return g < 0 ? TCM_NAME(blend_exact)(S, u) : g;
-}
-#define TCM_BLEND_G(S, u) TCM_NAME(blend_g)((S), (u))
-
-/* Horner's rule over n = 1..HYST_EVERETT_MAX_DEGREE coefficients a[0]
- * (highest power) .. a[n - 1] at x, unrolled (a slow sample cannot afford
- * the loop): the numbers of the loop acc = acc x + a[i] from acc = 0, and
- * of NUM_NAME(horner) before its last product. */
-HYST_INLINE TCM_Y TCM_NAME(poly_at)(const hyst_num_t *a, unsigned n, TCM_Y x)
-{
-    switch (n) {
-    case 4u: return ((YV(a[0]) * x + YV(a[1])) * x + YV(a[2])) * x + YV(a[3]);
-    case 3u: return (YV(a[0]) * x + YV(a[1])) * x + YV(a[2]);
-    case 2u: return YV(a[0]) * x + YV(a[1]);
-    default: return YV(a[0]);
-    }
-}
-
-#if TCM_REAL_INPUT
-HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
-                                       hyst_num_t *coef);
-
-/* p(w) = w q(w) on the branch that `row`'s table gives at `anchor`:
- * table_coefs(), then Horner's rule (NUM_NAME(horner)'s numbers), in one
- * switch on the degree n. */
-HYST_INLINE TCM_Y TCM_NAME(branch_p)(const hyst_num_t *row, unsigned n, TCM_Y anchor, TCM_Y w)
-{
-    hyst_num_t c[HYST_EVERETT_MAX_DEGREE];
-    TCM_Y q;
-    switch (n) {
-    case 4u: TCM_NAME(table_coefs)(row, 4u, anchor, c); q = TCM_NAME(poly_at)(c, 4u, w); break;
-    case 3u: TCM_NAME(table_coefs)(row, 3u, anchor, c); q = TCM_NAME(poly_at)(c, 3u, w); break;
-    case 2u: TCM_NAME(table_coefs)(row, 2u, anchor, c); q = TCM_NAME(poly_at)(c, 2u, w); break;
-    default: q = YV(row[0]); break;
-    }
-    return NUM_MUL_G(q, w);
-}
-
-/* A TP pushed since the last derive (more TPs than then: pushes add one per
- * sample, wipe-outs and merges add none) is stored at the output the model
- * gives for its drive, not at the desired output: its drive is an earlier
- * output, one table evaluation off the exact inverse, and the branches that
- * start there then continue from where the model is, so the errors of
- * nested TPs do not add up. That output is the branch the TP ended, from
- * its parent TP, evaluated exactly (E's polynomial). Kept where it is not
- * strictly between the TP's neighbours in the input's order (rounding, or a
- * reversal smaller than the table's error). Integer inputs keep the desired
- * output (a code cannot hold it). */
-HYST_INLINE void TCM_NAME(achieved_top)(hyst_tcm_t *S)
-{
-    const hyst_curve_t *c = S->curve;
-    const size_t tps = S->n_ltp + S->n_rtp;
-    const int fall = S->moving_end != 0u;
-    const size_t t = fall ? S->n_rtp - 1u : S->n_ltp - 1u; /* the current TP */
-    TCM_X *x_top;
-    TCM_X x_parent, lower, upper, x_hat;
-    TCM_Y y_parent, w;
-    const int fresh = tps > S->tps_derived;
-    S->tps_derived = tps;
-    if (!fresh || (!fall && t == 0u)) { /* not new, or A0 */
-        return;
-    }
-    /* an RTP t ended the rising branch from LTP t; an LTP t the falling one from RTP t - 1 */
-    x_parent = fall ? XV(S->xltp)[t] : XV(S->xrtp)[t - 1u];
-    y_parent = fall ? YV(S->yltp)[t] : YV(S->yrtp)[t - 1u];
-    /* that branch's p(w) */
-    w = NUM_NAME(abs)(YV(S->y_ctp) - y_parent) * YV(c->u.everett.inv_span);
-    w = TCM_NAME(branch_p)(fall ? c->u.everett.rise : c->u.everett.fall, c->u.everett.degree,
-                           TCM_NAME(drive_anchor)(S, y_parent), w) /
-        YV(S->unit);
-    x_hat = fall ? x_parent + w : x_parent - w;
-    x_top = fall ? &XV(S->xrtp)[t] : &XV(S->xltp)[t];
-    /* the input now is on the new branch: below an RTP, above an LTP */
-    lower = fall ? XV(S->window[1]) : XV(S->xltp)[t - 1u];
-    upper = fall ? (t > 0u ? XV(S->xrtp)[t - 1u] : XV(S->hi)) : XV(S->window[0]);
-    if (x_hat > lower && x_hat < upper) { /* not -0: x_parent is stored normalised
-                                          * (TCM_NORM), and x +- w is +0 when 0 */
-        *x_top = x_hat;
-        YV(S->x_ctp) = x_hat;
-    }
-}
-#else
-HYST_INLINE void TCM_NAME(achieved_top)(hyst_tcm_t *S) { (void)S; }
-#endif
-
-/* S's table_rows, table_intervals, v_least: derive_blend()'s constants
- * (out of line: init() stays small enough to stay out of line itself). */
-static TCM_NOINLINE void TCM_NAME(blend_dims)(hyst_tcm_t *S, const hyst_curve_t *curve)
-{
-    const int blended = curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE;
-    const TCM_Y n = blended ? (TCM_Y)curve->u.everett.intervals : 0;
-    YV(S->table_rows) = blended ? (TCM_Y)curve->u.everett.rows : 0;
-    YV(S->table_intervals) = n;
-    YV(S->v_least) = TCM_D(XV(S->hi), XV(S->lo)) * (n * (TCM_Y)HYST_BLEND_LEAST_STEP);
-}
-
-/* The branch's rows, weights and index scale (derive()): cubic Lagrange
- * weights on the four rows around its anchor a (rows base .. base + 3 of
- * its direction, at x = a rows - base in 0..3), and v_scale = N / V(a), V
- * the branch's whole output step (V at least 2^-30 N of the desired
- * output range: s stays far below 2^32). */
-HYST_INLINE void TCM_NAME(derive_blend)(hyst_tcm_t *S)
-{
-    const hyst_curve_t *c = S->curve;
-    const unsigned fall = S->moving_end; /* 0 or 1 */
-    const unsigned long rows = (unsigned long)c->u.everett.rows;
-    const unsigned long n = (unsigned long)c->u.everett.intervals;
-    const TCM_Y anchor = TCM_NAME(drive_anchor)(S, YV(S->y_ctp));
-    const TCM_Y least = YV(S->v_least);
-    TCM_Y x = anchor * YV(S->table_rows), range;
-    unsigned long j = x > 0 ? (unsigned long)x : 0u, base;
-    TCM_NAME(achieved_top)(S);
-    j = j > rows - 1u ? rows - 1u : j;
-    base = j < 1u ? 0u : (j - 1u > rows - 3u ? rows - 3u : j - 1u);
-    x -= (TCM_Y)base;
-    YV(S->blend[0]) = -(x - 1) * (x - 2) * (x - 3) / 6;
-    YV(S->blend[1]) = x * (x - 2) * (x - 3) / 2;
-    YV(S->blend[2]) = -x * (x - 1) * (x - 3) / 2;
-    YV(S->blend[3]) = x * (x - 1) * (x - 2) / 6;
-    S->table.TCM_YF = c->u.everett.table.TCM_YF +
-                      ((fall != 0u ? rows + 1u : 0u) + base) * HYST_INV_TABLE_LEN(n);
-    range = TCM_NAME(poly_at)(c->u.everett.v_end[fall], c->u.everett.degree, anchor) * anchor +
-            YV(c->u.everett.v_end[fall][c->u.everett.degree]);
-    YV(S->v_scale) = YV(S->table_intervals) / (range > least ? range : least);
-    S->cached_k = ULONG_MAX; /* no interval blended yet */
-}
-#else
-#define TCM_BLEND_G(S, u) ((void)(S), (u)) /* never: the variant refuses the kind */
-static void TCM_NAME(derive_blend)(hyst_tcm_t *S) { (void)S; }
-static void TCM_NAME(blend_dims)(hyst_tcm_t *S, const hyst_curve_t *curve)
-{
-    (void)curve;
-    YV(S->table_rows) = YV(S->table_intervals) = YV(S->v_least) = 0;
-}
-#endif
-
-/* G at u, any kind: Horner for polynomials, solved for the asymmetric
- * compensator, else out of line. */
+/* G at u, any kind: Horner for polynomial branches, else the kind's. */
 HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
 {
-    if (S->degree == HYST_HORNER_SOLVE_) {
-        return TCM_SOLVE(S, u);
-    }
-    if (S->degree == HYST_HORNER_BLEND_) {
-        return TCM_BLEND_G(S, u);
-    }
-    return S->degree != 0u ? NUM_NAME(horner)(S->coef, S->degree, u)
-                           : TCM_G_OTHER(S->curve, u);
+    return S->degree - 1u < (unsigned)HYST_MAX_DEGREE ? NUM_NAME(horner)(S->coef, S->degree, u)
+                                                      : TCM_KIND_G(S, u);
 }
 
 /* g for the rare paths (merge, deadband): one out-of-line copy, not one
@@ -467,33 +197,6 @@ HYST_INLINE void TCM_NAME(table_coefs_x)(const hyst_num_t *lin, unsigned n, TCM_
     }
 }
 
-/* E(a, b), a >= b: g(a - b) for the symmetric kinds; the asymmetric
- * kind's from its rising table, anchored at b (rare paths: merges, the
- * deadband). */
-static TCM_NOINLINE TCM_Y TCM_NAME(e)(const hyst_tcm_t *S, TCM_X a, TCM_X b)
-{
-    if ((S->detour & TCM_PER_BRANCH) != 0u) {
-        const unsigned n = S->curve->u.everett.degree;
-        const TCM_Y w = TCM_D(a, b) * YV(S->unit);
-        const TCM_Y anchor = (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit);
-        const hyst_num_t *row = S->curve->u.everett.rise;
-        TCM_Y acc = 0;
-        unsigned i, k;
-        /* Horner's rule in w over the coefficients, each by Horner's rule
-         * in the anchor from its row (as derive() computes them) */
-        for (i = 0u; i < n; ++i) {
-            TCM_Y c = YV(row[0]);
-            for (k = 1u; k <= i; ++k) {
-                c = c * anchor + YV(row[k]);
-            }
-            acc = i == 0u ? c : NUM_MUL(acc, w) + c;
-            row += i + 1u;
-        }
-        return NUM_MUL_G(acc, w);
-    }
-    return TCM_NAME(g)(S, TCM_D(a, b));
-}
-
 /* Output on the current branch. One formula for both paths (the fast path
  * sees only polynomials, the same Horner code), so that a loop that closes
  * returns to its starting output bit for bit. */
@@ -526,6 +229,27 @@ HYST_INLINE TCM_Y TCM_NAME(slow_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
     return y;
 }
 
+/* The slow guard's rare end: the last output held, the window closed. Out
+ * of line: a branch on the slow path, not the selects a compiler may write
+ * into it otherwise (held_guard()). */
+static TCM_NOINLINE TCM_Y TCM_NAME(held)(hyst_tcm_t *S)
+{
+    TCM_NAME(close_window)(S);
+    return YV(S->y_prev);
+}
+
+/* slow_guard() with its rare end out of line (the asymmetric kind's slow
+ * sample: GCC writes the inline end there as four conditional moves). */
+HYST_INLINE TCM_Y TCM_NAME(held_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
+{
+    const TCM_Y y = TCM_NAME(on_branch)(S, g);
+    YV(S->g_prev) = g;
+    if (TCM_RARELY(how == TCM_ROSE ? y < YV(S->y_prev) : y > YV(S->y_prev))) {
+        return TCM_NAME(held)(S);
+    }
+    return y;
+}
+
 /* The fast path's end: guarded G, the moving window end, the output. */
 HYST_INLINE TCM_Y TCM_NAME(fast_end)(hyst_tcm_t *S, TCM_X x, TCM_Y g)
 {
@@ -541,92 +265,15 @@ HYST_INLINE TCM_Y TCM_NAME(fast_end)(hyst_tcm_t *S, TCM_X x, TCM_Y g)
     return YV(S->y_ctp) - g;
 }
 
-/* The end of a sample of the asymmetric compensator (how: as emit()). Its
- * solve() starts from y_prev, so the monotone guard holds y, not G (and no
- * window closes: a restore re-derives nothing but what a snapshot keeps). */
-static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const int how)
-{
-    const int up = how == TCM_FAST ? S->moving_end == 0u : how == TCM_ROSE;
-    const TCM_Y v = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
-    TCM_Y y, w = v * YV(S->secant); /* a slow sample: from the secant */
-    if (how == TCM_FAST) { /* from the last output (on this branch) */
-        w = (YV(S->y_prev) - YV(S->y_ctp)) * YV(S->curve->u.everett.inv_span);
-        w = S->moving_end == 0u ? w : -w;
-    }
-    YV(S->g_prev) = TCM_SOLVE_INLINE(S, v, w);
-    y = TCM_NAME(on_branch)(S, YV(S->g_prev));
-    if (up ? y < YV(S->y_prev) : y > YV(S->y_prev)) {
-        y = YV(S->y_prev);
-    }
-    if (how == TCM_FAST) {
-        XV(S->window[S->moving_end]) = x;
-    }
-    YV(S->y_prev) = y;
-    return y;
-}
-
-/* A sample of the tabulated asymmetric compensator: one cubic where the
- * interval is the one blended last; else (and always after derive_blend())
- * the interval is blended first (the last one, N, past the branch's end by
- * rounding). Ends as emit() does, with the numbers blend_g() gives. */
 #ifndef NUM_FIXED
-/* blended_sample()'s end in an interval every row marks solved: G from
- * blend_g() (which solves it), guarded as emit() guards it. emit_rare()'s
- * numbers without its serve(): no request is pending where a blended sample
- * runs (S->horner is the blend's), and the way back through serve() to
- * derive() would make the call graph a cycle (bench/analyse.py bounds the
- * stack). */
-static TCM_NOINLINE TCM_Y TCM_NAME(blended_solved)(hyst_tcm_t *S, TCM_X x, const int how)
+/* A cubic piece at t in [0, 1]: c0 + t (c1 + t (c2 + t c3)). */
+HYST_INLINE TCM_Y TCM_NAME(cubic_of)(TCM_Y c0, TCM_Y c1, TCM_Y c2, TCM_Y c3, TCM_Y t)
 {
-    const TCM_Y g = TCM_NAME(branch_g)(S, x);
-    const TCM_Y y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
-    YV(S->y_prev) = y;
-    return y;
+    return c0 + t * (c1 + t * (c2 + t * c3));
 }
-
-HYST_INLINE TCM_Y TCM_NAME(blended_sample)(hyst_tcm_t *S, TCM_X x, const int how)
+HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
 {
-    const unsigned long n = (unsigned long)S->curve->u.everett.intervals;
-    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
-    const TCM_Y s = u * YV(S->v_scale);
-    unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 (derive_blend()) */
-    TCM_Y g, y;
-    if (k != S->cached_k) {
-        TCM_Y v[4];
-        unsigned i;
-        k = k < n ? k : n;
-        TCM_NAME(blend_coefs)(S, k, v);
-        for (i = 0u; i < 4u; ++i) {
-            YV(S->coef[i]) = v[i];
-        }
-        S->cached_k = k;
-        g = TCM_NAME(cubic_of)(v[0], v[1], v[2], v[3], s - (TCM_Y)k);
-    } else {
-        g = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
-    }
-    if (g < 0) { /* a solved interval */
-        return TCM_NAME(blended_solved)(S, x, how);
-    }
-    y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
-    YV(S->y_prev) = y;
-    return y;
-}
-static TCM_NOINLINE TCM_Y TCM_NAME(emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
-{
-    return TCM_NAME(blended_sample)(S, x, how);
-}
-
-/* A slow sample of the tabulated asymmetric compensator that starts a
- * branch: derive_blend(), then the sample, in one frame (the weights and
- * the rows' address stay in registers). derive() keeps its own copy of
- * derive_blend() for the rare paths: calling this frame instead would save
- * about 1 KB of flash per variant, but cost the sample 6 instructions and
- * put serve()'s path on top of this one in the static call graph (the
- * stack bound, bench/analyse.py). */
-static TCM_NOINLINE TCM_Y TCM_NAME(derive_emit_blended)(hyst_tcm_t *S, TCM_X x, const int how)
-{
-    TCM_NAME(derive_blend)(S);
-    return TCM_NAME(blended_sample)(S, x, how);
+    return TCM_NAME(cubic_of)(YV(c[0]), YV(c[1]), YV(c[2]), YV(c[3]), t);
 }
 #endif
 
@@ -649,8 +296,6 @@ HYST_INLINE TCM_Y TCM_NAME(input_anchor)(const hyst_tcm_t *S)
     return (YV(S->x_ctp) - TCM_R(XV(S->lo))) * YV(S->unit);
 }
 
-static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S);
-
 /* The case of emit()'s switch for the forward asymmetric kind of degree n
  * (HYST_HORNER_ASYM_ + n): a slow sample's `derive` first derives the
  * branch's coefficients, the degree a constant, so that Horner's rule takes
@@ -665,13 +310,7 @@ static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S);
         }                                         \
         acc = NUM_HORNER##n##_(S->coef, u);       \
         break
-#define TCM_ASYM_ROWS_(n)                                                                   \
-    TCM_NAME(table_coefs)(derive == TCM_DERIVE_RISE ? S->curve->u.everett.rise              \
-                                                    : S->curve->u.everett.fall,             \
-                          n, TCM_NAME(input_anchor)(S), S->coef)
-#define TCM_ASYM_LINES_(n)                                                                  \
-    TCM_NAME(table_coefs_x)(S->curve->u.everett.lin_x[derive == TCM_DERIVE_RISE ? 0 : 1], n, \
-                            YV(S->x_ctp), S->coef)
+#define TCM_ASYM_KEPT_(n) (void)0
 #define TCM_ASYM_CASES_(base, derivation)             \
     TCM_ASYM_CASE_(base, 1, derivation(1u));          \
     TCM_ASYM_CASE_(base, 2, derivation(2u));          \
@@ -699,26 +338,25 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
         u = NUM_G_ONE;
         break;
     NUM_HORNER_CASES_(S->coef, u, acc);
-    TCM_ASYM_CASES_(HYST_HORNER_ASYM_, TCM_ASYM_ROWS_);
-    TCM_ASYM_CASES_(HYST_HORNER_ASYM_LINEAR_, TCM_ASYM_LINES_);
-    case HYST_HORNER_SOLVE_:
-        if (TCM_DERIVES(derive)) {
-            TCM_NAME(derive)(S);
-        }
-        return TCM_NAME(emit_solved)(S, x, how);
+    /* the coefficients an asymmetric kind derived (its own slow samples
+     * derive them: src/kind_everett.h); cases of their own, not labels of
+     * the polynomial's: the fast path's code is laid out better so */
+    TCM_ASYM_CASES_(HYST_HORNER_ASYM_, TCM_ASYM_KEPT_);
+    TCM_ASYM_CASES_(HYST_HORNER_ASYM_LINEAR_, TCM_ASYM_KEPT_);
+    case HYST_HORNER_SOLVE_: /* the kind's own evaluation */
+        return TCM_KIND(S)->emit(S, x, how, derive);
 #ifndef NUM_FIXED
-    case HYST_HORNER_BLEND_: /* the tabulated asymmetric compensator: a sample in the
-                              * interval blended last costs one cubic, inline; the others
-                              * (and a new branch: no interval blended yet) out of line */
-        if (TCM_DERIVES(derive)) {
-            return TCM_NAME(derive_emit_blended)(S, x, how);
-        } else if (derive != TCM_KEEP) {
-            return TCM_NAME(emit_blended)(S, x, how);
+    case HYST_HORNER_BLEND_: /* a cubic piece of the branch (S->coef), cached for interval
+                              * cached_k at v_scale intervals per unit of u: a sample in it
+                              * costs one cubic, inline; the others (and a new branch: no
+                              * interval cached yet) are the kind's */
+        if (derive != TCM_KEEP) {
+            return TCM_KIND(S)->emit(S, x, how, derive);
         } else {
             const TCM_Y s = u * YV(S->v_scale);
             const unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 */
             if (k != S->cached_k) {
-                return TCM_NAME(emit_blended)(S, x, how);
+                return TCM_KIND(S)->emit(S, x, how, derive);
             }
             acc = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
             if (acc < 0) { /* a solved interval; "< 0", not "!(>= 0)" as for the table of
@@ -732,7 +370,7 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
 #endif
     default: /* a pending request, or degree 9 and up */
         if (TCM_DERIVES(derive) && (S->detour & TCM_PER_BRANCH) != 0u) {
-            TCM_NAME(derive)(S);
+            TCM_KIND(S)->derive(S);
         }
         return TCM_NAME(emit_rare)(S, x, how);
     }
@@ -824,68 +462,25 @@ static void TCM_NAME(ended_not_ok)(hyst_tcm_t *S)
     }
 }
 
-/* The asymmetric kind: the current branch's G from the curve's table of
- * its direction, anchored at the current TP's place in the domain (0..1):
- * its input's, or for the compensator its output's (the drive). */
-/* The numbers solve_with() needs for the current branch of the asymmetric
- * compensator: its coefficients, a bound on |p''|, the bracket's end and the
- * secant to it. */
-static void TCM_NAME(newton_state)(const hyst_tcm_t *S, hyst_num_t *coef, TCM_Y *curv,
-                                   TCM_Y *w_end, TCM_Y *secant)
-{
-    const hyst_curve_t *c = S->curve;
-    const unsigned n = c->u.everett.degree;
-    /* the branch ends at its parent TP (loop closure): a bracket, and the
-     * secant from the TP to it, solve()'s start on a slow sample */
-    const int up = S->moving_end == 0u;
-    const size_t at = up ? S->n_rtp : S->n_ltp;
-    const TCM_X x_end = !up ? XV(S->xltp)[at - 1u] : at > 0u ? XV(S->xrtp)[at - 1u] : XV(S->hi);
-    const TCM_Y y_end = !up ? YV(S->yltp)[at - 1u] : at > 0u ? YV(S->yrtp)[at - 1u] : YV(S->y_hi);
-    const TCM_Y v_end = NUM_NAME(abs)(TCM_R(x_end) - YV(S->x_ctp)) * YV(S->unit);
-    unsigned i;
-    TCM_NAME(table_coefs)(up ? c->u.everett.rise : c->u.everett.fall, n,
-                          TCM_NAME(drive_anchor)(S, YV(S->y_ctp)), coef);
-    *w_end = NUM_NAME(abs)(y_end - YV(S->y_ctp)) * YV(c->u.everett.inv_span);
-    *secant = v_end > 0 ? *w_end / v_end : 0;
-    *curv = 0; /* |p''| <= sum k (k - 1) |a_k| on w in [0, 1] */
-    for (i = 0u; i + 2u <= n; ++i) {
-        const unsigned k = n - i; /* coef[i] multiplies w^k in p */
-        *curv += (TCM_Y)(k * (k - 1u)) * NUM_NAME(abs)(YV(coef[i]));
-    }
-}
-
-static TCM_NOINLINE void TCM_NAME(derive)(hyst_tcm_t *S)
-{
-    const hyst_curve_t *c = S->curve;
-    if (S->degree == HYST_HORNER_BLEND_) {
-        TCM_NAME(derive_blend)(S);
-    } else if (S->degree == HYST_HORNER_SOLVE_) {
-        TCM_NAME(newton_state)(S, S->coef, &YV(S->curv), &YV(S->w_end), &YV(S->secant));
-    } else if (c->u.everett.linear_x) { /* the per-sample cases' numbers */
-        TCM_NAME(table_coefs_x)(c->u.everett.lin_x[S->moving_end == 0u ? 0 : 1],
-                                c->u.everett.degree, YV(S->x_ctp), S->coef);
-    } else {
-        TCM_NAME(table_coefs)(S->moving_end == 0u ? c->u.everett.rise : c->u.everett.fall,
-                              c->u.everett.degree, TCM_NAME(input_anchor)(S), S->coef);
-    }
-}
-
 /* Derives the fast-path cache from the arrays and the last input, then
  * empties the window if every sample must be slow. */
-static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x)
+HYST_INLINE void TCM_NAME(settle_as)(hyst_tcm_t *S, TCM_X x, const int per_branch)
 {
     if (S->n_ltp > S->n_rtp) {
         TCM_NAME(settle_rising)(S, x, S->n_ltp - 1u, S->n_rtp);
     } else {
         TCM_NAME(settle_falling)(S, x, S->n_rtp - 1u);
     }
-    if ((S->detour & TCM_PER_BRANCH) != 0u) {
-        TCM_NAME(derive)(S);
+    if (per_branch && (S->detour & TCM_PER_BRANCH) != 0u) {
+        TCM_KIND(S)->derive(S);
     }
     if ((S->detour & TCM_SLOW_ONLY) != 0u) {
         TCM_NAME(close_window)(S);
     }
 }
+
+/* The same for any kind (reset, restore). */
+static void TCM_NAME(settle)(hyst_tcm_t *S, TCM_X x) { TCM_NAME(settle_as)(S, x, 1); }
 
 void TCM_NAME(reset_)(hyst_tcm_t *S)
 {
@@ -940,14 +535,17 @@ void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
 
 /* Validated set-up shared by every init: the curve's numbers, the arrays,
  * the identity, deadband off, reset. unit: G's argument per input step. */
-static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo, TCM_X hi,
-                             TCM_Y unit, TCM_X *xltp, TCM_Y *yltp, TCM_X *xrtp, TCM_Y *yrtp,
-                             size_t capacity)
+static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve,
+                             const TCM_NAME(kind_t) *kind, TCM_X lo, TCM_X hi, TCM_Y unit,
+                             TCM_X *xltp, TCM_Y *yltp, TCM_X *xrtp, TCM_Y *yrtp, size_t capacity)
 {
     unsigned k;
     S->variant = (unsigned)TCM_VARIANT;
     S->layout = HYST_LAYOUT;
     S->curve = curve;
+    S->kind = kind;
+    S->slow = (void (*)(void))(kind != NULL && kind->slow != NULL ? kind->slow
+                                                                   : TCM_NAME(step_slow));
     /* -0 made +0: the anchor A0 = lo is a stored TP, and a restore
      * normalises every stored TP (resume_): one bit pattern either way */
     XV(S->lo) = TCM_NORM(lo);
@@ -971,7 +569,10 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve, TCM_X lo,
     }
     S->cached_k = ULONG_MAX;
     S->tps_derived = 0u;
-    TCM_NAME(blend_dims)(S, curve);
+    YV(S->table_rows) = YV(S->table_intervals) = YV(S->v_least) = 0;
+    if (kind != NULL && kind->attach != NULL) {
+        kind->attach(S, curve);
+    }
     for (k = 0u; k < HYST_MAX_DEGREE; ++k) { /* the asymmetric kind's: per branch, settle() */
         YV(S->coef[k]) = curve->kind == (unsigned)HYST_CURVE_POLY && k < S->degree
                              ? YV(curve->u.poly.a[k])
@@ -1239,13 +840,8 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
     if (d > XV(S->db_reach)) {
         const TCM_Y full = TCM_D(d, (TCM_X)0);
         XV(S->db_reach) = d;
-        if (S->degree == HYST_HORNER_SOLVE_ || S->degree == HYST_HORNER_BLEND_) {
-            /* no E of the desired output: the drive range */
-            YV(S->db_err) = YV(S->y_hi) - YV(S->y_lo);
-        } else if ((S->detour & TCM_PER_BRANCH) != 0u) { /* the loop [b, a]'s height at its middle */
-            const TCM_X m = TCM_MID(b, a);
-            YV(S->db_err) = NUM_NAME(abs)(TCM_NAME(e)(S, a, b) - TCM_NAME(e)(S, a, m) -
-                                          TCM_NAME(e)(S, m, b));
+        if (TCM_KIND(S) != NULL && TCM_KIND(S)->loop_error != NULL) {
+            YV(S->db_err) = TCM_KIND(S)->loop_error(S, b, a);
         } else {
             YV(S->db_err) =
                 NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));
@@ -1304,37 +900,6 @@ static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x, int how)
     return y;
 }
 
-/* finish() of a sample that reached lo or hi, for the asymmetric kinds
- * (not TCM_SLOW_ONLY): back on the major rising branch from A0, derived and
- * evaluated at once. Out of line: step_edge() keeps no stack frame. */
-static TCM_NOINLINE TCM_Y TCM_NAME(edge_derived)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
-{
-    TCM_Y y;
-    TCM_NAME(settle_rising)(S, x, 0u, 0u);
-    y = TCM_NAME(emit)(S, x, x > x_prev ? TCM_ROSE : TCM_FELL, TCM_DERIVE_RISE);
-    TCM_NAME(ended_not_ok)(S);
-    return y;
-}
-
-/* Ends a slow sample whose input rose or fell (how: TCM_ROSE, TCM_FELL):
- * caches the branch now current and evaluates it. A status other than OK
- * closes the fast path for the next sample. */
-static TCM_Y TCM_NAME(finish)(hyst_tcm_t *S, TCM_X x, int how)
-{
-    TCM_Y y;
-    TCM_NAME(settle)(S, x);
-    if ((S->detour & TCM_SLOW_ONLY) == 0u) {
-        y = TCM_NAME(emit)(S, x, how, TCM_KEEP_SLOW); /* serves a pending request */
-    } else {
-        y = TCM_NAME(slow_only)(S, x, how);
-        YV(S->y_prev) = y;
-        if (S->horner == HYST_HORNER_REQUEST_) { /* emit() serves the other curves' requests */
-            TCM_NAME(serve)(S);
-        }
-    }
-    TCM_NAME(ended_not_ok)(S);
-    return y;
-}
 
 /* TCM_SETTLING: the sample's output y back on the full model's branch ends
  * the merges' error bound; held off it by the monotone guard (the
@@ -1350,19 +915,6 @@ static TCM_NOINLINE void TCM_NAME(settle_bound)(hyst_tcm_t *S, TCM_Y y)
     }
 }
 
-/* finish() on the detour paths, which every sample with TCM_BOOK takes.
- * TCM_SETTLING implies TCM_BOOK, so the plain path and step_edge() without
- * bookkeeping call finish() itself: the check stays off the clamped worst
- * path. */
-static TCM_Y TCM_NAME(finish_book)(hyst_tcm_t *S, TCM_X x, int how)
-{
-    const TCM_Y y = TCM_NAME(finish)(S, x, how);
-    if ((S->detour & TCM_SETTLING) != 0u) {
-        TCM_NAME(settle_bound)(S, y);
-    }
-    return y;
-}
-
 /* The end of a step_edge() sample that leaves the input where it was (a
  * NaN, or clamped to the end the input is at) while a request is pending:
  * the output stays, then the requests are applied, as every step's. Out of
@@ -1372,36 +924,6 @@ static TCM_NOINLINE TCM_Y TCM_NAME(serve_unmoved)(hyst_tcm_t *S)
     const TCM_Y y = YV(S->y_prev);
     TCM_NAME(serve)(S);
     return y;
-}
-
-/* Out of line, off the worst path: NaN, inputs outside (lo, hi) (clamped)
- * and inputs at lo or hi, which pass every stored TP: back at A0 without a
- * search. */
-static TCM_NOINLINE TCM_Y TCM_NAME(step_edge)(hyst_tcm_t *S, TCM_ARG x_in)
-{
-    const TCM_X x_prev = XV(S->window[S->moving_end]);
-    TCM_X x;
-    /* not fresh(): a TCM_STALE left set costs the next sample a detour that
-     * clears it, where clearing it here would cost the worst path */
-    S->status = HYST_OK;
-    if (!TCM_ADMIT(S, x_in, &x) || x == x_prev) { /* NaN, or clamped where it was */
-        TCM_NAME(ended_not_ok)(S);
-        if (S->horner == HYST_HORNER_REQUEST_) { /* its requests, as every step's */
-            return TCM_NAME(serve_unmoved)(S);
-        }
-        return YV(S->y_prev);
-    }
-    S->n_ltp = 1u;
-    S->n_rtp = 0u;
-    if ((S->detour & TCM_BOOK) != 0u) { /* a merge or an excursion was alive */
-        TCM_NAME(wiped)(S, 0u);
-        return TCM_NAME(finish_book)(S, x, x > x_prev ? TCM_ROSE : TCM_FELL);
-    }
-    if ((S->detour & (TCM_SLOW_ONLY | TCM_PER_BRANCH)) == TCM_PER_BRANCH) {
-        /* the asymmetric kinds: on the major rising branch from A0 */
-        return TCM_NAME(edge_derived)(S, x, x_prev);
-    }
-    return TCM_NAME(finish)(S, x, x > x_prev ? TCM_ROSE : TCM_FELL);
 }
 
 /* A reversal while TCM_SETTLING (the merges left, the output held off the
@@ -1430,152 +952,15 @@ HYST_INLINE int TCM_NAME(skips)(const hyst_tcm_t *S, TCM_X d)
     return d < XV(S->deadband) || d < XV(S->db_reach);
 }
 
-/* Reversal on a falling branch without a wipe-out, with a detour (a flag
- * of S->detour, or a full LTP array): (x_prev, y_prev) becomes LTP nl,
- * unless the deadband skips it or a full array merges it. */
-static TCM_NOINLINE TCM_Y TCM_NAME(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
-{
-    size_t nl = S->n_ltp, nr = S->n_rtp;
-    TCM_NAME(fresh)(S);
-    TCM_NAME(release_held)(S);
-    if (TCM_NAME(skips)(S, (TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev))) {
-        TCM_NAME(skip)(S, x_prev, XV(S->xrtp)[nr - 1u]); /* keep falling */
-    } else {
-        if (nl == S->capacity) {
-            /* Only the LTP array can fill (A0 takes one of its entries). */
-            S->status = HYST_WARN_FULL;
-            S->events |= HYST_EVENT_FULL;
-            TCM_NAME(merge)(S, x_prev, &nr);
-        } else {
-            XV(S->xltp)[nl] = TCM_NORM(x_prev);
-            YV(S->yltp)[nl] = YV(S->y_prev);
-            ++nl;
-        }
-        S->n_ltp = nl;
-        S->n_rtp = nr;
-        TCM_NAME(window_closed)(S);
-    }
-    return TCM_NAME(finish_book)(S, x, TCM_ROSE);
-}
+/* The slow sample of the kinds emit() ends (src/tcm_slow.h). */
+#define TCM_SLOW(n) TCM_NAME(n)
+#define TCM_SLOW_EMIT(S, x, how, derive) TCM_NAME(emit)((S), (x), (how), (derive))
+#define TCM_SLOW_PER_BRANCH 0
+#include "tcm_slow.h"
 
-/* Reversal on a rising branch without a wipe-out, with a detour:
- * (x_prev, y_prev) becomes RTP nr (nr < nl <= capacity: always room),
- * unless the deadband skips it. */
-static TCM_NOINLINE TCM_Y TCM_NAME(reverse_down)(hyst_tcm_t *S, TCM_X x, TCM_X x_prev)
-{
-    const size_t nl = S->n_ltp, nr = S->n_rtp;
-    TCM_NAME(fresh)(S);
-    TCM_NAME(release_held)(S);
-    if (TCM_NAME(skips)(S, (TCM_X)(x_prev - XV(S->xltp)[nl - 1u]))) {
-        TCM_NAME(skip)(S, XV(S->xltp)[nl - 1u], x_prev); /* keep rising */
-    } else {
-        XV(S->xrtp)[nr] = TCM_NORM(x_prev);
-        YV(S->yrtp)[nr] = YV(S->y_prev);
-        S->n_rtp = nr + 1u;
-        TCM_NAME(window_closed)(S);
-    }
-    return TCM_NAME(finish_book)(S, x, TCM_FELL);
-}
-
-/* A wipe-out down to stack depth `depth` with a detour: bookkeeping, then
- * the output. */
-static TCM_NOINLINE TCM_Y TCM_NAME(wiped_detour)(hyst_tcm_t *S, TCM_X x, size_t depth, int how)
-{
-    TCM_NAME(fresh)(S);
-    TCM_NAME(wiped)(S, depth);
-    return TCM_NAME(finish_book)(S, x, how);
-}
-
-/* A slow sample that stays on its branch (the window was closed). */
-static TCM_NOINLINE TCM_Y TCM_NAME(carry_on)(hyst_tcm_t *S, TCM_X x, int how)
-{
-    TCM_NAME(fresh)(S);
-    return TCM_NAME(finish_book)(S, x, how);
-}
-
-/* Everything but the fast path, for an input strictly inside (lo, hi):
- * repeats, reversals, wipe-out. A wipe-out is always "rising to RTP nr-1 or
- * beyond" or "falling to LTP nl-1 or below", after a reversal or not, so each
- * search has one call site. The plain path (no detour: a polynomial curve,
- * nothing merged, no deadband) ends in one settle and one Horner evaluation
- * per direction; merges, the deadband and other curve kinds leave it through
- * one test of S->detour. The asymmetric kinds take it too, their branch's
- * coefficients derived after the settle (TCM_PER_BRANCH). */
-static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
-{
-    TCM_X x, x_prev;
-    size_t nl, nr;
-
-    ++S->seq; /* every change but a fast-path sample's (snapshot.c) */
-    x_prev = XV(S->window[S->moving_end]);
-    nl = S->n_ltp;
-    nr = S->n_rtp;
-    /* Domain checks folded into the direction test: rising can only leave
-     * through hi, falling through lo; NaN is neither rising nor falling. */
-    if (x_in > x_prev) {
-        if (!(x_in < XV(S->hi))) {
-            return TCM_NAME(step_edge)(S, x_in);
-        }
-        x = (TCM_X)x_in;
-        if (nr > 0u && x >= XV(S->xrtp)[nr - 1u]) {
-            /* wipe-out: RTPs at or below x go, with the LTPs above them */
-            nr = TCM_RTP_ABOVE(XV(S->xrtp), nr - 1u, x);
-            S->n_ltp = nr + 1u;
-            S->n_rtp = nr;
-            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE)) != 0u) {
-                return TCM_NAME(wiped_detour)(S, x, 2u * nr + 1u, TCM_ROSE);
-            }
-            nl = nr; /* the current LTP's index */
-        } else if (nl == nr && (S->detour & ~TCM_PER_BRANCH) == 0u && nl < S->capacity) {
-            /* reversal on a falling branch: (x_prev, y_prev) becomes LTP nl */
-            XV(S->xltp)[nl] = TCM_NORM(x_prev);
-            YV(S->yltp)[nl] = YV(S->y_prev);
-            S->n_ltp = nl + 1u;
-        } else {
-            return nl == nr ? TCM_NAME(reverse_up)(S, x, x_prev) : TCM_NAME(carry_on)(S, x, TCM_ROSE);
-        }
-        TCM_NAME(settle_rising)(S, x, nl, nr);
-        /* one emit per direction: its guard's direction is then a constant
-         * (and the asymmetric kinds derive the new branch's shape in it) */
-        return TCM_NAME(emit)(S, x, TCM_ROSE, TCM_DERIVE_RISE);
-    } else if (x_in < x_prev) {
-        if (!(x_in > XV(S->lo))) {
-            return TCM_NAME(step_edge)(S, x_in);
-        }
-        x = (TCM_X)x_in;
-        if (x <= XV(S->xltp)[nl - 1u]) {
-            /* wipe-out: LTPs at or above x go, with the RTPs above them;
-             * A0 = lo < x always survives */
-            nl = TCM_LTP_BELOW(XV(S->xltp), nl - 1u, x);
-            S->n_ltp = nl;
-            S->n_rtp = nl;
-            if ((S->detour & (TCM_SLOW_ONLY | TCM_BOOK | TCM_STALE)) != 0u) {
-                return TCM_NAME(wiped_detour)(S, x, 2u * nl, TCM_FELL);
-            }
-            nr = nl - 1u; /* the current RTP's index (nl >= 1: A0) */
-        } else if (nl > nr && (S->detour & ~TCM_PER_BRANCH) == 0u) {
-            /* reversal on a rising branch: (x_prev, y_prev) becomes RTP nr
-             * (nr < nl <= capacity: always room) */
-            XV(S->xrtp)[nr] = TCM_NORM(x_prev);
-            YV(S->yrtp)[nr] = YV(S->y_prev);
-            S->n_rtp = nr + 1u;
-        } else {
-            return nl > nr ? TCM_NAME(reverse_down)(S, x, x_prev) : TCM_NAME(carry_on)(S, x, TCM_FELL);
-        }
-        TCM_NAME(settle_falling)(S, x, nr);
-        return TCM_NAME(emit)(S, x, TCM_FELL, TCM_DERIVE_FALL);
-    }
-    /* Always true for integer codes; false for a NaN real input: */
-    /* cppcheck-suppress knownConditionTrueFalse */
-    else if (x_in == x_prev) { /* repeated samples create no TP */
-        TCM_NAME(fresh)(S);
-        if (S->horner == HYST_HORNER_REQUEST_) {
-            return TCM_NAME(emit_rare)(S, x_prev, TCM_REPEAT);
-        }
-        return YV(S->y_prev); /* a closed window stays closed: the next move reopens it */
-    }
-    return TCM_NAME(step_edge)(S, x_in); /* NaN */
-}
+/* The instance's slow sample: its kind's copy (attach()). */
+typedef TCM_Y (*TCM_NAME(slow_fn))(hyst_tcm_t *S, TCM_ARG x);
+#define TCM_STEP_SLOW(S, x) ((TCM_NAME(slow_fn))(S)->slow)((S), (x))
 
 /* emit() for the other values of S->horner: the output by Horner's loop
  * (how: as emit(), or TCM_REPEAT for a repeated sample, whose output
@@ -1584,7 +969,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
 {
     TCM_Y y = YV(S->y_prev);
     if (S->degree == HYST_HORNER_SOLVE_ && how != TCM_REPEAT) { /* a request pending */
-        y = TCM_NAME(emit_solved)(S, x, how);
+        y = TCM_KIND(S)->emit(S, x, how, TCM_KEEP);
     } else if (how == TCM_FAST) {
         y = TCM_NAME(fast_end)(S, x, TCM_NAME(branch_g)(S, x));
     } else if (how != TCM_REPEAT) {
@@ -1612,7 +997,7 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
     /* Fast path: the input moves on and reaches no stored TP. NaN fails the
      * comparisons, and the window lies inside [lo, hi]: no other check needed. */
     if (!(x > XV(S->window[0]) && x < XV(S->window[1]))) {
-        return TCM_NAME(step_slow)(S, x);
+        return TCM_STEP_SLOW(S, x);
     }
     return TCM_NAME(emit)(S, (TCM_X)x, TCM_FAST, TCM_KEEP); /* the window is empty for other curve kinds */
 }
@@ -1623,7 +1008,7 @@ HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u, TC
     TCM_Y g;
     if (deg == 0u) { /* a tabulated inverse: the same arithmetic as emit(), whose G * 1 is G */
         const TCM_Y v = NUM_NAME(table_g)(S->table.TCM_YF, u);
-        g = v >= 0 ? v : TCM_G_OTHER(S->curve, u);
+        g = v >= 0 ? v : TCM_KIND_G(S, u);
     } else {
         g = NUM_NAME(horner)(S->coef, deg, u);
     }
@@ -1699,7 +1084,7 @@ static hyst_status_t TCM_NAME(block)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, s
          * same arithmetic as step()) */
         y[i] = S->degree == HYST_HORNER_SOLVE_ || S->degree == HYST_HORNER_BLEND_
                    ? TCM_NAME(sample)(S, x[i])
-                   : TCM_NAME(step_slow)(S, x[i]);
+                   : TCM_STEP_SLOW(S, x[i]);
         if (S->status < 0) {
             failed = 1;
         } else if (S->status > worst) {
@@ -1738,6 +1123,6 @@ static TCM_NAME(view_t) TCM_NAME(view)(const hyst_tcm_t *S)
     return v;
 }
 
-#undef XV
-#undef YV
+/* XV and YV stay defined: the kinds (src/kinds.h) read numbers through
+ * them too. */
 #endif /* HYST_TCM_ENGINE_H */

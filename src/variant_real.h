@@ -50,14 +50,15 @@ static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
 #define TCM_NORM(a) ((a) + NUM_C(0.0)) /* -0 + +0 = +0 */
 #define TCM_REAL_INPUT 1
 #define TCM_ADMIT(S, x, out) NUM_NAME(admit)((S), (x), (out))
-#define TCM_G_OTHER(c, d) NUM_NAME(curve_g_other_)((c), (d))
+#define TCM_CURVE_G(c, d) NUM_NAME(curve_g_other_)((c), (d))
 #ifdef NUM_KEY_T
 #define TCM_KEY_T NUM_KEY_T
 #define TCM_UKEY_T NUM_UKEY_T
 #endif
 #include "tcm_engine.h"
+#include "kinds.h"
 
-hyst_status_t NUM_NAME(init_curve_)(hyst_tcm_t *S, const hyst_curve_t *curve, NUM_T *xltp,
+static hyst_status_t NUM_NAME(init_curve_impl)(hyst_tcm_t *S, const hyst_curve_t *curve, NUM_T *xltp,
                                     NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                     unsigned long layout)
 {
@@ -66,12 +67,12 @@ hyst_status_t NUM_NAME(init_curve_)(hyst_tcm_t *S, const hyst_curve_t *curve, NU
     if (st != HYST_OK) {
         return st;
     }
-    NUM_NAME(attach)(S, curve, curve->lo.NUM_F, curve->hi.NUM_F, curve->unit.NUM_F, xltp, yltp,
-                     xrtp, yrtp, capacity);
+    NUM_NAME(attach)(S, curve, NUM_NAME(kind_of)(curve), curve->lo.NUM_F, curve->hi.NUM_F,
+                     curve->unit.NUM_F, xltp, yltp, xrtp, yrtp, capacity);
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(init_)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
+static hyst_status_t NUM_NAME(init_impl)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
                               NUM_T *xrtp, NUM_T *yrtp, size_t capacity, unsigned long layout)
 {
     hyst_curve_t curve;
@@ -84,8 +85,8 @@ hyst_status_t NUM_NAME(init_)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp,
         return st;
     }
     /* A polynomial is copied whole into the instance: no curve to keep. */
-    NUM_NAME(attach)(S, &curve, curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp, yltp,
-                     xrtp, yrtp, capacity);
+    NUM_NAME(attach)(S, &curve, NULL, curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
+                     yltp, xrtp, yrtp, capacity);
     S->curve = NULL;
     return HYST_OK;
 }
@@ -102,7 +103,7 @@ static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,
     /* curve errors first, then the instance's (inverse.h) */
     hyst_status_t st = inv == NULL ? HYST_ERR_NULL : hyst_curve_poly_(&fwd, f0, NUM_VARIANT, layout);
     if (st == HYST_OK) {
-        st = tabulate ? NUM_NAME(curve_inverse_table)(&curve, &fwd, table, intervals)
+        st = tabulate ? NUM_NAME(curve_inverse_table_impl)(&curve, &fwd, table, intervals)
                       : hyst_curve_inverse(&curve, &fwd);
     }
     if (st == HYST_OK) {
@@ -113,12 +114,13 @@ static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,
         return st;
     }
     *inv = curve; /* checked above: attach without checking again */
-    NUM_NAME(attach)(S, inv, inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F, xltp, yltp, xrtp,
-                     yrtp, capacity);
+    /* the inverted polynomial or its table: both the out-of-line kind */
+    NUM_NAME(attach)(S, inv, &NUM_NAME(kind_curve), inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F,
+                     xltp, yltp, xrtp, yrtp, capacity);
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(init_inverse_exact_)(hyst_tcm_t *S, hyst_curve_t *inv,
+static hyst_status_t NUM_NAME(init_inverse_exact_impl)(hyst_tcm_t *S, hyst_curve_t *inv,
                                             const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
                                             NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                             unsigned long layout)
@@ -127,7 +129,7 @@ hyst_status_t NUM_NAME(init_inverse_exact_)(hyst_tcm_t *S, hyst_curve_t *inv,
                                      layout);
 }
 
-hyst_status_t NUM_NAME(init_inverse_table_)(hyst_tcm_t *S, hyst_curve_t *inv,
+static hyst_status_t NUM_NAME(init_inverse_table_impl)(hyst_tcm_t *S, hyst_curve_t *inv,
                                             const hyst_poly_t *f0, NUM_T *table,
                                             size_t intervals, NUM_T *xltp, NUM_T *yltp,
                                             NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
@@ -149,7 +151,7 @@ static hyst_status_t NUM_NAME(deadband_check)(const hyst_tcm_t *S, NUM_T width)
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(set_deadband)(hyst_tcm_t *S, NUM_T width)
+static hyst_status_t NUM_NAME(set_deadband_impl)(hyst_tcm_t *S, NUM_T width)
 {
     const hyst_status_t st = NUM_NAME(deadband_check)(S, width);
     if (st != HYST_OK) {
@@ -161,7 +163,7 @@ hyst_status_t NUM_NAME(set_deadband)(hyst_tcm_t *S, NUM_T width)
     return HYST_OK;
 }
 
-hyst_status_t NUM_NAME(request_deadband)(hyst_tcm_t *S, NUM_T width)
+static hyst_status_t NUM_NAME(request_deadband_impl)(hyst_tcm_t *S, NUM_T width)
 {
     const hyst_status_t st = NUM_NAME(deadband_check)(S, width);
     if (st != HYST_OK) {
@@ -171,20 +173,20 @@ hyst_status_t NUM_NAME(request_deadband)(hyst_tcm_t *S, NUM_T width)
     return hyst_post_request_(S, &S->req_deadband);
 }
 
-NUM_T NUM_NAME(step)(hyst_tcm_t *S, NUM_T x) { return NUM_NAME(sample)(S, x); }
+HYST_INLINE NUM_T NUM_NAME(step_impl)(hyst_tcm_t *S, NUM_T x) { return NUM_NAME(sample)(S, x); }
 
-hyst_status_t NUM_NAME(process)(hyst_tcm_t *S, const NUM_T *x, NUM_T *y, size_t n)
+HYST_INLINE hyst_status_t NUM_NAME(process_impl)(hyst_tcm_t *S, const NUM_T *x, NUM_T *y, size_t n)
 {
     return NUM_NAME(block)(S, x, y, n);
 }
 
-NUM_T NUM_NAME(output)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).y : 0; }
+HYST_INLINE NUM_T NUM_NAME(output_impl)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).y : 0; }
 
-NUM_T NUM_NAME(input)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).x : 0; }
+HYST_INLINE NUM_T NUM_NAME(input_impl)(const hyst_tcm_t *S) { return S != NULL ? NUM_NAME(view)(S).x : 0; }
 
-NUM_T NUM_NAME(rounding_bound)(const hyst_tcm_t *S) { return S != NULL ? S->rounding.NUM_F : 0; }
+HYST_INLINE NUM_T NUM_NAME(rounding_bound_impl)(const hyst_tcm_t *S) { return S != NULL ? S->rounding.NUM_F : 0; }
 
-NUM_T NUM_NAME(error_bound)(const hyst_tcm_t *S)
+HYST_INLINE NUM_T NUM_NAME(error_bound_impl)(const hyst_tcm_t *S)
 {
     return S != NULL ? NUM_NAME(view)(S).bound : 0;
 }

@@ -50,10 +50,21 @@ foreach(lib IN ITEMS ${LIB} ${LIB2})
     endforeach()
     # Writable data (B/b bss, D/d data, C common, S/s small data); sanitizer
     # builds add their own bookkeeping data, so the check is skipped there.
+    # Constant tables of function pointers (the curve kinds) land in
+    # .data.rel.ro in position-independent code: read-only once loaded, not
+    # state; nm's System V format names their section.
+    execute_process(COMMAND ${NM} -f sysv ${lib} OUTPUT_VARIABLE sysv)
+    string(REPLACE "\n" ";" sysv_lines "${sysv}")
+    set(relro "")
+    foreach(line IN LISTS sysv_lines)
+        if(line MATCHES "^([A-Za-z_][A-Za-z0-9_.]*) *\\|.*\\| *\\.data\\.rel\\.ro")
+            list(APPEND relro ${CMAKE_MATCH_1})
+        endif()
+    endforeach()
     set(writable "")
     if(NOT sanitized)
         foreach(line IN LISTS lines)
-            if(line MATCHES "^[0-9a-fA-F]+ [BbDdCSsGg] (.+)$")
+            if(line MATCHES "^[0-9a-fA-F]+ [BbDdCSsGg] (.+)$" AND NOT CMAKE_MATCH_1 IN_LIST relro)
                 list(APPEND writable ${CMAKE_MATCH_1})
             endif()
         endforeach()

@@ -23,7 +23,7 @@
  * | HYST_MAX_ROUNDING   | 1e-4    | largest rounding bound of a branch evaluation init accepts, of the output range | no |
  * | HYST_CODE_BITS      | 16      | widest DAC code of the code variant (1..24)                 | yes    |
  * | HYST_MONOTONE_DEPTH | 20      | dyadic depth of the monotonicity proof at init              | no     |
- * | HYST_NO_DOUBLE      | off     | init-time arithmetic in float (targets without double)     | no     |
+ * | HYST_NO_DOUBLE      | off     | init-time arithmetic in float (targets without double; hyst_poly_t holds floats) | yes |
  * | HYST_KEYED_SEARCH   | 1       | search turning points by IEEE bit patterns (0 under -ffast-math) | no |
  *
  * HYST_ENABLE_F64 defaults to 1 where double is a 64-bit type with hardware
@@ -127,13 +127,23 @@
 #error "HYST_USE_DOUBLE needs HYST_ENABLE_F64"
 #endif
 
+/** @cond */
+#ifdef HYST_NO_DOUBLE
+#define HYST_WIDE_FLOAT_ 1ul /* hyst_wide_t is float: hyst_poly_t and hyst_everett_t shrink */
+#else
+#define HYST_WIDE_FLOAT_ 0ul
+#endif
+/** @endcond */
+
 /**
  * @brief Fingerprint of the layout options, as this translation unit sees
- *        them (compared by every init with the library's own).
+ *        them (compared by every init and curve constructor with the
+ *        library's own): every option that changes a public struct.
  */
 #define HYST_LAYOUT                                                              \
     (((unsigned long)HYST_MAX_DEGREE) | ((unsigned long)HYST_INV_KNOTS << 6) |   \
-     ((unsigned long)HYST_CODE_BITS << 14) | ((unsigned long)HYST_ENABLE_F64 << 19))
+     ((unsigned long)HYST_CODE_BITS << 14) | ((unsigned long)HYST_ENABLE_F64 << 19) | \
+     (HYST_WIDE_FLOAT_ << 20))
 
 /** Inline that the compiler may not decline: the per-sample path. */
 #if defined(__GNUC__) || defined(__clang__)

@@ -93,17 +93,20 @@ hyst_status_t hyst_f64_pi_check(const double *r, const double *w, size_t n);
 
 /**
  * @name Initialisation
- * @brief Checks the parameters (pi_check) and resets the instance. The
- *        instance keeps @p r and @p w (which must outlive it, unchanged)
- *        and works in @p z, N operator states.
- * @return HYST_OK, HYST_ERR_NULL or an error of the check; nothing written
- *         on error.
+ * @brief Checks the parameters (pi_check) and the caller's layout, and
+ *        resets the instance. The instance keeps @p r and @p w (which must
+ *        outlive it, unchanged) and works in @p z, N operator states.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT or an error of the check;
+ *         nothing written on error.
  */
 /**@{*/
-hyst_status_t hyst_f32_pi_init(hyst_pi_t *P, const float *r, const float *w, float *z, size_t n);
+hyst_status_t hyst_f32_pi_init_(hyst_pi_t *P, const float *r, const float *w, float *z, size_t n,
+                                unsigned long layout);
+#define hyst_f32_pi_init(P, r, w, z, n) hyst_f32_pi_init_((P), (r), (w), (z), (n), HYST_LAYOUT)
 #if HYST_ENABLE_F64
-hyst_status_t hyst_f64_pi_init(hyst_pi_t *P, const double *r, const double *w, double *z,
-                               size_t n);
+hyst_status_t hyst_f64_pi_init_(hyst_pi_t *P, const double *r, const double *w, double *z,
+                                size_t n, unsigned long layout);
+#define hyst_f64_pi_init(P, r, w, z, n) hyst_f64_pi_init_((P), (r), (w), (z), (n), HYST_LAYOUT)
 #endif
 /**@}*/
 
@@ -174,11 +177,15 @@ hyst_status_t hyst_f64_pi_inverse_params(const double *r, const double *w, size_
  *         those two calls.
  */
 /**@{*/
-hyst_status_t hyst_f32_pi_init_inverse(hyst_pi_t *inv, const hyst_pi_t *fwd, float *r_inv,
-                                       float *w_inv, float *z_inv);
+hyst_status_t hyst_f32_pi_init_inverse_(hyst_pi_t *inv, const hyst_pi_t *fwd, float *r_inv,
+                                        float *w_inv, float *z_inv, unsigned long layout);
+#define hyst_f32_pi_init_inverse(inv, fwd, r_inv, w_inv, z_inv) \
+    hyst_f32_pi_init_inverse_((inv), (fwd), (r_inv), (w_inv), (z_inv), HYST_LAYOUT)
 #if HYST_ENABLE_F64
-hyst_status_t hyst_f64_pi_init_inverse(hyst_pi_t *inv, const hyst_pi_t *fwd, double *r_inv,
-                                       double *w_inv, double *z_inv);
+hyst_status_t hyst_f64_pi_init_inverse_(hyst_pi_t *inv, const hyst_pi_t *fwd, double *r_inv,
+                                        double *w_inv, double *z_inv, unsigned long layout);
+#define hyst_f64_pi_init_inverse(inv, fwd, r_inv, w_inv, z_inv) \
+    hyst_f64_pi_init_inverse_((inv), (fwd), (r_inv), (w_inv), (z_inv), HYST_LAYOUT)
 #endif
 /**@}*/
 

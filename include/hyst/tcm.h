@@ -193,6 +193,11 @@ typedef struct hyst_tcm {
      *  compensator: one more, and the new TP's input becomes the model's
      *  output for its drive */
     size_t tps_derived;
+    /** the curve kind's operations, bound by the init that chose the kind
+     *  (src/kinds.h); NULL for the kinds the fast path evaluates alone */
+    const void *kind;
+    /** the kind's slow sample (repeats, reversals, wipe-outs), bound with it */
+    void (*slow)(void);
 } hyst_tcm_t;
 
 /**

@@ -166,8 +166,8 @@ template <class T> struct Ops;
         static constexpr auto input = hyst_##P##_input;                     \
         static constexpr auto error_bound = hyst_##P##_error_bound;         \
         static constexpr auto rounding_bound = hyst_##P##_rounding_bound;   \
-        static constexpr auto pi_init = hyst_##P##_pi_init;                 \
-        static constexpr auto pi_init_inverse = hyst_##P##_pi_init_inverse; \
+        static constexpr auto pi_init = hyst_##P##_pi_init_;                \
+        static constexpr auto pi_init_inverse = hyst_##P##_pi_init_inverse_; \
         static constexpr auto pi_step = hyst_##P##_pi_step;                 \
         static constexpr auto pi_process = hyst_##P##_pi_process;           \
         static constexpr auto pi_output = hyst_##P##_pi_output;             \
@@ -648,7 +648,7 @@ template <class T> struct Pi {
             r[i] = static_cast<T>(r_[i]);
             w[i] = static_cast<T>(w_[i]);
         }
-        check(O::pi_init(&P, r.data(), w.data(), z.data(), r_.size()), "PI init");
+        check(O::pi_init(&P, r.data(), w.data(), z.data(), r_.size(), HYST_LAYOUT), "PI init");
     }
     Pi(const Pi &) = delete;
     Pi &operator=(const Pi &) = delete;
@@ -656,7 +656,8 @@ template <class T> struct Pi {
     std::unique_ptr<Pi> inverse() const
     {
         std::unique_ptr<Pi> inv(new Pi(P.n));
-        check(O::pi_init_inverse(&inv->P, &P, inv->r.data(), inv->w.data(), inv->z.data()),
+        check(O::pi_init_inverse(&inv->P, &P, inv->r.data(), inv->w.data(), inv->z.data(),
+                                 HYST_LAYOUT),
               "PI inverse");
         return inv;
     }
