@@ -140,6 +140,10 @@ typedef struct cli_model {
     double coeffs[10]; /* poly: c_n ... c_0, highest power first */
     size_t ncoef;      /* poly: degree + 1 */
     double lo, hi;     /* domain */
+    /* the range of the inputs the model was identified on (within the
+     * domain; key `identified`); has_identified 0: not recorded */
+    double id_lo, id_hi;
+    int has_identified;
     unsigned long delay; /* the output follows its input this many samples later */
     unsigned degree;   /* everett: total degree of E, 1..HYST_EVERETT_MAX_DEGREE */
     double y_lo;       /* everett: the output at lo after reset */
@@ -310,6 +314,11 @@ typedef struct cli_map {
      * only beyond the printing tolerance of [lo, hi] itself */
     int step_checks_range;
     int digits;             /* significant digits printed (9; 17 gives the doubles exactly) */
+    /* 1: the inputs outside [id_lo, id_hi], the range the model was
+     * identified on, are counted and said (predicted, not clamped, up to
+     * [lo, hi]) */
+    int has_identified;
+    double id_lo, id_hi;
 } cli_map_t;
 
 /* Reads the samples one line at a time and runs them through @p m, in

@@ -399,6 +399,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     m.step = tcm_step;
     m.col2 = tp ? tcm_tp : NULL;
     m.digits = (int)digits;
+    m.has_identified = 0;
     if (inverse && model.kind == CLI_MODEL_EVERETT) { /* the inverse's domain: the outputs */
         m.clamp_what = "desired outputs";
         m.lo = intervals > 0ul ? tab.lo.f64 : everett.lo.f64;
@@ -411,6 +412,9 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
         m.clamp_what = "inputs";
         m.lo = range[0];
         m.hi = range[1];
+        m.has_identified = model.has_identified;
+        m.id_lo = model.id_lo;
+        m.id_hi = model.id_hi;
     }
     m.step_checks_range = inverse && r.model != NULL;
     if (m.step_checks_range) {

@@ -127,6 +127,8 @@ typedef struct fit_opts {
     fit_creep_t creep;    /* its hold-out figures (training fit) */
     double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
+    size_t holdout_n, beyond; /* hold-out inputs, those outside the part fitted */
+    double fitted_lo, fitted_hi; /* the range of the part fitted */
 } fit_opts_t;
 
 /* 0 on success, 1 after a message, -1 after --help. */
@@ -301,7 +303,7 @@ static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflec
 
 /* ---- the automatic choice (fit_select.c) ---- */
 
-#define MAX_CANDIDATES ((HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES) * (FIT_MAX_DELAY + 1u))
+#define MAX_CANDIDATES ((HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES) * (FIT_MAX_DELAY + 1u))
 static fit_candidate_t candidates[MAX_CANDIDATES];
 static size_t n_candidates, best_candidate;
 
@@ -319,6 +321,8 @@ static int candidate_kinds(const fit_opts_t *o)
 static const char everett_singular[] =
     "the record's turning points do not determine E of this degree; major loops alone "
     "determine t-degree 1 at most";
+
+static void count_beyond(fit_opts_t *o, const cli_table_t *t);
 
 /* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
 static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
@@ -341,6 +345,13 @@ static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
     o->cfg.degree = candidates[best_candidate].degree;
     o->t_degree = candidates[best_candidate].t_degree;
     o->cfg.delay = candidates[best_candidate].delay;
+    if (candidates[best_candidate].widened) { /* the domain of the model fitted on it all */
+        double lo, hi;
+        fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, FIT_WIDEN, &lo, &hi);
+        o->cfg.lo = lo;
+        o->cfg.hi = hi;
+    }
+    count_beyond(o, t);
     o->creep = candidates[best_candidate].creep;
     o->holdout = candidates[best_candidate].holdout_rms;
     return 0;
@@ -367,6 +378,22 @@ static void choose_creep(fit_opts_t *o, const cli_table_t *t)
                      !(o->holdout <= o->creep.holdout_rms * (1.0 + FIT_PARSIMONY)));
 }
 
+/* How many inputs of the hold-out part (the last third, at the chosen
+ * delay) leave the range of the part fitted, into o: the candidates
+ * predicted them by their branches continued beyond it, or clamped them. */
+static void count_beyond(fit_opts_t *o, const cli_table_t *t)
+{
+    const size_t from = o->cfg.skip, end = t->n - o->cfg.delay;
+    const size_t train = (2u * (end - from)) / 3u;
+    size_t k;
+    fit_input_range(t->col[0], from, from + train, 0.0, &o->fitted_lo, &o->fitted_hi);
+    o->holdout_n = end - from - train;
+    o->beyond = 0u;
+    for (k = from + train; k < end; ++k) {
+        o->beyond += t->col[0][k] < o->fitted_lo || t->col[0][k] > o->fitted_hi ? 1u : 0u;
+    }
+}
+
 static void print_candidates(const fit_opts_t *o)
 {
     char t_deg[32] = "";
@@ -384,12 +411,19 @@ static void print_candidates(const fit_opts_t *o)
                  candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
                  : candidate_kinds(o) == FIT_EVERETT           ? "everett"
                                                                : "poly");
+    (void)printf("# hold-out: %lu of its %lu inputs outside [%.9g, %.9g], the range of the "
+                 "part fitted%s\n",
+                 (unsigned long)o->beyond, (unsigned long)o->holdout_n, o->fitted_lo,
+                 o->fitted_hi,
+                 o->beyond > 0u ? " (predicted by the branches continued beyond it: everett "
+                                  "widened; the others clamp them)"
+                                : "");
     for (i = 0u; i < n_candidates; ++i) {
         const fit_candidate_t *c = &candidates[i];
         char name[48];
         if (c->kind == FIT_EVERETT) {
-            (void)snprintf(name, sizeof name, "everett degree %u t-degree %u", c->degree,
-                           c->t_degree);
+            (void)snprintf(name, sizeof name, "everett degree %u t-degree %u%s", c->degree,
+                           c->t_degree, c->widened ? " widened" : "");
         } else {
             (void)snprintf(name, sizeof name, "degree %u", c->degree);
         }
@@ -494,7 +528,15 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
         return cli_fail("fit", "%s: %s", name, hyst_status_str(st));
     }
     if (everett) {
+        double id_lo, id_hi;
         cli_model_from_everett(&f->model, &f->ev.e, (unsigned long)o->cfg.delay);
+        fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, 0.0, &id_lo, &id_hi);
+        /* a domain wider than the inputs: the range E was identified on is recorded */
+        if (f->model.lo < id_lo || id_hi < f->model.hi) {
+            f->model.has_identified = 1;
+            f->model.id_lo = id_lo > f->model.lo ? id_lo : f->model.lo;
+            f->model.id_hi = id_hi < f->model.hi ? id_hi : f->model.hi;
+        }
         f->usable = f->ev.curve_status == HYST_OK;
         f->rms = f->usable ? f->ev.rms : f->ev.ls_rms;
         f->max_abs = f->ev.max_abs;

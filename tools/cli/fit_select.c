@@ -19,6 +19,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+void fit_input_range(const double *x, size_t from, size_t to, double widen, double *lo,
+                     double *hi)
+{
+    size_t k;
+    double a = x[from], b = x[from];
+    for (k = from; k < to; ++k) {
+        a = x[k] < a ? x[k] : a;
+        b = x[k] > b ? x[k] : b;
+    }
+    *lo = a - widen * (b - a);
+    *hi = b + widen * (b - a);
+}
+
 unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree)
 {
     unsigned i, count = 1u; /* y_lo */
@@ -214,6 +227,13 @@ static void score(const hyst_ident_config_t *base, const double *x, const double
     c->creep.holdout_rms = NAN;
     if (c->kind == FIT_EVERETT) {
         fit_everett_result_t ev;
+        if (c->widened && n > base->skip + c->delay) {
+            double lo, hi;
+            fit_input_range(x, base->skip, base->skip + train_count(n, base->skip, c->delay),
+                            FIT_WIDEN, &lo, &hi);
+            cfg.lo = lo;
+            cfg.hi = hi;
+        }
         c->holdout_rms = fit_everett_holdout(&cfg, c->t_degree, x, y, n, &c->status, &ev, creep);
         c->fit_rms = ev.rms;
     } else {
@@ -240,7 +260,7 @@ unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
  * unless cand is full; *best the lowest hold-out RMS so far. */
 static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
                 double creep_tau, int kind, unsigned degree, unsigned t_degree, size_t delay,
-                fit_candidate_t *cand, size_t max_cand, size_t *count)
+                int widened, fit_candidate_t *cand, size_t max_cand, size_t *count)
 {
     fit_candidate_t *c = &cand[*count];
     if (*count >= max_cand) {
@@ -251,6 +271,7 @@ static void add(const hyst_ident_config_t *base, const double *x, const double *
     c->degree = degree;
     c->t_degree = t_degree;
     c->delay = delay;
+    c->widened = widened;
     score(base, x, y, n, creep_tau, c);
     ++*count;
 }
@@ -265,22 +286,36 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
     /* the options compared: without creep unless a time constant is given,
      * with it unless creep_tau < 0 */
     const int wc_first = creep_tau > 0 ? 1 : 0, wc_last = creep_tau < 0 ? 0 : 1;
-    int wc, low_creep = 0;
+    int wc, low_creep = 0, widen = 0;
     double lowest = NAN;
     *best = (size_t)-1;
     *with_creep = 0;
+    /* widened candidates only where they make a difference: the hold-out
+     * part's inputs leave the range of the part fitted (and no --domain) */
+    if (!(base->lo < base->hi) && n > base->skip + base->delay) {
+        const size_t from = base->skip, end = n - base->delay;
+        const size_t train = train_count(n, base->skip, base->delay);
+        double lo, hi;
+        fit_input_range(x, from, from + train, 0.0, &lo, &hi);
+        for (i = from + train; i < end && !widen; ++i) {
+            widen = x[i] < lo || x[i] > hi;
+        }
+    }
     for (d = base->delay; d <= max_delay; ++d) {
         if (n <= base->skip + d) {
             break;
         }
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
-            add(base, x, y, n, creep_tau, FIT_POLY, deg, 0u, d, cand, max_cand, &count);
+            add(base, x, y, n, creep_tau, FIT_POLY, deg, 0u, d, 0, cand, max_cand, &count);
         }
         for (deg = 1u; (kinds & FIT_EVERETT) != 0 && deg <= HYST_EVERETT_MAX_DEGREE; ++deg) {
             for (k = 0u; k < deg && (everett_degree == 0u || deg == everett_degree); ++k) {
-                if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
-                    add(base, x, y, n, creep_tau, FIT_EVERETT, deg, k, d, cand, max_cand,
-                        &count);
+                int w;
+                for (w = 0; w <= widen; ++w) {
+                    if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
+                        add(base, x, y, n, creep_tau, FIT_EVERETT, deg, k, d, w, cand, max_cand,
+                            &count);
+                    }
                 }
             }
         }

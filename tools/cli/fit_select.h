@@ -14,6 +14,12 @@
  * as good: the fewest parameters among them win. */
 #define FIT_PARSIMONY 0.01
 
+/* The asymmetric kind is also fitted on a domain wider than the inputs' range
+ * by this fraction of the range on each side: E continued beyond the inputs
+ * it was identified on (monotone on the whole wider triangle, as the library
+ * requires), so later inputs outside that range are predicted, not clamped. */
+#define FIT_WIDEN 1.0
+
 /* Kinds of model a candidate may be (a mask for fit_select()): the
  * symmetric TCM's polynomial f0 and the asymmetric kind's E. */
 enum { FIT_POLY = 1, FIT_EVERETT = 2 };
@@ -47,6 +53,7 @@ typedef struct fit_candidate {
     unsigned degree;
     unsigned t_degree;        /* everett: the highest power of t fitted (< degree) */
     size_t delay;
+    int widened;              /* everett: its domain the inputs' range widened by FIT_WIDEN */
     hyst_status_t status;     /* of the training fit (everett: or of its curve) */
     hyst_ident_result_t fit;  /* poly: on the first two thirds */
     double fit_rms;           /* residual of the training fit (poly: fit.rms) */
@@ -66,6 +73,10 @@ typedef struct fit_everett_result {
 /* Real numbers a model of this kind and degree identifies: poly the
  * degree + 1 coefficients, everett E's terms w^i t^j with j <= t_degree
  * and y_lo (t_degree ignored for poly). */
+/* The range of x[from .. to) widened by `widen` times it on each side. */
+void fit_input_range(const double *x, size_t from, size_t to, double widen, double *lo,
+                     double *hi);
+
 unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree);
 
 /* The TCM (f0, or when f0 is NULL the prepared curve) run from rest over

@@ -94,11 +94,12 @@ enum {
     K_TERMS,
     K_CREEP_TAU,
     K_CREEP_WEIGHT,
+    K_IDENTIFIED,
     K_COUNT
 };
 static const char *const keys[K_COUNT] = {"kind",  "lo",   "hi",     "coeffs",    "delay",
                                           "y_lo",  "degree", "terms", "creep_tau",
-                                          "creep_weight"};
+                                          "creep_weight", "identified"};
 
 /* What a key's line needs: 0 if n fields are right, else a message. */
 static int model_count(const char *cmd, const char *path, unsigned long no, int k, size_t n)
@@ -120,6 +121,9 @@ static int model_count(const char *cmd, const char *path, unsigned long no, int 
         (void)snprintf(text, sizeof text, "1 to %u numbers (one per creep term)",
                        (unsigned)CLI_CREEP_MAX_TERMS);
         needs = text;
+    } else if (k == K_IDENTIFIED) {
+        least = most = 3u;
+        needs = "two values (LO HI)";
     }
     if (n < least) {
         return cli_fail(cmd, "%s:%lu: field %lu is missing: %s needs %s", path, no,
@@ -169,6 +173,7 @@ static int model_value(const char *cmd, const char *path, unsigned long no, int 
     case K_TERMS: m->terms[i - 1u] = v; break;
     case K_CREEP_TAU: m->creep_tau[i - 1u] = v; break;
     case K_CREEP_WEIGHT: m->creep_weight[i - 1u] = v; break;
+    case K_IDENTIFIED: *(i == 1u ? &m->id_lo : &m->id_hi) = v; break;
     default: m->coeffs[i - 1u] = v; break;
     }
     return 0;
@@ -208,6 +213,12 @@ static int model_complete(const char *cmd, const char *path, const unsigned long
         return cli_fail(cmd, "%s:%lu: field 1: %s needs %s too (creep: both or neither)", path,
                         line[k_has], keys[k_has],
                         keys[k_has == K_CREEP_TAU ? K_CREEP_WEIGHT : K_CREEP_TAU]);
+    }
+    if (line[K_IDENTIFIED] != 0ul && !(m->lo <= m->id_lo && m->id_lo < m->id_hi &&
+                                       m->id_hi <= m->hi)) {
+        return cli_fail(cmd, "%s:%lu: identified %.17g %.17g is not a range within [lo, hi] "
+                             "= [%.17g, %.17g]",
+                        path, line[K_IDENTIFIED], m->id_lo, m->id_hi, m->lo, m->hi);
     }
     if (m->ncreep != m->ncreep_weights) {
         const int short_w = m->ncreep_weights < m->ncreep; /* else one too many */
@@ -263,8 +274,8 @@ int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
         }
         if (k == K_COUNT || seen[k] != 0ul) {
             return cli_fail(cmd, "%s:%lu: field 1: %s %s", path, no, cli_quote(q, f[0]),
-                            k == K_COUNT ? "is not a key (kind, lo, hi, delay, coeffs, "
-                                           "creep_tau, creep_weight; kind everett: y_lo, "
+                            k == K_COUNT ? "is not a key (kind, lo, hi, identified, delay, "
+                                           "coeffs, creep_tau, creep_weight; kind everett: y_lo, "
                                            "degree, terms)"
                                          : "given twice");
         }
@@ -293,6 +304,8 @@ int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
             m->ncreep = n - 1u;
         } else if (k == K_CREEP_WEIGHT) {
             m->ncreep_weights = n - 1u;
+        } else if (k == K_IDENTIFIED) {
+            m->has_identified = 1;
         }
     }
     if (no == 0ul) {
@@ -348,6 +361,12 @@ size_t cli_model_text(const cli_model_t *m, char *buf, size_t size)
                                 "kind poly\nlo %.17g\nhi %.17g\ndelay %lu\ncoeffs",
                           m->delay, m->lo, m->hi, m->delay);
         over |= append_numbers(buf, size, &len, m->coeffs, m->ncoef);
+    }
+    if (m->has_identified) {
+        over |= cli_append(buf, size, &len,
+                           "\n# identified on inputs in [LO, HI]; the branches continue "
+                           "beyond it to [lo, hi]\nidentified %.17g %.17g",
+                           m->id_lo, m->id_hi);
     }
     if (m->ncreep > 0u) {
         over |= cli_append(buf, size, &len,
