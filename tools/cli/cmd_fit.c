@@ -128,6 +128,8 @@ typedef struct fit_opts {
     double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
     size_t holdout_n, beyond; /* hold-out inputs, those outside the part fitted */
+    size_t max_delay;     /* delays searched 0..max_delay (scaled to the drive's period) */
+    size_t cheap_delay;   /* max_delay > FIT_MAX_DELAY: the cheap model's best delay */
     double fitted_lo, fitted_hi; /* the range of the part fitted */
 } fit_opts_t;
 
@@ -327,10 +329,20 @@ static void count_beyond(fit_opts_t *o, const cli_table_t *t);
 /* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
 static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
 {
+    size_t max_delay = o->cfg.delay;
+    if (!o->have_delay) { /* delays scaled to the drive's period */
+        o->max_delay = fit_max_delay(t->col[0], o->cfg.skip, t->n);
+        max_delay = o->max_delay;
+        if (max_delay > FIT_MAX_DELAY) { /* the cheap model's best delay, then around it */
+            o->cheap_delay = fit_cheap_delay(&o->cfg, t->col[0], t->col[1], t->n, max_delay);
+            o->cfg.delay = o->cheap_delay > FIT_DELAY_AROUND ? o->cheap_delay - FIT_DELAY_AROUND
+                                                             : 0u;
+            max_delay = o->cheap_delay + FIT_DELAY_AROUND;
+        }
+    }
     n_candidates = fit_select(&o->cfg, candidate_kinds(o), 0u,
                               o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, o->creep_tau,
-                              t->col[0], t->col[1], t->n,
-                              o->have_delay ? o->cfg.delay : FIT_MAX_DELAY, candidates,
+                              t->col[0], t->col[1], t->n, max_delay, candidates,
                               MAX_CANDIDATES, &best_candidate, &o->with_creep);
     if (best_candidate == (size_t)-1) {
         return cli_fail("fit", "%s: no candidate degree gave %s that could predict the last "
@@ -411,6 +423,16 @@ static void print_candidates(const fit_opts_t *o)
                  candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
                  : candidate_kinds(o) == FIT_EVERETT           ? "everett"
                                                                : "poly");
+    if (o->max_delay > FIT_MAX_DELAY) {
+        (void)printf("# delays searched 0..%lu (1/%u of the drive's period): f0 of degree 3 "
+                     "predicts best at %lu; every candidate at %lu..%lu\n",
+                     (unsigned long)o->max_delay, (unsigned)FIT_DELAY_PERIOD_FRACTION,
+                     (unsigned long)o->cheap_delay,
+                     (unsigned long)(o->cheap_delay > FIT_DELAY_AROUND
+                                         ? o->cheap_delay - FIT_DELAY_AROUND
+                                         : 0u),
+                     (unsigned long)(o->cheap_delay + FIT_DELAY_AROUND));
+    }
     (void)printf("# hold-out: %lu of its %lu inputs outside [%.9g, %.9g], the range of the "
                  "part fitted%s\n",
                  (unsigned long)o->beyond, (unsigned long)o->holdout_n, o->fitted_lo,

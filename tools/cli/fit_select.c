@@ -32,6 +32,55 @@ void fit_input_range(const double *x, size_t from, size_t to, double widen, doub
     *hi = b + widen * (b - a);
 }
 
+size_t fit_max_delay(const double *x, size_t from, size_t to)
+{
+    double lo, hi, ext;
+    size_t k, reversals = 0u, d;
+    int dir = 0;
+    if (to <= from + 1u) {
+        return FIT_MAX_DELAY;
+    }
+    fit_input_range(x, from, to, 0.0, &lo, &hi);
+    ext = x[from];
+    for (k = from + 1u; k < to; ++k) { /* a reversal: back from the extreme by 1 % of the range */
+        const double step = 0.01 * (hi - lo);
+        if (dir >= 0 && x[k] > ext) {
+            ext = x[k];
+            dir = 1;
+        } else if (dir <= 0 && x[k] < ext) {
+            ext = x[k];
+            dir = -1;
+        } else if ((dir > 0 && x[k] < ext - step) || (dir < 0 && x[k] > ext + step)) {
+            ++reversals;
+            dir = -dir;
+            ext = x[k];
+        }
+    }
+    d = reversals > 0u ? 2u * (to - from) / reversals / FIT_DELAY_PERIOD_FRACTION : 0u;
+    return d < FIT_MAX_DELAY ? FIT_MAX_DELAY : d > FIT_MAX_SCALED_DELAY ? FIT_MAX_SCALED_DELAY : d;
+}
+
+size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
+                       size_t n, size_t max_delay)
+{
+    size_t d, best = 0u;
+    double lowest = NAN;
+    for (d = 0u; d <= max_delay && n > base->skip + d; ++d) {
+        hyst_ident_config_t cfg = *base;
+        hyst_ident_result_t fit;
+        hyst_status_t st;
+        double e;
+        cfg.degree = 3u;
+        cfg.delay = d;
+        e = fit_tcm_holdout(&cfg, x, y, n, &st, &fit, NULL);
+        if (isfinite(e) && !(lowest <= e)) {
+            lowest = e;
+            best = d;
+        }
+    }
+    return best;
+}
+
 unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree)
 {
     unsigned i, count = 1u; /* y_lo */

@@ -10,6 +10,15 @@
 /* Delays tried when --delay is not given: 0 .. FIT_MAX_DELAY samples. */
 #define FIT_MAX_DELAY 8u
 
+/* A drive's period in samples over this is searched for delays up to period /
+ * FIT_DELAY_PERIOD_FRACTION (at least FIT_MAX_DELAY, at most FIT_MAX_SCALED_DELAY):
+ * first with one cheap model at every delay, then every candidate at the
+ * delays next to the best. */
+#define FIT_DELAY_PERIOD_FRACTION 64u
+#define FIT_MAX_SCALED_DELAY 1000u
+/* Delays around the cheap search's best at which every candidate is fitted. */
+#define FIT_DELAY_AROUND 4u
+
 /* A candidate within this fraction of the lowest hold-out error counts as
  * as good: the fewest parameters among them win. */
 #define FIT_PARSIMONY 0.01
@@ -73,6 +82,15 @@ typedef struct fit_everett_result {
 /* Real numbers a model of this kind and degree identifies: poly the
  * degree + 1 coefficients, everett E's terms w^i t^j with j <= t_degree
  * and y_lo (t_degree ignored for poly). */
+/* The longest delay worth searching for a drive x[from .. to): a fraction
+ * of its period (from its reversals, moves below 1 % of its range ignored). */
+size_t fit_max_delay(const double *x, size_t from, size_t to);
+
+/* The delay in [0, max_delay] at which the cheap model (f0 of degree 3 on
+ * base's skip and domain, no creep) predicts the hold-out best. */
+size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
+                       size_t n, size_t max_delay);
+
 /* The range of x[from .. to) widened by `widen` times it on each side. */
 void fit_input_range(const double *x, size_t from, size_t to, double widen, double *lo,
                      double *hi);

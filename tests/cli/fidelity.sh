@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# What `hyst fit` does for records unlike its first one:
+#  - a delay scaled to the drive: a plant (Eq. 20, delay 20 samples) driven
+#    by triangles of 4000 samples: the delays searched reach about 1/64 of
+#    the period (over 40), past the 0..8 of a fast drive, and fit chooses 20;
+#  - inputs beyond the range fitted: an asymmetric plant driven by triangles
+#    of growing amplitude, whose last third goes past the first two thirds'
+#    peaks: fit counts the hold-out inputs outside the range fitted, the
+#    model file records the range it was identified on (key identified), and
+#    sim --model says how many inputs left it (the count computed here) and
+#    predicts them instead of clamping them (outputs beyond its value at the
+#    range's end);
+#  - a model file with an identified range outside its domain is refused.
+#   fidelity.sh <hyst> <work dir>
+set -euo pipefail
+tool=$1 work=$2
+mkdir -p "$work"
+cd "$work"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# ---- delay search scaled to the drive's period ----
+cat > plant.hyst <<'MODEL'
+hyst-model-text 1
+kind poly
+lo 0
+hi 40
+delay 20
+coeffs -6.1876e-6 1.1949e-3 8.6444e-2 5.8517e-1
+MODEL
+awk 'BEGIN { for (c = 0; c < 8; c++) { for (k = 0; k < 2000; k++) print k * 0.02;
+             for (k = 2000; k > 0; k--) print k * 0.02 } print 0 }' > x.txt
+"$tool" sim --model plant.hyst x.txt > y.txt || fail "sim of the plant"
+paste -d ' ' x.txt y.txt | awk '{ s = (NR == 1) ? 4242 : s; s = (s * 1103515245 + 12345) % 2147483648;
+                                  printf "%s %.9g\n", $1, $2 + (s / 2147483648 - 0.5) * 0.004 }' > rec.txt
+"$tool" fit --creep none rec.txt > fit.txt || fail "fit: $(cat fit.txt)"
+searched=$(sed -n 's/^# delays searched 0\.\.\([0-9]*\) .*/\1/p' fit.txt)
+[ "${searched:-0}" -ge 40 ] || fail "delays searched: $(grep '^# delays' fit.txt)"
+grep -qx '# delay 20 samples' fit.txt || fail "delay: $(grep '^# delay' fit.txt)"
+
+# ---- inputs beyond the range fitted ----
+cat > asym.hyst <<'MODEL'
+hyst-model-text 1
+kind everett
+lo 0
+hi 40
+y_lo 0
+delay 1
+degree 2
+terms 3 -0.5 1
+MODEL
+# triangles from 0 to 8, 12, ..., 40 V, 0.1 V a sample
+awk 'BEGIN { for (p = 8; p <= 40; p += 4) { for (x = 0; x < p; x += 0.1) print x;
+             for (x = p; x > 0; x -= 0.1) print x } print 0 }' > xg.txt
+"$tool" sim --model asym.hyst xg.txt > yg.txt || fail "sim of the asymmetric plant"
+paste -d ' ' xg.txt yg.txt > recg.txt
+n=$(wc -l < recg.txt)
+head -n $((2 * n / 3)) recg.txt > train.txt
+"$tool" fit --creep none --save m.hyst train.txt > fitg.txt || fail "fit: $(cat fitg.txt)"
+grep -q '^# hold-out: [1-9][0-9]* of its [0-9]* inputs outside \[' fitg.txt ||
+    fail "hold-out count: $(grep '^# hold-out' fitg.txt)"
+read -r id_lo id_hi < <(awk '$1 == "identified" { print $2, $3 }' m.hyst)
+[ -n "${id_hi:-}" ] || fail "no identified range in the model file: $(cat m.hyst)"
+lo=$(awk '$1 == "lo" { print $2 }' m.hyst)
+hi=$(awk '$1 == "hi" { print $2 }' m.hyst)
+awk -v a="$id_hi" -v b="$hi" -v c="$lo" -v d="$id_lo" 'BEGIN { exit !(b > a && c <= d) }' ||
+    fail "domain [$lo, $hi] does not extend the identified [$id_lo, $id_hi]"
+beyond=$(awk -v h="$id_hi" -v l="$id_lo" '$1 > h + 0 || $1 < l + 0 { c++ } END { print c + 0 }' xg.txt)
+[ "$beyond" -gt 0 ] || fail "the test record never leaves the range fitted"
+"$tool" sim --model m.hyst xg.txt > pred.txt 2> sim_err.txt || fail "sim --model: $(cat sim_err.txt)"
+grep -q "note: xg.txt: $beyond of $n inputs outside \[" sim_err.txt || fail "sim note ($beyond): $(cat sim_err.txt)"
+! grep -q 'clamped' sim_err.txt || fail "inputs clamped: $(cat sim_err.txt)"
+# predicted past the range: the largest output exceeds the model's output at
+# the range's end, and tracks the plant's (within 2 % of its range)
+paste -d ' ' yg.txt pred.txt | awk '{ e = $1 - $2; s += e * e; if ($1 > m) m = $1; if ($1 < l) l = $1 }
+    END { exit !(sqrt(s / NR) < 0.02 * (m - l)) }' || fail "prediction beyond the range fitted"
+
+# ---- a model file whose identified range is not within its domain ----
+sed 's/^identified .*/identified -1000 50/' m.hyst > bad.hyst
+"$tool" sim --model bad.hyst xg.txt > /dev/null 2> bad_err.txt && fail "identified outside the domain accepted"
+grep -q 'identified -1000 50 is not a range within \[lo, hi\]' bad_err.txt || fail "refusal: $(cat bad_err.txt)"
+echo "fidelity: ok"
