@@ -544,6 +544,7 @@ def main():
     ap.add_argument("--bench", help="bench/run summary (key value lines)")
     ap.add_argument("--measured-fit", help="hyst fit's printout on the measured record (host tool)")
     ap.add_argument("--measured-data", help="the measured record (tests/data/piezo_major_loop.dat)")
+    ap.add_argument("--fidelity", help="bench/fidelity's section (other people's actuators)")
     args = ap.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
     meta, secs = parse(args.firmware_output)
@@ -560,6 +561,9 @@ def main():
             fn(secs[name])
     if args.measured_fit and args.measured_data:
         measured_choice(args.measured_fit, args.measured_data, md)
+    if args.fidelity and os.path.exists(args.fidelity):
+        with open(args.fidelity, encoding="utf-8") as fh:
+            md.append(fh.read())
     if args.timing:
         timing(args.timing, md, args.out_dir)
     if args.bench:
