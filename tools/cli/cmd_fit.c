@@ -642,7 +642,7 @@ static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, 
     }
     fit_pi_compare(t, o->compare_pi, o->cfg.skip, o->cfg.delay, tcm,
                    fit_parameters(o->final_kind, o->cfg.degree, o->t_degree) +
-                       (o->with_creep ? 1u : 0u),
+                       (o->with_creep ? FIT_CREEP_PARAMETERS : 0u),
                    holdout, line, size);
 }
 
@@ -886,7 +886,7 @@ int cmd_fit(int argc, char **argv)
                      o.holdout, o.creep.tau, o.creep.holdout_rms);
     }
     (void)printf("# parameters %u\n", fit_parameters(o.final_kind, o.cfg.degree, o.t_degree) +
-                                          (o.with_creep && f.model.ncreep > 0u ? 1u : 0u));
+                                          (o.with_creep && f.model.ncreep > 0u ? FIT_CREEP_PARAMETERS : 0u));
     (void)fputs(compare, stdout);
     print_usable(&f);
     if (fflush(stdout) != 0 || ferror(stdout)) {

@@ -302,7 +302,7 @@ double fit_option_rms(const fit_candidate_t *c, int with_creep)
 
 unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
 {
-    return fit_parameters(c->kind, c->degree, c->t_degree) + (with_creep ? 1u : 0u);
+    return fit_parameters(c->kind, c->degree, c->t_degree) + (with_creep ? FIT_CREEP_PARAMETERS : 0u);
 }
 
 /* Adds candidate (kind, degree, t_degree, delay), scored, at cand[*count]

@@ -19,6 +19,10 @@
 /* Delays around the cheap search's best at which every candidate is fitted. */
 #define FIT_DELAY_AROUND 4u
 
+/* Parameters a creep term adds: its weight and its time constant (chosen
+ * from a series, but chosen on the data all the same). */
+#define FIT_CREEP_PARAMETERS 2u
+
 /* A candidate within this fraction of the lowest hold-out error counts as
  * as good: the fewest parameters among them win. */
 #define FIT_PARSIMONY 0.01
@@ -146,8 +150,7 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
 
 /* A candidate's two options: the model alone, or with its creep term
  * (with_creep): the hold-out RMS (NaN: not scored) and the parameters (the
- * creep's weight is one more; its time constant is chosen from a series,
- * like the delay, and not counted). */
+ * creep term's weight and time constant are FIT_CREEP_PARAMETERS more). */
 double fit_option_rms(const fit_candidate_t *c, int with_creep);
 unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep);
 
