@@ -11,6 +11,10 @@
 #    sim --model says how many inputs left it (the count computed here) and
 #    predicts them instead of clamping them (outputs beyond its value at the
 #    range's end);
+#  - the choice's report: the runner-up (another model) and PI-10 on the same
+#    split, the ratio as printed; a warning when the last third holds no
+#    minor loop (major loops only) or spans under half the inputs' range, none
+#    when it has both;
 #  - a model file with an identified range outside its domain is refused.
 #   fidelity.sh <hyst> <work dir>
 set -euo pipefail
@@ -33,10 +37,37 @@ awk 'BEGIN { for (c = 0; c < 8; c++) { for (k = 0; k < 2000; k++) print k * 0.02
 "$tool" sim --model plant.hyst x.txt > y.txt || fail "sim of the plant"
 paste -d ' ' x.txt y.txt | awk '{ s = (NR == 1) ? 4242 : s; s = (s * 1103515245 + 12345) % 2147483648;
                                   printf "%s %.9g\n", $1, $2 + (s / 2147483648 - 0.5) * 0.004 }' > rec.txt
-"$tool" fit --creep none rec.txt > fit.txt || fail "fit: $(cat fit.txt)"
+"$tool" fit --creep none rec.txt > fit.txt 2> fit_err.txt || fail "fit: $(cat fit.txt)"
 searched=$(sed -n 's/^# delays searched 0\.\.\([0-9]*\) .*/\1/p' fit.txt)
 [ "${searched:-0}" -ge 40 ] || fail "delays searched: $(grep '^# delays' fit.txt)"
 grep -qx '# delay 20 samples' fit.txt || fail "delay: $(grep '^# delay' fit.txt)"
+
+# ---- the choice's report ----
+chosen=$(grep '(chosen)$' fit.txt | sed 's/^# candidate \(.*\) delay \([0-9]*\): hold-out rms \([^,]*\),.*/\1|\2|\3/')
+runner=$(grep '^# runner-up: ' fit.txt) || fail "no runner-up line"
+[[ $runner =~ ^#\ runner-up:\ (.*)\ delay\ ([0-9]+)\ \(([0-9]+)\ parameters\):\ hold-out\ rms\ ([0-9.e-]+),\ the\ chosen\ ([0-9.e-]+)$ ]] ||
+    fail "runner-up line: $runner"
+[ "${BASH_REMATCH[1]}" != "${chosen%%|*}" ] || fail "the runner-up is the chosen model: $runner"
+[ "${BASH_REMATCH[5]}" = "${chosen##*|}" ] || fail "runner-up line's chosen figure: $runner ($chosen)"
+# the runner-up is the best of the other models in the candidate table
+best_other=$(awk -v c="${chosen%%|*}" '/^# candidate .*hold-out rms/ {
+        name = $0; sub(/^# candidate /, "", name); sub(/ delay [0-9]+:.*/, "", name);
+        r = $0; sub(/.*hold-out rms /, "", r); sub(/,.*/, "", r);
+        if (name != c && (b == "" || r + 0 < b + 0)) b = r } END { print b }' fit.txt)
+[ "$best_other" = "${BASH_REMATCH[4]}" ] || fail "runner-up $runner, best other $best_other"
+pi=$(grep '^# PI-10 on the same split' fit.txt) || fail "no PI-10 line"
+[[ $pi =~ hold-out\ rms\ ([0-9.e-]+)\;\ PI-10\ /\ chosen\ ([0-9.e-]+)$ ]] || fail "PI-10 line: $pi"
+awk -v p="${BASH_REMATCH[1]}" -v c="${chosen##*|}" -v q="${BASH_REMATCH[2]}" \
+    'BEGIN { exit !(q > 0 && (p / c) / q > 0.995 && (p / c) / q < 1.005) }' || fail "PI-10 ratio: $pi ($chosen)"
+grep -q 'warning: rec.txt: the last third holds no minor loop' fit_err.txt ||
+    fail "no warning of major loops only: $(cat fit_err.txt)"
+# the last third in a corner of the range: triangles 0..40, then 10..16
+awk 'BEGIN { for (c = 0; c < 4; c++) { for (x = 0; x < 40; x += 0.25) print x; for (x = 40; x > 0; x -= 0.25) print x }
+             for (c = 0; c < 30; c++) { for (x = 10; x < 16; x += 0.25) print x; for (x = 16; x > 10; x -= 0.25) print x } print 10 }' > xc.txt
+"$tool" sim --model plant.hyst xc.txt | paste -d ' ' xc.txt - > recc.txt
+"$tool" fit --creep none recc.txt > /dev/null 2> corner_err.txt || fail "fit of the corner record"
+grep -q 'warning: recc.txt: the last third.s inputs span 15 % of the record.s range' corner_err.txt ||
+    fail "no warning of a narrow last third: $(cat corner_err.txt)"
 
 # ---- inputs beyond the range fitted ----
 cat > asym.hyst <<'MODEL'
@@ -57,6 +88,9 @@ paste -d ' ' xg.txt yg.txt > recg.txt
 n=$(wc -l < recg.txt)
 head -n $((2 * n / 3)) recg.txt > train.txt
 "$tool" fit --creep none --save m.hyst train.txt > fitg.txt || fail "fit: $(cat fitg.txt)"
+# the whole record's last third: reversals at 32 and 36 V inside 0..40, the whole range
+"$tool" fit --creep none recg.txt > /dev/null 2> whole_err.txt || fail "fit of the whole record"
+! grep -q 'warning' whole_err.txt || fail "warned of a last third with minor loops and range: $(cat whole_err.txt)"
 grep -q '^# hold-out: [1-9][0-9]* of its [0-9]* inputs outside \[' fitg.txt ||
     fail "hold-out count: $(grep '^# hold-out' fitg.txt)"
 read -r id_lo id_hi < <(awk '$1 == "identified" { print $2, $3 }' m.hyst)

@@ -15,6 +15,10 @@
 /* Longest --header-dir accepted (the header's path is built in a fixed buffer). */
 #define CLI_HEADER_DIR_MAX 4096u
 
+/* A hold-out part whose inputs span less than this fraction of the record's
+ * range is warned about: the choice was not tested over the rest. */
+#define FIT_HOLDOUT_MIN_SPAN 0.5
+
 /* --kind pi without --operators: the size of the paper's Table 1 model. */
 #define FIT_PI_DEFAULT_OPERATORS 10u
 
@@ -128,6 +132,11 @@ typedef struct fit_opts {
     double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
     size_t holdout_n, beyond; /* hold-out inputs, those outside the part fitted */
+    double holdout_span;  /* the hold-out inputs' range over the record's */
+    size_t holdout_minor; /* reversals inside the record's range in the hold-out */
+    size_t runner_up;     /* the best option of another model than the chosen ((size_t)-1: none) */
+    int runner_up_creep;
+    double pi10;          /* PI-10's hold-out RMS at the chosen delay (NaN: not scored) */
     size_t max_delay;     /* delays searched 0..max_delay (scaled to the drive's period) */
     size_t cheap_delay;   /* max_delay > FIT_MAX_DELAY: the cheap model's best delay */
     double fitted_lo, fitted_hi; /* the range of the part fitted */
@@ -325,6 +334,7 @@ static const char everett_singular[] =
     "determine t-degree 1 at most";
 
 static void count_beyond(fit_opts_t *o, const cli_table_t *t);
+static void rank_others(fit_opts_t *o, const cli_table_t *t);
 
 /* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
 static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
@@ -363,8 +373,9 @@ static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
         o->cfg.lo = lo;
         o->cfg.hi = hi;
     }
-    count_beyond(o, t);
     o->creep = candidates[best_candidate].creep;
+    count_beyond(o, t);
+    rank_others(o, t);
     o->holdout = candidates[best_candidate].holdout_rms;
     return 0;
 }
@@ -401,8 +412,80 @@ static void count_beyond(fit_opts_t *o, const cli_table_t *t)
     fit_input_range(t->col[0], from, from + train, 0.0, &o->fitted_lo, &o->fitted_hi);
     o->holdout_n = end - from - train;
     o->beyond = 0u;
+    double lo, hi, hold_lo, hold_hi;
     for (k = from + train; k < end; ++k) {
         o->beyond += t->col[0][k] < o->fitted_lo || t->col[0][k] > o->fitted_hi ? 1u : 0u;
+    }
+    /* the excitation the hold-out tests the choice on: its range and minor loops */
+    fit_input_range(t->col[0], from, end, 0.0, &lo, &hi);
+    fit_input_range(t->col[0], from + train, end, 0.0, &hold_lo, &hold_hi);
+    o->holdout_span = hi > lo ? (hold_hi - hold_lo) / (hi - lo) : 0.0;
+    (void)fit_reversals(t->col[0], from + train, end, lo, hi, &o->holdout_minor);
+}
+
+/* On stderr: what the hold-out part did not test the choice on. */
+static void warn_excitation(const fit_opts_t *o, const char *name)
+{
+    if (o->holdout_span < FIT_HOLDOUT_MIN_SPAN) {
+        (void)fprintf(stderr, "hyst fit: warning: %s: the last third's inputs span %.3g %% of "
+                              "the record's range: the choice was not tested over the rest of "
+                              "it\n",
+                      name, 100.0 * o->holdout_span);
+    }
+    if (o->holdout_minor == 0u) {
+        (void)fprintf(stderr, "hyst fit: warning: %s: the last third holds no minor loop (every "
+                              "reversal at an end of the inputs' range): the choice was not "
+                              "tested on minor loops\n",
+                      name);
+    }
+}
+
+/* The same model (kind, degree, t-degree, domain, creep option) at any delay. */
+static int same_model(const fit_candidate_t *a, int a_creep, const fit_candidate_t *b, int b_creep)
+{
+    return a->kind == b->kind && a->degree == b->degree && a->t_degree == b->t_degree &&
+           a->widened == b->widened && a_creep == b_creep;
+}
+
+/* Into o: the runner-up, the lowest hold-out error of another model than
+ * the chosen, and PI-10 on the same split at the chosen delay. */
+static void rank_others(fit_opts_t *o, const cli_table_t *t)
+{
+    const fit_candidate_t *b = &candidates[best_candidate];
+    double lowest = NAN, r[HYST_PI_FIT_MAX_OPERATORS], w[HYST_PI_FIT_MAX_OPERATORS];
+    hyst_pi_fit_config_t cfg;
+    hyst_pi_fit_result_t res;
+    hyst_status_t st;
+    size_t i;
+    int wc;
+    o->runner_up = (size_t)-1;
+    o->runner_up_creep = 0;
+    for (i = 0u; i < n_candidates; ++i) {
+        for (wc = 0; wc <= 1; ++wc) {
+            const double e = fit_option_rms(&candidates[i], wc);
+            if (isfinite(e) && !same_model(&candidates[i], wc, b, o->with_creep) &&
+                !(lowest <= e)) {
+                lowest = e;
+                o->runner_up = i;
+                o->runner_up_creep = wc;
+            }
+        }
+    }
+    memset(&cfg, 0, sizeof cfg);
+    cfg.operators = FIT_PI_DEFAULT_OPERATORS;
+    cfg.skip = o->cfg.skip;
+    cfg.delay = o->cfg.delay;
+    o->pi10 = fit_pi_holdout(&cfg, t->col[0], t->col[1], t->n, &st, &res, r, w);
+}
+
+/* A candidate's name in the printout into name[0..size). */
+static void candidate_name(const fit_candidate_t *c, char *name, size_t size)
+{
+    if (c->kind == FIT_EVERETT) {
+        (void)snprintf(name, size, "everett degree %u t-degree %u%s", c->degree, c->t_degree,
+                       c->widened ? " widened" : "");
+    } else {
+        (void)snprintf(name, size, "degree %u", c->degree);
     }
 }
 
@@ -440,15 +523,31 @@ static void print_candidates(const fit_opts_t *o)
                  o->beyond > 0u ? " (predicted by the branches continued beyond it: everett "
                                   "widened; the others clamp them)"
                                 : "");
+    (void)printf("# hold-out excitation: its inputs span %.3g %% of the record's range, %lu "
+                 "reversals inside it (minor loops)\n",
+                 100.0 * o->holdout_span, (unsigned long)o->holdout_minor);
+    {
+        const double chosen = fit_option_rms(&candidates[best_candidate], o->with_creep);
+        char name[48];
+        if (o->runner_up != (size_t)-1) {
+            const fit_candidate_t *r = &candidates[o->runner_up];
+            candidate_name(r, name, sizeof name);
+            (void)printf("# runner-up: %s delay %lu%s (%u parameters): hold-out rms %.6g, the "
+                         "chosen %.6g\n",
+                         name, (unsigned long)r->delay, o->runner_up_creep ? " with creep" : "",
+                         fit_option_parameters(r, o->runner_up_creep),
+                         fit_option_rms(r, o->runner_up_creep), chosen);
+        }
+        if (isfinite(o->pi10)) {
+            (void)printf("# PI-10 on the same split (delay %lu, 11 parameters): hold-out rms "
+                         "%.6g; PI-10 / chosen %.3g\n",
+                         (unsigned long)o->cfg.delay, o->pi10, o->pi10 / chosen);
+        }
+    }
     for (i = 0u; i < n_candidates; ++i) {
         const fit_candidate_t *c = &candidates[i];
         char name[48];
-        if (c->kind == FIT_EVERETT) {
-            (void)snprintf(name, sizeof name, "everett degree %u t-degree %u%s", c->degree,
-                           c->t_degree, c->widened ? " widened" : "");
-        } else {
-            (void)snprintf(name, sizeof name, "degree %u", c->degree);
-        }
+        candidate_name(c, name, sizeof name);
         if (isfinite(c->holdout_rms)) {
             char creep[96] = "";
             if (c->creep.tau > 0 && isfinite(c->creep.holdout_rms)) {
@@ -910,6 +1009,9 @@ int cmd_fit(int argc, char **argv)
     }
     if (f.usable && o.save != NULL && cli_replace_commit(&ms) != 0) {
         return 1;
+    }
+    if (!o.have_degree) {
+        warn_excitation(&o, name);
     }
     if (!f.usable) {
         const char *nothing =

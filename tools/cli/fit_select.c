@@ -32,18 +32,19 @@ void fit_input_range(const double *x, size_t from, size_t to, double widen, doub
     *hi = b + widen * (b - a);
 }
 
-size_t fit_max_delay(const double *x, size_t from, size_t to)
+size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double hi,
+                     size_t *inner)
 {
-    double lo, hi, ext;
-    size_t k, reversals = 0u, d;
+    const double step = 0.01 * (hi - lo), edge = 0.02 * (hi - lo);
+    double ext;
+    size_t k, count = 0u;
     int dir = 0;
-    if (to <= from + 1u) {
-        return FIT_MAX_DELAY;
+    *inner = 0u;
+    if (to <= from) {
+        return 0u;
     }
-    fit_input_range(x, from, to, 0.0, &lo, &hi);
     ext = x[from];
-    for (k = from + 1u; k < to; ++k) { /* a reversal: back from the extreme by 1 % of the range */
-        const double step = 0.01 * (hi - lo);
+    for (k = from + 1u; k < to; ++k) {
         if (dir >= 0 && x[k] > ext) {
             ext = x[k];
             dir = 1;
@@ -51,11 +52,24 @@ size_t fit_max_delay(const double *x, size_t from, size_t to)
             ext = x[k];
             dir = -1;
         } else if ((dir > 0 && x[k] < ext - step) || (dir < 0 && x[k] > ext + step)) {
-            ++reversals;
+            ++count;
+            *inner += ext > lo + edge && ext < hi - edge ? 1u : 0u;
             dir = -dir;
             ext = x[k];
         }
     }
+    return count;
+}
+
+size_t fit_max_delay(const double *x, size_t from, size_t to)
+{
+    double lo, hi;
+    size_t reversals, inner, d;
+    if (to <= from + 1u) {
+        return FIT_MAX_DELAY;
+    }
+    fit_input_range(x, from, to, 0.0, &lo, &hi);
+    reversals = fit_reversals(x, from, to, lo, hi, &inner);
     d = reversals > 0u ? 2u * (to - from) / reversals / FIT_DELAY_PERIOD_FRACTION : 0u;
     return d < FIT_MAX_DELAY ? FIT_MAX_DELAY : d > FIT_MAX_SCALED_DELAY ? FIT_MAX_SCALED_DELAY : d;
 }

@@ -90,6 +90,13 @@ typedef struct fit_everett_result {
  * of its period (from its reversals, moves below 1 % of its range ignored). */
 size_t fit_max_delay(const double *x, size_t from, size_t to);
 
+/* Reversals of the drive x[from .. to) (moves back from an extreme by less
+ * than 1 % of [lo, hi] ignored): the count, and into *inner those whose
+ * extreme lies more than 2 % of [lo, hi] inside it (the turning points of
+ * minor loops). */
+size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double hi,
+                     size_t *inner);
+
 /* The delay in [0, max_delay] at which the cheap model (f0 of degree 3 on
  * base's skip and domain, no creep) predicts the hold-out best. */
 size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
