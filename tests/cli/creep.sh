@@ -65,9 +65,14 @@ grep -v '^creep_' m.hyst > bare.hyst
 "$tool" sim --model bare.hyst --digits 17 x.txt > bare.txt || fail "sim of the model without creep"
 tau=$(awk '$1 == "creep_tau" { print $2 }' m.hyst)
 w=$(awk '$1 == "creep_weight" { print $2 }' m.hyst)
-# the lag from lo = 0 at rest, of the input 3 samples back (the delay), its
-# state before each sample
-paste -d ' ' x.txt bare.txt sim.txt |
+# the model's delay: 3 samples and a fraction f of a sample (fit may choose
+# one): its input is the drive interpolated, (1 - f) x[k] + f x[k - 1]
+f=$(awk '$1 == "delay" { print $2 - 3 }' m.hyst)
+awk -v f="$f" 'BEGIN { exit !(f >= 0 && f < 1) }' || fail "delay: $(grep delay m.hyst)"
+awk -v f="$f" 'NR == 1 { p = $1 } { printf "%.17g\n", (1 - f) * $1 + f * p; p = $1 }' x.txt > u.txt
+# the lag from lo = 0 at rest, of the model's input 3 samples back (the
+# delay), its state before each sample
+paste -d ' ' u.txt bare.txt sim.txt |
     awk -v tau="$tau" -v w="$w" '{ x[NR] = $1; h = $2; got = $3;
         c = (NR > 3) ? w * s : 0; if (NR > 3) s += (x[NR - 3] - s) / tau;
         d = got - (h + c); if (d < 0) d = -d; if (d > worst) worst = d }
@@ -75,7 +80,7 @@ paste -d ' ' x.txt bare.txt sim.txt |
     fail "sim --model with creep"
 # ---- inv --model: the drive of each desired output (the delay not compensated) ----
 "$tool" inv --model m.hyst sim.txt > drive.txt 2> inv_err.txt || fail "inv --model: $(cat inv_err.txt)"
-paste -d ' ' x.txt drive.txt |
+paste -d ' ' u.txt drive.txt |
     awk '{ x[NR] = $1; if (NR > 3) { d = $2 - x[NR - 3]; if (d < 0) d = -d; if (d > worst) worst = d } }
          END { if (worst > 1e-6 * 40) { print "inv misses by " worst; exit 1 } }' || fail "inv --model with creep"
 grep -q 'clamped' inv_err.txt && fail "inv clamped sim's own outputs: $(cat inv_err.txt)"

@@ -145,6 +145,9 @@ typedef struct cli_model {
     double id_lo, id_hi;
     int has_identified;
     unsigned long delay; /* the output follows its input this many samples later */
+    /* and a fraction of a sample more (0 <= f < 1; key delay D.f): the model's
+     * input is the drive interpolated, (1 - f) x[k] + f x[k - 1] */
+    double delay_fraction;
     unsigned degree;   /* everett: total degree of E, 1..HYST_EVERETT_MAX_DEGREE */
     double y_lo;       /* everett: the output at lo after reset */
     /* everett: e[i - 1][j], the coefficient of w^i t^j, in the file's order
@@ -159,6 +162,9 @@ typedef struct cli_model {
     size_t ncreep;
     size_t ncreep_weights; /* as read (the reader checks it equals ncreep) */
 } cli_model_t;
+
+/* The model's delay in samples, its fraction included. */
+double cli_model_delay(const cli_model_t *m);
 
 /* Reads a model file; 0, or 1 after a message naming file, line and field. */
 int cli_model_read(const char *cmd, const char *path, cli_model_t *m);

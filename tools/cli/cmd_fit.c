@@ -137,6 +137,9 @@ typedef struct fit_opts {
     size_t runner_up;     /* the best option of another model than the chosen ((size_t)-1: none) */
     int runner_up_creep;
     double pi10;          /* PI-10's hold-out RMS at the chosen delay (NaN: not scored) */
+    double delay_fraction; /* the delay's fraction of a sample, chosen (0: none) */
+    double integer_holdout; /* the choice's hold-out error at a whole delay */
+    size_t integer_delay;   /* that delay */
     size_t max_delay;     /* delays searched 0..max_delay (scaled to the drive's period) */
     size_t cheap_delay;   /* max_delay > FIT_MAX_DELAY: the cheap model's best delay */
     double fitted_lo, fitted_hi; /* the range of the part fitted */
@@ -336,8 +339,66 @@ static const char everett_singular[] =
 static void count_beyond(fit_opts_t *o, const cli_table_t *t);
 static void rank_others(fit_opts_t *o, const cli_table_t *t);
 
+/* The sub-sample delay: the chosen model (kind, degree, domain, creep
+ * option) scored again with the drive a fraction of a sample later, at the
+ * chosen delay and one below; the best, if it lowers the hold-out error by
+ * more than FIT_PARSIMONY, replaces the choice (o->delay_fraction, the
+ * candidate's delay) and the table's drive is interpolated in place, as the
+ * model file's delay makes sim do. 0, or 1 when out of memory. */
+static int choose_fraction(fit_opts_t *o, cli_table_t *t)
+{
+    static fit_candidate_t tried[2u * (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES)];
+    const fit_candidate_t *b = &candidates[best_candidate];
+    const double whole_rms = fit_option_rms(b, o->with_creep);
+    double lowest = whole_rms * (1.0 - FIT_PARSIMONY), f, best_f = 0.0;
+    double *xf = (double *)malloc((t->n > 0u ? t->n : 1u) * sizeof(double));
+    hyst_ident_config_t base = o->cfg;
+    fit_candidate_t keep;
+    const unsigned params = fit_option_parameters(b, o->with_creep);
+    size_t n_tried, best, k;
+    unsigned i;
+    int wc, keep_wc = 0;
+    o->integer_holdout = whole_rms;
+    o->integer_delay = b->delay;
+    o->delay_fraction = 0.0;
+    if (xf == NULL) {
+        return 1;
+    }
+    memset(&keep, 0, sizeof keep);
+    base.delay = b->delay > 0u ? b->delay - 1u : 0u; /* D - 1 + f and D + f */
+    for (i = 1u; i < FIT_FRACTIONS && isfinite(whole_rms); ++i) {
+        f = (double)i / (double)FIT_FRACTIONS;
+        fit_delay_fraction(t->col[0], t->n, f, xf);
+        n_tried = fit_select(&base, candidate_kinds(o), 0u,
+                             o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, o->creep_tau, xf,
+                             t->col[1], t->n, b->delay, tried, sizeof tried / sizeof tried[0],
+                             &best, &wc);
+        /* the lowest error of no more parameters than the whole-delay choice:
+         * the fraction is not a way to more terms */
+        for (k = 0u; k < n_tried && best != (size_t)-1; ++k) {
+            for (wc = 0; wc <= 1; ++wc) {
+                const double e = fit_option_rms(&tried[k], wc);
+                if (isfinite(e) && e < lowest && fit_option_parameters(&tried[k], wc) <= params) {
+                    lowest = e;
+                    keep = tried[k];
+                    keep_wc = wc;
+                    best_f = f;
+                }
+            }
+        }
+    }
+    if (best_f > 0.0) { /* the choice at that fraction replaces the whole-delay one */
+        candidates[best_candidate] = keep;
+        o->with_creep = keep_wc;
+        o->delay_fraction = best_f;
+        fit_delay_fraction(t->col[0], t->n, best_f, t->col[0]);
+    }
+    free(xf);
+    return 0;
+}
+
 /* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
-static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
+static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
 {
     size_t max_delay = o->cfg.delay;
     if (!o->have_delay) { /* delays scaled to the drive's period */
@@ -362,6 +423,9 @@ static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
                         : o->kind == FIT_KIND_TCM   ? "an increasing f0"
                                                     : "an increasing f0 or an E the library "
                                                       "accepts");
+    }
+    if (!o->have_delay && choose_fraction(o, t) != 0) {
+        return cli_fail("fit", "%s: out of memory", name);
     }
     o->final_kind = candidates[best_candidate].kind;
     o->cfg.degree = candidates[best_candidate].degree;
@@ -554,8 +618,10 @@ static void print_candidates(const fit_opts_t *o)
                 (void)snprintf(creep, sizeof creep, "; with creep tau %.6g: %.6g", c->creep.tau,
                                c->creep.holdout_rms);
             }
-            (void)printf("# candidate %s delay %lu: hold-out rms %.6g, fit rms %.6g%s%s\n", name,
-                         (unsigned long)c->delay, c->holdout_rms, c->fit_rms, creep,
+            /* the chosen one at its sub-sample delay, if one was chosen */
+            (void)printf("# candidate %s delay %.9g: hold-out rms %.6g, fit rms %.6g%s%s\n", name,
+                         (double)c->delay + (i == best_candidate ? o->delay_fraction : 0.0),
+                         c->holdout_rms, c->fit_rms, creep,
                          i != best_candidate ? ""
                          : o->with_creep     ? " (chosen, with creep)"
                                              : " (chosen)");
@@ -651,6 +717,7 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
     if (everett) {
         double id_lo, id_hi;
         cli_model_from_everett(&f->model, &f->ev.e, (unsigned long)o->cfg.delay);
+        f->model.delay_fraction = o->delay_fraction;
         fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, 0.0, &id_lo, &id_hi);
         /* a domain wider than the inputs: the range E was identified on is recorded */
         if (f->model.lo < id_lo || id_hi < f->model.hi) {
@@ -670,6 +737,7 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
         f->model.lo = (double)f->r.lo;
         f->model.hi = (double)f->r.hi;
         f->model.delay = (unsigned long)o->cfg.delay;
+        f->model.delay_fraction = o->delay_fraction;
         f->usable = f->r.increasing;
         f->rms = (double)f->r.rms;
         f->max_abs = (double)f->r.max_abs;
@@ -973,7 +1041,14 @@ int cmd_fit(int argc, char **argv)
     if (!o.have_degree) {
         print_candidates(&o);
     }
-    (void)printf("# delay %lu samples\n", (unsigned long)o.cfg.delay);
+    if (o.delay_fraction > 0.0) {
+        (void)printf("# delay %.9g samples (sub-sample: the drive interpolated; hold-out rms at "
+                     "delay %lu: %.6g)\n",
+                     (double)o.cfg.delay + o.delay_fraction,
+                     (unsigned long)o.integer_delay, o.integer_holdout);
+    } else {
+        (void)printf("# delay %lu samples\n", (unsigned long)o.cfg.delay);
+    }
     if (o.with_creep && f.model.ncreep > 0u) {
         (void)printf("# creep: tau %.6g samples, weight %.9g (hold-out rms %.6g; without it "
                      "%.6g)\n",

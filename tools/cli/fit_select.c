@@ -279,8 +279,8 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
 /* Candidate c fitted and scored: kind, degree (t_degree) and delay set by
  * the caller; with a creep term too unless creep_tau < 0 (0: its time
  * constant chosen). */
-static void score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                  double creep_tau, fit_candidate_t *c)
+void fit_score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+               double creep_tau, fit_candidate_t *c)
 {
     hyst_ident_config_t cfg = *base;
     fit_creep_t *creep = creep_tau >= 0 ? &c->creep : NULL;
@@ -306,6 +306,17 @@ static void score(const hyst_ident_config_t *base, const double *x, const double
     if (!isfinite(c->holdout_rms)) {
         c->creep.tau = 0.0; /* the model itself could not be scored */
         c->creep.holdout_rms = NAN;
+    }
+}
+
+void fit_delay_fraction(const double *x, size_t n, double f, double *xf)
+{
+    size_t k;
+    for (k = n; k-- > 1u;) { /* from the end: in place, x[k - 1] not yet replaced */
+        xf[k] = (1.0 - f) * x[k] + f * x[k - 1u];
+    }
+    if (n > 0u) {
+        xf[0] = x[0];
     }
 }
 
@@ -335,7 +346,7 @@ static void add(const hyst_ident_config_t *base, const double *x, const double *
     c->t_degree = t_degree;
     c->delay = delay;
     c->widened = widened;
-    score(base, x, y, n, creep_tau, c);
+    fit_score(base, x, y, n, creep_tau, c);
     ++*count;
 }
 

@@ -16,6 +16,10 @@
  * delays next to the best. */
 #define FIT_DELAY_PERIOD_FRACTION 64u
 #define FIT_MAX_SCALED_DELAY 1000u
+/* Fractions of a sample tried after the choice (sub-sample delay), at the
+ * chosen delay and one below: 1/FIT_FRACTIONS steps. */
+#define FIT_FRACTIONS 4u
+
 /* Delays around the cheap search's best at which every candidate is fitted. */
 #define FIT_DELAY_AROUND 4u
 
@@ -154,6 +158,17 @@ double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, co
 double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const double *y,
                       size_t n, hyst_status_t *status, hyst_pi_fit_result_t *fit, double *r,
                       double *w);
+
+/* Candidate c (kind, degree, t_degree, delay, widened set) fitted on the
+ * first two thirds of x, y (base: method, domain, skip) and scored on the
+ * last third; with a creep term too unless creep_tau < 0 (0: its time
+ * constant chosen). */
+void fit_score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+               double creep_tau, fit_candidate_t *c);
+
+/* The drive a fraction f of a sample later, into xf: (1 - f) x[k] + f x[k - 1]
+ * (xf[0] = x[0]); xf may be x (done in place). */
+void fit_delay_fraction(const double *x, size_t n, double f, double *xf);
 
 /* A candidate's two options: the model alone, or with its creep term
  * (with_creep): the hold-out RMS (NaN: not scored) and the parameters (the

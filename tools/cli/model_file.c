@@ -136,7 +136,7 @@ static int model_count(const char *cmd, const char *path, unsigned long no, int 
     return 0;
 }
 
-/* A whole number in [least, most] (delay, degree). */
+/* A whole number in [least, most] (degree). */
 static int whole(double v, double least, double most)
 {
     return v >= least && v <= most && v == (double)(unsigned long)v;
@@ -151,8 +151,8 @@ static int model_value(const char *cmd, const char *path, unsigned long no, int 
     const char *what = "a finite number";
     int ok = cli_parse_double(field, &v);
     if (ok && k == K_DELAY) {
-        ok = whole(v, 0.0, 1e9);
-        what = "a whole number of samples";
+        ok = v >= 0.0 && v <= 1e9;
+        what = "a delay of 0 to 1e9 samples";
     } else if (ok && k == K_DEGREE) {
         ok = whole(v, 1.0, (double)HYST_EVERETT_MAX_DEGREE);
         what = "a degree in 1.." STR(HYST_EVERETT_MAX_DEGREE);
@@ -167,7 +167,10 @@ static int model_value(const char *cmd, const char *path, unsigned long no, int 
     switch (k) {
     case K_LO: m->lo = v; break;
     case K_HI: m->hi = v; break;
-    case K_DELAY: m->delay = (unsigned long)v; break;
+    case K_DELAY:
+        m->delay = (unsigned long)v;
+        m->delay_fraction = v - (double)m->delay; /* exact: v < 2^53 */
+        break;
     case K_Y_LO: m->y_lo = v; break;
     case K_DEGREE: m->degree = (unsigned)v; break;
     case K_TERMS: m->terms[i - 1u] = v; break;
@@ -348,18 +351,19 @@ size_t cli_model_text(const cli_model_t *m, char *buf, size_t size)
         over = cli_append(buf, size, &len,
                           MAGIC "\n# hyst model: asymmetric, E(a, b) = sum of e[i-1][j] w^i t^j, "
                                 "w = (a - b) / (hi - lo), t = (b - lo) / (hi - lo); terms i = "
-                                "1..degree, then j = 0..degree - i; the output %lu samples after "
+                                "1..degree, then j = 0..degree - i; the output %.17g samples after "
                                 "its input (docs/cli.md)\n"
-                                "kind everett\nlo %.17g\nhi %.17g\ny_lo %.17g\ndelay %lu\n"
+                                "kind everett\nlo %.17g\nhi %.17g\ny_lo %.17g\ndelay %.17g\n"
                                 "degree %u\nterms",
-                          m->delay, m->lo, m->hi, m->y_lo, m->delay, m->degree);
+                          cli_model_delay(m), m->lo, m->hi, m->y_lo, cli_model_delay(m),
+                          m->degree);
         over |= append_numbers(buf, size, &len, m->terms, m->nterms);
     } else {
         over = cli_append(buf, size, &len,
                           MAGIC "\n# hyst model: f0 on [lo, hi], coefficients highest power "
-                                "first, the output %lu samples after its input (docs/cli.md)\n"
-                                "kind poly\nlo %.17g\nhi %.17g\ndelay %lu\ncoeffs",
-                          m->delay, m->lo, m->hi, m->delay);
+                                "first, the output %.17g samples after its input (docs/cli.md)\n"
+                                "kind poly\nlo %.17g\nhi %.17g\ndelay %.17g\ncoeffs",
+                          cli_model_delay(m), m->lo, m->hi, cli_model_delay(m));
         over |= append_numbers(buf, size, &len, m->coeffs, m->ncoef);
     }
     if (m->has_identified) {
@@ -380,6 +384,8 @@ size_t cli_model_text(const cli_model_t *m, char *buf, size_t size)
     over |= cli_append(buf, size, &len, "\n");
     return over ? 0u : len;
 }
+
+double cli_model_delay(const cli_model_t *m) { return (double)m->delay + m->delay_fraction; }
 
 size_t cli_everett_terms(unsigned degree) { return (size_t)degree * (degree + 1u) / 2u; }
 
