@@ -7,7 +7,7 @@
 #  - a sub-sample delay: the same plant 20.5 samples late (a model file's
 #    fractional delay: sim runs the drive interpolated half a sample, checked
 #    here against sim of that drive at delay 20), driven by a sine: fit
-#    chooses 20.5 and writes it to the model file;
+#    chooses 20.5 and writes it to the model file, also with --degree;
 #  - inputs beyond the range fitted: an asymmetric plant driven by triangles
 #    of growing amplitude, whose last third goes past the first two thirds'
 #    peaks: fit counts the hold-out inputs outside the range fitted, the
@@ -62,6 +62,9 @@ awk 'BEGIN { for (k = 0; k <= 32000; k++) printf "%.9g\n", 20 - 20 * cos(2 * 3.1
 "$tool" fit --creep none --save mh.hyst rech.txt > fith.txt || fail "fit: $(cat fith.txt)"
 grep -q '^# delay 20.5 samples (sub-sample' fith.txt || fail "sub-sample delay: $(grep '^# delay' fith.txt)"
 grep -qx 'delay 20.5' mh.hyst || fail "model file: $(grep delay mh.hyst)"
+# with --degree too (no --delay): the delay chosen for that model
+"$tool" fit --degree 3 --creep none rech.txt > fitd.txt || fail "fit --degree: $(cat fitd.txt)"
+grep -q '^# delay 20.5 samples (sub-sample' fitd.txt || fail "--degree 3: $(grep '^# delay' fitd.txt)"
 
 # ---- the choice's report ----
 chosen=$(grep '(chosen)$' fit.txt | sed 's/^# candidate \(.*\) delay \([0-9]*\): hold-out rms \([^,]*\),.*/\1|\2|\3/')

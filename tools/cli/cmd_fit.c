@@ -41,7 +41,8 @@ static const char help[] =
     "                 it, the kind (unless --kind is given), the degree and the\n"
     "                 delay (unless --delay is given) are chosen by hold-out: each\n"
     "                 f0 of degree 1..9 and each E of degree 1..4 in each t-degree\n"
-    "                 0..N-1, at each delay 0..8, is fitted on the first two\n"
+    "                 0..N-1, at each delay (0..8, or up to 1/64 of the drive's\n"
+    "                 period, and a fraction of a sample), is fitted on the first two\n"
     "                 thirds of the record and the model predicts the last third;\n"
     "                 of the candidates within 1 % of the lowest RMS prediction\n"
     "                 error, the one with the fewest parameters wins (every\n"
@@ -51,7 +52,8 @@ static const char help[] =
     "                 terms); without, every K is a candidate. Major loops alone\n"
     "                 determine E of t-degree 1 at most\n"
     "  --skip S       drop the first S data lines (settling; default 0)\n"
-    "  --delay D      the output lags the input by D samples (default 0, or chosen)\n"
+    "  --delay D      the output lags the input by D samples (default: chosen by\n"
+    "                 the same hold-out, with --degree too)\n"
     "  --xcol I       input column, 1-based (default 1)\n"
     "  --ycol J       output column, 1-based (default 2)\n"
     "  --method M     estimator of f0: joint (default): both branches in one\n"
@@ -553,6 +555,73 @@ static void candidate_name(const fit_candidate_t *c, char *name, size_t size)
     }
 }
 
+/* The model of --degree alone (no creep term) fitted on the first two
+ * thirds at delay d of the drive x, its hold-out RMS (NaN: not scored). */
+static double given_holdout(const fit_opts_t *o, const double *x, const cli_table_t *t, size_t d)
+{
+    hyst_ident_config_t cfg = o->cfg;
+    hyst_status_t st;
+    cfg.delay = d;
+    if (o->final_kind == FIT_EVERETT) {
+        fit_everett_result_t train;
+        return fit_everett_holdout(&cfg, o->t_degree, x, t->col[1], t->n, &st, &train, NULL);
+    } else {
+        hyst_ident_result_t train;
+        return fit_tcm_holdout(&cfg, x, t->col[1], t->n, &st, &train, NULL);
+    }
+}
+
+/* --degree without --delay: the delay by the same hold-out, whole samples up
+ * to fit_max_delay() (every one: a single model), then a fraction of a sample
+ * at it and one below, kept when more than FIT_PARSIMONY better (the drive
+ * then interpolated in place). 0 (delay 0 when nothing could be scored), or
+ * 1 when out of memory. */
+static int choose_delay(fit_opts_t *o, cli_table_t *t)
+{
+    const size_t end = t->n > o->cfg.skip ? t->n - o->cfg.skip : 0u;
+    double lowest = NAN, f, best_f = 0.0, limit;
+    double *xf;
+    size_t d, best_d = 0u, k;
+    unsigned i;
+    o->max_delay = fit_max_delay(t->col[0], o->cfg.skip, t->n);
+    for (d = 0u; d <= o->max_delay && d + 3u < end; ++d) {
+        const double e = given_holdout(o, t->col[0], t, d);
+        if (isfinite(e) && !(lowest <= e)) {
+            lowest = e;
+            best_d = d;
+        }
+    }
+    o->integer_delay = best_d;
+    o->integer_holdout = lowest;
+    o->cfg.delay = best_d;
+    if (!isfinite(lowest)) {
+        o->cfg.delay = 0u;
+        return 0;
+    }
+    if ((xf = (double *)malloc(t->n * sizeof(double))) == NULL) {
+        return 1;
+    }
+    limit = lowest * (1.0 - FIT_PARSIMONY);
+    for (i = 1u; i < FIT_FRACTIONS; ++i) {
+        f = (double)i / (double)FIT_FRACTIONS;
+        fit_delay_fraction(t->col[0], t->n, f, xf);
+        for (k = 0u; k <= 1u && k <= best_d; ++k) { /* D + f and D - 1 + f */
+            const double e = given_holdout(o, xf, t, best_d - k);
+            if (isfinite(e) && e < limit) {
+                limit = e;
+                best_f = f;
+                o->cfg.delay = best_d - k;
+            }
+        }
+    }
+    if (best_f > 0.0) {
+        o->delay_fraction = best_f;
+        fit_delay_fraction(t->col[0], t->n, best_f, t->col[0]);
+    }
+    free(xf);
+    return 0;
+}
+
 static void print_candidates(const fit_opts_t *o)
 {
     char t_deg[32] = "";
@@ -1007,8 +1076,15 @@ int cmd_fit(int argc, char **argv)
             return 1;
         }
         pairs = t.n - o.cfg.skip - o.cfg.delay; /* at the chosen delay (fit_select() left samples) */
-    } else if (pairs > 0u && (o.creep_tau >= 0 || o.compare_pi != 0u)) {
-        choose_creep(&o, &t);
+    } else if (pairs > 0u) {
+        if (!o.have_delay && choose_delay(&o, &t) != 0) {
+            cli_table_free(&t);
+            return cli_fail("fit", "%s: out of memory", name);
+        }
+        pairs = t.n > o.cfg.skip + o.cfg.delay ? t.n - o.cfg.skip - o.cfg.delay : 0u;
+        if (pairs > 0u && (o.creep_tau >= 0 || o.compare_pi != 0u)) {
+            choose_creep(&o, &t);
+        }
     }
     rc = fit_final(&o, name, &t, pairs, &f);
     if (rc == 0 && o.with_creep && f.usable) {
@@ -1048,6 +1124,10 @@ int cmd_fit(int argc, char **argv)
                      (unsigned long)o.integer_delay, o.integer_holdout);
     } else {
         (void)printf("# delay %lu samples\n", (unsigned long)o.cfg.delay);
+    }
+    if (o.have_degree && !o.have_delay && isfinite(o.integer_holdout)) {
+        (void)printf("# delay chosen by hold-out among 0..%lu samples (without --delay)\n",
+                     (unsigned long)o.max_delay);
     }
     if (o.with_creep && f.model.ncreep > 0u) {
         (void)printf("# creep: tau %.6g samples, weight %.9g (hold-out rms %.6g; without it "
