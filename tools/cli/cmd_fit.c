@@ -344,7 +344,7 @@ static void rank_others(fit_opts_t *o, const cli_table_t *t);
 /* The sub-sample delay: the chosen model (kind, degree, domain, creep
  * option) scored again with the drive a fraction of a sample later, at the
  * chosen delay and one below; the best, if it lowers the hold-out error by
- * more than FIT_PARSIMONY, replaces the choice (o->delay_fraction, the
+ * more than FIT_FRACTION_GAIN, replaces the choice (o->delay_fraction, the
  * candidate's delay) and the table's drive is interpolated in place, as the
  * model file's delay makes sim do. 0, or 1 when out of memory. */
 static int choose_fraction(fit_opts_t *o, cli_table_t *t)
@@ -352,7 +352,7 @@ static int choose_fraction(fit_opts_t *o, cli_table_t *t)
     static fit_candidate_t tried[2u * (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES)];
     const fit_candidate_t *b = &candidates[best_candidate];
     const double whole_rms = fit_option_rms(b, o->with_creep);
-    double lowest = whole_rms * (1.0 - FIT_PARSIMONY), f, best_f = 0.0;
+    double lowest = whole_rms * (1.0 - FIT_FRACTION_GAIN), f, best_f = 0.0;
     double *xf = (double *)malloc((t->n > 0u ? t->n : 1u) * sizeof(double));
     hyst_ident_config_t base = o->cfg;
     fit_candidate_t keep;
@@ -573,7 +573,7 @@ static double given_holdout(const fit_opts_t *o, const double *x, const cli_tabl
 
 /* --degree without --delay: the delay by the same hold-out, whole samples up
  * to fit_max_delay() (every one: a single model), then a fraction of a sample
- * at it and one below, kept when more than FIT_PARSIMONY better (the drive
+ * at it and one below, kept when more than FIT_FRACTION_GAIN better (the drive
  * then interpolated in place). 0 (delay 0 when nothing could be scored), or
  * 1 when out of memory. */
 static int choose_delay(fit_opts_t *o, cli_table_t *t)
@@ -601,7 +601,7 @@ static int choose_delay(fit_opts_t *o, cli_table_t *t)
     if ((xf = (double *)malloc(t->n * sizeof(double))) == NULL) {
         return 1;
     }
-    limit = lowest * (1.0 - FIT_PARSIMONY);
+    limit = lowest * (1.0 - FIT_FRACTION_GAIN);
     for (i = 1u; i < FIT_FRACTIONS; ++i) {
         f = (double)i / (double)FIT_FRACTIONS;
         fit_delay_fraction(t->col[0], t->n, f, xf);

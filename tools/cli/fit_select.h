@@ -20,6 +20,11 @@
  * chosen delay and one below: 1/FIT_FRACTIONS steps. */
 #define FIT_FRACTIONS 4u
 
+/* A sub-sample delay is kept when it lowers the hold-out error by more than
+ * this fraction: it adds many options to the comparison (each candidate at
+ * each fraction), whose best is biased low by the hold-out's noise. */
+#define FIT_FRACTION_GAIN 0.05
+
 /* Delays around the cheap search's best at which every candidate is fitted. */
 #define FIT_DELAY_AROUND 4u
 
