@@ -288,6 +288,9 @@ class Fit:
 #: choice: the same as ``hyst fit`` without --degree (docs/cli.md).
 MAX_DELAY = 8
 PARSIMONY = 0.01
+# Parameters a creep term adds: its weight and its time constant (hyst fit's
+# FIT_CREEP_PARAMETERS).
+CREEP_PARAMS = 2
 
 
 #: The kinds fit() knows.
@@ -399,7 +402,7 @@ def _choose(cands, creep_tau=-1.0):
     """(index, with_creep) of the option hyst fit's rule picks ((None,
     False) if none was scored) among every candidate alone (unless a time
     constant is given: creep_tau > 0) and with its creep term (unless
-    creep_tau < 0; one parameter more): the fewest parameters within
+    creep_tau < 0; CREEP_PARAMS more): the fewest parameters within
     PARSIMONY of the lowest hold-out error; between as many, the symmetric
     kind (its compensator is a table), then the lower error."""
     ways = range(1 if creep_tau > 0 else 0, 1 if creep_tau < 0 else 2)
@@ -409,7 +412,8 @@ def _choose(cands, creep_tau=-1.0):
         return None, False
     limit = min(_option_rms(cands[i], wc) for i, wc in options) * (1 + PARSIMONY)
     i, wc = min((o for o in options if _option_rms(cands[o[0]], o[1]) <= limit),
-                key=lambda o: (cands[o[0]]["params"] + o[1], cands[o[0]]["kind"] != "poly",
+                key=lambda o: (cands[o[0]]["params"] + CREEP_PARAMS * o[1],
+                               cands[o[0]]["kind"] != "poly",
                                _option_rms(cands[o[0]], o[1]), o[0], o[1]))
     return i, bool(wc)
 
