@@ -219,9 +219,11 @@ static int model_complete(const char *cmd, const char *path, const unsigned long
     }
     if (line[K_IDENTIFIED] != 0ul && !(m->lo <= m->id_lo && m->id_lo < m->id_hi &&
                                        m->id_hi <= m->hi)) {
-        return cli_fail(cmd, "%s:%lu: identified %.17g %.17g is not a range within [lo, hi] "
-                             "= [%.17g, %.17g]",
-                        path, line[K_IDENTIFIED], m->id_lo, m->id_hi, m->lo, m->hi);
+        /* the field at fault: LO (below lo, or not below HI), else HI */
+        const int field = m->id_lo < m->lo || !(m->id_lo < m->id_hi) ? 2 : 3;
+        return cli_fail(cmd, "%s:%lu: field %d: identified %.17g %.17g is not a range within "
+                             "[lo, hi] = [%.17g, %.17g]",
+                        path, line[K_IDENTIFIED], field, m->id_lo, m->id_hi, m->lo, m->hi);
     }
     if (m->ncreep != m->ncreep_weights) {
         const int short_w = m->ncreep_weights < m->ncreep; /* else one too many */
