@@ -1011,8 +1011,13 @@ function t_header_arguments(~)
   expect_error('hyst:usage', @() hyst_header(struct('coeffs', 1:11, 'lo', 0, 'hi', 1), 'm'));
   expect_error('hyst:usage', @() hyst_header(struct('coeffs', [1 NaN], 'lo', 0, 'hi', 1), 'm'));
   bad = m;
-  bad.delay = 1.5;
+  bad.delay = -1.5;
   expect_error('hyst:usage', @() hyst_header(bad, 'm'));
+  % a sub-sample delay is a model file's (delay 1.5): the header states it
+  late = m;
+  late.delay = 1.5;
+  check(~isempty(strfind(hyst_header(late, 'm'), sprintf('\n * 1.5 samples later'))), ...
+        'delay 1.5 in the header');
   bad = e;
   bad.terms = [0.61 0.02 -1];
   bad.degree = 2;
