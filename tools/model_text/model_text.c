@@ -268,7 +268,8 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
         break;
     case K_DELAY:
         m->delay = (unsigned long)v;
-        m->delay_fraction = v - (double)m->delay; /* exact: v < 2^53 */
+        /* exact: v < 2^53; 0, not -0, for "-0" (the file written back says 0) */
+        m->delay_fraction = v > (double)m->delay ? v - (double)m->delay : 0.0;
         break;
     case K_Y_LO: m->y_lo = v; break;
     case K_DEGREE: m->degree = (unsigned)v; break;
