@@ -198,6 +198,11 @@ static void check_round_trip(const cli_model_t *m)
     CHECK(len > 0u);
     CHECK(parse((const unsigned char *)text, len, &back) == 0);
     CHECK(back.kind == m->kind && back.ncoef == m->ncoef && back.delay == m->delay);
+    CHECK(m->delay_fraction >= 0.0 && m->delay_fraction < 1.0);
+    CHECK(same_bits(&back.delay_fraction, &m->delay_fraction, 1u));
+    CHECK(back.has_identified == m->has_identified);
+    CHECK(!m->has_identified || (m->lo <= m->id_lo && m->id_lo < m->id_hi && m->id_hi <= m->hi));
+    CHECK(same_bits(&back.id_lo, &m->id_lo, 1u) && same_bits(&back.id_hi, &m->id_hi, 1u));
     CHECK(back.degree == m->degree && back.nterms == m->nterms);
     CHECK(same_bits(&back.lo, &m->lo, 1u) && same_bits(&back.hi, &m->hi, 1u));
     CHECK(same_bits(&back.y_lo, &m->y_lo, 1u));

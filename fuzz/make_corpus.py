@@ -284,6 +284,12 @@ model_files.update({
     "bad_kind_missing": valid.replace(b"kind poly\n", b""),
     "bad_kind_extra": valid.replace(b"kind poly", b"kind poly pwl"),
     "bad_binary": bytes(range(256)),
+    # a fraction of a sample of delay, and the range the model was identified on
+    "valid_delay_fraction": valid.replace(b"delay 3", b"delay 3.75"),
+    "valid_identified": valid + b"identified 2.5 38\n",
+    "bad_identified_outside": valid + b"identified -1 38\n",
+    "bad_identified_reversed": valid + b"identified 38 2.5\n",
+    "bad_identified_one_value": valid + b"identified 2.5\n",
 })
 # the crafted files every front end's reader is held to (tests/model_files:
 # line ends, blanks, number spellings, limits, an empty domain)

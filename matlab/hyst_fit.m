@@ -13,6 +13,9 @@ function f = hyst_fit(x, y, varargin)
 %     degree, method
 %     delay       the 'delay' it was fitted at (samples), which
 %                 HYST_MODEL_SAVE writes to the model file
+%     identified  (kind everett, its domain wider than the inputs: a
+%                 widened candidate chosen, or 'domain') [LO HI], the
+%                 inputs' range it was identified on, saved with it
 %
 %   F = HYST_FIT(X, Y, 'kind', 'everett') fits the asymmetric kind's branch
 %   function E of total degree 'degree' (1..4) by hyst_everett_fit_*: the
@@ -100,7 +103,7 @@ function f = hyst_fit(x, y, varargin)
   y = double(y(:));
   cands = [];
   if isempty(opts.degree)
-    [opts, cands, creep_tau] = choose(opts, kinds, method, domain, x, y, creep_tau);
+    [opts, cands, creep_tau, domain] = choose(opts, kinds, method, domain, x, y, creep_tau);
   elseif isempty(opts.delay)
     error('hyst:usage', 'hyst_fit: ''delay'', [] (chosen) needs ''degree'', [] (chosen)');
   end
@@ -115,6 +118,12 @@ function f = hyst_fit(x, y, varargin)
   % the delay the model was fitted at: HYST_MODEL_SAVE writes it,
   % HYST_HEADER states it
   f.delay = double(opts.delay);
+  % a domain wider than the inputs: the range E was identified on, which
+  % HYST_MODEL_SAVE records (as 'hyst fit --save' does)
+  used = x(double(opts.skip) + 1:max(numel(x) - f.delay, double(opts.skip)));
+  if strcmp(opts.kind, 'everett') && ~isempty(used) && (f.lo < min(used) || max(used) < f.hi)
+    f.identified = [max(min(used), f.lo), min(max(used), f.hi)];
+  end
   if strcmp(opts.kind, 'poly') && ~f.increasing
     warning('hyst:not_increasing', ...
             'hyst_fit: the fitted f0 is not increasing on [%g, %g] (slope negative at %g): try another degree', ...
@@ -168,7 +177,7 @@ function f = hyst_fit(x, y, varargin)
                    'holdout_rms_without', without);
 end
 
-function [opts, cands, creep_tau] = choose(opts, kinds, method, domain, x, y, creep_tau)
+function [opts, cands, creep_tau, domain] = choose(opts, kinds, method, domain, x, y, creep_tau)
 % The kind, degree, t-degree and delay (and whether with a creep term)
 % chosen by hold-out with the hyst tool's own code (the gateway's select:
 % fit_select() of tools/cli/fit_select.c), as 'hyst fit' without --degree
@@ -197,6 +206,13 @@ function [opts, cands, creep_tau] = choose(opts, kinds, method, domain, x, y, cr
   opts.degree = c.degree;
   opts.delay = c.delay;
   opts.tdegree = c.t_degree;
+  if c.widened
+    % the domain the tool fits it on: the inputs' range widened by as much
+    % on each side (FIT_WIDEN), E continued beyond the inputs
+    used = x(double(opts.skip) + 1:numel(x) - c.delay);
+    span = max(used) - min(used);
+    domain = [min(used) - span, max(used) + span];
+  end
   % the creep term chosen with it, or none: fitted below as 'creep', TAU does
   creep_tau = -1;
   if with_creep

@@ -889,7 +889,8 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
 {
     static const char *fields[] = {"kind",        "degree",  "t_degree", "delay",
                                    "params",      "holdout_rms", "fit_rms", "status",
-                                   "creep_tau",   "creep_weight", "creep_holdout_rms"};
+                                   "creep_tau",   "creep_weight", "creep_holdout_rms",
+                                   "widened"};
     hyst_ident_config_t base;
     fit_candidate_t *cand;
     size_t n, scored, best = 0u, i, max_delay, most;
@@ -943,6 +944,7 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
                    mxCreateDoubleScalar(c->creep.tau > 0 ? c->creep.weight : NAN));
         mxSetField(s, (mwIndex)i, "creep_holdout_rms",
                    mxCreateDoubleScalar(c->creep.tau > 0 ? c->creep.holdout_rms : NAN));
+        mxSetField(s, (mwIndex)i, "widened", mxCreateLogicalScalar(c->widened != 0));
     }
     mxFree(cand);
     plhs[0] = s;
@@ -973,9 +975,11 @@ static void numbers_arg(const mxArray *v, const char *name, double *a, size_t ca
 }
 
 /* A model from prhs = kind, lo, hi, delay, coeffs, degree, y_lo, terms,
- * ctau, cweight (the parts of hyst_model_parts.m), checked as the reader
- * checks a file: hyst:usage with its reason otherwise. */
-static void model_text_arg(model_text_t *m, const mxArray *const prhs[10], const char *caller)
+ * ctau, cweight (the parts of hyst_model_parts.m) and identified ([LO HI],
+ * [] or NULL: none), checked as the reader checks a file: hyst:usage with
+ * its reason otherwise. */
+static void model_text_arg(model_text_t *m, const mxArray *const prhs[10],
+                           const mxArray *identified, const char *caller)
 {
     char kind[8], msg[MODEL_TEXT_MSG_SIZE];
     double v;
@@ -987,7 +991,12 @@ static void model_text_arg(model_text_t *m, const mxArray *const prhs[10], const
     m->kind = strcmp(kind, "everett") == 0 ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
     m->lo = scalar(prhs[1], "lo");
     m->hi = scalar(prhs[2], "hi");
-    m->delay = (unsigned long)count(prhs[3], "delay", 0.0, (double)MODEL_TEXT_MAX_DELAY);
+    v = scalar(prhs[3], "delay");
+    if (!(v >= 0.0 && v <= (double)MODEL_TEXT_MAX_DELAY)) {
+        usage("delay must be a delay of 0 to 1000000000 samples");
+    }
+    m->delay = (unsigned long)v;
+    m->delay_fraction = v - floor(v); /* a sub-sample delay: 3.5 */
     if (m->kind == MODEL_TEXT_EVERETT) {
         v = scalar(prhs[5], "degree");
         m->degree = v >= 1.0 && v <= HYST_EVERETT_MAX_DEGREE && v == floor(v) ? (unsigned)v : 0u;
@@ -999,6 +1008,15 @@ static void model_text_arg(model_text_t *m, const mxArray *const prhs[10], const
     numbers_arg(prhs[8], "creep_tau", m->creep_tau, MODEL_TEXT_CREEP_MAX_TERMS, &m->ncreep);
     numbers_arg(prhs[9], "creep_weight", m->creep_weight, MODEL_TEXT_CREEP_MAX_TERMS,
                 &m->ncreep_weights);
+    if (identified != NULL && !mxIsEmpty(identified)) {
+        if (!mxIsDouble(identified) || mxIsComplex(identified) ||
+            mxGetNumberOfElements(identified) != 2u) {
+            usage("identified must be [LO HI] or []");
+        }
+        m->has_identified = 1;
+        m->id_lo = mxGetPr(identified)[0];
+        m->id_hi = mxGetPr(identified)[1];
+    }
     if (model_text_check(m, msg, sizeof msg) != 0) {
         mexErrMsgIdAndTxt("hyst:usage", "%s: %s", caller, msg);
     }
@@ -1054,7 +1072,12 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     }
     set_field(s, "lo", mxCreateDoubleScalar(m.lo));
     set_field(s, "hi", mxCreateDoubleScalar(m.hi));
-    set_field(s, "delay", mxCreateDoubleScalar((double)m.delay));
+    set_field(s, "delay", mxCreateDoubleScalar(model_text_delay(&m)));
+    if (m.has_identified) {
+        const double range[2] = {m.id_lo, m.id_hi};
+        (void)mxAddField(s, "identified");
+        set_field(s, "identified", row_of(range, 2u));
+    }
     if (m.ncreep > 0u) {
         (void)mxAddField(s, "creep_tau");
         (void)mxAddField(s, "creep_weight");
@@ -1076,16 +1099,18 @@ static void run_model_text(const char *cmd, mxArray *plhs[], int nrhs, const mxA
     const size_t size = 32768u;
     size_t len = 0u;
     int over;
-    if (nrhs != (close ? 1 : header ? 11 : 10)) {
+    if (close ? nrhs != 1 : header ? nrhs != 11 : nrhs != 10 && nrhs != 11) {
         usage("model_write takes kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau, "
-              "creep_weight; header_open NAME and the same; header_close NAME");
+              "creep_weight[, identified]; header_open NAME and the same but identified; "
+              "header_close NAME");
     }
     if (header && (!mxIsChar(prhs[0]) || mxGetString(prhs[0], name, sizeof name) != 0 ||
                    !model_text_identifier(name))) {
         usage("NAME must be a C identifier");
     }
     if (!close) {
-        model_text_arg(&m, prhs + (header ? 1 : 0), header ? "hyst_header" : "hyst_model_save");
+        model_text_arg(&m, prhs + (header ? 1 : 0), !header && nrhs == 11 ? prhs[10] : NULL,
+                       header ? "hyst_header" : "hyst_model_save");
     }
     buf = (char *)mxMalloc(size);
     if (close) {

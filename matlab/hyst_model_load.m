@@ -15,7 +15,11 @@ function model = hyst_model_load(file)
 %   creep_tau (1 to 4 time constants, samples, each at least 1) and
 %   creep_weight (as many weights), both or neither: then MODEL also has the
 %   fields creep_tau and creep_weight (rows), which HYST_SIM, HYST_INV,
-%   HYST_MODEL_SAVE and HYST_HEADER take (docs/matlab.md, "Creep").
+%   HYST_MODEL_SAVE and HYST_HEADER take (docs/matlab.md, "Creep"). The
+%   delay may hold a fraction of a sample (3.5); a file with the key
+%   identified LO HI (the inputs' range the model was identified on, within
+%   [lo, hi]) gives MODEL the field identified, [LO HI], which
+%   HYST_MODEL_SAVE writes back.
 %   Lines end at LF, CR LF or CR; numbers are decimal ('.' the decimal
 %   mark); lo < hi. Anything else (another format or version, an unknown
 %   or repeated key, a key of the other kind, a number that is not finite,

@@ -33,10 +33,10 @@ function hyst_model_save(file, model)
   % one 'hyst fit --save' and the Python package write
   if strcmp(p.kind, 'everett')
     text = hyst_mex('model_write', 'everett', p.lo, p.hi, p.delay, [], p.degree, p.y_lo, ...
-                    p.terms, p.creep_tau, p.creep_weight);
+                    p.terms, p.creep_tau, p.creep_weight, p.identified);
   else
     text = hyst_mex('model_write', 'poly', p.lo, p.hi, p.delay, p.coeffs, 0, 0, [], ...
-                    p.creep_tau, p.creep_weight);
+                    p.creep_tau, p.creep_weight, p.identified);
   end
   hyst_write_whole(file, text, 'hyst_model_save');
 end

@@ -251,8 +251,8 @@ def measured_choice(fit_path, data_path, md, out, model_output=None):
                     d = int(m.group(3))
                     base = ("poly", d, None, int(m.group(4)), d + 1)
                 cands.append(base + (float(m.group(5)), None))
-                if m.group(6):  # the creep option: its weight one parameter more
-                    cands.append(base[:4] + (base[4] + 1, float(m.group(7)), float(m.group(6))))
+                if m.group(6):  # the creep option: its weight and time constant, two more
+                    cands.append(base[:4] + (base[4] + 2, float(m.group(7)), float(m.group(6))))
             m = CHOSEN.match(line)
             if m:
                 chosen = m
@@ -275,7 +275,7 @@ def measured_choice(fit_path, data_path, md, out, model_output=None):
               "--compare-pi 10 tests/data/piezo_major_loop.dat` (its printout in `measured_fit.txt`). Every "
               "candidate (symmetric TCM of degree 1-9, E of degree 1-4 with each t-degree, delays 0-8), alone "
               "and with a creep term (one lag of the input, its time constant chosen from 100-20000 samples, "
-              "docs/creep.md: one parameter more, its weight), is fitted on the first two thirds and scores "
+              "docs/creep.md: two parameters more, its weight and time constant), is fitted on the first two thirds and scores "
               "its RMS prediction error on the last third; the fewest parameters within 1 % of the best win. "
               "Best candidate per parameter count:\n")
     md.append("| parameters | model | delay | hold-out RMS |\n|---|---|---|---|")
@@ -659,6 +659,7 @@ def main():
                     help="headline figures printed: all, the per-sample cost's only, none")
     ap.add_argument("--measured-model-output",
                     help="hyst sim --model's outputs of the chosen model over the measured record")
+    ap.add_argument("--fidelity", help="bench/fidelity's section (other people's actuators)")
     args = ap.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
     meta, secs = parse(args.firmware_output)
@@ -676,6 +677,9 @@ def main():
     if args.measured_fit and args.measured_data:
         measured_choice(args.measured_fit, args.measured_data, md, args.out_dir,
                         args.measured_model_output)
+    if args.fidelity and os.path.exists(args.fidelity):
+        with open(args.fidelity, encoding="utf-8") as fh:
+            md.append(fh.read())
     if args.timing:
         timing(args.timing, md, args.out_dir)
     else:

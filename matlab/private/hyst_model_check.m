@@ -21,8 +21,8 @@ function hyst_model_check(p, caller)
   if isempty(numbers) || ~isscalar(p.lo) || ~isscalar(p.hi) || ~all(isfinite([numbers p.lo p.hi]))
     error('hyst:usage', '%s: the model''s numbers must be finite, lo and hi scalars', caller);
   end
-  if ~hyst_is_whole(p.delay) || p.delay < 0
-    error('hyst:usage', '%s: delay must be a whole number of samples', caller);
+  if ~isscalar(p.delay) || ~isreal(p.delay) || ~(p.delay >= 0 && p.delay <= 1e9)
+    error('hyst:usage', '%s: delay must be a delay of 0 to 1e9 samples (3.5: a sub-sample delay)', caller);
   end
   n = numel(p.creep_tau);
   if n ~= numel(p.creep_weight) || n > 4 || ~all(isfinite([p.creep_tau p.creep_weight])) || ...

@@ -29,6 +29,12 @@ function p = hyst_model_parts(model, caller)
   if isfield(model, 'delay')
     p.delay = double(model.delay);
   end
+  % the range the model was identified on, [LO HI] (a model file's key
+  % identified), or [] when not recorded
+  p.identified = [];
+  if isfield(model, 'identified')
+    p.identified = double(model.identified(:)');
+  end
   p.creep_tau = [];
   p.creep_weight = [];
   if isfield(model, 'creep_tau') ~= isfield(model, 'creep_weight')

@@ -350,12 +350,20 @@ function t_load_rejects(ctx)
     {'hyst-model-text 1', 'kind pwl', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':2: field 2: kind must be ''poly'' or ''everett'''
     {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi Inf', 'coeffs 1 2'}, ':4: field 2: ''Inf'' is not a finite number'
     {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 x'}, ':5: field 3: ''x'' is not a finite number'
-    [good {'delay 2.5'}], ':6: field 2: ''2.5'' is not a whole number of samples'
+    [good {'delay -2.5'}], ':6: field 2: ''-2.5'' is not a delay of 0 to 1000000000 samples'
+    [good {'identified 10 50'}], ':6: field 3: identified 10 50 is not a range within [lo, hi]'
     {'hyst-model-text 1', 'kind poly', 'lo 1,5', 'hi 40', 'coeffs 1 2'}, ':3: field 2: ''1,5'' is not a finite number (the decimal mark is ''.'')'
   };
   write_lines(file, [good {'', '# a comment'}]);
   m = hyst_model_load(file);
   check(isequal(m.coeffs, [1 2]) && m.lo == 0 && m.hi == 40, 'the good file');
+  % a sub-sample delay and the identified range, read and written back
+  write_lines(file, [good {'delay 2.5', 'identified 5 30'}]);
+  m = hyst_model_load(file);
+  check(m.delay == 2.5 && isequal(m.identified, [5 30]), 'delay 2.5, identified 5 30 read');
+  hyst_model_save(file, m);
+  back = hyst_model_load(file);
+  check(back.delay == 2.5 && isequal(back.identified, [5 30]), 'delay and identified written back');
   expect_load_errors(file, bad);
   expect_error('hyst:model_file', @() hyst_model_load(fullfile(ctx.tmp, 'nosuchfile')));
 end
@@ -1003,8 +1011,13 @@ function t_header_arguments(~)
   expect_error('hyst:usage', @() hyst_header(struct('coeffs', 1:11, 'lo', 0, 'hi', 1), 'm'));
   expect_error('hyst:usage', @() hyst_header(struct('coeffs', [1 NaN], 'lo', 0, 'hi', 1), 'm'));
   bad = m;
-  bad.delay = 1.5;
+  bad.delay = -1.5;
   expect_error('hyst:usage', @() hyst_header(bad, 'm'));
+  % a sub-sample delay is a model file's (delay 1.5): the header states it
+  late = m;
+  late.delay = 1.5;
+  check(~isempty(strfind(hyst_header(late, 'm'), sprintf('\n * 1.5 samples later'))), ...
+        'delay 1.5 in the header');
   bad = e;
   bad.terms = [0.61 0.02 -1];
   bad.degree = 2;
@@ -1332,7 +1345,7 @@ function t_readers_agree(ctx)
     end
     m = hyst_model_load(file);
     cli = fileread(fullfile(out, 'm.h'));
-    delay = str2double(regexp(cli, 'follows its input\s+\*?\s*(\d+) samples later', 'tokens', 'once'));
+    delay = str2double(regexp(cli, 'follows its input\s+\*?\s*([0-9.e+]+) samples later', 'tokens', 'once'));
     check(m.delay == delay, '%s: delay %g, hyst header %g', name, m.delay, delay);
     mine = hyst_header(m, 'm');
     check(strcmp(mine(strfind(mine, '#ifndef'):end), cli(strfind(cli, '#ifndef'):end)), ...

@@ -48,6 +48,7 @@ from ._api import (
     compensator_from,
     fit,
     model_from,
+    outside_identified,
 )
 from ._model_file import ModelFileError, header_text, load_model, save_model
 from ._plot import plot
@@ -59,6 +60,6 @@ __all__ = [
     "Creep", "CreepF32", "CreepF64", "Fit",
     "HystError", "Model", "ModelFromEverett", "ModelFromPoints", "ModelF32", "ModelF64", "PI",
     "PIF32", "PIF64", "Status", "Tcm", "__version__", "compensator_from", "fit", "model_from",
-    "plot", "status_str",
+    "outside_identified", "plot", "status_str",
     "ModelFileError", "header_text", "load_model", "save_model",
 ]

@@ -36,7 +36,10 @@ def _plot(argv):
     rows = np.loadtxt(a.data, comments="#", delimiter=None, ndmin=2,
                       converters=None, usecols=(a.xcol - 1, a.ycol - 1))
     x, y = rows[a.skip:, 0], rows[a.skip:, 1]
-    d = m["delay"]
+    d = int(m["delay"])
+    f = m["delay"] - d  # a sub-sample delay: the model's input interpolated
+    if f > 0:
+        x = np.concatenate([x[:1], (1 - f) * x[1:] + f * x[:-1]])
     n = len(x) - d
     if n < 2:
         sys.exit(f"python -m hyst plot: {a.data}: fewer than 2 samples after --skip and the delay")

@@ -189,6 +189,19 @@ def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inter
                        intervals=intervals, **_creep_of(desc))
 
 
+def outside_identified(desc, x):
+    """How many of the inputs x lie outside the range the model was
+    identified on (``identified`` of a :func:`hyst.load_model` dict or of
+    ``Fit.description()``; 0 when none is recorded): the samples ``hyst sim
+    --model`` counts, predicted by the branches continued beyond it (and
+    clamped beyond the domain)."""
+    ident = desc.get("identified")
+    if ident is None:
+        return 0
+    x = np.asarray(x, dtype=np.float64)
+    return int(np.count_nonzero((x < ident[0]) | (x > ident[1])))
+
+
 def PI(thresholds, weights, *, dtype=np.float64):
     """A Prandtl-Ishlinskii model; ``.inverse()`` gives its inverse."""
     return _variant(dtype, _hyst.PIF32, _hyst.PIF64)(
@@ -206,7 +219,9 @@ class Fit:
     of the least-squares residuals, ``used``, ``t_degree``: the highest power
     of t fitted, the terms above it 0). Both have ``degree``, ``lo``,
     ``hi``, ``delay``, ``candidates`` and ``model``, the model at A0 (poly:
-    ``t_degree`` None). Model
+    ``t_degree`` None), and ``identified``: None, or (LO, HI), the range of
+    the inputs E was identified on when its domain is wider (a widened
+    candidate chosen, or ``domain``), counted by :meth:`outside_identified`. Model
     calls (``process``, ``step``, ``reset``...) go to ``model``, so a Fit is
     used as the model itself.
 
@@ -228,6 +243,7 @@ class Fit:
         if self.kind == "poly":
             self.method = {v: k for k, v in _METHODS.items()}[result["method"]]
         self.delay = int(delay)
+        self.identified = result.get("identified")
         self.candidates = candidates or []
         self.creep = creep
         self.creep_tau = [creep["tau"]] if creep else []
@@ -245,7 +261,15 @@ class Fit:
             d = {"kind": "poly", "coeffs": list(self.coeffs), "lo": self.lo, "hi": self.hi}
         if self.creep_tau:
             d.update(creep_tau=list(self.creep_tau), creep_weight=list(self.creep_weight))
+        if self.identified is not None:
+            d["identified"] = tuple(self.identified)
         return d
+
+    def outside_identified(self, x):
+        """How many of the inputs x lie outside ``identified``, the range the
+        model was identified on (0 when its domain is that range):
+        :func:`outside_identified`."""
+        return outside_identified(self.description(), x)
 
     def save(self, path):
         """Writes the model file (hyst-model-text 1, delay included) that
@@ -306,6 +330,9 @@ class Fit:
 #: choice: the same as ``hyst fit`` without --degree (docs/cli.md).
 MAX_DELAY = _hyst.FIT_MAX_DELAY
 PARSIMONY = _hyst.FIT_PARSIMONY
+#: Parameters a creep term adds in the choice: its weight and its time
+#: constant (hyst fit's FIT_CREEP_PARAMETERS).
+CREEP_PARAMS = _hyst.FIT_CREEP_PARAMETERS
 
 
 #: The kinds fit() knows.
@@ -513,6 +540,12 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
         chosen = cands[best]
         kind, degree, delay = chosen["kind"], chosen["degree"], chosen["delay"]
         t_degree = chosen["t_degree"]
+        if chosen.get("widened"):
+            # the domain the tool fits it on: the inputs' range widened by
+            # FIT_WIDEN of it on each side, E continued beyond the inputs
+            used = x[skip:len(x) - int(delay)]
+            a, b = float(used.min()), float(used.max())
+            lo, hi = a - _hyst.FIT_WIDEN * (b - a), b + _hyst.FIT_WIDEN * (b - a)
         for i, c in enumerate(cands):
             c["chosen"] = i == best
             c["with_creep"] = i == best and with_creep
@@ -529,6 +562,13 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
                        chosen["creep_holdout_rms"] * (1 + PARSIMONY)))
     res = _fit_one(x, y, kind or "poly", int(degree), method, lo, hi, skip, int(delay),
                    t_degree)
+    if res.get("kind") == "everett" and len(x) > skip + int(delay):
+        # a domain wider than the inputs: the range E was identified on is
+        # recorded, as hyst fit --save records it
+        used = x[skip:len(x) - int(delay)]
+        a, b = float(used.min()), float(used.max())
+        if res["lo"] < a or b < res["hi"]:
+            res["identified"] = (max(a, res["lo"]), min(b, res["hi"]))
     creep_info = None
     if with_creep and _refusal(res) is None:
         c = _final_creep(res, x, y, kind or "poly", skip, int(delay), chosen["creep_tau"])

@@ -47,7 +47,7 @@ def _creep_args(creep_tau, creep_weight):
 
 
 def _model_call(what, kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
-                creep_weight, *before):
+                creep_weight, *before, identified=None):
     """The extension's model_write or model_header (tools/model_text), the
     model given by its parts (checked there as the reader checks a file)."""
     from . import _hyst
@@ -56,12 +56,18 @@ def _model_call(what, kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_ta
         args.append(float(delay))
     args += [list(coeffs or []), float(degree or 0), float(y_lo or 0.0), list(terms or []),
              list(creep_tau or []), list(creep_weight or [])]
+    if what == "model_write":
+        args.append([float(v) for v in identified] if identified is not None else [])
     return getattr(_hyst, what)(*before, *args)
 
 
 def load_model(path):
     """Reads a model file. Returns a dict: ``kind`` ("poly" or "everett"),
-    ``lo``, ``hi``, ``delay`` (samples, 0 when absent) and, for poly,
+    ``lo``, ``hi``, ``delay`` (samples, 0 when absent; an int, or a float
+    with a sub-sample delay such as 3.5: the model's input is then
+    (1 - f) x[k] + f x[k - 1]), ``identified`` (only when the file records
+    it: (LO, HI), the range of the inputs the model was identified on, its
+    branches continued beyond it up to [lo, hi]) and, for poly,
     ``coeffs`` (highest power first); for everett ``y_lo``, ``degree`` and
     ``terms`` (e[i-1][j] of w^i t^j, i = 1..degree, then j = 0..degree-i);
     with a creep term also ``creep_tau`` (time constants, samples) and
@@ -107,13 +113,15 @@ def _poly_args(coeffs, kind, degree, y_lo, terms):
 
 
 def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", degree=None,
-               y_lo=None, terms=None, creep_tau=None, creep_weight=None):
+               y_lo=None, terms=None, creep_tau=None, creep_weight=None, identified=None):
     """Writes a model file (17 significant digits: the same doubles read
     back), replacing ``path`` whole or not at all. ``kind="everett"`` writes
     the asymmetric kind from ``degree``, ``y_lo`` and ``terms`` (no
     ``coeffs``). ``creep_tau`` and ``creep_weight`` (both or neither, 1 to 4
     numbers each, time constants >= 1 sample) add a creep term, written after
-    the model as ``hyst fit --save`` writes it.
+    the model as ``hyst fit --save`` writes it. ``delay`` may hold a
+    fraction of a sample (3.5); ``identified=(LO, HI)`` records the range
+    the model was identified on (within [lo, hi]).
     ``save_model(path, **load_model(other))`` copies a file."""
     creep_tau, creep_weight = _creep_args(creep_tau, creep_weight)
     if lo is None or hi is None:
@@ -125,7 +133,7 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
     text = _model_call("model_write", kind, lo, hi, delay, coeffs, degree, y_lo, terms,
-                       creep_tau, creep_weight)
+                       creep_tau, creep_weight, identified=identified)
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=os.path.basename(path) + ".")
     try:
@@ -211,13 +219,14 @@ def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals
 
 def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,
                 terms=None, delay=0, compensator=False, intervals=None, rows=None,
-                creep_tau=None, creep_weight=None):
+                creep_tau=None, creep_weight=None, identified=None):
     """C header declaring the firmware's model as ``hyst fit --header``
     writes it: ``static const hyst_poly_t name`` (f0), or for
     ``kind="everett"`` ``static const hyst_everett_t name`` (degree, lo, hi,
     y_lo, e[i-1][j]); 17-digit literals in HYST_REAL_C(), exact in a double
-    build (HYST_USE_DOUBLE). ``delay`` is not part of a header; it is
-    accepted so that a :func:`load_model` dict can be passed whole.
+    build (HYST_USE_DOUBLE). ``delay`` and ``identified`` are not part of a
+    header; they are accepted so that a :func:`load_model` dict can be
+    passed whole.
     ``compensator=True`` adds the compensator's table, built here by the
     library in float and in double and sealed, as ``hyst header
     --compensator`` writes it: ``name_table``, ``name_seal``,
@@ -236,7 +245,7 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
         raise ValueError(f"{name!r} is not a C identifier")
     if not compensator and (intervals is not None or rows is not None):
         raise ValueError("intervals and rows size the compensator's table (compensator=True)")
-    del delay
+    del delay, identified
     if kind == "everett":
         degree, y_lo, terms = _everett_args(degree, y_lo, terms)
         what = (f"asymmetric model (branch function E),\n * degree {degree}, "

@@ -792,7 +792,14 @@ nb::dict model_dict(const model_text_t &m)
     d["kind"] = m.kind == MODEL_TEXT_EVERETT ? "everett" : "poly";
     d["lo"] = m.lo;
     d["hi"] = m.hi;
-    d["delay"] = m.delay;
+    if (m.delay_fraction > 0.0) { /* a sub-sample delay: a float, else an int */
+        d["delay"] = model_text_delay(&m);
+    } else {
+        d["delay"] = m.delay;
+    }
+    if (m.has_identified) {
+        d["identified"] = nb::make_tuple(m.id_lo, m.id_hi);
+    }
     if (m.kind == MODEL_TEXT_EVERETT) {
         d["y_lo"] = m.y_lo;
         d["degree"] = m.degree;
@@ -832,7 +839,8 @@ void copy_numbers(const std::vector<double> &v, double *a, size_t cap, size_t *n
 model_text_t model_of(const std::string &kind, double lo, double hi, double delay,
                       const std::vector<double> &coeffs, double degree, double y_lo,
                       const std::vector<double> &terms, const std::vector<double> &creep_tau,
-                      const std::vector<double> &creep_weight)
+                      const std::vector<double> &creep_weight,
+                      const std::vector<double> &identified = {})
 {
     model_text_t m;
     char msg[MODEL_TEXT_MSG_SIZE];
@@ -840,14 +848,22 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
     if (kind != "poly" && kind != "everett") {
         throw nb::value_error("kind must be 'poly' or 'everett'");
     }
-    if (!(delay >= 0.0 && delay <= static_cast<double>(MODEL_TEXT_MAX_DELAY)) ||
-        delay != std::floor(delay)) {
-        throw nb::value_error("delay is not a whole number of samples in 0..1000000000");
+    if (!(delay >= 0.0 && delay <= static_cast<double>(MODEL_TEXT_MAX_DELAY))) {
+        throw nb::value_error("delay is not a delay of 0 to 1000000000 samples");
+    }
+    if (identified.size() != 0u && identified.size() != 2u) {
+        throw nb::value_error("identified needs two values (LO HI)");
     }
     m.kind = kind == "everett" ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
     m.lo = lo;
     m.hi = hi;
     m.delay = static_cast<unsigned long>(delay);
+    m.delay_fraction = delay - std::floor(delay);
+    if (identified.size() == 2u) {
+        m.has_identified = 1;
+        m.id_lo = identified[0];
+        m.id_hi = identified[1];
+    }
     if (m.kind == MODEL_TEXT_EVERETT) {
         if (!(degree >= 1.0 && degree <= HYST_EVERETT_MAX_DEGREE) || degree != std::floor(degree)) {
             throw nb::value_error("degree is not a degree in 1..4");
@@ -870,10 +886,11 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
 std::string model_write(const std::string &kind, double lo, double hi, double delay,
                         const std::vector<double> &coeffs, double degree, double y_lo,
                         const std::vector<double> &terms, const std::vector<double> &creep_tau,
-                        const std::vector<double> &creep_weight)
+                        const std::vector<double> &creep_weight,
+                        const std::vector<double> &identified)
 {
-    const model_text_t m =
-        model_of(kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau, creep_weight);
+    const model_text_t m = model_of(kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
+                                    creep_weight, identified);
     std::vector<char> buf(16384u);
     const size_t len = model_text_write(&m, buf.data(), buf.size());
     if (len == 0u) {
@@ -941,6 +958,7 @@ nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds,
         d["degree"] = c.degree;
         d["t_degree"] = everett ? nb::cast(c.t_degree) : nb::none();
         d["delay"] = c.delay;
+        d["widened"] = c.widened != 0;
         d["params"] = fit_parameters(c.kind, c.degree, c.t_degree);
         d["holdout_rms"] = c.holdout_rms;
         d["fit_rms"] = c.fit_rms;
@@ -1238,6 +1256,7 @@ NB_MODULE(_hyst, m)
           "A model file's bytes read by the format's one reader: its dict, or the message.");
     m.def("model_write", &model_write, "kind"_a, "lo"_a, "hi"_a, "delay"_a, "coeffs"_a,
           "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
+          "identified"_a = std::vector<double>(),
           "A model file's text (ValueError for what the reader would refuse).");
     m.def("model_header", &model_header, "name"_a, "open"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
@@ -1251,6 +1270,8 @@ NB_MODULE(_hyst, m)
     m.attr("FIT_EVERETT") = static_cast<int>(FIT_EVERETT);
     m.attr("FIT_MAX_DELAY") = static_cast<unsigned long>(FIT_MAX_DELAY);
     m.attr("FIT_PARSIMONY") = FIT_PARSIMONY;
+    m.attr("FIT_CREEP_PARAMETERS") = static_cast<unsigned>(FIT_CREEP_PARAMETERS);
+    m.attr("FIT_WIDEN") = FIT_WIDEN;
     m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a = -1);
 }

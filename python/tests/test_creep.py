@@ -414,7 +414,7 @@ def test_fit_chooses_the_creep_term_as_the_cli(c_build, tmp_path, record):
     assert (f.kind, f.degree, f.delay, f.creep_tau) == ("poly", 3, 3, [2000.0])
     assert 0.049 < f.creep_weight[0] < 0.051
     cli = run_cli(c_build, "fit", rec).stdout
-    assert "# chosen by hold-out: degree 3, delay 3 (kind poly, creep, 5 parameters" in cli
+    assert "# chosen by hold-out: degree 3, delay 3 (kind poly, creep, 6 parameters" in cli
     assert f"# creep: tau 2000 samples, weight {f.creep_weight[0]:.9g} (hold-out rms " \
            f"{f.creep['holdout_rms']:.6g}; without it {f.creep['holdout_rms_without']:.6g})" in cli
     assert cli.splitlines()[0] == ",".join(f"{c:.15g}" for c in f.coeffs)

@@ -255,11 +255,11 @@ def test_choice_rule_fewest_parameters_then_symmetric_then_lower_error():
     assert _choose([cand("poly", 2, float("nan"))]) == (None, False)
 
     # with creep terms (hyst fit --creep auto): each candidate alone and with
-    # its creep term, one parameter more, by the same rule
+    # its creep term, two parameters more (weight and time constant), by the same rule
     def crept(kind, params, rms, creep_rms):
         return dict(cand(kind, params, rms), creep_tau=1000.0, creep_holdout_rms=creep_rms)
     two = [crept("poly", 4, 2.0, best), crept("poly", 5, 1.5, within)]
-    assert _choose(two, 0.0) == (0, True)       # 4 + 1 parameters within the margin
+    assert _choose(two, 0.0) == (0, True)       # 4 + 2 parameters within the margin
     assert _choose(two, -1.0) == (1, False)     # --creep none: the candidates alone
     assert _choose(two, 1000.0) == (0, True)    # --creep TAU: with it, always
     # the creep term only where it is worth its parameter

@@ -83,11 +83,11 @@ def test_fit_chooses_as_the_cli_and_the_header_reproduces_it(c_build, tmp_path):
                          text=True).stdout
     chosen = [c for c in a.candidates if c["chosen"]][0]
     t_deg = f"t-degree {a.t_degree}, " if a.kind == "everett" else ""
-    # the record drifts: both choose a creep term too, one parameter more
+    # the record drifts: both choose a creep term too, two parameters more
     assert chosen["with_creep"] and a.creep is not None
     assert f"# chosen by hold-out: degree {a.degree}, delay {a.delay} (kind {a.kind}, " \
-           f"{t_deg}creep, {chosen['params'] + 1} parameters:" in cli
-    assert f"\n# parameters {chosen['params'] + 1}\n" in cli
+           f"{t_deg}creep, {chosen['params'] + 2} parameters:" in cli
+    assert f"\n# parameters {chosen['params'] + 2}\n" in cli
     assert f"\n# creep: tau {a.creep_tau[0]:.6g} samples, weight {a.creep_weight[0]:.9g} " \
            f"(hold-out rms {a.creep['holdout_rms']:.6g}; without it " \
            f"{a.creep['holdout_rms_without']:.6g})\n" in cli

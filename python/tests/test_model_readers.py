@@ -26,7 +26,8 @@ def cli_read(cli, path, out_dir):
         assert msg.startswith("hyst header: "), msg
         return None, msg[len("hyst header: "):]
     text = (out_dir / "m.h").read_text()
-    delay = int(re.search(r"follows its input\s+\*?\s*(\d+) samples later", text).group(1))
+    delay = float(re.search(r"follows its input\s+\*?\s*([0-9.e+]+) samples later",
+                            text).group(1))
     return (text[text.index("#ifndef"):], delay), None
 
 

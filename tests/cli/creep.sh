@@ -39,9 +39,9 @@ awk 'BEGIN { for (c = 0; c < 30; c++) { for (x = 0; x < 40; x += 0.25) print x;
 paste -d ' ' x.txt y.txt | awk '{ s = (NR == 1) ? 12345 : s; s = (s * 1103515245 + 12345) % 2147483648;
                                   printf "%s %.9g\n", $1, $2 + (s / 2147483648 - 0.5) * 0.02 }' > rec.txt
 "$tool" fit --save m.hyst rec.txt > fit.txt || fail "fit: $(cat fit.txt)"
-grep -q '^# chosen by hold-out: degree 3, delay 3 (kind poly, creep, 5 parameters' fit.txt ||
+grep -q '^# chosen by hold-out: degree 3, delay 3 (kind poly, creep, 6 parameters' fit.txt ||
     fail "choice: $(grep chosen fit.txt)"
-grep -qx '# parameters 5' fit.txt || fail "parameter count: $(grep parameters fit.txt)"
+grep -qx '# parameters 6' fit.txt || fail "parameter count: $(grep parameters fit.txt)"
 line=$(grep '^# creep: tau' fit.txt) || fail "no creep line: $(grep creep fit.txt)"
 [[ $line =~ ^#\ creep:\ tau\ 2000\ samples,\ weight\ ([0-9.e-]+)\  ]] || fail "creep line: $line"
 awk -v w="${BASH_REMATCH[1]}" 'BEGIN { exit !(w > 0.049 && w < 0.051) }' || fail "creep weight ${BASH_REMATCH[1]}"
@@ -65,9 +65,14 @@ grep -v '^creep_' m.hyst > bare.hyst
 "$tool" sim --model bare.hyst --digits 17 x.txt > bare.txt || fail "sim of the model without creep"
 tau=$(awk '$1 == "creep_tau" { print $2 }' m.hyst)
 w=$(awk '$1 == "creep_weight" { print $2 }' m.hyst)
-# the lag from lo = 0 at rest, of the input 3 samples back (the delay), its
-# state before each sample
-paste -d ' ' x.txt bare.txt sim.txt |
+# the model's delay: 3 samples and a fraction f of a sample (fit may choose
+# one): its input is the drive interpolated, (1 - f) x[k] + f x[k - 1]
+f=$(awk '$1 == "delay" { print $2 - 3 }' m.hyst)
+awk -v f="$f" 'BEGIN { exit !(f >= 0 && f < 1) }' || fail "delay: $(grep delay m.hyst)"
+awk -v f="$f" 'NR == 1 { p = $1 } { printf "%.17g\n", (1 - f) * $1 + f * p; p = $1 }' x.txt > u.txt
+# the lag from lo = 0 at rest, of the model's input 3 samples back (the
+# delay), its state before each sample
+paste -d ' ' u.txt bare.txt sim.txt |
     awk -v tau="$tau" -v w="$w" '{ x[NR] = $1; h = $2; got = $3;
         c = (NR > 3) ? w * s : 0; if (NR > 3) s += (x[NR - 3] - s) / tau;
         d = got - (h + c); if (d < 0) d = -d; if (d > worst) worst = d }
@@ -75,7 +80,7 @@ paste -d ' ' x.txt bare.txt sim.txt |
     fail "sim --model with creep"
 # ---- inv --model: the drive of each desired output (the delay not compensated) ----
 "$tool" inv --model m.hyst sim.txt > drive.txt 2> inv_err.txt || fail "inv --model: $(cat inv_err.txt)"
-paste -d ' ' x.txt drive.txt |
+paste -d ' ' u.txt drive.txt |
     awk '{ x[NR] = $1; if (NR > 3) { d = $2 - x[NR - 3]; if (d < 0) d = -d; if (d > worst) worst = d } }
          END { if (worst > 1e-6 * 40) { print "inv misses by " worst; exit 1 } }' || fail "inv --model with creep"
 grep -q 'clamped' inv_err.txt && fail "inv clamped sim's own outputs: $(cat inv_err.txt)"
@@ -113,24 +118,24 @@ bad many 'creep_tau 1 2 3 4 5\ncreep_weight 1 1 1 1 1\n' "many.hyst:6: field 6: 
 
 # ---- the measured record ----
 "$tool" fit --skip 350 --ycol 5 --compare-pi 10 "$data" > meas.txt || fail "fit on the measured record"
-grep -q '^# chosen by hold-out: degree 4, delay 4 (kind everett, t-degree 1, creep, 9 parameters' meas.txt ||
+grep -q '^# chosen by hold-out: degree 4, delay 4 (kind everett, t-degree 1, creep, 10 parameters' meas.txt ||
     fail "choice on the measured record: $(grep chosen meas.txt)"
 # the rule from the printed table: each candidate with p parameters (as in
-# everett.sh) and its creep option with p + 1; the fewest within 1 % of the
+# everett.sh) and its creep option with p + 2 (weight and time constant); the fewest within 1 % of the
 # lowest, then the symmetric kind, then the lower error
 awk '/^# candidate .*hold-out rms/ {
          ev = $3 == "everett"; d = ev ? $5 : $4; rms = ev ? $12 : $9; sub(/,$/, "", rms);
          if (ev) { p = 1; for (i = 1; i <= d; i++) p += (d - i < $7 ? d - i : $7) + 1 } else p = d + 1;
          n++; P[n] = p; K[n] = ev; R[n] = rms + 0; C[n] = / \(chosen\)$/;
          if (match($0, /with creep tau [0-9.e+]+: [0-9.e+-]+/)) {
-             split(substr($0, RSTART, RLENGTH), f, " "); n++; P[n] = p + 1; K[n] = ev; R[n] = f[5] + 0;
+             split(substr($0, RSTART, RLENGTH), f, " "); n++; P[n] = p + 2; K[n] = ev; R[n] = f[5] + 0;
              C[n] = /\(chosen, with creep\)$/ }
          if (best == "" || R[n - 1] < best) best = R[n - 1]; if (best == "" || R[n] < best) best = R[n] }
      END { for (i = 1; i <= n; i++) if (R[i] <= best * 1.01 && (w == "" || P[i] < P[w] ||
                (P[i] == P[w] && (K[i] < K[w] || (K[i] == K[w] && R[i] < R[w]))))) w = i;
            if (!C[w]) { print "rule picks option " w; exit 1 } }' meas.txt || fail "the chosen option is not the rule's"
 line=$(grep '^# compare' meas.txt) || fail "no compare line"
-[[ $line =~ with\ creep\ \(9\ parameters\)\ ([0-9.e-]+),\ PI\ 10\ operators\ \(11\ parameters\)\ ([0-9.e-]+)\;\ PI/TCM\ ([0-9.e-]+)$ ]] ||
+[[ $line =~ with\ creep\ \(10\ parameters\)\ ([0-9.e-]+),\ PI\ 10\ operators\ \(11\ parameters\)\ ([0-9.e-]+)\;\ PI/TCM\ ([0-9.e-]+)$ ]] ||
     fail "compare line: $line"
 awk -v r="${BASH_REMATCH[3]}" 'BEGIN { exit !(r >= 2) }' || fail "PI-10 / model ${BASH_REMATCH[3]} below 2"
 echo "creep: measured record PI-10 / model ${BASH_REMATCH[3]}"

@@ -148,6 +148,7 @@ typedef model_text_t cli_model_t;
 #define cli_model_from_everett model_text_from_everett
 #define cli_c_identifier model_text_identifier
 #define cli_append model_text_append
+#define cli_model_delay model_text_delay
 
 /* Reads a model file; 0, or 1 after a message naming file, line and field. */
 int cli_model_read(const char *cmd, const char *path, cli_model_t *m);
@@ -285,6 +286,11 @@ typedef struct cli_map {
      * only beyond the printing tolerance of [lo, hi] itself */
     int step_checks_range;
     int digits;             /* significant digits printed (9; 17 gives the doubles exactly) */
+    /* 1: the inputs outside [id_lo, id_hi], the range the model was
+     * identified on, are counted and said (predicted, not clamped, up to
+     * [lo, hi]) */
+    int has_identified;
+    double id_lo, id_hi;
 } cli_map_t;
 
 /* Reads the samples one line at a time and runs them through @p m, in

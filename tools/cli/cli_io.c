@@ -281,8 +281,8 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
 {
     cli_reader_t rd;
     cli_spool_t sp;
-    size_t nclamped = 0u;
-    unsigned long first = 0ul;
+    size_t nclamped = 0u, nbeyond = 0u;
+    unsigned long first = 0ul, first_beyond = 0ul;
     double x, y;
     int rc, got = 0;
     if (cli_reader_open(&rd, cmd, s->file, &s->xcol, 1u, s->decimal_comma) != 0) {
@@ -310,6 +310,9 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
             nclamped++ == 0u) {
             first = rd.lineno;
         }
+        if (m->has_identified && (x < m->id_lo || x > m->id_hi) && nbeyond++ == 0u) {
+            first_beyond = rd.lineno;
+        }
         len = m->col2 != NULL ? sprintf(out, "%.*g,%lu\n", m->digits, y, m->col2(m->ctx))
                               : sprintf(out, "%.*g\n", m->digits, y);
         rc = cli_spool_write(&sp, out, (size_t)len);
@@ -333,6 +336,15 @@ int cli_map_samples(const char *cmd, const cli_samples_t *s, const cli_map_t *m)
                       "(first at line %lu)\n",
                       cmd, cli_file_name(s->file), (unsigned long)nclamped, m->clamp_what,
                       m->lo, m->hi, first);
+    }
+    if (rc == 0 && nbeyond > 0u) {
+        (void)fprintf(stderr,
+                      "hyst %s: note: %s: %lu of %lu %s outside [%.9g, %.9g], the range the "
+                      "model was identified on (first at line %lu): predicted by its branches "
+                      "continued beyond it%s\n",
+                      cmd, cli_file_name(s->file), (unsigned long)nbeyond,
+                      (unsigned long)rd.rows, m->clamp_what, m->id_lo, m->id_hi, first_beyond,
+                      nclamped > 0u ? " (up to the domain, clamped beyond)" : "");
     }
     cli_spool_free(&sp);
     return rc;

@@ -20,6 +20,8 @@ typedef struct tcm_run {
     hyst_curve_t inv; /* the compensator's curve, kept by S */
     double *late;     /* sim --model with a delay: the last `delay` outputs, a ring */
     unsigned long delay, at;
+    double fraction;  /* sim --model: the delay's fraction of a sample (0: none) */
+    double previous;  /* the input before, for the fraction (NaN before the first) */
     const cli_model_t *model; /* its creep term (model->ncreep > 0), or NULL */
     hyst_creep_t creep;       /* lags of the model's input (sim) or of the drive (inv) */
     double lo, hi;            /* inv with creep: the range the engine clamps its input to */
@@ -163,6 +165,11 @@ static int tcm_step(void *ctx, double x, double *y, int *clamped)
     if ((hyst_ltp_count(&r->S) + 2u >= r->cap || hyst_rtp_count(&r->S) + 1u >= r->cap) &&
         tcm_grow(r) != 0) {
         return 1;
+    }
+    if (r->fraction > 0.0) { /* sim: the drive a fraction of a sample later */
+        const double now = x;
+        x = isnan(r->previous) ? x : (1.0 - r->fraction) * x + r->fraction * r->previous;
+        r->previous = now;
     }
     if (r->model != NULL && r->inverse) { /* the desired output less the creep's share */
         const double v = x - (double)hyst_creep_output(&r->creep);
@@ -392,6 +399,8 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     r.cap = 0u;
     r.late = NULL;
     r.delay = inverse ? 0u : model.delay;
+    r.fraction = inverse ? 0.0 : model.delay_fraction;
+    r.previous = NAN;
     r.at = 0u;
     r.model = model.ncreep > 0u ? &model : NULL;
     m.ctx = &r;
@@ -399,6 +408,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     m.step = tcm_step;
     m.col2 = tp ? tcm_tp : NULL;
     m.digits = (int)digits;
+    m.has_identified = 0;
     if (inverse && model.kind == CLI_MODEL_EVERETT) { /* the inverse's domain: the outputs */
         m.clamp_what = "desired outputs";
         m.lo = intervals > 0ul ? tab.lo.f64 : everett.lo.f64;
@@ -411,6 +421,9 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
         m.clamp_what = "inputs";
         m.lo = range[0];
         m.hi = range[1];
+        m.has_identified = model.has_identified;
+        m.id_lo = model.id_lo;
+        m.id_hi = model.id_hi;
     }
     m.step_checks_range = inverse && r.model != NULL;
     if (m.step_checks_range) {

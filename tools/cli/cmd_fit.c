@@ -15,6 +15,10 @@
 /* Longest --header-dir accepted (the header's path is built in a fixed buffer). */
 #define CLI_HEADER_DIR_MAX 4096u
 
+/* A hold-out part whose inputs span less than this fraction of the record's
+ * range is warned about: the choice was not tested over the rest. */
+#define FIT_HOLDOUT_MIN_SPAN 0.5
+
 /* --kind pi without --operators: the size of the paper's Table 1 model. */
 #define FIT_PI_DEFAULT_OPERATORS 10u
 
@@ -37,7 +41,8 @@ static const char help[] =
     "                 it, the kind (unless --kind is given), the degree and the\n"
     "                 delay (unless --delay is given) are chosen by hold-out: each\n"
     "                 f0 of degree 1..9 and each E of degree 1..4 in each t-degree\n"
-    "                 0..N-1, at each delay 0..8, is fitted on the first two\n"
+    "                 0..N-1, at each delay (0..8, or up to 1/64 of the drive's\n"
+    "                 period, and a fraction of a sample), is fitted on the first two\n"
     "                 thirds of the record and the model predicts the last third;\n"
     "                 of the candidates within 1 % of the lowest RMS prediction\n"
     "                 error, the one with the fewest parameters wins (every\n"
@@ -47,7 +52,8 @@ static const char help[] =
     "                 terms); without, every K is a candidate. Major loops alone\n"
     "                 determine E of t-degree 1 at most\n"
     "  --skip S       drop the first S data lines (settling; default 0)\n"
-    "  --delay D      the output lags the input by D samples (default 0, or chosen)\n"
+    "  --delay D      the output lags the input by D samples (default: chosen by\n"
+    "                 the same hold-out, with --degree too)\n"
     "  --xcol I       input column, 1-based (default 1)\n"
     "  --ycol J       output column, 1-based (default 2)\n"
     "  --method M     estimator of f0: joint (default): both branches in one\n"
@@ -127,6 +133,18 @@ typedef struct fit_opts {
     fit_creep_t creep;    /* its hold-out figures (training fit) */
     double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
+    size_t holdout_n, beyond; /* hold-out inputs, those outside the part fitted */
+    double holdout_span;  /* the hold-out inputs' range over the record's */
+    size_t holdout_minor; /* reversals inside the record's range in the hold-out */
+    size_t runner_up;     /* the best option of another model than the chosen ((size_t)-1: none) */
+    int runner_up_creep;
+    double pi10;          /* PI-10's hold-out RMS at the chosen delay (NaN: not scored) */
+    double delay_fraction; /* the delay's fraction of a sample, chosen (0: none) */
+    double integer_holdout; /* the choice's hold-out error at a whole delay */
+    size_t integer_delay;   /* that delay */
+    size_t max_delay;     /* delays searched 0..max_delay (scaled to the drive's period) */
+    size_t cheap_delay;   /* max_delay > FIT_MAX_DELAY: the cheap model's best delay */
+    double fitted_lo, fitted_hi; /* the range of the part fitted */
 } fit_opts_t;
 
 /* 0 on success, 1 after a message, -1 after --help. */
@@ -301,7 +319,7 @@ static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflec
 
 /* ---- the automatic choice (fit_select.c) ---- */
 
-#define MAX_CANDIDATES ((HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES) * (FIT_MAX_DELAY + 1u))
+#define MAX_CANDIDATES ((HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES) * (FIT_MAX_DELAY + 1u))
 static fit_candidate_t candidates[MAX_CANDIDATES];
 static size_t n_candidates, best_candidate;
 
@@ -320,13 +338,84 @@ static const char everett_singular[] =
     "the record's turning points do not determine E of this degree; major loops alone "
     "determine t-degree 1 at most";
 
-/* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
-static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
+static void count_beyond(fit_opts_t *o, const cli_table_t *t);
+static void rank_others(fit_opts_t *o, const cli_table_t *t);
+
+/* The sub-sample delay: the chosen model (kind, degree, domain, creep
+ * option) scored again with the drive a fraction of a sample later, at the
+ * chosen delay and one below; the best, if it lowers the hold-out error by
+ * more than FIT_FRACTION_GAIN, replaces the choice (o->delay_fraction, the
+ * candidate's delay) and the table's drive is interpolated in place, as the
+ * model file's delay makes sim do. 0, or 1 when out of memory. */
+static int choose_fraction(fit_opts_t *o, cli_table_t *t)
 {
+    static fit_candidate_t tried[2u * (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES)];
+    const fit_candidate_t *b = &candidates[best_candidate];
+    const double whole_rms = fit_option_rms(b, o->with_creep);
+    double lowest = whole_rms * (1.0 - FIT_FRACTION_GAIN), f, best_f = 0.0;
+    double *xf = (double *)malloc((t->n > 0u ? t->n : 1u) * sizeof(double));
+    hyst_ident_config_t base = o->cfg;
+    fit_candidate_t keep;
+    const unsigned params = fit_option_parameters(b, o->with_creep);
+    size_t n_tried, best, k;
+    unsigned i;
+    int wc, keep_wc = 0;
+    o->integer_holdout = whole_rms;
+    o->integer_delay = b->delay;
+    o->delay_fraction = 0.0;
+    if (xf == NULL) {
+        return 1;
+    }
+    memset(&keep, 0, sizeof keep);
+    base.delay = b->delay > 0u ? b->delay - 1u : 0u; /* D - 1 + f and D + f */
+    for (i = 1u; i < FIT_FRACTIONS && isfinite(whole_rms); ++i) {
+        f = (double)i / (double)FIT_FRACTIONS;
+        fit_delay_fraction(t->col[0], t->n, f, xf);
+        n_tried = fit_select(&base, candidate_kinds(o), 0u,
+                             o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, o->creep_tau, xf,
+                             t->col[1], t->n, b->delay, tried, sizeof tried / sizeof tried[0],
+                             &best, &wc);
+        /* the lowest error of no more parameters than the whole-delay choice:
+         * the fraction is not a way to more terms */
+        for (k = 0u; k < n_tried && best != (size_t)-1; ++k) {
+            for (wc = 0; wc <= 1; ++wc) {
+                const double e = fit_option_rms(&tried[k], wc);
+                if (isfinite(e) && e < lowest && fit_option_parameters(&tried[k], wc) <= params) {
+                    lowest = e;
+                    keep = tried[k];
+                    keep_wc = wc;
+                    best_f = f;
+                }
+            }
+        }
+    }
+    if (best_f > 0.0) { /* the choice at that fraction replaces the whole-delay one */
+        candidates[best_candidate] = keep;
+        o->with_creep = keep_wc;
+        o->delay_fraction = best_f;
+        fit_delay_fraction(t->col[0], t->n, best_f, t->col[0]);
+    }
+    free(xf);
+    return 0;
+}
+
+/* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
+static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
+{
+    size_t max_delay = o->cfg.delay;
+    if (!o->have_delay) { /* delays scaled to the drive's period */
+        o->max_delay = fit_max_delay(t->col[0], o->cfg.skip, t->n);
+        max_delay = o->max_delay;
+        if (max_delay > FIT_MAX_DELAY) { /* the cheap model's best delay, then around it */
+            o->cheap_delay = fit_cheap_delay(&o->cfg, t->col[0], t->col[1], t->n, max_delay);
+            o->cfg.delay = o->cheap_delay > FIT_DELAY_AROUND ? o->cheap_delay - FIT_DELAY_AROUND
+                                                             : 0u;
+            max_delay = o->cheap_delay + FIT_DELAY_AROUND;
+        }
+    }
     n_candidates = fit_select(&o->cfg, candidate_kinds(o), 0u,
                               o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, o->creep_tau,
-                              t->col[0], t->col[1], t->n,
-                              o->have_delay ? o->cfg.delay : FIT_MAX_DELAY, candidates,
+                              t->col[0], t->col[1], t->n, max_delay, candidates,
                               MAX_CANDIDATES, &best_candidate, &o->with_creep);
     if (best_candidate == (size_t)-1) {
         return cli_fail("fit", "%s: no candidate degree gave %s that could predict the last "
@@ -337,11 +426,22 @@ static int choose(fit_opts_t *o, const char *name, const cli_table_t *t)
                                                     : "an increasing f0 or an E the library "
                                                       "accepts");
     }
+    if (!o->have_delay && choose_fraction(o, t) != 0) {
+        return cli_fail("fit", "%s: out of memory", name);
+    }
     o->final_kind = candidates[best_candidate].kind;
     o->cfg.degree = candidates[best_candidate].degree;
     o->t_degree = candidates[best_candidate].t_degree;
     o->cfg.delay = candidates[best_candidate].delay;
+    if (candidates[best_candidate].widened) { /* the domain of the model fitted on it all */
+        double lo, hi;
+        fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, FIT_WIDEN, &lo, &hi);
+        o->cfg.lo = lo;
+        o->cfg.hi = hi;
+    }
     o->creep = candidates[best_candidate].creep;
+    count_beyond(o, t);
+    rank_others(o, t);
     o->holdout = candidates[best_candidate].holdout_rms;
     return 0;
 }
@@ -367,6 +467,161 @@ static void choose_creep(fit_opts_t *o, const cli_table_t *t)
                      !(o->holdout <= o->creep.holdout_rms * (1.0 + FIT_PARSIMONY)));
 }
 
+/* How many inputs of the hold-out part (the last third, at the chosen
+ * delay) leave the range of the part fitted, into o: the candidates
+ * predicted them by their branches continued beyond it, or clamped them. */
+static void count_beyond(fit_opts_t *o, const cli_table_t *t)
+{
+    const size_t from = o->cfg.skip, end = t->n - o->cfg.delay;
+    const size_t train = (2u * (end - from)) / 3u;
+    size_t k;
+    fit_input_range(t->col[0], from, from + train, 0.0, &o->fitted_lo, &o->fitted_hi);
+    o->holdout_n = end - from - train;
+    o->beyond = 0u;
+    double lo, hi, hold_lo, hold_hi;
+    for (k = from + train; k < end; ++k) {
+        o->beyond += t->col[0][k] < o->fitted_lo || t->col[0][k] > o->fitted_hi ? 1u : 0u;
+    }
+    /* the excitation the hold-out tests the choice on: its range and minor loops */
+    fit_input_range(t->col[0], from, end, 0.0, &lo, &hi);
+    fit_input_range(t->col[0], from + train, end, 0.0, &hold_lo, &hold_hi);
+    o->holdout_span = hi > lo ? (hold_hi - hold_lo) / (hi - lo) : 0.0;
+    (void)fit_reversals(t->col[0], from + train, end, lo, hi, &o->holdout_minor);
+}
+
+/* On stderr: what the hold-out part did not test the choice on. */
+static void warn_excitation(const fit_opts_t *o, const char *name)
+{
+    if (o->holdout_span < FIT_HOLDOUT_MIN_SPAN) {
+        (void)fprintf(stderr, "hyst fit: warning: %s: the last third's inputs span %.3g %% of "
+                              "the record's range: the choice was not tested over the rest of "
+                              "it\n",
+                      name, 100.0 * o->holdout_span);
+    }
+    if (o->holdout_minor == 0u) {
+        (void)fprintf(stderr, "hyst fit: warning: %s: the last third holds no minor loop (every "
+                              "reversal at an end of the inputs' range): the choice was not "
+                              "tested on minor loops\n",
+                      name);
+    }
+}
+
+/* The same model (kind, degree, t-degree, domain, creep option) at any delay. */
+static int same_model(const fit_candidate_t *a, int a_creep, const fit_candidate_t *b, int b_creep)
+{
+    return a->kind == b->kind && a->degree == b->degree && a->t_degree == b->t_degree &&
+           a->widened == b->widened && a_creep == b_creep;
+}
+
+/* Into o: the runner-up, the lowest hold-out error of another model than
+ * the chosen, and PI-10 on the same split at the chosen delay. */
+static void rank_others(fit_opts_t *o, const cli_table_t *t)
+{
+    const fit_candidate_t *b = &candidates[best_candidate];
+    double lowest = NAN, r[HYST_PI_FIT_MAX_OPERATORS], w[HYST_PI_FIT_MAX_OPERATORS];
+    hyst_pi_fit_config_t cfg;
+    hyst_pi_fit_result_t res;
+    hyst_status_t st;
+    size_t i;
+    int wc;
+    o->runner_up = (size_t)-1;
+    o->runner_up_creep = 0;
+    for (i = 0u; i < n_candidates; ++i) {
+        for (wc = 0; wc <= 1; ++wc) {
+            const double e = fit_option_rms(&candidates[i], wc);
+            if (isfinite(e) && !same_model(&candidates[i], wc, b, o->with_creep) &&
+                !(lowest <= e)) {
+                lowest = e;
+                o->runner_up = i;
+                o->runner_up_creep = wc;
+            }
+        }
+    }
+    memset(&cfg, 0, sizeof cfg);
+    cfg.operators = FIT_PI_DEFAULT_OPERATORS;
+    cfg.skip = o->cfg.skip;
+    cfg.delay = o->cfg.delay;
+    o->pi10 = fit_pi_holdout(&cfg, t->col[0], t->col[1], t->n, &st, &res, r, w);
+}
+
+/* A candidate's name in the printout into name[0..size). */
+static void candidate_name(const fit_candidate_t *c, char *name, size_t size)
+{
+    if (c->kind == FIT_EVERETT) {
+        (void)snprintf(name, size, "everett degree %u t-degree %u%s", c->degree, c->t_degree,
+                       c->widened ? " widened" : "");
+    } else {
+        (void)snprintf(name, size, "degree %u", c->degree);
+    }
+}
+
+/* The model of --degree alone (no creep term) fitted on the first two
+ * thirds at delay d of the drive x, its hold-out RMS (NaN: not scored). */
+static double given_holdout(const fit_opts_t *o, const double *x, const cli_table_t *t, size_t d)
+{
+    hyst_ident_config_t cfg = o->cfg;
+    hyst_status_t st;
+    cfg.delay = d;
+    if (o->final_kind == FIT_EVERETT) {
+        fit_everett_result_t train;
+        return fit_everett_holdout(&cfg, o->t_degree, x, t->col[1], t->n, &st, &train, NULL);
+    } else {
+        hyst_ident_result_t train;
+        return fit_tcm_holdout(&cfg, x, t->col[1], t->n, &st, &train, NULL);
+    }
+}
+
+/* --degree without --delay: the delay by the same hold-out, whole samples up
+ * to fit_max_delay() (every one: a single model), then a fraction of a sample
+ * at it and one below, kept when more than FIT_FRACTION_GAIN better (the drive
+ * then interpolated in place). 0 (delay 0 when nothing could be scored), or
+ * 1 when out of memory. */
+static int choose_delay(fit_opts_t *o, cli_table_t *t)
+{
+    const size_t end = t->n > o->cfg.skip ? t->n - o->cfg.skip : 0u;
+    double lowest = NAN, f, best_f = 0.0, limit;
+    double *xf;
+    size_t d, best_d = 0u, k;
+    unsigned i;
+    o->max_delay = fit_max_delay(t->col[0], o->cfg.skip, t->n);
+    for (d = 0u; d <= o->max_delay && d + 3u < end; ++d) {
+        const double e = given_holdout(o, t->col[0], t, d);
+        if (isfinite(e) && !(lowest <= e)) {
+            lowest = e;
+            best_d = d;
+        }
+    }
+    o->integer_delay = best_d;
+    o->integer_holdout = lowest;
+    o->cfg.delay = best_d;
+    if (!isfinite(lowest)) {
+        o->cfg.delay = 0u;
+        return 0;
+    }
+    if ((xf = (double *)malloc(t->n * sizeof(double))) == NULL) {
+        return 1;
+    }
+    limit = lowest * (1.0 - FIT_FRACTION_GAIN);
+    for (i = 1u; i < FIT_FRACTIONS; ++i) {
+        f = (double)i / (double)FIT_FRACTIONS;
+        fit_delay_fraction(t->col[0], t->n, f, xf);
+        for (k = 0u; k <= 1u && k <= best_d; ++k) { /* D + f and D - 1 + f */
+            const double e = given_holdout(o, xf, t, best_d - k);
+            if (isfinite(e) && e < limit) {
+                limit = e;
+                best_f = f;
+                o->cfg.delay = best_d - k;
+            }
+        }
+    }
+    if (best_f > 0.0) {
+        o->delay_fraction = best_f;
+        fit_delay_fraction(t->col[0], t->n, best_f, t->col[0]);
+    }
+    free(xf);
+    return 0;
+}
+
 static void print_candidates(const fit_opts_t *o)
 {
     char t_deg[32] = "";
@@ -384,23 +639,58 @@ static void print_candidates(const fit_opts_t *o)
                  candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
                  : candidate_kinds(o) == FIT_EVERETT           ? "everett"
                                                                : "poly");
+    if (o->max_delay > FIT_MAX_DELAY) {
+        (void)printf("# delays searched 0..%lu (1/%u of the drive's period): f0 of degree 3 "
+                     "predicts best at %lu; every candidate at %lu..%lu\n",
+                     (unsigned long)o->max_delay, (unsigned)FIT_DELAY_PERIOD_FRACTION,
+                     (unsigned long)o->cheap_delay,
+                     (unsigned long)(o->cheap_delay > FIT_DELAY_AROUND
+                                         ? o->cheap_delay - FIT_DELAY_AROUND
+                                         : 0u),
+                     (unsigned long)(o->cheap_delay + FIT_DELAY_AROUND));
+    }
+    (void)printf("# hold-out: %lu of its %lu inputs outside [%.9g, %.9g], the range of the "
+                 "part fitted%s\n",
+                 (unsigned long)o->beyond, (unsigned long)o->holdout_n, o->fitted_lo,
+                 o->fitted_hi,
+                 o->beyond > 0u ? " (predicted by the branches continued beyond it: everett "
+                                  "widened; the others clamp them)"
+                                : "");
+    (void)printf("# hold-out excitation: its inputs span %.3g %% of the record's range, %lu "
+                 "reversals inside it (minor loops)\n",
+                 100.0 * o->holdout_span, (unsigned long)o->holdout_minor);
+    {
+        const double chosen = fit_option_rms(&candidates[best_candidate], o->with_creep);
+        char name[48];
+        if (o->runner_up != (size_t)-1) {
+            const fit_candidate_t *r = &candidates[o->runner_up];
+            candidate_name(r, name, sizeof name);
+            (void)printf("# runner-up: %s delay %lu%s (%u parameters): hold-out rms %.6g, the "
+                         "chosen %.6g\n",
+                         name, (unsigned long)r->delay, o->runner_up_creep ? " with creep" : "",
+                         fit_option_parameters(r, o->runner_up_creep),
+                         fit_option_rms(r, o->runner_up_creep), chosen);
+        }
+        if (isfinite(o->pi10)) {
+            (void)printf("# PI-10 on the same split (delay %lu, 11 parameters): hold-out rms "
+                         "%.6g; PI-10 / chosen %.3g\n",
+                         (unsigned long)o->cfg.delay, o->pi10, o->pi10 / chosen);
+        }
+    }
     for (i = 0u; i < n_candidates; ++i) {
         const fit_candidate_t *c = &candidates[i];
         char name[48];
-        if (c->kind == FIT_EVERETT) {
-            (void)snprintf(name, sizeof name, "everett degree %u t-degree %u", c->degree,
-                           c->t_degree);
-        } else {
-            (void)snprintf(name, sizeof name, "degree %u", c->degree);
-        }
+        candidate_name(c, name, sizeof name);
         if (isfinite(c->holdout_rms)) {
             char creep[96] = "";
             if (c->creep.tau > 0 && isfinite(c->creep.holdout_rms)) {
                 (void)snprintf(creep, sizeof creep, "; with creep tau %.6g: %.6g", c->creep.tau,
                                c->creep.holdout_rms);
             }
-            (void)printf("# candidate %s delay %lu: hold-out rms %.6g, fit rms %.6g%s%s\n", name,
-                         (unsigned long)c->delay, c->holdout_rms, c->fit_rms, creep,
+            /* the chosen one at its sub-sample delay, if one was chosen */
+            (void)printf("# candidate %s delay %.9g: hold-out rms %.6g, fit rms %.6g%s%s\n", name,
+                         (double)c->delay + (i == best_candidate ? o->delay_fraction : 0.0),
+                         c->holdout_rms, c->fit_rms, creep,
                          i != best_candidate ? ""
                          : o->with_creep     ? " (chosen, with creep)"
                                              : " (chosen)");
@@ -500,7 +790,16 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
         return cli_fail("fit", "%s: %s", name, hyst_status_str(st));
     }
     if (everett) {
+        double id_lo, id_hi;
         cli_model_from_everett(&f->model, &f->ev.e, (unsigned long)o->cfg.delay);
+        f->model.delay_fraction = o->delay_fraction;
+        fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, 0.0, &id_lo, &id_hi);
+        /* a domain wider than the inputs: the range E was identified on is recorded */
+        if (f->model.lo < id_lo || id_hi < f->model.hi) {
+            f->model.has_identified = 1;
+            f->model.id_lo = id_lo > f->model.lo ? id_lo : f->model.lo;
+            f->model.id_hi = id_hi < f->model.hi ? id_hi : f->model.hi;
+        }
         f->usable = f->ev.curve_status == HYST_OK;
         f->rms = f->usable ? f->ev.rms : f->ev.ls_rms;
         f->max_abs = f->ev.max_abs;
@@ -513,6 +812,7 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
         f->model.lo = (double)f->r.lo;
         f->model.hi = (double)f->r.hi;
         f->model.delay = (unsigned long)o->cfg.delay;
+        f->model.delay_fraction = o->delay_fraction;
         f->usable = f->r.increasing;
         f->rms = (double)f->r.rms;
         f->max_abs = (double)f->r.max_abs;
@@ -584,7 +884,7 @@ static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, 
     }
     fit_pi_compare(t, o->compare_pi, o->cfg.skip, o->cfg.delay, tcm,
                    fit_parameters(o->final_kind, o->cfg.degree, o->t_degree) +
-                       (o->with_creep ? 1u : 0u),
+                       (o->with_creep ? FIT_CREEP_PARAMETERS : 0u),
                    holdout, line, size);
 }
 
@@ -785,8 +1085,15 @@ int cmd_fit(int argc, char **argv)
             return 1;
         }
         pairs = t.n - o.cfg.skip - o.cfg.delay; /* at the chosen delay (fit_select() left samples) */
-    } else if (pairs > 0u && (o.creep_tau >= 0 || o.compare_pi != 0u)) {
-        choose_creep(&o, &t);
+    } else if (pairs > 0u) {
+        if (!o.have_delay && choose_delay(&o, &t) != 0) {
+            cli_table_free(&t);
+            return cli_fail("fit", "%s: out of memory", name);
+        }
+        pairs = t.n > o.cfg.skip + o.cfg.delay ? t.n - o.cfg.skip - o.cfg.delay : 0u;
+        if (pairs > 0u && (o.creep_tau >= 0 || o.compare_pi != 0u)) {
+            choose_creep(&o, &t);
+        }
     }
     rc = fit_final(&o, name, &t, pairs, &f);
     if (rc == 0 && o.with_creep && f.usable) {
@@ -819,7 +1126,18 @@ int cmd_fit(int argc, char **argv)
     if (!o.have_degree) {
         print_candidates(&o);
     }
-    (void)printf("# delay %lu samples\n", (unsigned long)o.cfg.delay);
+    if (o.delay_fraction > 0.0) {
+        (void)printf("# delay %.9g samples (sub-sample: the drive interpolated; hold-out rms at "
+                     "delay %lu: %.6g)\n",
+                     (double)o.cfg.delay + o.delay_fraction,
+                     (unsigned long)o.integer_delay, o.integer_holdout);
+    } else {
+        (void)printf("# delay %lu samples\n", (unsigned long)o.cfg.delay);
+    }
+    if (o.have_degree && !o.have_delay && isfinite(o.integer_holdout)) {
+        (void)printf("# delay chosen by hold-out among 0..%lu samples (without --delay)\n",
+                     (unsigned long)o.max_delay);
+    }
     if (o.with_creep && f.model.ncreep > 0u) {
         (void)printf("# creep: tau %.6g samples, weight %.9g (hold-out rms %.6g; without it "
                      "%.6g)\n",
@@ -831,7 +1149,7 @@ int cmd_fit(int argc, char **argv)
                      o.holdout, o.creep.tau, o.creep.holdout_rms);
     }
     (void)printf("# parameters %u\n", fit_parameters(o.final_kind, o.cfg.degree, o.t_degree) +
-                                          (o.with_creep && f.model.ncreep > 0u ? 1u : 0u));
+                                          (o.with_creep && f.model.ncreep > 0u ? FIT_CREEP_PARAMETERS : 0u));
     (void)fputs(compare, stdout);
     print_usable(&f);
     if (fflush(stdout) != 0 || ferror(stdout)) {
@@ -855,6 +1173,9 @@ int cmd_fit(int argc, char **argv)
     }
     if (f.usable && o.save != NULL && cli_replace_commit(&ms) != 0) {
         return 1;
+    }
+    if (!o.have_degree) {
+        warn_excitation(&o, name);
     }
     if (!f.usable) {
         const char *nothing =

@@ -139,5 +139,6 @@ int cmd_pi(int argc, char **argv)
     m.clamp_what = "inputs";
     m.lo = m.hi = 0.0;
     m.step_checks_range = 0;
+    m.has_identified = 0;
     return cli_map_samples(a.cmd, &s, &m);
 }

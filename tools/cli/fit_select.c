@@ -19,6 +19,82 @@
 #include <stdlib.h>
 #include <string.h>
 
+void fit_input_range(const double *x, size_t from, size_t to, double widen, double *lo,
+                     double *hi)
+{
+    size_t k;
+    double a = x[from], b = x[from];
+    for (k = from; k < to; ++k) {
+        a = x[k] < a ? x[k] : a;
+        b = x[k] > b ? x[k] : b;
+    }
+    *lo = a - widen * (b - a);
+    *hi = b + widen * (b - a);
+}
+
+size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double hi,
+                     size_t *inner)
+{
+    const double step = 0.01 * (hi - lo), edge = 0.02 * (hi - lo);
+    double ext;
+    size_t k, count = 0u;
+    int dir = 0;
+    *inner = 0u;
+    if (to <= from) {
+        return 0u;
+    }
+    ext = x[from];
+    for (k = from + 1u; k < to; ++k) {
+        if (dir >= 0 && x[k] > ext) {
+            ext = x[k];
+            dir = 1;
+        } else if (dir <= 0 && x[k] < ext) {
+            ext = x[k];
+            dir = -1;
+        } else if ((dir > 0 && x[k] < ext - step) || (dir < 0 && x[k] > ext + step)) {
+            ++count;
+            *inner += ext > lo + edge && ext < hi - edge ? 1u : 0u;
+            dir = -dir;
+            ext = x[k];
+        }
+    }
+    return count;
+}
+
+size_t fit_max_delay(const double *x, size_t from, size_t to)
+{
+    double lo, hi;
+    size_t reversals, inner, d;
+    if (to <= from + 1u) {
+        return FIT_MAX_DELAY;
+    }
+    fit_input_range(x, from, to, 0.0, &lo, &hi);
+    reversals = fit_reversals(x, from, to, lo, hi, &inner);
+    d = reversals > 0u ? 2u * (to - from) / reversals / FIT_DELAY_PERIOD_FRACTION : 0u;
+    return d < FIT_MAX_DELAY ? FIT_MAX_DELAY : d > FIT_MAX_SCALED_DELAY ? FIT_MAX_SCALED_DELAY : d;
+}
+
+size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
+                       size_t n, size_t max_delay)
+{
+    size_t d, best = 0u;
+    double lowest = NAN;
+    for (d = 0u; d <= max_delay && n > base->skip + d; ++d) {
+        hyst_ident_config_t cfg = *base;
+        hyst_ident_result_t fit;
+        hyst_status_t st;
+        double e;
+        cfg.degree = 3u;
+        cfg.delay = d;
+        e = fit_tcm_holdout(&cfg, x, y, n, &st, &fit, NULL);
+        if (isfinite(e) && !(lowest <= e)) {
+            lowest = e;
+            best = d;
+        }
+    }
+    return best;
+}
+
 unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree)
 {
     unsigned i, count = 1u; /* y_lo */
@@ -203,8 +279,8 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
 /* Candidate c fitted and scored: kind, degree (t_degree) and delay set by
  * the caller; with a creep term too unless creep_tau < 0 (0: its time
  * constant chosen). */
-static void score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                  double creep_tau, fit_candidate_t *c)
+void fit_score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+               double creep_tau, fit_candidate_t *c)
 {
     hyst_ident_config_t cfg = *base;
     fit_creep_t *creep = creep_tau >= 0 ? &c->creep : NULL;
@@ -214,6 +290,13 @@ static void score(const hyst_ident_config_t *base, const double *x, const double
     c->creep.holdout_rms = NAN;
     if (c->kind == FIT_EVERETT) {
         fit_everett_result_t ev;
+        if (c->widened && n > base->skip + c->delay) {
+            double lo, hi;
+            fit_input_range(x, base->skip, base->skip + train_count(n, base->skip, c->delay),
+                            FIT_WIDEN, &lo, &hi);
+            cfg.lo = lo;
+            cfg.hi = hi;
+        }
         c->holdout_rms = fit_everett_holdout(&cfg, c->t_degree, x, y, n, &c->status, &ev, creep);
         c->fit_rms = ev.rms;
     } else {
@@ -226,6 +309,17 @@ static void score(const hyst_ident_config_t *base, const double *x, const double
     }
 }
 
+void fit_delay_fraction(const double *x, size_t n, double f, double *xf)
+{
+    size_t k;
+    for (k = n; k-- > 1u;) { /* from the end: in place, x[k - 1] not yet replaced */
+        xf[k] = (1.0 - f) * x[k] + f * x[k - 1u];
+    }
+    if (n > 0u) {
+        xf[0] = x[0];
+    }
+}
+
 double fit_option_rms(const fit_candidate_t *c, int with_creep)
 {
     return with_creep ? (c->creep.tau > 0 ? c->creep.holdout_rms : NAN) : c->holdout_rms;
@@ -233,14 +327,14 @@ double fit_option_rms(const fit_candidate_t *c, int with_creep)
 
 unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
 {
-    return fit_parameters(c->kind, c->degree, c->t_degree) + (with_creep ? 1u : 0u);
+    return fit_parameters(c->kind, c->degree, c->t_degree) + (with_creep ? FIT_CREEP_PARAMETERS : 0u);
 }
 
 /* Adds candidate (kind, degree, t_degree, delay), scored, at cand[*count]
  * unless cand is full; *best the lowest hold-out RMS so far. */
 static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
                 double creep_tau, int kind, unsigned degree, unsigned t_degree, size_t delay,
-                fit_candidate_t *cand, size_t max_cand, size_t *count)
+                int widened, fit_candidate_t *cand, size_t max_cand, size_t *count)
 {
     fit_candidate_t *c = &cand[*count];
     if (*count >= max_cand) {
@@ -251,7 +345,8 @@ static void add(const hyst_ident_config_t *base, const double *x, const double *
     c->degree = degree;
     c->t_degree = t_degree;
     c->delay = delay;
-    score(base, x, y, n, creep_tau, c);
+    c->widened = widened;
+    fit_score(base, x, y, n, creep_tau, c);
     ++*count;
 }
 
@@ -262,18 +357,34 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
 {
     size_t count = 0u, d;
     unsigned deg, k;
+    int widen = 0;
+    size_t i;
+    /* widened candidates only where they make a difference: the hold-out
+     * part's inputs leave the range of the part fitted (and no --domain) */
+    if (!(base->lo < base->hi) && n > base->skip + base->delay) {
+        const size_t from = base->skip, end = n - base->delay;
+        const size_t train = train_count(n, base->skip, base->delay);
+        double lo, hi;
+        fit_input_range(x, from, from + train, 0.0, &lo, &hi);
+        for (i = from + train; i < end && !widen; ++i) {
+            widen = x[i] < lo || x[i] > hi;
+        }
+    }
     for (d = base->delay; d <= max_delay; ++d) {
         if (n <= base->skip + d) {
             break;
         }
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
-            add(base, x, y, n, creep_tau, FIT_POLY, deg, 0u, d, cand, max_cand, &count);
+            add(base, x, y, n, creep_tau, FIT_POLY, deg, 0u, d, 0, cand, max_cand, &count);
         }
         for (deg = 1u; (kinds & FIT_EVERETT) != 0 && deg <= HYST_EVERETT_MAX_DEGREE; ++deg) {
             for (k = 0u; k < deg && (everett_degree == 0u || deg == everett_degree); ++k) {
-                if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
-                    add(base, x, y, n, creep_tau, FIT_EVERETT, deg, k, d, cand, max_cand,
-                        &count);
+                int w;
+                for (w = 0; w <= widen; ++w) {
+                    if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
+                        add(base, x, y, n, creep_tau, FIT_EVERETT, deg, k, d, w, cand, max_cand,
+                            &count);
+                    }
                 }
             }
         }

@@ -10,9 +10,37 @@
 /* Delays tried when --delay is not given: 0 .. FIT_MAX_DELAY samples. */
 #define FIT_MAX_DELAY 8u
 
+/* A drive's period in samples over this is searched for delays up to period /
+ * FIT_DELAY_PERIOD_FRACTION (at least FIT_MAX_DELAY, at most FIT_MAX_SCALED_DELAY):
+ * first with one cheap model at every delay, then every candidate at the
+ * delays next to the best. */
+#define FIT_DELAY_PERIOD_FRACTION 64u
+#define FIT_MAX_SCALED_DELAY 1000u
+/* Fractions of a sample tried after the choice (sub-sample delay), at the
+ * chosen delay and one below: 1/FIT_FRACTIONS steps. */
+#define FIT_FRACTIONS 4u
+
+/* A sub-sample delay is kept when it lowers the hold-out error by more than
+ * this fraction: it adds many options to the comparison (each candidate at
+ * each fraction), whose best is biased low by the hold-out's noise. */
+#define FIT_FRACTION_GAIN 0.05
+
+/* Delays around the cheap search's best at which every candidate is fitted. */
+#define FIT_DELAY_AROUND 4u
+
+/* Parameters a creep term adds: its weight and its time constant (chosen
+ * from a series, but chosen on the data all the same). */
+#define FIT_CREEP_PARAMETERS 2u
+
 /* A candidate within this fraction of the lowest hold-out error counts as
  * as good: the fewest parameters among them win. */
 #define FIT_PARSIMONY 0.01
+
+/* The asymmetric kind is also fitted on a domain wider than the inputs' range
+ * by this fraction of the range on each side: E continued beyond the inputs
+ * it was identified on (monotone on the whole wider triangle, as the library
+ * requires), so later inputs outside that range are predicted, not clamped. */
+#define FIT_WIDEN 1.0
 
 /* Kinds of model a candidate may be (a mask for fit_select()): the
  * symmetric TCM's polynomial f0 and the asymmetric kind's E. */
@@ -47,6 +75,7 @@ typedef struct fit_candidate {
     unsigned degree;
     unsigned t_degree;        /* everett: the highest power of t fitted (< degree) */
     size_t delay;
+    int widened;              /* everett: its domain the inputs' range widened by FIT_WIDEN */
     hyst_status_t status;     /* of the training fit (everett: or of its curve) */
     hyst_ident_result_t fit;  /* poly: on the first two thirds */
     double fit_rms;           /* residual of the training fit (poly: fit.rms) */
@@ -66,6 +95,26 @@ typedef struct fit_everett_result {
 /* Real numbers a model of this kind and degree identifies: poly the
  * degree + 1 coefficients, everett E's terms w^i t^j with j <= t_degree
  * and y_lo (t_degree ignored for poly). */
+/* The longest delay worth searching for a drive x[from .. to): a fraction
+ * of its period (from its reversals, moves below 1 % of its range ignored). */
+size_t fit_max_delay(const double *x, size_t from, size_t to);
+
+/* Reversals of the drive x[from .. to) (moves back from an extreme by less
+ * than 1 % of [lo, hi] ignored): the count, and into *inner those whose
+ * extreme lies more than 2 % of [lo, hi] inside it (the turning points of
+ * minor loops). */
+size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double hi,
+                     size_t *inner);
+
+/* The delay in [0, max_delay] at which the cheap model (f0 of degree 3 on
+ * base's skip and domain, no creep) predicts the hold-out best. */
+size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
+                       size_t n, size_t max_delay);
+
+/* The range of x[from .. to) widened by `widen` times it on each side. */
+void fit_input_range(const double *x, size_t from, size_t to, double widen, double *lo,
+                     double *hi);
+
 unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree);
 
 /* The TCM (f0, or when f0 is NULL the prepared curve) run from rest over
@@ -115,10 +164,20 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
                       size_t n, hyst_status_t *status, hyst_pi_fit_result_t *fit, double *r,
                       double *w);
 
+/* Candidate c (kind, degree, t_degree, delay, widened set) fitted on the
+ * first two thirds of x, y (base: method, domain, skip) and scored on the
+ * last third; with a creep term too unless creep_tau < 0 (0: its time
+ * constant chosen). */
+void fit_score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+               double creep_tau, fit_candidate_t *c);
+
+/* The drive a fraction f of a sample later, into xf: (1 - f) x[k] + f x[k - 1]
+ * (xf[0] = x[0]); xf may be x (done in place). */
+void fit_delay_fraction(const double *x, size_t n, double f, double *xf);
+
 /* A candidate's two options: the model alone, or with its creep term
  * (with_creep): the hold-out RMS (NaN: not scored) and the parameters (the
- * creep's weight is one more; its time constant is chosen from a series,
- * like the delay, and not counted). */
+ * creep term's weight and time constant are FIT_CREEP_PARAMETERS more). */
 double fit_option_rms(const fit_candidate_t *c, int with_creep);
 unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep);
 

@@ -33,10 +33,12 @@ enum {
     K_TERMS,
     K_CREEP_TAU,
     K_CREEP_WEIGHT,
+    K_IDENTIFIED,
     K_COUNT
 };
-static const char *const keys[K_COUNT] = {"kind", "lo",     "hi",    "coeffs",    "delay",
-                                          "y_lo", "degree", "terms", "creep_tau", "creep_weight"};
+static const char *const keys[K_COUNT] = {"kind",      "lo",           "hi",        "coeffs",
+                                          "delay",     "y_lo",         "degree",    "terms",
+                                          "creep_tau", "creep_weight", "identified"};
 
 /* A field of a line: its start and length. */
 typedef struct field {
@@ -211,6 +213,9 @@ static int check_count(const reader_t *r, unsigned long no, int k, size_t n)
         (void)snprintf(text, sizeof text, "1 to %u numbers (one per creep term)",
                        (unsigned)MODEL_TEXT_CREEP_MAX_TERMS);
         needs = text;
+    } else if (k == K_IDENTIFIED) {
+        least = most = 3u;
+        needs = "two values (LO HI)";
     }
     if (n < least) {
         return fail(r, "%s:%lu: field %lu is missing: %s needs %s", r->path, no,
@@ -223,7 +228,7 @@ static int check_count(const reader_t *r, unsigned long no, int k, size_t n)
     return 0;
 }
 
-/* A whole number in [least, most] (delay, degree). */
+/* A whole number in [least, most] (degree). */
 static int whole(double v, double least, double most)
 {
     return v >= least && v <= most && v == floor(v);
@@ -238,8 +243,8 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
     const char *what = "a finite number";
     int ok = parse_number(f->s, f->n, &v);
     if (ok && k == K_DELAY) {
-        ok = whole(v, 0.0, (double)MODEL_TEXT_MAX_DELAY);
-        what = "a whole number of samples in 0..1000000000";
+        ok = v >= 0.0 && v <= (double)MODEL_TEXT_MAX_DELAY;
+        what = "a delay of 0 to 1000000000 samples";
     } else if (ok && k == K_DEGREE) {
         ok = whole(v, 1.0, (double)HYST_EVERETT_MAX_DEGREE);
         what = "a degree in 1.." STR(HYST_EVERETT_MAX_DEGREE);
@@ -261,12 +266,17 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
         m->hi = v;
         (void)model_text_quote(r->hi_text, f->s, f->n);
         break;
-    case K_DELAY: m->delay = (unsigned long)v; break;
+    case K_DELAY:
+        m->delay = (unsigned long)v;
+        /* exact: v < 2^53; 0, not -0, for "-0" (the file written back says 0) */
+        m->delay_fraction = v > (double)m->delay ? v - (double)m->delay : 0.0;
+        break;
     case K_Y_LO: m->y_lo = v; break;
     case K_DEGREE: m->degree = (unsigned)v; break;
     case K_TERMS: m->terms[i - 1u] = v; break;
     case K_CREEP_TAU: m->creep_tau[i - 1u] = v; break;
     case K_CREEP_WEIGHT: m->creep_weight[i - 1u] = v; break;
+    case K_IDENTIFIED: *(i == 1u ? &m->id_lo : &m->id_hi) = v; break;
     default: m->coeffs[i - 1u] = v; break;
     }
     return 0;
@@ -335,8 +345,8 @@ static int read_line(reader_t *r, unsigned long no, const char *s, size_t n, mod
     }
     if (k == K_COUNT || r->seen[k] != 0ul) {
         return fail(r, "%s:%lu: field 1: %s %s", r->path, no, model_text_quote(q, f[0].s, f[0].n),
-                    k == K_COUNT ? "is not a key (kind, lo, hi, delay, coeffs, creep_tau, "
-                                   "creep_weight; kind everett: y_lo, degree, terms)"
+                    k == K_COUNT ? "is not a key (kind, lo, hi, identified, delay, coeffs, "
+                                   "creep_tau, creep_weight; kind everett: y_lo, degree, terms)"
                                  : "given twice");
     }
     r->seen[k] = no;
@@ -365,6 +375,8 @@ static int read_line(reader_t *r, unsigned long no, const char *s, size_t n, mod
         m->ncreep = count - 1u;
     } else if (k == K_CREEP_WEIGHT) {
         m->ncreep_weights = count - 1u;
+    } else if (k == K_IDENTIFIED) {
+        m->has_identified = 1;
     }
     return 0;
 }
@@ -423,6 +435,13 @@ static int read_complete(const reader_t *r, const model_text_t *m)
         const int k_late = line[K_HI] > line[K_LO] ? K_HI : K_LO;
         return fail(r, "%s:%lu: field 2: the domain is empty: hi %s is not above lo %s",
                     r->path, line[k_late], r->hi_text, r->lo_text);
+    }
+    if (m->has_identified && !(m->lo <= m->id_lo && m->id_lo < m->id_hi && m->id_hi <= m->hi)) {
+        /* the field at fault: LO (below lo, or not below HI), else HI */
+        const int field = m->id_lo < m->lo || !(m->id_lo < m->id_hi) ? 2 : 3;
+        return fail(r, "%s:%lu: field %d: identified %.17g %.17g is not a range within [lo, hi] "
+                       "= [%.17g, %.17g]",
+                    r->path, line[K_IDENTIFIED], field, m->id_lo, m->id_hi, m->lo, m->hi);
     }
     return 0;
 }
@@ -501,8 +520,13 @@ int model_text_check(const model_text_t *m, char *msg, size_t msg_size)
         why = "lo and hi must be finite numbers";
     } else if (!(m->lo < m->hi)) {
         why = "the domain is empty: hi is not above lo";
-    } else if (m->delay > MODEL_TEXT_MAX_DELAY) {
-        why = "delay is not a whole number of samples in 0..1000000000";
+    } else if (m->delay > MODEL_TEXT_MAX_DELAY || !(m->delay_fraction >= 0.0) ||
+               !(m->delay_fraction < 1.0) ||
+               model_text_delay(m) > (double)MODEL_TEXT_MAX_DELAY) {
+        why = "delay is not a delay of 0 to 1000000000 samples (its fraction in [0, 1))";
+    } else if (m->has_identified &&
+               !(m->lo <= m->id_lo && m->id_lo < m->id_hi && m->id_hi <= m->hi)) {
+        why = "identified is not a range within [lo, hi]";
     } else if (m->ncreep > MODEL_TEXT_CREEP_MAX_TERMS || m->ncreep != m->ncreep_weights) {
         why = "creep_tau and creep_weight need as many numbers, 1 to " STR(
             MODEL_TEXT_CREEP_MAX_TERMS) " (one per creep term)";
@@ -541,20 +565,26 @@ size_t model_text_write(const model_text_t *m, char *buf, size_t size)
             buf, size, &len,
             MODEL_TEXT_MAGIC "\n# hyst model: asymmetric, E(a, b) = sum of e[i-1][j] w^i t^j, "
                              "w = (a - b) / (hi - lo), t = (b - lo) / (hi - lo); terms i = "
-                             "1..degree, then j = 0..degree - i; the output %lu samples after "
+                             "1..degree, then j = 0..degree - i; the output %.17g samples after "
                              "its input (docs/cli.md)\n"
-                             "kind everett\nlo %.17g\nhi %.17g\ny_lo %.17g\ndelay %lu\n"
+                             "kind everett\nlo %.17g\nhi %.17g\ny_lo %.17g\ndelay %.17g\n"
                              "degree %u\nterms",
-            m->delay, m->lo, m->hi, m->y_lo, m->delay, m->degree);
+            model_text_delay(m), m->lo, m->hi, m->y_lo, model_text_delay(m), m->degree);
         over |= append_numbers(buf, size, &len, m->terms, m->nterms);
     } else {
         over = model_text_append(buf, size, &len,
                                  MODEL_TEXT_MAGIC
                                  "\n# hyst model: f0 on [lo, hi], coefficients highest power "
-                                 "first, the output %lu samples after its input (docs/cli.md)\n"
-                                 "kind poly\nlo %.17g\nhi %.17g\ndelay %lu\ncoeffs",
-                                 m->delay, m->lo, m->hi, m->delay);
+                                 "first, the output %.17g samples after its input (docs/cli.md)\n"
+                                 "kind poly\nlo %.17g\nhi %.17g\ndelay %.17g\ncoeffs",
+                                 model_text_delay(m), m->lo, m->hi, model_text_delay(m));
         over |= append_numbers(buf, size, &len, m->coeffs, m->ncoef);
+    }
+    if (m->has_identified) {
+        over |= model_text_append(buf, size, &len,
+                                  "\n# identified on inputs in [LO, HI]; the branches continue "
+                                  "beyond it to [lo, hi]\nidentified %.17g %.17g",
+                                  m->id_lo, m->id_hi);
     }
     if (m->ncreep > 0u) {
         over |= model_text_append(buf, size, &len,
@@ -568,6 +598,8 @@ size_t model_text_write(const model_text_t *m, char *buf, size_t size)
     over |= model_text_append(buf, size, &len, "\n");
     return over ? 0u : len;
 }
+
+double model_text_delay(const model_text_t *m) { return (double)m->delay + m->delay_fraction; }
 
 size_t model_text_everett_terms(unsigned degree) { return (size_t)degree * (degree + 1u) / 2u; }
 

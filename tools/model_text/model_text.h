@@ -37,6 +37,14 @@ typedef struct model_text {
     size_t ncoef;                           /* poly: degree + 1 */
     double lo, hi;                          /* domain, lo < hi */
     unsigned long delay; /* the output follows its input this many samples later */
+    /* and a fraction of a sample more (0 <= f < 1; `delay 3.5`): the model's
+     * input is the drive interpolated, (1 - f) x[k] + f x[k - 1] */
+    double delay_fraction;
+    /* the range of the inputs the model was identified on, within [lo, hi]
+     * (key `identified LO HI`; has_identified 0: not recorded): the branches
+     * continue beyond it, up to the domain */
+    double id_lo, id_hi;
+    int has_identified;
     unsigned degree;     /* everett: total degree of E, 1..HYST_EVERETT_MAX_DEGREE */
     double y_lo;         /* everett: the output at lo after reset */
     /* everett: e[i - 1][j], the coefficient of w^i t^j, in the file's order
@@ -61,7 +69,8 @@ int model_text_parse(const char *text, size_t len, const char *path, model_text_
                      size_t msg_size);
 
 /* Whether *m is a model the reader would accept (counts, finite numbers,
- * lo < hi, whole delay and degree, time constants >= 1): 0, or 1 with the
+ * lo < hi, a delay in 0..1e9 whose fraction is in [0, 1), a whole degree,
+ * time constants >= 1, an identified range within [lo, hi]): 0, or 1 with the
  * reason in msg (naming the key, no line). Writers check with it. */
 int model_text_check(const model_text_t *m, char *msg, size_t msg_size);
 
@@ -85,6 +94,9 @@ int model_text_header_close(char *buf, size_t size, size_t *len, const char *nam
 
 /* 1 if s is a C identifier of fewer than 200 characters (a header's NAME). */
 int model_text_identifier(const char *s);
+
+/* The model's delay in samples, its fraction included. */
+double model_text_delay(const model_text_t *m);
 
 /* E's terms at total degree d: degree (degree + 1) / 2. */
 size_t model_text_everett_terms(unsigned degree);
