@@ -234,6 +234,9 @@ int hyst_nnls_(const hyst_nnls_t *f, hyst_wide_t tol);
  * polynomial in u = (x - lo) / (hi - lo): g[k] multiplies u^k. */
 void hyst_unit_poly_(hyst_wide_t *g, const hyst_wide_t *c, unsigned n, hyst_wide_t lo,
                      hyst_wide_t hi);
+/* Bound on the error of those g, as an error of f0 on [lo, hi] (src/hyst_curve.c). */
+hyst_wide_t hyst_unit_poly_error_(const hyst_wide_t *c, unsigned n, hyst_wide_t lo,
+                                  hyst_wide_t hi);
 
 /* What bounded memory keeps besides the TPs, in wide numbers (snapshots):
  * the stack level of the shallowest live merge ((size_t)-1: none), its
