@@ -289,6 +289,8 @@ unsigned long hyst_crc_word_(unsigned long crc, unsigned long w);
  * and the seal's check of a table given ready-made (src/hyst_table_seal.c):
  * HYST_OK or HYST_ERR_CRC. */
 hyst_wide_t hyst_table_err_(hyst_wide_t err);
+/* An inverse curve's last rounding of the drive (src/hyst_curve_inv.c). */
+hyst_wide_t hyst_drive_rounding_(const hyst_curve_t *inv);
 hyst_status_t hyst_table_seal_check_(unsigned kind, unsigned variant, hyst_cptr_t table,
                                      size_t rows, size_t intervals, const hyst_table_seal_t *seal);
 /* A row of a table given ready-made (its intervals' four numbers from
