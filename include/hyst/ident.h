@@ -379,7 +379,8 @@ typedef struct hyst_everett_fit {
     hyst_wide_t r_prev[HYST_EVERETT_FIT_COLS];  /**< its regressors */
     hyst_wide_t ata[HYST_EVERETT_FIT_COLS * HYST_EVERETT_FIT_COLS]; /**< normal equations */
     hyst_wide_t aty[HYST_EVERETT_FIT_COLS];
-    hyst_wide_t yy;    /**< sum of y^2 */
+    hyst_wide_t y_ref; /**< the first output: aty and yy take y - y_ref */
+    hyst_wide_t yy;    /**< sum of (y - y_ref)^2 */
     size_t used;       /**< samples in the normal equations */
 } hyst_everett_fit_t;
 
@@ -448,7 +449,13 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
  *         constrained solution did not converge to an E the curve accepts,
  *         a rounding-level failure, or the E fitted is flat, E(hi, lo) not
  *         above 0: outputs that never rise, or rise by less than the
- *         type resolves; @p e and @p rms hold it all the same).
+ *         type resolves; @p e and @p rms hold it all the same); or what
+ *         else the curve refuses that E with (in double, or in float
+ *         without the f64 variant), HYST_ERR_ILL_CONDITIONED when its
+ *         rounding bound exceeds HYST_MAX_ROUNDING of its range (an
+ *         output offset far above the range); @p e and @p rms hold it
+ *         then too. The RMS is computed about the first output, so an
+ *         offset does not cancel it.
  */
 hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
                                      hyst_wide_t *rms);
