@@ -159,30 +159,30 @@ static hyst_real_t few_rows_table[HYST_EVERETT_INV_TABLE_LEN(3u, 1024u)];
 
 static void test_few_rows_within_the_measured_error(void)
 {
+    double worst_ratio = 0.0, allowed;
+    hyst_everett_t e;
+    long k;
     int trial;
-    double worst_ratio = 0.0;
-    unsigned solved_intervals = 0u;
-    for (trial = 0; trial < 4; ++trial) {
-        const hyst_everett_t e = accepted_e();
-        double allowed;
-        long k;
-        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_inverse_table(&inv, &fwd, few_rows_table,
-                                                                       3u, 1024u));
-        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl, yl, xr, yr, CAP));
-        hyst_reset(&X);
-        solved_intervals += (unsigned)inv.u.everett.exact;
-        allowed = (double)hyst_curve_inverse_error(&inv) * (e.hi - e.lo) * 1.01 +
-                  2.0 * (double)CURVE_NUM(solved.rounding);
+    for (trial = 0; trial < 2; ++trial) { /* the seed's third E (degree 2): its rows change */
+        e = accepted_e();                  /* fast with the anchor */
         desired(&e, SAMPLES);
-        for (k = 0; k < SAMPLES; ++k) {
-            /* each turning point's drive carries one evaluation's error */
-            const double d = fabs((double)hyst_step(&T, yd[k]) - (double)hyst_step(&X, yd[k]));
-            const double ratio = d / ((double)(hyst_tp_count(&T) + 1u) * allowed);
-            worst_ratio = ratio > worst_ratio ? ratio : worst_ratio;
-        }
+    }
+    e = accepted_e();
+    TEST_ASSERT_EQUAL_INT(HYST_OK,
+                          hyst_curve_everett_inverse_table(&inv, &fwd, few_rows_table, 3u, 1024u));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl, yl, xr, yr, CAP));
+    hyst_reset(&X);
+    allowed = (double)hyst_curve_inverse_error(&inv) * (e.hi - e.lo) * 1.01 +
+              2.0 * (double)CURVE_NUM(solved.rounding);
+    desired(&e, SAMPLES);
+    for (k = 0; k < SAMPLES; ++k) {
+        /* each turning point's drive carries one evaluation's error */
+        const double d = fabs((double)hyst_step(&T, yd[k]) - (double)hyst_step(&X, yd[k]));
+        const double ratio = d / ((double)(hyst_tp_count(&T) + 1u) * allowed);
+        worst_ratio = ratio > worst_ratio ? ratio : worst_ratio;
     }
     TEST_PRINTF("3 rows, 1024 intervals: worst drive error %g of the error reported; intervals "
-                "solved %u of %u", worst_ratio, solved_intervals, 4u * 2u * 1024u);
+                "solved %u of 2048", worst_ratio, (unsigned)inv.u.everett.exact);
     TEST_ASSERT_TRUE(worst_ratio <= 1.0);
 }
 
