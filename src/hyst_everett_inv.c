@@ -255,12 +255,13 @@ static hyst_wide_t entry(const build_t *b, size_t i)
 
 /* Interval k between rows r and r + 1 of a direction, against the exact
  * inverse, at BLEND_ANCHORS anchors (r itself among them) and BLEND_PROBES
- * output steps each, spread over the interval: the blend's drive step
- * there against the exact one (the branch solved from the blend's value,
- * a few Newton steps). Probing at the blend's own drive steps instead
- * skipped those whose output fell in a neighbouring interval, and with
- * few rows nearly all did (3 rows, 16 384 intervals: 94 times the error
- * reported). Plus a bound on the
+ * points each: the blend's drive d at the point is taken as exact for its
+ * output step v = p(d) (one evaluation of the branch, no solve), and the
+ * blend evaluated where the sample would for v; where v falls outside the
+ * interval (the blend is off by more than the interval is wide), the
+ * blend's d against the branch solved at the point's own output step.
+ * Skipping those instead hid the error when few rows were blended (3 rows,
+ * 16 384 intervals: 94 times the error reported). Plus a bound on the
  * rounding of the sample's arithmetic in the variant's type: the weights
  * (5 eps of each product) and the blend's four products and three sums
  * (4 eps), the cubic's (4 eps of its terms), the anchor's and the index's
@@ -292,10 +293,18 @@ static hyst_wide_t measure(const build_t *b, int fall, size_t r, size_t k)
         end = br.width * b->span;
         for (ip = 0u; ip < BLEND_PROBES; ++ip) {
             const hyst_wide_t t = ((hyst_wide_t)ip + (hyst_wide_t)0.5) / (hyst_wide_t)BLEND_PROBES;
-            const hyst_wide_t v = ((hyst_wide_t)k + t) * range / (hyst_wide_t)b->intervals;
-            hyst_wide_t d = c[0] + t * (c[1] + t * (c[2] + t * c[3])), err;
+            hyst_wide_t d = c[0] + t * (c[1] + t * (c[2] + t * c[3])), dp, s, err;
             d = d < 0 ? 0 : (d > end ? end : d);
-            err = hyst_wide_abs(d - b->span * branch_solve(&br, v, d / b->span));
+            s = branch_p(&br, d / b->span, &dp) * (hyst_wide_t)b->intervals / range;
+            if (s >= (hyst_wide_t)k && s < (hyst_wide_t)k + 1) {
+                /* d is exact for its output, which falls in this interval: the
+                 * blend where the sample evaluates it (one evaluation) */
+                s -= (hyst_wide_t)k;
+                err = hyst_wide_abs(c[0] + s * (c[1] + s * (c[2] + s * c[3])) - d);
+            } else { /* off its interval: against the branch solved at this output step */
+                const hyst_wide_t v = ((hyst_wide_t)k + t) * range / (hyst_wide_t)b->intervals;
+                err = hyst_wide_abs(d - b->span * branch_solve(&br, v, d / b->span));
+            }
             at_anchor = err > at_anchor ? err : at_anchor;
         }
         at_anchor += b->eps * (9 * mag + 4 * terms + 4 * b->span);
