@@ -8,7 +8,13 @@
  * Input layout (every read past the end yields zeros, so every input is valid):
  *   [0]      flags: bit0 raw config (arbitrary doubles) else structured,
  *            bit1 init through hyst_curve_from_poly + hyst_init_curve,
- *            bit2 NULL-pointer probes, bit3 corrupted curve kind probe
+ *            bit2 NULL-pointer probes, bit3 corrupted curve kind probe,
+ *            bit4 (structured) the curve moved far from 0: its domain shifted
+ *            by 2^(8 + byte % 36) and its coefficients expanded about 0
+ *            again (rounded, as a user prints them); accepted only with a
+ *            rounding bound that holds: the branch shape at 8 points within
+ *            it of the exact value of those coefficients (double-double;
+ *            lo + d exact up to 2^43)
  *   [1]      capacity (byte % 48: 0 and 1 are invalid)
  *   [2]      degree (byte % 12: 0, 10, 11 are invalid)
  *   config   raw: lo, hi, coeffs as 8-byte doubles; structured: small grids
@@ -25,6 +31,7 @@
  * fuzz_models.c (PI, PWL, inverse, identification) calls. */
 #include "hyst/hyst.h"
 #include "ref_tcm.h"
+#include "support.h"
 #include "fuzz_common.h"
 
 #include <float.h>
@@ -54,6 +61,19 @@ static inst_t A, B, C, keep;
 static hyst_curve_t curve_a;
 static ref_tcm_t ref;
 static unsigned char snap[SNAP_MAX], forged[SNAP_MAX];
+
+/* f0 moved to [lo + off, hi + off]: f(x) = f0(x - off), expanded about 0
+ * again in double (Ruffini-Horner shift by -off). */
+static void shift_far(hyst_poly_t *f, double off)
+{
+    unsigned i, j;
+    if (f->degree < 1u || f->degree > HYST_MAX_DEGREE) return;
+    for (i = 0u; i < f->degree; ++i) {
+        for (j = 1u; j <= f->degree - i; ++j) f->coeffs[j] -= off * f->coeffs[j - 1u];
+    }
+    f->lo += off;
+    f->hi += off;
+}
 
 /* Nesting, alternation, counts <= capacity, last input on the current branch. */
 static void check_invariants(const inst_t *I)
@@ -194,6 +214,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
 
     read_config(&r, (int)(flags & 1u), &f);
     (void)hyst_status_str((int)(signed char)flags);
+    if ((flags & 17u) == 16u) {
+        shift_far(&f, ldexp(1.0, 8 + (int)(rd_u8(&r) % 36u)));
+    }
 
     memset(&A, 0, sizeof(A));
     memcpy(&keep, &A, sizeof(A));
@@ -215,6 +238,15 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         CHECK(hyst_curve_from_poly(&curve, &f) == HYST_OK); /* init accepted f */
     }
     CHECK(hyst_curve_g(&curve, 0.0) == 0.0); /* documented: exactly 0 */
+    if ((flags & 17u) == 16u) { /* the stated bound against the coefficients' exact value */
+        const double y0 = poly_eval_exact(f.coeffs, f.degree, f.lo);
+        unsigned j;
+        for (j = 1u; j <= 8u; ++j) {
+            const double d = (f.hi - f.lo) * (double)j / 8.0;
+            const double g = poly_eval_exact(f.coeffs, f.degree, f.lo + d) - y0;
+            CHECK(fabs(hyst_curve_g(&curve, d) - g) <= 2.0 * curve.rounding.f64);
+        }
+    }
     check_invariants(&A);
     if (flags & 4u) { /* NULL probes: refused, never dereferenced */
         CHECK(hyst_init(NULL, &f, A.xl, A.yl, A.xr, A.yr, cap) == HYST_ERR_NULL);

@@ -1468,6 +1468,7 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
     const int raw = (flags & 2u) != 0u;
     const size_t n = rd_u8(rd) % 6u;
     hyst_wide_t tau[HYST_CREEP_MAX_TERMS + 1u], w[HYST_CREEP_MAX_TERMS + 1u], x_rest;
+    double x_limit;
     double s_ref[HYST_CREEP_MAX_TERMS + 1u], a_ref[HYST_CREEP_MAX_TERMS + 1u];
     double lo_x, hi_x, xs[MAX_OPS], rs[MAX_OPS];
     hyst_status_t st, want = HYST_OK;
@@ -1492,6 +1493,12 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
         } else if (!isfinite(x_rest)) {
             want = HYST_ERR_NONFINITE;
         }
+    }
+    { /* creep.h's drive limit: DBL_MAX / (4 max(1, sum |w|)), x_rest beyond it refused */
+        double sum = 0.0;
+        for (k = 0u; k < n && k < HYST_CREEP_MAX_TERMS; ++k) sum += fabs(w[k]);
+        x_limit = DBL_MAX / (4.0 * (sum > 1.0 ? sum : 1.0));
+        if (want == HYST_OK && !(fabs(x_rest) <= x_limit)) want = HYST_ERR_NONFINITE;
     }
     memset(&C, 0x5A, sizeof C);
     memcpy(&keep_c, &C, sizeof C);
@@ -1608,6 +1615,15 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
         }
         x = raw ? rd_f64(rd) : (double)(signed char)rd_u8(rd) / 8.0;
         if (!isfinite(x)) continue;
+        if (fabs(x) > x_limit) { /* would overflow a lag or c: refused, nothing moves */
+            memcpy(&keep_c, &C, sizeof C);
+            out = hyst_creep_output(&C);
+            y = hyst_creep_step(&C, x);
+            CHECK(memcmp(&out, &y, sizeof y) == 0 || (isnan(out) && isnan(y)));
+            CHECK(hyst_creep_status(&C) == HYST_ERR_DOMAIN);
+            CHECK(memcmp(C.state, keep_c.state, sizeof C.state) == 0);
+            continue;
+        }
         lo_x = fmin(lo_x, x);
         hi_x = fmax(hi_x, x);
         out = hyst_creep_output(&C);

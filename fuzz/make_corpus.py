@@ -61,6 +61,10 @@ seeds = {
     "raw_nan_lo": raw(0, 40, 3, math.nan, 40.0, [1.0, 0, 0, 0]),
     "raw_inf_coeff": raw(0, 40, 2, 0.0, 1.0, [math.inf, 1.0, 0.0]),
     "raw_overflow": raw(0, 40, 9, 0.0, 1e40, [1.0] + [0.0] * 9),
+    # flags bit4: the curve moved far from 0 (2^(8 + byte % 36)) and expanded about 0 again
+    "offset_domain_cubic": structured(16, 40, *cubic) + bytes([12]) + shrinking(),
+    "offset_domain_linear": structured(16, 8, 1, -1.0, 2.0, [1.0, 0.5], 0) + bytes([35]) + shrinking(2, 2),
+    "offset_domain_degree9": structured(16, 47, 9, 0.0, 1.0, [0.1] * 10, 40) + bytes([4]) + shrinking(3, 3),
     "forged_restore": structured(0, 16, *cubic) + shrinking(2) + bytes([0xF2, 60, 0]) + b"HYSS" + bytes(56)
         + bytes([0xF3, 100, 0]) + bytes(range(100)) + bytes([0xF6, 77, 1, 0xF6, 5, 0]),
 }
@@ -315,8 +319,8 @@ model_files.update({
 })
 # fuzz_everett.c: flags, degree, capacity, lo, span, y_lo (structured bytes),
 # the coefficients e[i][j] with i + j + 1 <= degree in row order, then samples.
-def everett(flags, degree, cap, lo, span, coeffs, samples):
-    return bytes([flags, degree, cap]) + sbyte(lo * 8) + bytes([span * 4 - 1]) + sbyte(16) + \
+def everett(flags, degree, cap, lo, span, coeffs, samples, y_lo_byte=16):
+    return bytes([flags, degree, cap]) + sbyte(lo * 8) + bytes([span * 4 - 1]) + sbyte(y_lo_byte) + \
         b"".join(sbyte(c * 32) for c in coeffs) + bytes(samples)
 
 
@@ -333,6 +337,13 @@ everett_seeds = {
     "everett_table_default_like": everett(0xF4, 2, 16, -1.0, 20, [0.5, 0.3, 1.0], zigzag * 3),
     "everett_table_one_interval": everett(0x14, 3, 8, 0.0, 16, [0.0, 0.5, -0.2, 1.0, 0.2, 0.5],
                                           zigzag * 2),
+    # few rows, many intervals (3 and 31): the blend of far rows, measured at the outputs
+    "everett_table_few_rows": everett(0xC4, 3, 16, 0.0, 16, [0.0, 0.5, -0.2, 1.0, 0.2, 0.5],
+                                      zigzag * 3),
+    # y_lo byte 0x80: 2^23, a 24-bit ADC's mid-scale; the fit's RMS (it cancelled) and the table
+    "everett_fit_24bit_offset": everett(0x06, 2, 16, -1.0, 20, [0.5, 0.3, 1.0], zigzag * 3, -128),
+    "everett_fit_24bit_offset_t1": everett(0x0A, 3, 16, 0.0, 16, [0.0, 0.5, -0.2, 1.0, 0.2, 0.5],
+                                           zigzag * 4, -128),
     # one interval, 15 rows: the error between init's probes exceeded the
     # measured one by 3 % (the harness allows twice the measured error)
     "regress_table_between_probes": bytes([0x3E, 0x81, 0x7F, 0x02, 0x00, 0x03, 0x0F, 0x00, 0xFF, 0x03]) +

@@ -31,7 +31,7 @@ hyst_status_t NUM_NAME(creep_reset)(hyst_creep_t *C, NUM_T x_rest)
     if (C->variant != (unsigned)NUM_VARIANT) {
         return HYST_ERR_LAYOUT;
     }
-    if (!NUM_NAME(creep_finite_)(x_rest)) {
+    if (!(x_rest >= -C->x_limit.NUM_F && x_rest <= C->x_limit.NUM_F)) { /* NaN too */
         return HYST_ERR_NONFINITE;
     }
     ++C->seq;
@@ -66,8 +66,8 @@ NUM_T NUM_NAME(creep_step)(hyst_creep_t *C, NUM_T x)
         return 0;
     }
     ++C->seq; /* every sample changes the state (snapshot.c) */
-    if (!NUM_NAME(creep_finite_)(x)) {
-        C->status = HYST_ERR_NONFINITE;
+    if (!(x >= -C->x_limit.NUM_F && x <= C->x_limit.NUM_F)) { /* NaN fails too */
+        C->status = NUM_NAME(creep_finite_)(x) ? HYST_ERR_DOMAIN : HYST_ERR_NONFINITE;
         C->events |= HYST_EVENT_NONFINITE;
         return NUM_NAME(creep_output)(C);
     }

@@ -55,6 +55,19 @@ static hyst_status_t init_any(hyst_creep_t *C, size_t n_terms, const hyst_wide_t
             return HYST_ERR_NONFINITE;
         }
     }
+    {
+        /* the drive limit: |s| <= L keeps x - s, the lags and c = sum w s finite */
+        hyst_wide_t sum = 0;
+        const hyst_wide_t top = variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_MAX
+                                                                      : HYST_WIDE_MAX;
+        for (k = 0u; k < n_terms; ++k) {
+            sum += hyst_wide_abs(hyst_num_get(&out.weight[k], variant));
+        }
+        (void)hyst_num_set(&out.x_limit, variant, top / (4 * (sum > 1 ? sum : 1)));
+        if (!(hyst_wide_abs(x_rest) <= hyst_num_get(&out.x_limit, variant))) {
+            return HYST_ERR_NONFINITE;
+        }
+    }
     out.variant = variant;
     out.n = n_terms;
     out.status = HYST_OK;

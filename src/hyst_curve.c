@@ -136,6 +136,28 @@ static int unit_increasing(const hyst_wide_t *g, unsigned n, hyst_wide_t *turn_u
     }
 }
 
+/* Bound on the error of hyst_unit_poly_()'s coefficients, as the error of
+ * f0(lo + span u) - f0(lo) and of f0(lo) for any u in [0, 1]: the Taylor
+ * shift by lo rounds each coefficient within gamma(2n) of the same shift of
+ * |c| by |lo|, the powers of the span add n + 1 roundings, and storing them in
+ * the variant's type is counted by rounding_bound(). Summed over
+ * u^k <= 1 that is gamma(3n + 2) P(|lo| + span), P(z) = sum |c_k| z^k.
+ * It is this term that grows when the domain lies far from 0 relative to
+ * its span (coefficients expanded about 0 cancel there). */
+hyst_wide_t hyst_unit_poly_error_(const hyst_wide_t *c, unsigned n, hyst_wide_t lo,
+                                  hyst_wide_t hi)
+{
+    const hyst_wide_t eps = HYST_WIDE_EPS / 2;
+    const hyst_wide_t z = hyst_wide_abs(lo) + (hi - lo);
+    const hyst_wide_t m = (hyst_wide_t)(3u * n + 2u) * eps;
+    hyst_wide_t p = 0;
+    unsigned k;
+    for (k = 0u; k <= n; ++k) {
+        p = p * z + hyst_wide_abs(c[k]);
+    }
+    return m / (1 - m) * p;
+}
+
 /* Normalised coefficients lowest power first: g[k] multiplies u^k. */
 void hyst_unit_poly_(hyst_wide_t *g, const hyst_wide_t *c, unsigned n,
                       hyst_wide_t lo, hyst_wide_t hi)
@@ -186,10 +208,13 @@ int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
  * sum |g_k| (the classical a-priori bound of Horner's rule; it is this term
  * that grows with cancelling coefficients). The sum y_k +- G rounds once
  * more: eps max |y|. gamma(m) = m eps / (1 - m eps), eps the unit roundoff.
+ * Storing g in the variant's type rounds each coefficient once more (one
+ * more eps in Horner's term). @p shift is the error of g itself
+ * (hyst_unit_poly_error_()): the curve that runs is f0 up to it.
  * Stores the bound, 1 % above, in curve->rounding; returns 0 if it exceeds
  * HYST_MAX_ROUNDING of the output range. */
 static int rounding_bound(hyst_curve_t *curve, const hyst_wide_t *g, unsigned n,
-                          unsigned variant)
+                          unsigned variant, hyst_wide_t shift)
 {
     const hyst_wide_t eps = variant == (unsigned)HYST_VARIANT_F64
                                 ? (hyst_wide_t)DBL_EPSILON / 2
@@ -211,11 +236,11 @@ static int rounding_bound(hyst_curve_t *curve, const hyst_wide_t *g, unsigned n,
     y_hi = hyst_wide_abs(g[0] + range);
     y_max = y_hi > hyst_wide_abs(g[0]) ? y_hi : hyst_wide_abs(g[0]);
     bound = (2 * eps / (1 - 2 * eps)) * slope +
-            ((hyst_wide_t)(2u * n + 1u) * eps / (1 - (hyst_wide_t)(2u * n + 1u) * eps)) * sum +
-            eps * y_max;
+            ((hyst_wide_t)(2u * n + 2u) * eps / (1 - (hyst_wide_t)(2u * n + 2u) * eps)) * sum +
+            eps * y_max + shift;
     bound *= (hyst_wide_t)1.01; /* the bound's own rounding, in hyst_wide_t */
     (void)hyst_num_set(&curve->rounding, variant, bound);
-    return bound <= (hyst_wide_t)HYST_MAX_ROUNDING * range;
+    return bound <= (hyst_wide_t)HYST_MAX_ROUNDING * range; /* NaN: refused */
 }
 
 hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsigned variant,
@@ -294,7 +319,7 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
     if (!hyst_poly_is_increasing(c, n, lo, hi, NULL)) {
         return HYST_ERR_NOT_INCREASING;
     }
-    if (!rounding_bound(&out, g, n, variant)) {
+    if (!rounding_bound(&out, g, n, variant, hyst_unit_poly_error_(c, n, lo, hi))) {
         return HYST_ERR_ILL_CONDITIONED;
     }
     *curve = out;

@@ -114,6 +114,9 @@ typedef struct {
     hyst_curve_t *c;
     hyst_ptr_t table;
     hyst_q31_t *q31; /* the q31 compensator's pieces (q31.h), else NULL */
+    /* a table given ready-made: its pieces measured, not built (NULL: build) */
+    hyst_cptr_t given;
+    int beyond; /* a given piece misses HYST_INV_TABLE_TOL (a build would solve it) */
     hyst_wide_t span, e_per_s, eps;
     hyst_wide_t u[4], d[4], m[4];
 } table_build_t;
@@ -242,7 +245,14 @@ static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has
     c[1] = m0;
     c[2] = 3 * dd - 2 * m0 - m1;
     c[3] = m0 + m1 - 2 * dd;
-    if (b->q31 != NULL) {
+    if (b->given.f32 != NULL) { /* measure the given piece itself */
+        for (i = 0u; i < 4u; ++i) {
+            c[i] = hyst_cptr_get(b->given, 4u * k + i, b->c->variant);
+        }
+        if (c[0] < 0) {
+            return 0; /* solved instead (its marking is checked by table_matches()) */
+        }
+    } else if (b->q31 != NULL) {
         if (!q31_piece(b->q31 + 4u * k, c)) {
             table_mark(b, k);
             return 0;
@@ -271,6 +281,10 @@ static hyst_wide_t table_piece(table_build_t *b, size_t k, int has_left, int has
                                   (hyst_wide_abs(c[0]) + hyst_wide_abs(c[1]) + hyst_wide_abs(c[2]) +
                                    hyst_wide_abs(c[3]));
     if (!(worst <= (hyst_wide_t)HYST_INV_TABLE_TOL * b->span)) {
+        if (b->given.f32 != NULL) {
+            b->beyond = 1;
+            return worst;
+        }
         table_mark(b, k);
         return 0;
     }
@@ -300,7 +314,7 @@ static hyst_wide_t table_pieces(table_build_t *b, size_t intervals)
             b->m[w] = b->m[w + 1u];
         }
     }
-    for (w = 0u; w < 4u; ++w) {
+    for (w = 0u; w < 4u && b->given.f32 == NULL; ++w) {
         const hyst_wide_t end = w == 0u ? b->span : 0;
         if (b->q31 != NULL) {
             b->q31[4u * intervals + w] = (hyst_q31_t)end;
@@ -373,6 +387,18 @@ static hyst_status_t table_prepare(hyst_curve_t *out, table_build_t *b, const hy
     return HYST_OK;
 }
 
+/* The drive's last rounding: the sample adds the table's drive step to its
+ * turning point's drive, in the variant's type, so the result rounds to
+ * eps |drive| (unit roundoff, doubled for the turning point's own); on a
+ * domain far from 0 relative to its span this is most of the error (f32 on
+ * [500000, 500010]: 3e-3 of the span, 3 000 times the pieces'). */
+hyst_wide_t hyst_drive_rounding_(const hyst_curve_t *inv)
+{
+    const hyst_wide_t lo = hyst_wide_abs(hyst_num_get(&inv->y_lo, inv->variant));
+    const hyst_wide_t hi = hyst_wide_abs(hyst_num_get(&inv->y_hi, inv->variant));
+    return hyst_real_eps(inv->variant) * (lo > hi ? lo : hi);
+}
+
 hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                         hyst_ptr_t table, size_t intervals, unsigned variant)
 {
@@ -385,7 +411,8 @@ hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *f
         return st;
     }
     b.table = table;
-    out.u.inv_table.max_err = hyst_table_err_(table_pieces(&b, intervals) / b.span);
+    out.u.inv_table.max_err =
+        hyst_table_err_((table_pieces(&b, intervals) + hyst_drive_rounding_(&out)) / b.span);
     *inv = out;
     return HYST_OK;
 }
@@ -443,6 +470,7 @@ hyst_status_t hyst_curve_inverse_table_const_(hyst_curve_t *inv, const hyst_curv
 {
     hyst_curve_t out;
     table_build_t b;
+    hyst_wide_t err;
     hyst_status_t st = seal == NULL ? HYST_ERR_NULL
                                     : table_prepare(&out, &b, inv, fwd, table, intervals, variant);
     if (st == HYST_OK) {
@@ -453,6 +481,14 @@ hyst_status_t hyst_curve_inverse_table_const_(hyst_curve_t *inv, const hyst_curv
         return st;
     }
     if (!table_matches(&b, table, intervals)) {
+        return HYST_ERR_CURVE;
+    }
+    /* what the seal claims: every piece measured as the build measures it,
+     * within HYST_INV_TABLE_TOL and the error sealed (a table whose pieces
+     * were changed and sealed again passed the knots' check) */
+    b.given = table;
+    err = hyst_table_err_((table_pieces(&b, intervals) + hyst_drive_rounding_(&out)) / b.span);
+    if (b.beyond || !(err <= seal->max_err)) {
         return HYST_ERR_CURVE;
     }
     out.u.inv_table.max_err = seal->max_err;

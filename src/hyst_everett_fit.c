@@ -138,6 +138,11 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
     if (!hyst_wide_is_finite(y)) {
         return HYST_ERR_NONFINITE;
     }
+    if (fit->used == 0u) {
+        fit->y_ref = y;
+    }
+    y -= fit->y_ref; /* about the first output: the residual below then does
+                      * not cancel against an offset (8.4e6: RMS 0.47 for an exact fit) */
     for (i = 0u; i < fit->cols; ++i) {
         for (j = 0u; j <= i; ++j) {
             fit->ata[i * HYST_EVERETT_FIT_COLS + j] += fit->r_prev[i] * fit->r_prev[j];
@@ -251,7 +256,7 @@ static void to_everett(const hyst_everett_fit_t *fit, const hyst_wide_t *s, hyst
     e->degree = fit->degree;
     e->lo = fit->lo;
     e->hi = fit->hi;
-    e->y_lo = s[0];
+    e->y_lo = s[0] + fit->y_ref; /* s[0] fits the outputs less y_ref */
     for (a = 1u, col = 1u; a <= fit->degree; ++a) {
         for (b = 0u; b <= last_j(fit, a); ++b) {
             e->e[a - 1u][b] = s[col++];
@@ -319,6 +324,14 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
     }
     if (constrained && st == HYST_OK && !(hyst_everett_range_(e) > 0)) {
         st = HYST_ERR_NOT_MONOTONE; /* flat: the curve refuses an E that never rises */
+    }
+    if (constrained && st == HYST_OK) { /* what else the curve refuses: its rounding bound */
+        hyst_curve_t curve;
+#if HYST_ENABLE_F64
+        st = hyst_curve_everett_(&curve, e, (unsigned)HYST_VARIANT_F64, HYST_LAYOUT);
+#else
+        st = hyst_curve_everett_(&curve, e, (unsigned)HYST_VARIANT_F32, HYST_LAYOUT);
+#endif
     }
     /* residual: y'y - 2 s'A'y + s'A s */
     ss = fit->yy;

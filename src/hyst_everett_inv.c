@@ -257,7 +257,11 @@ static hyst_wide_t entry(const build_t *b, size_t i)
  * inverse, at BLEND_ANCHORS anchors (r itself among them) and BLEND_PROBES
  * points each: the blend's drive d at the point is taken as exact for its
  * output step v = p(d) (one evaluation of the branch, no solve), and the
- * blend evaluated where the sample would for v. Plus a bound on the
+ * blend evaluated where the sample would for v; where v falls outside the
+ * interval (the blend is off by more than the interval is wide), the
+ * blend's d against the branch solved at the point's own output step.
+ * Skipping those instead hid the error when few rows were blended (3 rows,
+ * 16 384 intervals: 94 times the error reported). Plus a bound on the
  * rounding of the sample's arithmetic in the variant's type: the weights
  * (5 eps of each product) and the blend's four products and three sums
  * (4 eps), the cubic's (4 eps of its terms), the anchor's and the index's
@@ -292,11 +296,15 @@ static hyst_wide_t measure(const build_t *b, int fall, size_t r, size_t k)
             hyst_wide_t d = c[0] + t * (c[1] + t * (c[2] + t * c[3])), dp, s, err;
             d = d < 0 ? 0 : (d > end ? end : d);
             s = branch_p(&br, d / b->span, &dp) * (hyst_wide_t)b->intervals / range;
-            if (!(s >= (hyst_wide_t)k && s < (hyst_wide_t)k + 1)) {
-                continue; /* in a neighbour: measured there */
+            if (s >= (hyst_wide_t)k && s < (hyst_wide_t)k + 1) {
+                /* d is exact for its output, which falls in this interval: the
+                 * blend where the sample evaluates it (one evaluation) */
+                s -= (hyst_wide_t)k;
+                err = hyst_wide_abs(c[0] + s * (c[1] + s * (c[2] + s * c[3])) - d);
+            } else { /* off its interval: against the branch solved at this output step */
+                const hyst_wide_t v = ((hyst_wide_t)k + t) * range / (hyst_wide_t)b->intervals;
+                err = hyst_wide_abs(d - b->span * branch_solve(&br, v, d / b->span));
             }
-            s -= (hyst_wide_t)k;
-            err = hyst_wide_abs(c[0] + s * (c[1] + s * (c[2] + s * c[3])) - d);
             at_anchor = err > at_anchor ? err : at_anchor;
         }
         at_anchor += b->eps * (9 * mag + 4 * terms + 4 * b->span);
@@ -443,7 +451,7 @@ hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_cu
     b.table = table;
     fill_direction(&b, 0);
     fill_direction(&b, 1);
-    finish(&out, hyst_table_err_(b.worst / b.span), b.span);
+    finish(&out, hyst_table_err_((b.worst + hyst_drive_rounding_(&out)) / b.span), b.span);
     *inv = out;
     return HYST_OK;
 }
@@ -521,6 +529,27 @@ static int direction_matches(build_t *b, int fall)
     return 1;
 }
 
+/* A direction of a table given ready-made, measured as the build measures
+ * it: every interval the table evaluates within HYST_INV_TABLE_TOL (else a
+ * build would have solved it); the worst into b->worst. */
+static int direction_measured(build_t *b, int fall)
+{
+    size_t r, k;
+    for (k = 0u; k < b->intervals; ++k) {
+        if (entry(b, row_at(b, fall, 0u) + 4u * k) < 0) {
+            continue; /* solved instead, in every row (direction_matches()) */
+        }
+        for (r = 0u; r < b->rows; ++r) {
+            const hyst_wide_t err = measure(b, fall, r, k);
+            if (!(err <= (hyst_wide_t)HYST_INV_TABLE_TOL * b->span)) {
+                return 0;
+            }
+            b->worst = err > b->worst ? err : b->worst;
+        }
+    }
+    return 1;
+}
+
 hyst_status_t hyst_curve_everett_inverse_table_const_(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                                       hyst_cptr_t table, size_t rows,
                                                       size_t intervals,
@@ -539,6 +568,12 @@ hyst_status_t hyst_curve_everett_inverse_table_const_(hyst_curve_t *inv, const h
         return st;
     }
     if (!direction_matches(&b, 0) || !direction_matches(&b, 1)) {
+        return HYST_ERR_CURVE;
+    }
+    /* what the seal claims: the pieces measured, within the error sealed (a
+     * table whose pieces were changed and sealed again passed the knots) */
+    if (!direction_measured(&b, 0) || !direction_measured(&b, 1) ||
+        !(hyst_table_err_((b.worst + hyst_drive_rounding_(&out)) / b.span) <= seal->max_err)) {
         return HYST_ERR_CURVE;
     }
     finish(&out, seal->max_err, b.span);

@@ -40,6 +40,17 @@ static hyst_wide_t clenshaw(const hyst_wide_t *a, unsigned n, hyst_wide_t t)
 }
 
 /* Direction of travel of x: +1 rising, -1 falling, 0 not moved yet. */
+/* G(u) = sum g[k] u^k over k >= 1 (g lowest power first), Horner's rule. */
+static hyst_wide_t unit_horner(const hyst_wide_t *g, unsigned n, hyst_wide_t u)
+{
+    hyst_wide_t acc = 0;
+    unsigned k;
+    for (k = n; k >= 1u; --k) {
+        acc = (acc + g[k]) * u;
+    }
+    return acc;
+}
+
 static int classify(hyst_ident_dir_t *d, hyst_wide_t x)
 {
     if (d->started && x != d->x_prev) {
@@ -136,9 +147,9 @@ hyst_status_t hyst_ident_init_(hyst_ident_t *id, const hyst_ident_config_t *cfg,
     id->n_min = id->n_max = 0u;
     id->rising = id->falling = id->ignored = 0u;
     for (k = 0u; k <= HYST_MAX_DEGREE; ++k) {
-        id->cheb[k] = 0;
+        id->unit_poly[k] = 0;
     }
-    id->shift = 0;
+    id->y_top = 0;
     id->ss = 0;
     id->max_abs = 0;
     id->checked = 0u;
@@ -265,7 +276,8 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
     const unsigned n = id == NULL ? 0u : id->degree;
     const unsigned m = n + 3u;
     hyst_wide_t z[HYST_MAX_DEGREE + 1];
-    hyst_wide_t s = 0, big = 0, ra, rb, rc;
+    hyst_wide_t g[HYST_MAX_DEGREE + 1];
+    hyst_wide_t s = 0, big = 0, top = 0, ra, rb, rc;
     hyst_ident_result_t out;
     unsigned i, j;
 
@@ -301,6 +313,21 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
         }
         z[i] = acc / ri[0];
     }
+    /* The coefficients in user units are what a curve runs on: refuse them
+     * where expanding about 0 costs more than a curve accepts (a domain far
+     * from 0 relative to its span), as hyst_*_curve_from_poly() would. */
+    to_user_units(out.coeffs, z, n, id->mid, id->inv_half);
+    hyst_unit_poly_(g, out.coeffs, n, id->lo, id->hi);
+    for (i = 1u; i <= n; ++i) {
+        top += g[i];
+    }
+    {
+        const hyst_wide_t err = hyst_unit_poly_error_(out.coeffs, n, id->lo, id->hi);
+        if (hyst_wide_is_finite(err) && hyst_wide_is_finite(top) && /* else: not finite, below */
+            err > (hyst_wide_t)HYST_MAX_ROUNDING * hyst_wide_abs(top)) {
+            return HYST_ERR_ILL_CONDITIONED;
+        }
+    }
     ra = id->r[row_at(n + 1u, m)];
     rb = id->r[row_at(n + 1u, m) + 1u];
     rc = id->r[row_at(n + 2u, m)];
@@ -316,11 +343,10 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
     out.rising = id->rising;
     out.falling = id->falling;
     for (i = 0u; i <= HYST_MAX_DEGREE; ++i) {
-        out.coeffs[i] = 0;
-        id->cheb[i] = i <= n ? z[i] : 0;
+        out.coeffs[i] = i <= n ? out.coeffs[i] : 0;
+        id->unit_poly[i] = i <= n ? g[i] : 0;
     }
-    to_user_units(out.coeffs, z, n, id->mid, id->inv_half);
-    id->shift = clenshaw(z, n, -1) + clenshaw(z, n, 1);
+    id->y_top = g[0] + top;
     if (id->method != HYST_IDENT_REFLECT) {
         out.y_lo_est = clenshaw(z, n, -1);
         out.y_hi_est = clenshaw(z, n, 1);
@@ -342,7 +368,7 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
 hyst_status_t hyst_ident_check(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y)
 {
     hyst_status_t st;
-    hyst_wide_t t, e;
+    hyst_wide_t span, e;
     int dir;
     if (id->phase != 1) {
         return HYST_ERR_ARG;
@@ -355,11 +381,14 @@ hyst_status_t hyst_ident_check(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y)
     if (dir == 0) {
         return HYST_OK;
     }
-    t = (x - id->mid) * id->inv_half;
+    /* against the returned coefficients as a curve runs them (the branches
+     * from (lo, f0(lo)) and (hi, f0(hi))), not the fit's own basis: the
+     * residual is that of the model the caller gets */
+    span = id->hi - id->lo;
     if (dir > 0) {
-        e = y - clenshaw(id->cheb, id->degree, t);
+        e = y - (id->unit_poly[0] + unit_horner(id->unit_poly, id->degree, (x - id->lo) / span));
     } else {
-        e = y - (id->shift - clenshaw(id->cheb, id->degree, -t));
+        e = y - (id->y_top - unit_horner(id->unit_poly, id->degree, (id->hi - x) / span));
     }
     id->ss += e * e;
     e = hyst_wide_abs(e);

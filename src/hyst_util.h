@@ -234,6 +234,9 @@ int hyst_nnls_(const hyst_nnls_t *f, hyst_wide_t tol);
  * polynomial in u = (x - lo) / (hi - lo): g[k] multiplies u^k. */
 void hyst_unit_poly_(hyst_wide_t *g, const hyst_wide_t *c, unsigned n, hyst_wide_t lo,
                      hyst_wide_t hi);
+/* Bound on the error of those g, as an error of f0 on [lo, hi] (src/hyst_curve.c). */
+hyst_wide_t hyst_unit_poly_error_(const hyst_wide_t *c, unsigned n, hyst_wide_t lo,
+                                  hyst_wide_t hi);
 
 /* What bounded memory keeps besides the TPs, in wide numbers (snapshots):
  * the stack level of the shallowest live merge ((size_t)-1: none), its
@@ -286,6 +289,8 @@ unsigned long hyst_crc_word_(unsigned long crc, unsigned long w);
  * and the seal's check of a table given ready-made (src/hyst_table_seal.c):
  * HYST_OK or HYST_ERR_CRC. */
 hyst_wide_t hyst_table_err_(hyst_wide_t err);
+/* An inverse curve's last rounding of the drive (src/hyst_curve_inv.c). */
+hyst_wide_t hyst_drive_rounding_(const hyst_curve_t *inv);
 hyst_status_t hyst_table_seal_check_(unsigned kind, unsigned variant, hyst_cptr_t table,
                                      size_t rows, size_t intervals, const hyst_table_seal_t *seal);
 /* A row of a table given ready-made (its intervals' four numbers from

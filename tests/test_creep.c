@@ -8,6 +8,7 @@
 #include "support.h"
 #include "unity.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -256,6 +257,51 @@ static void test_reset(void)
         const hyst_real_t xi = walk(&x, -1.0, 1.0);
         TEST_ASSERT_TRUE(hyst_creep_step(&K, xi) == hyst_creep_step(&L, xi));
     }
+}
+
+/* Finite drives near the type's largest number: x - s overflowed and the
+ * lags became NaN for good, status OK (float, drives near 3e38); a large
+ * weight overflowed the contribution. A drive beyond the limit (the largest
+ * number / (4 max(1, sum |w|))) is refused as a NaN is, nothing moves;
+ * at the limit, every lag and output stays finite. */
+static void test_extreme_drives_are_refused_not_overflowing(void)
+{
+#ifdef HYST_USE_DOUBLE
+    const double top = DBL_MAX;
+#else
+    const double top = FLT_MAX;
+#endif
+    static const hyst_wide_t tau[2] = {3.0, 30.0}, w[2] = {1.0, -0.5};
+    const hyst_wide_t big_w[1] = {1e30}, tau1[1] = {5.0};
+    const double limit = top / 6.0; /* sum |w| = 1.5 */
+    long i;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&K, 2u, tau, w, 0.0));
+    for (i = 0; i < 40; ++i) {
+        hyst_creep_t copy = K;
+        const hyst_real_t c = hyst_creep_output(&K);
+        const hyst_real_t x = (hyst_real_t)((i % 2 ? -0.9 : 0.9) * top);
+        TEST_ASSERT_TRUE(hyst_creep_step(&K, x) == c);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_creep_status(&K));
+        TEST_ASSERT_EQUAL_MEMORY(copy.state, K.state, sizeof K.state);
+    }
+    TEST_ASSERT_EQUAL_UINT(HYST_EVENT_NONFINITE, hyst_creep_events(&K));
+    for (i = 0; i < 200; ++i) { /* at the limit, both signs: finite */
+        const hyst_real_t x = (hyst_real_t)((i % 7 < 3 ? -0.999 : 0.999) * limit);
+        const hyst_real_t c = hyst_creep_step(&K, x);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_status(&K));
+        TEST_ASSERT_TRUE(c - c == 0 && hyst_creep_output(&K) - hyst_creep_output(&K) == 0);
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NONFINITE, hyst_creep_init(&L, 2u, tau, w, 0.9 * top));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NONFINITE, hyst_creep_reset(&K, (hyst_real_t)(0.9 * top)));
+    /* a large weight: the contribution's limit */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&L, 1u, tau1, big_w, 0.0));
+    (void)hyst_creep_step(&L, (hyst_real_t)(top / 1e30));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_creep_status(&L));
+    for (i = 0; i < 100; ++i) {
+        (void)hyst_creep_step(&L, (hyst_real_t)(0.2 * top / 1e30));
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_status(&L));
+    TEST_ASSERT_TRUE(hyst_creep_output(&L) - hyst_creep_output(&L) == 0);
 }
 
 static void test_nonfinite_sample_leaves_the_state(void)
@@ -615,6 +661,7 @@ int main(void)
     RUN_TEST(test_state_error_within_the_stated_bound);
     RUN_TEST(test_reset);
     RUN_TEST(test_nonfinite_sample_leaves_the_state);
+    RUN_TEST(test_extreme_drives_are_refused_not_overflowing);
     RUN_TEST(test_strictly_causal);
     RUN_TEST(test_compensation_round_trip);
     RUN_TEST(test_fit_recovers_weights_under_noise);

@@ -284,6 +284,66 @@ static void test_flat_record_is_refused(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve_unconstrained(&fit, &e, NULL));
 }
 
+/* An output offset far above the range (a 24-bit ADC at mid-scale,
+ * 8 388 608 counts): the residual y'y - 2 s'A'y + s'A s cancelled, and an
+ * exact fit reported RMS 0.47. Now about the first output: the RMS of an
+ * exact fit stays at the rounding level, and with noise it is the RMS of
+ * the residual of the E returned, run over the record (both within 1e-6 of
+ * the range). An offset so far above the range that the curve refuses E
+ * (its rounding bound) is refused by the fit too (it returned OK). */
+static void test_offset_outputs_report_their_residual(void)
+{
+    static hyst_everett_fit_t fit;
+    static ref_everett_t r, fitted;
+    int trial, checked = 0;
+    for (trial = 0; trial < 12; ++trial) {
+        hyst_everett_t e = ref_everett_random(&rng), got;
+        hyst_wide_t rms = -1;
+        hyst_curve_t c;
+        const double noise = trial % 2 ? 0.0 : 0.05;
+        double v = (double)e.lo, range, ss = 0.0;
+        long k;
+        e.y_lo += 8388608.0;
+        if (hyst_f64_curve_from_everett(&c, &e) != HYST_OK) {
+            continue;
+        }
+        range = ref_everett_e(&e, e.hi, e.lo);
+        ref_everett_init(&r, &e);
+        for (k = 0; k < RECORD; ++k) {
+            rx[k] = ref_everett_walk(&rng, &v, (double)e.lo, (double)e.hi);
+            ry[k] = ref_everett_step(&r, rx[k]) + noise * range * rng_gauss(&rng);
+        }
+        fit_record(&fit, e.degree, (double)e.lo, (double)e.hi, RECORD);
+        if (hyst_everett_fit_solve(&fit, &got, &rms) != HYST_OK) {
+            continue; /* a noisy record's E the curve refuses */
+        }
+        ref_everett_init(&fitted, &got);
+        for (k = 0; k < RECORD; ++k) {
+            const double d = ry[k] - ref_everett_step(&fitted, rx[k]);
+            ss += d * d;
+        }
+        ss = sqrt(ss / (double)RECORD);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-6 * range, ss, (double)rms);
+        ++checked;
+    }
+    TEST_ASSERT_TRUE(checked >= 6);
+    {
+        hyst_everett_t e = ref_everett_random(&rng), got;
+        hyst_curve_t c;
+        double v = (double)e.lo;
+        long k;
+        e.y_lo = 1e15; /* eps y_lo: 0.2, above 1e-4 of any range below 2000 */
+        ref_everett_init(&r, &e);
+        for (k = 0; k < RECORD; ++k) {
+            rx[k] = ref_everett_walk(&rng, &v, (double)e.lo, (double)e.hi);
+            ry[k] = ref_everett_step(&r, rx[k]);
+        }
+        fit_record(&fit, 1u, (double)e.lo, (double)e.hi, RECORD);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_ILL_CONDITIONED, hyst_everett_fit_solve(&fit, &got, NULL));
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_ILL_CONDITIONED, hyst_f64_curve_from_everett(&c, &got));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -292,5 +352,6 @@ int main(void)
     RUN_TEST(test_monotone_least_squares_is_kept_bit_for_bit);
     RUN_TEST(test_major_loops_alone_are_singular_above_degree_2);
     RUN_TEST(test_flat_record_is_refused);
+    RUN_TEST(test_offset_outputs_report_their_residual);
     return UNITY_END();
 }

@@ -250,6 +250,55 @@ static void test_non_increasing_fit_is_reported_with_turn(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e3 * TOL_OF_RANGE, -6.0, (double)res.coeffs[1]);
 }
 
+/* An S-shaped curve on [1000, 1010], a bias voltage's range. */
+static double offset_curve(double x)
+{
+    const double u = (x - 1000.0) / 10.0;
+    return 2.9 * (tanh(3.0 * (u - 0.5)) / tanh(1.5) + 1.0) + 2.0 + 0.4 * sin(7.0 * u);
+}
+
+/* A domain far from 0 relative to its span: expanded about 0, the
+ * coefficients of degree 9 on [1000, 1010] cancel by 2^70 there, and the
+ * fit's residual (6.6e-9 in its own basis) said nothing of the polynomial
+ * returned (RMS 1.03 on a range of 5.8 when run). Every degree is refused or
+ * reports the residual of the coefficients it returns (evaluated exactly). */
+static void test_fits_far_from_zero_are_refused_or_report_their_residual(void)
+{
+    const size_t n = loop_triangle(offset_curve, 1000.0, 1010.0, 200, 3);
+    unsigned degree;
+    int refused = 0;
+    for (degree = 1u; degree <= 9u; ++degree) {
+        hyst_ident_result_t res;
+        const hyst_status_t st = fit(HYST_IDENT_JOINT, degree, n, &res);
+        double ss = 0.0, y_lo, y_hi;
+        size_t i;
+        if (st == HYST_ERR_ILL_CONDITIONED) {
+            ++refused;
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, st);
+        y_lo = poly_eval_exact(res.coeffs, degree, 1000.0);
+        y_hi = poly_eval_exact(res.coeffs, degree, 1010.0);
+        for (i = 1u; i < n; ++i) {
+            const double x = (double)xs[i];
+            const int rising = (double)xs[i] > (double)xs[i - 1u];
+            const double e = (double)ys[i] - (rising ? poly_eval_exact(res.coeffs, degree, x)
+                                                     : y_lo + y_hi - poly_eval_exact(res.coeffs, degree,
+                                                                                     2010.0 - x));
+            ss += e * e;
+        }
+        ss = sqrt(ss / (double)(n - 1u));
+        printf("degree %u on [1000, 1010]: rms %.6g, of the coefficients returned %.6g\n", degree,
+               (double)res.rms, ss);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-4 * 5.8 + 0.01 * ss, ss, (double)res.rms);
+    }
+    TEST_ASSERT_TRUE(refused >= 1);
+    {
+        hyst_ident_result_t res;
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_ILL_CONDITIONED, fit(HYST_IDENT_JOINT, 9u, n, &res));
+    }
+}
+
 /* Slow identification on huge outputs (docs/reliability.md, fuzz/slow/regress_ident_overflow_solve):
  * outputs near DBL_MAX overflow the Givens rotations and the coefficients are
  * not finite. hyst_ident_solve() used to spend ~2^21 Bernstein evaluations
@@ -512,6 +561,7 @@ int main(void)
     RUN_TEST(test_noisy_simulations_favour_joint);
     RUN_TEST(test_eq20_cubic_is_returned_exactly);
     RUN_TEST(test_degree9_on_dac_codes_is_sound);
+    RUN_TEST(test_fits_far_from_zero_are_refused_or_report_their_residual);
     RUN_TEST(test_non_increasing_fit_is_reported_with_turn);
     RUN_TEST(test_overflowing_outputs_are_reported_not_increasing);
     RUN_TEST(test_overflowing_fit_is_not_increasing_at_once);

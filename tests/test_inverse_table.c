@@ -167,6 +167,47 @@ static void test_error_on_random_increasing_polynomials(void)
     }
 }
 
+/* Domains far from 0 relative to their span ([1000, 1010] to [500000,
+ * 500010]): the drive adds the table's drive step to its turning point's
+ * drive, and in float that sum rounds to 1/32 at 500000, 3 000 times the
+ * pieces' error, which init did not count. The compensator from reset, up
+ * the whole output range: every drive within the error reported of the
+ * exact inverse of the model's own G. */
+static void test_offset_domains_within_the_reported_error(void)
+{
+    static const double offsets[4] = {1000.0, 20000.0, 131072.0, 500000.0};
+    unsigned i;
+    for (i = 0u; i < 4u; ++i) {
+        const double off = offsets[i];
+        hyst_poly_t f;
+        double worst = 0.0, allowed, span;
+        long k;
+        memset(&f, 0, sizeof f);
+        f.degree = 2u; /* 0.5 t + 0.02 t^2, t = x - off */
+        f.lo = off;
+        f.hi = off + 10.0;
+        f.coeffs[0] = 0.02;
+        f.coeffs[1] = 0.5 - 0.04 * off;
+        f.coeffs[2] = 0.02 * off * off - 0.5 * off;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&fwd, &f));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse_table(&inv, &fwd, table, HYST_INV_TABLE));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&K, &inv, il, jl, ir, jr, CAP));
+        span = (double)inv.u.inv_table.span.HYST_R;
+        allowed = (double)hyst_curve_inverse_error(&inv) * span;
+        for (k = 1; k <= 4000L; ++k) {
+            const hyst_real_t y = (hyst_real_t)((double)inv.lo.HYST_R +
+                                                range_of(&inv) * (double)k / 4000.0);
+            const double drive = (double)hyst_step(&K, y);
+            const double exact = (double)inv.y_lo.HYST_R +
+                                 exact_d(&inv, (double)y - (double)inv.lo.HYST_R);
+            worst = fmax(worst, dabs(drive - exact));
+        }
+        printf("domain [%g, %g]: worst drive error %.3g of the span, %.3g of the error reported\n",
+               off, off + 10.0, worst / span, worst / allowed);
+        TEST_ASSERT_TRUE(worst <= allowed);
+    }
+}
+
 /* Flat points: x^3 and x^5 at 0 on [-1, 1] (mid-range), x^2 at lo on
  * [0, 1]: infinite inverse slope; the intervals next to them are exact. */
 static void test_error_at_flat_points(void)
@@ -391,6 +432,7 @@ int main(void)
     RUN_TEST(test_error_on_identified_curve);
     RUN_TEST(test_error_on_random_increasing_polynomials);
     RUN_TEST(test_error_at_flat_points);
+    RUN_TEST(test_offset_domains_within_the_reported_error);
     RUN_TEST(test_drive_monotone_along_sweeps);
     RUN_TEST(test_block_equals_step);
     RUN_TEST(test_snapshot_round_trip);

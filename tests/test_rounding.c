@@ -48,12 +48,11 @@ static hyst_poly_t monomial(unsigned n, double lo, double hi)
 /* A random increasing polynomial of odd degree 2m + 1 <= 9 on a random
  * domain (bipolar ones included): f0' = c + q(x)^2 with q random of degree
  * m, integrated. */
-static hyst_poly_t random_increasing(void)
+static hyst_poly_t random_increasing_on(double centre, double half)
 {
     hyst_poly_t f;
     double q[5], d[9], scale;
     const unsigned m = rng_below(&rng, 5u), n = 2u * m + 1u;
-    const double centre = rng_range(&rng, -60.0, 60.0), half = rng_range(&rng, 0.5, 100.0);
     unsigned i, j;
     for (i = 0u; i <= m; ++i) {
         q[i] = rng_range(&rng, -1.0, 1.0); /* q[i] multiplies t^i, t = (x - centre) / half */
@@ -99,6 +98,66 @@ static hyst_poly_t random_increasing(void)
         }
     }
     return f;
+}
+
+static hyst_poly_t random_increasing(void)
+{
+    const double centre = rng_range(&rng, -60.0, 60.0), half = rng_range(&rng, 0.5, 100.0);
+    return random_increasing_on(centre, half);
+}
+
+/* Curves far from 0 relative to their span, given expanded about 0 (as a
+ * fit in volts or codes prints them): the conversion to the domain cancels
+ * (1e-3 (x - 1e9)^3 + (x - 1e9) on [1e9, 1e9 + 10] was accepted with a
+ * bound of 1.5e-8 and outputs 3.6e7 off). Each curve is refused or every
+ * output of its rising major branch lies within its stated bound of the
+ * exact value of the coefficients given (double-double). Domains and inputs
+ * are exact in the build's type (a centre of 8 bits times a power of two,
+ * a power-of-two half-span, 256 steps). */
+static void test_curves_far_from_zero_are_refused_or_within_the_bound(void)
+{
+#ifdef HYST_USE_DOUBLE
+    const unsigned widest = 30u; /* log2(centre / half) up to */
+#else
+    const unsigned widest = 9u;
+#endif
+    const hyst_poly_t issue = {3u, 1e9, 1e9 + 10.0, {1e-3, -3e6, 3e15 + 1.0, -1e24 - 1e9}};
+    int curve, accepted = 0, refused = 0;
+    double worst = 0.0;
+#ifdef HYST_USE_DOUBLE
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ILL_CONDITIONED, hyst_init(&S, &issue, xl, yl, xr, yr, CAP));
+#else /* lo and hi are one float apart */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_init(&S, &issue, xl, yl, xr, yr, CAP));
+#endif
+    for (curve = 0; curve < 80; ++curve) {
+        const double half = ldexp(1.0, (int)rng_below(&rng, 12u) - 4);
+        const unsigned ratio = 3u + rng_below(&rng, widest - 2u);
+        const double centre = (rng_below(&rng, 2u) ? -1.0 : 1.0) *
+                              (double)(1u + 2u * rng_below(&rng, 128u)) * half *
+                              ldexp(1.0, (int)ratio - 7);
+        const hyst_poly_t f = random_increasing_on(centre, half);
+        const hyst_status_t st = hyst_init(&S, &f, xl, yl, xr, yr, CAP);
+        double bound;
+        long k;
+        if (st == HYST_ERR_ILL_CONDITIONED || st == HYST_ERR_NOT_INCREASING) {
+            ++refused; /* the rounded expansion may also dip */
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, st);
+        ++accepted;
+        bound = (double)hyst_rounding_bound(&S);
+        for (k = 1; k <= 256; ++k) {
+            const double x = f.lo + (f.hi - f.lo) * (double)k / 256.0;
+            const double y = (double)hyst_step(&S, (hyst_real_t)x);
+            const double err = fabs(y - poly_eval_exact(f.coeffs, f.degree, x)) /
+                               ((double)(hyst_tp_count(&S) + 1u) * bound);
+            worst = err > worst ? err : worst;
+            TEST_ASSERT_TRUE_MESSAGE(err <= 1.0, "an output beyond its stated rounding bound");
+        }
+    }
+    TEST_PRINTF("offset domains: %d accepted, %d refused; worst error %g of its bound", accepted,
+                refused, worst);
+    TEST_ASSERT_TRUE(accepted >= 10 && refused >= 10);
 }
 
 /* Curves whose float evaluation loses more than HYST_MAX_ROUNDING of the
@@ -402,6 +461,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_ill_conditioned_curves_are_refused_in_float);
     RUN_TEST(test_outputs_within_the_stated_bound);
+    RUN_TEST(test_curves_far_from_zero_are_refused_or_within_the_bound);
     RUN_TEST(test_paper_curve_through_adjacent_inputs);
     RUN_TEST(test_sweeps_through_wipe_outs_are_monotone);
     RUN_TEST(test_moving_back_inside_the_deadband_is_monotone);

@@ -72,6 +72,9 @@ typedef struct hyst_creep {
     hyst_num_t alpha[HYST_CREEP_MAX_TERMS];  /**< a_k = 1 / tau_k, in the variant's type */
     hyst_num_t weight[HYST_CREEP_MAX_TERMS]; /**< w_k */
     hyst_num_t state[HYST_CREEP_MAX_TERMS];  /**< s_k, the lags of the drive */
+    /** largest |drive| taken: the type's largest number / (4 max(1, sum |w_k|)),
+     *  so that no lag, difference or contribution overflows */
+    hyst_num_t x_limit;
     int status;                              /**< hyst_status_t of the last sample */
     unsigned events;                         /**< sticky HYST_EVENT_* flags */
     unsigned long seq;                       /**< changed by every change of the state
@@ -94,8 +97,9 @@ typedef struct hyst_creep {
  * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_LAYOUT (caller built with other
  *         layout options); HYST_ERR_ARG (n_terms, or a tau); HYST_ERR_WEIGHTS
  *         (a weight not finite, or beyond the type's range); HYST_ERR_NONFINITE
- *         (x_rest not finite, or beyond the type's range). Nothing written
- *         on error.
+ *         (x_rest not finite, or beyond the type's range, or beyond the drive
+ *         limit: the type's largest number / (4 max(1, sum |w_k|))). Nothing
+ *         written on error.
  */
 /**@{*/
 hyst_status_t hyst_f32_creep_init_(hyst_creep_t *C, size_t n_terms, const hyst_wide_t *tau,
@@ -117,8 +121,8 @@ hyst_status_t hyst_f64_creep_init_(hyst_creep_t *C, size_t n_terms, const hyst_w
  * @brief Every state to @p x_rest (the actuator rested at that drive);
  *        status HYST_OK, events cleared.
  * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_LAYOUT (not an initialised
- *         instance of this variant); HYST_ERR_NONFINITE (x_rest NaN or
- *         infinite). Nothing changed on error.
+ *         instance of this variant); HYST_ERR_NONFINITE (x_rest NaN,
+ *         infinite or beyond the drive limit). Nothing changed on error.
  */
 /**@{*/
 hyst_status_t hyst_f32_creep_reset(hyst_creep_t *C, float x_rest);
@@ -147,7 +151,11 @@ double hyst_f64_creep_output(const hyst_creep_t *C);
  *        history.
  *
  * A NaN or infinite @p x is ignored: c[n] returned, state unchanged, status
- * HYST_ERR_NONFINITE, event HYST_EVENT_NONFINITE. NULL: 0.
+ * HYST_ERR_NONFINITE, event HYST_EVENT_NONFINITE. So is a finite @p x beyond
+ * the drive limit (hyst_creep_t.x_limit: 8.5e37 / max(1, sum |w_k|) in
+ * float), with status HYST_ERR_DOMAIN: a lag or the contribution would
+ * overflow (near 3e38 in float the lags became NaN for good, status OK).
+ * NULL: 0.
  */
 /**@{*/
 float hyst_f32_creep_step(hyst_creep_t *C, float x);

@@ -331,7 +331,9 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
  * range (next to a flat point of f0, where d has an infinite slope) is
  * evaluated exactly per sample instead (bisection in the interval's
  * bracket, out of line). hyst_curve_inverse_error() reports the worst
- * measured error. The table is caller storage of
+ * measured error plus the drive's last rounding (the drive step added to
+ * the turning point's drive, eps |drive|: most of it on a domain far from 0
+ * relative to its span). The table is caller storage of
  * HYST_INV_TABLE_LEN(@p intervals) numbers of the variant's type that must
  * outlive the curve, unchanged; @p inv keeps a pointer to it.
  * @param[out] inv prepared inverse curve.
@@ -373,7 +375,7 @@ hyst_status_t hyst_f64_curve_inverse_table(hyst_curve_t *inv, const hyst_curve_t
  * HYST_INV_TABLE_TOL of the drive range anywhere is solved instead, in every
  * row, as hyst_curve_inverse()'s compensator does (Newton's iteration,
  * bracketed, out of line). hyst_curve_inverse_error() reports the worst
- * measured error. The drive is monotone along a branch (the engine's guard).
+ * measured error plus the drive's last rounding. The drive is monotone along a branch (the engine's guard).
  * The table is caller storage of HYST_EVERETT_INV_TABLE_LEN(@p rows,
  * @p intervals) numbers that must outlive the curve, unchanged.
  * @param[out] inv prepared inverse curve.
@@ -440,10 +442,12 @@ hyst_status_t hyst_curve_table_seal(const hyst_curve_t *inv, hyst_table_seal_t *
  * exactly are marked alike in every row (HYST_ERR_CURVE otherwise: a table
  * of another model;
  * the table is in output steps relative to a branch's whole step, so the
- * model times a constant has the same table, and is accepted). The cost: the
- * checksum (one pass over the table), the shape and those evaluations, on a
- * Cortex-M4F 1.45 million instructions against 145 million for the
- * asymmetric compensator's default table (docs/pi_and_inverse.md). The
+ * model times a constant has the same table, and is accepted), and then
+ * what the seal claims: every piece the table evaluates is measured as the
+ * build measures it, within HYST_INV_TABLE_TOL and within the error sealed
+ * (HYST_ERR_CURVE otherwise: pieces changed and sealed again). The cost is
+ * that measurement's, about the build's (the knots are not solved again);
+ * what is saved is the table's RAM. The
  * table must hold the counts' numbers
  * (HYST_INV_TABLE_LEN(@p intervals), HYST_EVERETT_INV_TABLE_LEN(@p rows,
  * @p intervals)) and outlive the curve, unchanged.

@@ -110,8 +110,9 @@ typedef struct hyst_ident {
     size_t n_min, n_max;        /**< samples at those inputs */
     size_t rising, falling;     /**< samples used, by branch */
     size_t ignored;             /**< non-finite, out of domain or before the first move */
-    hyst_wide_t cheb[HYST_MAX_DEGREE + 1]; /**< solution, Chebyshev basis in t */
-    hyst_wide_t shift;          /**< f0(lo) + f0(hi) of the solution */
+    /** solution as a curve runs it: f0(lo + u (hi - lo)) = sum unit_poly[k] u^k */
+    hyst_wide_t unit_poly[HYST_MAX_DEGREE + 1];
+    hyst_wide_t y_top;          /**< f0(hi) of the solution */
     hyst_wide_t ss, max_abs;    /**< check pass: squared sum, max |residual| */
     size_t checked;             /**< check pass: samples compared */
 } hyst_ident_t;
@@ -168,8 +169,13 @@ hyst_status_t hyst_ident_add(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y);
  * least-squares RMS; the monotonicity check) and switches @p id to the
  * check pass: further samples go to hyst_ident_check().
  * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_ARG (already solved);
- *         HYST_ERR_SINGULAR (too few distinct inputs for degree n).
+ *         HYST_ERR_SINGULAR (too few distinct inputs for degree n);
+ *         HYST_ERR_ILL_CONDITIONED (the coefficients in user units cannot
+ *         hold the fit: a domain far from 0 relative to its span, where the
+ *         expanded coefficients cancel by more than a curve accepts,
+ *         HYST_MAX_ROUNDING of the output range; @p res not written).
  *         A fit that does not increase is still HYST_OK: see res->increasing.
+ *         The check pass compares with those coefficients as a curve runs them.
  */
 hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res);
 
@@ -373,7 +379,8 @@ typedef struct hyst_everett_fit {
     hyst_wide_t r_prev[HYST_EVERETT_FIT_COLS];  /**< its regressors */
     hyst_wide_t ata[HYST_EVERETT_FIT_COLS * HYST_EVERETT_FIT_COLS]; /**< normal equations */
     hyst_wide_t aty[HYST_EVERETT_FIT_COLS];
-    hyst_wide_t yy;    /**< sum of y^2 */
+    hyst_wide_t y_ref; /**< the first output: aty and yy take y - y_ref */
+    hyst_wide_t yy;    /**< sum of (y - y_ref)^2 */
     size_t used;       /**< samples in the normal equations */
 } hyst_everett_fit_t;
 
@@ -442,7 +449,13 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
  *         constrained solution did not converge to an E the curve accepts,
  *         a rounding-level failure, or the E fitted is flat, E(hi, lo) not
  *         above 0: outputs that never rise, or rise by less than the
- *         type resolves; @p e and @p rms hold it all the same).
+ *         type resolves; @p e and @p rms hold it all the same); or what
+ *         else the curve refuses that E with (in double, or in float
+ *         without the f64 variant), HYST_ERR_ILL_CONDITIONED when its
+ *         rounding bound exceeds HYST_MAX_ROUNDING of its range (an
+ *         output offset far above the range); @p e and @p rms hold it
+ *         then too. The RMS is computed about the first output, so an
+ *         offset does not cancel it.
  */
 hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
                                      hyst_wide_t *rms);

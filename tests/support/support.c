@@ -109,3 +109,23 @@ hyst_poly_t poly_random_increasing(rng_t *r, unsigned degree)
     }
     return f;
 }
+
+/* Horner's rule in double-double (fma gives each product's error exactly):
+ * about 106 bits, so coefficients expanded about 0 that cancel by 2^60 on
+ * the domain still leave 2^-46 of the result. */
+double poly_eval_exact(const hyst_wide_t *c, unsigned degree, double x)
+{
+    double hi = (double)c[0], lo = 0.0;
+    unsigned k;
+    for (k = 1u; k <= degree; ++k) {
+        double p = hi * x, e = fma(hi, x, -p) + lo * x, s, t;
+        hi = p + e; /* (p, e) normalised */
+        lo = e - (hi - p);
+        s = hi + (double)c[k];
+        t = s - hi;
+        lo += (hi - (s - t)) + ((double)c[k] - t);
+        hi = s + lo;
+        lo = lo - (hi - s);
+    }
+    return hi + lo;
+}

@@ -55,4 +55,9 @@ hyst_poly_t poly_monomial(unsigned degree, double lo, double hi);
  * lo in [0, 5], hi - lo in [1, 4000], terms of comparable size at hi. */
 hyst_poly_t poly_random_increasing(rng_t *r, unsigned degree);
 
+/* f0 with coefficients c (highest power first) at x, in double-double: the
+ * exact value of those coefficients' polynomial to about 2^-100 of the
+ * largest term, a reference where Horner's rule in double cancels. */
+double poly_eval_exact(const hyst_wide_t *c, unsigned degree, double x);
+
 #endif

@@ -195,6 +195,11 @@ static int tcm_step(void *ctx, double x, double *y, int *clamped)
     if ((hyst_events(&r->S) & HYST_EVENT_FULL) != 0u) {
         return cli_fail(r->cmd, "internal error: turning-point memory full");
     }
+    if (r->model != NULL && (hyst_creep_status(&r->creep) != HYST_OK || !isfinite(*y))) {
+        /* inv printed the previous drive and exited 0 where sim refused */
+        return cli_fail(r->cmd, "the model's creep term overflows at drive %.9g (its weights "
+                                "are too large for the drives)", hyst_input(&r->S));
+    }
     if (r->model == NULL || !r->inverse) {
         *clamped = hyst_status(&r->S) == HYST_WARN_CLAMPED;
     }
