@@ -80,11 +80,39 @@ def annotate(elf, run, pulses, objdump):
     return "\n".join(out)
 
 
+# Relocations that only call or branch: every other reference to a function
+# takes its address (a kind's operations table, the instance's slow-path pointer).
+CALL_RELOCS = ("R_ARM_THM_CALL", "R_ARM_THM_JUMP24", "R_ARM_THM_JUMP19", "R_ARM_CALL",
+               "R_ARM_JUMP24")
+
+
+def address_taken(obj, readelf):
+    """Names of the functions whose address an object takes (indirect call targets)."""
+    names = set()
+    out = subprocess.run([readelf, "-rW", obj], capture_output=True, text=True,
+                         check=True).stdout
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) >= 5 and parts[2].startswith("R_ARM_") and parts[2] not in CALL_RELOCS:
+            names.add(parts[4])
+    return names
+
+
+class Recursion(RuntimeError):
+    pass
+
+
 def stack_of(build_m4, opt, root):
-    """Deepest static stack from `root` over the -fcallgraph-info graphs."""
+    """Deepest static stack from `root` over the -fcallgraph-info graphs. An
+    indirect call may reach any function whose address the caller's object
+    takes (the kinds' operations, the slow paths an instance points at),
+    except one that leads back to a function on the path: the over-approximated
+    targets make such cycles, the library makes no recursive call (direct
+    recursion is still an error)."""
     with open(os.path.join(build_m4, "bench", "objects_%s.txt" % opt)) as f:
         objs = [l.strip() for l in f if l.strip()]
-    frame, edges = {}, {}
+    frame, edges, object_of, targets = {}, {}, {}, {}
+    readelf = os.environ.get("HYST_READELF", "arm-none-eabi-readelf")
     for obj in objs:
         ci = re.sub(r"\.obj$|\.o$", "", obj) + ".ci"
         if not os.path.exists(ci):
@@ -94,15 +122,28 @@ def stack_of(build_m4, opt, root):
             if "dynamic" in m.group(3) and "bounded" not in m.group(3):
                 raise RuntimeError("%s has an unbounded frame" % m.group(1))
             frame[m.group(1)] = int(m.group(2))
+            object_of[m.group(1)] = obj
+        taken = address_taken(obj, readelf)
+        targets[obj] = [k for k, o in object_of.items() if o == obj and k.rsplit(":", 1)[-1] in taken]
         for m in re.finditer(r'edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"', text):
             edges.setdefault(m.group(1), set()).add(m.group(2))
-
     def depth(fn, seen):
         if fn in seen:
-            raise RuntimeError("recursion through %s" % fn)
+            raise Recursion("recursion through %s" % fn)
         if fn not in frame:
             raise RuntimeError("%s calls %s, outside the core" % (root, fn))
-        return frame[fn] + max([depth(c, seen | {fn}) for c in edges.get(fn, ())] or [0])
+
+        def reachable(t):
+            try:
+                return depth(t, seen | {fn})
+            except Recursion:
+                return 0  # a path back through the dispatcher: not a call the library makes
+
+        def callee(c):
+            if c == "__indirect_call":
+                return max([reachable(t) for t in targets[object_of[fn]]] or [0])
+            return depth(c, seen | {fn})
+        return frame[fn] + max([callee(c) for c in edges.get(fn, ())] or [0])
 
     return depth(root, frozenset())
 
