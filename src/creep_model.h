@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* The creep model's per-sample functions in one real type (creep.h).
- * Included by src/hyst_creep.c once per real variant, after NUM_T (the
- * type), NUM_F (its member of hyst_num_t), NUM_NAME (the prefix) and
- * NUM_VARIANT; no include guard for that reason. */
+/* The creep model's per-sample functions in one real type (creep.h), as
+ * always-inline bodies named *_impl: src/hyst_creep.c defines the public
+ * names, one line each, so that a search for a name finds its definition
+ * and a public function is the body itself, not a call to another.
+ * Included once per real variant, after NUM_T (the type), NUM_F (its
+ * member of hyst_num_t), NUM_NAME (the prefix) and NUM_VARIANT; no include
+ * guard for that reason. */
 #if !defined(NUM_T) || !defined(NUM_F) || !defined(NUM_NAME) || !defined(NUM_VARIANT)
 #error "creep_model.h: define NUM_T, NUM_F, NUM_NAME and NUM_VARIANT first"
 #endif
@@ -15,14 +18,7 @@ HYST_INLINE int NUM_NAME(creep_finite_)(NUM_T v)
     return z == z;
 }
 
-hyst_status_t NUM_NAME(creep_init_)(hyst_creep_t *C, size_t n_terms, const hyst_wide_t *tau,
-                                    const hyst_wide_t *weight, hyst_wide_t x_rest,
-                                    unsigned long layout)
-{
-    return init_any(C, n_terms, tau, weight, x_rest, NUM_VARIANT, layout);
-}
-
-hyst_status_t NUM_NAME(creep_reset)(hyst_creep_t *C, NUM_T x_rest)
+HYST_INLINE hyst_status_t NUM_NAME(creep_reset_impl)(hyst_creep_t *C, NUM_T x_rest)
 {
     size_t k;
     if (C == NULL) {
@@ -45,7 +41,7 @@ hyst_status_t NUM_NAME(creep_reset)(hyst_creep_t *C, NUM_T x_rest)
 
 /* The same sum, in the same order, as the step's: output() is bit for bit
  * what the next step returns. */
-NUM_T NUM_NAME(creep_output)(const hyst_creep_t *C)
+HYST_INLINE NUM_T NUM_NAME(creep_output_impl)(const hyst_creep_t *C)
 {
     NUM_T c = 0;
     size_t k;
@@ -58,7 +54,9 @@ NUM_T NUM_NAME(creep_output)(const hyst_creep_t *C)
     return c;
 }
 
-NUM_T NUM_NAME(creep_step)(hyst_creep_t *C, NUM_T x)
+/* The refusal path calls the public output(), out of line, as the step
+ * always has: the per-sample path stays as short. */
+HYST_INLINE NUM_T NUM_NAME(creep_step_impl)(hyst_creep_t *C, NUM_T x)
 {
     NUM_T c = 0;
     size_t k;

@@ -85,6 +85,28 @@ static hyst_status_t init_any(hyst_creep_t *C, size_t n_terms, const hyst_wide_t
 #undef NUM_NAME
 #undef NUM_VARIANT
 
+hyst_status_t hyst_f32_creep_init_(hyst_creep_t *C, size_t n_terms, const hyst_wide_t *tau,
+                                   const hyst_wide_t *weight, hyst_wide_t x_rest,
+                                   unsigned long layout)
+{
+    return init_any(C, n_terms, tau, weight, x_rest, HYST_VARIANT_F32, layout);
+}
+
+hyst_status_t hyst_f32_creep_reset(hyst_creep_t *C, float x_rest)
+{
+    return hyst_f32_creep_reset_impl(C, x_rest);
+}
+
+float hyst_f32_creep_output(const hyst_creep_t *C)
+{
+    return hyst_f32_creep_output_impl(C);
+}
+
+float hyst_f32_creep_step(hyst_creep_t *C, float x)
+{
+    return hyst_f32_creep_step_impl(C, x);
+}
+
 #if HYST_ENABLE_F64
 #define NUM_T double
 #define NUM_F f64
@@ -95,6 +117,28 @@ static hyst_status_t init_any(hyst_creep_t *C, size_t n_terms, const hyst_wide_t
 #undef NUM_F
 #undef NUM_NAME
 #undef NUM_VARIANT
+
+hyst_status_t hyst_f64_creep_init_(hyst_creep_t *C, size_t n_terms, const hyst_wide_t *tau,
+                                   const hyst_wide_t *weight, hyst_wide_t x_rest,
+                                   unsigned long layout)
+{
+    return init_any(C, n_terms, tau, weight, x_rest, HYST_VARIANT_F64, layout);
+}
+
+hyst_status_t hyst_f64_creep_reset(hyst_creep_t *C, double x_rest)
+{
+    return hyst_f64_creep_reset_impl(C, x_rest);
+}
+
+double hyst_f64_creep_output(const hyst_creep_t *C)
+{
+    return hyst_f64_creep_output_impl(C);
+}
+
+double hyst_f64_creep_step(hyst_creep_t *C, double x)
+{
+    return hyst_f64_creep_step_impl(C, x);
+}
 #endif
 
 int hyst_creep_status(const hyst_creep_t *C) { return C != NULL ? C->status : HYST_ERR_NULL; }

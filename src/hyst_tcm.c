@@ -14,6 +14,14 @@ int hyst_ranges_overlap(const void *a, size_t na, const void *b, size_t nb)
     return pa < pb + nb && pb < pa + na;
 }
 
+int hyst_block_overlap(const void *x, size_t xsize, const void *y, size_t ysize, size_t n)
+{
+    if (y == x && ysize <= xsize) {
+        return 0;
+    }
+    return hyst_ranges_overlap(x, n * xsize, y, n * ysize);
+}
+
 hyst_status_t hyst_check_memory(const hyst_tcm_t *S, const void *xltp, const void *yltp,
                                 const void *xrtp, const void *yrtp, size_t capacity,
                                 size_t xsize, size_t ysize, unsigned long layout)

@@ -161,6 +161,11 @@ hyst_status_t hyst_codes_request_deadband_(hyst_tcm_t *S, unsigned variant, uint
 /* 1 if [a, a + na) and [b, b + nb) (byte ranges) overlap. */
 int hyst_ranges_overlap(const void *a, size_t na, const void *b, size_t nb);
 
+/* Nonzero if a block call's output of n entries of ysize bytes at y would
+ * overwrite inputs (n entries of xsize at x) not yet read. y == x is safe
+ * when ysize <= xsize: y[i] is written after x[i] is read, before x[i + 1]. */
+int hyst_block_overlap(const void *x, size_t xsize, const void *y, size_t ysize, size_t n);
+
 /* Pointer, capacity, layout and overlap checks of every instance init:
  * four arrays of `capacity` entries of xsize and ysize bytes. */
 hyst_status_t hyst_check_memory(const hyst_tcm_t *S, const void *xltp, const void *yltp,

@@ -96,6 +96,9 @@ HYST_INLINE hyst_status_t NUM_NAME(pi_process_impl)(hyst_pi_t *P, const NUM_T *x
     if (n > 0u && (P == NULL || x == NULL || y == NULL)) {
         return HYST_ERR_NULL;
     }
+    if (hyst_block_overlap(x, sizeof *x, y, sizeof *y, n)) {
+        return HYST_ERR_OVERLAP;
+    }
     for (i = 0u; i < n; ++i) {
         y[i] = NUM_NAME(pi_step_impl)(P, x[i]);
         failed |= P->status < 0;

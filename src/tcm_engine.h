@@ -1075,6 +1075,9 @@ static hyst_status_t TCM_NAME(block)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, s
     if (n > 0u && (S == NULL || x == NULL || y == NULL)) {
         return HYST_ERR_NULL;
     }
+    if (hyst_block_overlap(x, sizeof *x, y, sizeof *y, n)) {
+        return HYST_ERR_OVERLAP;
+    }
     while (i < n) {
         i = TCM_NAME(run)(S, x, y, i, n);
         if (i == n) {

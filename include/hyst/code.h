@@ -113,7 +113,9 @@ float hyst_code_step(hyst_tcm_t *S, uint_least32_t code);
  * @brief Runs hyst_code_step() over a block of codes, bit-identically.
  * @return HYST_WARN_FULL if any overflow happened, else HYST_WARN_CLAMPED if
  *         any code was clamped, else HYST_OK; HYST_ERR_NULL if a pointer is
- *         NULL with n > 0.
+ *         NULL with n > 0; HYST_ERR_OVERLAP if @p y overlaps @p x (in place
+ *         only where an output is no larger than a code word; nothing
+ *         written).
  */
 hyst_status_t hyst_code_process(hyst_tcm_t *S, const hyst_code_word_t *x, float *y, size_t n);
 

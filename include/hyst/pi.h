@@ -132,7 +132,9 @@ double hyst_f64_pi_step(hyst_pi_t *P, double x);
  * @name Block of samples
  * @brief The per-sample call over @p n samples (@p y may be @p x).
  * @return HYST_ERR_NONFINITE if any sample was not finite, else HYST_OK;
- *         HYST_ERR_NULL if a pointer is NULL with n > 0.
+ *         HYST_ERR_NULL if a pointer is NULL with n > 0; HYST_ERR_OVERLAP
+ *         if @p y overlaps @p x other than exactly in place (nothing
+ *         written).
  */
 /**@{*/
 hyst_status_t hyst_f32_pi_process(hyst_pi_t *P, const float *x, float *y, size_t n);

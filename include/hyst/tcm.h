@@ -313,10 +313,12 @@ double hyst_f64_step(hyst_tcm_t *S, double x);
  * @name Block of samples
  * @brief The per-sample call over @p n samples, bit-identical to it.
  *
- * @p y may be the same array as @p x.
+ * @p y may be the same array as @p x; any other overlap is refused.
  * @return HYST_ERR_NONFINITE if any sample was not finite, else HYST_WARN_FULL
  *         if any overflow happened, else HYST_WARN_CLAMPED if any input was
- *         clamped, else HYST_OK. HYST_ERR_NULL if a pointer is NULL with n > 0.
+ *         clamped, else HYST_OK. HYST_ERR_NULL if a pointer is NULL with n > 0;
+ *         HYST_ERR_OVERLAP if @p y overlaps @p x other than exactly in place
+ *         (nothing written, the instance unchanged).
  */
 /**@{*/
 hyst_status_t hyst_f32_process(hyst_tcm_t *S, const float *x, float *y, size_t n);
