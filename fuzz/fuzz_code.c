@@ -20,7 +20,10 @@
  *     exactly), always: |y - y_ref| <= bound + TOL, no jump
  *     (|dy| <= max f0' |dx| + resid + TOL), and each increase of the bound
  *     within its a-priori bound (merge: max|f0''| w^2/4 and g(w); deadband:
- *     max|f0''| deadband^2/4), resid = the code rounding of a merged TP.
+ *     max|f0''| deadband^2/4), resid = the code rounding of a merged TP;
+ *   - on every other curve the reference accepts (f0'' of any sign, any
+ *     degree), while no merge happened since the last reset:
+ *     |y - y_ref| <= bound + TOL (the deadband's bound alone).
  * TOL: 1e-9 of the output range plus Horner's rounding bound (fuzz_common.h)
  * times the depth of TPs an output hangs on: the double core, the double
  * reference and the code-to-volt conversion (one rounding of x, times
@@ -88,13 +91,15 @@ static f32inst_t F32;
 static hyst_curve_t code_curve;
 /* How often the checks had something to check: FUZZ_CODE_STATS=1 prints
  * these at exit (reported in docs/reliability.md). */
-static unsigned long n_exact, n_vs_real, n_bounded, n_merge, n_window, n_nonzero, n_requests;
+static unsigned long n_exact, n_vs_real, n_bounded, n_merge, n_window, n_nonzero, n_requests,
+    n_any_curve;
 
 static void print_stats(void)
 {
     fprintf(stderr, "fuzz_code: samples exact %lu, code vs real %lu, bounded %lu (bound > 0: %lu), "
-                    "merges checked %lu, deadband windows checked %lu, deadband requests applied %lu\n",
-            n_exact, n_vs_real, n_bounded, n_nonzero, n_merge, n_window, n_requests);
+                    "merges checked %lu, deadband windows checked %lu, deadband requests applied %lu, "
+                    "deadband bound on curves of any f0'' %lu\n",
+            n_exact, n_vs_real, n_bounded, n_nonzero, n_merge, n_window, n_requests, n_any_curve);
 }
 static finst_t F, F0, keepf;
 static ref_tcm_t ref;
@@ -582,6 +587,16 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                     }
                     tc.b_prev = bc;
                     tf.b_prev = bf;
+                } else if (compare) {
+                    /* any accepted curve (f0'' of any sign, any degree): the
+                     * deadband's stated bound holds while nothing was merged */
+                    if (!tc.full) {
+                        CHECK(fabs(y - yr) <= hyst_code_error_bound(&T.S) + ftol);
+                    }
+                    if (!tf.full) {
+                        CHECK(fabs(yf - yr) <= hyst_error_bound(&F.S) + tol);
+                    }
+                    n_any_curve += db_ever && !(tc.full && tf.full);
                 }
                 if (pend != NO_REQUEST) { /* applied at the step's end: as set now */
                     CHECK(!hyst_request_pending(&C.S) && !hyst_request_pending(&F.S));

@@ -8,36 +8,45 @@
 #ifndef HYST_KIND_EVERETT_H
 #define HYST_KIND_EVERETT_H
 
-/* E(a, b), a >= b: the asymmetric kind's from its rising table, anchored at b
- * (rare paths: the deadband). */
-static TCM_NOINLINE TCM_Y TCM_NAME(e)(const hyst_tcm_t *S, TCM_X a, TCM_X b)
+/* A skipped loop [b, a]'s error. Inside the window the full model differs
+ * from the branch moved back along by the measure of relays in a rectangle
+ * of area (x - b)(a - x) <= d^2 / 4 whose density is d^2 E / da db, which
+ * may change sign and peaks anywhere in the window (not the loop's height
+ * at its middle). In the scaled coordinates w = (a - b) unit and
+ * t = (b' - b) unit of a relay (a', b') of the window, E = sum p_jk w^j t^k
+ * (the rows Taylor-shifted to b's anchor) and the density times d^2 / 4 is
+ * at most 1/4 sum j (j - 1 + k) |p_jk| W^(j + k), W = the window's w. */
+static TCM_NOINLINE TCM_Y TCM_NAME(everett_loop_error)(const hyst_tcm_t *S, TCM_X b, TCM_X a)
 {
-    {
-        const unsigned n = S->curve->u.everett.degree;
-        const TCM_Y w = TCM_D(a, b) * YV(S->unit);
-        const TCM_Y anchor = (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit);
-        const hyst_num_t *row = S->curve->u.everett.rise;
-        TCM_Y acc = 0;
-        unsigned i, k;
-        /* Horner's rule in w over the coefficients, each by Horner's rule
-         * in the anchor from its row (as derive() computes them) */
-        for (i = 0u; i < n; ++i) {
-            TCM_Y c = YV(row[0]);
-            for (k = 1u; k <= i; ++k) {
-                c = c * anchor + YV(row[k]);
-            }
-            acc = i == 0u ? c : NUM_MUL(acc, w) + c;
-            row += i + 1u;
+    const unsigned n = S->curve->u.everett.degree;
+    const TCM_Y W = TCM_D(a, b) * YV(S->unit);
+    const TCM_Y anchor = (TCM_R(b) - TCM_R(XV(S->lo))) * YV(S->unit);
+    const hyst_num_t *row = S->curve->u.everett.rise;
+    TCM_Y sum = 0;
+    unsigned i, k, l;
+    for (i = 0u; i < n; ++i) { /* row i: w^(n - i), a polynomial of degree i in the anchor */
+        const unsigned j = n - i;
+        TCM_Y p[HYST_EVERETT_MAX_DEGREE];
+        TCM_Y wpow = 1;
+        for (k = 0u; k <= i; ++k) {
+            p[k] = YV(row[k]);
         }
-        return NUM_MUL_G(acc, w);
+        /* Taylor shift to the anchor: p[i - k] becomes the coefficient of t^k */
+        for (k = 0u; k < i; ++k) {
+            for (l = 1u; l <= i - k; ++l) {
+                p[l] += p[l - 1u] * anchor;
+            }
+        }
+        for (k = 0u; k < j; ++k) {
+            wpow *= W;
+        }
+        for (k = 0u; k <= i; ++k) {
+            sum += (TCM_Y)(j * (j - 1u + k)) * NUM_NAME(abs)(p[i - k]) * wpow;
+            wpow *= W;
+        }
+        row += i + 1u;
     }
-}
-
-/* A skipped loop [b, a]'s error: its height at its middle. */
-static TCM_Y TCM_NAME(everett_loop_error)(const hyst_tcm_t *S, TCM_X b, TCM_X a)
-{
-    const TCM_X m = TCM_MID(b, a);
-    return NUM_NAME(abs)(TCM_NAME(e)(S, a, b) - TCM_NAME(e)(S, a, m) - TCM_NAME(e)(S, m, b));
+    return sum * NUM_C(0.2525); /* 1/4, rounded up by 1 % */
 }
 
 /* The current branch's coefficients, for the rare paths (settle()). */

@@ -828,6 +828,40 @@ static TCM_NOINLINE void TCM_NAME(merge)(hyst_tcm_t *S, TCM_X x_prev, size_t *nr
     TCM_NAME(set_detour)(S);
 }
 
+#ifndef NUM_FIXED
+/* The polynomial kind's deadband error for a window of input width d
+ * (full: d as g's argument difference, u in g's units). Inside the window
+ * the full model differs from the branch moved back along by the measure
+ * of relays in a rectangle (x - b) x (a - x) of density g''(a' - b'), whose
+ * diagonal a' - b' = v is at most min(v, u - v) long: the error is at most
+ * the integral of |g''(v)| min(v, u - v) over [0, u], bounded term by term
+ * (g = sum a_k u^k: |a_2| u^2 / 2 + the sum of |a_k| u^k, k >= 3, with
+ * min(v, u - v) <= u - v). Where g'' is proven one-signed on [0, u] (its
+ * constant term wins), the tighter height of the loop at its middle,
+ * |g(d) - 2 g(d/2)| (docs/memory.md). */
+static TCM_Y TCM_NAME(poly_loop_error)(const hyst_tcm_t *S, TCM_Y full)
+{
+    const unsigned n = S->degree;
+    const TCM_Y u = full * YV(S->unit);
+    TCM_Y rest = 0, sum = 0, pw = u; /* pw = u^(k-2) from k = 3 */
+    unsigned k;
+    for (k = 3u; k <= n; ++k) { /* coef[n - k] multiplies u^k */
+        const TCM_Y t = NUM_NAME(abs)(YV(S->coef[n - k])) * pw;
+        rest += (TCM_Y)(k * (k - 1u)) * t;
+        sum += t;
+        pw *= u;
+    }
+    if (n >= 2u) {
+        const TCM_Y a2 = NUM_NAME(abs)(YV(S->coef[n - 2u]));
+        if (rest < 2 * a2) {
+            return NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));
+        }
+        sum += a2 * NUM_C(0.5);
+    }
+    return sum * u * u * NUM_C(1.01); /* rounded up by 1 % */
+}
+#endif
+
 /* Deadband: the input reversed at x_prev within d < deadband of the
  * current TP. Nothing is stored: the trajectory moves back along the current
  * branch (reversibly), where the full model would run a minor loop of width
@@ -842,6 +876,10 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
         XV(S->db_reach) = d;
         if (TCM_KIND(S) != NULL && TCM_KIND(S)->loop_error != NULL) {
             YV(S->db_err) = TCM_KIND(S)->loop_error(S, b, a);
+#ifndef NUM_FIXED
+        } else if (TCM_KIND(S) == NULL && S->degree - 1u < (unsigned)HYST_MAX_DEGREE) {
+            YV(S->db_err) = TCM_NAME(poly_loop_error)(S, full);
+#endif
         } else {
             YV(S->db_err) =
                 NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));

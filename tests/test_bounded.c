@@ -467,6 +467,53 @@ static void test_narrowed_deadband_keeps_the_open_window_bounded(void)
     }
 }
 
+/* f0 with an inflection near lo, f0 = c (x - 5)^3 + s x (increasing; c =
+ * 0.01, s = 0.1), which init accepts: the density g''(a - b) changes sign
+ * inside a window of width 10, where a loop's height at its middle,
+ * g(10) - 2 g(5), is 0. Nested excursions below the deadband then leave the
+ * full model well off the branch moved back along; the stated bound must
+ * cover it at every sample, on real inputs and codes. */
+static void test_deadband_bound_holds_where_f0_inflects(void)
+{
+    static const double inflect_coeffs[4] = {0.01, -0.15, 0.85, -1.25};
+    static const hyst_poly_t inflect = {3u, HYST_REAL_C(0.0), HYST_REAL_C(40.0),
+                                        {HYST_REAL_C(0.01), HYST_REAL_C(-0.15), HYST_REAL_C(0.85),
+                                         HYST_REAL_C(-1.25)}};
+    static const double path[] = {25.0, 5.0, 15.0, 6.0,  14.0, 10.0, 7.0,  13.0,
+                                  9.5,  11.5, 7.5, 14.5, 5.5,  10.0, 39.0};
+    int code;
+    curve_poly = &inflect;
+    curve_c = inflect_coeffs;
+    curve_facts();
+    for (code = 0; code < 2; ++code) {
+        double worst = 0.0, worst_ratio = 0.0;
+        size_t i;
+        eng_init(&E, code, MAXCAP);
+        (void)eng_set_deadband(&E, 10.5);
+        ref_init(&ref, curve_c, 3u, LO, HI);
+        for (i = 0u; i < sizeof path / sizeof path[0]; ++i) {
+            const double x = eng_quantise(&E, path[i]);
+            const double y = eng_step(&E, x);
+            const double err = fabs(y - ref_step(&ref, x));
+            const double bound = eng_bound(&E);
+            if (err > bound + tol()) {
+                TEST_PRINTF("%s: sample %u at %g: |y - y_full| = %g > bound %g",
+                            code ? "codes" : "reals", (unsigned)i, x, err, bound);
+                TEST_FAIL_MESSAGE("deadband error beyond the stated bound");
+            }
+            worst = err > worst ? err : worst;
+            worst_ratio = bound > 0.0 && err / bound > worst_ratio ? err / bound : worst_ratio;
+        }
+        TEST_ASSERT_TRUE(worst > 10.0 * tol()); /* the skips did cost something */
+        TEST_ASSERT_TRUE(eng_bound(&E) == 0.0);  /* 39 wiped it all */
+        TEST_PRINTF("%s: inflecting f0, worst error %g, at most %g of the bound",
+                    code ? "codes" : "reals", worst, worst_ratio);
+    }
+    curve_poly = &paper_eq20;
+    curve_c = paper_eq20_coeffs;
+    curve_facts();
+}
+
 static void test_deadband_arguments_are_checked(void)
 {
     eng_init(&E, 0, 4u);
@@ -495,6 +542,7 @@ int main(void)
     RUN_TEST(test_deadband_keeps_noise_out_of_memory);
     RUN_TEST(test_zero_deadband_changes_nothing);
     RUN_TEST(test_narrowed_deadband_keeps_the_open_window_bounded);
+    RUN_TEST(test_deadband_bound_holds_where_f0_inflects);
     RUN_TEST(test_deadband_arguments_are_checked);
     return UNITY_END();
 }

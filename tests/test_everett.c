@@ -399,6 +399,58 @@ static void test_linear_e_within_the_rounding_bound(void)
 #endif
 }
 
+/* The deadband on the asymmetric kind: inputs oscillating by less than the
+ * deadband next to a stored turning point, on both sides, for random E
+ * init accepts. The instance stays within its stated error bound of the
+ * full model (the same curve, no deadband) at every sample: the loop the
+ * full model runs inside the window need not be highest at its middle. */
+static void test_deadband_bound_holds_on_the_asymmetric_kind(void)
+{
+    int trial, curves = 0;
+    double worst = 0.0, worst_ratio = 0.0;
+    for (trial = 0; trial < 200; ++trial) {
+        const hyst_everett_t e = random_e();
+        const double span = e.hi - e.lo;
+        const int rising = trial % 2 == 0; /* the window above an LTP, or below an RTP */
+        double range, tp;
+        long k;
+        if (init_e(&S, &curve, &e, xl, yl, xr, yr, CAP) != HYST_OK) {
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, CAP));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_set_deadband(&S, (hyst_real_t)(0.3 * span)));
+        range = ref_everett_e(&e, e.hi, e.lo);
+        tp = e.lo + span * (rising ? 0.35 : 0.65);
+        for (k = 0; k < 80; ++k) {
+            double x, err, bound;
+            if (k == 0) {
+                x = e.lo + span * (rising ? 0.8 : 0.2);
+            } else if (k == 1) {
+                x = tp;
+            } else if (k == 79) {
+                x = rising ? e.hi : e.lo; /* wipes it all */
+            } else {
+                x = tp + (rising ? 1.0 : -1.0) * 0.29 * span * rng_unit(&rng);
+            }
+            err = fabs((double)hyst_step(&S, (hyst_real_t)x) - (double)hyst_step(&T, (hyst_real_t)x));
+            bound = (double)hyst_error_bound(&S);
+            if (err > bound + AGREE * range) {
+                TEST_PRINTF("E %d, sample %ld: |y - y_full| = %g > bound %g (range %g)", trial, k,
+                            err, bound, range);
+                TEST_FAIL_MESSAGE("deadband error beyond the stated bound");
+            }
+            worst = err / range > worst ? err / range : worst;
+            worst_ratio = bound > 0.0 && err / bound > worst_ratio ? err / bound : worst_ratio;
+        }
+        TEST_ASSERT_TRUE(hyst_error_bound(&S) == 0);
+        ++curves;
+    }
+    TEST_PRINTF("deadband on %d asymmetric curves: worst error %g of the range, at most %g of "
+                "the bound", curves, worst, worst_ratio);
+    TEST_ASSERT_TRUE(curves >= 100);
+    TEST_ASSERT_TRUE(worst > 100.0 * AGREE); /* the skips did cost something */
+}
+
 #ifndef HYST_USE_DOUBLE
 /* The integer-code variant runs the same curve: on codes 0..4095 of the
  * domain, bit for bit the f32 variant's outputs. */
@@ -436,6 +488,7 @@ int main(void)
     RUN_TEST(test_bounded_memory_keeps_its_bound);
     RUN_TEST(test_identification_recovers_e);
     RUN_TEST(test_linear_e_within_the_rounding_bound);
+    RUN_TEST(test_deadband_bound_holds_on_the_asymmetric_kind);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_codes_run_the_asymmetric_kind);
 #endif

@@ -335,8 +335,10 @@ hyst_status_t hyst_f64_process(hyst_tcm_t *S, const double *x, double *y, size_t
  * The input then moves back along the current branch (reversibly) instead of
  * starting a minor loop, so sensor or command noise cannot fill the memory.
  * The error is at most that loop's height |g(d) - 2 g(d/2)| <= max|f0''|
- * width^2 / 4 (for f0'' of one sign; docs/memory.md), is 0 again once the
- * input leaves the window, never accumulates and never jumps. 0 (the default
+ * width^2 / 4 where f0'' has one sign, otherwise a bound on the relay
+ * density over the window (docs/memory.md); it is stated in
+ * hyst_*_error_bound(), is 0 again once the input leaves the window, never
+ * accumulates and never jumps. 0 (the default
  * after init) disables it; kept by reset.
  * @return HYST_OK, HYST_ERR_NULL or HYST_ERR_ARG (negative or not finite, or
  *         an instance of another variant).
