@@ -26,7 +26,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(everett_loop_error)(const hyst_tcm_t *S, TCM_
     unsigned i, k, l;
     for (i = 0u; i < n; ++i) { /* row i: w^(n - i), a polynomial of degree i in the anchor */
         const unsigned j = n - i;
-        TCM_Y p[HYST_EVERETT_MAX_DEGREE];
+        TCM_Y p[HYST_EVERETT_MAX_DEGREE] = {0}; /* GCC -O2 cannot see k <= i fills it */
         TCM_Y wpow = 1;
         for (k = 0u; k <= i; ++k) {
             p[k] = YV(row[k]);
