@@ -26,10 +26,10 @@ static TCM_NOINLINE TCM_Y TCM_NAME(everett_loop_error)(const hyst_tcm_t *S, TCM_
     unsigned i, k, l;
     for (i = 0u; i < n; ++i) { /* row i: w^(n - i), a polynomial of degree i in the anchor */
         const unsigned j = n - i;
-        TCM_Y p[HYST_EVERETT_MAX_DEGREE] = {0}; /* GCC -O2 cannot see k <= i fills it */
+        TCM_Y p[HYST_EVERETT_MAX_DEGREE];
         TCM_Y wpow = 1;
-        for (k = 0u; k <= i; ++k) {
-            p[k] = YV(row[k]);
+        for (k = 0u; k < HYST_EVERETT_MAX_DEGREE; ++k) { /* whole: GCC -O2 cannot see k <= i suffices */
+            p[k] = k <= i ? YV(row[k]) : 0;
         }
         /* Taylor shift to the anchor: p[i - k] becomes the coefficient of t^k */
         for (k = 0u; k < i; ++k) {
