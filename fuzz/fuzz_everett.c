@@ -39,6 +39,7 @@
  * its table taken as from flash (hyst_curve_table_seal(), then
  * hyst_curve_everett_inverse_table_const(): accepted, the build's curve),
  * and that copy with one bit flipped is refused (HYST_ERR_CRC). */
+
 #include "fuzz_common.h"
 #include "ref_everett.h"
 
@@ -311,7 +312,12 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 if (hyst_curve_from_everett(&free_curve, &free_e) == HYST_OK) {
                     CHECK(st == HYST_OK && memcmp(&got, &free_e, sizeof got) == 0 && rms == rms_free);
                 } else {
-                    CHECK(rms_free <= rms * (1 + 1e-9) + 1e-9 * scale_y);
+                    /* both RMS come from y'y - 2 s'A'y + s'As: each square is known to
+                     * about 64 eps y'y / used (its terms are of y'y's size), which
+                     * dominates when the fit is near exact */
+                    const double slack = 64 * DBL_EPSILON * (double)fit.yy / (double)fit.used;
+                    CHECK(rms_free * rms_free <= rms * rms * (1 + 1e-9) + slack ||
+                          rms_free <= rms * (1 + 1e-9) + 1e-9 * scale_y);
                 }
             }
         }

@@ -794,7 +794,8 @@ hyst_status_t hyst_creep_snapshot_restore(hyst_creep_t *C, const unsigned char *
     events = get_u32(buf + 20);
     status = get_status(buf + 24);
     if (n != C->n || (events & ~(unsigned long)HYST_EVENT_NONFINITE) != 0u ||
-        (status != HYST_OK && status != HYST_ERR_NONFINITE) || get_u16(buf + 26) != 0u) {
+        (status != HYST_OK && status != HYST_ERR_NONFINITE && status != HYST_ERR_DOMAIN) ||
+        get_u16(buf + 26) != 0u) { /* a step's statuses: a drive beyond x_limit is DOMAIN */
         return HYST_ERR_FORMAT;
     }
     for (k = 0u; k < n; ++k) {

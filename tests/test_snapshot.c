@@ -496,6 +496,24 @@ static void test_creep_round_trip_continues_bit_identically(void)
     TEST_ASSERT_FALSE(hyst_creep_output(&KB) == hyst_creep_output(&KA));
 }
 
+/* A drive beyond the lags' limit (ignored, HYST_ERR_DOMAIN) is a state a
+ * snapshot keeps like any other: it restores, status and events included. */
+static void test_creep_snapshot_after_a_drive_beyond_the_limit(void)
+{
+    unsigned char buf[HYST_CREEP_SNAPSHOT_SIZE];
+    size_t len = 0u;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KA, 2u, creep_tau, creep_w, 3.0));
+    (void)hyst_creep_step(&KA, (hyst_real_t)2.0);
+    /* finite, beyond type max / 4 */
+    (void)hyst_creep_step(&KA, (hyst_real_t)(sizeof(hyst_real_t) == sizeof(float) ? 3e38 : 1e308));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_creep_status(&KA));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_snapshot_save(&KA, buf, sizeof buf, &len));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&KB, 2u, creep_tau, creep_w, 0.0));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_snapshot_restore(&KB, buf, len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_creep_status(&KB));
+    TEST_ASSERT_EQUAL_MEMORY(KA.state, KB.state, sizeof KA.state);
+}
+
 /* Each bit flip is refused with its field's error; the instance unchanged. */
 static void test_creep_every_bit_flip_and_truncation_is_refused(void)
 {
@@ -614,6 +632,7 @@ int main(void)
     RUN_TEST(test_forged_values_with_a_valid_crc_are_refused);
     RUN_TEST(test_piecewise_linear_curve_identity_covers_every_point);
     RUN_TEST(test_creep_round_trip_continues_bit_identically);
+    RUN_TEST(test_creep_snapshot_after_a_drive_beyond_the_limit);
     RUN_TEST(test_creep_every_bit_flip_and_truncation_is_refused);
     RUN_TEST(test_creep_forged_values_with_a_valid_crc_are_refused);
     RUN_TEST(test_creep_other_term_and_bad_calls_are_refused);
