@@ -43,7 +43,9 @@ static const char help[] =
     "                 f0 of degree 1..9 and each E of degree 1..4 in each t-degree\n"
     "                 0..N-1, at each delay (0..8, or up to 1/64 of the drive's\n"
     "                 period, and a fraction of a sample), is fitted on the first two\n"
-    "                 thirds of the record and the model predicts the last third;\n"
+    "                 thirds of the record and the model predicts the last third,\n"
+    "                 then (thirds of 100 samples or more) fitted on the first and\n"
+    "                 last thirds and predicts the middle one (the RMS of both);\n"
     "                 of the candidates within 1 % of the lowest RMS prediction\n"
     "                 error, the one with the fewest parameters wins (every\n"
     "                 candidate is printed as a '# candidate' line)\n"
@@ -132,6 +134,7 @@ typedef struct fit_opts {
     int with_creep;       /* the model fitted has a creep term, of time constant creep.tau */
     fit_creep_t creep;    /* its hold-out figures (training fit) */
     double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
+    double last_third;    /* the same on the last third alone (what PI-10 is compared on) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
     size_t holdout_n, beyond; /* hold-out inputs, those outside the part fitted */
     double holdout_span;  /* the hold-out inputs' range over the record's */
@@ -435,7 +438,8 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
     o->cfg.delay = candidates[best_candidate].delay;
     if (candidates[best_candidate].widened) { /* the domain of the model fitted on it all */
         double lo, hi;
-        fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, FIT_WIDEN, &lo, &hi);
+        fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, 0.0, &lo, &hi);
+        fit_widened_domain(lo, hi, t->col[0][o->cfg.skip], &lo, &hi);
         o->cfg.lo = lo;
         o->cfg.hi = hi;
     }
@@ -443,6 +447,7 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
     count_beyond(o, t);
     rank_others(o, t);
     o->holdout = candidates[best_candidate].holdout_rms;
+    o->last_third = candidates[best_candidate].last_third_rms;
     return 0;
 }
 
@@ -457,10 +462,11 @@ static void choose_creep(fit_opts_t *o, const cli_table_t *t)
     if (o->final_kind == FIT_EVERETT) {
         fit_everett_result_t train;
         o->holdout = fit_everett_holdout(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n, &st,
-                                         &train, creep);
+                                         &train, creep, &o->last_third);
     } else {
         hyst_ident_result_t train;
-        o->holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train, creep);
+        o->holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train, creep,
+                                     &o->last_third);
     }
     o->with_creep = creep != NULL && o->creep.tau > 0 && isfinite(o->creep.holdout_rms) &&
                     (o->creep_tau > 0 ||
@@ -564,10 +570,10 @@ static double given_holdout(const fit_opts_t *o, const double *x, const cli_tabl
     cfg.delay = d;
     if (o->final_kind == FIT_EVERETT) {
         fit_everett_result_t train;
-        return fit_everett_holdout(&cfg, o->t_degree, x, t->col[1], t->n, &st, &train, NULL);
+        return fit_everett_holdout(&cfg, o->t_degree, x, t->col[1], t->n, &st, &train, NULL, NULL);
     } else {
         hyst_ident_result_t train;
-        return fit_tcm_holdout(&cfg, x, t->col[1], t->n, &st, &train, NULL);
+        return fit_tcm_holdout(&cfg, x, t->col[1], t->n, &st, &train, NULL, NULL);
     }
 }
 
@@ -631,11 +637,13 @@ static void print_candidates(const fit_opts_t *o)
     }
     (void)printf("# chosen by hold-out: degree %u, delay %lu (kind %s, %s%s%u parameters: the "
                  "fewest within 1 %% of the lowest RMS prediction error on the last third of "
-                 "the record, fitted on the first two thirds; kinds compared: %s)\n",
+                 "the record, fitted on the first two thirds, and on the middle third, fitted "
+                 "on the others, when each third holds %u samples or more; kinds compared: "
+                 "%s)\n",
                  o->cfg.degree, (unsigned long)o->cfg.delay,
                  o->final_kind == FIT_EVERETT ? "everett" : "poly", t_deg,
                  o->with_creep ? "creep, " : "",
-                 fit_option_parameters(&candidates[best_candidate], o->with_creep),
+                 fit_option_parameters(&candidates[best_candidate], o->with_creep), (unsigned)FIT_SPLIT_MIN,
                  candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
                  : candidate_kinds(o) == FIT_EVERETT           ? "everett"
                                                                : "poly");
@@ -671,10 +679,11 @@ static void print_candidates(const fit_opts_t *o)
                          fit_option_parameters(r, o->runner_up_creep),
                          fit_option_rms(r, o->runner_up_creep), chosen);
         }
-        if (isfinite(o->pi10)) {
-            (void)printf("# PI-10 on the same split (delay %lu, 11 parameters): hold-out rms "
-                         "%.6g; PI-10 / chosen %.3g\n",
-                         (unsigned long)o->cfg.delay, o->pi10, o->pi10 / chosen);
+        if (isfinite(o->pi10)) { /* PI's fit takes no outputs left out: the last third */
+            const double third = fit_option_last_third(&candidates[best_candidate], o->with_creep);
+            (void)printf("# PI-10 on the same split (the last third, delay %lu, 11 parameters): "
+                         "hold-out rms %.6g, the chosen %.6g; PI-10 / chosen %.3g\n",
+                         (unsigned long)o->cfg.delay, o->pi10, third, o->pi10 / third);
         }
     }
     for (i = 0u; i < n_candidates; ++i) {
@@ -874,7 +883,7 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
 static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, size_t size)
 {
     char tcm[96];
-    const double holdout = o->with_creep ? o->creep.holdout_rms : o->holdout;
+    const double holdout = o->with_creep ? o->creep.last_third_rms : o->last_third;
     if (o->final_kind == FIT_EVERETT) {
         (void)snprintf(tcm, sizeof tcm, "asymmetric (everett) TCM degree %u t-degree %u%s",
                        o->cfg.degree, o->t_degree, o->with_creep ? " with creep" : "");

@@ -32,6 +32,25 @@ void fit_input_range(const double *x, size_t from, size_t to, double widen, doub
     *hi = b + widen * (b - a);
 }
 
+void fit_widened_domain(double lo, double hi, double first, double *wide_lo, double *wide_hi)
+{
+    *wide_lo = first <= lo + 0.01 * (hi - lo) ? lo : lo - FIT_WIDEN * (hi - lo);
+    *wide_hi = hi + FIT_WIDEN * (hi - lo);
+}
+
+size_t fit_settled(const double *x, size_t from, size_t to)
+{
+    double lo, hi;
+    size_t k;
+    fit_input_range(x, from, to, 0.0, &lo, &hi);
+    for (k = from; k < to; ++k) {
+        if (x[k] <= lo + 0.01 * (hi - lo) || x[k] >= hi - 0.01 * (hi - lo)) {
+            return k;
+        }
+    }
+    return to;
+}
+
 size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double hi,
                      size_t *inner)
 {
@@ -86,7 +105,7 @@ size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const d
         double e;
         cfg.degree = 3u;
         cfg.delay = d;
-        e = fit_tcm_holdout(&cfg, x, y, n, &st, &fit, NULL);
+        e = fit_tcm_holdout(&cfg, x, y, n, &st, &fit, NULL, NULL);
         if (isfinite(e) && !(lowest <= e)) {
             lowest = e;
             best = d;
@@ -114,9 +133,15 @@ double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const dou
     return fit_model_run_creep(f0, curve, x, y, n, skip, delay, from, before_rms, max_abs, NULL);
 }
 
-double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
-                           const double *y, size_t n, size_t skip, size_t delay, size_t from,
-                           double *before_rms, double *max_abs, fit_creep_t *creep)
+/* The model run from rest at skip over x[skip .. n - delay) against
+ * y[k + delay]: the RMS error over [from, to) from score_from on (returned)
+ * and before `from` (*before_rms); creep (may be NULL) fitted to its
+ * residual before `from` and scored from it on (part 0), or fitted on every
+ * sample but [from, to) and scored there (part 1), from score_from on. */
+static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
+                        const double *y, size_t n, size_t skip, size_t delay, size_t from,
+                        size_t to, int part, size_t score_from, double *before_rms,
+                        double *max_abs, fit_creep_t *creep)
 {
     hyst_tcm_t S;
     const size_t cap = n > delay + skip ? (n - delay - skip) / 2u + 2u : 2u;
@@ -162,10 +187,12 @@ double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, con
         }
         if (ok) {
             const double e = ym - y[k + delay];
-            if (k >= from) {
-                ss += e * e;
-                ++used;
-            } else {
+            if (k >= from && k < to) {
+                if (k >= score_from) {
+                    ss += e * e;
+                    ++used;
+                }
+            } else if (k < from) {
                 ss_before += e * e;
                 ++before;
             }
@@ -175,7 +202,13 @@ double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, con
     free(mem);
     if (u != NULL) {
         const double x_rest = f0 != NULL ? (double)f0->lo : curve->lo.f64;
-        fit_creep_score(u, r, len, from > skip ? from - skip : 0u, x_rest, tau, creep);
+        const size_t at = from > skip ? from - skip : 0u;
+        if (part) {
+            fit_creep_score_part(u, r, len, at, to > skip ? to - skip : 0u,
+                                 score_from > skip ? score_from - skip : 0u, x_rest, tau, creep);
+        } else {
+            fit_creep_score(u, r, len, at, x_rest, tau, creep);
+        }
         free(u);
     }
     if (before_rms != NULL && before > 0u) {
@@ -187,62 +220,173 @@ double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, con
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
+double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
+                           const double *y, size_t n, size_t skip, size_t delay, size_t from,
+                           double *before_rms, double *max_abs, fit_creep_t *creep)
+{
+    return model_run(f0, curve, x, y, n, skip, delay, from, n, 0, from, before_rms, max_abs,
+                     creep);
+}
+
 /* Samples of the training part: the first two thirds of those the model sees. */
 static size_t train_count(size_t n, size_t skip, size_t delay)
 {
     return (2u * (n - skip - delay)) / 3u;
 }
 
-double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
-                       size_t n, hyst_status_t *status, hyst_ident_result_t *fit,
-                       fit_creep_t *creep)
+/* One split of the hold-out (FIT_SPLITS) of the samples the model sees:
+ * 0 fits the first two thirds and scores the last third; 1 and 2 score the
+ * middle and the first third, fitted on the rest with the outputs of that
+ * third left out (the fit takes its inputs in: the turning points are the
+ * record's), from `settle` on (fit_settled()). The model runs from rest at cfg->skip over the whole record
+ * each time; kind FIT_EVERETT with t_degree, its domain widened by FIT_WIDEN
+ * about the inputs fitted when `widened`; creep (may be NULL) as
+ * fit_model_run_creep(), fitted and scored on the same parts. */
+static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t_degree,
+                            int widened, const double *x, const double *y, size_t n, int split,
+                            size_t settle, hyst_status_t *status, hyst_ident_result_t *poly,
+                            fit_everett_result_t *ev, fit_creep_t *creep)
 {
-    hyst_ident_t work;
+    const size_t len = n > cfg->skip + cfg->delay ? n - cfg->skip - cfg->delay : 0u;
+    const size_t train = len > 0u ? train_count(n, cfg->skip, cfg->delay) : 0u;
+    const size_t from = cfg->skip + (split == 0 ? train : split == 2 ? 0u : len / 3u);
+    const size_t to = split == 0 ? n : cfg->skip + (split == 2 ? len / 3u : train);
+    const size_t count = split == 0 ? from + cfg->delay : n; /* the samples fitted end here */
+    hyst_ident_config_t part = *cfg;
+    double *masked = NULL;
+    const double *yf = y;
+    hyst_curve_t curve;
     hyst_poly_t f0;
-    size_t train;
     unsigned i;
-    if (n <= cfg->skip + cfg->delay) {
+    size_t k;
+    double before, e;
+    if (len == 0u || from >= to || (split != 0 && settle >= to)) {
         *status = HYST_ERR_ARG;
         return NAN;
     }
-    train = train_count(n, cfg->skip, cfg->delay);
-    /* the training part: samples skip .. skip + train of x, their y delay later */
-    *status = hyst_ident_fit(cfg, x, y, cfg->skip + train + cfg->delay, &work, fit);
-    if (*status != HYST_OK || !fit->increasing) {
-        return NAN;
+    if (split != 0) { /* the held-out third's outputs left out of the fit */
+        if ((masked = (double *)malloc(n * sizeof(double))) == NULL) {
+            *status = HYST_ERR_NOSPACE;
+            return NAN;
+        }
+        memcpy(masked, y, n * sizeof(double));
+        for (k = from; k < to; ++k) {
+            masked[k + cfg->delay] = NAN;
+        }
+        yf = masked;
     }
-    memset(&f0, 0, sizeof f0);
-    f0.degree = fit->degree;
-    f0.lo = (double)fit->lo;
-    f0.hi = (double)fit->hi;
-    for (i = 0u; i <= fit->degree; ++i) {
-        f0.coeffs[i] = (double)fit->coeffs[i];
+    if (kind == FIT_EVERETT) {
+        memset(ev, 0, sizeof *ev);
+        if (widened) { /* about the inputs whose outputs are fitted */
+            double lo, hi, lo2, hi2;
+            if (split == 0) {
+                fit_input_range(x, cfg->skip, from, 0.0, &lo, &hi);
+            } else {
+                fit_input_range(x, to < n - cfg->delay ? to : from, n - cfg->delay, 0.0, &lo, &hi);
+                if (from > cfg->skip) {
+                    fit_input_range(x, cfg->skip, from, 0.0, &lo2, &hi2);
+                    lo = lo2 < lo ? lo2 : lo;
+                    hi = hi2 > hi ? hi2 : hi;
+                }
+            }
+            fit_widened_domain(lo, hi, x[cfg->skip], &lo, &hi);
+            part.lo = lo;
+            part.hi = hi;
+        }
+        *status = fit_everett_record(&part, t_degree, x, yf, count, ev);
+        if (*status == HYST_OK) {
+            *status = ev->curve_status;
+        }
+        if (*status != HYST_OK || hyst_f64_curve_from_everett(&curve, &ev->e) != HYST_OK) {
+            free(masked);
+            return NAN;
+        }
+    } else {
+        hyst_ident_t work;
+        *status = hyst_ident_fit(&part, x, yf, count, &work, poly);
+        if (*status != HYST_OK || !poly->increasing) {
+            free(masked);
+            return NAN;
+        }
+        memset(&f0, 0, sizeof f0);
+        f0.degree = poly->degree;
+        f0.lo = (double)poly->lo;
+        f0.hi = (double)poly->hi;
+        for (i = 0u; i <= poly->degree; ++i) {
+            f0.coeffs[i] = (double)poly->coeffs[i];
+        }
     }
-    return fit_model_run_creep(&f0, NULL, x, y, n, cfg->skip, cfg->delay, cfg->skip + train,
-                               NULL, NULL, creep);
+    free(masked);
+    e = model_run(kind == FIT_EVERETT ? NULL : &f0, kind == FIT_EVERETT ? &curve : NULL, x, y, n,
+                  cfg->skip, cfg->delay, from, to, split != 0,
+                  split != 0 && settle > from ? settle : from, &before, NULL, creep);
+    return e;
+}
+
+/* The hold-out of every split (FIT_SPLITS): their mean square's root; the
+ * training fit's results and the creep's time constant those of split 0,
+ * the creep's hold-out over every split at that time constant. */
+static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degree, int widened,
+                      const double *x, const double *y, size_t n, hyst_status_t *status,
+                      hyst_ident_result_t *poly, fit_everett_result_t *ev, fit_creep_t *creep,
+                      double *last_third)
+{
+    hyst_ident_result_t poly_other;
+    fit_everett_result_t ev_other;
+    fit_creep_t creep_other;
+    hyst_status_t st;
+    double e, ss, ss_creep = 0.0;
+    int split, splits = 1;
+    const size_t settle =
+        n > cfg->skip + cfg->delay ? fit_settled(x, cfg->skip, n - cfg->delay) : cfg->skip;
+    e = holdout_split(cfg, kind, t_degree, widened, x, y, n, 0, settle, status, poly, ev, creep);
+    ss = e * e;
+    if (last_third != NULL) {
+        *last_third = e;
+    }
+    if (creep != NULL) {
+        ss_creep = creep->holdout_rms * creep->holdout_rms;
+        creep->last_third_rms = creep->holdout_rms;
+    }
+    for (split = 1; split < FIT_SPLITS && isfinite(ss); ++split) {
+        const size_t len = n - cfg->skip - cfg->delay;
+        if (len / 3u < FIT_SPLIT_MIN ||
+            settle >= cfg->skip + (split == 2 ? len / 3u : train_count(n, cfg->skip, cfg->delay))) {
+            continue; /* too short, or it ends before the model's state is the record's */
+        }
+        creep_other.tau = creep != NULL ? creep->tau : 0.0;
+        e = holdout_split(cfg, kind, t_degree, widened, x, y, n, split, settle, &st, &poly_other,
+                          &ev_other, creep != NULL && creep->tau > 0 ? &creep_other : NULL);
+        ss += e * e;
+        ++splits;
+        if (creep != NULL && creep->tau > 0) {
+            ss_creep += creep_other.holdout_rms * creep_other.holdout_rms;
+        }
+        if (*status == HYST_OK && !isfinite(e)) {
+            *status = st; /* the reason this split could not be scored */
+        }
+    }
+    if (creep != NULL) {
+        creep->holdout_rms = sqrt(ss_creep / (double)splits);
+    }
+    return sqrt(ss / (double)splits);
+}
+
+double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
+                       size_t n, hyst_status_t *status, hyst_ident_result_t *fit,
+                       fit_creep_t *creep, double *last_third)
+{
+    fit_everett_result_t unused;
+    return holdout(cfg, FIT_POLY, 0u, 0, x, y, n, status, fit, &unused, creep, last_third);
 }
 
 double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
                            const double *y, size_t n, hyst_status_t *status,
-                           fit_everett_result_t *fit, fit_creep_t *creep)
+                           fit_everett_result_t *fit, fit_creep_t *creep, double *last_third)
 {
-    hyst_curve_t curve;
-    size_t train;
-    memset(fit, 0, sizeof *fit);
-    if (n <= cfg->skip + cfg->delay) {
-        *status = HYST_ERR_ARG;
-        return NAN;
-    }
-    train = train_count(n, cfg->skip, cfg->delay);
-    *status = fit_everett_record(cfg, t_degree, x, y, cfg->skip + train + cfg->delay, fit);
-    if (*status == HYST_OK) {
-        *status = fit->curve_status;
-    }
-    if (*status != HYST_OK || hyst_f64_curve_from_everett(&curve, &fit->e) != HYST_OK) {
-        return NAN;
-    }
-    return fit_model_run_creep(NULL, &curve, x, y, n, cfg->skip, cfg->delay, cfg->skip + train,
-                               NULL, NULL, creep);
+    hyst_ident_result_t unused;
+    return holdout(cfg, FIT_EVERETT, t_degree, 0, x, y, n, status, &unused, fit, creep,
+                   last_third);
 }
 
 double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const double *y,
@@ -290,17 +434,13 @@ void fit_score(const hyst_ident_config_t *base, const double *x, const double *y
     c->creep.holdout_rms = NAN;
     if (c->kind == FIT_EVERETT) {
         fit_everett_result_t ev;
-        if (c->widened && n > base->skip + c->delay) {
-            double lo, hi;
-            fit_input_range(x, base->skip, base->skip + train_count(n, base->skip, c->delay),
-                            FIT_WIDEN, &lo, &hi);
-            cfg.lo = lo;
-            cfg.hi = hi;
-        }
-        c->holdout_rms = fit_everett_holdout(&cfg, c->t_degree, x, y, n, &c->status, &ev, creep);
+        hyst_ident_result_t unused;
+        c->holdout_rms = holdout(&cfg, FIT_EVERETT, c->t_degree, c->widened, x, y, n, &c->status,
+                                 &unused, &ev, creep, &c->last_third_rms);
         c->fit_rms = ev.rms;
     } else {
-        c->holdout_rms = fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit, creep);
+        c->holdout_rms =
+            fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit, creep, &c->last_third_rms);
         c->fit_rms = (double)c->fit.rms;
     }
     if (!isfinite(c->holdout_rms)) {
@@ -323,6 +463,11 @@ void fit_delay_fraction(const double *x, size_t n, double f, double *xf)
 double fit_option_rms(const fit_candidate_t *c, int with_creep)
 {
     return with_creep ? (c->creep.tau > 0 ? c->creep.holdout_rms : NAN) : c->holdout_rms;
+}
+
+double fit_option_last_third(const fit_candidate_t *c, int with_creep)
+{
+    return with_creep ? (c->creep.tau > 0 ? c->creep.last_third_rms : NAN) : c->last_third_rms;
 }
 
 unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
