@@ -322,7 +322,7 @@ static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflec
 
 /* ---- the automatic choice (fit_select.c) ---- */
 
-#define MAX_CANDIDATES ((HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES) * (FIT_MAX_DELAY + 1u))
+#define MAX_CANDIDATES FIT_SEARCH_CANDIDATES
 static fit_candidate_t candidates[MAX_CANDIDATES];
 static size_t n_candidates, best_candidate;
 
@@ -344,82 +344,25 @@ static const char everett_singular[] =
 static void count_beyond(fit_opts_t *o, const cli_table_t *t);
 static void rank_others(fit_opts_t *o, const cli_table_t *t);
 
-/* The sub-sample delay: the chosen model (kind, degree, domain, creep
- * option) scored again with the drive a fraction of a sample later, at the
- * chosen delay and one below; the best, if it lowers the hold-out error by
- * more than FIT_FRACTION_GAIN, replaces the choice (o->delay_fraction, the
- * candidate's delay) and the table's drive is interpolated in place, as the
- * model file's delay makes sim do. 0, or 1 when out of memory. */
-static int choose_fraction(fit_opts_t *o, cli_table_t *t)
-{
-    static fit_candidate_t tried[2u * (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES)];
-    const fit_candidate_t *b = &candidates[best_candidate];
-    const double whole_rms = fit_option_rms(b, o->with_creep);
-    double lowest = whole_rms * (1.0 - FIT_FRACTION_GAIN), f, best_f = 0.0;
-    double *xf = (double *)malloc((t->n > 0u ? t->n : 1u) * sizeof(double));
-    hyst_ident_config_t base = o->cfg;
-    fit_candidate_t keep;
-    const unsigned params = fit_option_parameters(b, o->with_creep);
-    size_t n_tried, best, k;
-    unsigned i;
-    int wc, keep_wc = 0;
-    o->integer_holdout = whole_rms;
-    o->integer_delay = b->delay;
-    o->delay_fraction = 0.0;
-    if (xf == NULL) {
-        return 1;
-    }
-    memset(&keep, 0, sizeof keep);
-    base.delay = b->delay > 0u ? b->delay - 1u : 0u; /* D - 1 + f and D + f */
-    for (i = 1u; i < FIT_FRACTIONS && isfinite(whole_rms); ++i) {
-        f = (double)i / (double)FIT_FRACTIONS;
-        fit_delay_fraction(t->col[0], t->n, f, xf);
-        n_tried = fit_select(&base, candidate_kinds(o), 0u,
-                             o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, o->creep_tau, xf,
-                             t->col[1], t->n, b->delay, tried, sizeof tried / sizeof tried[0],
-                             &best, &wc);
-        /* the lowest error of no more parameters than the whole-delay choice:
-         * the fraction is not a way to more terms */
-        for (k = 0u; k < n_tried && best != (size_t)-1; ++k) {
-            for (wc = 0; wc <= 1; ++wc) {
-                const double e = fit_option_rms(&tried[k], wc);
-                if (isfinite(e) && e < lowest && fit_option_parameters(&tried[k], wc) <= params) {
-                    lowest = e;
-                    keep = tried[k];
-                    keep_wc = wc;
-                    best_f = f;
-                }
-            }
-        }
-    }
-    if (best_f > 0.0) { /* the choice at that fraction replaces the whole-delay one */
-        candidates[best_candidate] = keep;
-        o->with_creep = keep_wc;
-        o->delay_fraction = best_f;
-        fit_delay_fraction(t->col[0], t->n, best_f, t->col[0]);
-    }
-    free(xf);
-    return 0;
-}
-
 /* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
 static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
 {
-    size_t max_delay = o->cfg.delay;
-    if (!o->have_delay) { /* delays scaled to the drive's period */
-        o->max_delay = fit_max_delay(t->col[0], o->cfg.skip, t->n);
-        max_delay = o->max_delay;
-        if (max_delay > FIT_MAX_DELAY) { /* the cheap model's best delay, then around it */
-            o->cheap_delay = fit_cheap_delay(&o->cfg, t->col[0], t->col[1], t->n, max_delay);
-            o->cfg.delay = o->cheap_delay > FIT_DELAY_AROUND ? o->cheap_delay - FIT_DELAY_AROUND
-                                                             : 0u;
-            max_delay = o->cheap_delay + FIT_DELAY_AROUND;
-        }
+    fit_found_t found;
+    if (fit_search(&o->cfg, candidate_kinds(o), o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE,
+                   o->creep_tau, !o->have_delay, t->col[0], t->col[1], t->n, candidates,
+                   MAX_CANDIDATES, &found) != HYST_OK) {
+        return cli_fail("fit", "%s: out of memory", name);
     }
-    n_candidates = fit_select(&o->cfg, candidate_kinds(o), 0u,
-                              o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, o->creep_tau,
-                              t->col[0], t->col[1], t->n, max_delay, candidates,
-                              MAX_CANDIDATES, &best_candidate, &o->with_creep);
+    n_candidates = found.count;
+    best_candidate = found.best;
+    o->with_creep = found.with_creep;
+    if (!o->have_delay) {
+        o->max_delay = found.max_delay;
+        o->cheap_delay = found.cheap_delay;
+        o->delay_fraction = found.delay_fraction;
+        o->integer_delay = found.integer_delay;
+        o->integer_holdout = found.integer_holdout;
+    }
     if (best_candidate == (size_t)-1) {
         return cli_fail("fit", "%s: no candidate degree gave %s that could predict the last "
                                "third of the record (give --degree)",
@@ -429,19 +372,17 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
                                                     : "an increasing f0 or an E the library "
                                                       "accepts");
     }
-    if (!o->have_delay && choose_fraction(o, t) != 0) {
-        return cli_fail("fit", "%s: out of memory", name);
-    }
     o->final_kind = candidates[best_candidate].kind;
     o->cfg.degree = candidates[best_candidate].degree;
     o->t_degree = candidates[best_candidate].t_degree;
     o->cfg.delay = candidates[best_candidate].delay;
-    if (candidates[best_candidate].widened) { /* the domain of the model fitted on it all */
+    { /* a widened one: the domain of the model fitted on it all */
         double lo, hi;
-        fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, 0.0, &lo, &hi);
-        fit_widened_domain(lo, hi, t->col[0][o->cfg.skip], &lo, &hi);
-        o->cfg.lo = lo;
-        o->cfg.hi = hi;
+        if (fit_chosen_domain(&candidates[best_candidate], t->col[0], o->cfg.skip, t->n, &lo,
+                              &hi)) {
+            o->cfg.lo = lo;
+            o->cfg.hi = hi;
+        }
     }
     o->creep = candidates[best_candidate].creep;
     count_beyond(o, t);

@@ -38,6 +38,18 @@ void fit_widened_domain(double lo, double hi, double first, double *wide_lo, dou
     *wide_hi = hi + FIT_WIDEN * (hi - lo);
 }
 
+int fit_chosen_domain(const fit_candidate_t *c, const double *x, size_t skip, size_t n,
+                      double *lo, double *hi)
+{
+    double a, b;
+    if (!c->widened || n <= skip + c->delay) {
+        return 0;
+    }
+    fit_input_range(x, skip, n - c->delay, 0.0, &a, &b);
+    fit_widened_domain(a, b, x[skip], lo, hi);
+    return 1;
+}
+
 size_t fit_settled(const double *x, size_t from, size_t to)
 {
     double lo, hi;
@@ -580,4 +592,98 @@ void fit_choose(const fit_candidate_t *cand, size_t count, double creep_tau, siz
             }
         }
     }
+}
+
+/* The sub-sample delay of fit_search(): the choice's model (kind, degree,
+ * domain, creep option) scored again with the drive a fraction of a sample
+ * later, at the chosen delay and one below; the best of no more parameters,
+ * if it lowers the hold-out error by more than FIT_FRACTION_GAIN, replaces
+ * cand[out->best] and x is interpolated in place. 0, or 1 when out of memory. */
+static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t_degree,
+                           double creep_tau, double *x, const double *y, size_t n,
+                           fit_candidate_t *cand, fit_found_t *out)
+{
+    const size_t n_tried_max = 2u * FIT_CANDIDATES_PER_DELAY;
+    const fit_candidate_t *b = &cand[out->best];
+    const double whole_rms = fit_option_rms(b, out->with_creep);
+    const unsigned params = fit_option_parameters(b, out->with_creep);
+    double lowest = whole_rms * (1.0 - FIT_FRACTION_GAIN), f, best_f = 0.0;
+    double *xf = (double *)malloc((n > 0u ? n : 1u) * sizeof(double));
+    fit_candidate_t *tried = (fit_candidate_t *)malloc(n_tried_max * sizeof(fit_candidate_t));
+    hyst_ident_config_t base = *cfg;
+    fit_candidate_t keep;
+    size_t n_tried, best, k;
+    unsigned i;
+    int wc, keep_wc = 0;
+    out->integer_holdout = whole_rms;
+    out->integer_delay = b->delay;
+    out->delay_fraction = 0.0;
+    if (xf == NULL || tried == NULL) {
+        free(xf);
+        free(tried);
+        return 1;
+    }
+    memset(&keep, 0, sizeof keep);
+    base.delay = b->delay > 0u ? b->delay - 1u : 0u; /* D - 1 + f and D + f */
+    for (i = 1u; i < FIT_FRACTIONS && isfinite(whole_rms); ++i) {
+        f = (double)i / (double)FIT_FRACTIONS;
+        fit_delay_fraction(x, n, f, xf);
+        n_tried = fit_select(&base, kinds, 0u, t_degree, creep_tau, xf, y, n, b->delay, tried,
+                             n_tried_max, &best, &wc);
+        /* the lowest error of no more parameters than the whole-delay choice:
+         * the fraction is not a way to more terms */
+        for (k = 0u; k < n_tried && best != (size_t)-1; ++k) {
+            for (wc = 0; wc <= 1; ++wc) {
+                const double e = fit_option_rms(&tried[k], wc);
+                if (isfinite(e) && e < lowest && fit_option_parameters(&tried[k], wc) <= params) {
+                    lowest = e;
+                    keep = tried[k];
+                    keep_wc = wc;
+                    best_f = f;
+                }
+            }
+        }
+    }
+    if (best_f > 0.0) { /* the choice at that fraction replaces the whole-delay one */
+        cand[out->best] = keep;
+        out->with_creep = keep_wc;
+        out->delay_fraction = best_f;
+        fit_delay_fraction(x, n, best_f, x);
+    }
+    free(xf);
+    free(tried);
+    return 0;
+}
+
+hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_degree,
+                         double creep_tau, int choose_delay, double *x, const double *y,
+                         size_t n, fit_candidate_t *cand, size_t max_cand, fit_found_t *out)
+{
+    hyst_ident_config_t cfg = *base;
+    size_t max_delay = base->delay;
+    memset(out, 0, sizeof *out);
+    out->integer_holdout = NAN;
+    out->max_delay = base->delay;
+    if (choose_delay) { /* delays scaled to the drive's period */
+        cfg.delay = 0u;
+        out->max_delay = fit_max_delay(x, cfg.skip, n);
+        max_delay = out->max_delay;
+        if (max_delay > FIT_MAX_DELAY) { /* the cheap model's best delay, then around it */
+            out->cheap_delay = fit_cheap_delay(&cfg, x, y, n, max_delay);
+            cfg.delay = out->cheap_delay > FIT_DELAY_AROUND ? out->cheap_delay - FIT_DELAY_AROUND
+                                                             : 0u;
+            max_delay = out->cheap_delay + FIT_DELAY_AROUND;
+        }
+    }
+    out->count = fit_select(&cfg, kinds, 0u, t_degree, creep_tau, x, y, n, max_delay, cand,
+                            max_cand, &out->best, &out->with_creep);
+    if (out->best != (size_t)-1) {
+        out->integer_delay = cand[out->best].delay;
+        out->integer_holdout = fit_option_rms(&cand[out->best], out->with_creep);
+    }
+    if (choose_delay && out->best != (size_t)-1 &&
+        search_fraction(&cfg, kinds, t_degree, creep_tau, x, y, n, cand, out) != 0) {
+        return HYST_ERR_NOSPACE;
+    }
+    return HYST_OK;
 }

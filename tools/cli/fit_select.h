@@ -63,6 +63,10 @@
  * there, not lower). */
 void fit_widened_domain(double lo, double hi, double first, double *wide_lo, double *wide_hi);
 
+/* Kinds of model a candidate may be (see below); FIT_CANDIDATES_PER_DELAY:
+ * the most fit_select() adds at one delay (everett ones also widened). */
+#define FIT_CANDIDATES_PER_DELAY (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES)
+
 /* Kinds of model a candidate may be (a mask for fit_select()): the
  * symmetric TCM's polynomial f0 and the asymmetric kind's E. */
 enum { FIT_POLY = 1, FIT_EVERETT = 2 };
@@ -219,6 +223,12 @@ unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep);
 /* The option's hold-out on the last third alone (what PI-10 is compared on). */
 double fit_option_last_third(const fit_candidate_t *c, int with_creep);
 
+/* The domain candidate c is fitted on over the whole record x[skip .. n)
+ * once chosen, into *lo, *hi when it is a widened one (returns 1; 0 and
+ * nothing written otherwise): the inputs' range, fit_widened_domain(). */
+int fit_chosen_domain(const fit_candidate_t *c, const double *x, size_t skip, size_t n,
+                      double *lo, double *hi);
+
 /* Fits each kind of the mask `kinds` (poly degree 1..HYST_MAX_DEGREE,
  * everett degree 1..HYST_EVERETT_MAX_DEGREE with each t-degree 0..degree - 1;
  * everett_degree, when not 0, the only everett degree, t_degree, when not
@@ -240,5 +250,35 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
  * compares the candidates alone, > 0 with their creep terms only, 0 both. */
 void fit_choose(const fit_candidate_t *cand, size_t count, double creep_tau, size_t *best,
                 int *with_creep);
+
+/* The automatic choice as `hyst fit` without --degree, Python's
+ * fit(degree=None) and Octave's hyst_fit make it (fit_search()). */
+typedef struct fit_found {
+    size_t max_delay;       /* choose_delay: delays searched 0..max_delay (fit_max_delay()) */
+    size_t cheap_delay;     /* max_delay > FIT_MAX_DELAY: f0 of degree 3's best delay */
+    size_t count;           /* candidates scored into cand[] */
+    size_t best;            /* the choice ((size_t)-1: none) */
+    int with_creep;         /* chosen with its creep term */
+    double delay_fraction;  /* the sub-sample delay's fraction (0: none) */
+    size_t integer_delay;   /* the choice's delay before the fraction */
+    double integer_holdout; /* and its hold-out error there */
+} fit_found_t;
+
+/* Candidates fit_search() may score: every one of a delay, at the
+ * FIT_MAX_DELAY + 1 = 2 FIT_DELAY_AROUND + 1 delays searched alike. */
+#define FIT_SEARCH_CANDIDATES (FIT_CANDIDATES_PER_DELAY * (FIT_MAX_DELAY + 1u))
+
+/* fit_select() of the kinds, each t-degree or t_degree, on cand[0..max_cand),
+ * at base->delay only, or with choose_delay at delays scaled to the drive
+ * (0..fit_max_delay(); beyond FIT_MAX_DELAY, f0 of degree 3 at each, then
+ * every candidate at FIT_DELAY_AROUND each side of its best), then at a
+ * fraction of a sample (1/FIT_FRACTIONS steps, at the chosen delay and one
+ * below; kept when more than FIT_FRACTION_GAIN better with no more
+ * parameters, replacing the choice: x is then the drive interpolated, in
+ * place, as the model file's delay makes sim interpolate it). HYST_OK, or
+ * HYST_ERR_NOSPACE (out of memory). */
+hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_degree,
+                         double creep_tau, int choose_delay, double *x, const double *y,
+                         size_t n, fit_candidate_t *cand, size_t max_cand, fit_found_t *out);
 
 #endif
