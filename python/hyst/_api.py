@@ -6,7 +6,7 @@ import numpy as np
 
 from . import _hyst
 from ._errors import HystError
-from ._model_file import _creep_args, everett_terms, header_text, save_model
+from ._model_file import _creep_args, header_text, save_model
 
 MAX_DEGREE = _hyst.MAX_DEGREE
 EVERETT_MAX_DEGREE = _hyst.EVERETT_MAX_DEGREE
