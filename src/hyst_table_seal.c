@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* Seals of tabulated inverses built ahead of time (curve.h, "A table built
- * ahead of time"): a checksum of the table as stored, its shape and the
- * error its build measured, so that firmware takes a table from flash
- * without building it again, and refuses one that was damaged. */
+/* Seals of what is built ahead of time (curve.h): a tabulated inverse (a
+ * checksum of the table as stored, its shape and the error its build
+ * measured) and a polynomial curve's prepared numbers, so that firmware
+ * takes them from flash without building them again, and refuses them
+ * damaged. */
 #include <float.h>
 
 #include "hyst_util.h"
@@ -119,4 +120,29 @@ int hyst_table_shape_ok_(hyst_cptr_t table, size_t base, size_t intervals, unsig
         }
     }
     return 1;
+}
+
+/* Bumped when the sealed numbers change meaning: an old seal is refused. */
+#define POLY_SEAL_FORMAT 0x48535031ul /* "HSP1" */
+
+unsigned long hyst_poly_seal_crc_(const hyst_curve_t *curve)
+{
+    const unsigned v = curve->variant;
+    const unsigned x = v == (unsigned)HYST_VARIANT_Q31 ? (unsigned)HYST_VARIANT_CODE : v;
+    const unsigned n = curve->u.poly.degree;
+    unsigned long crc = hyst_crc_word_(0ul, POLY_SEAL_FORMAT);
+    unsigned k;
+    crc = hyst_crc_word_(crc, curve->kind);
+    crc = hyst_crc_word_(crc, v);
+    crc = hyst_crc_word_(crc, n);
+    crc = hyst_crc_num_(crc, &curve->lo, x);
+    crc = hyst_crc_num_(crc, &curve->hi, x);
+    crc = hyst_crc_num_(crc, &curve->y_lo, v);
+    crc = hyst_crc_num_(crc, &curve->y_hi, v);
+    crc = hyst_crc_num_(crc, &curve->unit, v);
+    crc = hyst_crc_num_(crc, &curve->rounding, v);
+    for (k = 0u; k < n && k < HYST_MAX_DEGREE; ++k) {
+        crc = hyst_crc_num_(crc, &curve->u.poly.a[k], v);
+    }
+    return crc & 0xFFFFFFFFul;
 }

@@ -91,6 +91,75 @@ static hyst_status_t NUM_NAME(init_impl)(hyst_tcm_t *S, const hyst_poly_t *f0, N
     return HYST_OK;
 }
 
+/* The prepared numbers of a polynomial curve as the sealed struct holds
+ * them (curve.h), and back: the same curve either way. */
+static hyst_status_t NUM_NAME(seal_poly_impl)(NUM_NAME(sealed_poly_t) *out, const hyst_poly_t *f0,
+                                              unsigned long layout)
+{
+    NUM_NAME(sealed_poly_t) c;
+    hyst_curve_t curve;
+    unsigned k;
+    hyst_status_t st = out == NULL ? HYST_ERR_NULL
+                                   : hyst_curve_poly_(&curve, f0, NUM_VARIANT, layout);
+    if (st != HYST_OK) {
+        return st;
+    }
+    memset(&c, 0, sizeof c);
+    c.seal = hyst_poly_seal_crc_(&curve);
+    c.degree = curve.u.poly.degree;
+    c.lo = curve.lo.NUM_F;
+    c.hi = curve.hi.NUM_F;
+    c.y_lo = curve.y_lo.NUM_F;
+    c.y_hi = curve.y_hi.NUM_F;
+    c.unit = curve.unit.NUM_F;
+    c.rounding = curve.rounding.NUM_F;
+    for (k = 0u; k < c.degree; ++k) {
+        c.a[k] = curve.u.poly.a[k].NUM_F;
+    }
+    *out = c;
+    return HYST_OK;
+}
+
+/* Checks only what the seal cannot vouch for (the memory, the layout, the
+ * degree that bounds the copy) and the seal: no curve construction. */
+static hyst_status_t NUM_NAME(init_sealed_impl)(hyst_tcm_t *S, const NUM_NAME(sealed_poly_t) *c,
+                                                NUM_T *xltp, NUM_T *yltp, NUM_T *xrtp,
+                                                NUM_T *yrtp, size_t capacity, unsigned long layout)
+{
+    hyst_curve_t curve;
+    unsigned k;
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T),
+                                         sizeof(NUM_T), layout);
+    if (st != HYST_OK || c == NULL) {
+        return st != HYST_OK ? st : HYST_ERR_NULL;
+    }
+    if (c->degree < 1u || c->degree > HYST_MAX_DEGREE) {
+        return HYST_ERR_DEGREE;
+    }
+    memset(&curve, 0, sizeof curve);
+    curve.kind = HYST_CURVE_POLY;
+    curve.variant = NUM_VARIANT;
+    curve.layout = HYST_LAYOUT;
+    curve.u.poly.degree = c->degree;
+    curve.lo.NUM_F = c->lo;
+    curve.hi.NUM_F = c->hi;
+    curve.y_lo.NUM_F = c->y_lo;
+    curve.y_hi.NUM_F = c->y_hi;
+    curve.unit.NUM_F = c->unit;
+    curve.rounding.NUM_F = c->rounding;
+    for (k = 0u; k < c->degree; ++k) {
+        curve.u.poly.a[k].NUM_F = c->a[k];
+    }
+    if (hyst_poly_seal_crc_(&curve) != (c->seal & 0xFFFFFFFFul)) {
+        return HYST_ERR_CRC;
+    }
+    /* as init_impl(): the polynomial is copied whole into the instance */
+    NUM_NAME(attach)(S, &curve, NULL, curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
+                     yltp, xrtp, yrtp, capacity);
+    S->curve = NULL;
+    return HYST_OK;
+}
+
 /* A compensator of f0: its inverse curve into *inv (exact by bisection, or
  * tabulated into table if `tabulate`), then the instance. */
 static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,

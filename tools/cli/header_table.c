@@ -11,13 +11,23 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* v as a float build reads the header's literal of it: HYST_REAL_C(lit) is
- * lit##f, converted directly to float. */
-static double as_float_literal(double v)
+double cli_as_float_literal(double v)
 {
     char lit[40];
     cli_c_literal(lit, sizeof lit, v);
     return (double)strtof(lit, NULL);
+}
+
+void cli_model_poly_as_read(const cli_model_t *m, int f32, hyst_poly_t *p)
+{
+    size_t i;
+    memset(p, 0, sizeof *p);
+    p->degree = (unsigned)(m->ncoef - 1u);
+    p->lo = f32 ? cli_as_float_literal(m->lo) : m->lo;
+    p->hi = f32 ? cli_as_float_literal(m->hi) : m->hi;
+    for (i = 0u; i < m->ncoef; ++i) {
+        p->coeffs[i] = f32 ? cli_as_float_literal(m->coeffs[i]) : m->coeffs[i];
+    }
 }
 
 /* A table of one variant (f32 or f64): its numbers as doubles, its seal
@@ -52,12 +62,12 @@ static hyst_status_t build(const cli_model_t *m, int f32, size_t rows, size_t in
         unsigned a, b;
         cli_model_to_everett(m, &e);
         if (f32) {
-            e.lo = as_float_literal(e.lo);
-            e.hi = as_float_literal(e.hi);
-            e.y_lo = as_float_literal(e.y_lo);
+            e.lo = cli_as_float_literal(e.lo);
+            e.hi = cli_as_float_literal(e.hi);
+            e.y_lo = cli_as_float_literal(e.y_lo);
             for (a = 0u; a < HYST_EVERETT_MAX_DEGREE; ++a) {
                 for (b = 0u; b < HYST_EVERETT_MAX_DEGREE; ++b) {
-                    e.e[a][b] = as_float_literal(e.e[a][b]);
+                    e.e[a][b] = cli_as_float_literal(e.e[a][b]);
                 }
             }
             st = hyst_f32_curve_from_everett(&fwd, &e);
@@ -72,13 +82,7 @@ static hyst_status_t build(const cli_model_t *m, int f32, size_t rows, size_t in
         }
     } else {
         hyst_poly_t p;
-        memset(&p, 0, sizeof p);
-        p.degree = (unsigned)(m->ncoef - 1u);
-        p.lo = f32 ? as_float_literal(m->lo) : m->lo;
-        p.hi = f32 ? as_float_literal(m->hi) : m->hi;
-        for (i = 0u; i < m->ncoef; ++i) {
-            p.coeffs[i] = f32 ? as_float_literal(m->coeffs[i]) : m->coeffs[i];
-        }
+        cli_model_poly_as_read(m, f32, &p);
         st = f32 ? hyst_f32_curve_from_poly(&fwd, &p) : hyst_f64_curve_from_poly(&fwd, &p);
         if (st == HYST_OK) {
             st = f32 ? hyst_f32_curve_inverse_table(&inv, &fwd, t32, intervals)
