@@ -107,26 +107,25 @@ int hyst_q31_curve_(hyst_curve_t *q, const hyst_wide_t *g, unsigned n, hyst_wide
     return 1;
 }
 
-/* The frame of a q31 polynomial curve, as both inits attach it: the codes
- * (its domain), G's argument per code and the outputs at the ends. */
-static void q31_frame(hyst_curve_t *q, unsigned n, uint_least32_t code_lo, uint_least32_t code_hi,
-                      hyst_q31_t unit)
+/* The frame of a q31 polynomial curve, as both inits attach it: the outputs
+ * at the ends (its codes and G's argument per code are the instance's:
+ * attach()'s arguments). */
+HYST_INLINE void q31_frame(hyst_curve_t *q, unsigned n)
 {
     memset(q, 0, sizeof *q);
     q->kind = HYST_CURVE_POLY;
     q->variant = HYST_VARIANT_Q31;
     q->layout = HYST_LAYOUT;
     q->u.poly.degree = n;
-    q->lo.code = (hyst_code_word_t)code_lo;
-    q->hi.code = (hyst_code_word_t)code_hi;
-    q->unit.q31 = unit;
     q->y_lo.q31 = -((hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1));
     q->y_hi.q31 = (hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1);
 }
 
-/* The q31 curve of f0 on codes code_lo..code_hi (set-up in hyst_wide_t). */
-static hyst_status_t q31_prepare(hyst_curve_t *q, const hyst_poly_t *f0, uint_least32_t code_lo,
-                                 uint_least32_t code_hi, unsigned long layout)
+/* The q31 curve of f0 on codes code_lo..code_hi (set-up in hyst_wide_t),
+ * and G's argument per code in *unit. */
+HYST_INLINE hyst_status_t q31_prepare(hyst_curve_t *q, hyst_q31_t *unit, const hyst_poly_t *f0,
+                                      uint_least32_t code_lo, uint_least32_t code_hi,
+                                      unsigned long layout)
 {
     /* The curve's checks (domain, coefficients, monotonicity) in
      * hyst_wide_t; its rounding bound for double (hyst_q31_curve_() states this
@@ -135,7 +134,6 @@ static hyst_status_t q31_prepare(hyst_curve_t *q, const hyst_poly_t *f0, uint_le
     const unsigned checks = (unsigned)HYST_VARIANT_F64;
     hyst_curve_t real;
     hyst_wide_t g[HYST_MAX_DEGREE + 1], range = 0, c;
-    hyst_q31_t unit;
     unsigned n, k;
     const hyst_status_t st = hyst_curve_poly_(&real, f0, checks, layout);
     if (st != HYST_OK) {
@@ -150,9 +148,9 @@ static hyst_status_t q31_prepare(hyst_curve_t *q, const hyst_poly_t *f0, uint_le
         range += g[k];
     }
     /* v = d * unit in Q30 (exact); d = N gives v <= 2^30 + N / 2 < 2^31 */
-    unit = q31_round(Q31_ONE_U / (hyst_wide_t)(code_hi - code_lo));
-    c = (hyst_wide_t)(code_hi - code_lo) * (hyst_wide_t)unit / Q31_ONE_U;
-    q31_frame(q, n, code_lo, code_hi, unit);
+    *unit = q31_round(Q31_ONE_U / (hyst_wide_t)(code_hi - code_lo));
+    c = (hyst_wide_t)(code_hi - code_lo) * (hyst_wide_t)*unit / Q31_ONE_U;
+    q31_frame(q, n);
     if (!(range > 0) || !hyst_q31_curve_(q, g, n, range, c)) {
         return HYST_ERR_COEFF;
     }
@@ -165,16 +163,17 @@ hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_
                              unsigned long layout)
 {
     hyst_curve_t q;
+    hyst_q31_t unit;
     hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity,
                                          sizeof(hyst_code_word_t), sizeof(hyst_q31_t), layout);
     if (st == HYST_OK) {
-        st = q31_prepare(&q, f0, code_lo, code_hi, layout);
+        st = q31_prepare(&q, &unit, f0, code_lo, code_hi, layout);
     }
     if (st != HYST_OK) {
         return st;
     }
-    hyst_q31_attach(S, &q, NULL, q.lo.code, q.hi.code, q.unit.q31, xltp, yltp, xrtp, yrtp,
-                    capacity);
+    hyst_q31_attach(S, &q, NULL, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit,
+                    xltp, yltp, xrtp, yrtp, capacity);
     S->curve = NULL; /* the polynomial is copied whole into the instance */
     return HYST_OK;
 }
@@ -185,18 +184,22 @@ hyst_status_t hyst_q31_seal_poly_(hyst_q31_sealed_poly_t *out, const hyst_poly_t
 {
     hyst_q31_sealed_poly_t c;
     hyst_curve_t q;
+    hyst_q31_t unit = 0;
     unsigned k;
     const hyst_status_t st =
-        out == NULL ? HYST_ERR_NULL : q31_prepare(&q, f0, code_lo, code_hi, layout);
+        out == NULL ? HYST_ERR_NULL : q31_prepare(&q, &unit, f0, code_lo, code_hi, layout);
     if (st != HYST_OK) {
         return st;
     }
+    q.unit.q31 = unit;
+    q.lo.code = (hyst_code_word_t)code_lo; /* sealed with the numbers */
+    q.hi.code = (hyst_code_word_t)code_hi;
     memset(&c, 0, sizeof c);
     c.seal = hyst_poly_seal_crc_(&q);
     c.degree = q.u.poly.degree;
     c.code_lo = code_lo;
     c.code_hi = code_hi;
-    c.unit = q.unit.q31;
+    c.unit = unit;
     c.rounding = q.rounding.q31;
     for (k = 0u; k < c.degree; ++k) {
         c.a[k] = q.u.poly.a[k].q31;
@@ -206,7 +209,12 @@ hyst_status_t hyst_q31_seal_poly_(hyst_q31_sealed_poly_t *out, const hyst_poly_t
 }
 
 /* Checks only what the seal cannot vouch for (the memory, the layout, the
- * degree that bounds the copy, codes the stored words hold) and the seal. */
+ * degree that bounds the copy, codes the stored words hold) and the seal.
+ * The engine's attach() inlined here (flatten): its one other call, in
+ * hyst_q31_init_(), stays inlined there too, as before this init existed. */
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
 hyst_status_t hyst_q31_init_sealed_(hyst_tcm_t *S, const hyst_q31_sealed_poly_t *sealed,
                                     hyst_code_word_t *xltp, hyst_q31_t *yltp,
                                     hyst_code_word_t *xrtp, hyst_q31_t *yrtp, size_t capacity,
@@ -226,7 +234,10 @@ hyst_status_t hyst_q31_init_sealed_(hyst_tcm_t *S, const hyst_q31_sealed_poly_t 
         sealed->code_hi > (uint_least32_t)HYST_CODE_MAX) {
         return HYST_ERR_DOMAIN;
     }
-    q31_frame(&q, sealed->degree, sealed->code_lo, sealed->code_hi, sealed->unit);
+    q31_frame(&q, sealed->degree);
+    q.unit.q31 = sealed->unit;
+    q.lo.code = (hyst_code_word_t)sealed->code_lo;
+    q.hi.code = (hyst_code_word_t)sealed->code_hi;
     q.rounding.q31 = sealed->rounding;
     for (k = 0u; k < sealed->degree; ++k) {
         q.u.poly.a[k].q31 = sealed->a[k];
