@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Polynomial curves sealed ahead of time (curve.h, hyst_*_seal_poly();
  * tcm.h, hyst_*_init_sealed()): the header `hyst header --sealed` wrote on
- * the host (support/eq20.h) is accepted here and gives the instance
+ * the host (tests/data/eq20.h) is accepted here and gives the instance
  * hyst_init() makes from the same header's f0, output for output, bit for
  * bit (on the Cortex-M4F too: its seal is the one this machine makes); so
  * does any curve sealed here; a number changed (one unit in the last place)
