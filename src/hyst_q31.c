@@ -163,7 +163,7 @@ hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_
                              unsigned long layout)
 {
     hyst_curve_t q;
-    hyst_q31_t unit;
+    hyst_q31_t unit = 0; /* set by q31_prepare() when it succeeds */
     hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity,
                                          sizeof(hyst_code_word_t), sizeof(hyst_q31_t), layout);
     if (st == HYST_OK) {
