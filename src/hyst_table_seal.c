@@ -146,3 +146,42 @@ unsigned long hyst_poly_seal_crc_(const hyst_curve_t *curve)
     }
     return crc & 0xFFFFFFFFul;
 }
+
+#define INVERSE_SEAL_FORMAT 0x48534931ul /* "HSI1" */
+
+unsigned long hyst_inverse_seal_crc_(const hyst_curve_t *inv, const hyst_num_t *max_err)
+{
+    const unsigned v = inv->variant;
+    const unsigned n = inv->u.inv_table.fwd.degree;
+    const unsigned long len = HYST_INV_TABLE_LEN((unsigned long)inv->u.inv_table.intervals);
+    const hyst_num_t *const num[7] = {&inv->lo,   &inv->hi,   &inv->y_lo,
+                                      &inv->y_hi, &inv->unit, &inv->u.inv_table.span,
+                                      &inv->u.inv_table.u_per_d};
+    unsigned long crc = hyst_crc_word_(0ul, INVERSE_SEAL_FORMAT), i;
+    unsigned k;
+    crc = hyst_crc_word_(crc, inv->kind);
+    crc = hyst_crc_word_(crc, v);
+    crc = hyst_crc_word_(crc, n);
+    crc = hyst_crc_word_(crc, (unsigned long)inv->u.inv_table.intervals);
+    crc = hyst_crc_word_(crc, (unsigned long)inv->u.inv_table.exact);
+    crc = hyst_crc_num_(crc, max_err, (unsigned)HYST_VARIANT_F32);
+    for (k = 0u; k < 7u; ++k) {
+        crc = hyst_crc_num_(crc, num[k], v);
+    }
+    for (k = 0u; k < n && k < HYST_MAX_DEGREE; ++k) {
+        crc = hyst_crc_num_(crc, &inv->u.inv_table.fwd.a[k], v);
+    }
+    for (i = 0ul; i < len; ++i) {
+        hyst_num_t t;
+        if (v == (unsigned)HYST_VARIANT_F32) {
+            t.f32 = inv->u.inv_table.table.f32[i];
+        }
+#if HYST_ENABLE_F64
+        else {
+            t.f64 = inv->u.inv_table.table.f64[i];
+        }
+#endif
+        crc = hyst_crc_num_(crc, &t, v);
+    }
+    return crc & 0xFFFFFFFFul;
+}

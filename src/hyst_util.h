@@ -297,6 +297,10 @@ unsigned long hyst_crc_num_(unsigned long crc, const hyst_num_t *v, unsigned var
  * outputs at its ends, unit, rounding and G's coefficients, as stored
  * (src/hyst_table_seal.c). */
 unsigned long hyst_poly_seal_crc_(const hyst_curve_t *curve);
+/* The seal of a tabulated compensator's prepared curve (inverse.h): its
+ * numbers (the forward polynomial's included), intervals, exact count, the
+ * error as a float, and every number of its table, as stored. */
+unsigned long hyst_inverse_seal_crc_(const hyst_curve_t *inv, const hyst_num_t *max_err);
 /* A tabulated inverse's measured error as tables keep it: rounded up to a
  * float, so a seal (hyst_table_seal_t) states it the same on every target;
  * and the seal's check of a table given ready-made (src/hyst_table_seal.c):

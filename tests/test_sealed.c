@@ -33,14 +33,14 @@ static hyst_status_t init_sealed(hyst_t *S, const hyst_sealed_poly_t *c)
     return hyst_init_sealed(S, c, xl2, yl2, xr2, yr2, CAP);
 }
 
-/* A (hyst_init) and B (sealed) give the same outputs, statuses and bounds
- * over every kind of signal on the domain. */
-static void assert_same_run(const hyst_poly_t *f0)
+/* A (built) and B (sealed) give the same outputs, statuses and bounds
+ * over every kind of signal on [lo, hi]. */
+static void assert_same_run_on(double lo, double hi)
 {
     int kind;
     for (kind = 0; kind < SIG_KINDS; ++kind) {
         long i;
-        fill_signal(kind, &rng, (double)f0->lo, (double)f0->hi, x, SAMPLES);
+        fill_signal(kind, &rng, lo, hi, x, SAMPLES);
         hyst_reset(&A);
         hyst_reset(&B);
         for (i = 0; i < SAMPLES; ++i) {
@@ -57,6 +57,11 @@ static void assert_same_run(const hyst_poly_t *f0)
             TEST_ASSERT_EQUAL_UINT(hyst_tp_count(&A), hyst_tp_count(&B));
         }
     }
+}
+
+static void assert_same_run(const hyst_poly_t *f0)
+{
+    assert_same_run_on((double)f0->lo, (double)f0->hi);
 }
 
 static void test_header_sealed_is_the_init_of_its_f0(void)
@@ -178,6 +183,83 @@ static void test_seal_poly_checks_as_the_constructor(void)
     TEST_ASSERT_EQUAL_MEMORY(&before, &s, sizeof s);
 }
 
+/* ---- the tabulated compensator ---- */
+
+static hyst_real_t table[HYST_INV_TABLE_LEN(HYST_INV_TABLE)];
+static hyst_real_t flash[HYST_INV_TABLE_LEN(HYST_INV_TABLE)]; /* the copy firmware would hold */
+static hyst_curve_t inv_built, inv_sealed;
+
+/* The compensator of f0 built (A) and from its seal and a copy of its table
+ * (B): the same curve numbers, the same drives bit for bit. */
+static void assert_sealed_compensator(const hyst_poly_t *f0, size_t intervals)
+{
+    hyst_sealed_inverse_t s;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_table(&A, &inv_built, f0, table, intervals,
+                                                           xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_seal_inverse_table(&s, &inv_built));
+    memcpy(flash, table, HYST_INV_TABLE_LEN(intervals) * sizeof table[0]);
+    memset(&inv_sealed, 0x5A, sizeof inv_sealed);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_sealed(&B, &inv_sealed, &s, flash, xl2, yl2,
+                                                            xr2, yr2, CAP));
+    TEST_ASSERT_TRUE(hyst_curve_inverse_error(&inv_built) == hyst_curve_inverse_error(&inv_sealed));
+    TEST_ASSERT_EQUAL_UINT(inv_built.u.inv_table.exact, inv_sealed.u.inv_table.exact);
+    assert_same_run_on((double)CURVE_NUM(inv_built.lo), (double)CURVE_NUM(inv_built.hi));
+}
+
+static void test_sealed_compensator_is_the_built_one(void)
+{
+    const hyst_poly_t cube = poly_monomial(3u, -1.0, 1.0); /* a flat point: exact intervals */
+    assert_sealed_compensator(&eq20, HYST_INV_TABLE);
+    assert_sealed_compensator(&cube, 64u);
+    TEST_ASSERT_TRUE(inv_sealed.u.inv_table.exact > 0u);
+}
+
+static void test_damaged_sealed_compensator_is_refused(void)
+{
+    hyst_sealed_inverse_t s, c;
+    size_t k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_table(&A, &inv_built, &eq20, table,
+                                                           HYST_INV_TABLE, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_seal_inverse_table(&s, &inv_built));
+    for (k = 0u; k < HYST_INV_TABLE_LEN(HYST_INV_TABLE); k += 97u) { /* a table number one unit off */
+        memcpy(flash, table, sizeof flash);
+        flash[k] = next_up(flash[k]);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, hyst_init_inverse_sealed(&B, &inv_sealed, &s, flash,
+                                                                     xl2, yl2, xr2, yr2, CAP));
+    }
+    memcpy(flash, table, sizeof flash);
+    c = s;
+    c.span = next_up(c.span);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, hyst_init_inverse_sealed(&B, &inv_sealed, &c, flash, xl2,
+                                                                 yl2, xr2, yr2, CAP));
+    c = s;
+    c.a[0] = next_up(c.a[0]);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, hyst_init_inverse_sealed(&B, &inv_sealed, &c, flash, xl2,
+                                                                 yl2, xr2, yr2, CAP));
+    c = s;
+    c.max_err = nextafterf(c.max_err, 1.0f);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, hyst_init_inverse_sealed(&B, &inv_sealed, &c, flash, xl2,
+                                                                 yl2, xr2, yr2, CAP));
+    c = s;
+    c.exact += 1ul;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CRC, hyst_init_inverse_sealed(&B, &inv_sealed, &c, flash, xl2,
+                                                                 yl2, xr2, yr2, CAP));
+    c = s;
+    c.intervals = 0ul;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_init_inverse_sealed(&B, &inv_sealed, &c, flash, xl2,
+                                                                 yl2, xr2, yr2, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse_sealed(&B, &inv_sealed, &s, NULL, xl2,
+                                                                  yl2, xr2, yr2, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_seal_inverse_table(&c, NULL));
+    {   /* a forward curve is not a tabulated compensator */
+        hyst_curve_t fwd;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&fwd, &eq20));
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_seal_inverse_table(&c, &fwd));
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_sealed(&B, &inv_sealed, &s, flash, xl2, yl2,
+                                                            xr2, yr2, CAP));
+}
+
 /* ---- the q31 model ---- */
 
 static hyst_code_word_t qx[4][CAP];
@@ -247,6 +329,8 @@ int main(void)
     RUN_TEST(test_damaged_sealed_curve_is_refused);
     RUN_TEST(test_what_the_seal_cannot_vouch_for_is_checked);
     RUN_TEST(test_seal_poly_checks_as_the_constructor);
+    RUN_TEST(test_sealed_compensator_is_the_built_one);
+    RUN_TEST(test_damaged_sealed_compensator_is_refused);
     RUN_TEST(test_q31_header_sealed_is_the_init_of_its_f0);
     RUN_TEST(test_q31_damaged_sealed_model_is_refused);
     return UNITY_END();
