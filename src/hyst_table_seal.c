@@ -5,6 +5,7 @@
  * takes them from flash without building them again, and refuses them
  * damaged. */
 #include <float.h>
+#include <stdint.h>
 
 #include "hyst_util.h"
 
@@ -145,6 +146,44 @@ unsigned long hyst_poly_seal_crc_(const hyst_curve_t *curve)
         crc = hyst_crc_num_(crc, &curve->u.poly.a[k], v);
     }
     return crc & 0xFFFFFFFFul;
+}
+
+hyst_wide_t hyst_wide_of_float_(float v)
+{
+#if !defined(HYST_NO_DOUBLE) && DBL_MANT_DIG == 53 && DBL_MAX_EXP == 1024 && FLT_MANT_DIG == 24 && \
+    FLT_MAX_EXP == 128
+    /* IEEE binary32 to binary64 by its fields: exact, and integer work only */
+    union {
+        float r;
+        uint32_t u;
+    } f;
+    union {
+        hyst_wide_t r;
+        uint64_t u;
+    } d;
+    uint32_t exp, man;
+    f.r = v;
+    exp = (f.u >> 23) & 0xFFu;
+    man = f.u & 0x7FFFFFu;
+    d.u = (uint64_t)(f.u >> 31) << 63;
+    if (exp == 0xFFu) {
+        d.u |= (uint64_t)0x7FFu << 52 | (uint64_t)man << 29; /* Inf, NaN */
+    } else if (exp != 0u || man != 0u) {
+        uint32_t e = exp + (1023u - 127u);
+        if (exp == 0u) { /* subnormal: normalised */
+            e = 1023u - 126u;
+            while ((man & 0x800000u) == 0u) {
+                man <<= 1u;
+                --e;
+            }
+            man &= 0x7FFFFFu;
+        }
+        d.u |= (uint64_t)e << 52 | (uint64_t)man << 29;
+    }
+    return d.r;
+#else
+    return (hyst_wide_t)v;
+#endif
 }
 
 #define INVERSE_SEAL_FORMAT 0x48534931ul /* "HSI1" */

@@ -301,6 +301,9 @@ unsigned long hyst_poly_seal_crc_(const hyst_curve_t *curve);
  * numbers (the forward polynomial's included), intervals, exact count, the
  * error as a float, and every number of its table, as stored. */
 unsigned long hyst_inverse_seal_crc_(const hyst_curve_t *inv, const hyst_num_t *max_err);
+/* (hyst_wide_t)v without floating-point work where hyst_wide_t is an IEEE
+ * double kept in software: a cast would link the soft double library. */
+hyst_wide_t hyst_wide_of_float_(float v);
 /* A tabulated inverse's measured error as tables keep it: rounded up to a
  * float, so a seal (hyst_table_seal_t) states it the same on every target;
  * and the seal's check of a table given ready-made (src/hyst_table_seal.c):

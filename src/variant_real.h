@@ -241,7 +241,7 @@ static hyst_status_t NUM_NAME(init_inverse_sealed_impl)(hyst_tcm_t *S, hyst_curv
     if (hyst_inverse_seal_crc_(&curve, &err) != (c->seal & 0xFFFFFFFFul)) {
         return HYST_ERR_CRC;
     }
-    curve.u.inv_table.max_err = (hyst_wide_t)c->max_err;
+    curve.u.inv_table.max_err = hyst_wide_of_float_(c->max_err);
     *inv = curve;
     NUM_NAME(attach)(S, inv, &NUM_NAME(kind_curve), inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F,
                      xltp, yltp, xrtp, yrtp, capacity);

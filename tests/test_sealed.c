@@ -214,6 +214,42 @@ static void test_sealed_compensator_is_the_built_one(void)
     TEST_ASSERT_TRUE(inv_sealed.u.inv_table.exact > 0u);
 }
 
+/* The compensator sealed with its table by `hyst header` on the host: this
+ * machine's build of the same table, drives bit for bit. */
+static void test_header_sealed_compensator_is_the_built_one(void)
+{
+    TEST_ASSERT_EQUAL_UINT(HYST_INV_TABLE, eq20_INTERVALS);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_table(&A, &inv_built, &eq20, table,
+                                                           eq20_INTERVALS, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_MEMORY(eq20_table, table, sizeof eq20_table);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, HYST_DEFAULT_NAME_(init_inverse_sealed_)(
+                                       &B, &inv_sealed, &eq20_comp_sealed, eq20_table, xl2, yl2,
+                                       xr2, yr2, CAP, HYST_LAYOUT));
+    TEST_ASSERT_TRUE(hyst_curve_inverse_error(&inv_built) == hyst_curve_inverse_error(&inv_sealed));
+    assert_same_run_on((double)CURVE_NUM(inv_built.lo), (double)CURVE_NUM(inv_built.hi));
+}
+
+/* The build's error, reported by hyst_curve_inverse_error(), comes back
+ * exactly from its float in the seal (widened by its bits on a target
+ * whose double is in software): normal, subnormal and zero errors. */
+static void test_sealed_compensator_reports_the_built_error(void)
+{
+    static const float errs[] = {0.0f, 1.4e-45f, 1e-40f, 1.17549435e-38f, 3.0314681e-06f, 0.5f, 1.0f};
+    hyst_sealed_inverse_t s;
+    hyst_curve_t c;
+    size_t k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_table(&A, &inv_built, &eq20, table,
+                                                           HYST_INV_TABLE, xl, yl, xr, yr, CAP));
+    for (k = 0u; k < sizeof errs / sizeof errs[0]; ++k) {
+        c = inv_built;
+        c.u.inv_table.max_err = (hyst_wide_t)errs[k];
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_seal_inverse_table(&s, &c));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_sealed(&B, &inv_sealed, &s, table, xl2,
+                                                                yl2, xr2, yr2, CAP));
+        TEST_ASSERT_TRUE(hyst_curve_inverse_error(&inv_sealed) == (hyst_wide_t)errs[k]);
+    }
+}
+
 static void test_damaged_sealed_compensator_is_refused(void)
 {
     hyst_sealed_inverse_t s, c;
@@ -330,6 +366,8 @@ int main(void)
     RUN_TEST(test_what_the_seal_cannot_vouch_for_is_checked);
     RUN_TEST(test_seal_poly_checks_as_the_constructor);
     RUN_TEST(test_sealed_compensator_is_the_built_one);
+    RUN_TEST(test_header_sealed_compensator_is_the_built_one);
+    RUN_TEST(test_sealed_compensator_reports_the_built_error);
     RUN_TEST(test_damaged_sealed_compensator_is_refused);
     RUN_TEST(test_q31_header_sealed_is_the_init_of_its_f0);
     RUN_TEST(test_q31_damaged_sealed_model_is_refused);

@@ -165,7 +165,13 @@ int cli_header_model(char *buf, size_t size, size_t *len, const char *name, cons
  * text: 0, or 1 after a message (the library's refusal, or too long). */
 size_t cli_header_table_size(const cli_model_t *m, size_t rows, size_t intervals);
 int cli_header_table(const char *cmd, const char *model, char *buf, size_t size, size_t *len,
-                     const char *name, const cli_model_t *m, size_t rows, size_t intervals);
+                     const char *name, const cli_model_t *m, size_t rows, size_t intervals,
+                     int sealed);
+/* With --sealed (kind poly): the compensator's curve sealed with its table,
+ * 'NAME_comp_sealed', of one real type (the other NULL): 1 when it did not fit. */
+int cli_header_sealed_inverse(char *buf, size_t size, size_t *len, const char *name,
+                              const hyst_f32_sealed_inverse_t *s32,
+                              const hyst_f64_sealed_inverse_t *s64);
 
 /* v as a float build reads the header's literal of it: HYST_REAL_C(lit) is
  * lit##f, converted directly to float (header_table.c). */

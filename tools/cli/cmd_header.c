@@ -26,7 +26,9 @@ static const char help[] =
     "                 real type, for hyst_init_sealed(): firmware initialises without\n"
     "                 building the curve (integer checks, no double arithmetic)\n"
     "  --codes LO,HI  with --sealed: also the q31 model on codes LO..HI,\n"
-    "                 'NAME_q31_sealed', for hyst_q31_init_sealed()\n"
+    "                 'NAME_q31_sealed', for hyst_q31_init_sealed(); with\n"
+    "                 --compensator also the compensator's curve sealed with its\n"
+    "                 table, 'NAME_comp_sealed', for hyst_init_inverse_sealed()\n"
     "  --compensator  also the compensator's table, built here in float and in\n"
     "                 double and sealed: 'NAME_table', 'NAME_seal' of the build's\n"
     "                 real type (HYST_USE_DOUBLE), NAME_INTERVALS (and NAME_ROWS),\n"
@@ -167,7 +169,7 @@ int cmd_header(int argc, char **argv)
     over |= cli_header_open(text, size, &len, name, &m);
     if (over == 0 && compensator &&
         cli_header_table(a.cmd, cli_file_name(model), text, size, &len, name, &m, (size_t)rows,
-                         (size_t)intervals) != 0) {
+                         (size_t)intervals, sealed) != 0) {
         free(text);
         return 1;
     }

@@ -37,6 +37,8 @@ typedef struct {
     size_t n;
     hyst_table_seal_t seal;
     size_t exact;
+    hyst_f32_sealed_inverse_t s32; /* kind poly: the compensator's curve sealed with its table */
+    hyst_f64_sealed_inverse_t s64;
 } built_t;
 
 /* The model's curve in the variant, from the numbers the header gives a
@@ -92,6 +94,10 @@ static hyst_status_t build(const cli_model_t *m, int f32, size_t rows, size_t in
     if (st == HYST_OK) {
         st = hyst_curve_table_seal(&inv, &out->seal);
     }
+    if (st == HYST_OK && !everett) { /* before the float table is freed */
+        st = f32 ? hyst_f32_seal_inverse_table(&out->s32, &inv)
+                 : hyst_f64_seal_inverse_table(&out->s64, &inv);
+    }
     for (i = 0u; f32 && i < n; ++i) {
         out->num[i] = (double)t32[i];
     }
@@ -138,7 +144,8 @@ size_t cli_header_table_size(const cli_model_t *m, size_t rows, size_t intervals
 }
 
 int cli_header_table(const char *cmd, const char *model, char *buf, size_t size, size_t *len,
-                     const char *name, const cli_model_t *m, size_t rows, size_t intervals)
+                     const char *name, const cli_model_t *m, size_t rows, size_t intervals,
+                     int sealed)
 {
     const int everett = m->kind == CLI_MODEL_EVERETT;
     built_t b32, b64;
@@ -187,14 +194,29 @@ int cli_header_table(const char *cmd, const char *model, char *buf, size_t size,
                            " *   hyst_curve_from_poly(&fwd, &%s);\n"
                            " *   hyst_curve_inverse_table_const(&comp, &fwd, %s_table, %s_INTERVALS,\n"
                            " *                                  &%s_seal);\n"
-                           " *   hyst_init_curve(&S, &comp, ...);  // comp outlives S */\n",
+                           " *   hyst_init_curve(&S, &comp, ...);  // comp outlives S",
                            name, name, name, name);
+        if (sealed) {
+            over |= cli_append(buf, size, len,
+                               "\n * or, the compensator's curve sealed with the table (--sealed): no\n"
+                               " * table measured, no curve built, integer checks only:\n"
+                               " *   HYST_INIT_INVERSE_SEALED(S, &comp, &%s_comp_sealed, %s_table);",
+                               name, name);
+        }
+        over |= cli_append(buf, size, len, " */\n%s",
+                           sealed ? "#include \"hyst/inverse.h\"\n" : "");
     }
     over |= cli_append(buf, size, len, "#define %s_INTERVALS %luu\n#ifdef HYST_USE_DOUBLE\n", name,
                        (unsigned long)intervals);
     over |= emit(buf, size, len, name, &b64, 0, len_macro);
+    if (sealed && !everett) {
+        over |= cli_header_sealed_inverse(buf, size, len, name, NULL, &b64.s64);
+    }
     over |= cli_append(buf, size, len, "#else\n");
     over |= emit(buf, size, len, name, &b32, 1, len_macro);
+    if (sealed && !everett) {
+        over |= cli_header_sealed_inverse(buf, size, len, name, &b32.s32, NULL);
+    }
     over |= cli_append(buf, size, len, "#endif\n");
     free(b32.num);
     free(b64.num);
