@@ -91,12 +91,19 @@ static hyst_status_t NUM_NAME(init_impl)(hyst_tcm_t *S, const hyst_poly_t *f0, N
     return HYST_OK;
 }
 
+/* The variant's sealed structs (curve.h, inverse.h), named by its number
+ * member (hyst_f32_..., hyst_f64_...) whatever NUM_NAME prefixes. */
+#define VARIANT_PASTE_(a, b, c) a##b##c
+#define VARIANT_TYPE_(a, b, c) VARIANT_PASTE_(a, b, c)
+#define NUM_SEALED_POLY_T VARIANT_TYPE_(hyst_, NUM_F, _sealed_poly_t)
+#define NUM_SEALED_INVERSE_T VARIANT_TYPE_(hyst_, NUM_F, _sealed_inverse_t)
+
 /* The prepared numbers of a polynomial curve as the sealed struct holds
  * them (curve.h), and back: the same curve either way. */
-static hyst_status_t NUM_NAME(seal_poly_impl)(NUM_NAME(sealed_poly_t) *out, const hyst_poly_t *f0,
+static hyst_status_t NUM_NAME(seal_poly_impl)(NUM_SEALED_POLY_T *out, const hyst_poly_t *f0,
                                               unsigned long layout)
 {
-    NUM_NAME(sealed_poly_t) c;
+    NUM_SEALED_POLY_T c;
     hyst_curve_t curve;
     unsigned k;
     hyst_status_t st = out == NULL ? HYST_ERR_NULL
@@ -122,7 +129,7 @@ static hyst_status_t NUM_NAME(seal_poly_impl)(NUM_NAME(sealed_poly_t) *out, cons
 
 /* Checks only what the seal cannot vouch for (the memory, the layout, the
  * degree that bounds the copy) and the seal: no curve construction. */
-static hyst_status_t NUM_NAME(init_sealed_impl)(hyst_tcm_t *S, const NUM_NAME(sealed_poly_t) *c,
+static hyst_status_t NUM_NAME(init_sealed_impl)(hyst_tcm_t *S, const NUM_SEALED_POLY_T *c,
                                                 NUM_T *xltp, NUM_T *yltp, NUM_T *xrtp,
                                                 NUM_T *yrtp, size_t capacity, unsigned long layout)
 {
@@ -161,10 +168,10 @@ static hyst_status_t NUM_NAME(init_sealed_impl)(hyst_tcm_t *S, const NUM_NAME(se
 }
 
 /* A tabulated compensator's curve (built) as the sealed struct holds it. */
-static hyst_status_t NUM_NAME(seal_inverse_table_impl)(NUM_NAME(sealed_inverse_t) *out,
+static hyst_status_t NUM_NAME(seal_inverse_table_impl)(NUM_SEALED_INVERSE_T *out,
                                                        const hyst_curve_t *inv)
 {
-    NUM_NAME(sealed_inverse_t) c;
+    NUM_SEALED_INVERSE_T c;
     hyst_num_t err;
     unsigned k;
     const hyst_status_t st = hyst_curve_check(inv);
@@ -200,7 +207,7 @@ static hyst_status_t NUM_NAME(seal_inverse_table_impl)(NUM_NAME(sealed_inverse_t
  * the seal over the struct and the table; binds the out-of-line kind (the
  * exact intervals) as the build's init does. */
 static hyst_status_t NUM_NAME(init_inverse_sealed_impl)(hyst_tcm_t *S, hyst_curve_t *inv,
-                                                        const NUM_NAME(sealed_inverse_t) *c,
+                                                        const NUM_SEALED_INVERSE_T *c,
                                                         const NUM_T *table, NUM_T *xltp,
                                                         NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp,
                                                         size_t capacity, unsigned long layout)
