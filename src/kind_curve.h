@@ -13,7 +13,6 @@ static TCM_NOINLINE TCM_Y TCM_NAME(curve_kind_g)(const hyst_tcm_t *S, TCM_Y u)
     return TCM_CURVE_G(S->curve, u);
 }
 
-static const TCM_NAME(kind_t) TCM_NAME(kind_curve) = {TCM_NAME(curve_kind_g), NULL, NULL, NULL,
-                                                      NULL, NULL};
+static const TCM_NAME(kind_t) TCM_NAME(kind_curve) = {.g = TCM_NAME(curve_kind_g)};
 
 #endif /* HYST_KIND_CURVE_H */

@@ -104,7 +104,8 @@ HYST_INLINE TCM_Y TCM_NAME(everett_emit)(hyst_tcm_t *S, TCM_X x, const int how, 
 #include "tcm_slow.h"
 
 static const TCM_NAME(kind_t) TCM_NAME(kind_everett) = {
-    NULL, NULL, TCM_NAME(everett_derive), TCM_NAME(everett_step_slow),
-    TCM_NAME(everett_loop_error), NULL};
+    .derive = TCM_NAME(everett_derive),
+    .slow = TCM_NAME(everett_step_slow),
+    .loop_error = TCM_NAME(everett_loop_error)};
 
 #endif /* HYST_KIND_EVERETT_H */

@@ -257,6 +257,12 @@ static TCM_NOINLINE TCM_Y TCM_NAME(blended_emit)(hyst_tcm_t *S, TCM_X x, int how
                                : TCM_NAME(emit_blended)(S, x, how);
 }
 
+/* The same on the fast path (an interval not cached). */
+static TCM_NOINLINE TCM_Y TCM_NAME(blended_fast)(hyst_tcm_t *S, TCM_X x)
+{
+    return TCM_NAME(emit_blended)(S, x, TCM_FAST);
+}
+
 static TCM_NOINLINE void TCM_NAME(blended_derive)(hyst_tcm_t *S) { TCM_NAME(derive_blend)(S); }
 
 /* The end of the kind's slow sample; any other value of S->horner is a
@@ -280,7 +286,12 @@ HYST_INLINE TCM_Y TCM_NAME(blended_slow_emit)(hyst_tcm_t *S, TCM_X x, const int 
 #include "tcm_slow.h"
 
 static const TCM_NAME(kind_t) TCM_NAME(kind_everett_inv_table) = {
-    TCM_NAME(blend_g), TCM_NAME(blended_emit), TCM_NAME(blended_derive),
-    TCM_NAME(blended_step_slow), TCM_NAME(drive_range), TCM_NAME(blend_dims)};
+    .g = TCM_NAME(blend_g),
+    .emit = TCM_NAME(blended_emit),
+    .derive = TCM_NAME(blended_derive),
+    .slow = TCM_NAME(blended_step_slow),
+    .loop_error = TCM_NAME(drive_range),
+    .attach = TCM_NAME(blend_dims),
+    .fast = TCM_NAME(blended_fast)};
 
 #endif /* HYST_KIND_EVERETT_INV_TABLE_H */

@@ -113,6 +113,10 @@ typedef struct TCM_NAME(kind) {
     TCM_Y (*loop_error)(const hyst_tcm_t *S, TCM_X b, TCM_X a);
     /* the kind's numbers of the instance, set once at init; NULL if none */
     void (*attach)(hyst_tcm_t *S, const hyst_curve_t *curve);
+    /* emit(S, x, TCM_FAST, TCM_KEEP): the fast path's call of a kind that
+     * evaluates the sample itself (HYST_HORNER_SOLVE_, a blended interval
+     * not cached), without the tests of how and derive; NULL if none */
+    TCM_Y (*fast)(hyst_tcm_t *S, TCM_X x);
 } TCM_NAME(kind_t);
 
 #define TCM_KIND(S) ((const TCM_NAME(kind_t) *)(S)->kind)
@@ -344,6 +348,9 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
     TCM_ASYM_CASES_(HYST_HORNER_ASYM_, TCM_ASYM_KEPT_);
     TCM_ASYM_CASES_(HYST_HORNER_ASYM_LINEAR_, TCM_ASYM_KEPT_);
     case HYST_HORNER_SOLVE_: /* the kind's own evaluation */
+        if (how == TCM_FAST) {
+            return TCM_KIND(S)->fast(S, x);
+        }
         return TCM_KIND(S)->emit(S, x, how, derive);
 #ifndef NUM_FIXED
     case HYST_HORNER_BLEND_: /* a cubic piece of the branch (S->coef), cached for interval
@@ -356,7 +363,8 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
             const TCM_Y s = u * YV(S->v_scale);
             const unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 */
             if (k != S->cached_k) {
-                return TCM_KIND(S)->emit(S, x, how, derive);
+                return how == TCM_FAST ? TCM_KIND(S)->fast(S, x)
+                                       : TCM_KIND(S)->emit(S, x, how, derive);
             }
             acc = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
             if (acc < 0) { /* a solved interval; "< 0", not "!(>= 0)" as for the table of
