@@ -196,8 +196,15 @@ HYST_INLINE TCM_Y TCM_NAME(solved_slow_emit)(hyst_tcm_t *S, TCM_X x, const int h
     if (TCM_DERIVES(derive)) {
         TCM_NAME(solved_derive)(S);
     }
-    return S->horner == HYST_HORNER_SOLVE_ ? TCM_NAME(emit_solved)(S, x, how)
+    return S->horner == HYST_HORNER_OWN_ ? TCM_NAME(emit_solved)(S, x, how)
                                            : TCM_NAME(emit_rare)(S, x, how);
+}
+
+/* Every sample is the kind's own (emit()'s HYST_HORNER_OWN_ case). */
+static void TCM_NAME(solved_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
+{
+    (void)curve;
+    S->degree = HYST_HORNER_OWN_;
 }
 
 #define TCM_SLOW(n) TCM_NAME(solved_##n)
@@ -211,6 +218,7 @@ static const TCM_NAME(kind_t) TCM_NAME(kind_everett_inv) = {
     .derive = TCM_NAME(solved_derive),
     .slow = TCM_NAME(solved_step_slow),
     .loop_error = TCM_NAME(drive_range),
+    .attach = TCM_NAME(solved_attach),
     .fast = TCM_NAME(solved_fast)};
 
 #endif /* HYST_KIND_EVERETT_INV_H */
