@@ -150,10 +150,11 @@ static TCM_NOINLINE TCM_Y TCM_NAME(g)(const hyst_tcm_t *S, TCM_Y d)
 
 /* How a sample ends (emit()): on the fast path, or a slow sample whose
  * input rose or fell (its direction orients the monotone guard: against the
- * branch's own after a deadband skip). */
+ * branch's own after a deadband skip), or a repeated input. */
 #define TCM_FAST 1
 #define TCM_ROSE 2
 #define TCM_FELL 3
+#define TCM_REPEAT 4
 
 /* y_ctp +- g on the current branch: + rising, - falling. Adding g or
  * subtracting it rounds like y_ctp + sign g with sign = +-1. */
@@ -895,15 +896,18 @@ typedef TCM_Y (*TCM_NAME(slow_fn))(hyst_tcm_t *S, TCM_ARG x);
 #define TCM_STEP_SLOW(S, x) ((TCM_NAME(slow_fn))(S)->slow)((S), (x))
 
 /* emit() for the other values of S->horner: the output by Horner's loop
- * or the kind's G (how: as emit()), then the pending requests. */
+ * or the kind's G (how: as emit(), or TCM_REPEAT for a repeated sample,
+ * whose output stays), then the pending requests. */
 static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
 {
-    TCM_Y y;
-    if (S->degree == HYST_HORNER_OWN_) { /* a request pending */
-        y = TCM_KIND(S)->emit(S, x, how, TCM_KEEP);
-    } else { /* one inline G for both ends */
-        const TCM_Y g = TCM_NAME(branch_g)(S, x);
-        y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
+    TCM_Y y = YV(S->y_prev);
+    if (how != TCM_REPEAT) {
+        if (S->degree == HYST_HORNER_OWN_) { /* a request pending */
+            y = TCM_KIND(S)->emit(S, x, how, TCM_KEEP);
+        } else { /* one inline G for both ends */
+            const TCM_Y g = TCM_NAME(branch_g)(S, x);
+            y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
+        }
     }
     YV(S->y_prev) = y;
     if (S->horner == HYST_HORNER_REQUEST_) {

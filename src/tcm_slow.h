@@ -254,8 +254,8 @@ static TCM_Y TCM_SLOW(step_slow)(hyst_tcm_t *S, TCM_ARG x_in)
     /* cppcheck-suppress knownConditionTrueFalse */
     else if (x_in == x_prev) { /* repeated samples create no TP */
         TCM_NAME(fresh)(S);
-        if (S->horner == HYST_HORNER_REQUEST_) { /* the output stays */
-            return TCM_NAME(serve_unmoved)(S);
+        if (S->horner == HYST_HORNER_REQUEST_) {
+            return TCM_NAME(emit_rare)(S, x_prev, TCM_REPEAT);
         }
         return YV(S->y_prev); /* a closed window stays closed: the next move reopens it */
     }
