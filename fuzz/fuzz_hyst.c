@@ -2,7 +2,9 @@
 /* libFuzzer harness: arbitrary bytes -> a configuration, a capacity and a
  * sample sequence, fed to every public entry point; on valid configurations
  * the core (built with HYST_USE_DOUBLE) is compared with the linear-scan
- * reference of the tests (tests/support/ref_tcm.c). Any mismatch or broken
+ * reference of the tests (tests/support/ref_tcm.c), and the snapshot twin
+ * B, initialised from the curve sealed (hyst_init_sealed), with A bit for
+ * bit. Any mismatch or broken
  * invariant aborts, which libFuzzer reports as a crash.
  *
  * Input layout (every read past the end yields zeros, so every input is valid):
@@ -262,8 +264,16 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         bad.kind = 0x5A;
         CHECK(hyst_init_curve(&B.S, &bad, B.xl, B.yl, B.xr, B.yr, cap) == HYST_ERR_ARG);
     }
-    /* B: snapshot twin of A; C: target of forged snapshots */
-    CHECK(init_instance(&B, &f, cap, 0) == HYST_OK);
+    /* B: snapshot twin of A, from f sealed (hyst_seal_poly: what A's init
+     * accepted; the sealed init gives the same instance, bit for bit);
+     * C: target of forged snapshots */
+    {
+        hyst_sealed_poly_t sealed;
+        CHECK(hyst_seal_poly(&sealed, &f) == HYST_OK);
+        CHECK(hyst_init_sealed(&B.S, &sealed, B.xl, B.yl, B.xr, B.yr, cap) == HYST_OK);
+        sealed.a[0] = nextafter(sealed.a[0], INFINITY); /* one unit off, the seal kept: refused */
+        CHECK(hyst_init_sealed(&C.S, &sealed, C.xl, C.yl, C.xr, C.yr, cap) == HYST_ERR_CRC);
+    }
     CHECK(init_instance(&C, &f, cap, 0) == HYST_OK);
 
     /* Differential only on structured curves: raw ones may be so badly

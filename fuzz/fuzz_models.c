@@ -825,6 +825,20 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         CHECK(memcmp(ti_table, ct_table, sizeof(hyst_real_t) * HYST_INV_TABLE_LEN(intervals)) == 0);
         CHECK(hyst_curve_inverse_error(Ti.S.curve) == hyst_curve_inverse_error(&ct));
         CHECK(hyst_curve_inverse_error(&ct) >= 0.0 && hyst_curve_inverse_error(&ct) <= 1.0);
+        {   /* sealed with its table (hyst_seal_inverse_table): the same curve, bit for bit */
+            static hyst_curve_t sealed_curve;
+            hyst_sealed_inverse_t sealed;
+            unsigned k;
+            CHECK(hyst_seal_inverse_table(&sealed, &ct) == HYST_OK);
+            CHECK(hyst_init_inverse_sealed(&G.S, &sealed_curve, &sealed, ct_table, G.xl, G.yl, G.xr,
+                                           G.yr, 2u) == HYST_OK);
+            CHECK(hyst_curve_inverse_error(&sealed_curve) == hyst_curve_inverse_error(&ct));
+            for (k = 0u; k <= 16u; ++k) {
+                const double e = (ct.hi.HYST_R - ct.lo.HYST_R) * ((double)k / 16.0);
+                const double a = hyst_curve_g(&sealed_curve, e), b = hyst_curve_g(&ct, e);
+                CHECK(memcmp(&a, &b, sizeof a) == 0);
+            }
+        }
     } else {
         CHECK(Ti.S.curve->kind == HYST_CURVE_POLY_INV);
         CHECK(memcmp(Ti.S.curve, &ci, sizeof(ci)) == 0); /* same as the two calls */

@@ -8,7 +8,8 @@
  *   M   q31 model: gets the blocks (hyst_q31_process) and the immediate
  *       twins of T's requests
  *   T   its twin, sample by sample: M and T must stay bit-identical
- *   Z   q31 model never given a deadband: bit-identical to T while T's
+ *   Z   q31 model never given a deadband, initialised from the same model
+ *       sealed (hyst_q31_init_sealed): bit-identical to T while T's
  *       deadband has always been 0
  *   K   q31 compensator: gets the blocks (hyst_q31_inv_process, in place
  *       or not) and the immediate twins of KT's requests
@@ -491,7 +492,11 @@ static void run_model(reader_t *r, unsigned flags, const ctx_t *c, hyst_status_t
 
     CHECK(st_model == HYST_OK);
     CHECK(hyst_q31_init(&T.S, c->f, clo, chi, T.xl, T.yl, T.xr, T.yr, c->cap) == HYST_OK);
-    CHECK(hyst_q31_init(&Z.S, c->f, clo, chi, Z.xl, Z.yl, Z.xr, Z.yr, c->cap) == HYST_OK);
+    {   /* Z from the same model sealed (hyst_q31_seal_poly): bit-identical to T */
+        hyst_q31_sealed_poly_t sealed;
+        CHECK(hyst_q31_seal_poly(&sealed, c->f, clo, chi) == HYST_OK);
+        CHECK(hyst_q31_init_sealed(&Z.S, &sealed, Z.xl, Z.yl, Z.xr, Z.yr, c->cap) == HYST_OK);
+    }
     CHECK(hyst_q31_output(&M.S) == -QHALF && hyst_q31_input(&M.S) == clo);
     CHECK(hyst_tp_count(&M.S) == 0u && hyst_q31_error_bound(&M.S) == 0);
     CHECK(hyst_capacity(&M.S) == c->cap && same_model(&M, &T));

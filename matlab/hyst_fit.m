@@ -36,7 +36,9 @@ function f = hyst_fit(x, y, varargin)
 %   Options (name/value): 'kind' 'poly' (default) or 'everett', 'degree'
 %   (default 3; [] chooses it), 'skip' samples dropped at the start
 %   (default 0), 'delay' samples the output lags the input (default 0; []
-%   chooses it among 0..8, with 'degree' []), 'method' 'joint'
+%   chooses it as hyst fit does, with 'degree' []: 0..8, or up to 1/64 of
+%   the drive's period, then a fraction of a sample: f.delay 12.5, the
+%   model fitted on the drive interpolated), 'method' 'joint'
 %   (default) or 'reflect' (kind poly), 'domain' [LO HI] (default: the
 %   range of the inputs), 'creep' (below).
 %
@@ -102,8 +104,10 @@ function f = hyst_fit(x, y, varargin)
   x = double(x(:));
   y = double(y(:));
   cands = [];
+  fraction = 0;  % a sub-sample delay chosen: the drive x interpolated by it
   if isempty(opts.degree)
-    [opts, cands, creep_tau, domain] = choose(opts, kinds, method, domain, x, y, creep_tau);
+    [opts, cands, creep_tau, domain, x, fraction] = choose(opts, kinds, method, domain, x, y, ...
+                                                           creep_tau);
   elseif isempty(opts.delay)
     error('hyst:usage', 'hyst_fit: ''delay'', [] (chosen) needs ''degree'', [] (chosen)');
   end
@@ -117,10 +121,10 @@ function f = hyst_fit(x, y, varargin)
   end
   % the delay the model was fitted at: HYST_MODEL_SAVE writes it,
   % HYST_HEADER states it
-  f.delay = double(opts.delay);
+  f.delay = double(opts.delay) + fraction;
   % a domain wider than the inputs: the range E was identified on, which
   % HYST_MODEL_SAVE records (as 'hyst fit --save' does)
-  used = x(double(opts.skip) + 1:max(numel(x) - f.delay, double(opts.skip)));
+  used = x(double(opts.skip) + 1:max(numel(x) - double(opts.delay), double(opts.skip)));
   if strcmp(opts.kind, 'everett') && ~isempty(used) && (f.lo < min(used) || max(used) < f.hi)
     f.identified = [max(min(used), f.lo), min(max(used), f.hi)];
   end
@@ -138,21 +142,13 @@ function f = hyst_fit(x, y, varargin)
   if creep_tau < 0 || numel(x) <= skip + delay || ~usable(f)
     return;
   end
-  % the creep term scored by hold-out as hyst fit scores it: the model fitted
-  % on the first two thirds (of the samples it sees), run over the record
-  train = floor(2 * (numel(x) - skip - delay) / 3);
-  c = [];
-  without = NaN;
-  try
-    n = skip + train + delay;
-    ft = fit_part(opts, method, domain, tdegree, x(1:n), y(1:n));
-    if usable(ft)
-      [without, c] = holdout(ft, x, y, skip, delay, skip + train, creep_tau);
-    end
-  catch err
-    if ~strncmp(err.identifier, 'hyst:ERR_', 9)
-      rethrow(err);
-    end
+  % the creep term scored by hold-out as hyst fit scores it (the gateway's
+  % score: fit_score() of tools/cli/fit_select.c, the hold-out splits)
+  kind_code = 1 + strcmp(opts.kind, 'everett');
+  [without, c] = hyst_mex('score', x, y, kind_code, double(opts.degree), double(tdegree), ...
+                          method, domain(1), domain(2), skip, delay, creep_tau);
+  if ~isfinite(without)
+    c = [];
   end
   if isempty(c) || ~(c.tau > 0) || ~isfinite(c.holdout_rms) || ...
      (creep_tau == 0 && without <= c.holdout_rms * 1.01)
@@ -177,22 +173,28 @@ function f = hyst_fit(x, y, varargin)
                    'holdout_rms_without', without);
 end
 
-function [opts, cands, creep_tau, domain] = choose(opts, kinds, method, domain, x, y, creep_tau)
+function [opts, cands, creep_tau, domain, x, fraction] = choose(opts, kinds, method, domain, ...
+                                                               x, y, creep_tau)
 % The kind, degree, t-degree and delay (and whether with a creep term)
 % chosen by hold-out with the hyst tool's own code (the gateway's select:
-% fit_select() of tools/cli/fit_select.c), as 'hyst fit' without --degree
-% and the Python package's fit(degree=None) choose.
-  delays = [0 8];  % FIT_MAX_DELAY
+% fit_search() of tools/cli/fit_select.c), as 'hyst fit' without --degree
+% and the Python package's fit(degree=None) choose: with 'delay', [] the
+% delays scaled to the drive and a fraction of a sample (x is then the
+% drive interpolated by it, which the model is fitted on).
+  delay = -1;  % chosen
   if ~isempty(opts.delay)
-    delays = [1 1] * double(opts.delay);
+    delay = double(opts.delay);
   end
   tdegree = -1;
   if ~isempty(opts.tdegree)
     tdegree = double(opts.tdegree);
   end
-  [cands, best, with_creep] = hyst_mex('select', x, y, kinds, method, domain(1), domain(2), ...
-                                       double(opts.skip), delays(1), delays(2), tdegree, ...
-                                       creep_tau);
+  [cands, best, with_creep, widened, fraction, xf] = ...
+      hyst_mex('select', x, y, kinds, method, domain(1), domain(2), double(opts.skip), delay, ...
+               tdegree, creep_tau);
+  if fraction > 0
+    x = xf;
+  end
   if best == 0
     error('hyst:no_candidate', ['hyst_fit: no candidate gave a model (an increasing f0, a ' ...
                                 'monotone E) that could predict the last third of the record']);
@@ -206,12 +208,10 @@ function [opts, cands, creep_tau, domain] = choose(opts, kinds, method, domain, 
   opts.degree = c.degree;
   opts.delay = c.delay;
   opts.tdegree = c.t_degree;
-  if c.widened
-    % the domain the tool fits it on: the inputs' range widened by as much
-    % on each side (FIT_WIDEN), E continued beyond the inputs
-    used = x(double(opts.skip) + 1:numel(x) - c.delay);
-    span = max(used) - min(used);
-    domain = [min(used) - span, max(used) + span];
+  if ~isempty(widened)
+    % the domain the tool fits it on: the inputs' range widened, E
+    % continued beyond the inputs (fit_chosen_domain())
+    domain = widened;
   end
   % the creep term chosen with it, or none: fitted below as 'creep', TAU does
   creep_tau = -1;

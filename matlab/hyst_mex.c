@@ -878,13 +878,53 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     }
 }
 
+/* score: prhs = x, y, kind (1 poly, 2 everett), degree, t_degree, method,
+ * lo, hi, skip, delay, creep_tau; one candidate scored as the automatic
+ * choice scores it (fit_score(), tools/cli/fit_select.c: the hold-out
+ * splits). plhs = its hold-out RMS (NaN: not scored) and its creep term (a
+ * struct: tau (0: none), weight, holdout_rms). */
+static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *fields[] = {"tau", "weight", "holdout_rms"};
+    hyst_ident_config_t base;
+    fit_candidate_t c;
+    if (nrhs != 11 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+        mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
+        usage("score takes x, y (real double vectors of one length), kind, degree, t_degree, "
+              "method, lo, hi, skip, delay, creep_tau");
+    }
+    memset(&base, 0, sizeof base);
+    memset(&c, 0, sizeof c);
+    c.kind = count(prhs[2], "kind", 1.0, 2.0) == 2u ? FIT_EVERETT : FIT_POLY;
+    c.degree = (unsigned)count(prhs[3], "degree", 1.0, (double)HYST_MAX_DEGREE);
+    c.t_degree = (unsigned)count(prhs[4], "t_degree", 0.0, (double)HYST_EVERETT_MAX_DEGREE);
+    base.method = (int)count(prhs[5], "method", 1.0, 2.0);
+    base.lo = scalar(prhs[6], "lo");
+    base.hi = scalar(prhs[7], "hi");
+    base.skip = count(prhs[8], "skip", 0.0, 1e15);
+    c.delay = count(prhs[9], "delay", 0.0, 1e15);
+    fit_score(&base, (const double *)mxGetData(prhs[0]), (const double *)mxGetData(prhs[1]),
+              mxGetNumberOfElements(prhs[0]), scalar(prhs[10], "creep_tau"), &c);
+    plhs[0] = mxCreateDoubleScalar(c.holdout_rms);
+    if (nlhs > 1) {
+        plhs[1] = mxCreateStructMatrix(1, 1, 3, fields);
+        mxSetField(plhs[1], 0, "tau", mxCreateDoubleScalar(c.creep.tau));
+        mxSetField(plhs[1], 0, "weight", mxCreateDoubleScalar(c.creep.tau > 0 ? c.creep.weight
+                                                                               : NAN));
+        mxSetField(plhs[1], 0, "holdout_rms",
+                   mxCreateDoubleScalar(c.creep.tau > 0 ? c.creep.holdout_rms : NAN));
+    }
+}
+
 /* select: prhs = x, y, kinds (1 poly, 2 everett, 3 both), method, lo, hi,
- * skip, delay_first, max_delay, t_degree (-1: any), creep_tau; fit's
- * hold-out choice by the `hyst` tool's own code (fit_select(),
+ * skip, delay (-1: chosen), t_degree (-1: any), creep_tau; fit's
+ * automatic choice by the `hyst` tool's own code (fit_search(),
  * tools/cli/fit_select.c). plhs = the candidates (a struct array: kind,
  * degree, t_degree, delay, params, holdout_rms, fit_rms, status, creep_tau,
- * creep_weight, creep_holdout_rms), the index chosen (1-based; 0: none)
- * and whether with its creep term. */
+ * creep_weight, creep_holdout_rms), the index chosen (1-based; 0: none),
+ * whether with its creep term, the chosen one's domain [lo hi] when
+ * widened, else [] (fit_chosen_domain()), the sub-sample delay's fraction
+ * (0: none) and the drive interpolated by it (x as given without one). */
 static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"kind",        "degree",  "t_degree", "delay",
@@ -893,14 +933,17 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
                                    "widened"};
     hyst_ident_config_t base;
     fit_candidate_t *cand;
-    size_t n, scored, best = 0u, i, max_delay, most;
+    fit_found_t found;
+    size_t n, scored, best = 0u, i;
     long t_degree;
+    double delay, *drive;
     int kinds, with_creep = 0;
+    hyst_status_t st;
     mxArray *s;
-    if (nrhs != 11 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+    if (nrhs != 10 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
         mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
         usage("select takes x, y (real double vectors of one length), kinds, method, lo, hi, "
-              "skip, delay_first, max_delay, t_degree, creep_tau");
+              "skip, delay (-1: chosen), t_degree, creep_tau");
     }
     n = mxGetNumberOfElements(prhs[0]);
     memset(&base, 0, sizeof base);
@@ -909,17 +952,25 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     base.lo = scalar(prhs[4], "lo");
     base.hi = scalar(prhs[5], "hi");
     base.skip = count(prhs[6], "skip", 0.0, 1e15);
-    base.delay = count(prhs[7], "delay_first", 0.0, (double)FIT_MAX_DELAY);
-    max_delay = count(prhs[8], "max_delay", (double)base.delay, (double)FIT_MAX_DELAY);
-    t_degree = (long)scalar(prhs[9], "t_degree");
-    most = (HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES) * (max_delay - base.delay + 1u);
-    cand = (fit_candidate_t *)mxCalloc(most, sizeof *cand);
-    scored = fit_select(&base, kinds, 0u,
-                       t_degree < 0 || t_degree >= HYST_EVERETT_MAX_DEGREE ? FIT_ANY_T_DEGREE
-                                                                           : (unsigned)t_degree,
-                       scalar(prhs[10], "creep_tau"), (const double *)mxGetData(prhs[0]),
-                       (const double *)mxGetData(prhs[1]), n, max_delay, cand, most, &best,
-                       &with_creep);
+    delay = scalar(prhs[7], "delay");
+    base.delay = delay < 0 ? 0u : count(prhs[7], "delay", 0.0, 1e15);
+    t_degree = (long)scalar(prhs[8], "t_degree");
+    cand = (fit_candidate_t *)mxCalloc(FIT_SEARCH_CANDIDATES, sizeof *cand);
+    drive = (double *)mxCalloc(n > 0u ? n : 1u, sizeof *drive); /* interpolated by a fraction */
+    memcpy(drive, mxGetData(prhs[0]), n * sizeof *drive);
+    st = fit_search(&base, kinds,
+                    t_degree < 0 || t_degree >= HYST_EVERETT_MAX_DEGREE ? FIT_ANY_T_DEGREE
+                                                                        : (unsigned)t_degree,
+                    scalar(prhs[9], "creep_tau"), delay < 0, drive,
+                    (const double *)mxGetData(prhs[1]), n, cand, FIT_SEARCH_CANDIDATES, &found);
+    if (st != HYST_OK) {
+        mxFree(cand);
+        mxFree(drive);
+        fail_status("select", (int)st);
+    }
+    scored = found.count;
+    best = found.best;
+    with_creep = found.with_creep;
     s = mxCreateStructMatrix(1, (mwSize)scored, (int)(sizeof fields / sizeof fields[0]), fields);
     for (i = 0u; i < scored; ++i) {
         const fit_candidate_t *c = &cand[i];
@@ -946,7 +997,25 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
                    mxCreateDoubleScalar(c->creep.tau > 0 ? c->creep.holdout_rms : NAN));
         mxSetField(s, (mwIndex)i, "widened", mxCreateLogicalScalar(c->widened != 0));
     }
+    if (nlhs > 3) { /* the chosen one's domain when widened, else [] */
+        double lo = 0.0, hi = 0.0;
+        const int widened = best != (size_t)-1 &&
+                            fit_chosen_domain(&cand[best], drive, base.skip, n, &lo, &hi);
+        plhs[3] = mxCreateDoubleMatrix(widened ? 1 : 0, widened ? 2 : 0, mxREAL);
+        if (widened) {
+            mxGetPr(plhs[3])[0] = lo;
+            mxGetPr(plhs[3])[1] = hi;
+        }
+    }
+    if (nlhs > 4) {
+        plhs[4] = mxCreateDoubleScalar(found.delay_fraction);
+    }
+    if (nlhs > 5) { /* a column, as hyst_fit holds x */
+        plhs[5] = mxCreateDoubleMatrix((mwSize)n, 1, mxREAL);
+        memcpy(mxGetPr(plhs[5]), drive, n * sizeof *drive);
+    }
     mxFree(cand);
+    mxFree(drive);
     plhs[0] = s;
     if (nlhs > 1) {
         plhs[1] = mxCreateDoubleScalar(best == (size_t)-1 ? 0.0 : (double)best + 1.0);
@@ -1165,6 +1234,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_holdout(cmd[7] == '_', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "select") == 0) {
         run_select(nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "score") == 0) {
+        run_score(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "model_parse") == 0) {
         run_model_parse(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "model_write") == 0 || strcmp(cmd, "header_open") == 0 ||

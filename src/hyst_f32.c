@@ -67,6 +67,23 @@ hyst_status_t hyst_f32_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve, flo
     return hyst_f32_init_curve_impl(S, curve, xltp, yltp, xrtp, yrtp, capacity, layout);
 }
 
+hyst_status_t hyst_f32_init_sealed_(hyst_tcm_t *S, const hyst_f32_sealed_poly_t *sealed,
+                                    float *xltp, float *yltp, float *xrtp, float *yrtp,
+                                    size_t capacity, unsigned long layout)
+{
+    return hyst_f32_init_sealed_impl(S, sealed, xltp, yltp, xrtp, yrtp, capacity, layout);
+}
+
+hyst_status_t hyst_f32_init_inverse_sealed_(hyst_tcm_t *S, hyst_curve_t *inv,
+                                            const hyst_f32_sealed_inverse_t *sealed,
+                                            const float *table, float *xltp, float *yltp,
+                                            float *xrtp, float *yrtp, size_t capacity,
+                                            unsigned long layout)
+{
+    return hyst_f32_init_inverse_sealed_impl(S, inv, sealed, table, xltp, yltp, xrtp, yrtp,
+                                              capacity, layout);
+}
+
 hyst_status_t hyst_f32_init_inverse_exact_(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
                                            float *xltp, float *yltp, float *xrtp, float *yrtp,
                                            size_t capacity, unsigned long layout)
@@ -150,6 +167,17 @@ hyst_status_t hyst_f32_request_deadband(hyst_tcm_t *S, float width)
 float hyst_f32_rounding_bound(const hyst_tcm_t *S)
 {
     return hyst_f32_rounding_bound_impl(S);
+}
+
+hyst_status_t hyst_f32_seal_inverse_table(hyst_f32_sealed_inverse_t *out, const hyst_curve_t *inv)
+{
+    return hyst_f32_seal_inverse_table_impl(out, inv);
+}
+
+hyst_status_t hyst_f32_seal_poly_(hyst_f32_sealed_poly_t *out, const hyst_poly_t *f0,
+                                  unsigned long layout)
+{
+    return hyst_f32_seal_poly_impl(out, f0, layout);
 }
 
 hyst_status_t hyst_f32_set_deadband(hyst_tcm_t *S, float width)

@@ -66,6 +66,23 @@ hyst_status_t hyst_f64_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve, dou
     return hyst_f64_init_curve_impl(S, curve, xltp, yltp, xrtp, yrtp, capacity, layout);
 }
 
+hyst_status_t hyst_f64_init_sealed_(hyst_tcm_t *S, const hyst_f64_sealed_poly_t *sealed,
+                                    double *xltp, double *yltp, double *xrtp, double *yrtp,
+                                    size_t capacity, unsigned long layout)
+{
+    return hyst_f64_init_sealed_impl(S, sealed, xltp, yltp, xrtp, yrtp, capacity, layout);
+}
+
+hyst_status_t hyst_f64_init_inverse_sealed_(hyst_tcm_t *S, hyst_curve_t *inv,
+                                            const hyst_f64_sealed_inverse_t *sealed,
+                                            const double *table, double *xltp, double *yltp,
+                                            double *xrtp, double *yrtp, size_t capacity,
+                                            unsigned long layout)
+{
+    return hyst_f64_init_inverse_sealed_impl(S, inv, sealed, table, xltp, yltp, xrtp, yrtp,
+                                              capacity, layout);
+}
+
 hyst_status_t hyst_f64_init_inverse_exact_(hyst_tcm_t *S, hyst_curve_t *inv, const hyst_poly_t *f0,
                                            double *xltp, double *yltp, double *xrtp, double *yrtp,
                                            size_t capacity, unsigned long layout)
@@ -149,6 +166,17 @@ hyst_status_t hyst_f64_request_deadband(hyst_tcm_t *S, double width)
 double hyst_f64_rounding_bound(const hyst_tcm_t *S)
 {
     return hyst_f64_rounding_bound_impl(S);
+}
+
+hyst_status_t hyst_f64_seal_inverse_table(hyst_f64_sealed_inverse_t *out, const hyst_curve_t *inv)
+{
+    return hyst_f64_seal_inverse_table_impl(out, inv);
+}
+
+hyst_status_t hyst_f64_seal_poly_(hyst_f64_sealed_poly_t *out, const hyst_poly_t *f0,
+                                  unsigned long layout)
+{
+    return hyst_f64_seal_poly_impl(out, f0, layout);
 }
 
 hyst_status_t hyst_f64_set_deadband(hyst_tcm_t *S, double width)

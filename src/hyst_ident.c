@@ -103,6 +103,17 @@ static hyst_status_t sample_status(const hyst_ident_t *id, hyst_wide_t x, hyst_w
     return HYST_OK;
 }
 
+/* A sample ignored for its output (missing: NaN) still moves the drive:
+ * the next sample's direction is taken from its input, not from the last
+ * one used (a record's gap would otherwise put one sample on the wrong
+ * branch, an error of the loop's width in the least squares). */
+static void note_direction(hyst_ident_t *id, hyst_wide_t x)
+{
+    if (hyst_wide_is_finite(x) && x >= id->lo && x <= id->hi) {
+        (void)classify(&id->dir, x);
+    }
+}
+
 static int method_of(int method)
 {
     return method == HYST_IDENT_DEFAULT ? HYST_IDENT_JOINT : method;
@@ -192,6 +203,7 @@ hyst_status_t hyst_ident_add(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y)
     }
     st = sample_status(id, x, y);
     if (st != HYST_OK) {
+        note_direction(id, x);
         ++id->ignored;
         return st;
     }
@@ -375,6 +387,7 @@ hyst_status_t hyst_ident_check(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y)
     }
     st = sample_status(id, x, y);
     if (st != HYST_OK) {
+        note_direction(id, x);
         return st;
     }
     dir = classify(&id->dir, x);

@@ -108,25 +108,35 @@ int hyst_q31_curve_(hyst_curve_t *q, const hyst_wide_t *g, unsigned n, hyst_wide
     return 1;
 }
 
-hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
-                             uint_least32_t code_hi, hyst_code_word_t *xltp, hyst_q31_t *yltp,
-                             hyst_code_word_t *xrtp, hyst_q31_t *yrtp, size_t capacity,
-                             unsigned long layout)
+/* The frame of a q31 polynomial curve, as both inits attach it: the outputs
+ * at the ends (its codes and G's argument per code are the instance's:
+ * attach()'s arguments). */
+HYST_INLINE void q31_frame(hyst_curve_t *q, unsigned n)
+{
+    memset(q, 0, sizeof *q);
+    q->kind = HYST_CURVE_POLY;
+    q->variant = HYST_VARIANT_Q31;
+    q->layout = HYST_LAYOUT;
+    q->u.poly.degree = n;
+    q->y_lo.q31 = -((hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1));
+    q->y_hi.q31 = (hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1);
+}
+
+/* The q31 curve of f0 on codes code_lo..code_hi (set-up in hyst_wide_t),
+ * and G's argument per code in *unit. */
+HYST_INLINE hyst_status_t q31_prepare(hyst_curve_t *q, hyst_q31_t *unit, const hyst_poly_t *f0,
+                                      uint_least32_t code_lo, uint_least32_t code_hi,
+                                      unsigned long layout)
 {
     /* The curve's checks (domain, coefficients, monotonicity) in
      * hyst_wide_t; its rounding bound for double (hyst_q31_curve_() states this
      * variant's). Without the f64 variant the numbers it stores are floats,
      * unused here. */
     const unsigned checks = (unsigned)HYST_VARIANT_F64;
-    hyst_curve_t real, q;
+    hyst_curve_t real;
     hyst_wide_t g[HYST_MAX_DEGREE + 1], range = 0, c;
-    hyst_q31_t unit;
     unsigned n, k;
-    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity,
-                                         sizeof(hyst_code_word_t), sizeof(hyst_q31_t), layout);
-    if (st == HYST_OK) {
-        st = hyst_curve_poly_(&real, f0, checks, layout);
-    }
+    const hyst_status_t st = hyst_curve_poly_(&real, f0, checks, layout);
     if (st != HYST_OK) {
         return st;
     }
@@ -139,21 +149,106 @@ hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_
         range += g[k];
     }
     /* v = d * unit in Q30 (exact); d = N gives v <= 2^30 + N / 2 < 2^31 */
-    unit = q31_round(Q31_ONE_U / (hyst_wide_t)(code_hi - code_lo));
-    c = (hyst_wide_t)(code_hi - code_lo) * (hyst_wide_t)unit / Q31_ONE_U;
-    memset(&q, 0, sizeof q);
-    q.kind = HYST_CURVE_POLY;
-    q.variant = HYST_VARIANT_Q31;
-    q.layout = HYST_LAYOUT;
-    q.u.poly.degree = n;
-    q.y_lo.q31 = -((hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1));
-    q.y_hi.q31 = (hyst_q31_t)1 << (HYST_Q31_SPAN_BITS - 1);
-    if (!(range > 0) || !hyst_q31_curve_(&q, g, n, range, c)) {
+    *unit = q31_round(Q31_ONE_U / (hyst_wide_t)(code_hi - code_lo));
+    c = (hyst_wide_t)(code_hi - code_lo) * (hyst_wide_t)*unit / Q31_ONE_U;
+    q31_frame(q, n);
+    if (!(range > 0) || !hyst_q31_curve_(q, g, n, range, c)) {
         return HYST_ERR_COEFF;
     }
-    hyst_q31_attach(S, &q, &hyst_q31_kind_poly, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit, xltp,
-                    yltp, xrtp, yrtp, capacity);
+    return HYST_OK;
+}
+
+hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
+                             uint_least32_t code_hi, hyst_code_word_t *xltp, hyst_q31_t *yltp,
+                             hyst_code_word_t *xrtp, hyst_q31_t *yrtp, size_t capacity,
+                             unsigned long layout)
+{
+    hyst_curve_t q;
+    hyst_q31_t unit = 0; /* set by q31_prepare() when it succeeds */
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity,
+                                         sizeof(hyst_code_word_t), sizeof(hyst_q31_t), layout);
+    if (st == HYST_OK) {
+        st = q31_prepare(&q, &unit, f0, code_lo, code_hi, layout);
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    hyst_q31_attach(S, &q, &hyst_q31_kind_poly, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit,
+                    xltp, yltp, xrtp, yrtp, capacity);
     S->curve = NULL; /* the polynomial is copied whole into the instance */
+    return HYST_OK;
+}
+
+hyst_status_t hyst_q31_seal_poly_(hyst_q31_sealed_poly_t *out, const hyst_poly_t *f0,
+                                  uint_least32_t code_lo, uint_least32_t code_hi,
+                                  unsigned long layout)
+{
+    hyst_q31_sealed_poly_t c;
+    hyst_curve_t q;
+    hyst_q31_t unit = 0;
+    unsigned k;
+    const hyst_status_t st =
+        out == NULL ? HYST_ERR_NULL : q31_prepare(&q, &unit, f0, code_lo, code_hi, layout);
+    if (st != HYST_OK) {
+        return st;
+    }
+    q.unit.q31 = unit;
+    q.lo.code = (hyst_code_word_t)code_lo; /* sealed with the numbers */
+    q.hi.code = (hyst_code_word_t)code_hi;
+    memset(&c, 0, sizeof c);
+    c.seal = hyst_poly_seal_crc_(&q);
+    c.degree = q.u.poly.degree;
+    c.code_lo = code_lo;
+    c.code_hi = code_hi;
+    c.unit = unit;
+    c.rounding = q.rounding.q31;
+    for (k = 0u; k < c.degree; ++k) {
+        c.a[k] = q.u.poly.a[k].q31;
+    }
+    *out = c;
+    return HYST_OK;
+}
+
+/* Checks only what the seal cannot vouch for (the memory, the layout, the
+ * degree that bounds the copy, codes the stored words hold) and the seal.
+ * The engine's attach() inlined here (flatten): its one other call, in
+ * hyst_q31_init_(), stays inlined there too, as before this init existed. */
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
+hyst_status_t hyst_q31_init_sealed_(hyst_tcm_t *S, const hyst_q31_sealed_poly_t *sealed,
+                                    hyst_code_word_t *xltp, hyst_q31_t *yltp,
+                                    hyst_code_word_t *xrtp, hyst_q31_t *yrtp, size_t capacity,
+                                    unsigned long layout)
+{
+    hyst_curve_t q;
+    unsigned k;
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity,
+                                         sizeof(hyst_code_word_t), sizeof(hyst_q31_t), layout);
+    if (st != HYST_OK || sealed == NULL) {
+        return st != HYST_OK ? st : HYST_ERR_NULL;
+    }
+    if (sealed->degree < 1u || sealed->degree > HYST_MAX_DEGREE) {
+        return HYST_ERR_DEGREE;
+    }
+    if (!(sealed->code_lo < sealed->code_hi) ||
+        sealed->code_hi > (uint_least32_t)HYST_CODE_MAX) {
+        return HYST_ERR_DOMAIN;
+    }
+    q31_frame(&q, sealed->degree);
+    q.unit.q31 = sealed->unit;
+    q.lo.code = (hyst_code_word_t)sealed->code_lo;
+    q.hi.code = (hyst_code_word_t)sealed->code_hi;
+    q.rounding.q31 = sealed->rounding;
+    for (k = 0u; k < sealed->degree; ++k) {
+        q.u.poly.a[k].q31 = sealed->a[k];
+    }
+    if (hyst_poly_seal_crc_(&q) != (sealed->seal & 0xFFFFFFFFul)) {
+        return HYST_ERR_CRC;
+    }
+    hyst_q31_attach(S, &q, &hyst_q31_kind_poly, q.lo.code, q.hi.code, q.unit.q31, xltp, yltp, xrtp, yrtp,
+                    capacity);
+    S->curve = NULL;
     return HYST_OK;
 }
 

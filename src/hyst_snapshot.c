@@ -242,6 +242,15 @@ unsigned long hyst_crc_real_(unsigned long crc, hyst_wide_t v, unsigned variant)
 
 unsigned long hyst_crc_word_(unsigned long crc, unsigned long w) { return crc_word(crc, w); }
 
+unsigned long hyst_crc_num_(unsigned long crc, const hyst_num_t *v, unsigned variant)
+{
+    const num_type_t t = variant == (unsigned)HYST_VARIANT_F64   ? NUM_F64
+                         : variant == (unsigned)HYST_VARIANT_Q31  ? NUM_Q31
+                         : variant == (unsigned)HYST_VARIANT_CODE ? NUM_CODE
+                                                                  : NUM_F32;
+    return crc_num(crc, v, t);
+}
+
 /* Curve identity: everything that shapes the branches of this instance. */
 static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
 {

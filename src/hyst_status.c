@@ -19,7 +19,7 @@ const char *hyst_status_str(int status)
     case HYST_ERR_NOSPACE: return "buffer too small";
     case HYST_ERR_SINGULAR: return "too few distinct inputs for the fit";
     case HYST_ERR_FORMAT: return "not a valid snapshot (magic, length or state)";
-    case HYST_ERR_CRC: return "checksum mismatch: a snapshot or a prebuilt table is corrupted";
+    case HYST_ERR_CRC: return "checksum mismatch: a snapshot, a prebuilt table or a sealed curve is corrupted";
     case HYST_ERR_VERSION: return "snapshot version or real type differs";
     case HYST_ERR_CURVE: return "a snapshot or a prebuilt table of a different curve";
     case HYST_ERR_BREAKPOINTS: return "breakpoints/thresholds not finite or not strictly increasing";

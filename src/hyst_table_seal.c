@@ -1,9 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* Seals of tabulated inverses built ahead of time (curve.h, "A table built
- * ahead of time"): a checksum of the table as stored, its shape and the
- * error its build measured, so that firmware takes a table from flash
- * without building it again, and refuses one that was damaged. */
+/* Seals of what is built ahead of time (curve.h): a tabulated inverse (a
+ * checksum of the table as stored, its shape and the error its build
+ * measured) and a polynomial curve's prepared numbers, so that firmware
+ * takes them from flash without building them again, and refuses them
+ * damaged. */
 #include <float.h>
+#include <stdint.h>
 
 #include "hyst_util.h"
 
@@ -119,4 +121,106 @@ int hyst_table_shape_ok_(hyst_cptr_t table, size_t base, size_t intervals, unsig
         }
     }
     return 1;
+}
+
+/* Bumped when the sealed numbers change meaning: an old seal is refused. */
+#define POLY_SEAL_FORMAT 0x48535031ul /* "HSP1" */
+
+unsigned long hyst_poly_seal_crc_(const hyst_curve_t *curve)
+{
+    const unsigned v = curve->variant;
+    const unsigned x = v == (unsigned)HYST_VARIANT_Q31 ? (unsigned)HYST_VARIANT_CODE : v;
+    const unsigned n = curve->u.poly.degree;
+    unsigned long crc = hyst_crc_word_(0ul, POLY_SEAL_FORMAT);
+    unsigned k;
+    crc = hyst_crc_word_(crc, curve->kind);
+    crc = hyst_crc_word_(crc, v);
+    crc = hyst_crc_word_(crc, n);
+    crc = hyst_crc_num_(crc, &curve->lo, x);
+    crc = hyst_crc_num_(crc, &curve->hi, x);
+    crc = hyst_crc_num_(crc, &curve->y_lo, v);
+    crc = hyst_crc_num_(crc, &curve->y_hi, v);
+    crc = hyst_crc_num_(crc, &curve->unit, v);
+    crc = hyst_crc_num_(crc, &curve->rounding, v);
+    for (k = 0u; k < n && k < HYST_MAX_DEGREE; ++k) {
+        crc = hyst_crc_num_(crc, &curve->u.poly.a[k], v);
+    }
+    return crc & 0xFFFFFFFFul;
+}
+
+hyst_wide_t hyst_wide_of_float_(float v)
+{
+#if !defined(HYST_NO_DOUBLE) && DBL_MANT_DIG == 53 && DBL_MAX_EXP == 1024 && FLT_MANT_DIG == 24 && \
+    FLT_MAX_EXP == 128
+    /* IEEE binary32 to binary64 by its fields: exact, and integer work only */
+    union {
+        float r;
+        uint32_t u;
+    } f;
+    union {
+        hyst_wide_t r;
+        uint64_t u;
+    } d;
+    uint32_t exp, man;
+    f.r = v;
+    exp = (f.u >> 23) & 0xFFu;
+    man = f.u & 0x7FFFFFu;
+    d.u = (uint64_t)(f.u >> 31) << 63;
+    if (exp == 0xFFu) {
+        d.u |= (uint64_t)0x7FFu << 52 | (uint64_t)man << 29; /* Inf, NaN */
+    } else if (exp != 0u || man != 0u) {
+        uint32_t e = exp + (1023u - 127u);
+        if (exp == 0u) { /* subnormal: normalised */
+            e = 1023u - 126u;
+            while ((man & 0x800000u) == 0u) {
+                man <<= 1u;
+                --e;
+            }
+            man &= 0x7FFFFFu;
+        }
+        d.u |= (uint64_t)e << 52 | (uint64_t)man << 29;
+    }
+    return d.r;
+#else
+    return (hyst_wide_t)v;
+#endif
+}
+
+#define INVERSE_SEAL_FORMAT 0x48534931ul /* "HSI1" */
+
+unsigned long hyst_inverse_seal_crc_(const hyst_curve_t *inv, const hyst_num_t *max_err)
+{
+    const unsigned v = inv->variant;
+    const unsigned n = inv->u.inv_table.fwd.degree;
+    const unsigned long len = HYST_INV_TABLE_LEN((unsigned long)inv->u.inv_table.intervals);
+    const hyst_num_t *const num[7] = {&inv->lo,   &inv->hi,   &inv->y_lo,
+                                      &inv->y_hi, &inv->unit, &inv->u.inv_table.span,
+                                      &inv->u.inv_table.u_per_d};
+    unsigned long crc = hyst_crc_word_(0ul, INVERSE_SEAL_FORMAT), i;
+    unsigned k;
+    crc = hyst_crc_word_(crc, inv->kind);
+    crc = hyst_crc_word_(crc, v);
+    crc = hyst_crc_word_(crc, n);
+    crc = hyst_crc_word_(crc, (unsigned long)inv->u.inv_table.intervals);
+    crc = hyst_crc_word_(crc, (unsigned long)inv->u.inv_table.exact);
+    crc = hyst_crc_num_(crc, max_err, (unsigned)HYST_VARIANT_F32);
+    for (k = 0u; k < 7u; ++k) {
+        crc = hyst_crc_num_(crc, num[k], v);
+    }
+    for (k = 0u; k < n && k < HYST_MAX_DEGREE; ++k) {
+        crc = hyst_crc_num_(crc, &inv->u.inv_table.fwd.a[k], v);
+    }
+    for (i = 0ul; i < len; ++i) {
+        hyst_num_t t;
+        if (v == (unsigned)HYST_VARIANT_F32) {
+            t.f32 = inv->u.inv_table.table.f32[i];
+        }
+#if HYST_ENABLE_F64
+        else {
+            t.f64 = inv->u.inv_table.table.f64[i];
+        }
+#endif
+        crc = hyst_crc_num_(crc, &t, v);
+    }
+    return crc & 0xFFFFFFFFul;
 }

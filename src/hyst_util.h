@@ -293,6 +293,21 @@ hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_cu
  * word (src/hyst_snapshot.c). */
 unsigned long hyst_crc_real_(unsigned long crc, hyst_wide_t v, unsigned variant);
 unsigned long hyst_crc_word_(unsigned long crc, unsigned long w);
+/* The same over a number as stored (no conversion: integer work only); its
+ * type is the variant's (HYST_VARIANT_CODE: an input code). */
+unsigned long hyst_crc_num_(unsigned long crc, const hyst_num_t *v, unsigned variant);
+/* The seal of a prepared polynomial curve (hyst_*_sealed_poly_t, curve.h):
+ * the format, kind, variant, degree, the domain (codes for q31), the
+ * outputs at its ends, unit, rounding and G's coefficients, as stored
+ * (src/hyst_table_seal.c). */
+unsigned long hyst_poly_seal_crc_(const hyst_curve_t *curve);
+/* The seal of a tabulated compensator's prepared curve (inverse.h): its
+ * numbers (the forward polynomial's included), intervals, exact count, the
+ * error as a float, and every number of its table, as stored. */
+unsigned long hyst_inverse_seal_crc_(const hyst_curve_t *inv, const hyst_num_t *max_err);
+/* (hyst_wide_t)v without floating-point work where hyst_wide_t is an IEEE
+ * double kept in software: a cast would link the soft double library. */
+hyst_wide_t hyst_wide_of_float_(float v);
 /* A tabulated inverse's measured error as tables keep it: rounded up to a
  * float, so a seal (hyst_table_seal_t) states it the same on every target;
  * and the seal's check of a table given ready-made (src/hyst_table_seal.c):

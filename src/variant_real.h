@@ -91,6 +91,170 @@ static hyst_status_t NUM_NAME(init_impl)(hyst_tcm_t *S, const hyst_poly_t *f0, N
     return HYST_OK;
 }
 
+/* The variant's sealed structs (curve.h, inverse.h), named by its number
+ * member (hyst_f32_..., hyst_f64_...) whatever NUM_NAME prefixes. */
+#define VARIANT_PASTE_(a, b, c) a##b##c
+#define VARIANT_TYPE_(a, b, c) VARIANT_PASTE_(a, b, c)
+#define NUM_SEALED_POLY_T VARIANT_TYPE_(hyst_, NUM_F, _sealed_poly_t)
+#define NUM_SEALED_INVERSE_T VARIANT_TYPE_(hyst_, NUM_F, _sealed_inverse_t)
+
+/* The prepared numbers of a polynomial curve as the sealed struct holds
+ * them (curve.h), and back: the same curve either way. */
+static hyst_status_t NUM_NAME(seal_poly_impl)(NUM_SEALED_POLY_T *out, const hyst_poly_t *f0,
+                                              unsigned long layout)
+{
+    NUM_SEALED_POLY_T c;
+    hyst_curve_t curve;
+    unsigned k;
+    hyst_status_t st = out == NULL ? HYST_ERR_NULL
+                                   : hyst_curve_poly_(&curve, f0, NUM_VARIANT, layout);
+    if (st != HYST_OK) {
+        return st;
+    }
+    memset(&c, 0, sizeof c);
+    c.seal = hyst_poly_seal_crc_(&curve);
+    c.degree = curve.u.poly.degree;
+    c.lo = curve.lo.NUM_F;
+    c.hi = curve.hi.NUM_F;
+    c.y_lo = curve.y_lo.NUM_F;
+    c.y_hi = curve.y_hi.NUM_F;
+    c.unit = curve.unit.NUM_F;
+    c.rounding = curve.rounding.NUM_F;
+    for (k = 0u; k < c.degree; ++k) {
+        c.a[k] = curve.u.poly.a[k].NUM_F;
+    }
+    *out = c;
+    return HYST_OK;
+}
+
+/* Checks only what the seal cannot vouch for (the memory, the layout, the
+ * degree that bounds the copy) and the seal: no curve construction. */
+static hyst_status_t NUM_NAME(init_sealed_impl)(hyst_tcm_t *S, const NUM_SEALED_POLY_T *c,
+                                                NUM_T *xltp, NUM_T *yltp, NUM_T *xrtp,
+                                                NUM_T *yrtp, size_t capacity, unsigned long layout)
+{
+    hyst_curve_t curve;
+    unsigned k;
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T),
+                                         sizeof(NUM_T), layout);
+    if (st != HYST_OK || c == NULL) {
+        return st != HYST_OK ? st : HYST_ERR_NULL;
+    }
+    if (c->degree < 1u || c->degree > HYST_MAX_DEGREE) {
+        return HYST_ERR_DEGREE;
+    }
+    memset(&curve, 0, sizeof curve);
+    curve.kind = HYST_CURVE_POLY;
+    curve.variant = NUM_VARIANT;
+    curve.layout = HYST_LAYOUT;
+    curve.u.poly.degree = c->degree;
+    curve.lo.NUM_F = c->lo;
+    curve.hi.NUM_F = c->hi;
+    curve.y_lo.NUM_F = c->y_lo;
+    curve.y_hi.NUM_F = c->y_hi;
+    curve.unit.NUM_F = c->unit;
+    curve.rounding.NUM_F = c->rounding;
+    for (k = 0u; k < c->degree; ++k) {
+        curve.u.poly.a[k].NUM_F = c->a[k];
+    }
+    if (hyst_poly_seal_crc_(&curve) != (c->seal & 0xFFFFFFFFul)) {
+        return HYST_ERR_CRC;
+    }
+    /* as init_impl(): the polynomial is copied whole into the instance */
+    NUM_NAME(attach)(S, &curve, &NUM_NAME(kind_poly), curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
+                     yltp, xrtp, yrtp, capacity);
+    S->curve = NULL;
+    return HYST_OK;
+}
+
+/* A tabulated compensator's curve (built) as the sealed struct holds it. */
+static hyst_status_t NUM_NAME(seal_inverse_table_impl)(NUM_SEALED_INVERSE_T *out,
+                                                       const hyst_curve_t *inv)
+{
+    NUM_SEALED_INVERSE_T c;
+    hyst_num_t err;
+    unsigned k;
+    const hyst_status_t st = hyst_curve_check(inv);
+    if (st != HYST_OK || out == NULL) {
+        return st != HYST_OK ? st : HYST_ERR_NULL;
+    }
+    if (inv->variant != (unsigned)NUM_VARIANT || inv->kind != (unsigned)HYST_CURVE_INV_TABLE) {
+        return HYST_ERR_ARG;
+    }
+    err.f32 = (float)hyst_table_err_(inv->u.inv_table.max_err); /* a float already */
+    memset(&c, 0, sizeof c);
+    c.seal = hyst_inverse_seal_crc_(inv, &err);
+    c.degree = inv->u.inv_table.fwd.degree;
+    c.lo = inv->lo.NUM_F;
+    c.hi = inv->hi.NUM_F;
+    c.y_lo = inv->y_lo.NUM_F;
+    c.y_hi = inv->y_hi.NUM_F;
+    c.unit = inv->unit.NUM_F;
+    c.span = inv->u.inv_table.span.NUM_F;
+    c.u_per_d = inv->u.inv_table.u_per_d.NUM_F;
+    for (k = 0u; k < c.degree; ++k) {
+        c.a[k] = inv->u.inv_table.fwd.a[k].NUM_F;
+    }
+    c.intervals = (unsigned long)inv->u.inv_table.intervals;
+    c.exact = (unsigned long)inv->u.inv_table.exact;
+    c.max_err = err.f32;
+    *out = c;
+    return HYST_OK;
+}
+
+/* The sealed compensator: checks what the seal cannot vouch for (the
+ * memory, the layout, the degree and intervals that bound the reads) and
+ * the seal over the struct and the table; binds the out-of-line kind (the
+ * exact intervals) as the build's init does. */
+static hyst_status_t NUM_NAME(init_inverse_sealed_impl)(hyst_tcm_t *S, hyst_curve_t *inv,
+                                                        const NUM_SEALED_INVERSE_T *c,
+                                                        const NUM_T *table, NUM_T *xltp,
+                                                        NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp,
+                                                        size_t capacity, unsigned long layout)
+{
+    hyst_curve_t curve;
+    hyst_num_t err;
+    unsigned k;
+    hyst_status_t st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T),
+                                         sizeof(NUM_T), layout);
+    if (st != HYST_OK || inv == NULL || c == NULL || table == NULL) {
+        return st != HYST_OK ? st : HYST_ERR_NULL;
+    }
+    if (c->degree < 1u || c->degree > HYST_MAX_DEGREE) {
+        return HYST_ERR_DEGREE;
+    }
+    if (c->intervals < 1ul || c->intervals > 1048576ul || c->exact > c->intervals) {
+        return HYST_ERR_ARG;
+    }
+    memset(&curve, 0, sizeof curve);
+    curve.kind = HYST_CURVE_INV_TABLE;
+    curve.variant = NUM_VARIANT;
+    curve.layout = HYST_LAYOUT;
+    curve.lo.NUM_F = c->lo;
+    curve.hi.NUM_F = c->hi;
+    curve.y_lo.NUM_F = c->y_lo;
+    curve.y_hi.NUM_F = c->y_hi;
+    curve.unit.NUM_F = c->unit;
+    curve.u.inv_table.fwd.degree = c->degree;
+    for (k = 0u; k < c->degree; ++k) {
+        curve.u.inv_table.fwd.a[k].NUM_F = c->a[k];
+    }
+    curve.u.inv_table.span.NUM_F = c->span;
+    curve.u.inv_table.u_per_d.NUM_F = c->u_per_d;
+    curve.u.inv_table.table.NUM_F = table;
+    curve.u.inv_table.intervals = (size_t)c->intervals;
+    curve.u.inv_table.exact = (size_t)c->exact;
+    err.f32 = c->max_err;
+    if (hyst_inverse_seal_crc_(&curve, &err) != (c->seal & 0xFFFFFFFFul)) {
+        return HYST_ERR_CRC;
+    }
+    curve.u.inv_table.max_err = hyst_wide_of_float_(c->max_err);
+    *inv = curve;
+    NUM_NAME(attach)(S, inv, &NUM_NAME(kind_curve), inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F,
+                     xltp, yltp, xrtp, yrtp, capacity);
+    return HYST_OK;
+}
+
 /* A compensator of f0: its inverse curve into *inv (exact by bisection, or
  * tabulated into table if `tabulate`), then the instance. */
 static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,

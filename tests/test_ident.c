@@ -211,6 +211,35 @@ static double dac_curve(double x)
  * of magnitude (c9 = 50 / 65535^9 = 2e-42); the scaled Chebyshev
  * factorisation in double still returns them, and a curve that matches the
  * true one across the domain. */
+/* Outputs missing (NaN) over a stretch that starts on a rising ramp and
+ * ends on a falling one: the inputs of that stretch still set the direction,
+ * so the first sample after it is on its falling branch (taken as rising
+ * from the last input used, it would put the loop's width into the fit). */
+static void test_missing_outputs_keep_the_direction(void)
+{
+    static const double levels[] = {40.0, 0.0, 40.0, 0.0, 40.0, 0.0};
+    static hyst_real_t path[MAXN];
+    hyst_ident_result_t res;
+    long n, i;
+    int k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&S, &paper_eq20, xl, yl, xr, yr, CAP));
+    n = ramp_path(0.0, levels, 6, 0.1, path, MAXN);
+    for (i = 0; i < n; ++i) {
+        xs[i] = (hyst_wide_t)path[i];
+        ys[i] = (hyst_wide_t)hyst_step(&S, path[i]);
+    }
+    /* from x = 10 rising (sample 100) to x = 30 falling (sample 500) */
+    TEST_ASSERT_TRUE(xs[500] > xs[99] && xs[501] < xs[500]);
+    for (i = 100; i < 500; ++i) {
+        ys[i] = (hyst_wide_t)NAN;
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, fit(HYST_IDENT_JOINT, 3u, (size_t)n, &res));
+    for (k = 0; k < 4; ++k) {
+        const double want = paper_eq20_coeffs[k];
+        TEST_ASSERT_DOUBLE_WITHIN(EQ20_REL * fabs(want), want, (double)res.coeffs[k]);
+    }
+}
+
 static void test_degree9_on_dac_codes_is_sound(void)
 {
     hyst_ident_result_t res;
@@ -560,6 +589,7 @@ int main(void)
     RUN_TEST(test_example1_both_estimators_recover_x_squared);
     RUN_TEST(test_noisy_simulations_favour_joint);
     RUN_TEST(test_eq20_cubic_is_returned_exactly);
+    RUN_TEST(test_missing_outputs_keep_the_direction);
     RUN_TEST(test_degree9_on_dac_codes_is_sound);
     RUN_TEST(test_fits_far_from_zero_are_refused_or_report_their_residual);
     RUN_TEST(test_non_increasing_fit_is_reported_with_turn);

@@ -636,7 +636,7 @@ def self_test():
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("elf", nargs="?")
     ap.add_argument("--self-test", action="store_true", help="run the model's unit test")
     ap.add_argument("--core", choices=("m3", "m4"), help="default: from the image's machine")

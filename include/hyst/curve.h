@@ -230,6 +230,53 @@ hyst_status_t hyst_f64_curve_from_poly_(hyst_curve_t *curve, const hyst_poly_t *
 /**@}*/
 
 /**
+ * @name A polynomial curve sealed ahead of time
+ * @brief The polynomial kind's prepared numbers, made and checked where
+ *        double costs nothing (the host: `hyst header --sealed`), and a
+ *        CRC-32 over them, so that firmware takes them from flash with
+ *        hyst_*_init_sealed() (tcm.h): integer work only, none of the
+ *        curve's construction and no double arithmetic linked.
+ *
+ * hyst_*_seal_poly() runs every check of hyst_*_curve_from_poly() (its
+ * statuses) and writes the numbers the instance runs on: the domain, the
+ * outputs at its ends, G's argument scale 1 / (hi - lo), the rounding bound
+ * and G's coefficients (hyst_curve_poly_t, a[0] of u^n). @p seal covers the
+ * format, kind, variant, degree and every number as stored (its bit
+ * pattern); a layout option changes none of them, and the layout is checked
+ * by the init (the caller's HYST_LAYOUT). An instance initialised from the
+ * sealed curve is, bit for bit, the one hyst_*_init() makes from @p f0 with
+ * double set-up (HYST_NO_DOUBLE off). @p out is written only on success.
+ */
+/**@{*/
+typedef struct hyst_f32_sealed_poly {
+    unsigned long seal;       /**< CRC-32 of the format, kind, variant, degree, numbers */
+    unsigned degree;          /**< n, 1..HYST_MAX_DEGREE */
+    float lo, hi;             /**< domain */
+    float y_lo, y_hi;         /**< f0(lo), f0(hi) */
+    float unit;               /**< 1 / (hi - lo) */
+    float rounding;           /**< the rounding bound (hyst_curve_t) */
+    float a[HYST_MAX_DEGREE]; /**< G(u) = u (a[0] u^(n-1) + ... + a[n-1]) */
+} hyst_f32_sealed_poly_t;
+hyst_status_t hyst_f32_seal_poly_(hyst_f32_sealed_poly_t *out, const hyst_poly_t *f0,
+                                  unsigned long layout);
+#define hyst_f32_seal_poly(out, f0) hyst_f32_seal_poly_((out), (f0), HYST_LAYOUT)
+#if HYST_ENABLE_F64
+typedef struct hyst_f64_sealed_poly {
+    unsigned long seal;        /**< CRC-32 of the format, kind, variant, degree, numbers */
+    unsigned degree;           /**< n, 1..HYST_MAX_DEGREE */
+    double lo, hi;             /**< domain */
+    double y_lo, y_hi;         /**< f0(lo), f0(hi) */
+    double unit;               /**< 1 / (hi - lo) */
+    double rounding;           /**< the rounding bound (hyst_curve_t) */
+    double a[HYST_MAX_DEGREE]; /**< G(u) = u (a[0] u^(n-1) + ... + a[n-1]) */
+} hyst_f64_sealed_poly_t;
+hyst_status_t hyst_f64_seal_poly_(hyst_f64_sealed_poly_t *out, const hyst_poly_t *f0,
+                                  unsigned long layout);
+#define hyst_f64_seal_poly(out, f0) hyst_f64_seal_poly_((out), (f0), HYST_LAYOUT)
+#endif
+/**@}*/
+
+/**
  * @name Asymmetric curve
  * @brief Validates a branch function E (hyst_everett_t) and prepares its
  *        per-branch tables.
@@ -547,6 +594,7 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 /** @name Default variant (f32, or f64 with HYST_USE_DOUBLE) */
 /**@{*/
 #define hyst_curve_from_poly HYST_DEFAULT_NAME_(curve_from_poly)
+#define hyst_seal_poly HYST_DEFAULT_NAME_(seal_poly)
 #define hyst_curve_from_everett HYST_DEFAULT_NAME_(curve_from_everett)
 #define hyst_curve_from_pwl HYST_DEFAULT_NAME_(curve_from_pwl)
 #define hyst_curve_eval HYST_DEFAULT_NAME_(curve_eval)
@@ -555,6 +603,11 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 #define hyst_curve_everett_inverse_table HYST_DEFAULT_NAME_(curve_everett_inverse_table)
 #define hyst_curve_inverse_table_const HYST_DEFAULT_NAME_(curve_inverse_table_const)
 #define hyst_curve_everett_inverse_table_const HYST_DEFAULT_NAME_(curve_everett_inverse_table_const)
+#ifdef HYST_USE_DOUBLE
+typedef hyst_f64_sealed_poly_t hyst_sealed_poly_t;
+#else
+typedef hyst_f32_sealed_poly_t hyst_sealed_poly_t;
+#endif
 /**@}*/
 
 #ifdef __cplusplus

@@ -158,7 +158,9 @@ hyst_status_t hyst_ident_init_(hyst_ident_t *id, const hyst_ident_config_t *cfg,
  * @return HYST_OK when used; HYST_ERR_NONFINITE (NaN/Inf) or HYST_ERR_DOMAIN
  *         (x outside [lo, hi]) when ignored; HYST_ERR_ARG after
  *         hyst_ident_solve(). A sample before the input first moves
- *         returns HYST_OK but is not used (it has no direction).
+ *         returns HYST_OK but is not used (it has no direction). A sample
+ *         whose output alone is missing (y NaN, x in the domain) is not
+ *         used but its input still sets the direction of the next.
  */
 hyst_status_t hyst_ident_add(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y);
 

@@ -101,6 +101,83 @@ hyst_status_t hyst_f64_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
 #define hyst_init_inverse_table HYST_DEFAULT_NAME_(init_inverse_table)
 /**@}*/
 
+/**
+ * @name Tabulated compensator sealed ahead of time
+ * @brief The tabulated compensator's prepared curve (hyst_*_init_inverse_table()),
+ *        made and measured on the host (`hyst header --compensator --sealed`,
+ *        hyst_*_seal_inverse_table()) and sealed with a CRC-32 over its
+ *        numbers and every number of its table, so that firmware takes both
+ *        from flash with hyst_*_init_inverse_sealed(): integer checks only,
+ *        no table built or measured, no curve construction.
+ *
+ * hyst_*_seal_inverse_table() seals a curve made by
+ * hyst_*_curve_inverse_table() (or hyst_*_init_inverse_table()) with its
+ * table: HYST_ERR_ARG for another kind. The init checks the arrays, the
+ * caller's layout, the degree and intervals, then the seal over the struct
+ * and @p table (HYST_ERR_CRC when a number of either differs from the ones
+ * sealed), writes the curve into @p inv (caller storage that, like
+ * @p table, must outlive the instance) and gives the instance
+ * hyst_*_init_inverse_table() makes, bit for bit.
+ */
+/**@{*/
+typedef struct hyst_f32_sealed_inverse {
+    unsigned long seal;       /**< CRC-32 of the format, kind, variant, numbers and table */
+    unsigned degree;          /**< the forward polynomial's n */
+    float lo, hi;             /**< the compensator's domain: f0(lo), f0(hi) */
+    float y_lo, y_hi;         /**< its drives there: lo, hi */
+    float unit;               /**< table intervals per output step */
+    float span, u_per_d;      /**< the drive's span hi - lo and its inverse */
+    float a[HYST_MAX_DEGREE]; /**< the forward G's coefficients (the exact intervals) */
+    unsigned long intervals;  /**< N: the table holds HYST_INV_TABLE_LEN(N) numbers */
+    unsigned long exact;      /**< intervals evaluated exactly */
+    float max_err;            /**< hyst_curve_inverse_error() of the build (a float) */
+} hyst_f32_sealed_inverse_t;
+hyst_status_t hyst_f32_seal_inverse_table(hyst_f32_sealed_inverse_t *out, const hyst_curve_t *inv);
+hyst_status_t hyst_f32_init_inverse_sealed_(hyst_tcm_t *S, hyst_curve_t *inv,
+                                            const hyst_f32_sealed_inverse_t *sealed,
+                                            const float *table, float *xltp, float *yltp,
+                                            float *xrtp, float *yrtp, size_t capacity,
+                                            unsigned long layout);
+#define hyst_f32_init_inverse_sealed(S, inv, sealed, table, xltp, yltp, xrtp, yrtp, capacity) \
+    hyst_f32_init_inverse_sealed_((S), (inv), (sealed), (table), (xltp), (yltp), (xrtp),      \
+                                  (yrtp), (capacity), HYST_LAYOUT)
+#if HYST_ENABLE_F64
+typedef struct hyst_f64_sealed_inverse {
+    unsigned long seal;        /**< CRC-32 of the format, kind, variant, numbers and table */
+    unsigned degree;           /**< the forward polynomial's n */
+    double lo, hi;             /**< the compensator's domain: f0(lo), f0(hi) */
+    double y_lo, y_hi;         /**< its drives there: lo, hi */
+    double unit;               /**< table intervals per output step */
+    double span, u_per_d;      /**< the drive's span hi - lo and its inverse */
+    double a[HYST_MAX_DEGREE]; /**< the forward G's coefficients (the exact intervals) */
+    unsigned long intervals;   /**< N: the table holds HYST_INV_TABLE_LEN(N) numbers */
+    unsigned long exact;       /**< intervals evaluated exactly */
+    float max_err;             /**< hyst_curve_inverse_error() of the build (a float) */
+} hyst_f64_sealed_inverse_t;
+hyst_status_t hyst_f64_seal_inverse_table(hyst_f64_sealed_inverse_t *out, const hyst_curve_t *inv);
+hyst_status_t hyst_f64_init_inverse_sealed_(hyst_tcm_t *S, hyst_curve_t *inv,
+                                            const hyst_f64_sealed_inverse_t *sealed,
+                                            const double *table, double *xltp, double *yltp,
+                                            double *xrtp, double *yrtp, size_t capacity,
+                                            unsigned long layout);
+#define hyst_f64_init_inverse_sealed(S, inv, sealed, table, xltp, yltp, xrtp, yrtp, capacity) \
+    hyst_f64_init_inverse_sealed_((S), (inv), (sealed), (table), (xltp), (yltp), (xrtp),      \
+                                  (yrtp), (capacity), HYST_LAYOUT)
+#endif
+#ifdef HYST_USE_DOUBLE
+typedef hyst_f64_sealed_inverse_t hyst_sealed_inverse_t;
+#else
+typedef hyst_f32_sealed_inverse_t hyst_sealed_inverse_t;
+#endif
+#define hyst_seal_inverse_table HYST_DEFAULT_NAME_(seal_inverse_table)
+#define hyst_init_inverse_sealed HYST_DEFAULT_NAME_(init_inverse_sealed)
+/** The sealed compensator on an instance declared by a DEFINE macro; @p inv
+ *  a hyst_curve_t that outlives it, @p table the sealed table. */
+#define HYST_INIT_INVERSE_SEALED(name, inv, sealed, table)                                 \
+    HYST_DEFAULT_NAME_(init_inverse_sealed_)(&(name), (inv), (sealed), (table),           \
+                                             HYST_ARRAYS_(name), HYST_LAYOUT)
+/**@}*/
+
 /** A compensator's instance, arrays, inverse curve and table of HYST_INV_TABLE
  *  intervals, statically (default variant). */
 #define HYST_DEFINE_INVERSE(name, nu)                                   \

@@ -126,6 +126,48 @@ hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_
     hyst_q31_init_((S), (f0), (code_lo), (code_hi), (xltp), (yltp), (xrtp), (yrtp),       \
                    (capacity), HYST_LAYOUT)
 
+/**
+ * @brief The q31 model of a polynomial, prepared and checked ahead of time
+ *        (`hyst header --sealed --codes LO,HI`, hyst_q31_seal_poly()) and
+ *        sealed, for hyst_q31_init_sealed(): what hyst_q31_init() derives
+ *        in double, and a CRC-32 over it (curve.h, "sealed ahead of time").
+ */
+typedef struct hyst_q31_sealed_poly {
+    unsigned long seal;            /**< CRC-32 of the format, kind, variant, degree, numbers */
+    unsigned degree;               /**< n, 1..HYST_MAX_DEGREE */
+    uint_least32_t code_lo;        /**< the code mapped to f0->lo */
+    uint_least32_t code_hi;        /**< the code mapped to f0->hi */
+    hyst_q31_t unit;               /**< G's argument per code, Q30 */
+    hyst_q31_t rounding;           /**< the error bound's rounding term */
+    hyst_q31_t a[HYST_MAX_DEGREE]; /**< the fixed-point coefficients, a[0] of v^n */
+} hyst_q31_sealed_poly_t;
+
+/** @brief Runs hyst_q31_init()'s checks and set-up on @p f0 and codes
+ *         code_lo..code_hi and writes the result sealed (@p out written
+ *         only on success).
+ *  @return as hyst_q31_init(), without the arrays' statuses. */
+hyst_status_t hyst_q31_seal_poly_(hyst_q31_sealed_poly_t *out, const hyst_poly_t *f0,
+                                  uint_least32_t code_lo, uint_least32_t code_hi,
+                                  unsigned long layout);
+#define hyst_q31_seal_poly(out, f0, code_lo, code_hi) \
+    hyst_q31_seal_poly_((out), (f0), (code_lo), (code_hi), HYST_LAYOUT)
+
+/** @brief The instance hyst_q31_init() makes, from a sealed q31 model:
+ *         checks the arrays and the caller's layout, the degree and codes,
+ *         and the seal (integer work only; HYST_ERR_CRC when the numbers
+ *         differ from the ones sealed). On error nothing is written.
+ *  @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT, HYST_ERR_CAPACITY,
+ *          HYST_ERR_OVERLAP, HYST_ERR_DEGREE, HYST_ERR_DOMAIN or HYST_ERR_CRC. */
+hyst_status_t hyst_q31_init_sealed_(hyst_tcm_t *S, const hyst_q31_sealed_poly_t *sealed,
+                                    hyst_code_word_t *xltp, hyst_q31_t *yltp,
+                                    hyst_code_word_t *xrtp, hyst_q31_t *yrtp, size_t capacity,
+                                    unsigned long layout);
+#define hyst_q31_init_sealed(S, sealed, xltp, yltp, xrtp, yrtp, capacity) \
+    hyst_q31_init_sealed_((S), (sealed), (xltp), (yltp), (xrtp), (yrtp), (capacity), HYST_LAYOUT)
+/** hyst_q31_init_sealed() on an instance declared by HYST_Q31_DEFINE(). */
+#define HYST_Q31_INIT_SEALED(name, sealed) \
+    hyst_q31_init_sealed_(&(name), (sealed), HYST_ARRAYS_(name), HYST_LAYOUT)
+
 /** @brief Noise deadband in codes (see hyst_code_set_deadband()). */
 hyst_status_t hyst_q31_set_deadband(hyst_tcm_t *S, uint_least32_t codes);
 

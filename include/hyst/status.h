@@ -30,7 +30,7 @@ typedef enum hyst_status {
     HYST_ERR_NOSPACE = -9,       /**< a caller buffer is too small */
     HYST_ERR_SINGULAR = -10,     /**< too few distinct inputs for the fit (rank deficient) */
     HYST_ERR_FORMAT = -11,       /**< not a snapshot: bad magic, truncated, bad length or impossible state */
-    HYST_ERR_CRC = -12,          /**< checksum mismatch: a snapshot or a prebuilt table (curve.h) is corrupted */
+    HYST_ERR_CRC = -12,          /**< checksum mismatch: a snapshot, a prebuilt table or a sealed curve (curve.h) is corrupted */
     HYST_ERR_VERSION = -13,      /**< snapshot format version or real type differs */
     HYST_ERR_CURVE = -14,        /**< a snapshot or a prebuilt table of a different curve */
     HYST_ERR_BREAKPOINTS = -15,  /**< PWL breakpoints or PI thresholds not finite,

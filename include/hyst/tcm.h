@@ -232,6 +232,13 @@ typedef struct hyst_tcm {
 #define HYST_F64_INIT(name, f0) hyst_f64_init_(&(name), (f0), HYST_ARRAYS_(name), HYST_LAYOUT)
 #define HYST_INIT(name, f0) \
     HYST_DEFAULT_NAME_(init_)(&(name), (f0), HYST_ARRAYS_(name), HYST_LAYOUT)
+/** hyst_*_init_sealed() on an instance declared by a DEFINE macro. */
+#define HYST_F32_INIT_SEALED(name, sealed) \
+    hyst_f32_init_sealed_(&(name), (sealed), HYST_ARRAYS_(name), HYST_LAYOUT)
+#define HYST_F64_INIT_SEALED(name, sealed) \
+    hyst_f64_init_sealed_(&(name), (sealed), HYST_ARRAYS_(name), HYST_LAYOUT)
+#define HYST_INIT_SEALED(name, sealed) \
+    HYST_DEFAULT_NAME_(init_sealed_)(&(name), (sealed), HYST_ARRAYS_(name), HYST_LAYOUT)
 /** hyst_*_init_curve() on an instance declared by a DEFINE macro. */
 #define HYST_INIT_CURVE(name, curve) \
     HYST_DEFAULT_NAME_(init_curve_)(&(name), (curve), HYST_ARRAYS_(name), HYST_LAYOUT)
@@ -259,6 +266,36 @@ hyst_status_t hyst_f64_init_(hyst_tcm_t *S, const hyst_poly_t *f0, double *xltp,
                              double *xrtp, double *yrtp, size_t capacity, unsigned long layout);
 #define hyst_f64_init(S, f0, xltp, yltp, xrtp, yrtp, capacity) \
     hyst_f64_init_((S), (f0), (xltp), (yltp), (xrtp), (yrtp), (capacity), HYST_LAYOUT)
+#endif
+/**@}*/
+
+/**
+ * @name Initialisation with a polynomial sealed ahead of time
+ * @brief The instance hyst_*_init() makes, from a curve prepared and
+ *        checked on the host and sealed (curve.h, hyst_*_seal_poly();
+ *        `hyst header --sealed` writes it as a const initializer).
+ *
+ * Checks what the seal cannot: the arrays and the caller's layout (as
+ * hyst_*_init()), the degree, then the seal itself (a CRC-32 over the
+ * numbers as stored): integer work only, no curve construction, no double.
+ * A curve whose numbers differ from the ones sealed (a damaged flash image,
+ * a number edited by hand) is refused with HYST_ERR_CRC. The sealed curve
+ * is copied: it need not outlive the instance. On error nothing is written.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT, HYST_ERR_CAPACITY,
+ *         HYST_ERR_OVERLAP, HYST_ERR_DEGREE or HYST_ERR_CRC.
+ */
+/**@{*/
+hyst_status_t hyst_f32_init_sealed_(hyst_tcm_t *S, const hyst_f32_sealed_poly_t *sealed,
+                                    float *xltp, float *yltp, float *xrtp, float *yrtp,
+                                    size_t capacity, unsigned long layout);
+#define hyst_f32_init_sealed(S, sealed, xltp, yltp, xrtp, yrtp, capacity) \
+    hyst_f32_init_sealed_((S), (sealed), (xltp), (yltp), (xrtp), (yrtp), (capacity), HYST_LAYOUT)
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_init_sealed_(hyst_tcm_t *S, const hyst_f64_sealed_poly_t *sealed,
+                                    double *xltp, double *yltp, double *xrtp, double *yrtp,
+                                    size_t capacity, unsigned long layout);
+#define hyst_f64_init_sealed(S, sealed, xltp, yltp, xrtp, yrtp, capacity) \
+    hyst_f64_init_sealed_((S), (sealed), (xltp), (yltp), (xrtp), (yrtp), (capacity), HYST_LAYOUT)
 #endif
 /**@}*/
 
@@ -438,6 +475,7 @@ size_t hyst_capacity(const hyst_tcm_t *S);
 typedef hyst_tcm_t hyst_t; /**< an instance (the struct is the same for every variant) */
 #define hyst_init HYST_DEFAULT_NAME_(init)
 #define hyst_init_curve HYST_DEFAULT_NAME_(init_curve)
+#define hyst_init_sealed HYST_DEFAULT_NAME_(init_sealed)
 #define hyst_step HYST_DEFAULT_NAME_(step)
 #define hyst_process HYST_DEFAULT_NAME_(process)
 #define hyst_set_deadband HYST_DEFAULT_NAME_(set_deadband)

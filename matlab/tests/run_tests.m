@@ -19,7 +19,8 @@ function failed = run_tests(root, ref, cli)
            @t_header_equals_cli, @t_header_tables, @t_header_file, @t_header_arguments, ...
            @t_creep_sim_inv_equal_cli, @t_creep_sum_of_lags, @t_creep_save_load, ...
            @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors, ...
-           @t_readers_agree, @t_fit_delay_saved, @t_fit_chooses_as_cli};
+           @t_readers_agree, @t_fit_delay_saved, @t_fit_chooses_as_cli, ...
+           @t_fit_searches_delays_as_cli};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -1394,4 +1395,37 @@ function t_fit_chooses_as_cli(ctx)
   end
   check(numel(g.candidates) == 171 && strcmp(kind, t{3}) && g.degree == str2double(t{1}) && ...
         g.delay == str2double(t{2}), 'the choice differs from hyst fit''s: %s', strjoin(t, ' '));
+end
+
+function t_fit_searches_delays_as_cli(ctx)
+  % 'delay', [] searches the delays with the hyst tool's own code
+  % (fit_search()): scaled to the drive's period beyond 8 samples, then a
+  % fraction of a sample, the model fitted on the drive interpolated
+  plant = fullfile(ctx.tmp, 'plant.hyst');
+  fid = fopen(plant, 'w');
+  fprintf(fid, ['hyst-model-text 1\nkind everett\nlo 0\nhi 40\ny_lo 0\ndelay 12.5\n' ...
+                'degree 2\nterms 3 -0.5 1\n']);
+  fclose(fid);
+  x = [];
+  for top = [40 30 40 20 40 35 40 25 40]
+    x = [x, 0:0.05:top - 0.05, top:-0.05:0.05];  %#ok<AGROW>
+  end
+  x = [x, 0]';
+  xf = fullfile(ctx.tmp, 'x.txt');
+  fid = fopen(xf, 'w');
+  fprintf(fid, '%.17g\n', x);
+  fclose(fid);
+  y = str2double(strsplit(strtrim(run_cli(ctx, ['sim --model "' plant '" "' xf '"'])), "\n"))';
+  rec = fullfile(ctx.tmp, 'rec.txt');
+  fid = fopen(rec, 'w');
+  fprintf(fid, '%.17g %.17g\n', [x, y]');
+  fclose(fid);
+  out = run_cli(ctx, ['fit "' rec '"']);
+  check(~isempty(regexp(out, '# delays searched 0\.\.\d+ ', 'once')), 'no scaled search: %s', out);
+  delay = str2double(regexp(out, '# delay (\S+) samples', 'tokens', 'once'));
+  f = hyst_fit(x, y, 'degree', [], 'delay', []);
+  check(delay == 12.5 && f.delay == delay, 'delay %g, hyst fit %g', f.delay, delay);
+  t = regexp(out, 'chosen by hold-out: degree (\d+), delay \d+ \(kind (\w+)', 'tokens', 'once');
+  check(strcmp(f.kind, t{2}) && f.degree == str2double(t{1}), ...
+        'the choice differs from hyst fit''s: %s', strjoin(t, ' '));
 end

@@ -6,7 +6,7 @@ import numpy as np
 
 from . import _hyst
 from ._errors import HystError
-from ._model_file import _creep_args, everett_terms, header_text, save_model
+from ._model_file import _creep_args, header_text, save_model
 
 MAX_DEGREE = _hyst.MAX_DEGREE
 EVERETT_MAX_DEGREE = _hyst.EVERETT_MAX_DEGREE
@@ -242,7 +242,8 @@ class Fit:
         self.t_degree = result.get("t_degree")
         if self.kind == "poly":
             self.method = {v: k for k, v in _METHODS.items()}[result["method"]]
-        self.delay = int(delay)
+        # an int, or a float with a sub-sample delay (the model file's 3.5)
+        self.delay = delay if isinstance(delay, float) and not delay.is_integer() else int(delay)
         self.identified = result.get("identified")
         self.candidates = candidates or []
         self.creep = creep
@@ -339,16 +340,6 @@ CREEP_PARAMS = _hyst.FIT_CREEP_PARAMETERS
 KINDS = ("poly", "everett")
 
 
-def _params(kind, degree, t_degree=None):
-    """A candidate's parameter count: f0's coefficients, or E's terms w^i t^j
-    with j <= t_degree (all when None) and y_lo."""
-    if kind == "poly":
-        return degree + 1
-    if t_degree is None:
-        return everett_terms(degree) + 1
-    return 1 + sum(min(degree - i, t_degree) + 1 for i in range(1, degree + 1))
-
-
 def _fit_one(x, y, kind, degree, method, lo, hi, skip, delay, t_degree=None):
     if kind == "everett":
         return _hyst.fit_everett(x, y, degree, lo, hi, skip, delay,
@@ -366,42 +357,14 @@ def _refusal(res):
     return None if res["increasing"] else "f0 not increasing"
 
 
-def _holdout(res, x, y, skip, delay, first, creep_tau=-1.0):
-    """RMS error of the model (res, double) over x[skip:n-delay], scored
-    from sample ``first`` on against y[k + delay], and, creep_tau >= 0, the
-    creep term fitted to its residual before ``first`` and scored after
-    (a dict, or None): the library's run, as hyst fit scores it."""
-    n = len(x) - delay
-    m = model_from(res, capacity=(n - skip) // 2 + 2)
-    h = _hyst.holdout(m, x, y, skip, delay, first, creep_tau)
-    return h["rms"], h["creep"]
-
-
 def _score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau):
-    """One candidate (kind, degree deg, t_degree k, delay d): fitted on the
-    first two thirds, scored by its prediction of the last third; with
-    creep_tau >= 0 also the creep term fitted to its residual and scored
-    alike (hyst fit's score(), tools/cli/fit_select.c)."""
-    c = {"kind": kind, "degree": deg, "t_degree": k, "delay": d,
-         "params": _params(kind, deg, k),
-         "holdout_rms": math.nan, "fit_rms": math.nan, "status": "OK",
-         "creep_tau": 0.0, "creep_weight": math.nan, "creep_holdout_rms": math.nan}
-    train = (2 * (len(x) - skip - d)) // 3
-    try:
-        n = skip + train + d  # the training part, as hyst fit passes it
-        res = _fit_one(np.ascontiguousarray(x[:n]), np.ascontiguousarray(y[:n]),
-                       kind, deg, method, lo, hi, skip, d, k)
-        c["fit_rms"] = res["rms"]
-        refusal = _refusal(res)
-        if refusal is None:
-            c["holdout_rms"], creep = _holdout(res, x, y, skip, d, skip + train, creep_tau)
-            if creep is not None and math.isfinite(c["holdout_rms"]):
-                c.update(creep_tau=creep["tau"], creep_weight=creep["weight"],
-                         creep_holdout_rms=creep["holdout_rms"])
-        else:
-            c["status"] = refusal
-    except HystError as e:
-        c["status"] = e.name
+    """One candidate (kind, degree deg, t_degree k, delay d) scored on the
+    hold-out splits; with creep_tau >= 0 also its creep term (hyst fit's
+    fit_score(), tools/cli/fit_select.c)."""
+    c = _hyst.score(x, y, _hyst.FIT_EVERETT if kind == "everett" else _hyst.FIT_POLY, int(deg),
+                    0 if k is None else int(k), _METHODS[method], lo, hi, skip, int(d),
+                    creep_tau)
+    c["status"] = _status(c)
     return c
 
 
@@ -418,22 +381,26 @@ def _status(c):
     return "OK" if increasing else "f0 not increasing"
 
 
-def _select(x, y, kinds, method, lo, hi, skip, delays, t_degree=None, creep_tau=-1.0):
+def _select(x, y, kinds, method, lo, hi, skip, delay, t_degree=None, creep_tau=-1.0):
     """Every candidate (kind, degree, t_degree, delay) and the choice, made
     by the `hyst` tool's own code (fit_select(), tools/cli/fit_select.c):
     fitted on the first two thirds, scored by its prediction of the last
     third, alone and with its creep term (creep_tau >= 0); the fewest
     parameters within PARSIMONY of the lowest error win; between as many,
     the symmetric kind, then the lower error. Returns the candidates, the
-    index chosen (None: none) and whether with its creep term."""
+    index chosen (None: none), whether with its creep term, the chosen
+    one's domain (lo, hi) when it is a widened one (fit_chosen_domain()),
+    else None, and the search (fit_search(): with delay None the delays are
+    scaled to the drive and a fraction of a sample may be chosen; its "x"
+    is then the drive interpolated, which the model is fitted on)."""
     mask = ((_hyst.FIT_POLY if "poly" in kinds else 0) |
             (_hyst.FIT_EVERETT if "everett" in kinds else 0))
-    cands, best, with_creep = _hyst.select(
-        x, y, mask, _METHODS[method], lo, hi, skip, delays[0], delays[-1],
+    cands, best, with_creep, domain, search = _hyst.select(
+        x, y, mask, _METHODS[method], lo, hi, skip, -1 if delay is None else int(delay),
         -1 if t_degree is None else int(t_degree), creep_tau)
     for c in cands:
         c["status"] = _status(c)
-    return cands, best, with_creep
+    return cands, best, with_creep, domain, search
 
 
 def _choose(cands, creep_tau=-1.0):
@@ -488,7 +455,9 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
     ``t_degree`` fits only E's terms w^i t^j with j <= t_degree, the others
     0: major loops alone determine E of t_degree 1 at most, at any degree).
     ``degree=None`` chooses the degree, and ``delay=None`` the delay
-    (0..MAX_DELAY), by hold-out exactly as ``hyst fit`` without --degree
+    (0..MAX_DELAY, or up to 1/64 of the drive's period, then a fraction of
+    a sample: the result's ``delay`` is then a float, the model fitted on
+    the drive interpolated), by hold-out exactly as ``hyst fit`` without --degree
     does, the kind too when ``kind`` is None (both kinds compared; everett
     of each degree with each t_degree 0..degree-1, or only the one given;
     the parameter count is degree + 1 for poly, E's terms fitted + 1 for
@@ -526,26 +495,26 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
     x = np.ascontiguousarray(x, dtype=np.float64)
     y = np.ascontiguousarray(y, dtype=np.float64)
     skip = int(skip)
-    cands, chosen, with_creep = None, None, False
+    cands, chosen, with_creep, fraction = None, None, False, 0.0
     if degree is None:
-        delays = [0, MAX_DELAY] if delay is None else [int(delay)]
         kinds = KINDS if kind is None else (kind,)
-        cands, best, with_creep = _select(x, y, kinds, method, lo, hi, skip, delays,
-                                          None if t_degree is None else int(t_degree),
-                                          creep_tau)
+        cands, best, with_creep, widened, search = _select(
+            x, y, kinds, method, lo, hi, skip, delay,
+            None if t_degree is None else int(t_degree), creep_tau)
         if best is None:
             raise ValueError("no candidate gave a model (an increasing f0, a monotone E) "
                              "that could predict the last third of the record"
                              + (" with the creep term given" if creep_tau > 0 else ""))
         chosen = cands[best]
         kind, degree, delay = chosen["kind"], chosen["degree"], chosen["delay"]
+        if search["x"] is not None:  # a sub-sample delay: the drive interpolated
+            x = np.asarray(search["x"], dtype=np.float64)
+            fraction = search["delay_fraction"]
         t_degree = chosen["t_degree"]
-        if chosen.get("widened"):
-            # the domain the tool fits it on: the inputs' range widened by
-            # FIT_WIDEN of it on each side, E continued beyond the inputs
-            used = x[skip:len(x) - int(delay)]
-            a, b = float(used.min()), float(used.max())
-            lo, hi = a - _hyst.FIT_WIDEN * (b - a), b + _hyst.FIT_WIDEN * (b - a)
+        if widened is not None:
+            # the domain the tool fits it on: the inputs' range widened, E
+            # continued beyond the inputs (fit_chosen_domain())
+            lo, hi = widened
         for i, c in enumerate(cands):
             c["chosen"] = i == best
             c["with_creep"] = i == best and with_creep
@@ -576,4 +545,5 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
                       "rms": c["fit_rms"], "max_abs": c["max_abs"],
                       "holdout_rms": chosen["creep_holdout_rms"],
                       "holdout_rms_without": chosen["holdout_rms"]}
-    return Fit(res, dtype, capacity, delay=delay, candidates=cands, creep=creep_info)
+    return Fit(res, dtype, capacity, delay=int(delay) + fraction if fraction else int(delay),
+               candidates=cands, creep=creep_info)

@@ -928,49 +928,82 @@ std::string model_header(const std::string &name, bool open, const std::string &
 
 /* ---- fit's hold-out choice, the `hyst` tool's (tools/cli/fit_select.c) ---- */
 
-/* Every candidate of the kinds (FIT_POLY | FIT_EVERETT) at each delay
- * delay_first..max_delay, fitted on the first two thirds and scored on the
- * last (fit_select()): a list of dicts, the index chosen (None: none) and
- * whether with its creep term. */
+/* A scored candidate as the dict fit() lists. */
+nb::dict candidate_dict(const fit_candidate_t &c)
+{
+    const bool everett = c.kind == FIT_EVERETT;
+    nb::dict d;
+    d["kind"] = everett ? "everett" : "poly";
+    d["degree"] = c.degree;
+    d["t_degree"] = everett ? nb::cast(c.t_degree) : nb::none();
+    d["delay"] = c.delay;
+    d["widened"] = c.widened != 0;
+    d["params"] = fit_parameters(c.kind, c.degree, c.t_degree);
+    d["holdout_rms"] = c.holdout_rms;
+    d["fit_rms"] = c.fit_rms;
+    d["status_code"] = static_cast<int>(c.status);
+    d["increasing"] = everett || c.fit.increasing != 0;
+    d["creep_tau"] = c.creep.tau;
+    d["creep_weight"] = c.creep.tau > 0 ? c.creep.weight : NAN;
+    d["creep_holdout_rms"] = c.creep.tau > 0 ? c.creep.holdout_rms : NAN;
+    return d;
+}
+
+/* One candidate (kind FIT_POLY or FIT_EVERETT, degree, t_degree, delay)
+ * scored as the automatic choice scores it (fit_score(): the hold-out
+ * splits), with its creep term unless creep_tau < 0 (0: chosen). */
+nb::dict score_candidate(const In<double> &x, const In<double> &y, int kind, unsigned degree,
+                         unsigned t_degree, int method, double lo, double hi, size_t skip,
+                         size_t delay, double creep_tau)
+{
+    const hyst_ident_config_t base = ident_config(x, y, 0u, method, lo, hi, skip, 0u);
+    fit_candidate_t c;
+    std::memset(&c, 0, sizeof c);
+    c.kind = kind == FIT_EVERETT ? FIT_EVERETT : FIT_POLY;
+    c.degree = degree;
+    c.t_degree = t_degree;
+    c.delay = delay;
+    fit_score(&base, x.data(), y.data(), x.shape(0), creep_tau, &c);
+    return candidate_dict(c);
+}
+
+/* Every candidate of the kinds (FIT_POLY | FIT_EVERETT) at the delay given
+ * or, delay < 0, at the delays fit_search() chooses among, scored on the
+ * hold-out splits: a list of dicts, the index chosen (None: none), whether
+ * with its creep term, the chosen one's domain when widened
+ * (fit_chosen_domain(), else None) and the search's figures. */
 nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds, int method, double lo,
-                 double hi, size_t skip, size_t delay_first, size_t max_delay, long t_degree,
-                 double creep_tau)
+                 double hi, size_t skip, long delay, long t_degree, double creep_tau)
 {
     const size_t n = x.shape(0);
-    const hyst_ident_config_t base = ident_config(x, y, 0u, method, lo, hi, skip, delay_first);
-    if (max_delay < delay_first || max_delay > FIT_MAX_DELAY + 1000u) {
-        raise_status(HYST_ERR_ARG, "delays out of range");
-    }
-    std::vector<fit_candidate_t> cand((HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES) *
-                                      (max_delay - delay_first + 1u));
-    size_t best = 0u;
-    int with_creep = 0;
-    const size_t count =
-        fit_select(&base, kinds, 0u, t_degree < 0 ? FIT_ANY_T_DEGREE : static_cast<unsigned>(t_degree),
-                   creep_tau, x.data(), y.data(), n, max_delay, cand.data(), cand.size(), &best,
-                   &with_creep);
+    const hyst_ident_config_t base =
+        ident_config(x, y, 0u, method, lo, hi, skip, delay < 0 ? 0u : static_cast<size_t>(delay));
+    std::vector<fit_candidate_t> cand(FIT_SEARCH_CANDIDATES);
+    std::vector<double> drive(x.data(), x.data() + n); /* interpolated by a fraction chosen */
+    fit_found_t found;
+    check(fit_search(&base, kinds,
+                     t_degree < 0 ? FIT_ANY_T_DEGREE : static_cast<unsigned>(t_degree), creep_tau,
+                     delay < 0, drive.data(), y.data(), n, cand.data(), cand.size(), &found),
+          "select");
+    const size_t count = found.count, best = found.best;
+    const int with_creep = found.with_creep;
     nb::list out;
     for (size_t i = 0u; i < count; ++i) {
-        const fit_candidate_t &c = cand[i];
-        const bool everett = c.kind == FIT_EVERETT;
-        nb::dict d;
-        d["kind"] = everett ? "everett" : "poly";
-        d["degree"] = c.degree;
-        d["t_degree"] = everett ? nb::cast(c.t_degree) : nb::none();
-        d["delay"] = c.delay;
-        d["widened"] = c.widened != 0;
-        d["params"] = fit_parameters(c.kind, c.degree, c.t_degree);
-        d["holdout_rms"] = c.holdout_rms;
-        d["fit_rms"] = c.fit_rms;
-        d["status_code"] = static_cast<int>(c.status);
-        d["increasing"] = everett || c.fit.increasing != 0;
-        d["creep_tau"] = c.creep.tau;
-        d["creep_weight"] = c.creep.tau > 0 ? c.creep.weight : NAN;
-        d["creep_holdout_rms"] = c.creep.tau > 0 ? c.creep.holdout_rms : NAN;
-        out.append(d);
+        out.append(candidate_dict(cand[i]));
     }
+    double dom_lo = 0.0, dom_hi = 0.0; /* the chosen one's domain when widened */
+    const bool widened = best != (size_t)-1 &&
+                         fit_chosen_domain(&cand[best], drive.data(), skip, n, &dom_lo, &dom_hi);
+    nb::dict search;
+    search["max_delay"] = found.max_delay;
+    search["delay_fraction"] = found.delay_fraction;
+    search["integer_delay"] = found.integer_delay;
+    search["integer_holdout"] = found.integer_holdout;
+    search["x"] = found.delay_fraction > 0.0 ? nb::cast(drive) : nb::none();
     return nb::make_tuple(out, best == (size_t)-1 ? nb::none() : nb::cast(best),
-                          with_creep != 0);
+                          with_creep != 0,
+                          widened ? nb::object(nb::make_tuple(dom_lo, dom_hi)) : nb::none(),
+                          search);
 }
 
 /* fit_choose() over candidates given as dicts (kind, degree, t_degree,
@@ -1262,8 +1295,14 @@ NB_MODULE(_hyst, m)
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
           "A firmware header's opening (the model) or close, as `hyst header` writes them.");
     m.def("select", &select_candidates, "x"_a, "y"_a, "kinds"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
-          "delay_first"_a, "max_delay"_a, "t_degree"_a, "creep_tau"_a,
-          "hyst fit's hold-out choice (fit_select()): (candidates, index chosen, with creep).");
+          "delay"_a, "t_degree"_a, "creep_tau"_a,
+          "hyst fit's automatic choice (fit_search(); delay < 0: chosen, scaled to the drive and "
+          "to a fraction of a sample): (candidates, index chosen, with creep, the chosen one's "
+          "domain (lo, hi) when widened, else None, and the search: max_delay, delay_fraction, "
+          "integer_delay, integer_holdout, x: the drive interpolated by the fraction, or None).");
+    m.def("score", &score_candidate, "x"_a, "y"_a, "kind"_a, "degree"_a, "t_degree"_a, "method"_a,
+          "lo"_a, "hi"_a, "skip"_a, "delay"_a, "creep_tau"_a,
+          "One candidate scored as hyst fit scores it (fit_score()): its dict.");
     m.def("choose", &choose, "candidates"_a, "creep_tau"_a = -1.0,
           "hyst fit's rule (fit_choose()) over scored candidates: (index or None, with creep).");
     m.attr("FIT_POLY") = static_cast<int>(FIT_POLY);
@@ -1271,7 +1310,6 @@ NB_MODULE(_hyst, m)
     m.attr("FIT_MAX_DELAY") = static_cast<unsigned long>(FIT_MAX_DELAY);
     m.attr("FIT_PARSIMONY") = FIT_PARSIMONY;
     m.attr("FIT_CREEP_PARAMETERS") = static_cast<unsigned>(FIT_CREEP_PARAMETERS);
-    m.attr("FIT_WIDEN") = FIT_WIDEN;
     m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a = -1);
 }

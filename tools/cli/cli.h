@@ -165,7 +165,27 @@ int cli_header_model(char *buf, size_t size, size_t *len, const char *name, cons
  * text: 0, or 1 after a message (the library's refusal, or too long). */
 size_t cli_header_table_size(const cli_model_t *m, size_t rows, size_t intervals);
 int cli_header_table(const char *cmd, const char *model, char *buf, size_t size, size_t *len,
-                     const char *name, const cli_model_t *m, size_t rows, size_t intervals);
+                     const char *name, const cli_model_t *m, size_t rows, size_t intervals,
+                     int sealed);
+/* With --sealed (kind poly): the compensator's curve sealed with its table,
+ * 'NAME_comp_sealed', of one real type (the other NULL): 1 when it did not fit. */
+int cli_header_sealed_inverse(char *buf, size_t size, size_t *len, const char *name,
+                              const hyst_f32_sealed_inverse_t *s32,
+                              const hyst_f64_sealed_inverse_t *s64);
+
+/* v as a float build reads the header's literal of it: HYST_REAL_C(lit) is
+ * lit##f, converted directly to float (header_table.c). */
+double cli_as_float_literal(double v);
+/* The f0 of a poly model as a build reads the header's hyst_poly_t: a
+ * float build (f32) each literal as a float, a double build exactly. */
+void cli_model_poly_as_read(const cli_model_t *m, int f32, hyst_poly_t *p);
+/* header --sealed (header_sealed.c): the model's prepared curve in float
+ * and in double (and, with q31, the q31 model on codes code_lo..code_hi),
+ * checked and sealed for hyst_*_init_sealed(); appended like the model:
+ * 0, or 1 after a message (kind everett, the library's refusal, too long). */
+int cli_header_sealed(const char *cmd, const char *model, char *buf, size_t size, size_t *len,
+                      const char *name, const cli_model_t *m, int q31, unsigned long code_lo,
+                      unsigned long code_hi);
 
 /* The library's curve of an everett model (hyst_f64_curve_from_everett(),
  * which checks that E is monotone on the triangle): 0, or 1 after a message

@@ -43,7 +43,9 @@ static const char help[] =
     "                 f0 of degree 1..9 and each E of degree 1..4 in each t-degree\n"
     "                 0..N-1, at each delay (0..8, or up to 1/64 of the drive's\n"
     "                 period, and a fraction of a sample), is fitted on the first two\n"
-    "                 thirds of the record and the model predicts the last third;\n"
+    "                 thirds of the record and the model predicts the last third,\n"
+    "                 then (thirds of 100 samples or more) fitted on the first and\n"
+    "                 last thirds and predicts the middle one (the RMS of both);\n"
     "                 of the candidates within 1 % of the lowest RMS prediction\n"
     "                 error, the one with the fewest parameters wins (every\n"
     "                 candidate is printed as a '# candidate' line)\n"
@@ -132,6 +134,7 @@ typedef struct fit_opts {
     int with_creep;       /* the model fitted has a creep term, of time constant creep.tau */
     fit_creep_t creep;    /* its hold-out figures (training fit) */
     double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
+    double last_third;    /* the same on the last third alone (what PI-10 is compared on) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
     size_t holdout_n, beyond; /* hold-out inputs, those outside the part fitted */
     double holdout_span;  /* the hold-out inputs' range over the record's */
@@ -319,7 +322,7 @@ static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflec
 
 /* ---- the automatic choice (fit_select.c) ---- */
 
-#define MAX_CANDIDATES ((HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES) * (FIT_MAX_DELAY + 1u))
+#define MAX_CANDIDATES FIT_SEARCH_CANDIDATES
 static fit_candidate_t candidates[MAX_CANDIDATES];
 static size_t n_candidates, best_candidate;
 
@@ -341,82 +344,25 @@ static const char everett_singular[] =
 static void count_beyond(fit_opts_t *o, const cli_table_t *t);
 static void rank_others(fit_opts_t *o, const cli_table_t *t);
 
-/* The sub-sample delay: the chosen model (kind, degree, domain, creep
- * option) scored again with the drive a fraction of a sample later, at the
- * chosen delay and one below; the best, if it lowers the hold-out error by
- * more than FIT_FRACTION_GAIN, replaces the choice (o->delay_fraction, the
- * candidate's delay) and the table's drive is interpolated in place, as the
- * model file's delay makes sim do. 0, or 1 when out of memory. */
-static int choose_fraction(fit_opts_t *o, cli_table_t *t)
-{
-    static fit_candidate_t tried[2u * (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES)];
-    const fit_candidate_t *b = &candidates[best_candidate];
-    const double whole_rms = fit_option_rms(b, o->with_creep);
-    double lowest = whole_rms * (1.0 - FIT_FRACTION_GAIN), f, best_f = 0.0;
-    double *xf = (double *)malloc((t->n > 0u ? t->n : 1u) * sizeof(double));
-    hyst_ident_config_t base = o->cfg;
-    fit_candidate_t keep;
-    const unsigned params = fit_option_parameters(b, o->with_creep);
-    size_t n_tried, best, k;
-    unsigned i;
-    int wc, keep_wc = 0;
-    o->integer_holdout = whole_rms;
-    o->integer_delay = b->delay;
-    o->delay_fraction = 0.0;
-    if (xf == NULL) {
-        return 1;
-    }
-    memset(&keep, 0, sizeof keep);
-    base.delay = b->delay > 0u ? b->delay - 1u : 0u; /* D - 1 + f and D + f */
-    for (i = 1u; i < FIT_FRACTIONS && isfinite(whole_rms); ++i) {
-        f = (double)i / (double)FIT_FRACTIONS;
-        fit_delay_fraction(t->col[0], t->n, f, xf);
-        n_tried = fit_select(&base, candidate_kinds(o), 0u,
-                             o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, o->creep_tau, xf,
-                             t->col[1], t->n, b->delay, tried, sizeof tried / sizeof tried[0],
-                             &best, &wc);
-        /* the lowest error of no more parameters than the whole-delay choice:
-         * the fraction is not a way to more terms */
-        for (k = 0u; k < n_tried && best != (size_t)-1; ++k) {
-            for (wc = 0; wc <= 1; ++wc) {
-                const double e = fit_option_rms(&tried[k], wc);
-                if (isfinite(e) && e < lowest && fit_option_parameters(&tried[k], wc) <= params) {
-                    lowest = e;
-                    keep = tried[k];
-                    keep_wc = wc;
-                    best_f = f;
-                }
-            }
-        }
-    }
-    if (best_f > 0.0) { /* the choice at that fraction replaces the whole-delay one */
-        candidates[best_candidate] = keep;
-        o->with_creep = keep_wc;
-        o->delay_fraction = best_f;
-        fit_delay_fraction(t->col[0], t->n, best_f, t->col[0]);
-    }
-    free(xf);
-    return 0;
-}
-
 /* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
 static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
 {
-    size_t max_delay = o->cfg.delay;
-    if (!o->have_delay) { /* delays scaled to the drive's period */
-        o->max_delay = fit_max_delay(t->col[0], o->cfg.skip, t->n);
-        max_delay = o->max_delay;
-        if (max_delay > FIT_MAX_DELAY) { /* the cheap model's best delay, then around it */
-            o->cheap_delay = fit_cheap_delay(&o->cfg, t->col[0], t->col[1], t->n, max_delay);
-            o->cfg.delay = o->cheap_delay > FIT_DELAY_AROUND ? o->cheap_delay - FIT_DELAY_AROUND
-                                                             : 0u;
-            max_delay = o->cheap_delay + FIT_DELAY_AROUND;
-        }
+    fit_found_t found;
+    if (fit_search(&o->cfg, candidate_kinds(o), o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE,
+                   o->creep_tau, !o->have_delay, t->col[0], t->col[1], t->n, candidates,
+                   MAX_CANDIDATES, &found) != HYST_OK) {
+        return cli_fail("fit", "%s: out of memory", name);
     }
-    n_candidates = fit_select(&o->cfg, candidate_kinds(o), 0u,
-                              o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE, o->creep_tau,
-                              t->col[0], t->col[1], t->n, max_delay, candidates,
-                              MAX_CANDIDATES, &best_candidate, &o->with_creep);
+    n_candidates = found.count;
+    best_candidate = found.best;
+    o->with_creep = found.with_creep;
+    if (!o->have_delay) {
+        o->max_delay = found.max_delay;
+        o->cheap_delay = found.cheap_delay;
+        o->delay_fraction = found.delay_fraction;
+        o->integer_delay = found.integer_delay;
+        o->integer_holdout = found.integer_holdout;
+    }
     if (best_candidate == (size_t)-1) {
         return cli_fail("fit", "%s: no candidate degree gave %s that could predict the last "
                                "third of the record (give --degree)",
@@ -426,23 +372,23 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
                                                     : "an increasing f0 or an E the library "
                                                       "accepts");
     }
-    if (!o->have_delay && choose_fraction(o, t) != 0) {
-        return cli_fail("fit", "%s: out of memory", name);
-    }
     o->final_kind = candidates[best_candidate].kind;
     o->cfg.degree = candidates[best_candidate].degree;
     o->t_degree = candidates[best_candidate].t_degree;
     o->cfg.delay = candidates[best_candidate].delay;
-    if (candidates[best_candidate].widened) { /* the domain of the model fitted on it all */
+    { /* a widened one: the domain of the model fitted on it all */
         double lo, hi;
-        fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, FIT_WIDEN, &lo, &hi);
-        o->cfg.lo = lo;
-        o->cfg.hi = hi;
+        if (fit_chosen_domain(&candidates[best_candidate], t->col[0], o->cfg.skip, t->n, &lo,
+                              &hi)) {
+            o->cfg.lo = lo;
+            o->cfg.hi = hi;
+        }
     }
     o->creep = candidates[best_candidate].creep;
     count_beyond(o, t);
     rank_others(o, t);
     o->holdout = candidates[best_candidate].holdout_rms;
+    o->last_third = candidates[best_candidate].last_third_rms;
     return 0;
 }
 
@@ -457,10 +403,11 @@ static void choose_creep(fit_opts_t *o, const cli_table_t *t)
     if (o->final_kind == FIT_EVERETT) {
         fit_everett_result_t train;
         o->holdout = fit_everett_holdout(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n, &st,
-                                         &train, creep);
+                                         &train, creep, &o->last_third);
     } else {
         hyst_ident_result_t train;
-        o->holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train, creep);
+        o->holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train, creep,
+                                     &o->last_third);
     }
     o->with_creep = creep != NULL && o->creep.tau > 0 && isfinite(o->creep.holdout_rms) &&
                     (o->creep_tau > 0 ||
@@ -564,10 +511,10 @@ static double given_holdout(const fit_opts_t *o, const double *x, const cli_tabl
     cfg.delay = d;
     if (o->final_kind == FIT_EVERETT) {
         fit_everett_result_t train;
-        return fit_everett_holdout(&cfg, o->t_degree, x, t->col[1], t->n, &st, &train, NULL);
+        return fit_everett_holdout(&cfg, o->t_degree, x, t->col[1], t->n, &st, &train, NULL, NULL);
     } else {
         hyst_ident_result_t train;
-        return fit_tcm_holdout(&cfg, x, t->col[1], t->n, &st, &train, NULL);
+        return fit_tcm_holdout(&cfg, x, t->col[1], t->n, &st, &train, NULL, NULL);
     }
 }
 
@@ -631,11 +578,13 @@ static void print_candidates(const fit_opts_t *o)
     }
     (void)printf("# chosen by hold-out: degree %u, delay %lu (kind %s, %s%s%u parameters: the "
                  "fewest within 1 %% of the lowest RMS prediction error on the last third of "
-                 "the record, fitted on the first two thirds; kinds compared: %s)\n",
+                 "the record, fitted on the first two thirds, and on the middle third, fitted "
+                 "on the others, when each third holds %u samples or more; kinds compared: "
+                 "%s)\n",
                  o->cfg.degree, (unsigned long)o->cfg.delay,
                  o->final_kind == FIT_EVERETT ? "everett" : "poly", t_deg,
                  o->with_creep ? "creep, " : "",
-                 fit_option_parameters(&candidates[best_candidate], o->with_creep),
+                 fit_option_parameters(&candidates[best_candidate], o->with_creep), (unsigned)FIT_SPLIT_MIN,
                  candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
                  : candidate_kinds(o) == FIT_EVERETT           ? "everett"
                                                                : "poly");
@@ -671,10 +620,11 @@ static void print_candidates(const fit_opts_t *o)
                          fit_option_parameters(r, o->runner_up_creep),
                          fit_option_rms(r, o->runner_up_creep), chosen);
         }
-        if (isfinite(o->pi10)) {
-            (void)printf("# PI-10 on the same split (delay %lu, 11 parameters): hold-out rms "
-                         "%.6g; PI-10 / chosen %.3g\n",
-                         (unsigned long)o->cfg.delay, o->pi10, o->pi10 / chosen);
+        if (isfinite(o->pi10)) { /* PI's fit takes no outputs left out: the last third */
+            const double third = fit_option_last_third(&candidates[best_candidate], o->with_creep);
+            (void)printf("# PI-10 on the same split (the last third, delay %lu, 11 parameters): "
+                         "hold-out rms %.6g, the chosen %.6g; PI-10 / chosen %.3g\n",
+                         (unsigned long)o->cfg.delay, o->pi10, third, o->pi10 / third);
         }
     }
     for (i = 0u; i < n_candidates; ++i) {
@@ -874,7 +824,7 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
 static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, size_t size)
 {
     char tcm[96];
-    const double holdout = o->with_creep ? o->creep.holdout_rms : o->holdout;
+    const double holdout = o->with_creep ? o->creep.last_third_rms : o->last_third;
     if (o->final_kind == FIT_EVERETT) {
         (void)snprintf(tcm, sizeof tcm, "asymmetric (everett) TCM degree %u t-degree %u%s",
                        o->cfg.degree, o->t_degree, o->with_creep ? " with creep" : "");

@@ -5,9 +5,10 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static const char help[] =
-    "usage: hyst header --model MODEL [--dir DIR]\n"
+    "usage: hyst header --model MODEL [--dir DIR] [--sealed [--codes LO,HI]]\n"
     "                   [--compensator [--intervals N] [--rows R]] NAME\n"
     "\n"
     "Writes NAME.h (in DIR, default the current directory) declaring\n"
@@ -20,6 +21,14 @@ static const char help[] =
     "\n"
     "  --model MODEL  the model file (format hyst-model-text 1)\n"
     "  --dir DIR      directory of NAME.h\n"
+    "  --sealed       also the prepared curve (kind poly), made and checked here in\n"
+    "                 float and in double and sealed: 'NAME_sealed' of the build's\n"
+    "                 real type, for hyst_init_sealed(): firmware initialises without\n"
+    "                 building the curve (integer checks, no double arithmetic);\n"
+    "                 with --compensator also the compensator's curve sealed with\n"
+    "                 its table, 'NAME_comp_sealed', for hyst_init_inverse_sealed()\n"
+    "  --codes LO,HI  with --sealed: also the q31 model on codes LO..HI,\n"
+    "                 'NAME_q31_sealed', for hyst_q31_init_sealed()\n"
     "  --compensator  also the compensator's table, built here in float and in\n"
     "                 double and sealed: 'NAME_table', 'NAME_seal' of the build's\n"
     "                 real type (HYST_USE_DOUBLE), NAME_INTERVALS (and NAME_ROWS),\n"
@@ -32,6 +41,27 @@ static const char help[] =
     "                 3..4096 or 'default' (" CLI_STR(HYST_EVERETT_INV_ROWS) ")\n"
     "  --help         this text\n";
 
+/* --codes LO,HI: two codes, LO < HI <= HYST_CODE_MAX. */
+static int codes_of(const cli_args_t *a, const char *v, unsigned long *lo, unsigned long *hi)
+{
+    char part[32], q[CLI_QUOTE_SIZE];
+    const char *comma = strchr(v, ',');
+    const size_t n = comma != NULL ? (size_t)(comma - v) : 0u;
+    if (comma == NULL || n == 0u || n >= sizeof part) {
+        return !cli_fail(a->cmd, "option %s: %s is not two codes LO,HI", a->opt, cli_quote(q, v));
+    }
+    memcpy(part, v, n);
+    part[n] = '\0';
+    if (!cli_opt_ulong(a, part, 0ul, (unsigned long)HYST_CODE_MAX, lo) ||
+        !cli_opt_ulong(a, comma + 1, 0ul, (unsigned long)HYST_CODE_MAX, hi)) {
+        return 0;
+    }
+    if (*lo >= *hi) {
+        return !cli_fail(a->cmd, "option %s: LO must be below HI", a->opt);
+    }
+    return 1;
+}
+
 int cmd_header(int argc, char **argv)
 {
     cli_args_t a;
@@ -41,7 +71,8 @@ int cmd_header(int argc, char **argv)
     char q[CLI_QUOTE_SIZE], path[CLI_PATH_MAX], *text;
     size_t len = 0u, size = 8192u;
     unsigned long intervals = 0ul, rows = 0ul; /* 0: not given */
-    int kind, over, compensator = 0, failed;
+    unsigned long code_lo = 0ul, code_hi = 0ul;
+    int kind, over, compensator = 0, sealed = 0, codes = 0, failed;
     cli_args_init(&a, "header", argc, argv);
     while ((kind = cli_args_next(&a, &pos)) != CLI_END) {
         if (kind < 0) {
@@ -57,6 +88,14 @@ int cmd_header(int argc, char **argv)
             return 0;
         } else if (cli_is(&a, "--compensator")) {
             compensator = 1;
+        } else if (cli_is(&a, "--sealed")) {
+            sealed = 1;
+        } else if (cli_is(&a, "--codes")) {
+            const char *v = cli_value(&a);
+            if (v == NULL || !codes_of(&a, v, &code_lo, &code_hi)) {
+                return 1;
+            }
+            codes = 1;
         } else if (cli_is(&a, "--model") || cli_is(&a, "--dir") || cli_is(&a, "--intervals") ||
                    cli_is(&a, "--rows")) {
             const char *v = cli_value(&a);
@@ -81,6 +120,9 @@ int cmd_header(int argc, char **argv)
     if (name == NULL || !cli_c_identifier(name)) {
         return cli_fail(a.cmd, "NAME %s is not a C identifier",
                         name != NULL ? cli_quote(q, name) : "(missing)");
+    }
+    if (codes && !sealed) {
+        return cli_fail(a.cmd, "option --codes needs --sealed (the q31 model it sizes)");
     }
     if (!compensator && (intervals != 0ul || rows != 0ul)) {
         return cli_fail(a.cmd, "option %s needs --compensator (the table it sizes)",
@@ -127,7 +169,13 @@ int cmd_header(int argc, char **argv)
     over |= cli_header_open(text, size, &len, name, &m);
     if (over == 0 && compensator &&
         cli_header_table(a.cmd, cli_file_name(model), text, size, &len, name, &m, (size_t)rows,
-                         (size_t)intervals) != 0) {
+                         (size_t)intervals, sealed) != 0) {
+        free(text);
+        return 1;
+    }
+    if (over == 0 && sealed &&
+        cli_header_sealed(a.cmd, cli_file_name(model), text, size, &len, name, &m, codes,
+                          code_lo, code_hi) != 0) {
         free(text);
         return 1;
     }

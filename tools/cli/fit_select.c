@@ -32,6 +32,37 @@ void fit_input_range(const double *x, size_t from, size_t to, double widen, doub
     *hi = b + widen * (b - a);
 }
 
+void fit_widened_domain(double lo, double hi, double first, double *wide_lo, double *wide_hi)
+{
+    *wide_lo = first <= lo + 0.01 * (hi - lo) ? lo : lo - FIT_WIDEN * (hi - lo);
+    *wide_hi = hi + FIT_WIDEN * (hi - lo);
+}
+
+int fit_chosen_domain(const fit_candidate_t *c, const double *x, size_t skip, size_t n,
+                      double *lo, double *hi)
+{
+    double a, b;
+    if (!c->widened || n <= skip + c->delay) {
+        return 0;
+    }
+    fit_input_range(x, skip, n - c->delay, 0.0, &a, &b);
+    fit_widened_domain(a, b, x[skip], lo, hi);
+    return 1;
+}
+
+size_t fit_settled(const double *x, size_t from, size_t to)
+{
+    double lo, hi;
+    size_t k;
+    fit_input_range(x, from, to, 0.0, &lo, &hi);
+    for (k = from; k < to; ++k) {
+        if (x[k] <= lo + 0.01 * (hi - lo) || x[k] >= hi - 0.01 * (hi - lo)) {
+            return k;
+        }
+    }
+    return to;
+}
+
 size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double hi,
                      size_t *inner)
 {
@@ -86,7 +117,7 @@ size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const d
         double e;
         cfg.degree = 3u;
         cfg.delay = d;
-        e = fit_tcm_holdout(&cfg, x, y, n, &st, &fit, NULL);
+        e = fit_tcm_holdout(&cfg, x, y, n, &st, &fit, NULL, NULL);
         if (isfinite(e) && !(lowest <= e)) {
             lowest = e;
             best = d;
@@ -114,9 +145,15 @@ double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const dou
     return fit_model_run_creep(f0, curve, x, y, n, skip, delay, from, before_rms, max_abs, NULL);
 }
 
-double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
-                           const double *y, size_t n, size_t skip, size_t delay, size_t from,
-                           double *before_rms, double *max_abs, fit_creep_t *creep)
+/* The model run from rest at skip over x[skip .. n - delay) against
+ * y[k + delay]: the RMS error over [from, to) from score_from on (returned)
+ * and before `from` (*before_rms); creep (may be NULL) fitted to its
+ * residual before `from` and scored from it on (part 0), or fitted on every
+ * sample but [from, to) and scored there (part 1), from score_from on. */
+static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
+                        const double *y, size_t n, size_t skip, size_t delay, size_t from,
+                        size_t to, int part, size_t score_from, double *before_rms,
+                        double *max_abs, fit_creep_t *creep)
 {
     hyst_tcm_t S;
     const size_t cap = n > delay + skip ? (n - delay - skip) / 2u + 2u : 2u;
@@ -162,10 +199,12 @@ double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, con
         }
         if (ok) {
             const double e = ym - y[k + delay];
-            if (k >= from) {
-                ss += e * e;
-                ++used;
-            } else {
+            if (k >= from && k < to) {
+                if (k >= score_from) {
+                    ss += e * e;
+                    ++used;
+                }
+            } else if (k < from) {
                 ss_before += e * e;
                 ++before;
             }
@@ -175,7 +214,13 @@ double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, con
     free(mem);
     if (u != NULL) {
         const double x_rest = f0 != NULL ? (double)f0->lo : curve->lo.f64;
-        fit_creep_score(u, r, len, from > skip ? from - skip : 0u, x_rest, tau, creep);
+        const size_t at = from > skip ? from - skip : 0u;
+        if (part) {
+            fit_creep_score_part(u, r, len, at, to > skip ? to - skip : 0u,
+                                 score_from > skip ? score_from - skip : 0u, x_rest, tau, creep);
+        } else {
+            fit_creep_score(u, r, len, at, x_rest, tau, creep);
+        }
         free(u);
     }
     if (before_rms != NULL && before > 0u) {
@@ -187,62 +232,173 @@ double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, con
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
+double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
+                           const double *y, size_t n, size_t skip, size_t delay, size_t from,
+                           double *before_rms, double *max_abs, fit_creep_t *creep)
+{
+    return model_run(f0, curve, x, y, n, skip, delay, from, n, 0, from, before_rms, max_abs,
+                     creep);
+}
+
 /* Samples of the training part: the first two thirds of those the model sees. */
 static size_t train_count(size_t n, size_t skip, size_t delay)
 {
     return (2u * (n - skip - delay)) / 3u;
 }
 
-double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
-                       size_t n, hyst_status_t *status, hyst_ident_result_t *fit,
-                       fit_creep_t *creep)
+/* One split of the hold-out (FIT_SPLITS) of the samples the model sees:
+ * 0 fits the first two thirds and scores the last third; 1 and 2 score the
+ * middle and the first third, fitted on the rest with the outputs of that
+ * third left out (the fit takes its inputs in: the turning points are the
+ * record's), from `settle` on (fit_settled()). The model runs from rest at cfg->skip over the whole record
+ * each time; kind FIT_EVERETT with t_degree, its domain widened by FIT_WIDEN
+ * about the inputs fitted when `widened`; creep (may be NULL) as
+ * fit_model_run_creep(), fitted and scored on the same parts. */
+static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t_degree,
+                            int widened, const double *x, const double *y, size_t n, int split,
+                            size_t settle, hyst_status_t *status, hyst_ident_result_t *poly,
+                            fit_everett_result_t *ev, fit_creep_t *creep)
 {
-    hyst_ident_t work;
+    const size_t len = n > cfg->skip + cfg->delay ? n - cfg->skip - cfg->delay : 0u;
+    const size_t train = len > 0u ? train_count(n, cfg->skip, cfg->delay) : 0u;
+    const size_t from = cfg->skip + (split == 0 ? train : split == 2 ? 0u : len / 3u);
+    const size_t to = split == 0 ? n : cfg->skip + (split == 2 ? len / 3u : train);
+    const size_t count = split == 0 ? from + cfg->delay : n; /* the samples fitted end here */
+    hyst_ident_config_t part = *cfg;
+    double *masked = NULL;
+    const double *yf = y;
+    hyst_curve_t curve;
     hyst_poly_t f0;
-    size_t train;
     unsigned i;
-    if (n <= cfg->skip + cfg->delay) {
+    size_t k;
+    double before, e;
+    if (len == 0u || from >= to || (split != 0 && settle >= to)) {
         *status = HYST_ERR_ARG;
         return NAN;
     }
-    train = train_count(n, cfg->skip, cfg->delay);
-    /* the training part: samples skip .. skip + train of x, their y delay later */
-    *status = hyst_ident_fit(cfg, x, y, cfg->skip + train + cfg->delay, &work, fit);
-    if (*status != HYST_OK || !fit->increasing) {
-        return NAN;
+    if (split != 0) { /* the held-out third's outputs left out of the fit */
+        if ((masked = (double *)malloc(n * sizeof(double))) == NULL) {
+            *status = HYST_ERR_NOSPACE;
+            return NAN;
+        }
+        memcpy(masked, y, n * sizeof(double));
+        for (k = from; k < to; ++k) {
+            masked[k + cfg->delay] = NAN;
+        }
+        yf = masked;
     }
-    memset(&f0, 0, sizeof f0);
-    f0.degree = fit->degree;
-    f0.lo = (double)fit->lo;
-    f0.hi = (double)fit->hi;
-    for (i = 0u; i <= fit->degree; ++i) {
-        f0.coeffs[i] = (double)fit->coeffs[i];
+    if (kind == FIT_EVERETT) {
+        memset(ev, 0, sizeof *ev);
+        if (widened) { /* about the inputs whose outputs are fitted */
+            double lo, hi, lo2, hi2;
+            if (split == 0) {
+                fit_input_range(x, cfg->skip, from, 0.0, &lo, &hi);
+            } else {
+                fit_input_range(x, to < n - cfg->delay ? to : from, n - cfg->delay, 0.0, &lo, &hi);
+                if (from > cfg->skip) {
+                    fit_input_range(x, cfg->skip, from, 0.0, &lo2, &hi2);
+                    lo = lo2 < lo ? lo2 : lo;
+                    hi = hi2 > hi ? hi2 : hi;
+                }
+            }
+            fit_widened_domain(lo, hi, x[cfg->skip], &lo, &hi);
+            part.lo = lo;
+            part.hi = hi;
+        }
+        *status = fit_everett_record(&part, t_degree, x, yf, count, ev);
+        if (*status == HYST_OK) {
+            *status = ev->curve_status;
+        }
+        if (*status != HYST_OK || hyst_f64_curve_from_everett(&curve, &ev->e) != HYST_OK) {
+            free(masked);
+            return NAN;
+        }
+    } else {
+        hyst_ident_t work;
+        *status = hyst_ident_fit(&part, x, yf, count, &work, poly);
+        if (*status != HYST_OK || !poly->increasing) {
+            free(masked);
+            return NAN;
+        }
+        memset(&f0, 0, sizeof f0);
+        f0.degree = poly->degree;
+        f0.lo = (double)poly->lo;
+        f0.hi = (double)poly->hi;
+        for (i = 0u; i <= poly->degree; ++i) {
+            f0.coeffs[i] = (double)poly->coeffs[i];
+        }
     }
-    return fit_model_run_creep(&f0, NULL, x, y, n, cfg->skip, cfg->delay, cfg->skip + train,
-                               NULL, NULL, creep);
+    free(masked);
+    e = model_run(kind == FIT_EVERETT ? NULL : &f0, kind == FIT_EVERETT ? &curve : NULL, x, y, n,
+                  cfg->skip, cfg->delay, from, to, split != 0,
+                  split != 0 && settle > from ? settle : from, &before, NULL, creep);
+    return e;
+}
+
+/* The hold-out of every split (FIT_SPLITS): their mean square's root; the
+ * training fit's results and the creep's time constant those of split 0,
+ * the creep's hold-out over every split at that time constant. */
+static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degree, int widened,
+                      const double *x, const double *y, size_t n, hyst_status_t *status,
+                      hyst_ident_result_t *poly, fit_everett_result_t *ev, fit_creep_t *creep,
+                      double *last_third)
+{
+    hyst_ident_result_t poly_other;
+    fit_everett_result_t ev_other;
+    fit_creep_t creep_other;
+    hyst_status_t st;
+    double e, ss, ss_creep = 0.0;
+    int split, splits = 1;
+    const size_t settle =
+        n > cfg->skip + cfg->delay ? fit_settled(x, cfg->skip, n - cfg->delay) : cfg->skip;
+    e = holdout_split(cfg, kind, t_degree, widened, x, y, n, 0, settle, status, poly, ev, creep);
+    ss = e * e;
+    if (last_third != NULL) {
+        *last_third = e;
+    }
+    if (creep != NULL) {
+        ss_creep = creep->holdout_rms * creep->holdout_rms;
+        creep->last_third_rms = creep->holdout_rms;
+    }
+    for (split = 1; split < FIT_SPLITS && isfinite(ss); ++split) {
+        const size_t len = n - cfg->skip - cfg->delay;
+        if (len / 3u < FIT_SPLIT_MIN ||
+            settle >= cfg->skip + (split == 2 ? len / 3u : train_count(n, cfg->skip, cfg->delay))) {
+            continue; /* too short, or it ends before the model's state is the record's */
+        }
+        creep_other.tau = creep != NULL ? creep->tau : 0.0;
+        e = holdout_split(cfg, kind, t_degree, widened, x, y, n, split, settle, &st, &poly_other,
+                          &ev_other, creep != NULL && creep->tau > 0 ? &creep_other : NULL);
+        ss += e * e;
+        ++splits;
+        if (creep != NULL && creep->tau > 0) {
+            ss_creep += creep_other.holdout_rms * creep_other.holdout_rms;
+        }
+        if (*status == HYST_OK && !isfinite(e)) {
+            *status = st; /* the reason this split could not be scored */
+        }
+    }
+    if (creep != NULL) {
+        creep->holdout_rms = sqrt(ss_creep / (double)splits);
+    }
+    return sqrt(ss / (double)splits);
+}
+
+double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
+                       size_t n, hyst_status_t *status, hyst_ident_result_t *fit,
+                       fit_creep_t *creep, double *last_third)
+{
+    fit_everett_result_t unused;
+    return holdout(cfg, FIT_POLY, 0u, 0, x, y, n, status, fit, &unused, creep, last_third);
 }
 
 double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
                            const double *y, size_t n, hyst_status_t *status,
-                           fit_everett_result_t *fit, fit_creep_t *creep)
+                           fit_everett_result_t *fit, fit_creep_t *creep, double *last_third)
 {
-    hyst_curve_t curve;
-    size_t train;
-    memset(fit, 0, sizeof *fit);
-    if (n <= cfg->skip + cfg->delay) {
-        *status = HYST_ERR_ARG;
-        return NAN;
-    }
-    train = train_count(n, cfg->skip, cfg->delay);
-    *status = fit_everett_record(cfg, t_degree, x, y, cfg->skip + train + cfg->delay, fit);
-    if (*status == HYST_OK) {
-        *status = fit->curve_status;
-    }
-    if (*status != HYST_OK || hyst_f64_curve_from_everett(&curve, &fit->e) != HYST_OK) {
-        return NAN;
-    }
-    return fit_model_run_creep(NULL, &curve, x, y, n, cfg->skip, cfg->delay, cfg->skip + train,
-                               NULL, NULL, creep);
+    hyst_ident_result_t unused;
+    return holdout(cfg, FIT_EVERETT, t_degree, 0, x, y, n, status, &unused, fit, creep,
+                   last_third);
 }
 
 double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const double *y,
@@ -290,17 +446,13 @@ void fit_score(const hyst_ident_config_t *base, const double *x, const double *y
     c->creep.holdout_rms = NAN;
     if (c->kind == FIT_EVERETT) {
         fit_everett_result_t ev;
-        if (c->widened && n > base->skip + c->delay) {
-            double lo, hi;
-            fit_input_range(x, base->skip, base->skip + train_count(n, base->skip, c->delay),
-                            FIT_WIDEN, &lo, &hi);
-            cfg.lo = lo;
-            cfg.hi = hi;
-        }
-        c->holdout_rms = fit_everett_holdout(&cfg, c->t_degree, x, y, n, &c->status, &ev, creep);
+        hyst_ident_result_t unused;
+        c->holdout_rms = holdout(&cfg, FIT_EVERETT, c->t_degree, c->widened, x, y, n, &c->status,
+                                 &unused, &ev, creep, &c->last_third_rms);
         c->fit_rms = ev.rms;
     } else {
-        c->holdout_rms = fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit, creep);
+        c->holdout_rms =
+            fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit, creep, &c->last_third_rms);
         c->fit_rms = (double)c->fit.rms;
     }
     if (!isfinite(c->holdout_rms)) {
@@ -323,6 +475,11 @@ void fit_delay_fraction(const double *x, size_t n, double f, double *xf)
 double fit_option_rms(const fit_candidate_t *c, int with_creep)
 {
     return with_creep ? (c->creep.tau > 0 ? c->creep.holdout_rms : NAN) : c->holdout_rms;
+}
+
+double fit_option_last_third(const fit_candidate_t *c, int with_creep)
+{
+    return with_creep ? (c->creep.tau > 0 ? c->creep.last_third_rms : NAN) : c->last_third_rms;
 }
 
 unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
@@ -435,4 +592,98 @@ void fit_choose(const fit_candidate_t *cand, size_t count, double creep_tau, siz
             }
         }
     }
+}
+
+/* The sub-sample delay of fit_search(): the choice's model (kind, degree,
+ * domain, creep option) scored again with the drive a fraction of a sample
+ * later, at the chosen delay and one below; the best of no more parameters,
+ * if it lowers the hold-out error by more than FIT_FRACTION_GAIN, replaces
+ * cand[out->best] and x is interpolated in place. 0, or 1 when out of memory. */
+static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t_degree,
+                           double creep_tau, double *x, const double *y, size_t n,
+                           fit_candidate_t *cand, fit_found_t *out)
+{
+    const size_t n_tried_max = 2u * FIT_CANDIDATES_PER_DELAY;
+    const fit_candidate_t *b = &cand[out->best];
+    const double whole_rms = fit_option_rms(b, out->with_creep);
+    const unsigned params = fit_option_parameters(b, out->with_creep);
+    double lowest = whole_rms * (1.0 - FIT_FRACTION_GAIN), f, best_f = 0.0;
+    double *xf = (double *)malloc((n > 0u ? n : 1u) * sizeof(double));
+    fit_candidate_t *tried = (fit_candidate_t *)malloc(n_tried_max * sizeof(fit_candidate_t));
+    hyst_ident_config_t base = *cfg;
+    fit_candidate_t keep;
+    size_t n_tried, best, k;
+    unsigned i;
+    int wc, keep_wc = 0;
+    out->integer_holdout = whole_rms;
+    out->integer_delay = b->delay;
+    out->delay_fraction = 0.0;
+    if (xf == NULL || tried == NULL) {
+        free(xf);
+        free(tried);
+        return 1;
+    }
+    memset(&keep, 0, sizeof keep);
+    base.delay = b->delay > 0u ? b->delay - 1u : 0u; /* D - 1 + f and D + f */
+    for (i = 1u; i < FIT_FRACTIONS && isfinite(whole_rms); ++i) {
+        f = (double)i / (double)FIT_FRACTIONS;
+        fit_delay_fraction(x, n, f, xf);
+        n_tried = fit_select(&base, kinds, 0u, t_degree, creep_tau, xf, y, n, b->delay, tried,
+                             n_tried_max, &best, &wc);
+        /* the lowest error of no more parameters than the whole-delay choice:
+         * the fraction is not a way to more terms */
+        for (k = 0u; k < n_tried && best != (size_t)-1; ++k) {
+            for (wc = 0; wc <= 1; ++wc) {
+                const double e = fit_option_rms(&tried[k], wc);
+                if (isfinite(e) && e < lowest && fit_option_parameters(&tried[k], wc) <= params) {
+                    lowest = e;
+                    keep = tried[k];
+                    keep_wc = wc;
+                    best_f = f;
+                }
+            }
+        }
+    }
+    if (best_f > 0.0) { /* the choice at that fraction replaces the whole-delay one */
+        cand[out->best] = keep;
+        out->with_creep = keep_wc;
+        out->delay_fraction = best_f;
+        fit_delay_fraction(x, n, best_f, x);
+    }
+    free(xf);
+    free(tried);
+    return 0;
+}
+
+hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_degree,
+                         double creep_tau, int choose_delay, double *x, const double *y,
+                         size_t n, fit_candidate_t *cand, size_t max_cand, fit_found_t *out)
+{
+    hyst_ident_config_t cfg = *base;
+    size_t max_delay = base->delay;
+    memset(out, 0, sizeof *out);
+    out->integer_holdout = NAN;
+    out->max_delay = base->delay;
+    if (choose_delay) { /* delays scaled to the drive's period */
+        cfg.delay = 0u;
+        out->max_delay = fit_max_delay(x, cfg.skip, n);
+        max_delay = out->max_delay;
+        if (max_delay > FIT_MAX_DELAY) { /* the cheap model's best delay, then around it */
+            out->cheap_delay = fit_cheap_delay(&cfg, x, y, n, max_delay);
+            cfg.delay = out->cheap_delay > FIT_DELAY_AROUND ? out->cheap_delay - FIT_DELAY_AROUND
+                                                             : 0u;
+            max_delay = out->cheap_delay + FIT_DELAY_AROUND;
+        }
+    }
+    out->count = fit_select(&cfg, kinds, 0u, t_degree, creep_tau, x, y, n, max_delay, cand,
+                            max_cand, &out->best, &out->with_creep);
+    if (out->best != (size_t)-1) {
+        out->integer_delay = cand[out->best].delay;
+        out->integer_holdout = fit_option_rms(&cand[out->best], out->with_creep);
+    }
+    if (choose_delay && out->best != (size_t)-1 &&
+        search_fraction(&cfg, kinds, t_degree, creep_tau, x, y, n, cand, out) != 0) {
+        return HYST_ERR_NOSPACE;
+    }
+    return HYST_OK;
 }

@@ -25,6 +25,20 @@
  * each fraction), whose best is biased low by the hold-out's noise. */
 #define FIT_FRACTION_GAIN 0.05
 
+/* Hold-out splits every candidate is scored on: the last third predicted by
+ * the model fitted on the first two thirds, then the middle third by the
+ * model fitted on the first and the last (the fit takes the middle's inputs
+ * in without their outputs, so its turning points are the record's), the
+ * model run from rest at the start each time; the score is the root of their
+ * mean square. One split alone lets a record's last third decide (its drift,
+ * or inputs beyond the part fitted: a delay that suits the extrapolation is
+ * chosen, wrong at other rates). A third split, the first third, is
+ * implemented but not used: a creep term's weight is not determined without
+ * the lag's rise from rest that it holds out. */
+#define FIT_SPLITS 2
+/* Fewer samples than this in a third: the last third alone is scored. */
+#define FIT_SPLIT_MIN 100u
+
 /* Delays around the cheap search's best at which every candidate is fitted. */
 #define FIT_DELAY_AROUND 4u
 
@@ -41,6 +55,17 @@
  * it was identified on (monotone on the whole wider triangle, as the library
  * requires), so later inputs outside that range are predicted, not clamped. */
 #define FIT_WIDEN 1.0
+
+/* The domain of a widened candidate from the range [lo, hi] of the inputs
+ * fitted: FIT_WIDEN of it on each side, but lo kept when the record's first
+ * input `first` is within 1 % of the range of it (the model starts at rest
+ * at its domain's lo: a record that starts at its lowest input starts
+ * there, not lower). */
+void fit_widened_domain(double lo, double hi, double first, double *wide_lo, double *wide_hi);
+
+/* Kinds of model a candidate may be (see below); FIT_CANDIDATES_PER_DELAY:
+ * the most fit_select() adds at one delay (everett ones also widened). */
+#define FIT_CANDIDATES_PER_DELAY (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES)
 
 /* Kinds of model a candidate may be (a mask for fit_select()): the
  * symmetric TCM's polynomial f0 and the asymmetric kind's E. */
@@ -60,6 +85,7 @@ typedef struct fit_creep {
     double tau, weight, offset;
     double holdout_rms, fit_rms;
     double max_abs; /* the largest error of the model with it, over every sample */
+    double last_third_rms; /* its hold-out on the last third alone (split 0) */
 } fit_creep_t;
 
 /* The creep on a model's run: u[k] its inputs, r[k] the measurement minus
@@ -70,6 +96,17 @@ typedef struct fit_creep {
 void fit_creep_score(const double *u, const double *r, size_t len, size_t train, double x_rest,
                      double tau, fit_creep_t *best);
 
+/* fit_creep_score() on a part held out inside the run: fitted on [0, len)
+ * but [from, to) (the lags fed through it), scored on [from, to) from
+ * score_from on. */
+void fit_creep_score_part(const double *u, const double *r, size_t len, size_t from, size_t to,
+                          size_t score_from, double x_rest, double tau, fit_creep_t *best);
+
+/* The first sample of x[from .. to) within 1 % of the range of an end of
+ * that range (to if none): where a model run from rest has the record's own
+ * state whatever came before (an extreme wipes the rest out). */
+size_t fit_settled(const double *x, size_t from, size_t to);
+
 typedef struct fit_candidate {
     int kind;                 /* FIT_POLY or FIT_EVERETT */
     unsigned degree;
@@ -79,7 +116,8 @@ typedef struct fit_candidate {
     hyst_status_t status;     /* of the training fit (everett: or of its curve) */
     hyst_ident_result_t fit;  /* poly: on the first two thirds */
     double fit_rms;           /* residual of the training fit (poly: fit.rms) */
-    double holdout_rms;       /* model's RMS error on the last third; NaN: not scored */
+    double holdout_rms;       /* model's RMS error over the FIT_SPLITS; NaN: not scored */
+    double last_third_rms;    /* on the last third alone (split 0) */
     fit_creep_t creep;        /* the model with a creep term (creep.tau 0: none) */
 } fit_candidate_t;
 
@@ -133,13 +171,15 @@ double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, con
                            const double *y, size_t n, size_t skip, size_t delay, size_t from,
                            double *before_rms, double *max_abs, fit_creep_t *creep);
 
-/* The TCM of cfg (degree, delay, skip...) fitted on the first two thirds of
- * the record and run over all of it from rest: its RMS error on the last
- * third (NaN if the fit failed, *status, or f0 is not increasing); creep (may
- * be NULL): as fit_model_run_creep(). */
+/* The TCM of cfg (degree, delay, skip...) scored on the FIT_SPLITS (fitted
+ * on the rest of the record, run over all of it from rest): the root of
+ * the mean square of its RMS errors (NaN if a fit failed, *status, or f0 is
+ * not increasing), *fit the training fit of the last third's split, and
+ * *last_third (may be NULL) its error on that third alone; creep (may be
+ * NULL): as fit_model_run_creep(), on the same splits. */
 double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
                        size_t n, hyst_status_t *status, hyst_ident_result_t *fit,
-                       fit_creep_t *creep);
+                       fit_creep_t *creep, double *last_third);
 
 /* E of degree cfg->degree, its terms w^i t^j with j <= t_degree, fitted to x[k] with y[k + delay], skip <= k <
  * n - delay (the model from rest at sample skip), on [cfg->lo, cfg->hi]
@@ -154,7 +194,7 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
  * library refused E (*status says which). */
 double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
                            const double *y, size_t n, hyst_status_t *status,
-                           fit_everett_result_t *fit, fit_creep_t *creep);
+                           fit_everett_result_t *fit, fit_creep_t *creep, double *last_third);
 
 /* The same for the PI model of cfg (operators, skip, delay; the thresholds
  * uniform over the training part's inputs unless given): r, w its N
@@ -180,6 +220,14 @@ void fit_delay_fraction(const double *x, size_t n, double f, double *xf);
  * creep term's weight and time constant are FIT_CREEP_PARAMETERS more). */
 double fit_option_rms(const fit_candidate_t *c, int with_creep);
 unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep);
+/* The option's hold-out on the last third alone (what PI-10 is compared on). */
+double fit_option_last_third(const fit_candidate_t *c, int with_creep);
+
+/* The domain candidate c is fitted on over the whole record x[skip .. n)
+ * once chosen, into *lo, *hi when it is a widened one (returns 1; 0 and
+ * nothing written otherwise): the inputs' range, fit_widened_domain(). */
+int fit_chosen_domain(const fit_candidate_t *c, const double *x, size_t skip, size_t n,
+                      double *lo, double *hi);
 
 /* Fits each kind of the mask `kinds` (poly degree 1..HYST_MAX_DEGREE,
  * everett degree 1..HYST_EVERETT_MAX_DEGREE with each t-degree 0..degree - 1;
@@ -202,5 +250,35 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
  * compares the candidates alone, > 0 with their creep terms only, 0 both. */
 void fit_choose(const fit_candidate_t *cand, size_t count, double creep_tau, size_t *best,
                 int *with_creep);
+
+/* The automatic choice as `hyst fit` without --degree, Python's
+ * fit(degree=None) and Octave's hyst_fit make it (fit_search()). */
+typedef struct fit_found {
+    size_t max_delay;       /* choose_delay: delays searched 0..max_delay (fit_max_delay()) */
+    size_t cheap_delay;     /* max_delay > FIT_MAX_DELAY: f0 of degree 3's best delay */
+    size_t count;           /* candidates scored into cand[] */
+    size_t best;            /* the choice ((size_t)-1: none) */
+    int with_creep;         /* chosen with its creep term */
+    double delay_fraction;  /* the sub-sample delay's fraction (0: none) */
+    size_t integer_delay;   /* the choice's delay before the fraction */
+    double integer_holdout; /* and its hold-out error there */
+} fit_found_t;
+
+/* Candidates fit_search() may score: every one of a delay, at the
+ * FIT_MAX_DELAY + 1 = 2 FIT_DELAY_AROUND + 1 delays searched alike. */
+#define FIT_SEARCH_CANDIDATES (FIT_CANDIDATES_PER_DELAY * (FIT_MAX_DELAY + 1u))
+
+/* fit_select() of the kinds, each t-degree or t_degree, on cand[0..max_cand),
+ * at base->delay only, or with choose_delay at delays scaled to the drive
+ * (0..fit_max_delay(); beyond FIT_MAX_DELAY, f0 of degree 3 at each, then
+ * every candidate at FIT_DELAY_AROUND each side of its best), then at a
+ * fraction of a sample (1/FIT_FRACTIONS steps, at the chosen delay and one
+ * below; kept when more than FIT_FRACTION_GAIN better with no more
+ * parameters, replacing the choice: x is then the drive interpolated, in
+ * place, as the model file's delay makes sim interpolate it). HYST_OK, or
+ * HYST_ERR_NOSPACE (out of memory). */
+hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_degree,
+                         double creep_tau, int choose_delay, double *x, const double *y,
+                         size_t n, fit_candidate_t *cand, size_t max_cand, fit_found_t *out);
 
 #endif

@@ -11,13 +11,23 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* v as a float build reads the header's literal of it: HYST_REAL_C(lit) is
- * lit##f, converted directly to float. */
-static double as_float_literal(double v)
+double cli_as_float_literal(double v)
 {
     char lit[40];
     cli_c_literal(lit, sizeof lit, v);
     return (double)strtof(lit, NULL);
+}
+
+void cli_model_poly_as_read(const cli_model_t *m, int f32, hyst_poly_t *p)
+{
+    size_t i;
+    memset(p, 0, sizeof *p);
+    p->degree = (unsigned)(m->ncoef - 1u);
+    p->lo = f32 ? cli_as_float_literal(m->lo) : m->lo;
+    p->hi = f32 ? cli_as_float_literal(m->hi) : m->hi;
+    for (i = 0u; i < m->ncoef; ++i) {
+        p->coeffs[i] = f32 ? cli_as_float_literal(m->coeffs[i]) : m->coeffs[i];
+    }
 }
 
 /* A table of one variant (f32 or f64): its numbers as doubles, its seal
@@ -27,6 +37,8 @@ typedef struct {
     size_t n;
     hyst_table_seal_t seal;
     size_t exact;
+    hyst_f32_sealed_inverse_t s32; /* kind poly: the compensator's curve sealed with its table */
+    hyst_f64_sealed_inverse_t s64;
 } built_t;
 
 /* The model's curve in the variant, from the numbers the header gives a
@@ -52,12 +64,12 @@ static hyst_status_t build(const cli_model_t *m, int f32, size_t rows, size_t in
         unsigned a, b;
         cli_model_to_everett(m, &e);
         if (f32) {
-            e.lo = as_float_literal(e.lo);
-            e.hi = as_float_literal(e.hi);
-            e.y_lo = as_float_literal(e.y_lo);
+            e.lo = cli_as_float_literal(e.lo);
+            e.hi = cli_as_float_literal(e.hi);
+            e.y_lo = cli_as_float_literal(e.y_lo);
             for (a = 0u; a < HYST_EVERETT_MAX_DEGREE; ++a) {
                 for (b = 0u; b < HYST_EVERETT_MAX_DEGREE; ++b) {
-                    e.e[a][b] = as_float_literal(e.e[a][b]);
+                    e.e[a][b] = cli_as_float_literal(e.e[a][b]);
                 }
             }
             st = hyst_f32_curve_from_everett(&fwd, &e);
@@ -72,13 +84,7 @@ static hyst_status_t build(const cli_model_t *m, int f32, size_t rows, size_t in
         }
     } else {
         hyst_poly_t p;
-        memset(&p, 0, sizeof p);
-        p.degree = (unsigned)(m->ncoef - 1u);
-        p.lo = f32 ? as_float_literal(m->lo) : m->lo;
-        p.hi = f32 ? as_float_literal(m->hi) : m->hi;
-        for (i = 0u; i < m->ncoef; ++i) {
-            p.coeffs[i] = f32 ? as_float_literal(m->coeffs[i]) : m->coeffs[i];
-        }
+        cli_model_poly_as_read(m, f32, &p);
         st = f32 ? hyst_f32_curve_from_poly(&fwd, &p) : hyst_f64_curve_from_poly(&fwd, &p);
         if (st == HYST_OK) {
             st = f32 ? hyst_f32_curve_inverse_table(&inv, &fwd, t32, intervals)
@@ -87,6 +93,10 @@ static hyst_status_t build(const cli_model_t *m, int f32, size_t rows, size_t in
     }
     if (st == HYST_OK) {
         st = hyst_curve_table_seal(&inv, &out->seal);
+    }
+    if (st == HYST_OK && !everett) { /* before the float table is freed */
+        st = f32 ? hyst_f32_seal_inverse_table(&out->s32, &inv)
+                 : hyst_f64_seal_inverse_table(&out->s64, &inv);
     }
     for (i = 0u; f32 && i < n; ++i) {
         out->num[i] = (double)t32[i];
@@ -134,7 +144,8 @@ size_t cli_header_table_size(const cli_model_t *m, size_t rows, size_t intervals
 }
 
 int cli_header_table(const char *cmd, const char *model, char *buf, size_t size, size_t *len,
-                     const char *name, const cli_model_t *m, size_t rows, size_t intervals)
+                     const char *name, const cli_model_t *m, size_t rows, size_t intervals,
+                     int sealed)
 {
     const int everett = m->kind == CLI_MODEL_EVERETT;
     built_t b32, b64;
@@ -183,14 +194,29 @@ int cli_header_table(const char *cmd, const char *model, char *buf, size_t size,
                            " *   hyst_curve_from_poly(&fwd, &%s);\n"
                            " *   hyst_curve_inverse_table_const(&comp, &fwd, %s_table, %s_INTERVALS,\n"
                            " *                                  &%s_seal);\n"
-                           " *   hyst_init_curve(&S, &comp, ...);  // comp outlives S */\n",
+                           " *   hyst_init_curve(&S, &comp, ...);  // comp outlives S",
                            name, name, name, name);
+        if (sealed) {
+            over |= cli_append(buf, size, len,
+                               "\n * or, the compensator's curve sealed with the table (--sealed): no\n"
+                               " * table measured, no curve built, integer checks only:\n"
+                               " *   HYST_INIT_INVERSE_SEALED(S, &comp, &%s_comp_sealed, %s_table);",
+                               name, name);
+        }
+        over |= cli_append(buf, size, len, " */\n%s",
+                           sealed ? "#include \"hyst/inverse.h\"\n" : "");
     }
     over |= cli_append(buf, size, len, "#define %s_INTERVALS %luu\n#ifdef HYST_USE_DOUBLE\n", name,
                        (unsigned long)intervals);
     over |= emit(buf, size, len, name, &b64, 0, len_macro);
+    if (sealed && !everett) {
+        over |= cli_header_sealed_inverse(buf, size, len, name, NULL, &b64.s64);
+    }
     over |= cli_append(buf, size, len, "#else\n");
     over |= emit(buf, size, len, name, &b32, 1, len_macro);
+    if (sealed && !everett) {
+        over |= cli_header_sealed_inverse(buf, size, len, name, &b32.s32, NULL);
+    }
     over |= cli_append(buf, size, len, "#endif\n");
     free(b32.num);
     free(b64.num);
