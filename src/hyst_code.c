@@ -87,7 +87,7 @@ hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32
         st = hyst_curve_poly_(&curve, f0, HYST_VARIANT_F32, layout);
     }
     if (st == HYST_OK) {
-        st = hyst_code_attach_range(S, &curve, NULL, code_lo, code_hi, xltp, yltp, xrtp, yrtp,
+        st = hyst_code_attach_range(S, &curve, &hyst_code_kind_poly, code_lo, code_hi, xltp, yltp, xrtp, yrtp,
                                     capacity);
     }
     if (st == HYST_OK) {

@@ -354,7 +354,7 @@ static int rows_ok(unsigned long n) { return n >= 3ul && n <= MAX_ROWS; }
 static int intervals_ok(unsigned long n) { return n >= 1ul && n <= MAX_INTERVALS; }
 
 /* The engine's least output step of a branch, (y_hi - y_lo) intervals 2^-30
- * (tcm_engine.h, blend_dims()), and the index scale it bounds, intervals /
+ * (kind_everett_inv_table.h, blend_attach()), and the index scale it bounds, intervals /
  * least: normal and finite in the variant's type (with a factor 2 for the
  * type's rounding), else a slow sample's interval index could overflow
  * (desired outputs spanning a few subnormal numbers). */

@@ -56,6 +56,7 @@ static hyst_q31_t hyst_q31_no_other(const hyst_curve_t *curve, hyst_q31_t v)
 #define TCM_G_HALF(S, d) TCM_NAME(g_unit)((S), (d) * (S)->unit.q31 / 2)
 #define TCM_ADD_BOUND(a, e) ((a) = hyst_q31_add_bound((a), (e)))
 #include "tcm_engine.h"
+#include "kind_poly.h"
 
 #define Q31_ONE_U ((hyst_wide_t)((hyst_q31_t)1 << HYST_Q31_U_BITS))
 #define Q31_SPAN ((hyst_wide_t)((hyst_q31_t)1 << HYST_Q31_SPAN_BITS))
@@ -172,7 +173,7 @@ hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_
     if (st != HYST_OK) {
         return st;
     }
-    hyst_q31_attach(S, &q, NULL, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit,
+    hyst_q31_attach(S, &q, &hyst_q31_kind_poly, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit,
                     xltp, yltp, xrtp, yrtp, capacity);
     S->curve = NULL; /* the polynomial is copied whole into the instance */
     return HYST_OK;
@@ -245,7 +246,7 @@ hyst_status_t hyst_q31_init_sealed_(hyst_tcm_t *S, const hyst_q31_sealed_poly_t 
     if (hyst_poly_seal_crc_(&q) != (sealed->seal & 0xFFFFFFFFul)) {
         return HYST_ERR_CRC;
     }
-    hyst_q31_attach(S, &q, NULL, q.lo.code, q.hi.code, q.unit.q31, xltp, yltp, xrtp, yrtp,
+    hyst_q31_attach(S, &q, &hyst_q31_kind_poly, q.lo.code, q.hi.code, q.unit.q31, xltp, yltp, xrtp, yrtp,
                     capacity);
     S->curve = NULL;
     return HYST_OK;

@@ -124,28 +124,32 @@ void hyst_barrier_(void);
  * accessor returns its last read). */
 #define HYST_READ_ATTEMPTS 4u
 
-/* S->horner of the forward asymmetric kind of degree n: HYST_HORNER_ASYM_ + n,
- * above every degree and above the engine's unrolled Horner cases (1..8,
- * src/num_ops.h, which a build with HYST_MAX_DEGREE < 8 still compiles), so
- * that its cases derive the branch's coefficients on a slow sample without
- * a test (tcm_engine.h, emit()). */
-#define HYST_HORNER_ASYM_ (HYST_MAX_DEGREE > 8 ? (unsigned)HYST_MAX_DEGREE : 8u)
+/* S->degree and S->horner: what the fast path evaluates (src/tcm_engine.h,
+ * emit()), set by the instance's kind at init (its attach()): 1..
+ * HYST_MAX_DEGREE, a polynomial (S->coef); 0, a table of cubic pieces
+ * (S->table) or, without one, nothing (every sample slow); or one of the
+ * values below. They lie above every degree and above the engine's unrolled
+ * Horner cases (1..8, src/num_ops.h, which a build with HYST_MAX_DEGREE < 8
+ * still compiles); they are those of the layout before the kinds had
+ * tables of their own, so that a snapshot's curve identity, which covers
+ * S->degree, stays the same. */
+#define HYST_HORNER_TOP_ (HYST_MAX_DEGREE > 8 ? (unsigned)HYST_MAX_DEGREE : 8u)
 
-/* ... and HYST_HORNER_ASYM_LINEAR_ + n when every coefficient of its branches
- * is linear in the turning point (E at most linear in t, the identification's
- * usual choice): a cheaper derivation. */
-#define HYST_HORNER_ASYM_LINEAR_ (HYST_HORNER_ASYM_ + (unsigned)HYST_EVERETT_MAX_DEGREE)
+/* S->horner - S->degree of a kind whose branches take a bank of Horner's
+ * cases of their own (tcm_engine.h, TCM_HORNER_BANK_): two banks of
+ * HYST_EVERETT_MAX_DEGREE cases. */
+#define HYST_HORNER_BANK1_ HYST_HORNER_TOP_
+#define HYST_HORNER_BANK2_ (HYST_HORNER_BANK1_ + (unsigned)HYST_EVERETT_MAX_DEGREE)
 
-/* S->horner while a request is pending: above all of those. */
-#define HYST_HORNER_REQUEST_ (HYST_HORNER_ASYM_LINEAR_ + (unsigned)HYST_EVERETT_MAX_DEGREE + 1u)
+/* S->horner while a request is pending. */
+#define HYST_HORNER_REQUEST_ (HYST_HORNER_BANK2_ + (unsigned)HYST_EVERETT_MAX_DEGREE + 1u)
 
-/* S->degree (and S->horner) of the asymmetric kind's inverse: not a degree,
- * not a request; its branches are solved (tcm_engine.h, solve()). */
-#define HYST_HORNER_SOLVE_ (HYST_HORNER_REQUEST_ + 1u)
+/* The kind evaluates every sample itself (its fast() and emit()). */
+#define HYST_HORNER_OWN_ (HYST_HORNER_REQUEST_ + 1u)
 
-/* S->degree (and S->horner) of its tabulated inverse: branches blended from
- * rows of cubic pieces (tcm_engine.h, blend_g()). */
-#define HYST_HORNER_BLEND_ (HYST_HORNER_SOLVE_ + 1u)
+/* A cubic piece of the branch (S->coef) cached for one interval
+ * (S->cached_k, S->v_scale); the kind's fast() and emit() for the others. */
+#define HYST_HORNER_PIECE_ (HYST_HORNER_OWN_ + 1u)
 
 /* Posts a request from another context: increments *counter, then routes
  * the next per-sample evaluation to the engine's serve(). */
@@ -199,7 +203,7 @@ int hyst_everett_monotone_(const hyst_everett_t *e);
 hyst_wide_t hyst_everett_range_(const hyst_everett_t *e);
 
 /* 2^-30: a tabulated asymmetric branch's least output step, as a fraction
- * of the desired outputs' range per interval (tcm_engine.h, blend_dims());
+ * of the desired outputs' range per interval (kind_everett_inv_table.h, blend_attach());
  * its table's builder checks that step and its index scale fit the type. */
 #define HYST_BLEND_LEAST_STEP 9.313225746154785e-10
 

@@ -13,7 +13,16 @@ static TCM_NOINLINE TCM_Y TCM_NAME(curve_kind_g)(const hyst_tcm_t *S, TCM_Y u)
     return TCM_CURVE_G(S->curve, u);
 }
 
-static const TCM_NAME(kind_t) TCM_NAME(kind_curve) = {TCM_NAME(curve_kind_g), NULL, NULL, NULL,
-                                                      NULL, NULL};
+/* The tabulated inverse's pieces for the fast path (emit()'s case 0,
+ * S->degree 0); the other curves have none: every sample slow. */
+static void TCM_NAME(curve_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
+{
+    if (curve->kind == (unsigned)HYST_CURVE_INV_TABLE) {
+        S->table.TCM_YF = curve->u.inv_table.table.TCM_YF;
+    }
+}
+
+static const TCM_NAME(kind_t) TCM_NAME(kind_curve) = {.g = TCM_NAME(curve_kind_g),
+                                                      .attach = TCM_NAME(curve_attach)};
 
 #endif /* HYST_KIND_CURVE_H */

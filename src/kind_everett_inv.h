@@ -133,7 +133,7 @@ static void TCM_NAME(newton_state)(const hyst_tcm_t *S, hyst_num_t *coef, TCM_Y 
 /* The end of a sample of the asymmetric compensator (how: as emit()). Its
  * solve() starts from y_prev, so the monotone guard holds y, not G (and no
  * window closes: a restore re-derives nothing but what a snapshot keeps). */
-static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const int how)
+HYST_INLINE TCM_Y TCM_NAME(solved_end)(hyst_tcm_t *S, TCM_X x, const int how)
 {
     const int up = how == TCM_FAST ? S->moving_end == 0u : how == TCM_ROSE;
     const TCM_Y v = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
@@ -152,6 +152,17 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const in
     }
     YV(S->y_prev) = y;
     return y;
+}
+
+static TCM_NOINLINE TCM_Y TCM_NAME(emit_solved)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    return TCM_NAME(solved_end)(S, x, how);
+}
+
+/* The fast path's sample: its own copy, how a constant. */
+static TCM_NOINLINE TCM_Y TCM_NAME(solved_fast)(hyst_tcm_t *S, TCM_X x)
+{
+    return TCM_NAME(solved_end)(S, x, TCM_FAST);
 }
 
 /* The kind's sample: a new branch's numbers first (derive: src/tcm_engine.h,
@@ -185,8 +196,15 @@ HYST_INLINE TCM_Y TCM_NAME(solved_slow_emit)(hyst_tcm_t *S, TCM_X x, const int h
     if (TCM_DERIVES(derive)) {
         TCM_NAME(solved_derive)(S);
     }
-    return S->horner == HYST_HORNER_SOLVE_ ? TCM_NAME(emit_solved)(S, x, how)
+    return S->horner == HYST_HORNER_OWN_ ? TCM_NAME(emit_solved)(S, x, how)
                                            : TCM_NAME(emit_rare)(S, x, how);
+}
+
+/* Every sample is the kind's own (emit()'s HYST_HORNER_OWN_ case). */
+static void TCM_NAME(solved_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
+{
+    (void)curve;
+    S->degree = HYST_HORNER_OWN_;
 }
 
 #define TCM_SLOW(n) TCM_NAME(solved_##n)
@@ -195,7 +213,12 @@ HYST_INLINE TCM_Y TCM_NAME(solved_slow_emit)(hyst_tcm_t *S, TCM_X x, const int h
 #include "tcm_slow.h"
 
 static const TCM_NAME(kind_t) TCM_NAME(kind_everett_inv) = {
-    TCM_NAME(solve), TCM_NAME(solved_emit), TCM_NAME(solved_derive), TCM_NAME(solved_step_slow),
-    TCM_NAME(drive_range), NULL};
+    .g = TCM_NAME(solve),
+    .emit = TCM_NAME(solved_emit),
+    .derive = TCM_NAME(solved_derive),
+    .slow = TCM_NAME(solved_step_slow),
+    .loop_error = TCM_NAME(drive_range),
+    .attach = TCM_NAME(solved_attach),
+    .fast = TCM_NAME(solved_fast)};
 
 #endif /* HYST_KIND_EVERETT_INV_H */

@@ -3,7 +3,7 @@
  * a curve kind of the engine (src/tcm_engine.h, TCM_NAME(kind_t)): each
  * branch blended from four rows of the table around its anchor; the fast
  * path evaluates the cubic piece the last sample blended (emit()'s
- * HYST_HORNER_BLEND_ case), this file every other sample. Included by
+ * HYST_HORNER_PIECE_ case), this file every other sample. Included by
  * src/kinds.h after the engine, in a variant with real outputs. */
 #ifndef HYST_KIND_EVERETT_INV_TABLE_H
 #define HYST_KIND_EVERETT_INV_TABLE_H
@@ -11,7 +11,7 @@
 #include "kind_everett_inv.h"
 
 /* The tabulated asymmetric compensator (HYST_CURVE_EVERETT_INV_TABLE,
- * S->degree HYST_HORNER_BLEND_): a branch's drive step at output step v is
+ * S->degree HYST_HORNER_PIECE_): a branch's drive step at output step v is
  * the cubic of interval k = floor(s), s = v v_scale, blended from four rows
  * of the table (S->table: the first, S->blend: their weights; both set by
  * derive_blend() on the branch's slow sample). S->coef holds the blend of
@@ -144,13 +144,15 @@ HYST_INLINE void TCM_NAME(achieved_top)(hyst_tcm_t *S)
 HYST_INLINE void TCM_NAME(achieved_top)(hyst_tcm_t *S) { (void)S; }
 #endif
 
-/* S's table_rows, table_intervals, v_least: derive_blend()'s constants
- * (out of line: init() stays small enough to stay out of line itself). */
-static TCM_NOINLINE void TCM_NAME(blend_dims)(hyst_tcm_t *S, const hyst_curve_t *curve)
+/* The kind's numbers of the instance: S->degree (emit()'s cached cubic
+ * piece, HYST_HORNER_PIECE_) and derive_blend()'s constants table_rows,
+ * table_intervals, v_least (out of line: init() stays small enough to stay
+ * out of line itself). */
+static TCM_NOINLINE void TCM_NAME(blend_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 {
-    const int blended = curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE;
-    const TCM_Y n = blended ? (TCM_Y)curve->u.everett.intervals : 0;
-    YV(S->table_rows) = blended ? (TCM_Y)curve->u.everett.rows : 0;
+    const TCM_Y n = (TCM_Y)curve->u.everett.intervals;
+    S->degree = HYST_HORNER_PIECE_;
+    YV(S->table_rows) = (TCM_Y)curve->u.everett.rows;
     YV(S->table_intervals) = n;
     YV(S->v_least) = TCM_D(XV(S->hi), XV(S->lo)) * (n * (TCM_Y)HYST_BLEND_LEAST_STEP);
 }
@@ -249,12 +251,18 @@ static TCM_NOINLINE TCM_Y TCM_NAME(derive_emit_blended)(hyst_tcm_t *S, TCM_X x, 
     return TCM_NAME(blended_sample)(S, x, how);
 }
 
-/* The kind's sample (emit()'s HYST_HORNER_BLEND_ case, out of line): a new
+/* The kind's sample (emit()'s HYST_HORNER_PIECE_ case, out of line): a new
  * branch's rows and weights first. */
 static TCM_NOINLINE TCM_Y TCM_NAME(blended_emit)(hyst_tcm_t *S, TCM_X x, int how, int derive)
 {
     return TCM_DERIVES(derive) ? TCM_NAME(derive_emit_blended)(S, x, how)
                                : TCM_NAME(emit_blended)(S, x, how);
+}
+
+/* The same on the fast path (an interval not cached). */
+static TCM_NOINLINE TCM_Y TCM_NAME(blended_fast)(hyst_tcm_t *S, TCM_X x)
+{
+    return TCM_NAME(emit_blended)(S, x, TCM_FAST);
 }
 
 static TCM_NOINLINE void TCM_NAME(blended_derive)(hyst_tcm_t *S) { TCM_NAME(derive_blend)(S); }
@@ -264,7 +272,7 @@ static TCM_NOINLINE void TCM_NAME(blended_derive)(hyst_tcm_t *S) { TCM_NAME(deri
 HYST_INLINE TCM_Y TCM_NAME(blended_slow_emit)(hyst_tcm_t *S, TCM_X x, const int how,
                                               const int derive)
 {
-    if (S->horner != HYST_HORNER_BLEND_) {
+    if (S->horner != HYST_HORNER_PIECE_) {
         if (TCM_DERIVES(derive)) {
             TCM_NAME(blended_derive)(S);
         }
@@ -280,7 +288,12 @@ HYST_INLINE TCM_Y TCM_NAME(blended_slow_emit)(hyst_tcm_t *S, TCM_X x, const int 
 #include "tcm_slow.h"
 
 static const TCM_NAME(kind_t) TCM_NAME(kind_everett_inv_table) = {
-    TCM_NAME(blend_g), TCM_NAME(blended_emit), TCM_NAME(blended_derive),
-    TCM_NAME(blended_step_slow), TCM_NAME(drive_range), TCM_NAME(blend_dims)};
+    .g = TCM_NAME(blend_g),
+    .emit = TCM_NAME(blended_emit),
+    .derive = TCM_NAME(blended_derive),
+    .slow = TCM_NAME(blended_step_slow),
+    .loop_error = TCM_NAME(drive_range),
+    .attach = TCM_NAME(blend_attach),
+    .fast = TCM_NAME(blended_fast)};
 
 #endif /* HYST_KIND_EVERETT_INV_TABLE_H */

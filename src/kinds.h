@@ -3,9 +3,8 @@
  * a prepared curve to its kind (kind_of()). Included after src/tcm_engine.h
  * by a variant with real outputs (src/variant_real.h, src/hyst_code.c),
  * which defines TCM_CURVE_G(c, u): g of the kinds evaluated out of line.
- * The polynomial kind is the engine's own (its fast path): no table. An
- * init that binds one kind alone (hyst_*_init_: the polynomial) links no
- * other kind's code. */
+ * An init that binds one kind alone (hyst_*_init_: the polynomial) links
+ * no other kind's code. */
 #ifndef HYST_KINDS_H
 #define HYST_KINDS_H
 
@@ -13,6 +12,7 @@
 #error "kinds.h: the variant must define TCM_CURVE_G"
 #endif
 
+#include "kind_poly.h"
 #include "kind_curve.h"
 #include "kind_everett.h"
 #include "kind_everett_inv.h"
@@ -22,8 +22,9 @@
 static const TCM_NAME(kind_t) *TCM_NAME(kind_of)(const hyst_curve_t *curve)
 {
     switch (curve->kind) {
-    case HYST_CURVE_POLY: return NULL;
-    case HYST_CURVE_EVERETT: return &TCM_NAME(kind_everett);
+    case HYST_CURVE_POLY: return &TCM_NAME(kind_poly);
+    case HYST_CURVE_EVERETT:
+        return curve->u.everett.linear_x ? &TCM_NAME(kind_everett_lines) : &TCM_NAME(kind_everett);
     case HYST_CURVE_EVERETT_INV: return &TCM_NAME(kind_everett_inv);
     case HYST_CURVE_EVERETT_INV_TABLE: return &TCM_NAME(kind_everett_inv_table);
     default: return &TCM_NAME(kind_curve); /* PWL, PWL_INV, POLY_INV, INV_TABLE */

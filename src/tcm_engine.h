@@ -113,6 +113,13 @@ typedef struct TCM_NAME(kind) {
     TCM_Y (*loop_error)(const hyst_tcm_t *S, TCM_X b, TCM_X a);
     /* the kind's numbers of the instance, set once at init; NULL if none */
     void (*attach)(hyst_tcm_t *S, const hyst_curve_t *curve);
+    /* S->horner - S->degree with no request pending: 0, or the bank of
+     * Horner's cases the kind's branches use (TCM_HORNER_BANK_) */
+    unsigned bank;
+    /* emit(S, x, TCM_FAST, TCM_KEEP): the fast path's call of a kind that
+     * evaluates the sample itself (HYST_HORNER_OWN_, a blended interval
+     * not cached), without the tests of how and derive; NULL if none */
+    TCM_Y (*fast)(hyst_tcm_t *S, TCM_X x);
 } TCM_NAME(kind_t);
 
 #define TCM_KIND(S) ((const TCM_NAME(kind_t) *)(S)->kind)
@@ -160,41 +167,6 @@ HYST_INLINE TCM_Y TCM_NAME(on_branch)(const hyst_tcm_t *S, TCM_Y g)
 HYST_INLINE TCM_Y TCM_NAME(branch_g)(const hyst_tcm_t *S, TCM_X x)
 {
     return TCM_NAME(g_unit)(S, (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale));
-}
-
-/* The asymmetric kind's G coefficients at `anchor` from a table of the
- * curve (curve.h): coef[i], of w^(n - i), is row i (i + 1 entries), a
- * polynomial in the anchor, by Horner's rule. */
-HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
-                                       hyst_num_t *coef)
-{
-    /* rows start at i (i + 1) / 2; unrolled (n <= HYST_EVERETT_MAX_DEGREE = 4,
-     * the curve's check): a slow sample derives them */
-    switch (n) {
-    case 4u:
-        YV(coef[3]) = ((YV(row[6]) * anchor + YV(row[7])) * anchor + YV(row[8])) * anchor +
-                      YV(row[9]);
-        /* fall through */
-    case 3u: YV(coef[2]) = (YV(row[3]) * anchor + YV(row[4])) * anchor + YV(row[5]); /* fall through */
-    case 2u: YV(coef[1]) = YV(row[1]) * anchor + YV(row[2]); /* fall through */
-    case 1u: YV(coef[0]) = YV(row[0]); /* fall through */
-    default: break;
-    }
-}
-
-/* The branch's coefficients from the curve's rows as functions of the
- * TP's input itself (lin_x, curve.h: rows at most linear in the anchor):
- * no anchor to compute, one multiply-add each. */
-HYST_INLINE void TCM_NAME(table_coefs_x)(const hyst_num_t *lin, unsigned n, TCM_Y x,
-                                         hyst_num_t *coef)
-{
-    switch (n) {
-    case 4u: YV(coef[3]) = YV(lin[5]) * x + YV(lin[6]); /* fall through */
-    case 3u: YV(coef[2]) = YV(lin[3]) * x + YV(lin[4]); /* fall through */
-    case 2u: YV(coef[1]) = YV(lin[1]) * x + YV(lin[2]); /* fall through */
-    case 1u: YV(coef[0]) = YV(lin[0]); /* fall through */
-    default: break;
-    }
 }
 
 /* Output on the current branch. One formula for both paths (the fast path
@@ -289,48 +261,35 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
 #define TCM_KEEP_SLOW 3
 #define TCM_DERIVES(derive) ((derive) == TCM_DERIVE_RISE || (derive) == TCM_DERIVE_FALL)
 
-/* The forward asymmetric kind's anchor: the current TP's input, 0..1 over
- * the domain. */
-HYST_INLINE TCM_Y TCM_NAME(input_anchor)(const hyst_tcm_t *S)
-{
-    return (YV(S->x_ctp) - TCM_R(XV(S->lo))) * YV(S->unit);
-}
+/* Horner's cases of degrees 1..HYST_EVERETT_MAX_DEGREE at S->horner
+ * base + n: a bank of a kind whose slow sample derives every branch's
+ * coefficients inline in a case per degree (its own switch on S->horner:
+ * TCM_NAME(kind_t), bank); the fast path evaluates them as a polynomial's.
+ * Cases of their own, not labels of the polynomial's: GCC lays the fast
+ * path out better so (one instruction less on a rising or a falling
+ * sample of every kind). */
+#define TCM_HORNER_BANK_(base, a, u, acc)                  \
+    case (base) + 1u: acc = NUM_HORNER1_(a, u); break;     \
+    case (base) + 2u: acc = NUM_HORNER2_(a, u); break;     \
+    case (base) + 3u: acc = NUM_HORNER3_(a, u); break;     \
+    case (base) + 4u: acc = NUM_HORNER4_(a, u); break
 
-/* The case of emit()'s switch for the forward asymmetric kind of degree n
- * (HYST_HORNER_ASYM_ + n): a slow sample's `derive` first derives the
- * branch's coefficients, the degree a constant, so that Horner's rule takes
- * them from registers (the worst sample, a wipe-out at Nu = 4096, within
- * its budget); the fast path evaluates the cached ones. Its rows at most
- * linear in the anchor (HYST_HORNER_ASYM_LINEAR_ + n), from the TP's input
- * itself (table_coefs_x()). */
-#define TCM_ASYM_CASE_(base, n, derivation)       \
-    case base + n##u:                             \
-        if (TCM_DERIVES(derive)) {                \
-            derivation;                           \
-        }                                         \
-        acc = NUM_HORNER##n##_(S->coef, u);       \
-        break
-#define TCM_ASYM_KEPT_(n) (void)0
-#define TCM_ASYM_CASES_(base, derivation)             \
-    TCM_ASYM_CASE_(base, 1, derivation(1u));          \
-    TCM_ASYM_CASE_(base, 2, derivation(2u));          \
-    TCM_ASYM_CASE_(base, 3, derivation(3u));          \
-    TCM_ASYM_CASE_(base, 4, derivation(4u))
-
-/* The end of a sample on a polynomial branch: its output, stored as y_prev
- * (and as the moving window end on the fast path). Degrees up to 8 inline;
- * the forward asymmetric kind's cases above them; every other value of
- * S->horner (degree 9 and up, or a pending request: HYST_HORNER_REQUEST_)
- * leaves by a tail call, so a request costs the
+/* The end of a sample on the current branch, as its kind set it up
+ * (S->horner, hyst_util.h): its output, stored as y_prev (and as the moving
+ * window end on the fast path). The same cases for every kind: polynomials
+ * of degree up to 8 and a table's cubic piece inline, a cached cubic piece
+ * inline when it is the sample's, else the kind's own evaluation; every
+ * other value of S->horner (degree 9 and up, or a pending request:
+ * HYST_HORNER_REQUEST_) leaves by a tail call, so a request costs the
  * per-sample paths nothing (the jump table's range check was there anyway)
- * and the fast path
- * needs no stack frame. how: TCM_FAST, TCM_ROSE, TCM_FELL; derive: above. */
+ * and the fast path needs no stack frame. how: TCM_FAST, TCM_ROSE,
+ * TCM_FELL; derive: above. */
 HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const int derive)
 {
     TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
     TCM_Y acc, g, y;
     switch (S->horner) {
-    case 0: /* a tabulated inverse: G = acc; its exact intervals by the tail call */
+    case 0: /* a table of cubic pieces: G = acc; its exact intervals by the tail call */
         acc = NUM_NAME(table_g)(S->table.TCM_YF, u);
         if (!(acc >= 0)) {
             return TCM_NAME(emit_rare)(S, x, how);
@@ -338,15 +297,15 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
         u = NUM_G_ONE;
         break;
     NUM_HORNER_CASES_(S->coef, u, acc);
-    /* the coefficients an asymmetric kind derived (its own slow samples
-     * derive them: src/kind_everett.h); cases of their own, not labels of
-     * the polynomial's: the fast path's code is laid out better so */
-    TCM_ASYM_CASES_(HYST_HORNER_ASYM_, TCM_ASYM_KEPT_);
-    TCM_ASYM_CASES_(HYST_HORNER_ASYM_LINEAR_, TCM_ASYM_KEPT_);
-    case HYST_HORNER_SOLVE_: /* the kind's own evaluation */
+    TCM_HORNER_BANK_(HYST_HORNER_BANK1_, S->coef, u, acc);
+    TCM_HORNER_BANK_(HYST_HORNER_BANK2_, S->coef, u, acc);
+    case HYST_HORNER_OWN_: /* the kind evaluates every sample */
+        if (how == TCM_FAST) {
+            return TCM_KIND(S)->fast(S, x);
+        }
         return TCM_KIND(S)->emit(S, x, how, derive);
 #ifndef NUM_FIXED
-    case HYST_HORNER_BLEND_: /* a cubic piece of the branch (S->coef), cached for interval
+    case HYST_HORNER_PIECE_: /* a cubic piece of the branch (S->coef), cached for interval
                               * cached_k at v_scale intervals per unit of u: a sample in it
                               * costs one cubic, inline; the others (and a new branch: no
                               * interval cached yet) are the kind's */
@@ -356,7 +315,8 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
             const TCM_Y s = u * YV(S->v_scale);
             const unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 */
             if (k != S->cached_k) {
-                return TCM_KIND(S)->emit(S, x, how, derive);
+                return how == TCM_FAST ? TCM_KIND(S)->fast(S, x)
+                                       : TCM_KIND(S)->emit(S, x, how, derive);
             }
             acc = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
             if (acc < 0) { /* a solved interval; "< 0", not "!(>= 0)" as for the table of
@@ -380,18 +340,6 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
     return y;
 }
 
-/* S->horner with no request pending: the degree, or the forward asymmetric
- * kind's own case (HYST_HORNER_ASYM_ or, its tables linear in the anchor,
- * HYST_HORNER_ASYM_LINEAR_, plus the degree). Off the per-sample paths. */
-static unsigned TCM_NAME(idle_horner)(const hyst_tcm_t *S)
-{
-    if (S->curve == NULL || S->curve->kind != (unsigned)HYST_CURVE_EVERETT) {
-        return S->degree;
-    }
-    return (S->curve->u.everett.linear_x ? HYST_HORNER_ASYM_LINEAR_ : HYST_HORNER_ASYM_) +
-           S->degree;
-}
-
 /* Derives S->detour from the state it summarises; called wherever that
  * state changes (all off the per-sample path), so that the plain slow path
  * tests one word. */
@@ -404,11 +352,7 @@ static void TCM_NAME(set_detour)(hyst_tcm_t *S)
                 (S->status != HYST_OK ? TCM_STALE : 0u) |
                 (S->forgot_level == TCM_NO_LEVEL && YV(S->forgot) != 0 ? TCM_SETTLING | TCM_BOOK
                                                                        : 0u) |
-                (S->curve != NULL && (S->curve->kind == (unsigned)HYST_CURVE_EVERETT ||
-                                      S->curve->kind == (unsigned)HYST_CURVE_EVERETT_INV ||
-                                      S->curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE)
-                     ? TCM_PER_BRANCH
-                     : 0u);
+                (TCM_KIND(S)->derive != NULL ? TCM_PER_BRANCH : 0u);
 }
 
 /* A sample that leaves the plain path starts with the status OK. */
@@ -527,7 +471,7 @@ void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
      * value at x (a guarded sample), the next one checks it again (not the
      * asymmetric compensator's: its guard holds y, and its next sample
      * must take the path it took in the run saved, emit_solved()) */
-    if (status != HYST_OK || (S->degree != HYST_HORNER_SOLVE_ &&
+    if (status != HYST_OK || (S->degree != HYST_HORNER_OWN_ &&
                               TCM_NAME(on_branch)(S, YV(S->g_prev)) != YV(S->y_prev))) {
         TCM_NAME(close_window)(S);
     }
@@ -544,8 +488,7 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve,
     S->layout = HYST_LAYOUT;
     S->curve = curve;
     S->kind = kind;
-    S->slow = (void (*)(void))(kind != NULL && kind->slow != NULL ? kind->slow
-                                                                   : TCM_NAME(step_slow));
+    S->slow = (void (*)(void))(kind->slow != NULL ? kind->slow : TCM_NAME(step_slow));
     /* -0 made +0: the anchor A0 = lo is a stored TP, and a restore
      * normalises every stored TP (resume_): one bit pattern either way */
     XV(S->lo) = TCM_NORM(lo);
@@ -554,12 +497,11 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve,
     YV(S->y_hi) = YV(curve->y_hi);
     YV(S->unit) = unit;
     YV(S->rounding) = YV(curve->rounding);
-    S->degree = curve->kind == (unsigned)HYST_CURVE_POLY                ? curve->u.poly.degree
-                : curve->kind == (unsigned)HYST_CURVE_EVERETT           ? curve->u.everett.degree
-                : curve->kind == (unsigned)HYST_CURVE_EVERETT_INV       ? HYST_HORNER_SOLVE_
-                : curve->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE ? HYST_HORNER_BLEND_
-                                                                        : 0u;
-    S->horner = TCM_NAME(idle_horner)(S);
+    S->degree = 0u; /* no polynomial, no table: every sample slow (set_detour()) */
+    S->table.TCM_YF = NULL;
+    for (k = 0u; k < HYST_MAX_DEGREE; ++k) {
+        YV(S->coef[k]) = 0;
+    }
     YV(S->curv) = 0; /* solved and blended branches: derive() */
     YV(S->w_end) = 0;
     YV(S->secant) = 0;
@@ -570,17 +512,8 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve,
     S->cached_k = ULONG_MAX;
     S->tps_derived = 0u;
     YV(S->table_rows) = YV(S->table_intervals) = YV(S->v_least) = 0;
-    if (kind != NULL && kind->attach != NULL) {
-        kind->attach(S, curve);
-    }
-    for (k = 0u; k < HYST_MAX_DEGREE; ++k) { /* the asymmetric kind's: per branch, settle() */
-        YV(S->coef[k]) = curve->kind == (unsigned)HYST_CURVE_POLY && k < S->degree
-                             ? YV(curve->u.poly.a[k])
-                             : 0;
-    }
-    S->table.TCM_YF = curve->kind == (unsigned)HYST_CURVE_INV_TABLE
-                          ? curve->u.inv_table.table.TCM_YF
-                          : NULL;
+    kind->attach(S, curve); /* S->degree, S->coef, S->table: what the fast path evaluates */
+    S->horner = S->degree + kind->bank;
     S->seq = 0u;
     S->req_reset = S->done_reset = 0u;
     S->req_clear = S->done_clear = 0u;
@@ -828,40 +761,6 @@ static TCM_NOINLINE void TCM_NAME(merge)(hyst_tcm_t *S, TCM_X x_prev, size_t *nr
     TCM_NAME(set_detour)(S);
 }
 
-#ifndef NUM_FIXED
-/* The polynomial kind's deadband error for a window of input width d
- * (full: d as g's argument difference, u in g's units). Inside the window
- * the full model differs from the branch moved back along by the measure
- * of relays in a rectangle (x - b) x (a - x) of density g''(a' - b'), whose
- * diagonal a' - b' = v is at most min(v, u - v) long: the error is at most
- * the integral of |g''(v)| min(v, u - v) over [0, u], bounded term by term
- * (g = sum a_k u^k: |a_2| u^2 / 2 + the sum of |a_k| u^k, k >= 3, with
- * min(v, u - v) <= u - v). Where g'' is proven one-signed on [0, u] (its
- * constant term wins), the tighter height of the loop at its middle,
- * |g(d) - 2 g(d/2)| (docs/memory.md). */
-static TCM_Y TCM_NAME(poly_loop_error)(const hyst_tcm_t *S, TCM_Y full)
-{
-    const unsigned n = S->degree;
-    const TCM_Y u = full * YV(S->unit);
-    TCM_Y rest = 0, sum = 0, pw = u; /* pw = u^(k-2) from k = 3 */
-    unsigned k;
-    for (k = 3u; k <= n; ++k) { /* coef[n - k] multiplies u^k */
-        const TCM_Y t = NUM_NAME(abs)(YV(S->coef[n - k])) * pw;
-        rest += (TCM_Y)(k * (k - 1u)) * t;
-        sum += t;
-        pw *= u;
-    }
-    if (n >= 2u) {
-        const TCM_Y a2 = NUM_NAME(abs)(YV(S->coef[n - 2u]));
-        if (rest < 2 * a2) {
-            return NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));
-        }
-        sum += a2 * NUM_C(0.5);
-    }
-    return sum * u * u * NUM_C(1.01); /* rounded up by 1 % */
-}
-#endif
-
 /* Deadband: the input reversed at x_prev within d < deadband of the
  * current TP. Nothing is stored: the trajectory moves back along the current
  * branch (reversibly), where the full model would run a minor loop of width
@@ -874,12 +773,8 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
     if (d > XV(S->db_reach)) {
         const TCM_Y full = TCM_D(d, (TCM_X)0);
         XV(S->db_reach) = d;
-        if (TCM_KIND(S) != NULL && TCM_KIND(S)->loop_error != NULL) {
+        if (TCM_KIND(S)->loop_error != NULL) {
             YV(S->db_err) = TCM_KIND(S)->loop_error(S, b, a);
-#ifndef NUM_FIXED
-        } else if (TCM_KIND(S) == NULL && S->degree - 1u < (unsigned)HYST_MAX_DEGREE) {
-            YV(S->db_err) = TCM_NAME(poly_loop_error)(S, full);
-#endif
         } else {
             YV(S->db_err) =
                 NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));
@@ -896,7 +791,7 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
  * before a step applies once. */
 static TCM_NOINLINE void TCM_NAME(serve)(hyst_tcm_t *S)
 {
-    S->horner = TCM_NAME(idle_horner)(S);
+    S->horner = S->degree + TCM_KIND(S)->bank;
     if (S->req_deadband != S->done_deadband) {
         S->done_deadband = S->req_deadband;
         XV(S->deadband) = XV(S->req_width);
@@ -1001,17 +896,18 @@ typedef TCM_Y (*TCM_NAME(slow_fn))(hyst_tcm_t *S, TCM_ARG x);
 #define TCM_STEP_SLOW(S, x) ((TCM_NAME(slow_fn))(S)->slow)((S), (x))
 
 /* emit() for the other values of S->horner: the output by Horner's loop
- * (how: as emit(), or TCM_REPEAT for a repeated sample, whose output
- * stays), then the pending requests. */
+ * or the kind's G (how: as emit(), or TCM_REPEAT for a repeated sample,
+ * whose output stays), then the pending requests. */
 static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
 {
     TCM_Y y = YV(S->y_prev);
-    if (S->degree == HYST_HORNER_SOLVE_ && how != TCM_REPEAT) { /* a request pending */
-        y = TCM_KIND(S)->emit(S, x, how, TCM_KEEP);
-    } else if (how == TCM_FAST) {
-        y = TCM_NAME(fast_end)(S, x, TCM_NAME(branch_g)(S, x));
-    } else if (how != TCM_REPEAT) {
-        y = TCM_NAME(slow_guard)(S, TCM_NAME(branch_g)(S, x), how);
+    if (how != TCM_REPEAT) {
+        if (S->degree == HYST_HORNER_OWN_) { /* a request pending */
+            y = TCM_KIND(S)->emit(S, x, how, TCM_KEEP);
+        } else { /* one inline G for both ends */
+            const TCM_Y g = TCM_NAME(branch_g)(S, x);
+            y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
+        }
     }
     YV(S->y_prev) = y;
     if (S->horner == HYST_HORNER_REQUEST_) {
@@ -1066,8 +962,8 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
     const unsigned deg = S->degree;
     TCM_X w0 = XV(S->window[0]), w1 = XV(S->window[1]);
     TCM_Y g_prev = YV(S->g_prev);
-    if (S->horner == HYST_HORNER_REQUEST_ || deg == HYST_HORNER_SOLVE_ ||
-        deg == HYST_HORNER_BLEND_) {
+    if (S->horner == HYST_HORNER_REQUEST_ || deg == HYST_HORNER_OWN_ ||
+        deg == HYST_HORNER_PIECE_) {
         return i; /* a pending request: step_slow() serves it; solved, blended: step by step */
     }
     /* One loop per direction: a selected update of w0 or w1 in one loop put
@@ -1123,7 +1019,7 @@ static hyst_status_t TCM_NAME(block)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, s
         }
         /* x[i] left the window, or the branch is solved (sample(): the
          * same arithmetic as step()) */
-        y[i] = S->degree == HYST_HORNER_SOLVE_ || S->degree == HYST_HORNER_BLEND_
+        y[i] = S->degree == HYST_HORNER_OWN_ || S->degree == HYST_HORNER_PIECE_
                    ? TCM_NAME(sample)(S, x[i])
                    : TCM_STEP_SLOW(S, x[i]);
         if (S->status < 0) {

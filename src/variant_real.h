@@ -85,7 +85,7 @@ static hyst_status_t NUM_NAME(init_impl)(hyst_tcm_t *S, const hyst_poly_t *f0, N
         return st;
     }
     /* A polynomial is copied whole into the instance: no curve to keep. */
-    NUM_NAME(attach)(S, &curve, NULL, curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
+    NUM_NAME(attach)(S, &curve, &NUM_NAME(kind_poly), curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
                      yltp, xrtp, yrtp, capacity);
     S->curve = NULL;
     return HYST_OK;
@@ -161,7 +161,7 @@ static hyst_status_t NUM_NAME(init_sealed_impl)(hyst_tcm_t *S, const NUM_SEALED_
         return HYST_ERR_CRC;
     }
     /* as init_impl(): the polynomial is copied whole into the instance */
-    NUM_NAME(attach)(S, &curve, NULL, curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
+    NUM_NAME(attach)(S, &curve, &NUM_NAME(kind_poly), curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
                      yltp, xrtp, yrtp, capacity);
     S->curve = NULL;
     return HYST_OK;
