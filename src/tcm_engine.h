@@ -172,11 +172,14 @@ HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y 
      * the curve's check): a slow sample derives them */
     switch (n) {
     case 4u:
-        YV(coef[3]) = ((YV(row[6]) * anchor + YV(row[7])) * anchor + YV(row[8])) * anchor +
-                      YV(row[9]);
+        YV(coef[3]) = NUM_MULADD(
+            NUM_MULADD(NUM_MULADD(YV(row[6]), anchor, YV(row[7])), anchor, YV(row[8])), anchor,
+            YV(row[9]));
         /* fall through */
-    case 3u: YV(coef[2]) = (YV(row[3]) * anchor + YV(row[4])) * anchor + YV(row[5]); /* fall through */
-    case 2u: YV(coef[1]) = YV(row[1]) * anchor + YV(row[2]); /* fall through */
+    case 3u:
+        YV(coef[2]) = NUM_MULADD(NUM_MULADD(YV(row[3]), anchor, YV(row[4])), anchor, YV(row[5]));
+        /* fall through */
+    case 2u: YV(coef[1]) = NUM_MULADD(YV(row[1]), anchor, YV(row[2])); /* fall through */
     case 1u: YV(coef[0]) = YV(row[0]); /* fall through */
     default: break;
     }
@@ -189,9 +192,9 @@ HYST_INLINE void TCM_NAME(table_coefs_x)(const hyst_num_t *lin, unsigned n, TCM_
                                          hyst_num_t *coef)
 {
     switch (n) {
-    case 4u: YV(coef[3]) = YV(lin[5]) * x + YV(lin[6]); /* fall through */
-    case 3u: YV(coef[2]) = YV(lin[3]) * x + YV(lin[4]); /* fall through */
-    case 2u: YV(coef[1]) = YV(lin[1]) * x + YV(lin[2]); /* fall through */
+    case 4u: YV(coef[3]) = NUM_MULADD(YV(lin[5]), x, YV(lin[6])); /* fall through */
+    case 3u: YV(coef[2]) = NUM_MULADD(YV(lin[3]), x, YV(lin[4])); /* fall through */
+    case 2u: YV(coef[1]) = NUM_MULADD(YV(lin[1]), x, YV(lin[2])); /* fall through */
     case 1u: YV(coef[0]) = YV(lin[0]); /* fall through */
     default: break;
     }
@@ -269,7 +272,7 @@ HYST_INLINE TCM_Y TCM_NAME(fast_end)(hyst_tcm_t *S, TCM_X x, TCM_Y g)
 /* A cubic piece at t in [0, 1]: c0 + t (c1 + t (c2 + t c3)). */
 HYST_INLINE TCM_Y TCM_NAME(cubic_of)(TCM_Y c0, TCM_Y c1, TCM_Y c2, TCM_Y c3, TCM_Y t)
 {
-    return c0 + t * (c1 + t * (c2 + t * c3));
+    return NUM_CUBIC_(c0, c1, c2, c3, t);
 }
 HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
 {
