@@ -35,6 +35,8 @@ static const expected_t EXPECTED[] = {
     {"asymmetric model", 0xd93dc103ul, 0x0a68943dul},
     {"asymmetric compensator", 0xe76b3f68ul, 0x6a4fb512ul},
     {"asymmetric compensator table", 0xdc85eddbul, 0x31a56264ul},
+    {"PI-10", 0x23bb9837ul, 0xe1e51cadul},
+    {"creep", 0x03004b7bul, 0xd277fd77ul},
 };
 
 static hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
@@ -157,6 +159,31 @@ static void test_asymmetric_kinds(void)
     agree(4u, out);
 }
 
+/* The PI model of ten operators and a creep term of three lags, whose sums
+ * are marked multiply-adds too. */
+static void test_sums(void)
+{
+    static hyst_real_t r[10], w[10], z[10];
+    static const hyst_wide_t tau[3] = {30.0, 300.0, 3000.0}, weight[3] = {0.02, -0.01, 0.005};
+    hyst_pi_t P;
+    hyst_creep_t C;
+    long k;
+    unsigned i;
+    for (i = 0u; i < 10u; ++i) {
+        r[i] = (hyst_real_t)(4.0 * i);
+        w[i] = (hyst_real_t)(1.0 / (1.0 + i) - 0.05 * i);
+    }
+    walk(0.0, 40.0, x);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_pi_init(&P, r, w, z, 10u));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_pi_process(&P, x, y, (size_t)SAMPLES));
+    agree(5u, y);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&C, 3u, tau, weight, 0.0));
+    for (k = 0; k < SAMPLES; ++k) {
+        y[k] = hyst_creep_step(&C, x[k]);
+    }
+    agree(6u, y);
+}
+
 static void test_every_kind_agrees_with_the_host_build(void)
 {
     TEST_ASSERT_EQUAL_INT_MESSAGE(0, failures, "outputs differ from the host build's");
@@ -167,6 +194,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_polynomial_kinds);
     RUN_TEST(test_asymmetric_kinds);
+    RUN_TEST(test_sums);
     RUN_TEST(test_every_kind_agrees_with_the_host_build);
     return UNITY_END();
 }
