@@ -49,7 +49,7 @@ HYST_INLINE NUM_T NUM_NAME(creep_output_impl)(const hyst_creep_t *C)
         return 0;
     }
     for (k = 0u; k < C->n; ++k) {
-        c += C->weight[k].NUM_F * C->state[k].NUM_F;
+        c = NUM_MULADD(C->weight[k].NUM_F, C->state[k].NUM_F, c);
     }
     return c;
 }
@@ -71,8 +71,8 @@ HYST_INLINE NUM_T NUM_NAME(creep_step_impl)(hyst_creep_t *C, NUM_T x)
     }
     for (k = 0u; k < C->n; ++k) {
         const NUM_T s = C->state[k].NUM_F;
-        c += C->weight[k].NUM_F * s;
-        C->state[k].NUM_F = s + C->alpha[k].NUM_F * (x - s);
+        c = NUM_MULADD(C->weight[k].NUM_F, s, c);
+        C->state[k].NUM_F = NUM_MULADD(C->alpha[k].NUM_F, x - s, s);
     }
     C->status = HYST_OK;
     return c;

@@ -79,11 +79,13 @@ static hyst_status_t init_any(hyst_creep_t *C, size_t n_terms, const hyst_wide_t
 #define NUM_F f32
 #define NUM_NAME(n) hyst_f32_##n
 #define NUM_VARIANT HYST_VARIANT_F32
+#define NUM_MULADD(a, b, c) HYST_F32_MULADD(a, b, c)
 #include "creep_model.h"
 #undef NUM_T
 #undef NUM_F
 #undef NUM_NAME
 #undef NUM_VARIANT
+#undef NUM_MULADD
 
 hyst_status_t hyst_f32_creep_init_(hyst_creep_t *C, size_t n_terms, const hyst_wide_t *tau,
                                    const hyst_wide_t *weight, hyst_wide_t x_rest,
@@ -112,11 +114,13 @@ float hyst_f32_creep_step(hyst_creep_t *C, float x)
 #define NUM_F f64
 #define NUM_NAME(n) hyst_f64_##n
 #define NUM_VARIANT HYST_VARIANT_F64
+#define NUM_MULADD(a, b, c) ((a) * (b) + (c))
 #include "creep_model.h"
 #undef NUM_T
 #undef NUM_F
 #undef NUM_NAME
 #undef NUM_VARIANT
+#undef NUM_MULADD
 
 hyst_status_t hyst_f64_creep_init_(hyst_creep_t *C, size_t n_terms, const hyst_wide_t *tau,
                                    const hyst_wide_t *weight, hyst_wide_t x_rest,

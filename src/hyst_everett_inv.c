@@ -456,20 +456,82 @@ hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_cu
     return HYST_OK;
 }
 
-/* Knots of a row checked against the model in a table given ready-made. */
-#define CHECK_KNOTS 3u
+/* Knot k of a row (drive step c0 at output step v = k V / N) against the
+ * branch: p(c0) gives v back within 8 units of rounding of p's terms and of
+ * the drive step plus the width, and of subnormal numbers (a residual, not
+ * the root solved again: where the root is ill-conditioned, two solvers
+ * stop at different numbers). */
+static int knot_on_branch(const build_t *b, const branch_t *br, hyst_wide_t c0, hyst_wide_t v)
+{
+    const hyst_wide_t w = c0 / b->span;
+    const hyst_wide_t tiny = hyst_real_tiny(b->c->variant);
+    hyst_wide_t dp;
+    const hyst_wide_t residual = hyst_wide_abs(branch_p(br, w, &dp) - v);
+    return residual <= 8 * b->eps * (branch_scale(br, w) + (w + br->width) * hyst_wide_abs(dp)) +
+                           8 * tiny * (1 + hyst_wide_abs(dp) / b->span);
+}
+
+/* a within tol of c */
+static int near(hyst_wide_t a, hyst_wide_t c, hyst_wide_t tol) { return hyst_wide_abs(a - c) <= tol; }
+
+/* The pieces of a row as fill_row() writes them (the seal's claim: these
+ * are the build's pieces, and the build measured them): each piece k a
+ * cubic Hermite piece from knot k to knot k + 1 (its end value the next
+ * knot, or on the branch where the next interval is solved instead), its
+ * slopes between 0 and three times its secant (Fritsch and Carlson), and
+ * at a knot the slope the next piece starts with is the one the piece
+ * before ends with, unless the smaller of the two is its own piece's limit.
+ * A piece changed and sealed again breaks one of these. Linear in the
+ * row's length: no piece measured again. */
+static int row_structured(const build_t *b, const branch_t *br, size_t base, hyst_wide_t range)
+{
+    const size_t n = b->intervals;
+    hyst_wide_t end_slope = -1, end_sec = 0, end_mag = 0; /* of piece k - 1; -1: none */
+    size_t k;
+    for (k = 0u; k < n; ++k) {
+        const size_t at = base + 4u * k;
+        const hyst_wide_t c0 = entry(b, at), c1 = entry(b, at + 1u);
+        const hyst_wide_t c2 = entry(b, at + 2u), c3 = entry(b, at + 3u);
+        const hyst_wide_t next = entry(b, at + 4u);
+        const hyst_wide_t mag = hyst_wide_abs(c0) + hyst_wide_abs(c1) + 2 * hyst_wide_abs(c2) +
+                                3 * hyst_wide_abs(c3) + hyst_wide_abs(next);
+        const hyst_wide_t tol = 8 * b->eps * mag, end = c0 + c1 + c2 + c3;
+        const hyst_wide_t slope = c1 + 2 * c2 + 3 * c3;
+        hyst_wide_t sec;
+        if (c0 < 0) { /* solved instead */
+            end_slope = -1;
+            continue;
+        }
+        if (next >= 0 ? !near(end, next, tol)
+                      : !knot_on_branch(b, br, end, (hyst_wide_t)(k + 1u) * range / (hyst_wide_t)n)) {
+            return 0;
+        }
+        sec = 3 * (end - c0);
+        if (!(c1 >= -tol && c1 <= sec + tol && slope >= -tol && slope <= sec + tol)) {
+            return 0;
+        }
+        if (end_slope >= 0) {
+            const hyst_wide_t t = tol + 8 * b->eps * end_mag;
+            if (!(near(c1, end_slope, t) || (c1 <= end_slope + t && near(c1, sec, t)) ||
+                  (end_slope <= c1 + t && near(end_slope, end_sec, t)))) {
+                return 0;
+            }
+        }
+        end_slope = slope < 0 ? 0 : slope;
+        end_sec = sec;
+        end_mag = mag;
+    }
+    return 1;
+}
 
 /* A direction of a table given ready-made, against the model: in every
  * row, numbers finite and knots rising to the end (the drive steps the
  * build stores: hyst_table_shape_ok_()); an interval solved instead in one
  * row is so in every row (counted as the build counts them); each row's
  * end is the branch's whole drive step (within 8 units of the variant's
- * rounding, of the span), and the branch at its drive step at CHECK_KNOTS
- * knots gives the knot's output step back within 8 units of rounding of
- * its terms and of the drive step plus the width, and of subnormal numbers
- * (a residual, not the
- * root solved again: where the root is ill-conditioned, two solvers stop
- * at different numbers). 0 if it is another model's table. */
+ * rounding, of the span), every knot on the branch (knot_on_branch()) and
+ * the pieces between them the build's (row_structured()). 0 if it is
+ * another model's table, or pieces changed. */
 static int direction_matches(build_t *b, int fall)
 {
     const hyst_wide_t tol = 8 * b->eps * b->span;
@@ -495,56 +557,23 @@ static int direction_matches(build_t *b, int fall)
         const size_t base = row_at(b, fall, r);
         branch_t br;
         int empty;
-        unsigned j;
         branch_at(&br, b->c, fall, a);
         empty = !(br.width > 0) || !(range > 0); /* all zeros (fill_row()) */
         if (!(hyst_wide_abs(entry(b, base + 4u * n) - (empty ? 0 : br.width * b->span)) <= tol)) {
             return 0;
         }
-        for (j = 1u; j <= CHECK_KNOTS; ++j) {
-            const size_t knot = j * n / (CHECK_KNOTS + 1u);
-            const hyst_wide_t c0 = entry(b, base + 4u * knot);
-            const hyst_wide_t v = (hyst_wide_t)knot * range / (hyst_wide_t)n;
+        for (k = 0u; k < n; ++k) {
+            const hyst_wide_t c0 = entry(b, base + 4u * k);
             if (c0 < 0) { /* solved instead: checked above */
                 continue;
             }
-            if (empty) {
-                if (!(c0 <= tol)) {
-                    return 0;
-                }
-            } else {
-                const hyst_wide_t w = c0 / b->span;
-                hyst_wide_t dp;
-                const hyst_wide_t residual = hyst_wide_abs(branch_p(&br, w, &dp) - v);
-                /* the solver stops within 4 units of the branch's width */
-                const hyst_wide_t tiny = hyst_real_tiny(b->c->variant);
-                if (!(residual <= 8 * b->eps * (branch_scale(&br, w) +
-                                                (w + br.width) * hyst_wide_abs(dp)) +
-                                      8 * tiny * (1 + hyst_wide_abs(dp) / b->span))) {
-                    return 0;
-                }
-            }
-        }
-    }
-    return 1;
-}
-
-/* A direction of a table given ready-made, measured as the build measures
- * it: every interval the table evaluates within HYST_INV_TABLE_TOL (else a
- * build would have solved it); the worst into b->worst. */
-static int direction_measured(build_t *b, int fall)
-{
-    size_t r, k;
-    for (k = 0u; k < b->intervals; ++k) {
-        if (entry(b, row_at(b, fall, 0u) + 4u * k) < 0) {
-            continue; /* solved instead, in every row (direction_matches()) */
-        }
-        for (r = 0u; r < b->rows; ++r) {
-            const hyst_wide_t err = measure(b, fall, r, k);
-            if (!(err <= (hyst_wide_t)HYST_INV_TABLE_TOL * b->span)) {
+            if (empty ? !(c0 <= tol)
+                      : !knot_on_branch(b, &br, c0, (hyst_wide_t)k * range / (hyst_wide_t)n)) {
                 return 0;
             }
-            b->worst = err > b->worst ? err : b->worst;
+        }
+        if (!empty && !row_structured(b, &br, base, range)) {
+            return 0;
         }
     }
     return 1;
@@ -567,13 +596,9 @@ hyst_status_t hyst_curve_everett_inverse_table_const_(hyst_curve_t *inv, const h
     if (st != HYST_OK) {
         return st;
     }
+    /* what the seal claims: the build's pieces of this model's branches,
+     * which the build measured (the checksum covers every number) */
     if (!direction_matches(&b, 0) || !direction_matches(&b, 1)) {
-        return HYST_ERR_CURVE;
-    }
-    /* what the seal claims: the pieces measured, within the error sealed (a
-     * table whose pieces were changed and sealed again passed the knots) */
-    if (!direction_measured(&b, 0) || !direction_measured(&b, 1) ||
-        !(hyst_table_err_((b.worst + hyst_drive_rounding_(&out)) / b.span) <= seal->max_err)) {
         return HYST_ERR_CURVE;
     }
     finish(&out, seal->max_err, b.span);

@@ -9,6 +9,28 @@
 #include "hyst/curve.h"
 #include "hyst/tcm.h"
 
+/* No product fused unless the source marks it (NUM_MULADD, src/num_f32.h):
+ * the C99 pragma for compilers that honour it; GCC takes -ffp-contract=off
+ * (CMakeLists.txt), and its -Wall warns of the pragma. docs/porting.md,
+ * "Floating point". */
+#if !defined(__GNUC__) || defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+
+/* An f32 multiply-add the source marks (Horner's rule, the tables' cubic
+ * pieces, the PI and creep sums): rounded once where HYST_F32_FMA (config.h:
+ * the target's fused instruction, else the C library's fmaf), twice
+ * elsewhere. Doubles are never fused: their results are the same on every
+ * IEEE-754 target. */
+#if HYST_F32_FMA && (defined(__GNUC__) || defined(__clang__))
+#define HYST_F32_MULADD(a, b, c) __builtin_fmaf((a), (b), (c))
+#elif HYST_F32_FMA
+#include <math.h>
+#define HYST_F32_MULADD(a, b, c) fmaf((a), (b), (c))
+#else
+#define HYST_F32_MULADD(a, b, c) ((a) * (b) + (c))
+#endif
+
 /* Rounding unit of hyst_wide_t. */
 #ifdef HYST_NO_DOUBLE
 #define HYST_WIDE_EPS ((hyst_wide_t)FLT_EPSILON)

@@ -20,11 +20,14 @@ HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y 
      * the curve's check): a slow sample derives them */
     switch (n) {
     case 4u:
-        YV(coef[3]) = ((YV(row[6]) * anchor + YV(row[7])) * anchor + YV(row[8])) * anchor +
-                      YV(row[9]);
+        YV(coef[3]) = NUM_MULADD(
+            NUM_MULADD(NUM_MULADD(YV(row[6]), anchor, YV(row[7])), anchor, YV(row[8])), anchor,
+            YV(row[9]));
         /* fall through */
-    case 3u: YV(coef[2]) = (YV(row[3]) * anchor + YV(row[4])) * anchor + YV(row[5]); /* fall through */
-    case 2u: YV(coef[1]) = YV(row[1]) * anchor + YV(row[2]); /* fall through */
+    case 3u:
+        YV(coef[2]) = NUM_MULADD(NUM_MULADD(YV(row[3]), anchor, YV(row[4])), anchor, YV(row[5]));
+        /* fall through */
+    case 2u: YV(coef[1]) = NUM_MULADD(YV(row[1]), anchor, YV(row[2])); /* fall through */
     case 1u: YV(coef[0]) = YV(row[0]); /* fall through */
     default: break;
     }
@@ -37,9 +40,9 @@ HYST_INLINE void TCM_NAME(table_coefs_x)(const hyst_num_t *lin, unsigned n, TCM_
                                          hyst_num_t *coef)
 {
     switch (n) {
-    case 4u: YV(coef[3]) = YV(lin[5]) * x + YV(lin[6]); /* fall through */
-    case 3u: YV(coef[2]) = YV(lin[3]) * x + YV(lin[4]); /* fall through */
-    case 2u: YV(coef[1]) = YV(lin[1]) * x + YV(lin[2]); /* fall through */
+    case 4u: YV(coef[3]) = NUM_MULADD(YV(lin[5]), x, YV(lin[6])); /* fall through */
+    case 3u: YV(coef[2]) = NUM_MULADD(YV(lin[3]), x, YV(lin[4])); /* fall through */
+    case 2u: YV(coef[1]) = NUM_MULADD(YV(lin[1]), x, YV(lin[2])); /* fall through */
     case 1u: YV(coef[0]) = YV(lin[0]); /* fall through */
     default: break;
     }

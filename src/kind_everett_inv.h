@@ -17,16 +17,19 @@
     do {                                                                   \
         TCM_Y q_ = YV((c)[0]), dq_ = 0;                                    \
         switch (n) {                                                       \
-        case 4u: dq_ = q_; q_ = q_ * (w) + YV((c)[1]);                     \
-            dq_ = dq_ * (w) + q_; q_ = q_ * (w) + YV((c)[2]);              \
-            dq_ = dq_ * (w) + q_; q_ = q_ * (w) + YV((c)[3]); break;       \
-        case 3u: dq_ = q_; q_ = q_ * (w) + YV((c)[1]);                     \
-            dq_ = dq_ * (w) + q_; q_ = q_ * (w) + YV((c)[2]); break;       \
-        case 2u: dq_ = q_; q_ = q_ * (w) + YV((c)[1]); break;              \
+        case 4u: dq_ = q_; q_ = NUM_MULADD(q_, (w), YV((c)[1]));           \
+            dq_ = NUM_MULADD(dq_, (w), q_);                                \
+            q_ = NUM_MULADD(q_, (w), YV((c)[2]));                          \
+            dq_ = NUM_MULADD(dq_, (w), q_);                                \
+            q_ = NUM_MULADD(q_, (w), YV((c)[3])); break;                   \
+        case 3u: dq_ = q_; q_ = NUM_MULADD(q_, (w), YV((c)[1]));           \
+            dq_ = NUM_MULADD(dq_, (w), q_);                                \
+            q_ = NUM_MULADD(q_, (w), YV((c)[2])); break;                   \
+        case 2u: dq_ = q_; q_ = NUM_MULADD(q_, (w), YV((c)[1])); break;    \
         default: break;                                                    \
         }                                                                  \
         (p) = q_ * (w);                                                    \
-        (dp) = q_ + (w) * dq_;                                             \
+        (dp) = NUM_MULADD((w), dq_, q_);                                   \
     } while (0)
 
 /* The asymmetric compensator's G (HYST_CURVE_EVERETT_INV): the drive step
@@ -66,14 +69,14 @@ HYST_INLINE TCM_Y TCM_NAME(solve_with)(const hyst_curve_t *c, const hyst_num_t *
             if (f == 0) { /* w is the root; p'(w) = 0 there (a branch's start) */
                 break;
             }
-            next = a + (b - a) * NUM_C(0.5);
+            next = NUM_MULADD(b - a, NUM_C(0.5), a);
             if (!(b - a > tol)) {
                 w = next;
                 break;
             }
         } else {
             const TCM_Y s = NUM_NAME(abs)(step);
-            if (curv * s * s <= 2 * tol * (dp - 2 * curv * s) || s <= tol) {
+            if (curv * s * s <= 2 * tol * NUM_MULADD(-(2 * curv), s, dp) || s <= tol) {
                 w = next;
                 break;
             }

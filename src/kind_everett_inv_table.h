@@ -29,8 +29,9 @@ HYST_INLINE void TCM_NAME(blend_coefs)(const hyst_tcm_t *S, unsigned long k, TCM
     const TCM_Y *r3 = r2 + row_len;
     unsigned i;
     for (i = 0u; i < 4u; ++i) {
-        v[i] = ((YV(S->blend[0]) * r0[i] + YV(S->blend[1]) * r1[i]) + YV(S->blend[2]) * r2[i]) +
-               YV(S->blend[3]) * r3[i];
+        v[i] = NUM_MULADD(YV(S->blend[3]), r3[i],
+                          NUM_MULADD(YV(S->blend[2]), r2[i],
+                                     NUM_MULADD(YV(S->blend[1]), r1[i], YV(S->blend[0]) * r0[i])));
     }
 }
 
@@ -70,9 +71,9 @@ static TCM_NOINLINE TCM_Y TCM_NAME(blend_g)(const hyst_tcm_t *S, TCM_Y u)
 HYST_INLINE TCM_Y TCM_NAME(poly_at)(const hyst_num_t *a, unsigned n, TCM_Y x)
 {
     switch (n) {
-    case 4u: return ((YV(a[0]) * x + YV(a[1])) * x + YV(a[2])) * x + YV(a[3]);
-    case 3u: return (YV(a[0]) * x + YV(a[1])) * x + YV(a[2]);
-    case 2u: return YV(a[0]) * x + YV(a[1]);
+    case 4u: return NUM_MULADD(NUM_MULADD(NUM_MULADD(YV(a[0]), x, YV(a[1])), x, YV(a[2])), x, YV(a[3]));
+    case 3u: return NUM_MULADD(NUM_MULADD(YV(a[0]), x, YV(a[1])), x, YV(a[2]));
+    case 2u: return NUM_MULADD(YV(a[0]), x, YV(a[1]));
     default: return YV(a[0]);
     }
 }
@@ -182,8 +183,8 @@ HYST_INLINE void TCM_NAME(derive_blend)(hyst_tcm_t *S)
     YV(S->blend[3]) = x * (x - 1) * (x - 2) / 6;
     S->table.TCM_YF = c->u.everett.table.TCM_YF +
                       ((fall != 0u ? rows + 1u : 0u) + base) * HYST_INV_TABLE_LEN(n);
-    range = TCM_NAME(poly_at)(c->u.everett.v_end[fall], c->u.everett.degree, anchor) * anchor +
-            YV(c->u.everett.v_end[fall][c->u.everett.degree]);
+    range = NUM_MULADD(TCM_NAME(poly_at)(c->u.everett.v_end[fall], c->u.everett.degree, anchor),
+                       anchor, YV(c->u.everett.v_end[fall][c->u.everett.degree]));
     YV(S->v_scale) = YV(S->table_intervals) / (range > least ? range : least);
     S->cached_k = ULONG_MAX; /* no interval blended yet */
 }

@@ -7,6 +7,7 @@
 #include <float.h>
 
 #include "hyst/config.h"
+#include "hyst_util.h"
 #include <stdint.h>
 
 #define NUM_T float                 /* the C type */
@@ -15,6 +16,7 @@
 #define NUM_VARIANT HYST_VARIANT_F32
 #define NUM_C(v) (v##f)             /* a constant of the type */
 #define NUM_EPS ((float)FLT_EPSILON) /* its rounding unit */
+#define NUM_MULADD(a, b, c) HYST_F32_MULADD(a, b, c) /* src/hyst_util.h */
 #if HYST_KEYED_SEARCH && FLT_RADIX == 2 && FLT_MANT_DIG == 24 && FLT_MAX_EXP == 128
 #define NUM_KEY_T int32_t           /* integer of the same size: keyed search */
 #define NUM_UKEY_T uint32_t

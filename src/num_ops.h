@@ -28,6 +28,11 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
 #ifndef NUM_MUL_G
 #define NUM_MUL_G(a, b) ((a) * (b))
 #endif
+/* a b + c as the source marks it: fused by a type that says so
+ * (src/num_f32.h), else a product and a sum */
+#ifndef NUM_MULADD
+#define NUM_MULADD(a, b, c) (NUM_MUL(a, b) + (c))
+#endif
 #ifndef NUM_G_ONE
 #define NUM_G_ONE 1 /* NUM_MUL_G(a, NUM_G_ONE) is a */
 #endif
@@ -61,7 +66,7 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
 /* a[k] for k < HYST_MAX_DEGREE; the cases above it cannot run (degrees
  * are at most HYST_MAX_DEGREE) and read a[0], not past the array. */
 #define NUM_HORNER_(a, u, acc_, k_) \
-    (NUM_MUL(acc_, u) + (a)[(k_) < HYST_MAX_DEGREE ? (k_) : 0].NUM_F)
+    NUM_MULADD(acc_, u, (a)[(k_) < HYST_MAX_DEGREE ? (k_) : 0].NUM_F)
 /* Degrees 1..4 (n coefficients; also the engine's asymmetric cases). */
 #define NUM_HORNER1_(a, u) ((a)[0].NUM_F)
 #define NUM_HORNER2_(a, u) NUM_HORNER_(a, u, NUM_HORNER1_(a, u), 1)
@@ -92,6 +97,10 @@ HYST_INLINE NUM_T NUM_NAME(horner)(const hyst_num_t *a, unsigned n, NUM_T u)
 }
 
 #ifndef NUM_FIXED /* a fixed-point type brings its own (src/num_q31.h) */
+/* A cubic piece at t: c0 + t (c1 + t (c2 + t c3)), three marked multiply-adds. */
+#define NUM_CUBIC_(c0, c1, c2, c3, t) \
+    NUM_MULADD(t, NUM_MULADD(t, NUM_MULADD(t, c3, c2), c1), c0)
+
 /* A tabulated inverse (curve.h, HYST_CURVE_INV_TABLE) at s >= 0: interval
  * k = floor(s), one cubic in t = s - k (exact: k <= s < 2k for k >= 1).
  * k <= N: s <= N (1 + 2 eps) by construction of the table's scale, and
@@ -101,7 +110,7 @@ HYST_INLINE NUM_T NUM_NAME(table_g)(const NUM_T *tab, NUM_T s)
     const unsigned long k = (unsigned long)s; /* 16-bit unsigned on C28x */
     const NUM_T t = s - (NUM_T)k;
     const NUM_T *c = tab + 4u * k;
-    return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+    return NUM_CUBIC_(c[0], c[1], c[2], c[3], t);
 }
 #endif
 

@@ -80,7 +80,7 @@ HYST_INLINE NUM_T NUM_NAME(pi_step_impl)(hyst_pi_t *P, NUM_T x)
         const NUM_T up = x - r[i];
         const NUM_T zi = up > low ? up : low;
         z[i] = zi;
-        y += w[i] * zi;
+        y = NUM_MULADD(w[i], zi, y);
     }
     P->status = HYST_OK;
     P->x_prev.NUM_F = x;

@@ -241,7 +241,7 @@ HYST_INLINE TCM_Y TCM_NAME(fast_end)(hyst_tcm_t *S, TCM_X x, TCM_Y g)
 /* A cubic piece at t in [0, 1]: c0 + t (c1 + t (c2 + t c3)). */
 HYST_INLINE TCM_Y TCM_NAME(cubic_of)(TCM_Y c0, TCM_Y c1, TCM_Y c2, TCM_Y c3, TCM_Y t)
 {
-    return c0 + t * (c1 + t * (c2 + t * c3));
+    return NUM_CUBIC_(c0, c1, c2, c3, t);
 }
 HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
 {

@@ -25,11 +25,18 @@
  * | HYST_MONOTONE_DEPTH | 20      | dyadic depth of the monotonicity proof at init              | no     |
  * | HYST_NO_DOUBLE      | off     | init-time arithmetic in float (targets without double; hyst_poly_t holds floats) | yes |
  * | HYST_KEYED_SEARCH   | 1       | search turning points by IEEE bit patterns (0 under -ffast-math) | no |
+ * | HYST_F32_FMA        | see below | the f32 variant's marked multiply-adds rounded once (fused) | no |
  *
  * HYST_ENABLE_F64 defaults to 1 where double is a 64-bit type with hardware
  * support or on hosts, and to 0 on 32-bit Arm cores without a double FPU
  * (Cortex-M0..M4F: instances and curves then hold 4-byte numbers) and where
  * double is a float (AVR, C28x without fpu64).
+ *
+ * HYST_F32_FMA defaults to 1 where the compiler reports a fused
+ * single-precision instruction (Cortex-M4F, M7, M33 with an FPU) and to 0
+ * elsewhere; the CMake build sets it to 1 on hosts (the C library's fmaf),
+ * so that float32 results there equal a Cortex-M4F's bit for bit
+ * (docs/porting.md, "Floating point").
  *
  * "layout" options change the size of public structs. Every translation
  * unit that includes hyst and the library itself must agree on them; the
@@ -113,6 +120,14 @@
 
 #ifndef HYST_MONOTONE_DEPTH
 #define HYST_MONOTONE_DEPTH 20
+#endif
+
+#ifndef HYST_F32_FMA
+#if defined(__ARM_FEATURE_FMA) || defined(__FP_FAST_FMAF)
+#define HYST_F32_FMA 1
+#else
+#define HYST_F32_FMA 0
+#endif
 #endif
 
 #ifndef HYST_KEYED_SEARCH

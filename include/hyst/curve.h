@@ -481,20 +481,23 @@ hyst_status_t hyst_curve_table_seal(const hyst_curve_t *inv, hyst_table_seal_t *
  *
  * Checks the seal (the table as stored, its shape, its error:
  * HYST_ERR_CRC when they differ, e.g. a damaged flash image or the wrong
- * rows or intervals), then that the table is this model's: at a few knots
- * of every row (three per row; for a symmetric curve seven) the model at
+ * rows or intervals), then that the table is this model's, and then what
+ * the seal claims. A symmetric curve's table: at seven knots the model at
  * the stored drive step gives the knot's output step back within 8 units
  * of rounding (of its terms, of the drive step and the solver's width), the
- * row's end is the branch's whole drive step, and the intervals evaluated
- * exactly are marked alike in every row (HYST_ERR_CURVE otherwise: a table
- * of another model;
- * the table is in output steps relative to a branch's whole step, so the
- * model times a constant has the same table, and is accepted), and then
- * what the seal claims: every piece the table evaluates is measured as the
- * build measures it, within HYST_INV_TABLE_TOL and within the error sealed
- * (HYST_ERR_CURVE otherwise: pieces changed and sealed again). The cost is
- * that measurement's, about the build's (the knots are not solved again);
- * what is saved is the table's RAM. The
+ * end is the drive span, and every piece the table evaluates is measured
+ * as the build measures it, within HYST_INV_TABLE_TOL and the error sealed.
+ * The asymmetric kind's table, in one pass over it: every knot of every row
+ * on the model's branch as above, each row's end the branch's whole drive
+ * step, the intervals evaluated exactly marked alike in every row, and
+ * every piece the build's (a cubic Hermite piece ending at the next knot,
+ * its slopes within Fritsch and Carlson's limits and continuing across the
+ * knot), so the build's measurement, sealed, holds; no piece is measured
+ * again. HYST_ERR_CURVE otherwise: a table of another model, or pieces
+ * changed and sealed again (the table is in output steps relative to a
+ * branch's whole step, so the model times a constant has the same table,
+ * and is accepted). What is saved is the table's RAM, and for the
+ * asymmetric kind most of the build's time (docs/results.md). The
  * table must hold the counts' numbers
  * (HYST_INV_TABLE_LEN(@p intervals), HYST_EVERETT_INV_TABLE_LEN(@p rows,
  * @p intervals)) and outlive the curve, unchanged.

@@ -176,7 +176,7 @@ int cli_header_table(const char *cmd, const char *model, char *buf, size_t size,
         " * double and sealed: %s%lu intervals%s, %lu of them solved per sample instead;\n"
         " * worst error measured by the build %.3g (float) / %.3g (double) of the drive\n"
         " * range. Firmware takes it from flash instead of building it at init (checks:\n"
-        " * the seal, then a few knots against the model):\n",
+        " * the seal, then that it is this model's table):\n",
         everett ? "" : "f0^-1 in ", (unsigned long)intervals,
         everett ? " per row" : "", (unsigned long)(b32.exact), (double)b32.seal.max_err,
         (double)b64.seal.max_err);
