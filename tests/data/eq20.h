@@ -17,7 +17,7 @@ static const hyst_poly_t eq20 = {
  * double and sealed: f0^-1 in 256 intervals, 0 of them solved per sample instead;
  * worst error measured by the build 6.32e-07 (float) / 7.06e-11 (double) of the drive
  * range. Firmware takes it from flash instead of building it at init (checks:
- * the seal, then a few knots against the model):
+ * the seal, then that it is this model's table):
  *   hyst_curve_from_poly(&fwd, &eq20);
  *   hyst_curve_inverse_table_const(&comp, &fwd, eq20_table, eq20_INTERVALS,
  *                                  &eq20_seal);
