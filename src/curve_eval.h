@@ -317,7 +317,12 @@ static NUM_T NUM_NAME(poly_inv_g)(const hyst_curve_t *c, NUM_T e)
  * evaluates (the end of the range always does). Monotone in s, as
  * poly_inv_g: the bracket is the same for every s of a run of marked
  * intervals, each decision is monotone in s, and the answer is the
- * bracket's lower end. At most ~log2(span / ulp) evaluations of G. */
+ * bracket's lower end. At most ~log2(span / ulp) evaluations of G.
+ * floor(s) < N: the caller's table_g() read that interval, and interval N
+ * (the end of the range) is never marked. G^-1(0) = 0 exactly, as
+ * poly_inv_g (the last line): where G dips below 0 next to lo (within the
+ * curve's rounding), the bisection moves a to where G is back at 0, and a
+ * descent to y_lo would stop short of lo. */
 static NUM_T NUM_NAME(table_exact)(const hyst_curve_t *c, NUM_T s)
 {
     const NUM_T *tab = c->u.inv_table.table.NUM_F;
@@ -325,17 +330,13 @@ static NUM_T NUM_NAME(table_exact)(const hyst_curve_t *c, NUM_T s)
     size_t lo = (size_t)(unsigned long)s, hi = lo + 1u;
     NUM_T a, b;
     unsigned it;
-    if (lo > c->u.inv_table.intervals) {
-        lo = c->u.inv_table.intervals; /* unreachable: the table's scale */
-        hi = lo;
-    }
     while (lo > 0u && tab[4u * lo] < 0) {
         --lo;
     }
     while (hi < c->u.inv_table.intervals && tab[4u * hi] < 0) {
         ++hi;
     }
-    a = tab[4u * lo] < 0 ? 0 : tab[4u * lo];
+    a = lo > 0u ? tab[4u * lo] : 0; /* knot 0's drive: 0, marked or not */
     b = tab[4u * hi];
     for (it = 0u; it < 2u * (unsigned)(sizeof(NUM_T) * CHAR_BIT); ++it) {
         const NUM_T m = (a + b) * NUM_C(0.5);
@@ -349,7 +350,7 @@ static NUM_T NUM_NAME(table_exact)(const hyst_curve_t *c, NUM_T s)
             b = m;
         }
     }
-    return a;
+    return s > 0 ? a : 0;
 }
 
 /* E(lo + w span, lo) of an asymmetric curve or its inverse: the branch

@@ -424,6 +424,37 @@ static void test_tiny_output_range(void)
     TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.5f, (float)hyst_step(&S, (hyst_real_t)(normal / 2)));
 }
 
+/* f0 = x^9/64 + 63/64 x^8 + x^7/64 + 23/64 on [-1/32, 125/32]: f0' < 0 on
+ * [lo, -0.014), a dip of 4e-13 below f0(lo), within the rounding of the
+ * range (5.7e4), so the curve is accepted and its first intervals are
+ * evaluated exactly. G^-1(0) must be 0: a desired output at or below y_lo
+ * after a rise to y_hi drives to lo (the model back at A0). The bisection
+ * gave the drive where G is back at 0 (lo + 0.058), and the model, fed
+ * that drive, missed y_lo by 6.5e3. */
+static void test_descent_to_y_lo_drives_lo_next_to_a_dip(void)
+{
+    static const hyst_poly_t dip = {9u, HYST_REAL_C(-0.03125), HYST_REAL_C(3.90625),
+                                    {0.015625, 0.984375, 0.015625, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                                     0.359375}};
+    static const size_t counts[] = {1u, 8u, HYST_INV_TABLE};
+    hyst_t M;
+    unsigned k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&fwd, &dip));
+    for (k = 0u; k < sizeof counts / sizeof counts[0]; ++k) {
+        hyst_real_t x, y;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_table(&K, &inv, &dip, table, counts[k],
+                                                                il, jl, ir, jr, 8u));
+        TEST_ASSERT_TRUE(inv.u.inv_table.exact > 0u);
+        TEST_ASSERT_TRUE(hyst_curve_g(&inv, 0) == 0);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&M, &fwd, xl, yl, xr, yr, 8u));
+        (void)hyst_step(&M, hyst_step(&K, inv.hi.HYST_R * 2)); /* clamped to y_hi */
+        x = hyst_step(&K, inv.lo.HYST_R - 1); /* clamped to y_lo */
+        TEST_ASSERT_TRUE(x == dip.lo);
+        y = hyst_step(&M, x);
+        TEST_ASSERT_TRUE(y == fwd.y_lo.HYST_R);
+    }
+}
+
 int main(void)
 {
     hyst_port_init();
@@ -439,6 +470,7 @@ int main(void)
     RUN_TEST(test_define_and_init_macros);
     RUN_TEST(test_constructor_checks);
     RUN_TEST(test_tiny_output_range);
+    RUN_TEST(test_descent_to_y_lo_drives_lo_next_to_a_dip);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_code_variant_runs_the_table);
 #endif
