@@ -119,74 +119,9 @@ function parts = model_args(p)
 end
 
 function text = compensator_text(p, name, intervals, rows)
-% The compensator's table built by the library (hyst_mex inv_table or
-% inv_table_everett) in float and in double, sealed, as hyst header
-% --compensator writes it.
-  everett = strcmp(p.kind, 'everett');
-  classes = {'single', 'double'};
-  built = cell(2, 4);                 % per class: table, crc, max_err, exact
-  for k = 1:2
-    if everett
-      [built{k, :}] = hyst_mex('inv_table_everett', p.degree, p.lo, p.hi, p.y_lo, p.terms, ...
-                               intervals, rows, classes{k});
-    else
-      [built{k, :}] = hyst_mex('inv_table', p.coeffs, p.lo, p.hi, intervals, classes{k});
-    end
-  end
-  if everett
-    what = {'', ' per row'};
-    len = sprintf('HYST_EVERETT_INV_TABLE_LEN(%s_ROWS, %s_INTERVALS)', name, name);
-    use = sprintf([' *   hyst_curve_from_everett(&fwd, &%s);\n' ...
-                   ' *   hyst_curve_everett_inverse_table_const(&comp, &fwd, %s_table, ' ...
-                   '%s_ROWS,\n *                                          %s_INTERVALS, ' ...
-                   '&%s_seal);\n *   hyst_init_curve(&S, &comp, ...);  // comp outlives S */\n' ...
-                   '#define %s_ROWS %du\n'], name, name, name, name, name, name, rows);
-  else
-    what = {'f0^-1 in ', ''};
-    len = sprintf('HYST_INV_TABLE_LEN(%s_INTERVALS)', name);
-    use = sprintf([' *   hyst_curve_from_poly(&fwd, &%s);\n' ...
-                   ' *   hyst_curve_inverse_table_const(&comp, &fwd, %s_table, %s_INTERVALS,\n' ...
-                   ' *                                  &%s_seal);\n' ...
-                   ' *   hyst_init_curve(&S, &comp, ...);  // comp outlives S */\n'], ...
-                  name, name, name, name);
-  end
-  about = ['\n/* The compensator''s table, built by ''hyst header --compensator'' in float and in\n' ...
-           ' * double and sealed: %s%d intervals%s, %d of them solved per sample instead;\n' ...
-           ' * worst error measured by the build %.3g (float) / %.3g (double) of the drive\n' ...
-           ' * range. Firmware takes it from flash instead of building it at init (checks:\n' ...
-           ' * the seal, then that it is this model''s table):\n'];
-  text = [sprintf(about, what{1}, intervals, what{2}, built{1, 4}, built{1, 3}, built{2, 3}), ...
-          use, sprintf('#define %s_INTERVALS %du\n#ifdef HYST_USE_DOUBLE\n', name, intervals), ...
-          table_text(name, len, built(2, :)), sprintf('#else\n'), ...
-          table_text(name, len, built(1, :)), sprintf('#endif\n')];
-end
-
-function text = table_text(name, len, built)
-% One variant's table, an interval (four numbers) per line, and its seal.
-% BUILT: the table (its class the variant's), the seal's crc and max_err.
-  [table, crc, max_err] = built{1:3};
-  if isa(table, 'single')
-    type = 'float';
-    numbers = strcat(c_numbers(double(table), 9), 'f');
-  else
-    type = 'double';
-    numbers = c_numbers(table, 17);
-  end
-  n = numel(numbers);
-  before = repmat({' '}, 1, n);
-  before(1:4:n) = {sprintf('\n    ')};
-  after = repmat({','}, 1, n);
-  after{n} = '';
-  parts = [before; numbers(:)'; after];
-  seal = c_numbers(max_err, 17);
-  text = [sprintf('static const %s %s_table[%s] = {', type, name, len), parts{:}, ...
-          sprintf('};\nstatic const hyst_table_seal_t %s_seal = {0x%sul, %s};\n', name, ...
-                  dec2hex(crc, 8), seal{1})];
-end
-
-function t = c_numbers(v, digits)
-% The numbers V as C floating literals of DIGITS significant digits, each
-% with a '.' or an exponent (the host tool's cli_c_number()): a cell row.
-  t = strsplit(sprintf(sprintf('%%.%dg\n', digits), v), sprintf('\n'));
-  t = regexprep(t(1:end - 1), '^(-?[0-9]+)$', '$1.0');
+% The compensator's table built by the library in float and in double,
+% sealed: the text hyst header --compensator writes, from the same C
+% (tools/model_text, the gateway's header_table).
+  parts = model_args(p);
+  text = hyst_mex('header_table', name, parts{:}, intervals, rows);
 end

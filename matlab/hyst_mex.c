@@ -30,6 +30,8 @@
  *   t = hyst_mex('model_write', kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau, cweight)
  *   t = hyst_mex('header_open', name, kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau,
  *                cweight), hyst_mex('header_close', name)
+ *   t = hyst_mex('header_table', name, kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau,
+ *                cweight, intervals, rows)   the compensator's table of a header
  *
  * sim_everett runs the asymmetric kind (hyst_everett_t; terms are e[i-1][j]
  * of w^i t^j for i = 1..degree, then j = 0..degree-i), inv_everett its
@@ -43,8 +45,8 @@
  * (hyst_*_init_inverse_table). err, of inv and inv_everett: the tabulated
  * compensator's worst error measured by its init, of the drive range
  * (hyst_curve_inverse_error(); 0 for an exact or solved one).
- * inv_table and inv_table_everett build the tabulated compensator alone, as
- * `hyst header --compensator` does for hyst_header.m: hyst_*_curve_from_poly()
+ * inv_table and inv_table_everett build the tabulated compensator alone,
+ * the numbers a header's table must hold: hyst_*_curve_from_poly()
  * then hyst_*_curve_inverse_table() (HYST_INV_TABLE_LEN(intervals) numbers),
  * or hyst_*_curve_from_everett() then hyst_*_curve_everett_inverse_table()
  * (HYST_EVERETT_INV_TABLE_LEN(rows, intervals)); intervals 1..2^20 and rows
@@ -54,6 +56,10 @@
  * class; crc, max_err: its seal (hyst_curve_table_seal(); the error
  * rounded up to a float); exact: the intervals solved per sample instead;
  * err: hyst_curve_inverse_error().
+ * header_table: the text `hyst header --compensator` puts between a header's
+ * open and close, from the same C (model_text_header_table()); intervals
+ * 1..2^20 and rows 3..4096 (kind everett; another kind ignores it) are
+ * checked before anything is allocated.
  * config: a struct of HYST_INV_TABLE (inv_table), HYST_EVERETT_INV_ROWS
  * (everett_inv_rows), HYST_EVERETT_INV_INTERVALS (everett_inv_intervals),
  * HYST_INV_TABLE_TOL (inv_table_tol) and HYST_MAX_DEGREE (max_degree), as
@@ -1156,6 +1162,40 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     plhs[0] = s;
 }
 
+/* header_table: prhs = name, the model's parts as header_open takes them,
+ * intervals, rows; plhs = the compensator's table of the header, or the
+ * library's refusal (hyst_header: ...). */
+static void run_header_table(mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    model_text_t m;
+    char name[256], *buf;
+    size_t intervals, rows, size, len = 0u;
+    hyst_status_t st = HYST_OK;
+    if (nrhs != 13) {
+        usage("header_table takes NAME, kind, lo, hi, delay, coeffs, degree, y_lo, terms, "
+              "creep_tau, creep_weight, intervals, rows");
+    }
+    if (!mxIsChar(prhs[0]) || mxGetString(prhs[0], name, sizeof name) != 0 ||
+        !model_text_identifier(name)) {
+        usage("NAME must be a C identifier");
+    }
+    model_text_arg(&m, prhs + 1, NULL, "hyst_header");
+    intervals = count(prhs[11], "intervals", 1.0, INTERVALS_MAX); /* before allocating */
+    rows = m.kind == MODEL_TEXT_EVERETT ? count(prhs[12], "rows", ROWS_MIN, ROWS_MAX) : 0u;
+    size = model_text_header_table_size(&m, rows, intervals);
+    buf = (char *)mxMalloc(size + 1u);
+    if (model_text_header_table(buf, size, &len, name, &m, rows, intervals, 0, &st) != 0) {
+        mxFree(buf);
+        if (st != HYST_OK) {
+            fail_status("hyst_header", st);
+        }
+        usage("text too long");
+    }
+    buf[len] = '\0';
+    plhs[0] = mxCreateString(buf);
+    mxFree(buf);
+}
+
 /* model_write: prhs = kind, lo, hi, delay, coeffs, degree, y_lo, terms,
  * ctau, cweight; plhs = the file's text. header_open: prhs = name and the
  * same; plhs = the header's guard, declaration and creep term.
@@ -1241,6 +1281,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
     } else if (strcmp(cmd, "model_write") == 0 || strcmp(cmd, "header_open") == 0 ||
                strcmp(cmd, "header_close") == 0) {
         run_model_text(cmd, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "header_table") == 0) {
+        run_header_table(plhs, nrhs - 1, prhs + 1);
     } else {
         usage("unknown command (version, status_str, config, sim, inv, sim_everett, inv_everett, "
               "inv_table, inv_table_everett, fit, fit_everett, creep, holdout, holdout_everett)");

@@ -6,7 +6,6 @@ coefficients highest power first) and ``everett`` (the asymmetric kind's
 branch function E)."""
 import math
 import os
-import struct
 import tempfile
 
 MAGIC = "hyst-model-text 1"
@@ -148,31 +147,9 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
         raise
 
 
-def _c_number(v, digits=17):
-    """v as a C floating literal of `digits` significant digits (always a
-    '.' or an exponent), as the CLI's cli_c_number() prints it."""
-    t = f"{float(v):.{digits}g}"
-    return t if any(ch in t for ch in ".eEn") else t + ".0"
-
-
-def _literal(v):
-    """A 17-digit C literal in HYST_REAL_C() (exact in a double build)."""
-    return f"HYST_REAL_C({_c_number(v)})"
-
-
-def _as_float(v):
-    """v rounded to float32, as a float build reads its header literal."""
-    return struct.unpack("f", struct.pack("f", float(v)))[0]
-
-
-def _table_literal(v, f32):
-    """A table number as a C literal of its type (float: 9 digits, suffix f)."""
-    return _c_number(v, 9) + "f" if f32 else _c_number(v)
-
-
 def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows):
-    """The compensator's table in float and in double, sealed, as
-    ``hyst header --compensator`` writes it (docs/cli.md)."""
+    """The compensator's table in float and in double, sealed: the text
+    ``hyst header --compensator`` writes, from the same C (tools/model_text)."""
     from . import _hyst  # the extension: this module stays importable without it
     everett = kind == "everett"
     if rows is not None and not everett:
@@ -180,41 +157,14 @@ def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals
                          "tabulates f0^-1 in one row (intervals alone)")
     if intervals is None:
         intervals = _hyst.EVERETT_INV_INTERVALS if everett else _hyst.INV_TABLE
-    if everett and rows is None:
-        rows = _hyst.EVERETT_INV_ROWS
-    built = {}
-    for f32, cls in ((True, _hyst.ModelF32), (False, _hyst.ModelF64)):
-        r = _as_float if f32 else float
-        if everett:
-            c = cls(degree, r(lo), r(hi), r(y_lo), [r(t) for t in terms], 2, True, intervals, rows)
-        else:
-            c = cls([r(v) for v in coeffs], r(lo), r(hi), 2, True, intervals)
-        built[f32] = (c.table, c.table_seal)
-    size = (f"HYST_EVERETT_INV_TABLE_LEN({name}_ROWS, {name}_INTERVALS)" if everett
-            else f"HYST_INV_TABLE_LEN({name}_INTERVALS)")
-    use = (f" *   hyst_curve_from_everett(&fwd, &{name});\n"
-           f" *   hyst_curve_everett_inverse_table_const(&comp, &fwd, {name}_table, {name}_ROWS,\n"
-           f" *                                          {name}_INTERVALS, &{name}_seal);\n"
-           if everett else
-           f" *   hyst_curve_from_poly(&fwd, &{name});\n"
-           f" *   hyst_curve_inverse_table_const(&comp, &fwd, {name}_table, {name}_INTERVALS,\n"
-           f" *                                  &{name}_seal);\n")
-    text = ("\n/* The compensator's table in float and in double, sealed; worst error measured by "
-            f"the build\n * {built[True][1][1]:.3g} (float) / {built[False][1][1]:.3g} (double) "
-            "of the drive range. Firmware takes it from flash:\n" + use +
-            " *   hyst_init_curve(&S, &comp, ...);  // comp outlives S */\n")
-    if everett:
-        text += f"#define {name}_ROWS {rows}u\n"
-    text += f"#define {name}_INTERVALS {intervals}u\n#ifdef HYST_USE_DOUBLE\n"
-    for f32 in (False, True):
-        table, (crc, max_err) = built[f32]
-        text += f"static const {'float' if f32 else 'double'} {name}_table[{size}] = {{"
-        text += ",".join(("\n    " if i % 4 == 0 else " ") + _table_literal(v, f32)
-                         for i, v in enumerate(table))
-        text += (f"}};\nstatic const hyst_table_seal_t {name}_seal = "
-                 f"{{0x{crc:08X}ul, {_table_literal(max_err, False)}}};\n")
-        text += "#else\n" if not f32 else "#endif\n"
-    return text
+    if rows is None:
+        rows = _hyst.EVERETT_INV_ROWS if everett else 0
+    if isinstance(intervals, bool) or isinstance(rows, bool) or int(intervals) != intervals \
+            or int(rows) != rows or intervals < 0 or rows < 0:
+        raise ValueError("intervals and rows are whole numbers")
+    return _hyst.model_header_table(name, kind, float(lo), float(hi), list(coeffs or []),
+                                    float(degree or 0), float(y_lo or 0.0), list(terms or []),
+                                    int(intervals), int(rows))
 
 
 def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,

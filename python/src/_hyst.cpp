@@ -926,6 +926,32 @@ std::string model_header(const std::string &name, bool open, const std::string &
     return std::string(buf.data(), len);
 }
 
+/* A header's compensator table (model_text_header_table()), as `hyst header
+ * --compensator` writes it between the header's open and close; rows: kind
+ * everett only. Sizes beyond the tool's (intervals 2^20, rows 4096) are
+ * refused before anything is allocated, the rest by the library. */
+std::string model_header_table(const std::string &name, const std::string &kind, double lo,
+                               double hi, const std::vector<double> &coeffs, double degree,
+                               double y_lo, const std::vector<double> &terms, size_t intervals,
+                               size_t rows)
+{
+    if (!model_text_identifier(name.c_str()) || name.size() != std::strlen(name.c_str())) {
+        throw nb::value_error(("'" + name + "' is not a C identifier").c_str());
+    }
+    if (intervals > (1u << 20) || rows > 4096u) {
+        throw nb::value_error("intervals: at most 1048576 (per row); rows: at most 4096");
+    }
+    const model_text_t m = model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, {}, {});
+    std::vector<char> buf(model_text_header_table_size(&m, rows, intervals));
+    size_t len = 0u;
+    hyst_status_t st = HYST_OK;
+    if (model_text_header_table(buf.data(), buf.size(), &len, name.c_str(), &m, rows, intervals,
+                                0, &st) != 0) {
+        raise_status(st != HYST_OK ? st : HYST_ERR_NOSPACE, "the compensator's table");
+    }
+    return std::string(buf.data(), len);
+}
+
 /* ---- fit's hold-out choice, the `hyst` tool's (tools/cli/fit_select.c) ---- */
 
 /* A scored candidate as the dict fit() lists. */
@@ -1294,6 +1320,9 @@ NB_MODULE(_hyst, m)
     m.def("model_header", &model_header, "name"_a, "open"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
           "A firmware header's opening (the model) or close, as `hyst header` writes them.");
+    m.def("model_header_table", &model_header_table, "name"_a, "kind"_a, "lo"_a, "hi"_a,
+          "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "intervals"_a, "rows"_a,
+          "A firmware header's compensator table, as `hyst header --compensator` writes it.");
     m.def("select", &select_candidates, "x"_a, "y"_a, "kinds"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a, "creep_tau"_a,
           "hyst fit's automatic choice (fit_search(); delay < 0: chosen, scaled to the drive and "

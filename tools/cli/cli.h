@@ -149,6 +149,7 @@ typedef model_text_t cli_model_t;
 #define cli_c_identifier model_text_identifier
 #define cli_append model_text_append
 #define cli_model_delay model_text_delay
+#define cli_model_poly_as_read model_text_poly_as_read
 
 /* Reads a model file; 0, or 1 after a message naming file, line and field. */
 int cli_model_read(const char *cmd, const char *path, cli_model_t *m);
@@ -159,26 +160,6 @@ int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
  * 'static const hyst_everett_t NAME = {...};') to buf[*len..size); 1 when
  * it did not fit. */
 int cli_header_model(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m);
-/* header --compensator (header_table.c): the model's compensator table in
- * float and in double, sealed, for the const constructors (curve.h);
- * appended like the model. The size of buffer it needs at most, and the
- * text: 0, or 1 after a message (the library's refusal, or too long). */
-size_t cli_header_table_size(const cli_model_t *m, size_t rows, size_t intervals);
-int cli_header_table(const char *cmd, const char *model, char *buf, size_t size, size_t *len,
-                     const char *name, const cli_model_t *m, size_t rows, size_t intervals,
-                     int sealed);
-/* With --sealed (kind poly): the compensator's curve sealed with its table,
- * 'NAME_comp_sealed', of one real type (the other NULL): 1 when it did not fit. */
-int cli_header_sealed_inverse(char *buf, size_t size, size_t *len, const char *name,
-                              const hyst_f32_sealed_inverse_t *s32,
-                              const hyst_f64_sealed_inverse_t *s64);
-
-/* v as a float build reads the header's literal of it: HYST_REAL_C(lit) is
- * lit##f, converted directly to float (header_table.c). */
-double cli_as_float_literal(double v);
-/* The f0 of a poly model as a build reads the header's hyst_poly_t: a
- * float build (f32) each literal as a float, a double build exactly. */
-void cli_model_poly_as_read(const cli_model_t *m, int f32, hyst_poly_t *p);
 /* header --sealed (header_sealed.c): the model's prepared curve in float
  * and in double (and, with q31, the q31 model on codes code_lo..code_hi),
  * checked and sealed for hyst_*_init_sealed(); appended like the model:

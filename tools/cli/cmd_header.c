@@ -72,6 +72,7 @@ int cmd_header(int argc, char **argv)
     size_t len = 0u, size = 8192u;
     unsigned long intervals = 0ul, rows = 0ul; /* 0: not given */
     unsigned long code_lo = 0ul, code_hi = 0ul;
+    hyst_status_t st = HYST_OK;
     int kind, over, compensator = 0, sealed = 0, codes = 0, failed;
     cli_args_init(&a, "header", argc, argv);
     while ((kind = cli_args_next(&a, &pos)) != CLI_END) {
@@ -139,7 +140,7 @@ int cmd_header(int argc, char **argv)
         return 1;
     }
     if (compensator) {
-        size += cli_header_table_size(&m, (size_t)rows, (size_t)intervals);
+        size += model_text_header_table_size(&m, (size_t)rows, (size_t)intervals);
     }
     if ((text = (char *)malloc(size)) == NULL) {
         return cli_fail(a.cmd, "out of memory for the header's text (%lu bytes)",
@@ -168,10 +169,12 @@ int cmd_header(int argc, char **argv)
     }
     over |= cli_header_open(text, size, &len, name, &m);
     if (over == 0 && compensator &&
-        cli_header_table(a.cmd, cli_file_name(model), text, size, &len, name, &m, (size_t)rows,
-                         (size_t)intervals, sealed) != 0) {
+        model_text_header_table(text, size, &len, name, &m, (size_t)rows, (size_t)intervals,
+                                sealed, &st) != 0) {
         free(text);
-        return 1;
+        return st != HYST_OK ? cli_fail(a.cmd, "model file %s: the compensator's table: %s",
+                                        cli_file_name(model), hyst_status_str(st))
+                             : cli_fail(a.cmd, "%s: header text too long", path);
     }
     if (over == 0 && sealed &&
         cli_header_sealed(a.cmd, cli_file_name(model), text, size, &len, name, &m, codes,

@@ -13,15 +13,6 @@
 #include <stdio.h>
 #include <string.h>
 
-/* A number of a sealed struct as a C literal of its type (float: 9 digits
- * and the suffix f, read back to the same float; double: 17). */
-static int real(char *buf, size_t size, size_t *len, const char *sep, double v, int f32)
-{
-    char lit[48];
-    cli_c_number(lit, sizeof lit - 1u, v, f32 ? 9 : 17);
-    return cli_append(buf, size, len, "%s%s%s", sep, lit, f32 ? "f" : "");
-}
-
 /* The sealed curves of one build's reading of the model (f32: a float
  * build's, f64: a double build's). */
 typedef struct {
@@ -70,11 +61,12 @@ static int emit(char *buf, size_t size, size_t *len, const char *name, const sea
                           "static const hyst_%s_sealed_poly_t %s_sealed = {\n    0x%08lXul, %uu,\n   ",
                           f32 ? "f32" : "f64", name, s->seal & 0xFFFFFFFFul, s->degree);
     for (k = 0u; k < 6u; ++k) {
-        over |= real(buf, size, len, k == 0u ? " " : k == 4u ? ",\n    " : ", ", s->num[k], f32);
+        over |= model_text_append_real(buf, size, len, k == 0u ? " " : k == 4u ? ",\n    " : ", ",
+                                       s->num[k], f32);
     }
     over |= cli_append(buf, size, len, ",\n    {");
     for (k = 0u; k < s->degree; ++k) {
-        over |= real(buf, size, len, k ? ", " : "", s->a[k], f32);
+        over |= model_text_append_real(buf, size, len, k ? ", " : "", s->a[k], f32);
     }
     over |= cli_append(buf, size, len, "}};\n");
     if (q31) {
@@ -131,32 +123,4 @@ int cli_header_sealed(const char *cmd, const char *model, char *buf, size_t size
     over |= emit(buf, size, len, name, &s32, 1, q31);
     over |= cli_append(buf, size, len, "#endif\n");
     return over != 0 ? cli_fail(cmd, "header text too long") : 0;
-}
-
-int cli_header_sealed_inverse(char *buf, size_t size, size_t *len, const char *name,
-                              const hyst_f32_sealed_inverse_t *s32,
-                              const hyst_f64_sealed_inverse_t *s64)
-{
-    const int f32 = s32 != NULL;
-    const unsigned n = f32 ? s32->degree : s64->degree;
-    const double num[7] = {f32 ? (double)s32->lo : s64->lo,     f32 ? (double)s32->hi : s64->hi,
-                           f32 ? (double)s32->y_lo : s64->y_lo, f32 ? (double)s32->y_hi : s64->y_hi,
-                           f32 ? (double)s32->unit : s64->unit, f32 ? (double)s32->span : s64->span,
-                           f32 ? (double)s32->u_per_d : s64->u_per_d};
-    unsigned k;
-    int over = cli_append(buf, size, len,
-                          "static const hyst_%s_sealed_inverse_t %s_comp_sealed = {\n    0x%08lXul, %uu,\n   ",
-                          f32 ? "f32" : "f64", name,
-                          (f32 ? s32->seal : s64->seal) & 0xFFFFFFFFul, n);
-    for (k = 0u; k < 7u; ++k) {
-        over |= real(buf, size, len, k == 0u ? " " : k == 4u ? ",\n    " : ", ", num[k], f32);
-    }
-    over |= cli_append(buf, size, len, ",\n    {");
-    for (k = 0u; k < n; ++k) {
-        over |= real(buf, size, len, k ? ", " : "", f32 ? (double)s32->a[k] : s64->a[k], f32);
-    }
-    over |= cli_append(buf, size, len, "},\n    %luul, %luul,",
-                       f32 ? s32->intervals : s64->intervals, f32 ? s32->exact : s64->exact);
-    over |= real(buf, size, len, " ", (double)(f32 ? s32->max_err : s64->max_err), 1);
-    return over | cli_append(buf, size, len, "};\n");
 }

@@ -92,6 +92,37 @@ int model_text_header_open(char *buf, size_t size, size_t *len, const char *name
                            const model_text_t *m);
 int model_text_header_close(char *buf, size_t size, size_t *len, const char *name);
 
+/* The compensator's table of a header (hyst header --compensator), put
+ * between model_text_header_open() and model_text_header_close(): built by
+ * the library in float and in double (the float one from the model's
+ * numbers as a float build reads them), sealed, for
+ * hyst_curve_inverse_table_const() (kind poly) or
+ * hyst_curve_everett_inverse_table_const() (kind everett), with NAME_table,
+ * NAME_seal, NAME_INTERVALS (and NAME_ROWS, kind everett); with sealed
+ * (kind poly) also the compensator's curve sealed with its table,
+ * NAME_comp_sealed. rows and intervals as the library's table builders take
+ * them (rows: kind everett only). Appended to buf[*len..size): 0, or 1 with
+ * *status the library's refusal (or HYST_ERR_NOSPACE out of memory), or
+ * with *status HYST_OK when the text did not fit. The buffer it needs at
+ * most: model_text_header_table_size(). Allocates (malloc) the tables while
+ * it builds them. */
+int model_text_header_table(char *buf, size_t size, size_t *len, const char *name,
+                            const model_text_t *m, size_t rows, size_t intervals, int sealed,
+                            hyst_status_t *status);
+size_t model_text_header_table_size(const model_text_t *m, size_t rows, size_t intervals);
+
+/* v as a float build reads the header's literal of it: HYST_REAL_C(lit) is
+ * lit##f, converted directly to float. */
+double model_text_as_float(double v);
+/* The f0 of a poly model as a build reads the header's hyst_poly_t: a
+ * float build (f32) each literal as a float, a double build exactly. */
+void model_text_poly_as_read(const model_text_t *m, int f32, hyst_poly_t *p);
+/* sep, then v as a C literal of a build's real type (f32: 9 digits and the
+ * suffix f, read back to the same float; else 17), appended; 1 when it did
+ * not fit. */
+int model_text_append_real(char *buf, size_t size, size_t *len, const char *sep, double v,
+                           int f32);
+
 /* 1 if s is a C identifier of fewer than 200 characters (a header's NAME). */
 int model_text_identifier(const char *s);
 
