@@ -477,8 +477,7 @@ static int near(hyst_wide_t a, hyst_wide_t c, hyst_wide_t tol) { return hyst_wid
 /* The pieces of a row as fill_row() writes them (the seal's claim: these
  * are the build's pieces, and the build measured them): each piece k a
  * cubic Hermite piece from knot k to knot k + 1 (its end value the next
- * knot, or on the branch for the last piece and where the next interval
- * is solved instead), its
+ * knot, or on the branch where the next interval is solved instead), its
  * slopes between 0 and three times its secant (Fritsch and Carlson), and
  * at a knot the slope the next piece starts with is the one the piece
  * before ends with, unless the smaller of the two is its own piece's limit.
@@ -503,11 +502,11 @@ static int row_structured(const build_t *b, const branch_t *br, size_t base, hys
             end_slope = -1;
             continue;
         }
-        /* the last piece ends on the branch, not at entry N: that is the
-         * branch's whole drive step computed apart, within its own rounding */
-        if (next >= 0 && k + 1u < n
-                ? !near(end, next, tol)
-                : !knot_on_branch(b, br, end, (hyst_wide_t)(k + 1u) * range / (hyst_wide_t)n)) {
+        /* the last piece ends at entry N or on the branch: entry N is the
+         * branch's whole drive step computed apart (direction_matches()) */
+        if (!(next >= 0 && near(end, next, tol)) &&
+            ((next >= 0 && k + 1u < n) ||
+             !knot_on_branch(b, br, end, (hyst_wide_t)(k + 1u) * range / (hyst_wide_t)n))) {
             return 0;
         }
         sec = 3 * (end - c0);
