@@ -311,6 +311,18 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             case 4: { /* a block through hyst_process, the reference sample by sample */
                 unsigned k, m = rd_u8(&r) % 64u;
                 for (k = 0; k < m; ++k) xs[k] = next_sample(&r, &f, rd_u8(&r));
+                if (m >= 3u) { /* an output overlapping the input, shifted (two samples
+                                * or more: one output one past one input does not
+                                * overlap it): refused, nothing written, the
+                                * instance unchanged */
+                    static hyst_t keep;
+                    hyst_real_t x0[64];
+                    memcpy(&keep, &A.S, sizeof keep);
+                    memcpy(x0, xs, m * sizeof xs[0]);
+                    CHECK(hyst_process(&A.S, xs, xs + 1u, m - 1u) == HYST_ERR_OVERLAP);
+                    CHECK(memcmp(&keep, &A.S, sizeof keep) == 0 &&
+                          memcmp(x0, xs, m * sizeof xs[0]) == 0);
+                }
                 st = hyst_process(&A.S, xs, ys, m);
                 for (k = 0; k < m; ++k) { /* the block call equals per-sample steps */
                     const hyst_real_t yb = hyst_step(&B.S, xs[k]);
