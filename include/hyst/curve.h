@@ -490,10 +490,12 @@ hyst_status_t hyst_curve_table_seal(const hyst_curve_t *inv, hyst_table_seal_t *
  * The asymmetric kind's table, in one pass over it: every knot of every row
  * on the model's branch as above, each row's end the branch's whole drive
  * step, the intervals evaluated exactly marked alike in every row, and
- * every piece the build's (a cubic Hermite piece ending at the next knot,
- * its slopes within Fritsch and Carlson's limits and continuing across the
- * knot), so the build's measurement, sealed, holds; no piece is measured
- * again. HYST_ERR_CURVE otherwise: a table of another model, or pieces
+ * every piece shaped as the build's (a cubic Hermite piece ending at the
+ * next knot, its slopes within Fritsch and Carlson's limits and continuing
+ * across the knot); no piece is measured again. Not detected: a slope
+ * changed alike on both sides of a knot and within those limits (the
+ * table stays monotone, but its error is not the one sealed). HYST_ERR_CURVE
+ * otherwise: a table of another model, or pieces
  * changed and sealed again (the table is in output steps relative to a
  * branch's whole step, so the model times a constant has the same table,
  * and is accepted). What is saved is the table's RAM, and for the
