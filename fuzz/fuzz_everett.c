@@ -188,6 +188,29 @@ static void check_tabulated(const hyst_curve_t *curve, const hyst_everett_t *e, 
                                                      &seal2) == HYST_ERR_CURVE);
         flash[4u * k + 1u] = keep;
     }
+    /* the slope at a knot halved alike on both sides (the end slope of the
+     * piece before, the start slope of the piece after: each still a cubic
+     * Hermite piece between the same knots, within Fritsch and Carlson's
+     * limits) and the table sealed again: refused on the same terms */
+    k = (n * 7919u + flags) % (len / 4u);
+    if (k % (intervals + 1u) != 0u && k % (intervals + 1u) != intervals &&
+        !(flash[4u * k - 4u] < 0) && !(flash[4u * k] < 0) &&
+        fabs(flash[4u * k + 1u]) > 64.0 * hyst_curve_inverse_error(&tinv) * (e->hi - e->lo)) {
+        hyst_curve_t resealed = tinv;
+        double keep[8], change;
+        hyst_table_seal_t seal2;
+        memcpy(keep, &flash[4u * k - 4u], sizeof keep);
+        change = -0.5 * flash[4u * k + 1u];
+        flash[4u * k - 2u] -= change; /* the piece before: its end slope */
+        flash[4u * k - 1u] += change;
+        flash[4u * k + 1u] += change; /* the piece after: its start slope */
+        flash[4u * k + 2u] -= 2.0 * change;
+        flash[4u * k + 3u] += change;
+        CHECK(hyst_curve_table_seal(&resealed, &seal2) == HYST_OK);
+        CHECK(hyst_curve_everett_inverse_table_const(&from_flash, curve, flash, rows, intervals,
+                                                     &seal2) == HYST_ERR_CURVE);
+        memcpy(&flash[4u * k - 4u], keep, sizeof keep);
+    }
     /* one bit of one number flipped (the samples pick which): refused */
     k = (n * 2654435761u + flags) % len;
     memcpy(&bits, &flash[k], sizeof bits);

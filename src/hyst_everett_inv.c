@@ -99,18 +99,6 @@ static hyst_wide_t branch_solve(const branch_t *b, hyst_wide_t v, hyst_wide_t gu
     return w;
 }
 
-/* The sum of p's terms' magnitudes at w >= 0: what p(w)'s rounding, and a
- * change of its coefficients by rounding, scale with. */
-static hyst_wide_t branch_scale(const branch_t *b, hyst_wide_t w)
-{
-    hyst_wide_t q = 0;
-    unsigned i;
-    for (i = 0u; i < b->n; ++i) {
-        q = q * w + hyst_wide_abs(b->q[i]);
-    }
-    return q * w;
-}
-
 /* V(a) = p_a(W(a)) as a polynomial in the anchor (degree n, highest power
  * first, into v[0..n]): each row's polynomial times W^(n - i), W = 1 - a
  * rising, a falling. */
@@ -456,73 +444,146 @@ hyst_status_t hyst_curve_everett_inverse_table_(hyst_curve_t *inv, const hyst_cu
     return HYST_OK;
 }
 
-/* Knot k of a row (drive step c0 at output step v = k V / N) against the
- * branch: p(c0) gives v back within 8 units of rounding of p's terms and of
- * the drive step plus the width, and of subnormal numbers (a residual, not
- * the root solved again: where the root is ill-conditioned, two solvers
- * stop at different numbers). */
-static int knot_on_branch(const build_t *b, const branch_t *br, hyst_wide_t c0, hyst_wide_t v)
+/* The model at a knot of a row as fill_row() takes it: the knot's drive
+ * step d at output step v, within dw of the build's (in w), and what
+ * fill_row() computes its slope from there, p'(w), known within dp[0] ..
+ * dp[1]. 0 if d is off the branch: p(d) must give v back (at the branch's
+ * end where v is beyond p(W), as the solver stops there) within 8 units of
+ * rounding of p's terms and of the drive step plus the width, and of
+ * subnormal numbers (a residual, not the root solved again: where the root
+ * is ill-conditioned, two solvers stop at different numbers). p' is known
+ * within dw times a bound on p'' and 8 units of rounding of its terms in
+ * each of the two evaluations (the build's and this one). Horner's scheme
+ * on p and p', and on the coefficients' magnitudes at |w| + dw (bounds on
+ * the rounding, and on p'' anywhere within dw of w). */
+static int knot_model(const build_t *b, const branch_t *br, hyst_wide_t d, hyst_wide_t v,
+                      hyst_wide_t dw, hyst_wide_t inv_span, hyst_wide_t *dp)
 {
-    const hyst_wide_t w = c0 / b->span;
+    const hyst_wide_t w = d * inv_span, x = hyst_wide_abs(w) + dw;
     const hyst_wide_t tiny = hyst_real_tiny(b->c->variant);
-    hyst_wide_t dp;
-    const hyst_wide_t residual = hyst_wide_abs(branch_p(br, w, &dp) - v);
-    return residual <= 8 * b->eps * (branch_scale(br, w) + (w + br->width) * hyst_wide_abs(dp)) +
-                           8 * tiny * (1 + hyst_wide_abs(dp) / b->span);
+    /* q and q' at w; the magnitudes' polynomial m, m', m''/2 at x */
+    hyst_wide_t q = br->q[0], dq = 0, m = hyst_wide_abs(q), dm = 0, ddm = 0;
+    hyst_wide_t p, p1, change;
+    unsigned i;
+    for (i = 1u; i < br->n; ++i) {
+        ddm = ddm * x + dm;
+        dm = dm * x + m;
+        m = m * x + hyst_wide_abs(br->q[i]);
+        dq = dq * w + q;
+        q = q * w + br->q[i];
+    }
+    p = q * w; /* p = w q */
+    p1 = q + w * dq;
+    v = v < br->range ? v : br->range;
+    if (!(hyst_wide_abs(p - v) <= 8 * b->eps * (m * x + (w + br->width) * hyst_wide_abs(p1)) +
+                                      8 * tiny * (1 + hyst_wide_abs(p1) * inv_span))) {
+        return 0;
+    }
+    /* the bound on p'' is 2 m' + 2 x m''/2, on p''s terms m + x m' */
+    change = 2 * (dm + x * ddm) * dw + 16 * b->eps * (m + x * dm);
+    dp[0] = p1 - change;
+    dp[1] = p1 + change;
+    return 1;
 }
 
-/* a within tol of c */
-static int near(hyst_wide_t a, hyst_wide_t c, hyst_wide_t tol) { return hyst_wide_abs(a - c) <= tol; }
+/* A piece of a row as stored: its knots' drive steps, its slopes at both
+ * ends, the rounding of its knots (tol, 8 units of its terms and of
+ * subnormal numbers) and of its slopes (the same plus 8 units of four
+ * secants: c2 and c3 are formed from terms up to four secants), and the
+ * bounds of three times its secant as the build computed it (within six
+ * knots' tol). */
+typedef struct {
+    hyst_wide_t start, end, slope[2], tol, slope_tol, sec_lo, sec_hi;
+} piece_t;
+
+/* Piece k of the row at base; 0 if it is solved instead. */
+static int piece_of(const build_t *b, size_t base, size_t k, piece_t *p)
+{
+    const size_t at = base + 4u * k;
+    const hyst_wide_t c0 = entry(b, at), c1 = entry(b, at + 1u);
+    const hyst_wide_t c2 = entry(b, at + 2u), c3 = entry(b, at + 3u);
+    const hyst_wide_t end = c0 + c1 + c2 + c3, sec = 3 * (end - c0);
+    if (c0 < 0) {
+        return 0;
+    }
+    p->start = c0;
+    p->end = end;
+    p->slope[0] = c1;
+    p->slope[1] = c1 + 2 * c2 + 3 * c3;
+    p->tol = 8 * b->eps *
+                 (hyst_wide_abs(c0) + hyst_wide_abs(c1) + 2 * hyst_wide_abs(c2) +
+                  3 * hyst_wide_abs(c3) + hyst_wide_abs(end)) +
+             8 * hyst_real_tiny(b->c->variant);
+    p->slope_tol = p->tol + 32 * b->eps * hyst_wide_abs(sec);
+    p->sec_lo = sec - 6 * p->tol;
+    p->sec_hi = sec + 6 * p->tol;
+    return 1;
+}
+
+/* The slope at end `side` of piece p as fill_row() computes it, within its
+ * rounding: m = per_interval / p' (infinite where p' <= 0), p' within
+ * dp[0] .. dp[1], per_interval within per[0] .. per[1] (4 units for the
+ * division and the products here), limited by three times p's secant
+ * (Fritsch and Carlson). Compared as products, not quotients: a quotient
+ * costs several products on a core without double. */
+static int slope_matches(const piece_t *p, int side, const hyst_wide_t *per, const hyst_wide_t *dp)
+{
+    const hyst_wide_t lo = p->slope[side] + p->slope_tol, hi = p->slope[side] - p->slope_tol;
+    /* lo >= min(m_lo, sec_lo), m_lo = per / dp[1] (infinite if dp[1] <= 0) */
+    const int above = lo >= p->sec_lo || (dp[1] > 0 && lo * dp[1] >= per[0]);
+    /* hi <= min(m_hi, sec_hi), m_hi = per / dp[0] (infinite if dp[0] <= 0) */
+    const int below = hi <= p->sec_hi && (!(dp[0] > 0) || hi * dp[0] <= per[1]);
+    return above && below;
+}
 
 /* The pieces of a row as fill_row() writes them (the seal's claim: these
- * are the build's pieces, and the build measured them): each piece k a
- * cubic Hermite piece from knot k to knot k + 1 (its end value the next
- * knot, or on the branch where the next interval is solved instead), its
- * slopes between 0 and three times its secant (Fritsch and Carlson), and
- * at a knot the slope the next piece starts with is the one the piece
- * before ends with, unless the smaller of the two is its own piece's limit.
- * A piece changed and sealed again breaks one of these. Linear in the
- * row's length: no piece measured again. */
+ * are the build's pieces, and the build measured them), one rule at every
+ * knot k (output step k V / N) next to a piece not solved instead: the
+ * knot on the branch and the slope of each piece there fill_row()'s, the
+ * model's slope limited by that piece's secant (knot_model(),
+ * slope_matches()); where pieces meet, the one before ends at the start of
+ * the one after. The knot's drive step is the start of the piece after it,
+ * where none is stored the end of the piece before. A piece changed and
+ * sealed again breaks one of these, a slope changed alike on both sides of
+ * a knot too. One evaluation of the model per knot: no piece measured
+ * again. */
 static int row_structured(const build_t *b, const branch_t *br, size_t base, hyst_wide_t range)
 {
     const size_t n = b->intervals;
-    hyst_wide_t end_slope = -1, end_sec = 0, end_mag = 0; /* of piece k - 1; -1: none */
+    const hyst_wide_t per_interval = range / (hyst_wide_t)n * b->span; /* as fill_row() */
+    const hyst_wide_t per[2] = {per_interval * (1 - 4 * b->eps), per_interval * (1 + 4 * b->eps)};
+    const hyst_wide_t inv_span = 1 / b->span, v_step = range / (hyst_wide_t)n;
+    piece_t before, after;
+    int has_before = 0;
     size_t k;
-    for (k = 0u; k < n; ++k) {
-        const size_t at = base + 4u * k;
-        const hyst_wide_t c0 = entry(b, at), c1 = entry(b, at + 1u);
-        const hyst_wide_t c2 = entry(b, at + 2u), c3 = entry(b, at + 3u);
-        const hyst_wide_t next = entry(b, at + 4u);
-        const hyst_wide_t mag = hyst_wide_abs(c0) + hyst_wide_abs(c1) + 2 * hyst_wide_abs(c2) +
-                                3 * hyst_wide_abs(c3) + hyst_wide_abs(next);
-        const hyst_wide_t tol = 8 * b->eps * mag, end = c0 + c1 + c2 + c3;
-        const hyst_wide_t slope = c1 + 2 * c2 + 3 * c3;
-        hyst_wide_t sec;
-        if (c0 < 0) { /* solved instead */
-            end_slope = -1;
-            continue;
-        }
-        /* the last piece ends at entry N or on the branch: entry N is the
-         * branch's whole drive step computed apart (direction_matches()) */
-        if (!(next >= 0 && near(end, next, tol)) &&
-            ((next >= 0 && k + 1u < n) ||
-             !knot_on_branch(b, br, end, (hyst_wide_t)(k + 1u) * range / (hyst_wide_t)n))) {
-            return 0;
-        }
-        sec = 3 * (end - c0);
-        if (!(c1 >= -tol && c1 <= sec + tol && slope >= -tol && slope <= sec + tol)) {
-            return 0;
-        }
-        if (end_slope >= 0) {
-            const hyst_wide_t t = tol + 8 * b->eps * end_mag;
-            if (!(near(c1, end_slope, t) || (c1 <= end_slope + t && near(c1, sec, t)) ||
-                  (end_slope <= c1 + t && near(end_slope, end_sec, t)))) {
+    memset(&before, 0, sizeof before);
+    for (k = 0u; k <= n; ++k) {
+        const int has_after = k < n && piece_of(b, base, k, &after);
+        hyst_wide_t dp[2], d, tol;
+        if (has_before && has_after) {
+            d = after.start;
+            tol = before.tol > after.tol ? before.tol : after.tol;
+            if (!(hyst_wide_abs(before.end - d) <= before.tol)) {
                 return 0;
             }
+        } else if (has_after || has_before) {
+            d = has_after ? after.start : before.end;
+            tol = has_after ? after.tol : before.tol;
+        } else {
+            continue;
         }
-        end_slope = slope < 0 ? 0 : slope;
-        end_sec = sec;
-        end_mag = mag;
+        /* d within tol of the build's knot, w = d / span within 2 units more
+         * (the product by inv_span); v within 2 units of fill_row()'s k V / N */
+        if (!knot_model(b, br, d, (hyst_wide_t)k * v_step,
+                        (tol + 2 * b->eps * hyst_wide_abs(d)) * inv_span, inv_span, dp) ||
+            (has_before && !slope_matches(&before, 1, per, dp)) ||
+            (has_after && !slope_matches(&after, 0, per, dp))) {
+            return 0;
+        }
+        if (has_after) {
+            before = after;
+        }
+        has_before = has_after;
     }
     return 1;
 }
@@ -532,9 +593,9 @@ static int row_structured(const build_t *b, const branch_t *br, size_t base, hys
  * build stores: hyst_table_shape_ok_()); an interval solved instead in one
  * row is so in every row (counted as the build counts them); each row's
  * end is the branch's whole drive step (within 8 units of the variant's
- * rounding, of the span), every knot on the branch (knot_on_branch()) and
- * the pieces between them the build's (row_structured()). 0 if it is
- * another model's table, or pieces changed. */
+ * rounding, of the span), and its pieces the build's (row_structured(); a
+ * row whose branch is empty is all zeros). 0 if it is another model's
+ * table, or pieces changed. */
 static int direction_matches(build_t *b, int fall)
 {
     const hyst_wide_t tol = 8 * b->eps * b->span;
@@ -565,13 +626,8 @@ static int direction_matches(build_t *b, int fall)
         if (!(hyst_wide_abs(entry(b, base + 4u * n) - (empty ? 0 : br.width * b->span)) <= tol)) {
             return 0;
         }
-        for (k = 0u; k < n; ++k) {
-            const hyst_wide_t c0 = entry(b, base + 4u * k);
-            if (c0 < 0) { /* solved instead: checked above */
-                continue;
-            }
-            if (empty ? !(c0 <= tol)
-                      : !knot_on_branch(b, &br, c0, (hyst_wide_t)k * range / (hyst_wide_t)n)) {
+        for (k = 0u; empty && k < n; ++k) {
+            if (!(entry(b, base + 4u * k) <= tol)) { /* or the mark */
                 return 0;
             }
         }

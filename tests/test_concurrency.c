@@ -13,6 +13,7 @@
 #include <string.h>
 #include <sys/time.h>
 
+#include "snapshot_ref.h"
 #include "support.h"
 #include "unity.h"
 
@@ -30,6 +31,7 @@ static hyst_real_t t_xl[CAP], t_yl[CAP], t_xr[CAP], t_yr[CAP];
 static hyst_real_t input[N_INPUTS];
 static unsigned char snap[HYST_SNAPSHOT_SIZE(CAP) + GUARD];
 static unsigned char ref_snap[HYST_SNAPSHOT_SIZE(CAP)];
+static snapshot_ref_t ref; /* R, stepped by the main loop alone */
 
 static hyst_creep_t K, KR, KT; /* a creep term: stepped, reference, restored */
 static unsigned char creep_snap[HYST_CREEP_SNAPSHOT_SIZE + GUARD];
@@ -118,23 +120,9 @@ static void init_all(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&S, &paper_eq20, s_xl, s_yl, s_xr, s_yr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&R, &paper_eq20, r_xl, r_yl, r_xr, r_yr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&T, &paper_eq20, t_xl, t_yl, t_xr, t_yr, CAP));
+    snapshot_ref_init(&ref, &R, input, N_INPUTS, ref_snap, sizeof ref_snap);
     k_done = 0;
     served_k = -1;
-}
-
-/* Advances the reference from sample *k_ref to sample k (exclusive). */
-static void reference_to(long *k_ref, long k)
-{
-    for (; *k_ref < k; ++*k_ref) {
-        (void)hyst_step(&R, input[*k_ref]);
-    }
-}
-
-static size_t reference_snapshot(void)
-{
-    size_t len = 0u;
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&R, ref_snap, sizeof ref_snap, &len));
-    return len;
 }
 
 void setUp(void) {}
@@ -147,7 +135,7 @@ void tearDown(void) { timer_stop(); }
  * their CRC. */
 static void test_save_while_the_interrupt_steps(void)
 {
-    long k_ref = 0, saves = 0, ok = 0, nospace = 0, busy = 0, interrupted = 0;
+    long saves = 0, ok = 0, nospace = 0, busy = 0, interrupted = 0;
     init_all();
     stepping = 1;
     timer_start();
@@ -155,8 +143,8 @@ static void test_save_while_the_interrupt_steps(void)
         const long k0 = k_done;
         const size_t size = hyst_snapshot_size(&S);
         size_t len = 0u, g;
-        long k1, k;
-        int st, matched = 0;
+        long k1;
+        int st;
         memset(snap, GUARD_BYTE, sizeof snap);
         st = hyst_snapshot_save(&S, snap, size, &len);
         k1 = k_done;
@@ -178,15 +166,8 @@ static void test_save_while_the_interrupt_steps(void)
         ++ok;
         TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&T, snap, len));
         /* One of the states after samples k0-1 .. k1-1. */
-        reference_to(&k_ref, k0);
-        for (k = k0; k <= k1 && !matched; ++k) {
-            const size_t rlen = reference_snapshot();
-            matched = rlen == len && memcmp(ref_snap, snap, len) == 0;
-            if (!matched && k < k1) {
-                reference_to(&k_ref, k + 1);
-            }
-        }
-        TEST_ASSERT_TRUE_MESSAGE(matched, "a snapshot is no state the model was in");
+        TEST_ASSERT_TRUE_MESSAGE(snapshot_ref_match(&ref, snap, len, k0, k1),
+                                 "a snapshot is no state the model was in");
     }
     timer_stop();
     printf("saves %ld: ok %ld, nospace %ld, busy %ld; interrupted by the handler %ld; "
@@ -265,7 +246,7 @@ enum { REQ_RESET, REQ_DEADBAND, REQ_CLEAR, REQ_KINDS };
 static void test_requests_while_the_interrupt_steps(void)
 {
     rng_t rng;
-    long k_ref = 0, round;
+    long round;
     long count[REQ_KINDS] = {0, 0, 0};
     init_all();
     rng_seed(&rng, 77u);
@@ -289,7 +270,7 @@ static void test_requests_while_the_interrupt_steps(void)
         TEST_ASSERT_TRUE_MESSAGE(served >= 0, "applied, but not by a step");
         ++count[kind];
         /* The reference: the same samples, the immediate call after `served`. */
-        reference_to(&k_ref, served + 1);
+        snapshot_ref_to(&ref, served + 1);
         switch (kind) {
         case REQ_RESET: hyst_reset(&R); break;
         case REQ_DEADBAND: TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_set_deadband(&R, width)); break;
@@ -299,9 +280,9 @@ static void test_requests_while_the_interrupt_steps(void)
         wait_for_sample(served + 1 + (long)rng_below(&rng, 30u));
         stepping = 0;
         k_stop = k_done;
-        reference_to(&k_ref, k_stop);
+        snapshot_ref_to(&ref, k_stop);
         TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&S, snap, sizeof snap, &len));
-        TEST_ASSERT_EQUAL_size_t(reference_snapshot(), len);
+        TEST_ASSERT_EQUAL_size_t(snapshot_ref_save(&ref), len);
         TEST_ASSERT_EQUAL_MEMORY_MESSAGE(ref_snap, snap, len, "the request was not applied as "
                                                                 "the immediate call would be");
         TEST_ASSERT_EQUAL_FLOAT(hyst_error_bound(&R), hyst_error_bound(&S));

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "snapshot_ref.h"
 #include "support.h"
 #include "unity.h"
 
@@ -63,28 +64,16 @@ void tearDown(void)
     stepping = 0;
 }
 
-static size_t reference_snapshot(void)
-{
-    size_t len = 0u;
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&R, ref_snap, sizeof ref_snap, &len));
-    return len;
-}
-
-static void reference_to(long *k_ref, long k)
-{
-    for (; *k_ref < k; ++*k_ref) {
-        (void)hyst_step(&R, input[*k_ref % N_INPUTS]);
-    }
-}
-
 /* One interrupt period (SysTick reload, processor clock). Returns the
  * saves that the interrupt preempted. */
 static long run_period(uint32_t reload, long *ok_total)
 {
-    long k_ref = 0, interrupted = 0, ok = 0;
+    snapshot_ref_t ref;
+    long interrupted = 0, ok = 0;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&S, &paper_eq20, s_xl, s_yl, s_xr, s_yr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&R, &paper_eq20, r_xl, r_yl, r_xr, r_yr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&T, &paper_eq20, t_xl, t_yl, t_xr, t_yr, CAP));
+    snapshot_ref_init(&ref, &R, input, N_INPUTS, ref_snap, sizeof ref_snap);
     k_done = 0;
     stepping = 1;
     SYST_RVR = reload;
@@ -93,8 +82,8 @@ static long run_period(uint32_t reload, long *ok_total)
     while (k_done < SAMPLES_PER_PERIOD - 1L) {
         const long k0 = k_done;
         size_t len = 0u;
-        long k1, k;
-        int st, matched = 0;
+        long k1;
+        int st, matched;
         st = hyst_snapshot_save(&S, snap, sizeof snap, &len);
         k1 = k_done;
         interrupted += k1 > k0;
@@ -104,14 +93,7 @@ static long run_period(uint32_t reload, long *ok_total)
         TEST_ASSERT_EQUAL_INT(HYST_OK, st);
         ++ok;
         TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&T, snap, len));
-        reference_to(&k_ref, k0);
-        for (k = k0; k <= k1 && !matched; ++k) {
-            const size_t rlen = reference_snapshot();
-            matched = rlen == len && memcmp(ref_snap, snap, len) == 0;
-            if (!matched && k < k1) {
-                reference_to(&k_ref, k + 1);
-            }
-        }
+        matched = snapshot_ref_match(&ref, snap, len, k0, k1);
         if (!matched) {
             printf("reload %lu: the save during samples %ld..%ld is no state the model was in\n",
                    (unsigned long)reload, k0, k1);

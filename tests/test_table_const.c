@@ -226,6 +226,61 @@ static void test_resealed_slopes_are_refused(void)
                           hyst_curve_inverse_table_const(&from_flash, &fwd, flash, SYM_INTERVALS, &seal));
 }
 
+/* The slope at knot k of a row changed alike on both sides (the end slope
+ * of piece k - 1 and the start slope of piece k, each piece still a cubic
+ * Hermite piece between the same knots), to a value within Fritsch and
+ * Carlson's limits of both pieces: 0, half, or the smaller limit (three
+ * times the smaller secant). No piece's shape is broken, every knot stays on
+ * the model; the slope is not the model's. Returns 0 if the change is not
+ * one (the slope already there, or a piece solved instead). */
+static int change_knot_slope(size_t at, int how)
+{
+    hyst_real_t *left = &flash[at - 4u], *right = &flash[at];
+    const hyst_real_t slope = right[1];
+    const hyst_real_t sec_left = 3 * (right[0] - left[0]);
+    const hyst_real_t sec_right = 3 * (right[4] - right[0]);
+    const hyst_real_t limit = sec_left < sec_right ? sec_left : sec_right;
+    const hyst_real_t to = how == 0 ? 0 : how == 1 ? slope * (hyst_real_t)0.5 : limit;
+    const hyst_real_t change = to - slope;
+    if (left[0] < 0 || right[0] < 0 || right[4] < 0 ||
+        !(fabs((double)change) > 0.25 * (double)slope)) {
+        return 0;
+    }
+    left[2] -= change; /* piece k - 1: its end slope, its ends kept */
+    left[3] += change;
+    right[1] = to; /* piece k: its start slope, its ends kept */
+    right[2] -= 2 * change;
+    right[3] += change;
+    return 1;
+}
+
+/* A slope changed alike on both sides of a knot within Fritsch and
+ * Carlson's limits and the table sealed again: every piece is still the
+ * shape of the build's, but the drive there is not the one the build
+ * measured (the compensator misses by more than the error sealed). Each
+ * knot's slope is the model's, limited as the build limits it
+ * (HYST_ERR_CURVE). */
+static void test_resealed_knot_slope_is_refused(void)
+{
+    const size_t row = HYST_INV_TABLE_LEN(INTERVALS);
+    int trial, changed = 0;
+    for (trial = 0; trial < 12; ++trial) {
+        const size_t r = (size_t)(5 * trial) % (ROWS + 1u), k = 1u + (size_t)(7 * trial) % 29u;
+        const size_t at = (trial % 2 ? row * (ROWS + 1u) : 0u) + row * r + 4u * k;
+        hyst_curve_t resealed;
+        (void)sealed_everett();
+        resealed = inv; /* its table is flash */
+        if (!change_knot_slope(at, trial % 3)) {
+            continue;
+        }
+        ++changed;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_table_seal(&resealed, &seal));
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, everett_from_flash(ROWS, INTERVALS));
+    }
+    TEST_ASSERT_TRUE(changed >= 8);
+    TEST_PRINTF("%d knots' slopes changed alike and resealed: all refused", changed);
+}
+
 /* A table is in output steps relative to the branch's whole step, so E
  * times a constant has the same table (accepted); any other E is refused. */
 static void test_another_models_table_is_refused(void)
@@ -332,6 +387,7 @@ int main(void)
     RUN_TEST(test_another_models_table_is_refused);
     RUN_TEST(test_sealed_garbage_is_refused);
     RUN_TEST(test_resealed_slopes_are_refused);
+    RUN_TEST(test_resealed_knot_slope_is_refused);
     RUN_TEST(test_symmetric_table_from_flash_is_the_build);
     RUN_TEST(test_bad_arguments);
     return UNITY_END();

@@ -490,12 +490,13 @@ hyst_status_t hyst_curve_table_seal(const hyst_curve_t *inv, hyst_table_seal_t *
  * The asymmetric kind's table, in one pass over it: every knot of every row
  * on the model's branch as above, each row's end the branch's whole drive
  * step, the intervals evaluated exactly marked alike in every row, and
- * every piece shaped as the build's (a cubic Hermite piece ending at the
- * next knot, its slopes within Fritsch and Carlson's limits and continuing
- * across the knot); no piece is measured again. Not detected: a slope
- * changed alike on both sides of a knot and within those limits (the
- * table stays monotone, but its error is not the one sealed). HYST_ERR_CURVE
- * otherwise: a table of another model, or pieces
+ * every piece the build's: a cubic Hermite piece between two knots, its
+ * slope at each the one the build computes from the model there (limited
+ * as Fritsch and Carlson limit it), within their rounding; no piece is
+ * measured again. Not detected: an interval the build evaluates exactly
+ * given back the cubic piece the build measured beyond HYST_INV_TABLE_TOL
+ * there (every piece is then the build's, but the error is not the one
+ * sealed). HYST_ERR_CURVE otherwise: a table of another model, or pieces
  * changed and sealed again (the table is in output steps relative to a
  * branch's whole step, so the model times a constant has the same table,
  * and is accepted). What is saved is the table's RAM, and for the
