@@ -1135,6 +1135,11 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     if (rc != 0) {
         mexErrMsgIdAndTxt("hyst:model_file", "%s", msg);
     }
+    if (m.has_rate) { /* refused, not run without it: `hyst sim --model` applies it */
+        mexErrMsgIdAndTxt("hyst:model_file", "the model has a rate term (rate_tau, rate_weight), "
+                                             "which this front end does not apply yet: use "
+                                             "`hyst sim --model`");
+    }
     if (m.kind == MODEL_TEXT_EVERETT) {
         s = mxCreateStructMatrix(1, 1, 7, everett);
         set_field(s, "kind", mxCreateString("everett"));

@@ -823,6 +823,10 @@ nb::object model_parse(const nb::bytes &data, const std::string &path)
     if (model_text_parse(data.c_str(), data.size(), path.c_str(), &m, msg, sizeof msg) != 0) {
         return nb::str(msg);
     }
+    if (m.has_rate) { /* refused, not run without it: `hyst sim --model` applies it */
+        return nb::str(path + ": the model has a rate term (rate_tau, rate_weight), which this "
+                              "front end does not apply yet: use `hyst sim --model`");
+    }
     return model_dict(m);
 }
 
