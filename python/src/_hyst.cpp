@@ -824,8 +824,10 @@ nb::object model_parse(const nb::bytes &data, const std::string &path)
         return nb::str(msg);
     }
     if (m.has_rate) { /* refused, not run without it: `hyst sim --model` applies it */
-        return nb::str(path + ": the model has a rate term (rate_tau, rate_weight), which this "
-                              "front end does not apply yet: use `hyst sim --model`");
+        const std::string why = path + ": the model has a rate term (rate_tau, rate_weight), "
+                                       "which this front end does not apply yet: use `hyst sim "
+                                       "--model`";
+        return nb::str(why.c_str());
     }
     return model_dict(m);
 }
