@@ -71,7 +71,10 @@ def load_model(path):
     ``terms`` (e[i-1][j] of w^i t^j, i = 1..degree, then j = 0..degree-i);
     with a creep term also ``creep_tau`` (time constants, samples) and
     ``creep_weight`` (lists of 1 to 4 numbers, one per lag; the keys are
-    absent when the file has none). The file is read by the format's one
+    absent when the file has none); with a rate term also ``rate_tau``
+    (samples) and ``rate_weight`` (numbers; absent when the file has none:
+    :func:`model_from` applies it, :func:`save_model` does not write it
+    yet and refuses those keys). The file is read by the format's one
     reader in C (tools/model_text), the one ``hyst sim --model`` and the
     MATLAB/Octave functions call: a malformed file raises
     :class:`ModelFileError` with its words, naming the file, the line and

@@ -175,6 +175,10 @@ template <class T> struct Ops;
         static constexpr auto creep_reset = hyst_##P##_creep_reset;         \
         static constexpr auto creep_step = hyst_##P##_creep_step;           \
         static constexpr auto creep_output = hyst_##P##_creep_output;       \
+        static constexpr auto rate_init = hyst_##P##_rate_init_;            \
+        static constexpr auto rate_reset = hyst_##P##_rate_reset;           \
+        static constexpr auto rate_step = hyst_##P##_rate_step;             \
+        static constexpr auto rate_output = hyst_##P##_rate_output;         \
         static constexpr const char *dtype = NAME;                          \
     };
 HYST_PY_OPS(float, f32, "float32")
@@ -242,11 +246,17 @@ struct Tcm {
     /* The creep term's lags, when the instance has one (Real). */
     virtual const hyst_creep_t *creep_of() const { return nullptr; }
     virtual void set_creep_state(const hyst_creep_t &) {}
+    /* Whether the instance has a rate term (Real): no snapshot holds it. */
+    virtual bool has_rate_term() const { return false; }
 
     /* The library's snapshot; with a creep term, its creep snapshot after it
      * (snapshot.h: each says its own length). */
     nb::bytes save() const
     {
+        if (has_rate_term()) {
+            raise_status(HYST_ERR_ARG, "snapshot save: the model has a rate term, which no "
+                                       "snapshot holds (docs/rate.md)");
+        }
         std::vector<unsigned char> buf(HYST_SNAPSHOT_SIZE(hyst_capacity(&S)) +
                                        HYST_CREEP_SNAPSHOT_SIZE);
         size_t len = 0u, creep_len = 0u;
@@ -271,6 +281,10 @@ struct Tcm {
                                    p[len + 3u] == 0x43u;
         const hyst_creep_t *c = creep_of();
         hyst_creep_t lags{};
+        if (has_rate_term()) {
+            raise_status(HYST_ERR_ARG, "snapshot restore: the model has a rate term, which no "
+                                       "snapshot holds (docs/rate.md)");
+        }
         if (c != nullptr) {
             lags = *c;
             if (len <= n && !creep_follows) {
@@ -318,6 +332,11 @@ template <class T> struct Real : Owned<T, T> {
     bool has_creep = false;
     hyst_creep_t creep{};
     std::vector<double> creep_tau, creep_weight;
+    /* A rate term (rate.h), when set_rate() gave one: the low-pass of the
+     * change of the same input as the creep's, at rest at lo */
+    bool has_rate = false;
+    hyst_rate_t rate{};
+    std::optional<double> rate_tau, rate_weight;
 
     /* The instance on fwd, or on its inverse (the compensator): the one
      * hyst_curve_inverse() prepares, or the table inv already holds. */
@@ -414,24 +433,36 @@ template <class T> struct Real : Owned<T, T> {
      * in. */
     T step(T x)
     {
-        if (!has_creep) {
+        if (!has_creep && !has_rate) {
             return O::step(&this->S, x);
         }
         if (inverse) {
-            const T v = x - O::creep_output(&creep);
+            const T v = x - terms_output();
             const T drive = O::step(&this->S, v);
-            (void)O::creep_step(&creep, drive);
+            (void)terms_step(drive);
             return drive;
         }
         const T y = O::step(&this->S, x);
-        return y + O::creep_step(&creep, O::input(&this->S));
+        return y + terms_step(O::input(&this->S));
+    }
+    /* The creep and rate terms' contribution to the next sample, and the
+     * same as they take input u in: summed as the CLI sums them, in double. */
+    T terms_output() const
+    {
+        return static_cast<T>((has_creep ? static_cast<double>(O::creep_output(&creep)) : 0.0) +
+                              (has_rate ? static_cast<double>(O::rate_output(&rate)) : 0.0));
+    }
+    T terms_step(T u)
+    {
+        return static_cast<T>((has_creep ? static_cast<double>(O::creep_step(&creep, u)) : 0.0) +
+                              (has_rate ? static_cast<double>(O::rate_step(&rate, u)) : 0.0));
     }
     /* The block call; with a creep term sample by sample (step(), the same
      * numbers as the library's block call for the hysteresis model) and
      * the statuses folded as the block call folds them. */
     void run_block(const T *px, T *py, size_t n)
     {
-        if (!has_creep) {
+        if (!has_creep && !has_rate) {
             this->block_status = O::process(&this->S, px, py, n);
             return;
         }
@@ -467,7 +498,7 @@ template <class T> struct Real : Owned<T, T> {
             has_creep = false;
             creep_tau.clear();
             creep_weight.clear();
-            hyst_reset(&this->S);
+            reset();
             return;
         }
         const auto p = creep_params(tau, weight);
@@ -479,8 +510,35 @@ template <class T> struct Real : Owned<T, T> {
         has_creep = true;
         creep_tau = tau;
         creep_weight = weight;
-        hyst_reset(&this->S);
+        reset();
     }
+    /* A rate term of time constant tau (samples) and weight weight
+     * (hyst_*_rate_init(), at rest at lo); both None remove it. Also puts
+     * the model back at rest, so that both start together. */
+    void set_rate(std::optional<double> tau, std::optional<double> weight)
+    {
+        if (!tau && !weight) {
+            has_rate = false;
+            rate_tau.reset();
+            rate_weight.reset();
+            reset();
+            return;
+        }
+        if (!tau || !weight) {
+            raise_status(HYST_ERR_ARG, "a rate term needs rate_tau and rate_weight (both or "
+                                       "neither)");
+        }
+        hyst_rate_t r{};
+        check(O::rate_init(&r, static_cast<hyst_wide_t>(*tau), static_cast<hyst_wide_t>(*weight),
+                           static_cast<hyst_wide_t>(this->lo), HYST_LAYOUT),
+              "rate init");
+        rate = r;
+        has_rate = true;
+        rate_tau = tau;
+        rate_weight = weight;
+        reset();
+    }
+    bool has_rate_term() const override { return has_rate; }
     const hyst_creep_t *creep_of() const override { return has_creep ? &creep : nullptr; }
     void set_creep_state(const hyst_creep_t &c) override { creep = c; }
     void reset() override
@@ -488,6 +546,9 @@ template <class T> struct Real : Owned<T, T> {
         hyst_reset(&this->S);
         if (has_creep) {
             (void)O::creep_reset(&creep, static_cast<T>(this->lo));
+        }
+        if (has_rate) {
+            (void)O::rate_reset(&rate, static_cast<T>(this->lo));
         }
     }
 };
@@ -811,6 +872,10 @@ nb::dict model_dict(const model_text_t &m)
         d["creep_tau"] = std::vector<double>(m.creep_tau, m.creep_tau + m.ncreep);
         d["creep_weight"] = std::vector<double>(m.creep_weight, m.creep_weight + m.ncreep);
     }
+    if (m.has_rate) {
+        d["rate_tau"] = m.rate_tau;
+        d["rate_weight"] = m.rate_weight;
+    }
     return d;
 }
 
@@ -822,12 +887,6 @@ nb::object model_parse(const nb::bytes &data, const std::string &path)
     char msg[MODEL_TEXT_MSG_SIZE];
     if (model_text_parse(data.c_str(), data.size(), path.c_str(), &m, msg, sizeof msg) != 0) {
         return nb::str(msg);
-    }
-    if (m.has_rate) { /* refused, not run without it: `hyst sim --model` applies it */
-        const std::string why = path + ": the model has a rate term (rate_tau, rate_weight), "
-                                       "which this front end does not apply yet: use `hyst sim "
-                                       "--model`";
-        return nb::str(why.c_str());
     }
     return model_dict(m);
 }
@@ -1166,6 +1225,12 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
              "A creep term (hyst/creep.h): lags of the model's input of time constants tau "
              "(samples) and weights weight, every lag at lo; empty lists remove it. Puts the "
              "model back at rest.")
+        .def("set_rate", &R::set_rate, "tau"_a.none(), "weight"_a.none(),
+             "A rate term (hyst/rate.h): the output plus weight times a low-pass, of time "
+             "constant tau samples, of the model input's change per sample, at rest at lo; "
+             "both None remove it. Puts the model back at rest.")
+        .def_ro("rate_tau", &R::rate_tau)
+        .def_ro("rate_weight", &R::rate_weight)
         .def_ro("creep_tau", &R::creep_tau)
         .def_ro("creep_weight", &R::creep_weight)
         .def_prop_ro("creep_output",
