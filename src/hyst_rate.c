@@ -128,6 +128,7 @@ unsigned hyst_rate_events(const hyst_rate_t *R) { return R != NULL ? R->events :
 void hyst_rate_clear_events(hyst_rate_t *R)
 {
     if (R != NULL) {
+        ++R->seq;
         R->events = 0u;
     }
 }

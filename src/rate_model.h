@@ -26,6 +26,7 @@ HYST_INLINE hyst_status_t NUM_NAME(rate_reset_impl)(hyst_rate_t *R, NUM_T x_rest
     if (!(x_rest >= -R->x_limit.NUM_F && x_rest <= R->x_limit.NUM_F)) { /* NaN too */
         return HYST_ERR_NONFINITE;
     }
+    ++R->seq;
     R->last.NUM_F = x_rest;
     R->state.NUM_F = 0;
     R->status = HYST_OK;
@@ -44,6 +45,7 @@ HYST_INLINE NUM_T NUM_NAME(rate_step_impl)(hyst_rate_t *R, NUM_T x)
     if (R == NULL) {
         return 0;
     }
+    ++R->seq; /* every sample changes the state (snapshot.c) */
     v = R->state.NUM_F;
     r = R->weight.NUM_F * v; /* as output() computes it: bit for bit the same */
     if (!(x >= -R->x_limit.NUM_F && x <= R->x_limit.NUM_F)) { /* NaN fails too */

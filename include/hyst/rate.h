@@ -46,7 +46,8 @@
  *
  * Concurrency as tcm.h's: one stepping context calls step, init, reset,
  * clear_events and output; a context it preempts on the same core may read
- * the status and the events at any time.
+ * the status and the events, and save a snapshot (snapshot.h, "Rate
+ * snapshots": p and v through a brown-out), at any time.
  */
 #ifndef HYST_RATE_H
 #define HYST_RATE_H
@@ -73,6 +74,8 @@ typedef struct hyst_rate {
     hyst_num_t x_limit;
     int status;         /**< hyst_status_t of the last sample */
     unsigned events;    /**< sticky HYST_EVENT_* flags */
+    unsigned long seq;  /**< changed by every change of the state (a snapshot's
+                             consistency check) */
 } hyst_rate_t;
 
 /**

@@ -246,26 +246,29 @@ struct Tcm {
     /* The creep term's lags, when the instance has one (Real). */
     virtual const hyst_creep_t *creep_of() const { return nullptr; }
     virtual void set_creep_state(const hyst_creep_t &) {}
-    /* Whether the instance has a rate term (Real): no snapshot holds it. */
-    virtual bool has_rate_term() const { return false; }
+    /* The rate term's state, when the instance has one (Real). */
+    virtual const hyst_rate_t *rate_of() const { return nullptr; }
+    virtual void set_rate_state(const hyst_rate_t &) {}
 
-    /* The library's snapshot; with a creep term, its creep snapshot after it
-     * (snapshot.h: each says its own length). */
+    /* The library's snapshot; with a creep term, its creep snapshot after
+     * it, then with a rate term its rate snapshot (snapshot.h: each says its
+     * own length). */
     nb::bytes save() const
     {
-        if (has_rate_term()) {
-            raise_status(HYST_ERR_ARG, "snapshot save: the model has a rate term, which no "
-                                       "snapshot holds (docs/rate.md)");
-        }
         std::vector<unsigned char> buf(HYST_SNAPSHOT_SIZE(hyst_capacity(&S)) +
-                                       HYST_CREEP_SNAPSHOT_SIZE);
-        size_t len = 0u, creep_len = 0u;
+                                       HYST_CREEP_SNAPSHOT_SIZE + HYST_RATE_SNAPSHOT_SIZE);
+        size_t len = 0u, creep_len = 0u, rate_len = 0u;
         check(hyst_snapshot_save(&S, buf.data(), buf.size(), &len), "snapshot save");
         if (const hyst_creep_t *c = creep_of()) {
             check(hyst_creep_snapshot_save(c, buf.data() + len, buf.size() - len, &creep_len),
                   "creep snapshot save");
         }
-        return nb::bytes(reinterpret_cast<const char *>(buf.data()), len + creep_len);
+        if (const hyst_rate_t *r = rate_of()) {
+            check(hyst_rate_snapshot_save(r, buf.data() + len + creep_len,
+                                          buf.size() - len - creep_len, &rate_len),
+                  "rate snapshot save");
+        }
+        return nb::bytes(reinterpret_cast<const char *>(buf.data()), len + creep_len + rate_len);
     }
     /* Both parts checked before either is written: all or nothing. */
     void restore(const nb::bytes &b)
@@ -279,11 +282,30 @@ struct Tcm {
         const bool creep_follows = n >= 4u && len <= n - 4u && p[len] == 0x48u &&
                                    p[len + 1u] == 0x59u && p[len + 2u] == 0x53u &&
                                    p[len + 3u] == 0x43u;
+        /* a rate part after the creep part (its length at its octets 8..11), or after the model's */
+        const size_t at = len + (creep_follows && n >= len + 12u
+                                     ? (size_t)p[len + 8u] | (size_t)p[len + 9u] << 8 |
+                                           (size_t)p[len + 10u] << 16 | (size_t)p[len + 11u] << 24
+                                     : 0u);
+        const bool rate_follows = n >= 4u && at <= n - 4u && p[at] == 0x48u &&
+                                  p[at + 1u] == 0x59u && p[at + 2u] == 0x53u &&
+                                  p[at + 3u] == 0x52u;
         const hyst_creep_t *c = creep_of();
+        const hyst_rate_t *r = rate_of();
         hyst_creep_t lags{};
-        if (has_rate_term()) {
-            raise_status(HYST_ERR_ARG, "snapshot restore: the model has a rate term, which no "
-                                       "snapshot holds (docs/rate.md)");
+        hyst_rate_t term{};
+        if (r != nullptr) {
+            term = *r;
+            if (len <= n && !rate_follows) {
+                raise_status(HYST_ERR_FORMAT,
+                             "snapshot restore: the model has a rate term, the snapshot none");
+            }
+            if (len <= n) {
+                check(hyst_rate_snapshot_restore(&term, p + at, n - at), "rate snapshot restore");
+            }
+        } else if (rate_follows) {
+            raise_status(HYST_ERR_FORMAT,
+                         "snapshot restore: the snapshot has a rate term, the model none");
         }
         if (c != nullptr) {
             lags = *c;
@@ -302,6 +324,9 @@ struct Tcm {
         check(hyst_snapshot_restore(&S, p, n), "snapshot restore");
         if (c != nullptr) {
             set_creep_state(lags);
+        }
+        if (r != nullptr) {
+            set_rate_state(term);
         }
     }
 };
@@ -538,7 +563,8 @@ template <class T> struct Real : Owned<T, T> {
         rate_weight = weight;
         reset();
     }
-    bool has_rate_term() const override { return has_rate; }
+    const hyst_rate_t *rate_of() const override { return has_rate ? &rate : nullptr; }
+    void set_rate_state(const hyst_rate_t &r) override { rate = r; }
     const hyst_creep_t *creep_of() const override { return has_creep ? &creep : nullptr; }
     void set_creep_state(const hyst_creep_t &c) override { creep = c; }
     void reset() override
