@@ -28,9 +28,10 @@
  *   [cands, best, with_creep] = hyst_mex('select', x, y, kinds, method, lo, hi, skip,
  *                                        delay_first, max_delay, t_degree, creep_tau)
  *   m = hyst_mex('model_parse', bytes, file)    the reader of tools/model_text
- *   t = hyst_mex('model_write', kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau, cweight)
+ *   t = hyst_mex('model_write', kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau, cweight
+ *                [, identified[, rtau, rweight]])
  *   t = hyst_mex('header_open', name, kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau,
- *                cweight), hyst_mex('header_close', name)
+ *                cweight[, rtau, rweight]), hyst_mex('header_close', name)
  *   t = hyst_mex('header_table', name, kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau,
  *                cweight, intervals, rows)   the compensator's table of a header
  *
@@ -1112,7 +1113,8 @@ static void numbers_arg(const mxArray *v, const char *name, double *a, size_t ca
  * [] or NULL: none), checked as the reader checks a file: hyst:usage with
  * its reason otherwise. */
 static void model_text_arg(model_text_t *m, const mxArray *const prhs[10],
-                           const mxArray *identified, const char *caller)
+                           const mxArray *identified, const mxArray *const *rate,
+                           const char *caller)
 {
     char kind[8], msg[MODEL_TEXT_MSG_SIZE];
     double v;
@@ -1149,6 +1151,14 @@ static void model_text_arg(model_text_t *m, const mxArray *const prhs[10],
         m->has_identified = 1;
         m->id_lo = mxGetPr(identified)[0];
         m->id_hi = mxGetPr(identified)[1];
+    }
+    if (rate != NULL) { /* rate_tau, rate_weight: scalars, or both empty */
+        model_arg_t r;
+        memset(&r, 0, sizeof r);
+        rate_arg(&r, rate[0], rate[1]);
+        m->has_rate = r.has_rate;
+        m->rate_tau = (double)r.rate_tau;
+        m->rate_weight = (double)r.rate_weight;
     }
     if (model_text_check(m, msg, sizeof msg) != 0) {
         mexErrMsgIdAndTxt("hyst:usage", "%s: %s", caller, msg);
@@ -1243,7 +1253,7 @@ static void run_header_table(mxArray *plhs[], int nrhs, const mxArray *prhs[])
         !model_text_identifier(name)) {
         usage("NAME must be a C identifier");
     }
-    model_text_arg(&m, prhs + 1, NULL, "hyst_header");
+    model_text_arg(&m, prhs + 1, NULL, NULL, "hyst_header");
     intervals = count(prhs[11], "intervals", 1.0, INTERVALS_MAX); /* before allocating */
     rows = m.kind == MODEL_TEXT_EVERETT ? count(prhs[12], "rows", ROWS_MIN, ROWS_MAX) : 0u;
     size = model_text_header_table_size(&m, rows, intervals);
@@ -1272,18 +1282,20 @@ static void run_model_text(const char *cmd, mxArray *plhs[], int nrhs, const mxA
     const size_t size = 32768u;
     size_t len = 0u;
     int over;
-    if (close ? nrhs != 1 : header ? nrhs != 11 : nrhs != 10 && nrhs != 11) {
+    if (close ? nrhs != 1
+              : header ? nrhs != 11 && nrhs != 13
+                       : nrhs != 10 && nrhs != 11 && nrhs != 13) {
         usage("model_write takes kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau, "
-              "creep_weight[, identified]; header_open NAME and the same but identified; "
-              "header_close NAME");
+              "creep_weight[, identified[, rate_tau, rate_weight]]; header_open NAME and the "
+              "same but identified; header_close NAME");
     }
     if (header && (!mxIsChar(prhs[0]) || mxGetString(prhs[0], name, sizeof name) != 0 ||
                    !model_text_identifier(name))) {
         usage("NAME must be a C identifier");
     }
     if (!close) {
-        model_text_arg(&m, prhs + (header ? 1 : 0), !header && nrhs == 11 ? prhs[10] : NULL,
-                       header ? "hyst_header" : "hyst_model_save");
+        model_text_arg(&m, prhs + (header ? 1 : 0), !header && nrhs >= 11 ? prhs[10] : NULL,
+                       nrhs == 13 ? prhs + 11 : NULL, header ? "hyst_header" : "hyst_model_save");
     }
     buf = (char *)mxMalloc(size);
     if (close) {

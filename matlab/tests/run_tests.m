@@ -20,7 +20,8 @@ function failed = run_tests(root, ref, cli)
            @t_creep_sim_inv_equal_cli, @t_creep_sum_of_lags, @t_creep_save_load, ...
            @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors, ...
            @t_readers_agree, @t_fit_delay_saved, @t_fit_chooses_as_cli, ...
-           @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_not_written};
+           @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
+           @t_rate_refused};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -1489,19 +1490,50 @@ function t_rate_sim_inv_equal_cli(ctx)
   end
 end
 
-function t_rate_not_written(ctx)
-  % not dropped where not written: hyst_model_save and hyst_header refuse
-  % a model with a rate term; a rate field alone or not a scalar is refused
+function t_rate_written_as_cli(ctx)
+  % hyst_model_save writes a loaded rate term back as the tool writes it
+  % (the same model loaded again); hyst_header's rate block is 'hyst header
+  % --model''s; refused: a rate field alone, not a scalar, tau below 1
+  file = fullfile(ctx.tmp, 'rate.hyst');
+  again = fullfile(ctx.tmp, 'rate_again.hyst');
+  texts = rate_models();
+  for k = 1:numel(texts)
+    write_text(file, texts{k});
+    m = hyst_model_load(file);
+    hyst_model_save(again, m);
+    check(isequal(hyst_model_load(again), m), 'model %d: not the same model back', k);
+    t = fileread(again);
+    check(~isempty(strfind(t, sprintf('rate_tau %.17g\nrate_weight %.17g', m.rate_tau, ...
+                                      m.rate_weight))), 'model %d: no rate keys', k);
+    run_cli(ctx, sprintf('header --model "%s" --dir "%s" mdl', file, ctx.tmp));
+    cli = fileread(fullfile(ctx.tmp, 'mdl.h'));
+    h = hyst_header(m, 'mdl');
+    first = strfind(h, '/* rate:');
+    last = strfind(h, 'mdl_rate_weight =');
+    stop = strfind(h(last:end), ';');
+    block = h(first:last + stop(1) - 1);
+    check(~isempty(first) && ~isempty(strfind(cli, block)) && ...
+          ~isempty(strfind(h, '#include "hyst/rate.h"')), ...
+          'model %d: the header''s rate block is not hyst header''s', k);
+  end
+  m.rate_tau = 0.5;
+  expect_error('hyst:usage', @() hyst_model_save(again, m));
+end
+
+function t_rate_refused(ctx)
+  % a rate field alone or not a scalar is refused, and a time constant the
+  % library refuses; nothing written
   file = fullfile(ctx.tmp, 'rate.hyst');
   texts = rate_models();
   write_text(file, texts{2});
   m = hyst_model_load(file);
-  expect_error('hyst:usage', @() hyst_model_save(fullfile(ctx.tmp, 'again.hyst'), m));
-  check(~exist(fullfile(ctx.tmp, 'again.hyst'), 'file'), 'a file was written');
-  expect_error('hyst:usage', @() hyst_header(m, 'rate_model'));
+  expect_error('hyst:usage', @() hyst_model_save(fullfile(ctx.tmp, 'rate_bad.hyst'), ...
+                                                 rmfield(m, 'rate_tau')));
+  check(~exist(fullfile(ctx.tmp, 'rate_bad.hyst'), 'file'), 'a file was written');
   expect_error('hyst:usage', @() hyst_sim(rmfield(m, 'rate_weight'), 1));
   m.rate_tau = [1 2];
   expect_error('hyst:usage', @() hyst_sim(m, 1));
+  expect_error('hyst:usage', @() hyst_header(m, 'rate_model'));
   m.rate_tau = 0.5;  % below 1 sample: the library refuses it
   expect_error('hyst:ERR_ARG', @() hyst_sim(m, 1));
 end

@@ -931,7 +931,8 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
                       const std::vector<double> &coeffs, double degree, double y_lo,
                       const std::vector<double> &terms, const std::vector<double> &creep_tau,
                       const std::vector<double> &creep_weight,
-                      const std::vector<double> &identified = {})
+                      const std::vector<double> &identified = {},
+                      const std::vector<double> &rate = {})
 {
     model_text_t m;
     char msg[MODEL_TEXT_MSG_SIZE];
@@ -944,6 +945,14 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
     }
     if (identified.size() != 0u && identified.size() != 2u) {
         throw nb::value_error("identified needs two values (LO HI)");
+    }
+    if (rate.size() != 0u && rate.size() != 2u) {
+        throw nb::value_error("a rate term needs rate_tau and rate_weight (both or neither)");
+    }
+    if (rate.size() == 2u) { /* checked with the rest by model_text_check() */
+        m.has_rate = 1;
+        m.rate_tau = rate[0];
+        m.rate_weight = rate[1];
     }
     m.kind = kind == "everett" ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
     m.lo = lo;
@@ -978,10 +987,10 @@ std::string model_write(const std::string &kind, double lo, double hi, double de
                         const std::vector<double> &coeffs, double degree, double y_lo,
                         const std::vector<double> &terms, const std::vector<double> &creep_tau,
                         const std::vector<double> &creep_weight,
-                        const std::vector<double> &identified)
+                        const std::vector<double> &identified, const std::vector<double> &rate)
 {
     const model_text_t m = model_of(kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
-                                    creep_weight, identified);
+                                    creep_weight, identified, rate);
     std::vector<char> buf(16384u);
     const size_t len = model_text_write(&m, buf.data(), buf.size());
     if (len == 0u) {
@@ -996,7 +1005,7 @@ std::string model_header(const std::string &name, bool open, const std::string &
                          double hi, const std::vector<double> &coeffs, double degree,
                          double y_lo, const std::vector<double> &terms,
                          const std::vector<double> &creep_tau,
-                         const std::vector<double> &creep_weight)
+                         const std::vector<double> &creep_weight, const std::vector<double> &rate)
 {
     if (!model_text_identifier(name.c_str()) || name.size() != std::strlen(name.c_str())) {
         throw nb::value_error(("'" + name + "' is not a C identifier").c_str());
@@ -1006,7 +1015,8 @@ std::string model_header(const std::string &name, bool open, const std::string &
     int over;
     if (open) {
         const model_text_t m =
-            model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, creep_tau, creep_weight);
+            model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, creep_tau, creep_weight, {},
+                     rate);
         over = model_text_header_open(buf.data(), buf.size(), &len, name.c_str(), &m);
     } else {
         over = model_text_header_close(buf.data(), buf.size(), &len, name.c_str());
@@ -1412,10 +1422,12 @@ NB_MODULE(_hyst, m)
           "A model file's bytes read by the format's one reader: its dict, or the message.");
     m.def("model_write", &model_write, "kind"_a, "lo"_a, "hi"_a, "delay"_a, "coeffs"_a,
           "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
-          "identified"_a = std::vector<double>(),
-          "A model file's text (ValueError for what the reader would refuse).");
+          "identified"_a = std::vector<double>(), "rate"_a = std::vector<double>(),
+          "A model file's text (ValueError for what the reader would refuse); rate: "
+          "(rate_tau, rate_weight), or empty.");
     m.def("model_header", &model_header, "name"_a, "open"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
+          "rate"_a = std::vector<double>(),
           "A firmware header's opening (the model) or close, as `hyst header` writes them.");
     m.def("model_header_table", &model_header_table, "name"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "intervals"_a, "rows"_a,

@@ -122,5 +122,34 @@ def test_refused_where_not_applied(tmp_path):
     assert m.rate_tau == 1.0
     m.set_rate(None, None)  # removed
     assert m.rate_tau is None and m.rate_weight is None
-    with pytest.raises(TypeError):
-        hyst.save_model(tmp_path / "again.hyst", **hyst.load_model(path))
+    with pytest.raises(ValueError, match="rate_tau and rate_weight"):
+        hyst.save_model(tmp_path / "again.hyst", coeffs=[1.0, 0.0], lo=0, hi=1, rate_tau=2.0)
+    with pytest.raises(ValueError, match="rate_tau"):  # the reader's check
+        hyst.save_model(tmp_path / "again.hyst", coeffs=[1.0, 0.0], lo=0, hi=1, rate_tau=0.5,
+                        rate_weight=1.0)
+    assert not (tmp_path / "again.hyst").exists()
+
+
+@pytest.mark.parametrize("text", [EV_RATE, POLY_RATE], ids=["everett", "poly"])
+def test_written_as_the_cli_writes_it(c_build, tmp_path, text):
+    """save_model(**load_model(f)) keeps the rate term, in the tool's words;
+    header_text's rate block is `hyst header --model`'s (kind poly: the
+    whole text from the include guard on)."""
+    path = tmp_path / "m.hyst"
+    path.write_text(text)
+    desc = hyst.load_model(path)
+    again = tmp_path / "again.hyst"
+    hyst.save_model(again, **desc)
+    assert hyst.load_model(again) == desc
+    lines = again.read_text().splitlines()
+    assert lines[-2:] == ["rate_tau %.17g" % desc["rate_tau"],
+                          "rate_weight %.17g" % desc["rate_weight"]]
+    subprocess.run([str(c_build["cli"]), "header", "--model", str(path), "--dir", str(tmp_path),
+                    "mdl"], check=True, capture_output=True)
+    cli_text = (tmp_path / "mdl.h").read_text()
+    mine = hyst.header_text("mdl", **desc)
+    block = mine[mine.index("/* rate:"):mine.index(";", mine.index("mdl_rate_weight")) + 1]
+    assert block in cli_text and "mdl_rate_tau" in block
+    assert '#include "hyst/rate.h"' in mine
+    if desc["kind"] == "poly":
+        assert mine[mine.index("#ifndef"):] == cli_text[cli_text.index("#ifndef"):]
