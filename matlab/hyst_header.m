@@ -30,7 +30,10 @@ function text = hyst_header(model, name, varargin)
 %   literals) for hyst_creep_init(&creep, NAME_CREEP_TERMS, NAME_creep_tau,
 %   NAME_creep_weight, lo), as the host tool writes them; the compensator's
 %   table is the hysteresis model's alone (firmware subtracts
-%   hyst_creep_output() from the desired output before it).
+%   hyst_creep_output() from the desired output before it). A model with a
+%   rate term (fields rate_tau, rate_weight) also gets '#include
+%   "hyst/rate.h"', NAME_rate_tau and NAME_rate_weight, for
+%   hyst_rate_init(&rate, NAME_rate_tau, NAME_rate_weight, lo).
 %
 %   HYST_HEADER(..., 'file', F) also writes TEXT to the file F, whole or not
 %   at all: a temporary file beside F, renamed to F once written; on failure
@@ -72,7 +75,8 @@ function text = hyst_header(model, name, varargin)
   % the guard, the declaration and the creep term: the format's one
   % implementation (tools/model_text), as 'hyst header' writes them
   parts = model_args(p);
-  text = [model_comment(p), hyst_mex('header_open', name, parts{:}), table, ...
+  text = [model_comment(p), hyst_mex('header_open', name, parts{:}, p.rate_tau, p.rate_weight), ...
+          table, ...
           hyst_mex('header_close', name)];
   if ~isempty(opts.file)
     hyst_write_whole(opts.file, text, caller);

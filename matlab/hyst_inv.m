@@ -32,6 +32,7 @@ function [x, status, tp_count, inv_err] = hyst_inv(model, y, varargin)
 %   depends on the drives before), and the creep's lags then take that
 %   drive in: the numbers of 'hyst inv --model' (which, like HYST_INV, does
 %   not compensate the model's delay). With a table, the table is the
-%   hysteresis model's alone, as firmware's.
+%   hysteresis model's alone, as firmware's. A rate term (fields rate_tau,
+%   rate_weight) is subtracted the same way, with the creep's.
   [x, status, tp_count, inv_err] = hyst_run('inv', model, y, varargin);
 end

@@ -7,13 +7,14 @@
  *
  *   v = hyst_mex('version')                      HYST_VERSION_STRING
  *   s = hyst_mex('status_str', code)             hyst_status_str(code)
- *   [y, st, ntp] = hyst_mex('sim', coeffs, lo, hi, x, capacity, deadband[, ctau, cweight])
+ *   [y, st, ntp] = hyst_mex('sim', coeffs, lo, hi, x, capacity, deadband[, ctau, cweight
+ *                           [, rtau, rweight]])
  *   [x, st, ntp, err] = hyst_mex('inv', coeffs, lo, hi, y, capacity, deadband, intervals
- *                                [, ctau, cweight])
+ *                                [, ctau, cweight[, rtau, rweight]])
  *   [y, st, ntp] = hyst_mex('sim_everett', degree, lo, hi, y_lo, terms, x, capacity, deadband
- *                           [, ctau, cweight])
+ *                           [, ctau, cweight[, rtau, rweight]])
  *   [x, st, ntp, err] = hyst_mex('inv_everett', degree, lo, hi, y_lo, terms, y, capacity,
- *                                deadband, intervals, rows[, ctau, cweight])
+ *                                deadband, intervals, rows[, ctau, cweight[, rtau, rweight]])
  *   [c, st] = hyst_mex('creep', tau, weight, x_rest, x)
  *   [rms, creep] = hyst_mex('holdout', coeffs, lo, hi, x, y, skip, delay, from, tau)
  *   [rms, creep] = hyst_mex('holdout_everett', degree, lo, hi, y_lo, terms, x, y, skip, delay,
@@ -27,9 +28,10 @@
  *   [cands, best, with_creep] = hyst_mex('select', x, y, kinds, method, lo, hi, skip,
  *                                        delay_first, max_delay, t_degree, creep_tau)
  *   m = hyst_mex('model_parse', bytes, file)    the reader of tools/model_text
- *   t = hyst_mex('model_write', kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau, cweight)
+ *   t = hyst_mex('model_write', kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau, cweight
+ *                [, identified[, rtau, rweight]])
  *   t = hyst_mex('header_open', name, kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau,
- *                cweight), hyst_mex('header_close', name)
+ *                cweight[, rtau, rweight]), hyst_mex('header_close', name)
  *   t = hyst_mex('header_table', name, kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau,
  *                cweight, intervals, rows)   the compensator's table of a header
  *
@@ -77,6 +79,11 @@
  * the lags take the drive in. Sample by sample then, the block call's
  * statuses folded as it folds them; the library checks the numbers
  * (hyst_*_creep_init(): hyst:ERR_ARG, hyst:ERR_WEIGHTS).
+ * rtau, rweight (both scalars, or both empty: none): a rate term
+ * (hyst/rate.h) of time constant rtau samples and weight rweight, at rest at
+ * lo, run with the creep term as the tool runs both: sim adds both terms'
+ * contributions, inv subtracts both before inverting (the sum in double, as
+ * tools/cli/cli_tcm.c sums them); hyst_*_rate_init() checks the numbers.
  * creep: the creep term alone over x (hyst_f64_creep_step, or _f32 for x
  * single), every lag at x_rest first: its contributions c (x's class and
  * shape) and st, 0 or -7 (a non-finite sample, ignored).
@@ -252,7 +259,26 @@ typedef struct model_arg {
     hyst_everett_t e;
     size_t ncreep;      /* lags of its creep term; 0: none */
     hyst_wide_t creep_tau[HYST_CREEP_MAX_TERMS], creep_weight[HYST_CREEP_MAX_TERMS];
+    int has_rate;       /* a rate term of time constant rate_tau, weight rate_weight */
+    hyst_wide_t rate_tau, rate_weight;
 } model_arg_t;
+
+/* A rate term's time constant and weight into m: two real double scalars,
+ * or both empty (none). Their values are the library's to check. */
+static void rate_arg(model_arg_t *m, const mxArray *tau, const mxArray *weight)
+{
+    const size_t n = mxGetNumberOfElements(tau);
+    if (!is_real_double(tau) || !is_real_double(weight) ||
+        mxGetNumberOfElements(weight) != n || n > 1u) {
+        usage("rate_tau and rate_weight must be real double scalars (or both empty: no rate "
+              "term)");
+    }
+    m->has_rate = n == 1u;
+    if (m->has_rate) {
+        m->rate_tau = (hyst_wide_t)((const double *)mxGetData(tau))[0];
+        m->rate_weight = (hyst_wide_t)((const double *)mxGetData(weight))[0];
+    }
+}
 
 /* A creep term's time constants and weights into m: two real double
  * vectors of 1..HYST_CREEP_MAX_TERMS entries each, as many, or both empty
@@ -357,24 +383,32 @@ DEFINE_BUILD(f32, float)
  * less the creep's share, whose lags then take the drive in) run it, the
  * statuses folded as the block call folds them. */
 #define DEFINE_RUN(P, T)                                                                    \
-    static int run_##P(hyst_tcm_t *S, hyst_creep_t *C, const model_arg_t *m, const T *x,     \
-                       T *y, size_t n)                                                      \
+    static int run_##P(hyst_tcm_t *S, hyst_creep_t *C, hyst_rate_t *R, const model_arg_t *m, \
+                       const T *x, T *y, size_t n)                                          \
     {                                                                                       \
         int worst = HYST_OK, failed = 0, st;                                                \
         size_t i;                                                                           \
-        if (m->ncreep == 0u) {                                                              \
+        if (m->ncreep == 0u && !m->has_rate) {                                              \
             return hyst_##P##_process(S, x, y, n);                                          \
         }                                                                                   \
         for (i = 0u; i < n; ++i) {                                                          \
             const T xi = x[i];                                                              \
             if (m->inverse) {                                                               \
-                const T v = xi - hyst_##P##_creep_output(C);                                \
+                const T v = xi - (T)((m->ncreep > 0u ? (double)hyst_##P##_creep_output(C) : 0.0) + \
+                                     (m->has_rate ? (double)hyst_##P##_rate_output(R) : 0.0)); \
                 const T drive = hyst_##P##_step(S, v);                                      \
-                (void)hyst_##P##_creep_step(C, drive);                                      \
+                if (m->ncreep > 0u) {                                                       \
+                    (void)hyst_##P##_creep_step(C, drive);                                  \
+                }                                                                           \
+                if (m->has_rate) {                                                          \
+                    (void)hyst_##P##_rate_step(R, drive);                                   \
+                }                                                                           \
                 y[i] = drive;                                                               \
             } else {                                                                        \
                 const T h = hyst_##P##_step(S, xi);                                         \
-                y[i] = h + hyst_##P##_creep_step(C, hyst_##P##_input(S));                   \
+                const T u = hyst_##P##_input(S);                                            \
+                const double c = m->ncreep > 0u ? (double)hyst_##P##_creep_step(C, u) : 0.0; \
+                y[i] = h + (T)(c + (m->has_rate ? (double)hyst_##P##_rate_step(R, u) : 0.0)); \
             }                                                                               \
             st = hyst_status(S);                                                            \
             if (st < 0) {                                                                   \
@@ -400,6 +434,17 @@ static int creep_init(hyst_creep_t *C, const model_arg_t *m, int f32)
                : hyst_f64_creep_init(C, m->ncreep, m->creep_tau, m->creep_weight, x_rest);
 }
 
+/* The rate term of m in variant f64 (or f32), at rest at the domain's lo. */
+static int rate_init(hyst_rate_t *R, const model_arg_t *m, int f32)
+{
+    const hyst_wide_t x_rest = (hyst_wide_t)(m->everett ? m->e.lo : m->f0.lo);
+    if (!m->has_rate) {
+        return HYST_OK;
+    }
+    return f32 ? hyst_f32_rate_init(R, m->rate_tau, m->rate_weight, x_rest)
+               : hyst_f64_rate_init(R, m->rate_tau, m->rate_weight, x_rest);
+}
+
 /* Runs model m over x: prhs = x, capacity, deadband. */
 static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArray *prhs[])
 {
@@ -407,6 +452,7 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
     hyst_tcm_t S;
     hyst_curve_t curve;
     hyst_creep_t creep;
+    hyst_rate_t rate;
     const mxArray *x = prhs[0];
     mxArray *y;
     size_t n, cap, len;
@@ -432,8 +478,11 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
         if (st == HYST_OK) {
             st = creep_init(&creep, m, 0);
         }
+        if (st == HYST_OK) {
+            st = rate_init(&rate, m, 0);
+        }
         if (st == HYST_OK && n > 0u) {
-            st = run_f64(&S, &creep, m, (const double *)mxGetData(x), (double *)mxGetData(y), n);
+            st = run_f64(&S, &creep, &rate, m, (const double *)mxGetData(x), (double *)mxGetData(y), n);
         }
         if (st < 0 && st != HYST_ERR_NONFINITE) {
             mxFree(tp);
@@ -450,8 +499,11 @@ static void run_tcm(const model_arg_t *m, int nlhs, mxArray *plhs[], const mxArr
         if (st == HYST_OK) {
             st = creep_init(&creep, m, 1);
         }
+        if (st == HYST_OK) {
+            st = rate_init(&rate, m, 1);
+        }
         if (st == HYST_OK && n > 0u) {
-            st = run_f32(&S, &creep, m, (const float *)mxGetData(x), (float *)mxGetData(y), n);
+            st = run_f32(&S, &creep, &rate, m, (const float *)mxGetData(x), (float *)mxGetData(y), n);
         }
         if (st < 0 && st != HYST_ERR_NONFINITE) {
             mxFree(tp);
@@ -481,17 +533,21 @@ static void run_poly(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxA
 {
     model_arg_t m;
     const int args = inverse ? 7 : 6;
-    if (nrhs != args && nrhs != args + 2) {
+    if (nrhs != args && nrhs != args + 2 && nrhs != args + 4) {
         usage(inverse ? "inv takes coeffs, lo, hi, x, capacity, deadband, intervals[, ctau, "
-                        "cweight]"
-                      : "sim takes coeffs, lo, hi, x, capacity, deadband[, ctau, cweight]");
+                        "cweight[, rtau, rweight]]"
+                      : "sim takes coeffs, lo, hi, x, capacity, deadband[, ctau, cweight[, rtau, "
+                        "rweight]]");
     }
     memset(&m, 0, sizeof m);
     m.inverse = inverse;
     m.intervals = inverse ? count(prhs[6], "intervals", 0.0, INTERVALS_MAX) : 0u;
     m.f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
-    if (nrhs == args + 2) {
+    if (nrhs >= args + 2) {
         creep_arg(&m, prhs[args], prhs[args + 1]);
+    }
+    if (nrhs == args + 4) {
+        rate_arg(&m, prhs[args + 2], prhs[args + 3]);
     }
     run_tcm(&m, nlhs, plhs, prhs + 3);
 }
@@ -502,11 +558,11 @@ static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const 
 {
     model_arg_t m;
     const int args = inverse ? 10 : 8;
-    if (nrhs != args && nrhs != args + 2) {
+    if (nrhs != args && nrhs != args + 2 && nrhs != args + 4) {
         usage(inverse ? "inv_everett takes degree, lo, hi, y_lo, terms, y, capacity, deadband, "
-                        "intervals, rows[, ctau, cweight]"
+                        "intervals, rows[, ctau, cweight[, rtau, rweight]]"
                       : "sim_everett takes degree, lo, hi, y_lo, terms, x, capacity, "
-                        "deadband[, ctau, cweight]");
+                        "deadband[, ctau, cweight[, rtau, rweight]]");
     }
     memset(&m, 0, sizeof m);
     m.everett = 1;
@@ -516,8 +572,11 @@ static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const 
         m.rows = count(prhs[9], "rows", ROWS_MIN, ROWS_MAX);
     }
     m.e = everett_arg(prhs, inverse ? "hyst_inv" : "hyst_sim");
-    if (nrhs == args + 2) {
+    if (nrhs >= args + 2) {
         creep_arg(&m, prhs[args], prhs[args + 1]);
+    }
+    if (nrhs == args + 4) {
+        rate_arg(&m, prhs[args + 2], prhs[args + 3]);
     }
     run_tcm(&m, nlhs, plhs, prhs + 5);
 }
@@ -1054,7 +1113,8 @@ static void numbers_arg(const mxArray *v, const char *name, double *a, size_t ca
  * [] or NULL: none), checked as the reader checks a file: hyst:usage with
  * its reason otherwise. */
 static void model_text_arg(model_text_t *m, const mxArray *const prhs[10],
-                           const mxArray *identified, const char *caller)
+                           const mxArray *identified, const mxArray *const *rate,
+                           const char *caller)
 {
     char kind[8], msg[MODEL_TEXT_MSG_SIZE];
     double v;
@@ -1091,6 +1151,14 @@ static void model_text_arg(model_text_t *m, const mxArray *const prhs[10],
         m->has_identified = 1;
         m->id_lo = mxGetPr(identified)[0];
         m->id_hi = mxGetPr(identified)[1];
+    }
+    if (rate != NULL) { /* rate_tau, rate_weight: scalars, or both empty */
+        model_arg_t r;
+        memset(&r, 0, sizeof r);
+        rate_arg(&r, rate[0], rate[1]);
+        m->has_rate = r.has_rate;
+        m->rate_tau = (double)r.rate_tau;
+        m->rate_weight = (double)r.rate_weight;
     }
     if (model_text_check(m, msg, sizeof msg) != 0) {
         mexErrMsgIdAndTxt("hyst:usage", "%s: %s", caller, msg);
@@ -1159,6 +1227,12 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
         set_field(s, "creep_tau", row_of(m.creep_tau, m.ncreep));
         set_field(s, "creep_weight", row_of(m.creep_weight, m.ncreep));
     }
+    if (m.has_rate) {
+        (void)mxAddField(s, "rate_tau");
+        (void)mxAddField(s, "rate_weight");
+        set_field(s, "rate_tau", mxCreateDoubleScalar(m.rate_tau));
+        set_field(s, "rate_weight", mxCreateDoubleScalar(m.rate_weight));
+    }
     plhs[0] = s;
 }
 
@@ -1179,7 +1253,7 @@ static void run_header_table(mxArray *plhs[], int nrhs, const mxArray *prhs[])
         !model_text_identifier(name)) {
         usage("NAME must be a C identifier");
     }
-    model_text_arg(&m, prhs + 1, NULL, "hyst_header");
+    model_text_arg(&m, prhs + 1, NULL, NULL, "hyst_header");
     intervals = count(prhs[11], "intervals", 1.0, INTERVALS_MAX); /* before allocating */
     rows = m.kind == MODEL_TEXT_EVERETT ? count(prhs[12], "rows", ROWS_MIN, ROWS_MAX) : 0u;
     size = model_text_header_table_size(&m, rows, intervals);
@@ -1208,18 +1282,20 @@ static void run_model_text(const char *cmd, mxArray *plhs[], int nrhs, const mxA
     const size_t size = 32768u;
     size_t len = 0u;
     int over;
-    if (close ? nrhs != 1 : header ? nrhs != 11 : nrhs != 10 && nrhs != 11) {
+    if (close ? nrhs != 1
+              : header ? nrhs != 11 && nrhs != 13
+                       : nrhs != 10 && nrhs != 11 && nrhs != 13) {
         usage("model_write takes kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau, "
-              "creep_weight[, identified]; header_open NAME and the same but identified; "
-              "header_close NAME");
+              "creep_weight[, identified[, rate_tau, rate_weight]]; header_open NAME and the "
+              "same but identified; header_close NAME");
     }
     if (header && (!mxIsChar(prhs[0]) || mxGetString(prhs[0], name, sizeof name) != 0 ||
                    !model_text_identifier(name))) {
         usage("NAME must be a C identifier");
     }
     if (!close) {
-        model_text_arg(&m, prhs + (header ? 1 : 0), !header && nrhs == 11 ? prhs[10] : NULL,
-                       header ? "hyst_header" : "hyst_model_save");
+        model_text_arg(&m, prhs + (header ? 1 : 0), !header && nrhs >= 11 ? prhs[10] : NULL,
+                       nrhs == 13 ? prhs + 11 : NULL, header ? "hyst_header" : "hyst_model_save");
     }
     buf = (char *)mxMalloc(size);
     if (close) {

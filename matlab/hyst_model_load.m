@@ -15,7 +15,10 @@ function model = hyst_model_load(file)
 %   creep_tau (1 to 4 time constants, samples, each at least 1) and
 %   creep_weight (as many weights), both or neither: then MODEL also has the
 %   fields creep_tau and creep_weight (rows), which HYST_SIM, HYST_INV,
-%   HYST_MODEL_SAVE and HYST_HEADER take (docs/matlab.md, "Creep"). The
+%   HYST_MODEL_SAVE and HYST_HEADER take (docs/matlab.md, "Creep"). A rate
+%   term (keys rate_tau, rate_weight: docs/rate.md) gives MODEL the fields
+%   rate_tau and rate_weight, which HYST_SIM and HYST_INV apply and
+%   HYST_MODEL_SAVE and HYST_HEADER write. The
 %   delay may hold a fraction of a sample (3.5); a file with the key
 %   identified LO HI (the inputs' range the model was identified on, within
 %   [lo, hi]) gives MODEL the field identified, [LO HI], which

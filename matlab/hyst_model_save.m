@@ -18,7 +18,9 @@ function hyst_model_save(file, model)
 %   everett, lo, hi, y_lo, delay, degree and terms. A model
 %   with a creep term (fields creep_tau and creep_weight, 1 to 4 numbers
 %   each) gets a comment line and the keys creep_tau and creep_weight after
-%   its own, as the host tool writes them ('hyst fit --save').
+%   its own, as the host tool writes them ('hyst fit --save'); one with a
+%   rate term (fields rate_tau and rate_weight, scalars) the keys rate_tau
+%   and rate_weight after those.
 %   Numbers are written with 17 significant digits, so HYST_MODEL_LOAD gives
 %   the same doubles back. The file is written whole or not at all (a
 %   temporary file beside FILE, renamed to it; on failure removed and an
@@ -33,10 +35,10 @@ function hyst_model_save(file, model)
   % one 'hyst fit --save' and the Python package write
   if strcmp(p.kind, 'everett')
     text = hyst_mex('model_write', 'everett', p.lo, p.hi, p.delay, [], p.degree, p.y_lo, ...
-                    p.terms, p.creep_tau, p.creep_weight, p.identified);
+                    p.terms, p.creep_tau, p.creep_weight, p.identified, p.rate_tau, p.rate_weight);
   else
     text = hyst_mex('model_write', 'poly', p.lo, p.hi, p.delay, p.coeffs, 0, 0, [], ...
-                    p.creep_tau, p.creep_weight, p.identified);
+                    p.creep_tau, p.creep_weight, p.identified, p.rate_tau, p.rate_weight);
   end
   hyst_write_whole(file, text, 'hyst_model_save');
 end

@@ -18,7 +18,11 @@ function [y, status, tp_count] = hyst_sim(model, x, varargin)
 %   HYST_FIT return for one) adds to each output sum_k creep_weight(k) s_k,
 %   s_k a first-order lag (hyst/creep.h) of the input as the model took it
 %   (clamped to [lo, hi]) from lo at rest, strictly causal: the numbers of
-%   'hyst sim --model' (docs/matlab.md, "Creep").
+%   'hyst sim --model' (docs/matlab.md, "Creep"). A MODEL with a rate term
+%   (fields rate_tau and rate_weight, scalars: docs/rate.md) adds
+%   rate_weight times a low-pass, of time constant rate_tau samples, of the
+%   change of the input as the model took it, 0 at rest: again the numbers
+%   of 'hyst sim --model'.
 %
 %   Options (name/value): 'capacity' turning points per array (default
 %   2048: never full for inputs taking at most 4096 distinct values),

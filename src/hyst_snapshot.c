@@ -21,6 +21,7 @@
 #define MAGIC2 0x53u /* 'S' */
 #define MAGIC3 0x53u /* 'S' */
 #define MAGIC3_CREEP 0x43u /* 'C': a creep term's snapshot */
+#define MAGIC3_RATE 0x52u  /* 'R': a rate term's snapshot */
 #define HEADER_OCTETS 32u
 #define NO_LEVEL 0xFFFFFFFFul /* no live merge */
 #define CRC_OCTETS 4u
@@ -667,6 +668,33 @@ hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf, siz
     return HYST_OK;
 }
 
+/* ---- Snapshots of a term (creep, rate): one head, one tail ---- */
+
+/* Octets 0..15 of a term's snapshot: magic ending in magic3, version, the
+ * octets per real, the variant, the length and the term's id. */
+static void put_term_head(unsigned char *buf, unsigned magic3, unsigned version, unsigned r,
+                          unsigned variant, size_t need, unsigned long id)
+{
+    buf[0] = MAGIC0;
+    buf[1] = MAGIC1;
+    buf[2] = MAGIC2;
+    buf[3] = (unsigned char)magic3;
+    put_u16(buf + 4, version);
+    buf[6] = (unsigned char)r;
+    buf[7] = (unsigned char)variant;
+    put_u32(buf + 8, (unsigned long)need);
+    put_u32(buf + 12, id);
+}
+
+/* The CRC of a term's snapshot of `need` octets, and its length. */
+static void put_term_crc(unsigned char *buf, size_t need, size_t *len)
+{
+    put_u32(buf + need - CRC_OCTETS, hyst_crc32(0ul, buf, need - CRC_OCTETS));
+    if (len != NULL) {
+        *len = need;
+    }
+}
+
 /* ---- Creep snapshots (snapshot.h, "Creep snapshots") ---- */
 
 #define CREEP_HEADER_OCTETS 28u
@@ -732,15 +760,8 @@ hyst_status_t hyst_creep_snapshot_save(const hyst_creep_t *C, unsigned char *buf
     for (attempt = 0u; attempt < HYST_READ_ATTEMPTS; ++attempt) {
         const unsigned long seq = V->seq;
         HYST_BARRIER();
-        buf[0] = MAGIC0;
-        buf[1] = MAGIC1;
-        buf[2] = MAGIC2;
-        buf[3] = MAGIC3_CREEP;
-        put_u16(buf + 4, HYST_CREEP_SNAPSHOT_VERSION);
-        buf[6] = (unsigned char)r;
-        buf[7] = (unsigned char)C->variant;
-        put_u32(buf + 8, (unsigned long)need);
-        put_u32(buf + 12, creep_id(C, t));
+        put_term_head(buf, MAGIC3_CREEP, HYST_CREEP_SNAPSHOT_VERSION, r, C->variant, need,
+                      creep_id(C, t));
         put_u32(buf + 16, (unsigned long)C->n);
         put_u32(buf + 20, (unsigned long)C->events);
         put_status(buf + 24, C->status);
@@ -754,10 +775,7 @@ hyst_status_t hyst_creep_snapshot_save(const hyst_creep_t *C, unsigned char *buf
         if (V->seq != seq) {
             continue;
         }
-        put_u32(buf + need - CRC_OCTETS, hyst_crc32(0ul, buf, need - CRC_OCTETS));
-        if (len != NULL) {
-            *len = need;
-        }
+        put_term_crc(buf, need, len);
         return HYST_OK;
     }
     buf[0] = 0u;
@@ -820,5 +838,139 @@ hyst_status_t hyst_creep_snapshot_restore(hyst_creep_t *C, const unsigned char *
     }
     C->status = status;
     C->events = (unsigned)events;
+    return HYST_OK;
+}
+
+/* ---- Rate snapshots (snapshot.h, "Rate snapshots") ---- */
+
+#define RATE_HEADER_OCTETS 24u
+
+/* The octets per real and the number type of an initialised rate
+ * instance's variant; 0 if it is none. */
+static unsigned rate_format(const hyst_rate_t *R, num_type_t *t)
+{
+    switch (R->variant) {
+    case HYST_VARIANT_F32: *t = NUM_F32; return 4u;
+#if HYST_ENABLE_F64
+    case HYST_VARIANT_F64: *t = NUM_F64; return 8u;
+#endif
+    default: return 0u;
+    }
+}
+
+/* What a snapshot restores into only the same rate term: the variant, a
+ * and w. */
+static unsigned long rate_id(const hyst_rate_t *R, num_type_t t)
+{
+    const unsigned long crc = crc_word(0ul, (unsigned long)R->variant);
+    return crc_num(crc_num(crc, &R->alpha, t), &R->weight, t);
+}
+
+/* L of a rate snapshot: p and v, r octets each. */
+static size_t rate_length(unsigned r) { return RATE_HEADER_OCTETS + 2u * r + CRC_OCTETS; }
+
+size_t hyst_rate_snapshot_size(const hyst_rate_t *R)
+{
+    num_type_t t;
+    const unsigned r = R != NULL ? rate_format(R, &t) : 0u;
+    return r != 0u ? rate_length(r) : 0u;
+}
+
+hyst_status_t hyst_rate_snapshot_save(const hyst_rate_t *R, unsigned char *buf, size_t size,
+                                      size_t *len)
+{
+    const volatile hyst_rate_t *V = R;
+    num_type_t t;
+    unsigned r, attempt;
+    size_t need;
+    if (R == NULL || buf == NULL) {
+        return HYST_ERR_NULL;
+    }
+    r = rate_format(R, &t);
+    if (r == 0u) {
+        return HYST_ERR_ARG;
+    }
+    need = rate_length(r); /* variant: set by init only */
+    if (size < need) {
+        return HYST_ERR_NOSPACE;
+    }
+    for (attempt = 0u; attempt < HYST_READ_ATTEMPTS; ++attempt) {
+        const unsigned long seq = V->seq;
+        HYST_BARRIER();
+        put_term_head(buf, MAGIC3_RATE, HYST_RATE_SNAPSHOT_VERSION, r, R->variant, need,
+                      rate_id(R, t));
+        put_u32(buf + 16, (unsigned long)R->events);
+        put_status(buf + 20, R->status);
+        put_u16(buf + 22, 0u);
+        put_num(buf + RATE_HEADER_OCTETS, &R->last, t);
+        put_num(buf + RATE_HEADER_OCTETS + r, &R->state, t);
+        HYST_BARRIER();
+        /* a volatile re-read: a step may have run meanwhile */
+        /* cppcheck-suppress knownConditionTrueFalse */
+        if (V->seq != seq) {
+            continue;
+        }
+        put_term_crc(buf, need, len);
+        return HYST_OK;
+    }
+    buf[0] = 0u;
+    return HYST_ERR_BUSY;
+}
+
+hyst_status_t hyst_rate_snapshot_restore(hyst_rate_t *R, const unsigned char *buf, size_t len)
+{
+    hyst_num_t last, state;
+    hyst_wide_t limit, p, v;
+    num_type_t t;
+    unsigned long events;
+    unsigned r;
+    int status;
+    size_t need;
+    if (R == NULL || buf == NULL) {
+        return HYST_ERR_NULL;
+    }
+    r = rate_format(R, &t);
+    if (r == 0u) {
+        return HYST_ERR_ARG;
+    }
+    memset(&last, 0, sizeof last); /* a float leaves the rest of its union as init does: 0 */
+    memset(&state, 0, sizeof state);
+    if (len < RATE_HEADER_OCTETS + CRC_OCTETS || buf[0] != MAGIC0 || buf[1] != MAGIC1 ||
+        buf[2] != MAGIC2 || buf[3] != MAGIC3_RATE) {
+        return HYST_ERR_FORMAT;
+    }
+    if (get_u16(buf + 4) != HYST_RATE_SNAPSHOT_VERSION || buf[6] != r || buf[7] != R->variant) {
+        return HYST_ERR_VERSION;
+    }
+    need = rate_length(r);
+    if (get_u32(buf + 8) != (unsigned long)need || need > len) {
+        return HYST_ERR_FORMAT; /* truncated, or another length */
+    }
+    if (hyst_crc32(0ul, buf, need - CRC_OCTETS) != get_u32(buf + need - CRC_OCTETS)) {
+        return HYST_ERR_CRC;
+    }
+    if (get_u32(buf + 12) != rate_id(R, t)) {
+        return HYST_ERR_CURVE;
+    }
+    events = get_u32(buf + 16);
+    status = get_status(buf + 20);
+    (void)get_num(buf + RATE_HEADER_OCTETS, &last, t);
+    (void)get_num(buf + RATE_HEADER_OCTETS + r, &state, t);
+    limit = wide_of(&R->x_limit, t);
+    p = wide_of(&last, t);
+    v = wide_of(&state, t);
+    /* p a drive the term took, v a low-pass of changes of such drives (NaN fails too) */
+    if ((events & ~(unsigned long)HYST_EVENT_NONFINITE) != 0u ||
+        (status != HYST_OK && status != HYST_ERR_NONFINITE && status != HYST_ERR_DOMAIN) ||
+        get_u16(buf + 22) != 0u || !(p >= -limit && p <= limit) ||
+        !(v >= -2 * limit && v <= 2 * limit)) {
+        return HYST_ERR_FORMAT;
+    }
+    /* Everything checked: only now write the instance. */
+    ++R->seq;
+    R->last = last;
+    R->state = state;
+    R->status = status;
+    R->events = (unsigned)events;
     return HYST_OK;
 }

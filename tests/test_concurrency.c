@@ -37,9 +37,14 @@ static hyst_creep_t K, KR, KT; /* a creep term: stepped, reference, restored */
 static unsigned char creep_snap[HYST_CREEP_SNAPSHOT_SIZE + GUARD];
 static unsigned char creep_ref[HYST_CREEP_SNAPSHOT_SIZE];
 
+static hyst_rate_t Q, QR, QT; /* a rate term: stepped, reference, restored */
+static unsigned char rate_snap[HYST_RATE_SNAPSHOT_SIZE + GUARD];
+static unsigned char rate_ref[HYST_RATE_SNAPSHOT_SIZE];
+
 /* Shared with the handler. */
 static volatile sig_atomic_t stepping;
 static volatile sig_atomic_t stepping_creep; /* the handler steps K instead of S */
+static volatile sig_atomic_t stepping_rate;  /* the handler steps Q instead of S */
 static volatile long k_done;   /* samples the handler has stepped */
 static volatile long served_k; /* the sample at whose end a request was applied */
 
@@ -53,6 +58,11 @@ static void on_tick(int sig)
     }
     if (stepping_creep) {
         (void)hyst_creep_step(&K, input[k_done]);
+        k_done = k_done + 1;
+        return;
+    }
+    if (stepping_rate) {
+        (void)hyst_rate_step(&Q, input[k_done]);
         k_done = k_done + 1;
         return;
     }
@@ -86,6 +96,7 @@ static void timer_stop(void)
     (void)setitimer(ITIMER_REAL, &it, NULL);
     stepping = 0;
     stepping_creep = 0;
+    stepping_rate = 0;
 }
 
 /* Waits (busy: the handler runs meanwhile) until the handler has stepped
@@ -236,6 +247,63 @@ static void test_creep_save_while_the_interrupt_steps(void)
     TEST_ASSERT_TRUE(ok > 0);
 }
 
+/* The same for a rate term's snapshot (snapshot.h, "Rate snapshots"):
+ * every snapshot that reports OK holds p and v after one of the samples
+ * stepped during the save. */
+static void test_rate_save_while_the_interrupt_steps(void)
+{
+    long k_ref = 0, saves = 0, ok = 0, busy = 0, interrupted = 0;
+    fill_inputs();
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&Q, 3.0, 0.5, 20.0));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&QR, 3.0, 0.5, 20.0));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&QT, 3.0, 0.5, 20.0));
+    k_done = 0;
+    stepping_rate = 1;
+    stepping = 1;
+    timer_start();
+    while (interrupted < 200 && k_done < N_INPUTS - 10L) {
+        const long k0 = k_done;
+        const size_t size = hyst_rate_snapshot_size(&Q);
+        size_t len = 0u, g, rlen = 0u;
+        long k1, k;
+        int st, matched = 0;
+        memset(rate_snap, GUARD_BYTE, sizeof rate_snap);
+        st = hyst_rate_snapshot_save(&Q, rate_snap, size, &len);
+        k1 = k_done;
+        ++saves;
+        interrupted += k1 > k0;
+        for (g = size; g < size + GUARD; ++g) {
+            TEST_ASSERT_EQUAL_HEX8_MESSAGE(GUARD_BYTE, rate_snap[g], "save wrote past its buffer");
+        }
+        if (st == HYST_ERR_BUSY) {
+            ++busy;
+            TEST_ASSERT_NOT_EQUAL_MESSAGE(0x48u, rate_snap[0], "a BUSY buffer still looks like a snapshot");
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, st);
+        ++ok;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_snapshot_restore(&QT, rate_snap, len));
+        for (; k_ref < k0; ++k_ref) {
+            (void)hyst_rate_step(&QR, input[k_ref]);
+        }
+        for (k = k0; k <= k1 && !matched; ++k) {
+            TEST_ASSERT_EQUAL_INT(HYST_OK,
+                                  hyst_rate_snapshot_save(&QR, rate_ref, sizeof rate_ref, &rlen));
+            matched = rlen == len && memcmp(rate_ref, rate_snap, len) == 0;
+            if (!matched && k < k1) {
+                (void)hyst_rate_step(&QR, input[k_ref]);
+                ++k_ref;
+            }
+        }
+        TEST_ASSERT_TRUE_MESSAGE(matched, "a rate snapshot is no state the term was in");
+    }
+    timer_stop();
+    printf("rate saves %ld: ok %ld, busy %ld; interrupted by the handler %ld; samples %ld\n",
+           saves, ok, busy, interrupted, (long)k_done);
+    TEST_ASSERT_TRUE_MESSAGE(interrupted > 0, "no save was ever interrupted: nothing tested");
+    TEST_ASSERT_TRUE(ok > 0);
+}
+
 enum { REQ_RESET, REQ_DEADBAND, REQ_CLEAR, REQ_KINDS };
 
 /* Requests posted from the main loop at arbitrary moments are applied by the
@@ -351,6 +419,7 @@ int main(void)
     RUN_TEST(test_requests_applied_by_a_clamped_or_nan_sample);
     RUN_TEST(test_save_while_the_interrupt_steps);
     RUN_TEST(test_creep_save_while_the_interrupt_steps);
+    RUN_TEST(test_rate_save_while_the_interrupt_steps);
     RUN_TEST(test_requests_while_the_interrupt_steps);
     return UNITY_END();
 }

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Snapshot/restore: octet format, round trip, and refusal of every damaged
  * snapshot (each bit flipped once, each truncation) with the instance untouched;
- * the same for a creep term's snapshot. */
+ * the same for a creep term's snapshot and a rate term's. */
 #include "support.h"
 #include "unity.h"
 
@@ -612,6 +612,164 @@ static void test_creep_other_term_and_bad_calls_are_refused(void)
     TEST_ASSERT_EACH_EQUAL_HEX8(0xA5, small, sizeof small);
 }
 
+/* ---- Rate snapshots ---- */
+
+static hyst_rate_t QA, QB, Qkeep;
+
+/* A rate term of 5 samples stepped on a triangle, a NaN last. */
+static size_t rate_snapshot(void)
+{
+    size_t len = 0u;
+    int k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&QA, 5.0, -0.75, 3.0));
+    for (k = 0; k < 333; ++k) {
+        (void)hyst_rate_step(&QA, (hyst_real_t)(k % 200 < 100 ? k % 100 : 100 - k % 100) /
+                                      HYST_REAL_C(2.5));
+    }
+    (void)hyst_rate_step(&QA, (hyst_real_t)NAN);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_snapshot_save(&QA, snap, sizeof snap, &len));
+    TEST_ASSERT_EQUAL_size_t(hyst_rate_snapshot_size(&QA), len);
+    TEST_ASSERT_EQUAL_size_t(28u + 2u * R, len);
+    TEST_ASSERT_TRUE(len <= HYST_RATE_SNAPSHOT_SIZE);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&QB, 5.0, -0.75, 0.0));
+    Qkeep = QB;
+    return len;
+}
+
+static void assert_rate_untouched(void)
+{
+    TEST_ASSERT_EQUAL_MEMORY(&Qkeep, &QB, sizeof QB);
+}
+
+static void test_rate_round_trip_continues_bit_identically(void)
+{
+    const size_t len = rate_snapshot();
+    unsigned char again[HYST_RATE_SNAPSHOT_SIZE];
+    size_t len2 = 0u;
+    int k;
+    TEST_ASSERT_EQUAL_UINT8_ARRAY("HYSR", snap, 4);
+    TEST_ASSERT_FALSE(hyst_rate_output(&QB) == hyst_rate_output(&QA)); /* v != 0: it counts */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_snapshot_restore(&QB, snap, len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NONFINITE, hyst_rate_status(&QB));
+    TEST_ASSERT_EQUAL_UINT(HYST_EVENT_NONFINITE, hyst_rate_events(&QB));
+    TEST_ASSERT_EQUAL_MEMORY(&QA.last, &QB.last, sizeof QA.last);
+    TEST_ASSERT_EQUAL_MEMORY(&QA.state, &QB.state, sizeof QA.state);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_snapshot_save(&QB, again, sizeof again, &len2));
+    TEST_ASSERT_EQUAL_size_t(len, len2);
+    TEST_ASSERT_EQUAL_MEMORY(snap, again, len);
+    for (k = 0; k < 500; ++k) {
+        const hyst_real_t x = (hyst_real_t)(k % 37) + HYST_REAL_C(0.25);
+        const hyst_real_t ra = hyst_rate_step(&QA, x), rb = hyst_rate_step(&QB, x);
+        TEST_ASSERT_EQUAL_MEMORY(&ra, &rb, sizeof ra);
+    }
+}
+
+/* Each bit flip is refused with its field's error; the instance unchanged. */
+static void test_rate_every_bit_flip_and_truncation_is_refused(void)
+{
+    const size_t len = rate_snapshot();
+    size_t i;
+    unsigned bit;
+    for (i = 0u; i < len; ++i) {
+        for (bit = 0u; bit < 8u; ++bit) {
+            const int expected = i < 4u || (i >= 8u && i < 12u) ? HYST_ERR_FORMAT /* magic, length */
+                                 : i < 8u ? HYST_ERR_VERSION
+                                          : HYST_ERR_CRC;
+            memcpy(work, snap, len);
+            work[i] = (unsigned char)(work[i] ^ (1u << bit));
+            TEST_ASSERT_EQUAL_INT_MESSAGE(expected, hyst_rate_snapshot_restore(&QB, work, len),
+                                          "flipped bit not refused as expected");
+            assert_rate_untouched();
+        }
+    }
+    for (i = 0u; i < len; ++i) {
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_rate_snapshot_restore(&QB, snap, i));
+        assert_rate_untouched();
+    }
+    /* extra octets after it are ignored (fixed-size NVM slots) */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_snapshot_restore(&QB, snap, sizeof snap));
+}
+
+/* Values no instance can hold, under a valid CRC: refused as FORMAT. */
+static void test_rate_forged_values_with_a_valid_crc_are_refused(void)
+{
+    const size_t len = rate_snapshot();
+    static const size_t at[5] = {16u, 20u, 22u, 24u + R - 1u, 24u + 2u * R - 1u};
+    static const unsigned char value[5] = {0x04u, 0x05u, 0x01u, 0x7Fu, 0x7Fu};
+    unsigned i;
+    /* an unknown event, status 5, reserved, p's exponent, v's exponent */
+    for (i = 0u; i < 5u; ++i) {
+        memcpy(work, snap, len);
+        work[at[i]] = value[i];
+        if (i >= 3u) { /* every exponent bit: infinity or NaN */
+            work[at[i] - 1u] = (unsigned char)(work[at[i] - 1u] | (R == 4u ? 0x80u : 0xF0u));
+        }
+        refix_crc(work, len);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_rate_snapshot_restore(&QB, work, len));
+        assert_rate_untouched();
+    }
+    for (i = 0u; i < 2u; ++i) { /* finite but beyond the drive limit (p) or twice it (v) */
+        memcpy(work, snap, len);
+        work[24u + (i + 1u) * R - 1u] = 0x7Fu; /* exponent just below infinity's */
+        work[24u + (i + 1u) * R - 2u] = (unsigned char)(R == 4u ? 0x7Fu : 0xEFu);
+        refix_crc(work, len);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_rate_snapshot_restore(&QB, work, len));
+        assert_rate_untouched();
+    }
+    memcpy(work, snap, len);
+    work[4] = (unsigned char)(HYST_RATE_SNAPSHOT_VERSION + 1u);
+    refix_crc(work, len);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_VERSION, hyst_rate_snapshot_restore(&QB, work, len));
+    assert_rate_untouched();
+}
+
+/* Another rate term (weight, time constant), another variant, a creep
+ * snapshot, an instance not initialised, NULL, a small buffer. */
+static void test_rate_other_term_and_bad_calls_are_refused(void)
+{
+    const size_t len = rate_snapshot();
+    hyst_rate_t blank;
+    unsigned char small[HYST_RATE_SNAPSHOT_SIZE];
+    size_t got = 99u;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&QB, 5.0, -0.7501, 0.0));
+    Qkeep = QB;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_rate_snapshot_restore(&QB, snap, len));
+    assert_rate_untouched();
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&QB, 6.0, -0.75, 0.0));
+    Qkeep = QB;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_rate_snapshot_restore(&QB, snap, len));
+    assert_rate_untouched();
+#if HYST_ENABLE_F64
+    {
+        hyst_rate_t other;
+#ifdef HYST_USE_DOUBLE
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f32_rate_init(&other, 5.0, -0.75, 0.0));
+#else
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_rate_init(&other, 5.0, -0.75, 0.0));
+#endif
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_VERSION, hyst_rate_snapshot_restore(&other, snap, len));
+    }
+#endif
+    (void)creep_snapshot(); /* a creep term's snapshot in snap: not a rate term's */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_FORMAT, hyst_rate_snapshot_restore(&QB, snap, sizeof snap));
+    assert_rate_untouched();
+    memset(&blank, 0, sizeof blank);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_rate_snapshot_restore(&blank, snap, len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_rate_snapshot_save(&blank, small, sizeof small, &got));
+    TEST_ASSERT_EQUAL_size_t(0u, hyst_rate_snapshot_size(&blank));
+    TEST_ASSERT_EQUAL_size_t(0u, hyst_rate_snapshot_size(NULL));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_rate_snapshot_restore(NULL, snap, len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_rate_snapshot_restore(&QA, NULL, len));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_rate_snapshot_save(NULL, small, sizeof small, &got));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_rate_snapshot_save(&QA, NULL, sizeof small, &got));
+    memset(small, 0xA5, sizeof small);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOSPACE,
+                          hyst_rate_snapshot_save(&QA, small, hyst_rate_snapshot_size(&QA) - 1u,
+                                                  &got));
+    TEST_ASSERT_EQUAL_size_t(99u, got);
+    TEST_ASSERT_EACH_EQUAL_HEX8(0xA5, small, sizeof small);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -636,5 +794,9 @@ int main(void)
     RUN_TEST(test_creep_every_bit_flip_and_truncation_is_refused);
     RUN_TEST(test_creep_forged_values_with_a_valid_crc_are_refused);
     RUN_TEST(test_creep_other_term_and_bad_calls_are_refused);
+    RUN_TEST(test_rate_round_trip_continues_bit_identically);
+    RUN_TEST(test_rate_every_bit_flip_and_truncation_is_refused);
+    RUN_TEST(test_rate_forged_values_with_a_valid_crc_are_refused);
+    RUN_TEST(test_rate_other_term_and_bad_calls_are_refused);
     return UNITY_END();
 }

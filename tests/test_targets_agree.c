@@ -37,6 +37,7 @@ static const expected_t EXPECTED[] = {
     {"asymmetric compensator table", 0xdc85eddbul, 0x31a56264ul},
     {"PI-10", 0x23bb9837ul, 0xe1e51cadul},
     {"creep", 0x03004b7bul, 0xd277fd77ul},
+    {"rate", 0x25a02f6aul, 0xff3a93c9ul},
 };
 
 static hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
@@ -159,14 +160,15 @@ static void test_asymmetric_kinds(void)
     agree(4u, out);
 }
 
-/* The PI model of ten operators and a creep term of three lags, whose sums
- * are marked multiply-adds too. */
+/* The PI model of ten operators, a creep term of three lags and a rate
+ * term, whose sums and low-pass are marked multiply-adds too. */
 static void test_sums(void)
 {
     static hyst_real_t r[10], w[10], z[10];
     static const hyst_wide_t tau[3] = {30.0, 300.0, 3000.0}, weight[3] = {0.02, -0.01, 0.005};
     hyst_pi_t P;
     hyst_creep_t C;
+    hyst_rate_t R;
     long k;
     unsigned i;
     for (i = 0u; i < 10u; ++i) {
@@ -182,6 +184,11 @@ static void test_sums(void)
         y[k] = hyst_creep_step(&C, x[k]);
     }
     agree(6u, y);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&R, 7.0, 0.3, 0.0));
+    for (k = 0; k < SAMPLES; ++k) {
+        y[k] = hyst_rate_step(&R, x[k]);
+    }
+    agree(7u, y);
 }
 
 static void test_every_kind_agrees_with_the_host_build(void)

@@ -35,5 +35,6 @@
 #include "hyst/inverse.h"
 #include "hyst/pi.h"
 #include "hyst/creep.h"
+#include "hyst/rate.h"
 
 #endif /* HYST_HYST_H */

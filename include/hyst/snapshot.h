@@ -2,7 +2,7 @@
 /**
  * @file snapshot.h
  * @brief Snapshot and restore of a TCM instance's memory (turning points),
- *        and of a creep term's lags.
+ *        and of a creep term's lags and a rate term's state.
  *
  * A piezo stage keeps its hysteresis state through a brown-out only if the
  * model does: save the instance to non-volatile memory, restore it at boot.
@@ -56,6 +56,7 @@
 #define HYST_SNAPSHOT_H
 
 #include "hyst/creep.h"
+#include "hyst/rate.h"
 #include "hyst/status.h"
 #include "hyst/tcm.h"
 
@@ -199,6 +200,77 @@ hyst_status_t hyst_creep_snapshot_save(const hyst_creep_t *C, unsigned char *buf
  *         or weights).
  */
 hyst_status_t hyst_creep_snapshot_restore(hyst_creep_t *C, const unsigned char *buf, size_t len);
+/**@}*/
+
+/**
+ * @name Rate snapshots
+ * @brief The state of a rate term (rate.h), p (the drive taken last) and
+ *        v (the low-pass of its changes), through a brown-out, beside the
+ *        hysteresis model's snapshot and the creep term's: restored, the
+ *        term continues bit for bit.
+ *
+ * Octets as above (R octets per real of the instance's variant):
+ *
+ * | offset  | octets | field                                                |
+ * |---------|--------|------------------------------------------------------|
+ * | 0       | 4      | magic 0x48 0x59 0x53 0x52 ("HYSR")                   |
+ * | 4       | 2      | format version, HYST_RATE_SNAPSHOT_VERSION           |
+ * | 6       | 1      | R: octets per real, 4 or 8                           |
+ * | 7       | 1      | variant (hyst_variant_t)                             |
+ * | 8       | 4      | L: total length in octets, CRC included              |
+ * | 12      | 4      | rate id: hyst_crc32 of the variant, a and w,         |
+ * |         |        | serialised as here                                   |
+ * | 16      | 4      | sticky event flags (HYST_EVENT_*)                    |
+ * | 20      | 2      | status of the last sample, 16-bit two's complement   |
+ * | 22      | 2      | reserved, 0                                          |
+ * | 24      | R      | p, the drive taken last                              |
+ * | 24 + R  | R      | v, the low-pass of the drive's change                |
+ * | L - 4   | 4      | CRC-32 of octets [0, L - 4)                          |
+ *
+ * L = 28 + 2 R. Save and restore as the creep snapshot's: save may run in a
+ * context the stepping one preempts, restore only where no step can run.
+ */
+/**@{*/
+/** Format version written and accepted by this library. */
+#define HYST_RATE_SNAPSHOT_VERSION 1u
+/** Buffer length, in octets, that holds a snapshot of any rate instance. */
+#define HYST_RATE_SNAPSHOT_SIZE 44u
+
+/**
+ * @brief Length in octets of a snapshot of @p R (28 + 2 R).
+ * @return that length; 0 for NULL or an instance not initialised.
+ */
+size_t hyst_rate_snapshot_size(const hyst_rate_t *R);
+
+/**
+ * @brief Writes p, v, the status and the sticky events of @p R, with its
+ *        rate id, into @p buf.
+ * @param[in]  R    initialised instance (not modified).
+ * @param[out] buf  @p size elements; each receives one octet (0..255).
+ * @param[in]  size elements available in @p buf.
+ * @param[out] len  if not NULL: octets written.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (not initialised),
+ *         HYST_ERR_NOSPACE (nothing written) or HYST_ERR_BUSY (a step
+ *         changed the state during every attempt; the magic is cleared).
+ */
+hyst_status_t hyst_rate_snapshot_save(const hyst_rate_t *R, unsigned char *buf, size_t size,
+                                      size_t *len);
+
+/**
+ * @brief Restores a rate snapshot into an instance initialised with the
+ *        same time constant and weight (the same rate id).
+ *
+ * Checks, in this order: magic, version and real width, length, CRC, rate
+ * id, then the values (p within the instance's drive limit, v finite and
+ * within twice it, a known status and known events, reserved octets 0).
+ * On any error @p R is left exactly as it was.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_ARG (R not initialised),
+ *         HYST_ERR_FORMAT (bad magic, truncated, inconsistent length,
+ *         impossible values), HYST_ERR_VERSION (other version or variant),
+ *         HYST_ERR_CRC (corrupted) or HYST_ERR_CURVE (other time constant
+ *         or weight).
+ */
+hyst_status_t hyst_rate_snapshot_restore(hyst_rate_t *R, const unsigned char *buf, size_t len);
 /**@}*/
 
 /**

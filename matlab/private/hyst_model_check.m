@@ -5,8 +5,9 @@ function hyst_model_check(p, caller)
 % asymmetric kind a degree 1..4 and degree (degree + 1) / 2 terms, a delay
 % of whole samples, a creep term as a model file holds it (creep_tau and
 % creep_weight both empty, or 1..4 numbers each, as many, the time
-% constants at least 1 sample, all finite). Another model raises
-% hyst:usage. The curve itself (increasing, monotone) is the library's to
+% constants at least 1 sample, all finite) and a rate term as a model file
+% holds it (rate_tau and rate_weight both empty, or finite scalars, the
+% time constant at least 1 sample). Another model raises hyst:usage. The curve itself (increasing, monotone) is the library's to
 % check.
   if strcmp(p.kind, 'everett')
     numbers = [p.terms p.y_lo];
@@ -23,6 +24,11 @@ function hyst_model_check(p, caller)
   end
   if ~isscalar(p.delay) || ~isreal(p.delay) || ~(p.delay >= 0 && p.delay <= 1e9)
     error('hyst:usage', '%s: delay must be a delay of 0 to 1e9 samples (3.5: a sub-sample delay)', caller);
+  end
+  if numel(p.rate_tau) ~= numel(p.rate_weight) || numel(p.rate_tau) > 1 || ...
+     ~all(isfinite([p.rate_tau p.rate_weight])) || ~all(p.rate_tau >= 1)
+    error('hyst:usage', ['%s: rate_tau and rate_weight: one number each, the time constant ' ...
+                         'at least 1 sample, finite (or both empty: no rate term)'], caller);
   end
   n = numel(p.creep_tau);
   if n ~= numel(p.creep_weight) || n > 4 || ~all(isfinite([p.creep_tau p.creep_weight])) || ...

@@ -8,7 +8,9 @@ function p = hyst_model_parts(model, caller)
 % model, kept in its file and stated in its header). P.creep_tau and
 % P.creep_weight: the creep term's time constants (samples) and weights,
 % rows, from MODEL's fields of those names ([] and [] without: no creep
-% term). Not checked here: HYST_MODEL_CHECK, or the library.
+% term). P.rate_tau and P.rate_weight: the rate term's time constant
+% (samples) and weight, from MODEL's fields of those names ([] and []
+% without: no rate term). Not checked here: HYST_MODEL_CHECK, or the library.
   if isstruct(model) && isfield(model, 'kind') && strcmp(model.kind, 'everett')
     if ~all(isfield(model, {'degree', 'lo', 'hi', 'y_lo', 'terms'}))
       error('hyst:usage', '%s: an everett model is a struct with fields kind, degree, lo, hi, y_lo, terms', ...
@@ -48,5 +50,20 @@ function p = hyst_model_parts(model, caller)
     end
     p.creep_tau = double(model.creep_tau(:)');
     p.creep_weight = double(model.creep_weight(:)');
+  end
+  p.rate_tau = [];
+  p.rate_weight = [];
+  if isfield(model, 'rate_tau') ~= isfield(model, 'rate_weight')
+    error('hyst:usage', '%s: a rate term needs the fields rate_tau and rate_weight (both or neither)', ...
+          caller);
+  end
+  if isfield(model, 'rate_tau')
+    if ~isnumeric(model.rate_tau) || ~isnumeric(model.rate_weight) || ...
+       ~isreal(model.rate_tau) || ~isreal(model.rate_weight) || ...
+       numel(model.rate_tau) ~= 1 || numel(model.rate_weight) ~= 1
+      error('hyst:usage', '%s: rate_tau and rate_weight are real scalars', caller);
+    end
+    p.rate_tau = double(model.rate_tau);
+    p.rate_weight = double(model.rate_weight);
   end
 end

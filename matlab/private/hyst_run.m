@@ -9,7 +9,8 @@ function [out, status, tp_count, inv_err] = hyst_run(command, model, in, args)
 %   Table sizes out of the library's range are refused here
 %   (HYST_TABLE_SIZES), before the gateway allocates anything. A model with
 %   a creep term (fields creep_tau, creep_weight) runs it too, as 'hyst sim
-%   --model' and 'hyst inv --model' do (the gateway's ctau, cweight).
+%   --model' and 'hyst inv --model' do (the gateway's ctau, cweight); so does
+%   one with a rate term (fields rate_tau, rate_weight: rtau, rweight).
   caller = ['hyst_' command];
   defaults = struct('capacity', 2048, 'deadband', 0);
   if strcmp(command, 'inv')
@@ -22,7 +23,7 @@ function [out, status, tp_count, inv_err] = hyst_run(command, model, in, args)
   if strcmp(command, 'inv')
     [intervals, rows] = hyst_table_sizes(opts.intervals, opts.rows, p.kind, caller, true);
   end
-  creep = {p.creep_tau, p.creep_weight};
+  creep = {p.creep_tau, p.creep_weight, p.rate_tau, p.rate_weight};
   if strcmp(p.kind, 'everett') && strcmp(command, 'inv')
     [out, status, tp_count, inv_err] = hyst_mex('inv_everett', p.degree, p.lo, p.hi, p.y_lo, ...
                                                 p.terms, in, double(opts.capacity), ...

@@ -20,7 +20,8 @@ function failed = run_tests(root, ref, cli)
            @t_creep_sim_inv_equal_cli, @t_creep_sum_of_lags, @t_creep_save_load, ...
            @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors, ...
            @t_readers_agree, @t_fit_delay_saved, @t_fit_chooses_as_cli, ...
-           @t_fit_searches_delays_as_cli};
+           @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
+           @t_rate_refused};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -1428,4 +1429,111 @@ function t_fit_searches_delays_as_cli(ctx)
   t = regexp(out, 'chosen by hold-out: degree (\d+), delay \d+ \(kind (\w+)', 'tokens', 'once');
   check(strcmp(f.kind, t{2}) && f.degree == str2double(t{1}), ...
         'the choice differs from hyst fit''s: %s', strjoin(t, ' '));
+end
+
+% ---- the rate term (hyst/rate.h, docs/rate.md) ----
+
+function write_text(file, text)
+  fid = fopen(file, 'w');
+  fputs(fid, text);
+  fclose(fid);
+end
+
+function texts = rate_models()
+  % an asymmetric model with a creep lag and a rate term, and f0 on a
+  % domain that does not start at 0 with a rate term alone
+  texts = {sprintf(['hyst-model-text 1\nkind everett\nlo 0\nhi 40\ny_lo 0.5\ndelay 2\n' ...
+                    'degree 3\nterms 3 1 0 2 -0.5 0.4\ncreep_tau 300\ncreep_weight 0.02\n' ...
+                    'rate_tau 4\nrate_weight 0.3\n']), ...
+           sprintf(['hyst-model-text 1\nkind poly\nlo 5\nhi 40\n' ...
+                    'coeffs -6.1876e-6 1.1949e-3 8.6444e-2 5.8517e-1\n' ...
+                    'rate_tau 1\nrate_weight -0.05\n'])};
+end
+
+function t_rate_sim_inv_equal_cli(ctx)
+  % a model file with a rate term runs bit for bit as hyst sim --model and
+  % its compensator as hyst inv --model; the term is there: the model
+  % without it differs by the low-pass of the clamped input's change
+  file = fullfile(ctx.tmp, 'rate.hyst');
+  fx = fullfile(ctx.tmp, 'rate_x.txt');
+  fy = fullfile(ctx.tmp, 'rate_y.txt');
+  texts = rate_models();
+  for k = 1:numel(texts)
+    write_text(file, texts{k});
+    m = hyst_model_load(file);
+    check(isfield(m, 'rate_tau') && isfield(m, 'rate_weight'), 'model %d: no rate fields', k);
+    x = signal(3000, m.lo, m.hi, 40 + k);
+    write_numbers(fx, x);
+    y = hyst_sim(m, x);
+    c = read_numbers(run_cli(ctx, sprintf('sim --model "%s" --digits 17 "%s" 2>/dev/null', ...
+                                          file, fx)));
+    d = m.delay;
+    check(isequal(c(d + 1:end), y(1:end - d)), 'model %d: sim differs from hyst sim --model', k);
+    u = min(max(x, m.lo), m.hi);
+    v = 0;
+    last = m.lo;
+    r = zeros(size(u));
+    for i = 1:numel(u)  % the rate term by its definition
+      r(i) = m.rate_weight * v;
+      v = v + ((u(i) - last) - v) / m.rate_tau;
+      last = u(i);
+    end
+    diff = y - hyst_sim(rmfield(m, {'rate_tau', 'rate_weight'}), x);
+    check(max(abs(diff)) > 0.1 && max(abs(diff - r)) < 1e-12, ...
+          'model %d: not the rate term of its definition', k);
+    write_numbers(fy, y);
+    c = read_numbers(run_cli(ctx, sprintf('inv --model "%s" --digits 17 "%s" 2>/dev/null', ...
+                                          file, fy)));
+    xd = hyst_inv(m, y);
+    check(isequal(c, xd), 'model %d: inv differs from hyst inv --model', k);
+    check(max(abs(xd - u)) < 1e-9 * (m.hi - m.lo), 'model %d: inv(sim(x)) is not x', k);
+  end
+end
+
+function t_rate_written_as_cli(ctx)
+  % hyst_model_save writes a loaded rate term back as the tool writes it
+  % (the same model loaded again); hyst_header's rate block is 'hyst header
+  % --model''s; refused: a rate field alone, not a scalar, tau below 1
+  file = fullfile(ctx.tmp, 'rate.hyst');
+  again = fullfile(ctx.tmp, 'rate_again.hyst');
+  texts = rate_models();
+  for k = 1:numel(texts)
+    write_text(file, texts{k});
+    m = hyst_model_load(file);
+    hyst_model_save(again, m);
+    check(isequal(hyst_model_load(again), m), 'model %d: not the same model back', k);
+    t = fileread(again);
+    check(~isempty(strfind(t, sprintf('rate_tau %.17g\nrate_weight %.17g', m.rate_tau, ...
+                                      m.rate_weight))), 'model %d: no rate keys', k);
+    run_cli(ctx, sprintf('header --model "%s" --dir "%s" mdl', file, ctx.tmp));
+    cli = fileread(fullfile(ctx.tmp, 'mdl.h'));
+    h = hyst_header(m, 'mdl');
+    first = strfind(h, '/* rate:');
+    last = strfind(h, 'mdl_rate_weight =');
+    stop = strfind(h(last:end), ';');
+    block = h(first:last + stop(1) - 1);
+    check(~isempty(first) && ~isempty(strfind(cli, block)) && ...
+          ~isempty(strfind(h, '#include "hyst/rate.h"')), ...
+          'model %d: the header''s rate block is not hyst header''s', k);
+  end
+  m.rate_tau = 0.5;
+  expect_error('hyst:usage', @() hyst_model_save(again, m));
+end
+
+function t_rate_refused(ctx)
+  % a rate field alone or not a scalar is refused, and a time constant the
+  % library refuses; nothing written
+  file = fullfile(ctx.tmp, 'rate.hyst');
+  texts = rate_models();
+  write_text(file, texts{2});
+  m = hyst_model_load(file);
+  expect_error('hyst:usage', @() hyst_model_save(fullfile(ctx.tmp, 'rate_bad.hyst'), ...
+                                                 rmfield(m, 'rate_tau')));
+  check(~exist(fullfile(ctx.tmp, 'rate_bad.hyst'), 'file'), 'a file was written');
+  expect_error('hyst:usage', @() hyst_sim(rmfield(m, 'rate_weight'), 1));
+  m.rate_tau = [1 2];
+  expect_error('hyst:usage', @() hyst_sim(m, 1));
+  expect_error('hyst:usage', @() hyst_header(m, 'rate_model'));
+  m.rate_tau = 0.5;  % below 1 sample: the library refuses it
+  expect_error('hyst:ERR_ARG', @() hyst_sim(m, 1));
 end

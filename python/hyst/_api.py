@@ -155,17 +155,30 @@ def _creep_of(desc):
     return {"creep_tau": desc.get("creep_tau"), "creep_weight": desc.get("creep_weight")}
 
 
+def _with_rate(m, desc):
+    """m with the description's rate term, if it has one (``rate_tau``,
+    ``rate_weight``: hyst_*_rate_*, at rest at lo), as ``hyst sim --model``
+    and ``hyst inv --model`` apply it."""
+    if desc.get("rate_tau") is not None or desc.get("rate_weight") is not None:
+        m.set_rate(desc.get("rate_tau"), desc.get("rate_weight"))
+    return m
+
+
 def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
     """The model a description gives: a :func:`hyst.load_model` dict (its
     delay is not the model's: apply it to the comparison) or
     ``Fit.description()``; kind poly (``coeffs``, ``lo``, ``hi``) when the
     dict has no ``kind``; with its creep term when it has ``creep_tau`` and
-    ``creep_weight``."""
+    ``creep_weight``, and its rate term (docs/rate.md: the output plus
+    ``rate_weight`` times a low-pass, of time constant ``rate_tau`` samples,
+    of the input's change) when it has ``rate_tau`` and ``rate_weight``.
+    A model with a rate term has no snapshot (``save()`` raises)."""
     if desc.get("kind", "poly") == "everett":
-        return ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
-                                desc["terms"], dtype=dtype, capacity=capacity, **_creep_of(desc))
-    return Model(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity,
-                 **_creep_of(desc))
+        return _with_rate(ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
+                                           desc["terms"], dtype=dtype, capacity=capacity,
+                                           **_creep_of(desc)), desc)
+    return _with_rate(Model(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype,
+                            capacity=capacity, **_creep_of(desc)), desc)
 
 
 def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, intervals=0,
@@ -177,16 +190,19 @@ def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inter
     :func:`ModelFromEverett` (with its ``rows``). ``rows`` is the asymmetric
     kind's: given for kind poly, it raises ``HystError`` (ERR_ARG). With
     the description's creep term, the compensator subtracts the creep's
-    contribution from each desired output first (:func:`Compensator`)."""
+    contribution from each desired output first (:func:`Compensator`); with
+    its rate term, the rate term's too (known before the drive is chosen)."""
     if desc.get("kind", "poly") == "everett":
-        return ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
-                                desc["terms"], dtype=dtype, capacity=capacity, inverse=True,
-                                intervals=intervals, rows=rows, **_creep_of(desc))
+        return _with_rate(ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
+                                           desc["terms"], dtype=dtype, capacity=capacity,
+                                           inverse=True, intervals=intervals, rows=rows,
+                                           **_creep_of(desc)), desc)
     if rows is not None:
         raise HystError(_hyst.Status.ERR_ARG,
                         "rows is the asymmetric kind's table (kind everett), not kind poly's")
-    return Compensator(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype, capacity=capacity,
-                       intervals=intervals, **_creep_of(desc))
+    return _with_rate(Compensator(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype,
+                                  capacity=capacity, intervals=intervals, **_creep_of(desc)),
+                      desc)
 
 
 def outside_identified(desc, x):

@@ -45,8 +45,18 @@ def _creep_args(creep_tau, creep_weight):
     return tau, weight
 
 
+def _rate_args(rate_tau, rate_weight):
+    """Checks a rate term as the model file holds it: both or neither, one
+    number each; returns [tau, weight] or [] (the reader checks the values)."""
+    if rate_tau is None and rate_weight is None:
+        return []
+    if rate_tau is None or rate_weight is None:
+        raise ValueError("a rate term needs rate_tau and rate_weight (both or neither)")
+    return [float(rate_tau), float(rate_weight)]
+
+
 def _model_call(what, kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
-                creep_weight, *before, identified=None):
+                creep_weight, *before, identified=None, rate=()):
     """The extension's model_write or model_header (tools/model_text), the
     model given by its parts (checked there as the reader checks a file)."""
     from . import _hyst
@@ -57,7 +67,7 @@ def _model_call(what, kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_ta
              list(creep_tau or []), list(creep_weight or [])]
     if what == "model_write":
         args.append([float(v) for v in identified] if identified is not None else [])
-    return getattr(_hyst, what)(*before, *args)
+    return getattr(_hyst, what)(*before, *args, rate=list(rate))
 
 
 def load_model(path):
@@ -71,7 +81,10 @@ def load_model(path):
     ``terms`` (e[i-1][j] of w^i t^j, i = 1..degree, then j = 0..degree-i);
     with a creep term also ``creep_tau`` (time constants, samples) and
     ``creep_weight`` (lists of 1 to 4 numbers, one per lag; the keys are
-    absent when the file has none). The file is read by the format's one
+    absent when the file has none); with a rate term also ``rate_tau``
+    (samples) and ``rate_weight`` (numbers; absent when the file has none:
+    :func:`model_from` applies it, :func:`save_model` and
+    :func:`header_text` write it). The file is read by the format's one
     reader in C (tools/model_text), the one ``hyst sim --model`` and the
     MATLAB/Octave functions call: a malformed file raises
     :class:`ModelFileError` with its words, naming the file, the line and
@@ -112,17 +125,21 @@ def _poly_args(coeffs, kind, degree, y_lo, terms):
 
 
 def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", degree=None,
-               y_lo=None, terms=None, creep_tau=None, creep_weight=None, identified=None):
+               y_lo=None, terms=None, creep_tau=None, creep_weight=None, identified=None,
+               rate_tau=None, rate_weight=None):
     """Writes a model file (17 significant digits: the same doubles read
     back), replacing ``path`` whole or not at all. ``kind="everett"`` writes
     the asymmetric kind from ``degree``, ``y_lo`` and ``terms`` (no
     ``coeffs``). ``creep_tau`` and ``creep_weight`` (both or neither, 1 to 4
     numbers each, time constants >= 1 sample) add a creep term, written after
-    the model as ``hyst fit --save`` writes it. ``delay`` may hold a
+    the model as ``hyst fit --save`` writes it; ``rate_tau`` and
+    ``rate_weight`` (both or neither, one number each, the time constant >= 1
+    sample) a rate term after it (docs/rate.md). ``delay`` may hold a
     fraction of a sample (3.5); ``identified=(LO, HI)`` records the range
     the model was identified on (within [lo, hi]).
     ``save_model(path, **load_model(other))`` copies a file."""
     creep_tau, creep_weight = _creep_args(creep_tau, creep_weight)
+    rate = _rate_args(rate_tau, rate_weight)
     if lo is None or hi is None:
         raise ValueError("a domain lo, hi is needed")
     if kind == "everett":
@@ -132,7 +149,7 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
     text = _model_call("model_write", kind, lo, hi, delay, coeffs, degree, y_lo, terms,
-                       creep_tau, creep_weight, identified=identified)
+                       creep_tau, creep_weight, identified=identified, rate=rate)
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=os.path.basename(path) + ".")
     try:
@@ -169,7 +186,8 @@ def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals
 
 def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,
                 terms=None, delay=0, compensator=False, intervals=None, rows=None,
-                creep_tau=None, creep_weight=None, identified=None):
+                creep_tau=None, creep_weight=None, identified=None, rate_tau=None,
+                rate_weight=None):
     """C header declaring the firmware's model as ``hyst fit --header``
     writes it: ``static const hyst_poly_t name`` (f0), or for
     ``kind="everett"`` ``static const hyst_everett_t name`` (degree, lo, hi,
@@ -189,8 +207,12 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
     ``name_creep_weight`` after the model, as ``hyst header`` writes them,
     for ``hyst_creep_init(&creep, name_CREEP_TERMS, name_creep_tau,
     name_creep_weight, lo)`` (the compensator's table is the hysteresis
-    model's alone: firmware subtracts ``hyst_creep_output()`` before it)."""
+    model's alone: firmware subtracts ``hyst_creep_output()`` before it). A
+    rate term (``rate_tau``, ``rate_weight``) adds ``#include "hyst/rate.h"``,
+    ``name_rate_tau`` and ``name_rate_weight``, as ``hyst header`` writes
+    them, for ``hyst_rate_init(&rate, name_rate_tau, name_rate_weight, lo)``."""
     creep_tau, creep_weight = _creep_args(creep_tau, creep_weight)
+    rate = _rate_args(rate_tau, rate_weight)
     if not name.isidentifier() or not name.isascii():
         raise ValueError(f"{name!r} is not a C identifier")
     if not compensator and (intervals is not None or rows is not None):
@@ -205,7 +227,7 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
         what = (f"major ascending curve f0,\n * degree {len(coeffs) - 1}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
     head = _model_call("model_header", kind, lo, hi, 0, coeffs, degree, y_lo, terms, creep_tau,
-                       creep_weight, name, True)
+                       creep_weight, name, True, rate=rate)
     table = (_compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows)
              if compensator else "")
     from . import _hyst

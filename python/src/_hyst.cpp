@@ -175,6 +175,10 @@ template <class T> struct Ops;
         static constexpr auto creep_reset = hyst_##P##_creep_reset;         \
         static constexpr auto creep_step = hyst_##P##_creep_step;           \
         static constexpr auto creep_output = hyst_##P##_creep_output;       \
+        static constexpr auto rate_init = hyst_##P##_rate_init_;            \
+        static constexpr auto rate_reset = hyst_##P##_rate_reset;           \
+        static constexpr auto rate_step = hyst_##P##_rate_step;             \
+        static constexpr auto rate_output = hyst_##P##_rate_output;         \
         static constexpr const char *dtype = NAME;                          \
     };
 HYST_PY_OPS(float, f32, "float32")
@@ -242,20 +246,29 @@ struct Tcm {
     /* The creep term's lags, when the instance has one (Real). */
     virtual const hyst_creep_t *creep_of() const { return nullptr; }
     virtual void set_creep_state(const hyst_creep_t &) {}
+    /* The rate term's state, when the instance has one (Real). */
+    virtual const hyst_rate_t *rate_of() const { return nullptr; }
+    virtual void set_rate_state(const hyst_rate_t &) {}
 
-    /* The library's snapshot; with a creep term, its creep snapshot after it
-     * (snapshot.h: each says its own length). */
+    /* The library's snapshot; with a creep term, its creep snapshot after
+     * it, then with a rate term its rate snapshot (snapshot.h: each says its
+     * own length). */
     nb::bytes save() const
     {
         std::vector<unsigned char> buf(HYST_SNAPSHOT_SIZE(hyst_capacity(&S)) +
-                                       HYST_CREEP_SNAPSHOT_SIZE);
-        size_t len = 0u, creep_len = 0u;
+                                       HYST_CREEP_SNAPSHOT_SIZE + HYST_RATE_SNAPSHOT_SIZE);
+        size_t len = 0u, creep_len = 0u, rate_len = 0u;
         check(hyst_snapshot_save(&S, buf.data(), buf.size(), &len), "snapshot save");
         if (const hyst_creep_t *c = creep_of()) {
             check(hyst_creep_snapshot_save(c, buf.data() + len, buf.size() - len, &creep_len),
                   "creep snapshot save");
         }
-        return nb::bytes(reinterpret_cast<const char *>(buf.data()), len + creep_len);
+        if (const hyst_rate_t *r = rate_of()) {
+            check(hyst_rate_snapshot_save(r, buf.data() + len + creep_len,
+                                          buf.size() - len - creep_len, &rate_len),
+                  "rate snapshot save");
+        }
+        return nb::bytes(reinterpret_cast<const char *>(buf.data()), len + creep_len + rate_len);
     }
     /* Both parts checked before either is written: all or nothing. */
     void restore(const nb::bytes &b)
@@ -269,8 +282,31 @@ struct Tcm {
         const bool creep_follows = n >= 4u && len <= n - 4u && p[len] == 0x48u &&
                                    p[len + 1u] == 0x59u && p[len + 2u] == 0x53u &&
                                    p[len + 3u] == 0x43u;
+        /* a rate part after the creep part (its length at its octets 8..11), or after the model's */
+        const size_t at = len + (creep_follows && n >= len + 12u
+                                     ? (size_t)p[len + 8u] | (size_t)p[len + 9u] << 8 |
+                                           (size_t)p[len + 10u] << 16 | (size_t)p[len + 11u] << 24
+                                     : 0u);
+        const bool rate_follows = n >= 4u && at <= n - 4u && p[at] == 0x48u &&
+                                  p[at + 1u] == 0x59u && p[at + 2u] == 0x53u &&
+                                  p[at + 3u] == 0x52u;
         const hyst_creep_t *c = creep_of();
+        const hyst_rate_t *r = rate_of();
         hyst_creep_t lags{};
+        hyst_rate_t term{};
+        if (r != nullptr) {
+            term = *r;
+            if (len <= n && !rate_follows) {
+                raise_status(HYST_ERR_FORMAT,
+                             "snapshot restore: the model has a rate term, the snapshot none");
+            }
+            if (len <= n) {
+                check(hyst_rate_snapshot_restore(&term, p + at, n - at), "rate snapshot restore");
+            }
+        } else if (rate_follows) {
+            raise_status(HYST_ERR_FORMAT,
+                         "snapshot restore: the snapshot has a rate term, the model none");
+        }
         if (c != nullptr) {
             lags = *c;
             if (len <= n && !creep_follows) {
@@ -288,6 +324,9 @@ struct Tcm {
         check(hyst_snapshot_restore(&S, p, n), "snapshot restore");
         if (c != nullptr) {
             set_creep_state(lags);
+        }
+        if (r != nullptr) {
+            set_rate_state(term);
         }
     }
 };
@@ -318,6 +357,11 @@ template <class T> struct Real : Owned<T, T> {
     bool has_creep = false;
     hyst_creep_t creep{};
     std::vector<double> creep_tau, creep_weight;
+    /* A rate term (rate.h), when set_rate() gave one: the low-pass of the
+     * change of the same input as the creep's, at rest at lo */
+    bool has_rate = false;
+    hyst_rate_t rate{};
+    std::optional<double> rate_tau, rate_weight;
 
     /* The instance on fwd, or on its inverse (the compensator): the one
      * hyst_curve_inverse() prepares, or the table inv already holds. */
@@ -414,24 +458,36 @@ template <class T> struct Real : Owned<T, T> {
      * in. */
     T step(T x)
     {
-        if (!has_creep) {
+        if (!has_creep && !has_rate) {
             return O::step(&this->S, x);
         }
         if (inverse) {
-            const T v = x - O::creep_output(&creep);
+            const T v = x - terms_output();
             const T drive = O::step(&this->S, v);
-            (void)O::creep_step(&creep, drive);
+            (void)terms_step(drive);
             return drive;
         }
         const T y = O::step(&this->S, x);
-        return y + O::creep_step(&creep, O::input(&this->S));
+        return y + terms_step(O::input(&this->S));
+    }
+    /* The creep and rate terms' contribution to the next sample, and the
+     * same as they take input u in: summed as the CLI sums them, in double. */
+    T terms_output() const
+    {
+        return static_cast<T>((has_creep ? static_cast<double>(O::creep_output(&creep)) : 0.0) +
+                              (has_rate ? static_cast<double>(O::rate_output(&rate)) : 0.0));
+    }
+    T terms_step(T u)
+    {
+        return static_cast<T>((has_creep ? static_cast<double>(O::creep_step(&creep, u)) : 0.0) +
+                              (has_rate ? static_cast<double>(O::rate_step(&rate, u)) : 0.0));
     }
     /* The block call; with a creep term sample by sample (step(), the same
      * numbers as the library's block call for the hysteresis model) and
      * the statuses folded as the block call folds them. */
     void run_block(const T *px, T *py, size_t n)
     {
-        if (!has_creep) {
+        if (!has_creep && !has_rate) {
             this->block_status = O::process(&this->S, px, py, n);
             return;
         }
@@ -467,7 +523,7 @@ template <class T> struct Real : Owned<T, T> {
             has_creep = false;
             creep_tau.clear();
             creep_weight.clear();
-            hyst_reset(&this->S);
+            reset();
             return;
         }
         const auto p = creep_params(tau, weight);
@@ -479,8 +535,36 @@ template <class T> struct Real : Owned<T, T> {
         has_creep = true;
         creep_tau = tau;
         creep_weight = weight;
-        hyst_reset(&this->S);
+        reset();
     }
+    /* A rate term of time constant tau (samples) and weight weight
+     * (hyst_*_rate_init(), at rest at lo); both None remove it. Also puts
+     * the model back at rest, so that both start together. */
+    void set_rate(std::optional<double> tau, std::optional<double> weight)
+    {
+        if (!tau && !weight) {
+            has_rate = false;
+            rate_tau.reset();
+            rate_weight.reset();
+            reset();
+            return;
+        }
+        if (!tau || !weight) {
+            raise_status(HYST_ERR_ARG, "a rate term needs rate_tau and rate_weight (both or "
+                                       "neither)");
+        }
+        hyst_rate_t r{};
+        check(O::rate_init(&r, static_cast<hyst_wide_t>(*tau), static_cast<hyst_wide_t>(*weight),
+                           static_cast<hyst_wide_t>(this->lo), HYST_LAYOUT),
+              "rate init");
+        rate = r;
+        has_rate = true;
+        rate_tau = tau;
+        rate_weight = weight;
+        reset();
+    }
+    const hyst_rate_t *rate_of() const override { return has_rate ? &rate : nullptr; }
+    void set_rate_state(const hyst_rate_t &r) override { rate = r; }
     const hyst_creep_t *creep_of() const override { return has_creep ? &creep : nullptr; }
     void set_creep_state(const hyst_creep_t &c) override { creep = c; }
     void reset() override
@@ -488,6 +572,9 @@ template <class T> struct Real : Owned<T, T> {
         hyst_reset(&this->S);
         if (has_creep) {
             (void)O::creep_reset(&creep, static_cast<T>(this->lo));
+        }
+        if (has_rate) {
+            (void)O::rate_reset(&rate, static_cast<T>(this->lo));
         }
     }
 };
@@ -811,6 +898,10 @@ nb::dict model_dict(const model_text_t &m)
         d["creep_tau"] = std::vector<double>(m.creep_tau, m.creep_tau + m.ncreep);
         d["creep_weight"] = std::vector<double>(m.creep_weight, m.creep_weight + m.ncreep);
     }
+    if (m.has_rate) {
+        d["rate_tau"] = m.rate_tau;
+        d["rate_weight"] = m.rate_weight;
+    }
     return d;
 }
 
@@ -840,7 +931,8 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
                       const std::vector<double> &coeffs, double degree, double y_lo,
                       const std::vector<double> &terms, const std::vector<double> &creep_tau,
                       const std::vector<double> &creep_weight,
-                      const std::vector<double> &identified = {})
+                      const std::vector<double> &identified = {},
+                      const std::vector<double> &rate = {})
 {
     model_text_t m;
     char msg[MODEL_TEXT_MSG_SIZE];
@@ -853,6 +945,14 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
     }
     if (identified.size() != 0u && identified.size() != 2u) {
         throw nb::value_error("identified needs two values (LO HI)");
+    }
+    if (rate.size() != 0u && rate.size() != 2u) {
+        throw nb::value_error("a rate term needs rate_tau and rate_weight (both or neither)");
+    }
+    if (rate.size() == 2u) { /* checked with the rest by model_text_check() */
+        m.has_rate = 1;
+        m.rate_tau = rate[0];
+        m.rate_weight = rate[1];
     }
     m.kind = kind == "everett" ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
     m.lo = lo;
@@ -887,10 +987,10 @@ std::string model_write(const std::string &kind, double lo, double hi, double de
                         const std::vector<double> &coeffs, double degree, double y_lo,
                         const std::vector<double> &terms, const std::vector<double> &creep_tau,
                         const std::vector<double> &creep_weight,
-                        const std::vector<double> &identified)
+                        const std::vector<double> &identified, const std::vector<double> &rate)
 {
     const model_text_t m = model_of(kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
-                                    creep_weight, identified);
+                                    creep_weight, identified, rate);
     std::vector<char> buf(16384u);
     const size_t len = model_text_write(&m, buf.data(), buf.size());
     if (len == 0u) {
@@ -905,7 +1005,7 @@ std::string model_header(const std::string &name, bool open, const std::string &
                          double hi, const std::vector<double> &coeffs, double degree,
                          double y_lo, const std::vector<double> &terms,
                          const std::vector<double> &creep_tau,
-                         const std::vector<double> &creep_weight)
+                         const std::vector<double> &creep_weight, const std::vector<double> &rate)
 {
     if (!model_text_identifier(name.c_str()) || name.size() != std::strlen(name.c_str())) {
         throw nb::value_error(("'" + name + "' is not a C identifier").c_str());
@@ -915,7 +1015,8 @@ std::string model_header(const std::string &name, bool open, const std::string &
     int over;
     if (open) {
         const model_text_t m =
-            model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, creep_tau, creep_weight);
+            model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, creep_tau, creep_weight, {},
+                     rate);
         over = model_text_header_open(buf.data(), buf.size(), &len, name.c_str(), &m);
     } else {
         over = model_text_header_close(buf.data(), buf.size(), &len, name.c_str());
@@ -1160,6 +1261,12 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
              "A creep term (hyst/creep.h): lags of the model's input of time constants tau "
              "(samples) and weights weight, every lag at lo; empty lists remove it. Puts the "
              "model back at rest.")
+        .def("set_rate", &R::set_rate, "tau"_a.none(), "weight"_a.none(),
+             "A rate term (hyst/rate.h): the output plus weight times a low-pass, of time "
+             "constant tau samples, of the model input's change per sample, at rest at lo; "
+             "both None remove it. Puts the model back at rest.")
+        .def_ro("rate_tau", &R::rate_tau)
+        .def_ro("rate_weight", &R::rate_weight)
         .def_ro("creep_tau", &R::creep_tau)
         .def_ro("creep_weight", &R::creep_weight)
         .def_prop_ro("creep_output",
@@ -1315,10 +1422,12 @@ NB_MODULE(_hyst, m)
           "A model file's bytes read by the format's one reader: its dict, or the message.");
     m.def("model_write", &model_write, "kind"_a, "lo"_a, "hi"_a, "delay"_a, "coeffs"_a,
           "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
-          "identified"_a = std::vector<double>(),
-          "A model file's text (ValueError for what the reader would refuse).");
+          "identified"_a = std::vector<double>(), "rate"_a = std::vector<double>(),
+          "A model file's text (ValueError for what the reader would refuse); rate: "
+          "(rate_tau, rate_weight), or empty.");
     m.def("model_header", &model_header, "name"_a, "open"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
+          "rate"_a = std::vector<double>(),
           "A firmware header's opening (the model) or close, as `hyst header` writes them.");
     m.def("model_header_table", &model_header_table, "name"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "intervals"_a, "rows"_a,

@@ -22,8 +22,10 @@ typedef struct tcm_run {
     unsigned long delay, at;
     double fraction;  /* sim --model: the delay's fraction of a sample (0: none) */
     double previous;  /* the input before, for the fraction (NaN before the first) */
-    const cli_model_t *model; /* its creep term (model->ncreep > 0), or NULL */
+    /* its creep term (model->ncreep > 0) or rate term (model->has_rate), or NULL */
+    const cli_model_t *model;
     hyst_creep_t creep;       /* lags of the model's input (sim) or of the drive (inv) */
+    hyst_rate_t rate;         /* the low-pass of the same input's change */
     double lo, hi;            /* inv with creep: the range the engine clamps its input to */
 } tcm_run_t;
 
@@ -109,7 +111,8 @@ static int tcm_begin(void *ctx)
     if (st != HYST_OK) {
         return cli_fail(r->cmd, "%s", hyst_status_str(st));
     }
-    if (r->model != NULL) { /* at rest at the drive's low end, as the fit assumed */
+    if (r->model != NULL && r->model->ncreep > 0u) { /* at rest at the drive's low end, as
+                                                        the fit assumed */
         hyst_wide_t tau[CLI_CREEP_MAX_TERMS], w[CLI_CREEP_MAX_TERMS];
         hyst_status_t cst;
         for (i = 0u; i < r->model->ncreep; ++i) {
@@ -119,6 +122,14 @@ static int tcm_begin(void *ctx)
         cst = hyst_creep_init(&r->creep, r->model->ncreep, tau, w, (hyst_wide_t)r->model->lo);
         if (cst != HYST_OK) {
             return cli_fail(r->cmd, "the model's creep term: %s", hyst_status_str(cst));
+        }
+    }
+    if (r->model != NULL && r->model->has_rate) {
+        const hyst_status_t rst =
+            hyst_rate_init(&r->rate, (hyst_wide_t)r->model->rate_tau,
+                           (hyst_wide_t)r->model->rate_weight, (hyst_wide_t)r->model->lo);
+        if (rst != HYST_OK) {
+            return cli_fail(r->cmd, "the model's rate term: %s", hyst_status_str(rst));
         }
     }
     if (r->delay > 0u) { /* before the first input arrives: the model at rest, f0(lo) */
@@ -158,6 +169,27 @@ static int tcm_grow(tcm_run_t *r)
                                         hyst_status_str(st));
 }
 
+/* The model's creep and rate terms at the next sample (known before it). */
+static double terms_output(const tcm_run_t *r)
+{
+    return (r->model->ncreep > 0u ? (double)hyst_creep_output(&r->creep) : 0.0) +
+           (r->model->has_rate ? (double)hyst_rate_output(&r->rate) : 0.0);
+}
+
+/* Both terms take the input x in: their contribution, as terms_output(). */
+static double terms_step(tcm_run_t *r, hyst_real_t x)
+{
+    return (r->model->ncreep > 0u ? (double)hyst_creep_step(&r->creep, x) : 0.0) +
+           (r->model->has_rate ? (double)hyst_rate_step(&r->rate, x) : 0.0);
+}
+
+/* Whether a term refused its last input (beyond its drive limit). */
+static int terms_refused(const tcm_run_t *r)
+{
+    return (r->model->ncreep > 0u && hyst_creep_status(&r->creep) != HYST_OK) ||
+           (r->model->has_rate && hyst_rate_status(&r->rate) != HYST_OK);
+}
+
 static int tcm_step(void *ctx, double x, double *y, int *clamped)
 {
     tcm_run_t *r = (tcm_run_t *)ctx;
@@ -171,18 +203,18 @@ static int tcm_step(void *ctx, double x, double *y, int *clamped)
         x = isnan(r->previous) ? x : (1.0 - r->fraction) * x + r->fraction * r->previous;
         r->previous = now;
     }
-    if (r->model != NULL && r->inverse) { /* the desired output less the creep's share */
-        const double v = x - (double)hyst_creep_output(&r->creep);
+    if (r->model != NULL && r->inverse) { /* the desired output less the terms' share */
+        const double v = x - terms_output(r);
         const double drive = (double)hyst_step(&r->S, (hyst_real_t)v);
-        (void)hyst_creep_step(&r->creep, (hyst_real_t)drive);
+        (void)terms_step(r, (hyst_real_t)drive);
         *y = drive;
         /* clamped beyond the rounding of a printed x (cli_map_samples() tests
          * x itself for the others) */
         const double tol = CLI_PRINT_TOL * fmax(fabs(x), fmax(fabs(r->lo), fabs(r->hi)));
         *clamped = hyst_status(&r->S) == HYST_WARN_CLAMPED && (v < r->lo - tol || v > r->hi + tol);
-    } else if (r->model != NULL) { /* the creep of the input as the model took it */
+    } else if (r->model != NULL) { /* the terms of the input as the model took it */
         *y = (double)hyst_step(&r->S, (hyst_real_t)x);
-        *y += (double)hyst_creep_step(&r->creep, hyst_input(&r->S));
+        *y += terms_step(r, hyst_input(&r->S));
     } else {
         *y = (double)hyst_step(&r->S, (hyst_real_t)x);
     }
@@ -195,10 +227,11 @@ static int tcm_step(void *ctx, double x, double *y, int *clamped)
     if ((hyst_events(&r->S) & HYST_EVENT_FULL) != 0u) {
         return cli_fail(r->cmd, "internal error: turning-point memory full");
     }
-    if (r->model != NULL && (hyst_creep_status(&r->creep) != HYST_OK || !isfinite(*y))) {
+    if (r->model != NULL && (terms_refused(r) || !isfinite(*y))) {
         /* inv printed the previous drive and exited 0 where sim refused */
-        return cli_fail(r->cmd, "the model's creep term overflows at drive %.9g (its weights "
-                                "are too large for the drives)", hyst_input(&r->S));
+        return cli_fail(r->cmd, "the model's %s term overflows at drive %.9g (its weights "
+                                "are too large for the drives)",
+                        r->model->ncreep > 0u ? "creep" : "rate", hyst_input(&r->S));
     }
     if (r->model == NULL || !r->inverse) {
         *clamped = hyst_status(&r->S) == HYST_WARN_CLAMPED;
@@ -407,7 +440,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     r.fraction = inverse ? 0.0 : model.delay_fraction;
     r.previous = NAN;
     r.at = 0u;
-    r.model = model.ncreep > 0u ? &model : NULL;
+    r.model = model.ncreep > 0u || model.has_rate ? &model : NULL;
     m.ctx = &r;
     m.begin = tcm_begin;
     m.step = tcm_step;
@@ -432,7 +465,10 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     }
     m.step_checks_range = inverse && r.model != NULL;
     if (m.step_checks_range) {
-        m.clamp_what = "desired outputs less the creep term";
+        m.clamp_what = model.ncreep > 0u && model.has_rate
+                           ? "desired outputs less the creep and rate terms"
+                       : model.ncreep > 0u ? "desired outputs less the creep term"
+                                           : "desired outputs less the rate term";
         r.lo = m.lo;
         r.hi = m.hi;
     }

@@ -25,7 +25,7 @@
 static const char help[] =
     "usage: hyst fit [--kind tcm|everett] [--degree N] [--t-degree K] [--skip S]\n"
     "                [--delay D] [--xcol I --ycol J] [--method joint|reflect]\n"
-    "                [--domain LO,HI] [--creep none|auto|TAU]\n"
+    "                [--domain LO,HI] [--creep none|auto|TAU] [--rate none|auto|TAU]\n"
     "                [--header NAME] [--header-dir DIR] [--save MODEL]\n"
     "                [--compare-pi N] [--decimal-comma] FILE\n"
     "       hyst fit --kind pi [--operators N] [--skip S] [--delay D]\n"
@@ -72,6 +72,14 @@ static const char help_more[] =
     "                 ..., 20000 samples on the hold-out and its weight one\n"
     "                 parameter more, by the same rule; none: no creep term;\n"
     "                 TAU: a lag of TAU samples (1..1e9), always\n"
+    "  --rate R       a rate term (docs/rate.md), without --degree: the output\n"
+    "                 plus a weight times a low-pass of the input's change per\n"
+    "                 sample. none (default): no rate term; auto: the choice\n"
+    "                 scored again with one of time constant 1 sample, 1/256\n"
+    "                 and 1/64 of the drive's period, kept if it lowers the\n"
+    "                 hold-out error by more than 1 %; TAU: of TAU samples,\n"
+    "                 always (a hold-out at one rate cannot tell how the loops\n"
+    "                 change at another)\n"
     "  --decimal-comma ',' is the decimal mark (1,5 is 1.5); fields are then\n"
     "                 separated by blanks or ';'\n"
     "  --header NAME  also write NAME.h holding\n"
@@ -133,6 +141,10 @@ typedef struct fit_opts {
     double creep_tau;     /* --creep: -1 none, 0 auto (default), > 0 that time constant */
     int with_creep;       /* the model fitted has a creep term, of time constant creep.tau */
     fit_creep_t creep;    /* its hold-out figures (training fit) */
+    double rate_tau;      /* --rate: -1 none (default), 0 auto, > 0 that time constant */
+    int with_rate;        /* and a rate term, of time constant rate.rate_tau */
+    fit_creep_t rate;     /* the best rate term tried (rate_tau 0: none) with the creep lag */
+    double rate_without;  /* the choice's hold-out RMS without a rate term */
     double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
     double last_third;    /* the same on the last third alone (what PI-10 is compared on) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
@@ -161,6 +173,7 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     size_t nd;
     int kind;
     memset(o, 0, sizeof *o);
+    o->rate_tau = -1.0; /* no rate term unless asked for */
     o->cols[0] = 1ul;
     o->cols[1] = 2ul;
     o->cfg.method = HYST_IDENT_JOINT;
@@ -258,6 +271,17 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             o->header = v;
         } else if (cli_is(&a, "--save")) {
             o->save = v;
+        } else if (cli_is(&a, "--rate")) {
+            double tau;
+            if (strcmp(v, "none") == 0 || strcmp(v, "auto") == 0) {
+                o->rate_tau = v[0] == 'n' ? -1.0 : 0.0;
+            } else if (!cli_parse_double(v, &tau) || !(tau >= 1.0) || !(tau <= 1e9)) {
+                return cli_fail(a.cmd, "option --rate: %s is not none, auto or a time constant "
+                                       "of 1 to 1e9 samples",
+                                cli_quote(q, v));
+            } else {
+                o->rate_tau = tau;
+            }
         } else if (cli_is(&a, "--creep")) {
             double tau;
             if (strcmp(v, "none") == 0 || strcmp(v, "auto") == 0) {
@@ -284,6 +308,9 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     }
     if (o->header_dir != NULL && o->header == NULL) {
         return cli_fail(a.cmd, "option --header-dir needs --header NAME");
+    }
+    if (o->have_degree && o->rate_tau >= 0.0) {
+        return cli_fail(a.cmd, "option --rate applies to the automatic choice (without --degree)");
     }
     if (o->kind == FIT_KIND_PI && o->tcm_only[0] != '\0') {
         return cli_fail(a.cmd, "option %s does not apply to --kind pi", o->tcm_only);
@@ -371,6 +398,14 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
                         : o->kind == FIT_KIND_TCM   ? "an increasing f0"
                                                     : "an increasing f0 or an E the library "
                                                       "accepts");
+    }
+    { /* a rate term, scored on the choice's hold-out (the drive and domain it was fitted on) */
+        fit_candidate_t with_rate;
+        o->with_rate = fit_rate_search(&o->cfg, t->col[0], t->col[1], t->n,
+                                       &candidates[best_candidate], o->with_creep, o->rate_tau,
+                                       &with_rate);
+        o->rate = with_rate.creep;
+        o->rate_without = fit_option_rms(&candidates[best_candidate], o->with_creep);
     }
     o->final_kind = candidates[best_candidate].kind;
     o->cfg.degree = candidates[best_candidate].degree;
@@ -583,8 +618,11 @@ static void print_candidates(const fit_opts_t *o)
                  "%s)\n",
                  o->cfg.degree, (unsigned long)o->cfg.delay,
                  o->final_kind == FIT_EVERETT ? "everett" : "poly", t_deg,
-                 o->with_creep ? "creep, " : "",
-                 fit_option_parameters(&candidates[best_candidate], o->with_creep), (unsigned)FIT_SPLIT_MIN,
+                 o->with_creep ? (o->with_rate ? "creep, rate, " : "creep, ")
+                 : o->with_rate ? "rate, " : "",
+                 fit_option_parameters(&candidates[best_candidate], o->with_creep) +
+                     (o->with_rate ? FIT_RATE_PARAMETERS : 0u),
+                 (unsigned)FIT_SPLIT_MIN,
                  candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
                  : candidate_kinds(o) == FIT_EVERETT           ? "everett"
                                                                : "poly");
@@ -770,10 +808,11 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
     return not_finite(name, f);
 }
 
-/* The creep term of the model fitted on the whole record: its weight and
- * offset fitted to that model's residual over every sample (the offset
- * folded into the model: f0's constant, or E's y_lo); the residual printed
- * then is the model's with it. 0, or 1 after a message. */
+/* The creep and rate terms of the model fitted on the whole record (either
+ * or both): their weights and offset fitted to that model's residual over
+ * every sample (the offset folded into the model: f0's constant, or E's
+ * y_lo); the residual printed then is the model's with them. 0, or 1 after
+ * a message. */
 static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_table_t *t,
                            fit_final_t *f)
 {
@@ -784,7 +823,8 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
     unsigned k;
     const size_t end = t->n - o->cfg.delay; /* every sample before it: no hold-out */
     memset(&c, 0, sizeof c);
-    c.tau = o->creep.tau;
+    c.tau = o->with_creep ? o->creep.tau : 0.0;
+    c.rate_tau = o->with_rate ? o->rate.rate_tau : 0.0;
     if (m->kind == CLI_MODEL_EVERETT) {
         if (hyst_f64_curve_from_everett(&curve, &f->ev.e) != HYST_OK) {
             return 0; /* refused: reported as such, nothing written */
@@ -802,14 +842,23 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
         (void)fit_model_run_creep(&f0, NULL, t->col[0], t->col[1], t->n, o->cfg.skip,
                                   o->cfg.delay, end, NULL, NULL, &c);
     }
-    if (!(c.tau > 0) || !isfinite(c.weight) || !isfinite(c.offset)) {
-        return cli_fail("fit", "%s: the creep term of time constant %g samples could not be "
+    if (!(c.tau > 0 || c.rate_tau > 0) || !isfinite(c.weight) || !isfinite(c.offset) ||
+        !isfinite(c.rate_weight)) {
+        return cli_fail("fit", "%s: the %s term of time constant %g samples could not be "
                                "fitted to the model's residual (a drive that never moves?)",
-                        name, o->creep.tau);
+                        name, o->with_creep ? "creep" : "rate",
+                        o->with_creep ? o->creep.tau : o->rate.rate_tau);
     }
-    m->ncreep = 1u;
-    m->creep_tau[0] = c.tau;
-    m->creep_weight[0] = c.weight;
+    if (c.tau > 0) {
+        m->ncreep = 1u;
+        m->creep_tau[0] = c.tau;
+        m->creep_weight[0] = c.weight;
+    }
+    if (c.rate_tau > 0) {
+        m->has_rate = 1;
+        m->rate_tau = c.rate_tau;
+        m->rate_weight = c.rate_weight;
+    }
     if (m->kind == CLI_MODEL_EVERETT) {
         m->y_lo += c.offset;
     } else {
@@ -824,17 +873,22 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
 static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, size_t size)
 {
     char tcm[96];
-    const double holdout = o->with_creep ? o->creep.last_third_rms : o->last_third;
+    const double holdout = o->with_rate    ? o->rate.last_third_rms
+                           : o->with_creep ? o->creep.last_third_rms
+                                           : o->last_third;
+    const char *terms = o->with_creep ? (o->with_rate ? " with creep and rate" : " with creep")
+                        : o->with_rate ? " with rate"
+                                       : "";
     if (o->final_kind == FIT_EVERETT) {
         (void)snprintf(tcm, sizeof tcm, "asymmetric (everett) TCM degree %u t-degree %u%s",
-                       o->cfg.degree, o->t_degree, o->with_creep ? " with creep" : "");
+                       o->cfg.degree, o->t_degree, terms);
     } else {
-        (void)snprintf(tcm, sizeof tcm, "TCM degree %u%s", o->cfg.degree,
-                       o->with_creep ? " with creep" : "");
+        (void)snprintf(tcm, sizeof tcm, "TCM degree %u%s", o->cfg.degree, terms);
     }
     fit_pi_compare(t, o->compare_pi, o->cfg.skip, o->cfg.delay, tcm,
                    fit_parameters(o->final_kind, o->cfg.degree, o->t_degree) +
-                       (o->with_creep ? FIT_CREEP_PARAMETERS : 0u),
+                       (o->with_creep ? FIT_CREEP_PARAMETERS : 0u) +
+                       (o->with_rate ? FIT_RATE_PARAMETERS : 0u),
                    holdout, line, size);
 }
 
@@ -1046,7 +1100,7 @@ int cmd_fit(int argc, char **argv)
         }
     }
     rc = fit_final(&o, name, &t, pairs, &f);
-    if (rc == 0 && o.with_creep && f.usable) {
+    if (rc == 0 && (o.with_creep || o.with_rate) && f.usable) {
         rc = fit_final_creep(&o, name, &t, &f);
     }
     if (rc == 0 && o.compare_pi != 0u) {
@@ -1098,8 +1152,18 @@ int cmd_fit(int argc, char **argv)
                      "samples, %.6g)\n",
                      o.holdout, o.creep.tau, o.creep.holdout_rms);
     }
+    if (o.with_rate && f.model.has_rate) {
+        (void)printf("# rate: tau %.6g samples, weight %.9g (hold-out rms %.6g; without it "
+                     "%.6g)\n",
+                     f.model.rate_tau, f.model.rate_weight, o.rate.holdout_rms, o.rate_without);
+    } else if (!o.have_degree && o.rate.rate_tau > 0 && isfinite(o.rate.holdout_rms)) {
+        (void)printf("# rate: none (hold-out rms %.6g; with the best rate term, tau %.6g "
+                     "samples, %.6g)\n",
+                     o.rate_without, o.rate.rate_tau, o.rate.holdout_rms);
+    }
     (void)printf("# parameters %u\n", fit_parameters(o.final_kind, o.cfg.degree, o.t_degree) +
-                                          (o.with_creep && f.model.ncreep > 0u ? FIT_CREEP_PARAMETERS : 0u));
+                                          (o.with_creep && f.model.ncreep > 0u ? FIT_CREEP_PARAMETERS : 0u) +
+                                          (o.with_rate && f.model.has_rate ? FIT_RATE_PARAMETERS : 0u));
     (void)fputs(compare, stdout);
     print_usable(&f);
     if (fflush(stdout) != 0 || ferror(stdout)) {

@@ -6,6 +6,7 @@
 #include "fit_select.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Time constants tried (samples) where none is given: those up to the run's
@@ -116,4 +117,158 @@ void fit_creep_score_part(const double *u, const double *r, size_t len, size_t f
             *best = c;
         }
     }
+}
+
+/* ---- The rate term (hyst/rate.h), fitted with the creep lag ---- */
+
+/* The regressors of sample k before its input: the creep lag's state
+ * (weight 1: its output is the state) and the rate term's low-pass (weight
+ * 1), from rest at x_rest, by the library's f64 instances themselves. */
+static int terms_regressors(const double *u, size_t len, double x_rest, double creep_tau,
+                            double rate_tau, double *s, double *v)
+{
+    const hyst_wide_t one = 1, t = (hyst_wide_t)creep_tau;
+    hyst_creep_t C;
+    hyst_rate_t R;
+    size_t k;
+    if ((creep_tau > 0 && hyst_f64_creep_init(&C, 1u, &t, &one, (hyst_wide_t)x_rest) != HYST_OK) ||
+        hyst_f64_rate_init(&R, (hyst_wide_t)rate_tau, one, (hyst_wide_t)x_rest) != HYST_OK) {
+        return 1;
+    }
+    for (k = 0u; k < len; ++k) {
+        s[k] = creep_tau > 0 ? hyst_f64_creep_step(&C, u[k]) : 0.0;
+        v[k] = hyst_f64_rate_step(&R, u[k]);
+    }
+    return 0;
+}
+
+void fit_terms_part(const double *u, const double *r, size_t len, size_t from, size_t to,
+                    size_t score_from, double x_rest, double creep_tau, double rate_tau,
+                    fit_creep_t *out)
+{
+    const int lag = creep_tau > 0;
+    double *s, *v, ms = 0.0, mv = 0.0, mr = 0.0, css = 0.0, csv = 0.0, cvv = 0.0, csr = 0.0;
+    double cvr = 0.0, crr = 0.0, ws = 0.0, wv, offset, det, ss = 0.0, fit_ss, worst = 0.0;
+    size_t k, used = 0u, scored = 0u;
+    memset(out, 0, sizeof *out);
+    out->holdout_rms = NAN;
+    out->fit_rms = NAN;
+    if (!(rate_tau >= 1.0) || len == 0u ||
+        (s = (double *)malloc(2u * len * sizeof(double))) == NULL) {
+        return;
+    }
+    v = s + len;
+    if (terms_regressors(u, len, x_rest, creep_tau, rate_tau, s, v) != 0) {
+        free(s);
+        return;
+    }
+    for (k = 0u; k < len; ++k) { /* the equations: outside [from, to), residual known */
+        if ((k < from || k >= to) && isfinite(r[k])) {
+            ms += s[k];
+            mv += v[k];
+            mr += r[k];
+            ++used;
+        }
+    }
+    if (used <= (lag ? 3u : 2u)) {
+        free(s);
+        return;
+    }
+    ms /= (double)used;
+    mv /= (double)used;
+    mr /= (double)used;
+    for (k = 0u; k < len; ++k) { /* co-moments about the means: the constant eliminated */
+        if ((k < from || k >= to) && isfinite(r[k])) {
+            const double ds = s[k] - ms, dv = v[k] - mv, dr = r[k] - mr;
+            css += ds * ds;
+            csv += ds * dv;
+            cvv += dv * dv;
+            csr += ds * dr;
+            cvr += dv * dr;
+            crr += dr * dr;
+        }
+    }
+    det = css * cvv - csv * csv;
+    if (!(cvv > 0) || (lag && !(det > 1e-12 * css * cvv))) {
+        free(s); /* a drive that never moved, or the two indistinguishable */
+        return;
+    }
+    if (lag) {
+        ws = (cvv * csr - csv * cvr) / det;
+        wv = (css * cvr - csv * csr) / det;
+    } else {
+        wv = cvr / cvv;
+    }
+    offset = mr - ws * ms - wv * mv;
+    fit_ss = crr - ws * csr - wv * cvr;
+    for (k = 0u; k < len; ++k) {
+        const double e = r[k] - ws * s[k] - wv * v[k] - offset;
+        if (isfinite(e)) {
+            worst = fabs(e) > worst ? fabs(e) : worst;
+            if (k >= from && k < to && k >= score_from) {
+                ss += e * e;
+                ++scored;
+            }
+        }
+    }
+    free(s);
+    out->tau = lag ? creep_tau : 0.0;
+    out->weight = ws;
+    out->rate_tau = rate_tau;
+    out->rate_weight = wv;
+    out->offset = offset;
+    out->fit_rms = sqrt((fit_ss > 0 ? fit_ss : 0.0) / (double)used);
+    out->max_abs = worst;
+    out->holdout_rms = scored > 0u ? sqrt(ss / (double)scored) : NAN;
+}
+
+size_t fit_rate_taus(const double *x, size_t from, size_t to, double *taus)
+{
+    static const double fractions[FIT_RATE_TAUS] = {0.0, 1.0 / 256.0, 1.0 / 64.0};
+    double lo, hi, period;
+    size_t reversals, inner, i, count = 0u;
+    if (to <= from + 1u) {
+        return 0u;
+    }
+    fit_input_range(x, from, to, 0.0, &lo, &hi);
+    reversals = fit_reversals(x, from, to, lo, hi, &inner);
+    period = reversals > 0u ? 2.0 * (double)(to - from) / (double)reversals : 0.0;
+    for (i = 0u; i < FIT_RATE_TAUS; ++i) { /* 1, then fractions of the period above it */
+        const double tau = i == 0u ? 1.0 : floor(fractions[i] * period + 0.5);
+        if (tau >= 1.0 && (count == 0u || tau > taus[count - 1u])) {
+            taus[count++] = tau;
+        }
+    }
+    return count;
+}
+
+int fit_rate_search(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+                    const fit_candidate_t *chosen, int with_creep, double rate_tau,
+                    fit_candidate_t *out)
+{
+    const double without = fit_option_rms(chosen, with_creep);
+    double taus[FIT_RATE_TAUS], lowest = NAN;
+    const size_t count = rate_tau > 0   ? 1u
+                         : rate_tau < 0 ? 0u
+                                        : fit_rate_taus(x, base->skip, n, taus);
+    size_t i;
+    int found = 0;
+    taus[0] = rate_tau > 0 ? rate_tau : taus[0];
+    *out = *chosen;
+    memset(&out->creep, 0, sizeof out->creep);
+    out->creep.holdout_rms = NAN;
+    for (i = 0u; i < count && isfinite(without); ++i) {
+        fit_candidate_t trial = *chosen;
+        memset(&trial.creep, 0, sizeof trial.creep);
+        trial.creep.rate_tau = taus[i];
+        fit_score(base, x, y, n, with_creep ? chosen->creep.tau : 0.0, &trial);
+        if (isfinite(trial.creep.holdout_rms) && trial.creep.rate_tau > 0 &&
+            !(lowest <= trial.creep.holdout_rms)) {
+            lowest = trial.creep.holdout_rms;
+            *out = trial;
+            found = 1;
+        }
+    }
+    /* kept when it helps: the model without it errs by more than FIT_PARSIMONY over it */
+    return found && (rate_tau > 0 || without > lowest * (1.0 + FIT_PARSIMONY));
 }

@@ -162,6 +162,7 @@ static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const 
     size_t k, used = 0u, before = 0u;
     hyst_status_t st;
     const double tau = creep != NULL ? creep->tau : 0.0;
+    const double rate_tau = creep != NULL ? creep->rate_tau : 0.0;
     if (before_rms != NULL) {
         *before_rms = NAN;
     }
@@ -215,7 +216,11 @@ static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const 
     if (u != NULL) {
         const double x_rest = f0 != NULL ? (double)f0->lo : curve->lo.f64;
         const size_t at = from > skip ? from - skip : 0u;
-        if (part) {
+        if (rate_tau > 0) { /* with a rate term: tau the creep lag's, or none */
+            fit_terms_part(u, r, len, at, part ? (to > skip ? to - skip : 0u) : len,
+                           part ? (score_from > skip ? score_from - skip : 0u) : at, x_rest, tau,
+                           rate_tau, creep);
+        } else if (part) {
             fit_creep_score_part(u, r, len, at, to > skip ? to - skip : 0u,
                                  score_from > skip ? score_from - skip : 0u, x_rest, tau, creep);
         } else {
@@ -366,12 +371,14 @@ static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degre
             settle >= cfg->skip + (split == 2 ? len / 3u : train_count(n, cfg->skip, cfg->delay))) {
             continue; /* too short, or it ends before the model's state is the record's */
         }
+        const int terms = creep != NULL && (creep->tau > 0 || creep->rate_tau > 0);
         creep_other.tau = creep != NULL ? creep->tau : 0.0;
+        creep_other.rate_tau = creep != NULL ? creep->rate_tau : 0.0;
         e = holdout_split(cfg, kind, t_degree, widened, x, y, n, split, settle, &st, &poly_other,
-                          &ev_other, creep != NULL && creep->tau > 0 ? &creep_other : NULL);
+                          &ev_other, terms ? &creep_other : NULL);
         ss += e * e;
         ++splits;
-        if (creep != NULL && creep->tau > 0) {
+        if (terms) {
             ss_creep += creep_other.holdout_rms * creep_other.holdout_rms;
         }
         if (*status == HYST_OK && !isfinite(e)) {

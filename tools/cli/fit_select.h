@@ -86,6 +86,10 @@ typedef struct fit_creep {
     double holdout_rms, fit_rms;
     double max_abs; /* the largest error of the model with it, over every sample */
     double last_third_rms; /* its hold-out on the last third alone (split 0) */
+    /* a rate term fitted with it (hyst/rate.h; rate_tau 0: none): on entry
+     * to the hold-out, its time constant (tau 0 then: no creep lag, the
+     * rate term alone); its weight fitted with the lag's and the offset */
+    double rate_tau, rate_weight;
 } fit_creep_t;
 
 /* The creep on a model's run: u[k] its inputs, r[k] the measurement minus
@@ -101,6 +105,25 @@ void fit_creep_score(const double *u, const double *r, size_t len, size_t train,
  * score_from on. */
 void fit_creep_score_part(const double *u, const double *r, size_t len, size_t from, size_t to,
                           size_t score_from, double x_rest, double tau, fit_creep_t *best);
+
+/* The rate term with the creep lag (creep_tau > 0) or alone (0), on a part
+ * held out as fit_creep_score_part(): their weights and the offset by least
+ * squares on the residual outside [from, to), the terms run from rest,
+ * scored on [from, to) from score_from on (into *out; holdout_rms NaN when
+ * the weights are not determined). */
+void fit_terms_part(const double *u, const double *r, size_t len, size_t from, size_t to,
+                    size_t score_from, double x_rest, double creep_tau, double rate_tau,
+                    fit_creep_t *out);
+
+/* Parameters a rate term adds: its weight and its time constant. */
+#define FIT_RATE_PARAMETERS 2u
+/* Time constants a rate term is tried at: 1 sample, and 1/256 and 1/64 of
+ * the drive's period (fit_rate_taus()). */
+#define FIT_RATE_TAUS 3u
+
+/* The rate term's time constants for the drive x[from .. to) into taus
+ * (FIT_RATE_TAUS at most, increasing, each >= 1): their count. */
+size_t fit_rate_taus(const double *x, size_t from, size_t to, double *taus);
 
 /* The first sample of x[from .. to) within 1 % of the range of an end of
  * that range (to if none): where a model run from rest has the record's own
@@ -280,5 +303,16 @@ typedef struct fit_found {
 hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_degree,
                          double creep_tau, int choose_delay, double *x, const double *y,
                          size_t n, fit_candidate_t *cand, size_t max_cand, fit_found_t *out);
+
+/* The chosen candidate (kind, degree, delay, its creep option) scored again
+ * with a rate term of each of fit_rate_taus() (rate_tau 0; > 0: that time
+ * constant alone; < 0: none), its weight fitted with the creep lag's on the
+ * same hold-out splits: 1 when the best of them errs less than the choice by
+ * more than FIT_PARSIMONY, or rate_tau > 0 and it could be scored (*out the
+ * candidate with it: out->creep holds the terms and their hold-out), else 0
+ * (*out the best tried, its creep.rate_tau 0 if none could be scored). */
+int fit_rate_search(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+                    const fit_candidate_t *chosen, int with_creep, double rate_tau,
+                    fit_candidate_t *out);
 
 #endif

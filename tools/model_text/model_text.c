@@ -34,11 +34,14 @@ enum {
     K_CREEP_TAU,
     K_CREEP_WEIGHT,
     K_IDENTIFIED,
+    K_RATE_TAU,
+    K_RATE_WEIGHT,
     K_COUNT
 };
 static const char *const keys[K_COUNT] = {"kind",      "lo",           "hi",        "coeffs",
                                           "delay",     "y_lo",         "degree",    "terms",
-                                          "creep_tau", "creep_weight", "identified"};
+                                          "creep_tau", "creep_weight", "identified",
+                                          "rate_tau",  "rate_weight"};
 
 /* A field of a line: its start and length. */
 typedef struct field {
@@ -248,7 +251,7 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
     } else if (ok && k == K_DEGREE) {
         ok = whole(v, 1.0, (double)HYST_EVERETT_MAX_DEGREE);
         what = "a degree in 1.." STR(HYST_EVERETT_MAX_DEGREE);
-    } else if (ok && k == K_CREEP_TAU) {
+    } else if (ok && (k == K_CREEP_TAU || k == K_RATE_TAU)) {
         ok = v >= 1.0;
         what = "a time constant of at least 1 sample";
     }
@@ -277,6 +280,8 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
     case K_CREEP_TAU: m->creep_tau[i - 1u] = v; break;
     case K_CREEP_WEIGHT: m->creep_weight[i - 1u] = v; break;
     case K_IDENTIFIED: *(i == 1u ? &m->id_lo : &m->id_hi) = v; break;
+    case K_RATE_TAU: m->rate_tau = v; break;
+    case K_RATE_WEIGHT: m->rate_weight = v; break;
     default: m->coeffs[i - 1u] = v; break;
     }
     return 0;
@@ -346,7 +351,8 @@ static int read_line(reader_t *r, unsigned long no, const char *s, size_t n, mod
     if (k == K_COUNT || r->seen[k] != 0ul) {
         return fail(r, "%s:%lu: field 1: %s %s", r->path, no, model_text_quote(q, f[0].s, f[0].n),
                     k == K_COUNT ? "is not a key (kind, lo, hi, identified, delay, coeffs, "
-                                   "creep_tau, creep_weight; kind everett: y_lo, degree, terms)"
+                                   "creep_tau, creep_weight, rate_tau, rate_weight; kind "
+                                   "everett: y_lo, degree, terms)"
                                  : "given twice");
     }
     r->seen[k] = no;
@@ -377,6 +383,8 @@ static int read_line(reader_t *r, unsigned long no, const char *s, size_t n, mod
         m->ncreep_weights = count - 1u;
     } else if (k == K_IDENTIFIED) {
         m->has_identified = 1;
+    } else if (k == K_RATE_TAU) {
+        m->has_rate = 1;
     }
     return 0;
 }
@@ -416,6 +424,12 @@ static int read_complete(const reader_t *r, const model_text_t *m)
         return fail(r, "%s:%lu: field 1: %s needs %s too (creep: both or neither)", r->path,
                     line[k_has], keys[k_has],
                     keys[k_has == K_CREEP_TAU ? K_CREEP_WEIGHT : K_CREEP_TAU]);
+    }
+    if ((line[K_RATE_TAU] != 0ul) != (line[K_RATE_WEIGHT] != 0ul)) {
+        const int k_has = line[K_RATE_TAU] != 0ul ? K_RATE_TAU : K_RATE_WEIGHT;
+        return fail(r, "%s:%lu: field 1: %s needs %s too (rate: both or neither)", r->path,
+                    line[k_has], keys[k_has],
+                    keys[k_has == K_RATE_TAU ? K_RATE_WEIGHT : K_RATE_TAU]);
     }
     if (m->ncreep != m->ncreep_weights) {
         const int short_w = m->ncreep_weights < m->ncreep; /* else one too many */
@@ -532,6 +546,10 @@ int model_text_check(const model_text_t *m, char *msg, size_t msg_size)
             MODEL_TEXT_CREEP_MAX_TERMS) " (one per creep term)";
     } else if (!all_finite(m->creep_tau, m->ncreep) || !all_finite(m->creep_weight, m->ncreep)) {
         why = "creep_tau and creep_weight must be finite numbers";
+    } else if (m->has_rate && (!(m->rate_tau >= 1.0) || !isfinite(m->rate_tau) ||
+                               !isfinite(m->rate_weight))) {
+        why = "rate_tau must be a finite time constant of at least 1 sample, rate_weight a "
+              "finite number";
     }
     for (i = 0u; why == NULL && i < m->ncreep; ++i) {
         if (!(m->creep_tau[i] >= 1.0)) {
@@ -594,6 +612,14 @@ size_t model_text_write(const model_text_t *m, char *buf, size_t size)
         over |= append_numbers(buf, size, &len, m->creep_tau, m->ncreep);
         over |= model_text_append(buf, size, &len, "\ncreep_weight");
         over |= append_numbers(buf, size, &len, m->creep_weight, m->ncreep);
+    }
+    if (m->has_rate) {
+        over |= model_text_append(buf, size, &len,
+                                  "\n# rate: the output plus rate_weight v, v the input's change "
+                                  "per sample low-passed with time constant rate_tau samples, up "
+                                  "to the sample before (0 at rest)\nrate_tau %.17g\nrate_weight "
+                                  "%.17g",
+                                  m->rate_tau, m->rate_weight);
     }
     over |= model_text_append(buf, size, &len, "\n");
     return over ? 0u : len;
@@ -706,6 +732,26 @@ static int header_creep(char *buf, size_t size, size_t *len, const char *name,
     return over | model_text_append(buf, size, len, "};\n");
 }
 
+/* The rate term, if any: its time constant and weight, for hyst_rate_init()
+ * with the domain's lo as the rest drive. */
+static int header_rate(char *buf, size_t size, size_t *len, const char *name,
+                       const model_text_t *m)
+{
+    int over;
+    if (!m->has_rate) {
+        return 0;
+    }
+    over = model_text_append(buf, size, len,
+                             "\n/* rate: add hyst_rate_step() of the model's input to its output\n"
+                             " * (hyst/rate.h): hyst_rate_init(&rate, %s_rate_tau,\n"
+                             " * %s_rate_weight, lo) */\nstatic const hyst_wide_t %s_rate_tau =",
+                             name, name, name);
+    over |= append_real(buf, size, len, " ", m->rate_tau);
+    over |= model_text_append(buf, size, len, ";\nstatic const hyst_wide_t %s_rate_weight =", name);
+    over |= append_real(buf, size, len, " ", m->rate_weight);
+    return over | model_text_append(buf, size, len, ";\n");
+}
+
 /* The include guard of NAME.h: NAME in capitals, then _H. */
 static void guard_of(const char *name, char *guard, size_t size)
 {
@@ -724,11 +770,12 @@ int model_text_header_open(char *buf, size_t size, size_t *len, const char *name
     int over;
     guard_of(name, guard, sizeof guard);
     over = model_text_append(buf, size, len,
-                             "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n%s\n", guard,
-                             guard, m->ncreep > 0u ? "#include \"hyst/creep.h\"\n" : "");
+                             "#ifndef %s\n#define %s\n\n#include \"hyst/curve.h\"\n%s%s\n", guard,
+                             guard, m->ncreep > 0u ? "#include \"hyst/creep.h\"\n" : "",
+                             m->has_rate ? "#include \"hyst/rate.h\"\n" : "");
     if (m->kind == MODEL_TEXT_EVERETT) {
         return over | header_everett(buf, size, len, name, m) |
-               header_creep(buf, size, len, name, m);
+               header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
     }
     over |= model_text_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,", name,
                               (unsigned)(m->ncoef - 1u));
@@ -739,7 +786,7 @@ int model_text_header_open(char *buf, size_t size, size_t *len, const char *name
         over |= append_real(buf, size, len, i ? ",\n     " : "", m->coeffs[i]);
     }
     return over | model_text_append(buf, size, len, "}};\n") |
-           header_creep(buf, size, len, name, m);
+           header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
 }
 
 int model_text_header_close(char *buf, size_t size, size_t *len, const char *name)

@@ -58,6 +58,11 @@ typedef struct model_text {
     double creep_weight[MODEL_TEXT_CREEP_MAX_TERMS];
     size_t ncreep;
     size_t ncreep_weights; /* as read (the reader checks it equals ncreep) */
+    /* rate (hyst/rate.h), either kind (keys rate_tau, rate_weight): the
+     * model's output plus rate_weight times the low-pass, of time constant
+     * rate_tau samples, of its input's change per sample; has_rate 0: none */
+    double rate_tau, rate_weight;
+    int has_rate;
 } model_text_t;
 
 /* Reads the whole file text[0..len) (NUL bytes included) into *m: 0, or 1
