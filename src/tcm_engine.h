@@ -597,9 +597,14 @@ static unsigned TCM_NAME(floor_log2)(size_t n)
  * (TCM_NORM). */
 HYST_INLINE TCM_KEY_T TCM_NAME(key)(const TCM_X *p)
 {
-    TCM_KEY_T k;
-    memcpy(&k, p, sizeof k);
-    return k;
+    /* a union, not memcpy(): GCC calls memcpy() for each probe on the
+     * Cortex-M0 (-Os), where a union read is one load */
+    union {
+        TCM_X x;
+        TCM_KEY_T k;
+    } v;
+    v.x = *p;
+    return v.k;
 }
 #define TCM_BELOW_S_(p) (TCM_NAME(key)(p) < kx)
 #define TCM_BELOW_U_(p) ((TCM_UKEY_T)TCM_NAME(key)(p) > (TCM_UKEY_T)kx)
