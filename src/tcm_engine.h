@@ -90,6 +90,11 @@
                           * still be held off the full model's branch by the
                           * monotone guard: the merges' error stays stated
                           * until it is back (finish_book()) */
+#define TCM_KIND_SLOW 64u /* the kind has no fast path (no polynomial, no
+                           * table): TCM_SLOW_ONLY always */
+/* The flags of the instance's kind, set once by attach(): set_detour()
+ * keeps them, so that it reads no kind or curve. */
+#define TCM_OF_KIND (TCM_KIND_SLOW | TCM_PER_BRANCH)
 
 /* A curve kind, as the engine sees it: the operations it binds at init
  * (src/kinds.h: one table per kind, in the kind's own file). The engine
@@ -141,11 +146,18 @@ HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
                                                       : TCM_KIND_G(S, u);
 }
 
-/* g for the rare paths (merge, deadband): one out-of-line copy, not one
- * inlined Horner switch per call site. d is an input difference. */
-static TCM_NOINLINE TCM_Y TCM_NAME(g)(const hyst_tcm_t *S, TCM_Y d)
+/* G at u = d scale for the rare paths (merges, the deadband, requests,
+ * degrees 9 and up, the clamped output of a live merge): one out-of-line
+ * copy, not one inlined Horner switch per call site. */
+static TCM_NOINLINE TCM_Y TCM_NAME(g_of)(const hyst_tcm_t *S, TCM_Y d, TCM_Y scale)
 {
-    return TCM_NAME(g_unit)(S, d * YV(S->unit));
+    return TCM_NAME(g_unit)(S, d * scale);
+}
+
+/* The same at an input difference d. */
+HYST_INLINE TCM_Y TCM_NAME(g)(const hyst_tcm_t *S, TCM_Y d)
+{
+    return TCM_NAME(g_of)(S, d, YV(S->unit));
 }
 
 /* How a sample ends (emit()): on the fast path, or a slow sample whose
@@ -167,6 +179,12 @@ HYST_INLINE TCM_Y TCM_NAME(on_branch)(const hyst_tcm_t *S, TCM_Y g)
 HYST_INLINE TCM_Y TCM_NAME(branch_g)(const hyst_tcm_t *S, TCM_X x)
 {
     return TCM_NAME(g_unit)(S, (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale));
+}
+
+/* The same out of line (g_of()): the rare paths'. */
+HYST_INLINE TCM_Y TCM_NAME(branch_g_rare)(const hyst_tcm_t *S, TCM_X x)
+{
+    return TCM_NAME(g_of)(S, TCM_R(x) - YV(S->x_ctp), YV(S->u_scale));
 }
 
 /* Output on the current branch. One formula for both paths (the fast path
@@ -345,14 +363,14 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
  * tests one word. */
 static void TCM_NAME(set_detour)(hyst_tcm_t *S)
 {
+    const unsigned kind = S->detour & TCM_OF_KIND;
     const unsigned merged = S->forgot_level != TCM_NO_LEVEL ? TCM_SLOW_ONLY | TCM_BOOK : 0u;
-    S->detour = merged | (S->degree == 0u && S->table.TCM_YF == NULL ? TCM_SLOW_ONLY : 0u) |
+    S->detour = kind | merged | ((kind & TCM_KIND_SLOW) != 0u ? TCM_SLOW_ONLY : 0u) |
                 (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
                 (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u) |
                 (S->status != HYST_OK ? TCM_STALE : 0u) |
                 (S->forgot_level == TCM_NO_LEVEL && YV(S->forgot) != 0 ? TCM_SETTLING | TCM_BOOK
-                                                                       : 0u) |
-                (TCM_KIND(S)->derive != NULL ? TCM_PER_BRANCH : 0u);
+                                                                       : 0u);
 }
 
 /* A sample that leaves the plain path starts with the status OK. */
@@ -514,6 +532,8 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve,
     YV(S->table_rows) = YV(S->table_intervals) = YV(S->v_least) = 0;
     kind->attach(S, curve); /* S->degree, S->coef, S->table: what the fast path evaluates */
     S->horner = S->degree + kind->bank;
+    S->detour = (S->degree == 0u && S->table.TCM_YF == NULL ? TCM_KIND_SLOW : 0u) |
+                (kind->derive != NULL ? TCM_PER_BRANCH : 0u); /* set_detour() keeps them */
     S->seq = 0u;
     S->req_reset = S->done_reset = 0u;
     S->req_clear = S->done_clear = 0u;
@@ -822,7 +842,7 @@ static TCM_NOINLINE void TCM_NAME(serve)(hyst_tcm_t *S)
 static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x, int how)
 {
     TCM_Y y;
-    YV(S->g_prev) = TCM_NAME(branch_g)(S, x); /* for finish_book() */
+    YV(S->g_prev) = TCM_NAME(branch_g_rare)(S, x); /* for finish_book() */
     y = TCM_NAME(on_branch)(S, YV(S->g_prev));
     if (S->forgot_level != TCM_NO_LEVEL) {
         if (y > YV(S->y_hi)) {
@@ -909,8 +929,8 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
     if (how != TCM_REPEAT) {
         if (S->degree == HYST_HORNER_OWN_) { /* a request pending */
             y = TCM_KIND(S)->emit(S, x, how, TCM_KEEP);
-        } else { /* one inline G for both ends */
-            const TCM_Y g = TCM_NAME(branch_g)(S, x);
+        } else { /* one G for both ends */
+            const TCM_Y g = TCM_NAME(branch_g_rare)(S, x);
             y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
         }
     }
