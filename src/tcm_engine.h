@@ -201,13 +201,14 @@ static void TCM_NAME(close_window)(hyst_tcm_t *S);
 /* Float evaluation of an increasing G is not monotone at the rounding level
  * (src/hyst_curve.c bounds the error, not its sign), so the output of a
  * monotone input could step back. Guards, both off the arithmetic:
- * - fast path: G never below g_prev, its value at the last input of the
- *   branch (y = y_ctp +- G is then monotone: rounding is monotone);
  * - slow sample: the output never behind y_prev in the input's direction;
  *   where it would be, y_prev is kept and the window closed, so the next
  *   sample is slow too. An open window thus always has
- *   y_prev == y_ctp +- g_prev, which is all the fast guard needs (and what
- *   a restore re-derives: resume_()). */
+ *   y_prev == y_ctp +- g_prev (what a restore re-derives: resume_());
+ * - fast path: the output never behind y_prev either. Rounding is
+ *   monotone, so that is y_ctp +- G with G never below its value at the
+ *   last input, g_prev, without reading or storing g_prev: the slow paths
+ *   that read it (a merge's settling) run with the window closed. */
 HYST_INLINE TCM_Y TCM_NAME(slow_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
 {
     TCM_Y y = TCM_NAME(on_branch)(S, g);
@@ -240,19 +241,28 @@ HYST_INLINE TCM_Y TCM_NAME(held_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
     return y;
 }
 
-/* The fast path's end: guarded G, the moving window end, the output. */
+/* The fast path's end: the moving window end, the guarded output, stored
+ * as y_prev. Each direction ends by itself (no shared tail to branch to). */
 HYST_INLINE TCM_Y TCM_NAME(fast_end)(hyst_tcm_t *S, TCM_X x, TCM_Y g)
 {
-    if (g < YV(S->g_prev)) {
-        g = YV(S->g_prev);
-    }
-    YV(S->g_prev) = g;
+    const TCM_Y y_prev = YV(S->y_prev);
+    TCM_Y y;
     if (S->moving_end == 0u) {
         XV(S->window[0]) = x;
-        return YV(S->y_ctp) + g;
+        y = YV(S->y_ctp) + g;
+        if (TCM_RARELY(y < y_prev)) {
+            y = y_prev;
+        }
+        YV(S->y_prev) = y;
+        return y;
     }
     XV(S->window[1]) = x;
-    return YV(S->y_ctp) - g;
+    y = YV(S->y_ctp) - g;
+    if (TCM_RARELY(y > y_prev)) {
+        y = y_prev;
+    }
+    YV(S->y_prev) = y;
+    return y;
 }
 
 #ifndef NUM_FIXED
@@ -353,7 +363,10 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
         return TCM_NAME(emit_rare)(S, x, how);
     }
     g = NUM_MUL_G(acc, u);
-    y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
+    if (how == TCM_FAST) {
+        return TCM_NAME(fast_end)(S, x, g);
+    }
+    y = TCM_NAME(slow_guard)(S, g, how);
     YV(S->y_prev) = y;
     return y;
 }
@@ -961,17 +974,14 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
     return TCM_NAME(emit)(S, (TCM_X)x, TCM_FAST, TCM_KEEP); /* the window is empty for other curve kinds */
 }
 
-/* G at u guarded as fast_end() does: never below the last sample's. */
-HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u, TCM_Y g_prev)
+/* G at u, as emit() evaluates it. */
+HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u)
 {
-    TCM_Y g;
     if (deg == 0u) { /* a tabulated inverse: the same arithmetic as emit(), whose G * 1 is G */
         const TCM_Y v = NUM_NAME(table_g)(S->table.TCM_YF, u);
-        g = v >= 0 ? v : TCM_KIND_G(S, u);
-    } else {
-        g = NUM_NAME(horner)(S->coef, deg, u);
+        return v >= 0 ? v : TCM_KIND_G(S, u);
     }
-    return g < g_prev ? g_prev : g;
+    return NUM_NAME(horner)(S->coef, deg, u);
 }
 
 /* The block call's inner loop: the samples from i on that stay inside the
@@ -986,7 +996,7 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
     const TCM_Y u_scale = YV(S->u_scale);
     const unsigned deg = S->degree;
     TCM_X w0 = XV(S->window[0]), w1 = XV(S->window[1]);
-    TCM_Y g_prev = YV(S->g_prev);
+    TCM_Y y_last = YV(S->y_prev);
     if (S->horner == HYST_HORNER_REQUEST_ || deg == HYST_HORNER_OWN_ ||
         deg == HYST_HORNER_PIECE_) {
         return i; /* a pending request: step_slow() serves it; solved, blended: step by step */
@@ -997,29 +1007,36 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
     if (S->moving_end == 0u) { /* rising: the lower end follows x */
         for (; i < n; ++i) {
             const TCM_X xi = x[i]; /* read before y[i]: y may be x */
+            TCM_Y yi;
             if (!(xi > w0 && xi < w1)) {
                 break;
             }
-            g_prev = TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale, g_prev);
-            y[i] = y_ctp + g_prev;
+            yi = y_ctp + TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            if (yi < y_last) { /* guarded as fast_end() */
+                yi = y_last;
+            }
+            y[i] = y_last = yi;
             w0 = xi;
         }
     } else {
         for (; i < n; ++i) {
             const TCM_X xi = x[i];
+            TCM_Y yi;
             if (!(xi > w0 && xi < w1)) {
                 break;
             }
-            g_prev = TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale, g_prev);
-            y[i] = y_ctp - g_prev;
+            yi = y_ctp - TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            if (yi > y_last) {
+                yi = y_last;
+            }
+            y[i] = y_last = yi;
             w1 = xi;
         }
     }
     if (i > first) {
         XV(S->window[0]) = w0;
         XV(S->window[1]) = w1;
-        YV(S->g_prev) = g_prev;
-        YV(S->y_prev) = y[i - 1u];
+        YV(S->y_prev) = y_last;
     }
     return i;
 }
