@@ -56,6 +56,15 @@
 #define TCM_NOINLINE
 #define TCM_RARELY(c) (c)
 #endif
+/* c as likely as not: GCC then lays out the branch taken when c holds
+ * right after the test (the NULL policy's exit: one cbnz on the other
+ * path, where an unlikely exit goes to the end of the function, out of
+ * cbz's reach: a compare and a branch). */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 9
+#define TCM_EVEN(c) __builtin_expect_with_probability((c) != 0, 1, 0.5)
+#else
+#define TCM_EVEN(c) (c)
+#endif
 
 #ifndef TCM_G_HALF
 #define TCM_G_HALF(S, d) TCM_NAME(g)((S), (d) * NUM_C(0.5))
@@ -955,7 +964,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
 }
 
 /* The NULL policy's answer for a per-sample call: 0. Out of line, so that
- * the check costs the fast path one compare-and-branch and nothing else. */
+ * the check costs the fast path one cbnz and nothing else (TCM_EVEN). */
 static TCM_NOINLINE TCM_Y TCM_NAME(no_instance)(void) { return 0; }
 
 /* The per-sample computation, inlined into the public step call. The fast path
@@ -963,7 +972,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(no_instance)(void) { return 0; }
  * closes the window, so the next one goes through step_slow(), which sets it. */
 HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
 {
-    if (S == NULL) {
+    if (TCM_EVEN(S == NULL)) {
         return TCM_NAME(no_instance)();
     }
     /* Fast path: the input moves on and reaches no stored TP. NaN fails the
