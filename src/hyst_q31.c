@@ -53,7 +53,7 @@ static hyst_q31_t hyst_q31_no_other(const hyst_curve_t *curve, hyst_q31_t v)
 #define TCM_ADMIT(S, x, out) hyst_q31_admit((S), (x), (out))
 #define TCM_G_OTHER(c, d) hyst_q31_no_other((c), (d))
 /* d * unit is exact: halve the argument, not the code difference */
-#define TCM_G_HALF(S, d) TCM_NAME(g_unit)((S), (d) * (S)->unit.q31 / 2)
+#define TCM_G_HALF(S, d) TCM_NAME(g_of)((S), (d) * (S)->unit.q31 / 2, 1)
 #define TCM_ADD_BOUND(a, e) ((a) = hyst_q31_add_bound((a), (e)))
 #include "tcm_engine.h"
 #include "kind_poly.h"
@@ -240,8 +240,8 @@ hyst_status_t hyst_q31_init_sealed_(hyst_tcm_t *S, const hyst_q31_sealed_poly_t 
     q.lo.code = (hyst_code_word_t)sealed->code_lo;
     q.hi.code = (hyst_code_word_t)sealed->code_hi;
     q.rounding.q31 = sealed->rounding;
-    for (k = 0u; k < sealed->degree; ++k) {
-        q.u.poly.a[k].q31 = sealed->a[k];
+    for (k = 0u; k < HYST_MAX_DEGREE; ++k) { /* a select, not a copy: no memcpy() linked */
+        q.u.poly.a[k].q31 = k < sealed->degree ? sealed->a[k] : 0;
     }
     if (hyst_poly_seal_crc_(&q) != (sealed->seal & 0xFFFFFFFFul)) {
         return HYST_ERR_CRC;

@@ -22,6 +22,22 @@ int hyst_block_overlap(const void *x, size_t xsize, const void *y, size_t ysize,
     return hyst_ranges_overlap(x, n * xsize, y, n * ysize);
 }
 
+/* n entries of `size` bytes take at most half the address space. By sums,
+ * not a division: a core without one (Cortex-M0) links no division
+ * routine for this check. */
+static int hyst_fits_half(size_t n, size_t size)
+{
+    const size_t half = (size_t)-1 / 2u;
+    size_t bytes = 0u, k;
+    for (k = 0u; k < size; ++k) {
+        if (n > half - bytes) { /* bytes + n > half, without overflow */
+            return 0;
+        }
+        bytes += n;
+    }
+    return 1;
+}
+
 hyst_status_t hyst_check_memory(const hyst_tcm_t *S, const void *xltp, const void *yltp,
                                 const void *xrtp, const void *yrtp, size_t capacity,
                                 size_t xsize, size_t ysize, unsigned long layout)
@@ -35,7 +51,7 @@ hyst_status_t hyst_check_memory(const hyst_tcm_t *S, const void *xltp, const voi
     if (layout != HYST_LAYOUT) {
         return HYST_ERR_LAYOUT;
     }
-    if (capacity < 2u || capacity > (size_t)-1 / 2u / (xsize > ysize ? xsize : ysize)) {
+    if (capacity < 2u || !hyst_fits_half(capacity, xsize > ysize ? xsize : ysize)) {
         return HYST_ERR_CAPACITY;
     }
     arrays[0] = xltp;

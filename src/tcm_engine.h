@@ -56,6 +56,15 @@
 #define TCM_NOINLINE
 #define TCM_RARELY(c) (c)
 #endif
+/* c as likely as not: GCC then lays out the branch taken when c holds
+ * right after the test (the NULL policy's exit: one cbnz on the other
+ * path, where an unlikely exit goes to the end of the function, out of
+ * cbz's reach: a compare and a branch). */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 9
+#define TCM_EVEN(c) __builtin_expect_with_probability((c) != 0, 1, 0.5)
+#else
+#define TCM_EVEN(c) (c)
+#endif
 
 #ifndef TCM_G_HALF
 #define TCM_G_HALF(S, d) TCM_NAME(g)((S), (d) * NUM_C(0.5))
@@ -90,6 +99,11 @@
                           * still be held off the full model's branch by the
                           * monotone guard: the merges' error stays stated
                           * until it is back (finish_book()) */
+#define TCM_KIND_SLOW 64u /* the kind has no fast path (no polynomial, no
+                           * table): TCM_SLOW_ONLY always */
+/* The flags of the instance's kind, set once by attach(): set_detour()
+ * keeps them, so that it reads no kind or curve. */
+#define TCM_OF_KIND (TCM_KIND_SLOW | TCM_PER_BRANCH)
 
 /* A curve kind, as the engine sees it: the operations it binds at init
  * (src/kinds.h: one table per kind, in the kind's own file). The engine
@@ -141,11 +155,18 @@ HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
                                                       : TCM_KIND_G(S, u);
 }
 
-/* g for the rare paths (merge, deadband): one out-of-line copy, not one
- * inlined Horner switch per call site. d is an input difference. */
-static TCM_NOINLINE TCM_Y TCM_NAME(g)(const hyst_tcm_t *S, TCM_Y d)
+/* G at u = d scale for the rare paths (merges, the deadband, requests,
+ * degrees 9 and up, the clamped output of a live merge): one out-of-line
+ * copy, not one inlined Horner switch per call site. */
+static TCM_NOINLINE TCM_Y TCM_NAME(g_of)(const hyst_tcm_t *S, TCM_Y d, TCM_Y scale)
 {
-    return TCM_NAME(g_unit)(S, d * YV(S->unit));
+    return TCM_NAME(g_unit)(S, d * scale);
+}
+
+/* The same at an input difference d. */
+HYST_INLINE TCM_Y TCM_NAME(g)(const hyst_tcm_t *S, TCM_Y d)
+{
+    return TCM_NAME(g_of)(S, d, YV(S->unit));
 }
 
 /* How a sample ends (emit()): on the fast path, or a slow sample whose
@@ -169,6 +190,12 @@ HYST_INLINE TCM_Y TCM_NAME(branch_g)(const hyst_tcm_t *S, TCM_X x)
     return TCM_NAME(g_unit)(S, (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale));
 }
 
+/* The same out of line (g_of()): the rare paths'. */
+HYST_INLINE TCM_Y TCM_NAME(branch_g_rare)(const hyst_tcm_t *S, TCM_X x)
+{
+    return TCM_NAME(g_of)(S, TCM_R(x) - YV(S->x_ctp), YV(S->u_scale));
+}
+
 /* Output on the current branch. One formula for both paths (the fast path
  * sees only polynomials, the same Horner code), so that a loop that closes
  * returns to its starting output bit for bit. */
@@ -183,13 +210,14 @@ static void TCM_NAME(close_window)(hyst_tcm_t *S);
 /* Float evaluation of an increasing G is not monotone at the rounding level
  * (src/hyst_curve.c bounds the error, not its sign), so the output of a
  * monotone input could step back. Guards, both off the arithmetic:
- * - fast path: G never below g_prev, its value at the last input of the
- *   branch (y = y_ctp +- G is then monotone: rounding is monotone);
  * - slow sample: the output never behind y_prev in the input's direction;
  *   where it would be, y_prev is kept and the window closed, so the next
  *   sample is slow too. An open window thus always has
- *   y_prev == y_ctp +- g_prev, which is all the fast guard needs (and what
- *   a restore re-derives: resume_()). */
+ *   y_prev == y_ctp +- g_prev (what a restore re-derives: resume_());
+ * - fast path: the output never behind y_prev either. Rounding is
+ *   monotone, so that is y_ctp +- G with G never below its value at the
+ *   last input, g_prev, without reading or storing g_prev: the slow paths
+ *   that read it (a merge's settling) run with the window closed. */
 HYST_INLINE TCM_Y TCM_NAME(slow_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
 {
     TCM_Y y = TCM_NAME(on_branch)(S, g);
@@ -222,19 +250,28 @@ HYST_INLINE TCM_Y TCM_NAME(held_guard)(hyst_tcm_t *S, TCM_Y g, const int how)
     return y;
 }
 
-/* The fast path's end: guarded G, the moving window end, the output. */
+/* The fast path's end: the moving window end, the guarded output, stored
+ * as y_prev. Each direction ends by itself (no shared tail to branch to). */
 HYST_INLINE TCM_Y TCM_NAME(fast_end)(hyst_tcm_t *S, TCM_X x, TCM_Y g)
 {
-    if (g < YV(S->g_prev)) {
-        g = YV(S->g_prev);
-    }
-    YV(S->g_prev) = g;
+    const TCM_Y y_prev = YV(S->y_prev);
+    TCM_Y y;
     if (S->moving_end == 0u) {
         XV(S->window[0]) = x;
-        return YV(S->y_ctp) + g;
+        y = YV(S->y_ctp) + g;
+        if (TCM_RARELY(y < y_prev)) {
+            y = y_prev;
+        }
+        YV(S->y_prev) = y;
+        return y;
     }
     XV(S->window[1]) = x;
-    return YV(S->y_ctp) - g;
+    y = YV(S->y_ctp) - g;
+    if (TCM_RARELY(y > y_prev)) {
+        y = y_prev;
+    }
+    YV(S->y_prev) = y;
+    return y;
 }
 
 #ifndef NUM_FIXED
@@ -335,7 +372,10 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
         return TCM_NAME(emit_rare)(S, x, how);
     }
     g = NUM_MUL_G(acc, u);
-    y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
+    if (how == TCM_FAST) {
+        return TCM_NAME(fast_end)(S, x, g);
+    }
+    y = TCM_NAME(slow_guard)(S, g, how);
     YV(S->y_prev) = y;
     return y;
 }
@@ -345,14 +385,14 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
  * tests one word. */
 static void TCM_NAME(set_detour)(hyst_tcm_t *S)
 {
+    const unsigned kind = S->detour & TCM_OF_KIND;
     const unsigned merged = S->forgot_level != TCM_NO_LEVEL ? TCM_SLOW_ONLY | TCM_BOOK : 0u;
-    S->detour = merged | (S->degree == 0u && S->table.TCM_YF == NULL ? TCM_SLOW_ONLY : 0u) |
+    S->detour = kind | merged | ((kind & TCM_KIND_SLOW) != 0u ? TCM_SLOW_ONLY : 0u) |
                 (XV(S->db_reach) != 0 ? TCM_BOOK : 0u) |
                 (XV(S->deadband) != 0 ? TCM_DEADBAND : 0u) |
                 (S->status != HYST_OK ? TCM_STALE : 0u) |
                 (S->forgot_level == TCM_NO_LEVEL && YV(S->forgot) != 0 ? TCM_SETTLING | TCM_BOOK
-                                                                       : 0u) |
-                (TCM_KIND(S)->derive != NULL ? TCM_PER_BRANCH : 0u);
+                                                                       : 0u);
 }
 
 /* A sample that leaves the plain path starts with the status OK. */
@@ -514,6 +554,8 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve,
     YV(S->table_rows) = YV(S->table_intervals) = YV(S->v_least) = 0;
     kind->attach(S, curve); /* S->degree, S->coef, S->table: what the fast path evaluates */
     S->horner = S->degree + kind->bank;
+    S->detour = (S->degree == 0u && S->table.TCM_YF == NULL ? TCM_KIND_SLOW : 0u) |
+                (kind->derive != NULL ? TCM_PER_BRANCH : 0u); /* set_detour() keeps them */
     S->seq = 0u;
     S->req_reset = S->done_reset = 0u;
     S->req_clear = S->done_clear = 0u;
@@ -597,9 +639,14 @@ static unsigned TCM_NAME(floor_log2)(size_t n)
  * (TCM_NORM). */
 HYST_INLINE TCM_KEY_T TCM_NAME(key)(const TCM_X *p)
 {
-    TCM_KEY_T k;
-    memcpy(&k, p, sizeof k);
-    return k;
+    /* a union, not memcpy(): GCC calls memcpy() for each probe on the
+     * Cortex-M0 (-Os), where a union read is one load */
+    union {
+        TCM_X x;
+        TCM_KEY_T k;
+    } v;
+    v.x = *p;
+    return v.k;
 }
 #define TCM_BELOW_S_(p) (TCM_NAME(key)(p) < kx)
 #define TCM_BELOW_U_(p) ((TCM_UKEY_T)TCM_NAME(key)(p) > (TCM_UKEY_T)kx)
@@ -817,7 +864,7 @@ static TCM_NOINLINE void TCM_NAME(serve)(hyst_tcm_t *S)
 static TCM_NOINLINE TCM_Y TCM_NAME(slow_only)(hyst_tcm_t *S, TCM_X x, int how)
 {
     TCM_Y y;
-    YV(S->g_prev) = TCM_NAME(branch_g)(S, x); /* for finish_book() */
+    YV(S->g_prev) = TCM_NAME(branch_g_rare)(S, x); /* for finish_book() */
     y = TCM_NAME(on_branch)(S, YV(S->g_prev));
     if (S->forgot_level != TCM_NO_LEVEL) {
         if (y > YV(S->y_hi)) {
@@ -904,8 +951,8 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
     if (how != TCM_REPEAT) {
         if (S->degree == HYST_HORNER_OWN_) { /* a request pending */
             y = TCM_KIND(S)->emit(S, x, how, TCM_KEEP);
-        } else { /* one inline G for both ends */
-            const TCM_Y g = TCM_NAME(branch_g)(S, x);
+        } else { /* one G for both ends */
+            const TCM_Y g = TCM_NAME(branch_g_rare)(S, x);
             y = how == TCM_FAST ? TCM_NAME(fast_end)(S, x, g) : TCM_NAME(slow_guard)(S, g, how);
         }
     }
@@ -917,7 +964,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how)
 }
 
 /* The NULL policy's answer for a per-sample call: 0. Out of line, so that
- * the check costs the fast path one compare-and-branch and nothing else. */
+ * the check costs the fast path one cbnz and nothing else (TCM_EVEN). */
 static TCM_NOINLINE TCM_Y TCM_NAME(no_instance)(void) { return 0; }
 
 /* The per-sample computation, inlined into the public step call. The fast path
@@ -925,7 +972,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(no_instance)(void) { return 0; }
  * closes the window, so the next one goes through step_slow(), which sets it. */
 HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
 {
-    if (S == NULL) {
+    if (TCM_EVEN(S == NULL)) {
         return TCM_NAME(no_instance)();
     }
     /* Fast path: the input moves on and reaches no stored TP. NaN fails the
@@ -936,17 +983,14 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
     return TCM_NAME(emit)(S, (TCM_X)x, TCM_FAST, TCM_KEEP); /* the window is empty for other curve kinds */
 }
 
-/* G at u guarded as fast_end() does: never below the last sample's. */
-HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u, TCM_Y g_prev)
+/* G at u, as emit() evaluates it. */
+HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u)
 {
-    TCM_Y g;
     if (deg == 0u) { /* a tabulated inverse: the same arithmetic as emit(), whose G * 1 is G */
         const TCM_Y v = NUM_NAME(table_g)(S->table.TCM_YF, u);
-        g = v >= 0 ? v : TCM_KIND_G(S, u);
-    } else {
-        g = NUM_NAME(horner)(S->coef, deg, u);
+        return v >= 0 ? v : TCM_KIND_G(S, u);
     }
-    return g < g_prev ? g_prev : g;
+    return NUM_NAME(horner)(S->coef, deg, u);
 }
 
 /* The block call's inner loop: the samples from i on that stay inside the
@@ -961,7 +1005,7 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
     const TCM_Y u_scale = YV(S->u_scale);
     const unsigned deg = S->degree;
     TCM_X w0 = XV(S->window[0]), w1 = XV(S->window[1]);
-    TCM_Y g_prev = YV(S->g_prev);
+    TCM_Y y_last = YV(S->y_prev);
     if (S->horner == HYST_HORNER_REQUEST_ || deg == HYST_HORNER_OWN_ ||
         deg == HYST_HORNER_PIECE_) {
         return i; /* a pending request: step_slow() serves it; solved, blended: step by step */
@@ -972,29 +1016,36 @@ static size_t TCM_NAME(run)(hyst_tcm_t *S, const TCM_IN *x, TCM_Y *y, size_t i, 
     if (S->moving_end == 0u) { /* rising: the lower end follows x */
         for (; i < n; ++i) {
             const TCM_X xi = x[i]; /* read before y[i]: y may be x */
+            TCM_Y yi;
             if (!(xi > w0 && xi < w1)) {
                 break;
             }
-            g_prev = TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale, g_prev);
-            y[i] = y_ctp + g_prev;
+            yi = y_ctp + TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            if (yi < y_last) { /* guarded as fast_end() */
+                yi = y_last;
+            }
+            y[i] = y_last = yi;
             w0 = xi;
         }
     } else {
         for (; i < n; ++i) {
             const TCM_X xi = x[i];
+            TCM_Y yi;
             if (!(xi > w0 && xi < w1)) {
                 break;
             }
-            g_prev = TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale, g_prev);
-            y[i] = y_ctp - g_prev;
+            yi = y_ctp - TCM_NAME(run_g)(S, deg, (TCM_R(xi) - x_ctp) * u_scale);
+            if (yi > y_last) {
+                yi = y_last;
+            }
+            y[i] = y_last = yi;
             w1 = xi;
         }
     }
     if (i > first) {
         XV(S->window[0]) = w0;
         XV(S->window[1]) = w1;
-        YV(S->g_prev) = g_prev;
-        YV(S->y_prev) = y[i - 1u];
+        YV(S->y_prev) = y_last;
     }
     return i;
 }

@@ -154,8 +154,8 @@ static hyst_status_t NUM_NAME(init_sealed_impl)(hyst_tcm_t *S, const NUM_SEALED_
     curve.y_hi.NUM_F = c->y_hi;
     curve.unit.NUM_F = c->unit;
     curve.rounding.NUM_F = c->rounding;
-    for (k = 0u; k < c->degree; ++k) {
-        curve.u.poly.a[k].NUM_F = c->a[k];
+    for (k = 0u; k < HYST_MAX_DEGREE; ++k) { /* a select, not a copy: no memcpy() linked */
+        curve.u.poly.a[k].NUM_F = k < c->degree ? c->a[k] : 0;
     }
     if (hyst_poly_seal_crc_(&curve) != (c->seal & 0xFFFFFFFFul)) {
         return HYST_ERR_CRC;

@@ -117,12 +117,12 @@ typedef struct hyst_tcm {
     /* Fast-path cache, derived from the arrays after every slow sample:
      * while the input moves on inside the open interval (window[0],
      * window[1]), no TP is created or passed and
-     * y = y_ctp +- G(u_scale (x - x_ctp)) (+ rising, - falling), G never
-     * below g_prev. window[moving_end] is the last valid input. */
+     * y = y_ctp +- G(u_scale (x - x_ctp)) (+ rising, - falling), never
+     * behind y_prev. window[moving_end] is the last valid input. */
     hyst_num_t window[2];
     hyst_num_t x_ctp;        /**< current TP's input, as a real */
     hyst_num_t y_ctp;        /**< current TP's output */
-    hyst_num_t g_prev;       /**< G at the last input on this branch (monotone guard) */
+    hyst_num_t g_prev;       /**< G at the last slow sample's input (a merge's settling) */
     hyst_num_t u_scale;      /**< unit rising, -unit falling */
     hyst_num_t y_prev;       /**< output for the last valid input */
     unsigned moving_end;     /**< 0 rising (the lower end follows x), 1 falling */
