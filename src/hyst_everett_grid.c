@@ -25,7 +25,7 @@ static hyst_wide_t weight(const hyst_everett_grid_t *g, unsigned i, unsigned j)
  * numbers per cell (i, j), j < i). */
 static hyst_wide_t entry(const hyst_everett_grid_t *g, const grid_t *w, size_t at)
 {
-    const unsigned k = w->k;
+    const size_t k = w->k;
     size_t r;
     unsigned i, j, l, p;
     hyst_wide_t sum = 0;
@@ -63,6 +63,28 @@ static hyst_wide_t entry(const hyst_everett_grid_t *g, const grid_t *w, size_t a
     }
 }
 
+/* Knots finite, strictly increasing also in the variant's type, widths
+ * finite (into w->h). */
+static int knots_ok(const hyst_everett_grid_t *g, grid_t *w, unsigned variant)
+{
+    unsigned i;
+    for (i = 0u; i <= w->k; ++i) {
+        hyst_num_t v, prev;
+        if (!hyst_wide_is_finite(g->knots[i]) || !hyst_num_set(&v, variant, g->knots[i])) {
+            return 0;
+        }
+        if (i > 0u) {
+            (void)hyst_num_set(&prev, variant, g->knots[i - 1u]);
+            w->h[i - 1u] = g->knots[i] - g->knots[i - 1u];
+            if (!(hyst_num_get(&v, variant) > hyst_num_get(&prev, variant)) ||
+                !hyst_wide_is_finite(w->h[i - 1u])) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
 static hyst_status_t everett_grid(hyst_curve_t *curve, const hyst_everett_grid_t *g,
                            hyst_ptr_t table, size_t table_len, unsigned variant,
                            unsigned long layout)
@@ -84,20 +106,8 @@ static hyst_status_t everett_grid(hyst_curve_t *curve, const hyst_everett_grid_t
         return HYST_ERR_DEGREE;
     }
     w.k = k;
-    for (i = 0u; i <= k; ++i) {
-        hyst_num_t v, prev;
-        if (!hyst_wide_is_finite(g->knots[i]) || !hyst_num_set(&v, variant, g->knots[i])) {
-            return HYST_ERR_BREAKPOINTS;
-        }
-        if (i > 0u) {
-            (void)hyst_num_set(&prev, variant, g->knots[i - 1u]);
-            w.h[i - 1u] = g->knots[i] - g->knots[i - 1u];
-            /* increasing in the variant's type too, and widths finite */
-            if (!(hyst_num_get(&v, variant) > hyst_num_get(&prev, variant)) ||
-                !hyst_wide_is_finite(w.h[i - 1u])) {
-                return HYST_ERR_BREAKPOINTS;
-            }
-        }
+    if (!knots_ok(g, &w, variant)) {
+        return HYST_ERR_BREAKPOINTS;
     }
     if (!hyst_wide_is_finite(g->y_lo)) {
         return HYST_ERR_COEFF;
