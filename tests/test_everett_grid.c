@@ -325,6 +325,75 @@ static void test_deadband_bound_holds(void)
     TEST_ASSERT_TRUE(worst > 100.0 * AGREE);
 }
 
+/* Identification: a random grid's record (minor loops, wipe-outs), fitted
+ * on its own knots, gives a model whose outputs on a new drive are the
+ * grid's within rounding, every mass >= 0; on a noisy record the masses
+ * stay >= 0 and the model within a few noise levels; the knots from the
+ * record's output steps are strictly increasing on [lo, hi]. */
+#define FIT_SAMPLES 3000
+static hyst_wide_t fit_work[HYST_EVERETT_GRID_FIT_WORK(6u, 400u)];
+static hyst_wide_t fx[FIT_SAMPLES], fy[FIT_SAMPLES];
+
+static void test_identification_recovers_the_grid(void)
+{
+    int trial;
+    double worst = 0.0, worst_noisy = 0.0;
+    for (trial = 0; trial < 20; ++trial) {
+        const hyst_everett_grid_t g = ref_egrid_random(&rng, 6u);
+        const double range = range_of(&g), noise = trial % 2 == 0 ? 0.0 : 0.01 * range;
+        hyst_everett_grid_fit_t fit;
+        hyst_everett_grid_t got;
+        hyst_wide_t rms = 0, knots[HYST_EVERETT_GRID_MAX_INTERVALS + 1];
+        hyst_everett_t dom2;
+        static ref_everett_t truth;
+        long k;
+        unsigned i;
+        walk(&g, xs, FIT_SAMPLES);
+        ref_egrid_init(&ref, &dom, &g);
+        for (k = 0; k < FIT_SAMPLES; ++k) {
+            fx[k] = (hyst_wide_t)xs[k];
+            fy[k] = (hyst_wide_t)(ref_everett_step(&ref, (double)xs[k]) + noise * (rng_unit(&rng) - 0.5));
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_init(&fit, g.knots, g.intervals, fit_work,
+                                                                   sizeof fit_work / sizeof fit_work[0]));
+        for (k = 0; k < FIT_SAMPLES; ++k) {
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_add(&fit, fx[k], fy[k]));
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_solve(&fit, &got, &rms));
+        for (i = 0u; i < HYST_EVERETT_GRID_CELLS(g.intervals); ++i) {
+            TEST_ASSERT_TRUE(got.weight[i] >= 0);
+        }
+        /* the fitted model against the true one on a new drive */
+        ref_egrid_init(&truth, &dom2, &g);
+        walk(&g, xs, 1000L);
+        {
+            static double want[1000];
+            for (k = 0; k < 1000; ++k) {
+                want[k] = ref_everett_step(&truth, (double)xs[k]);
+            }
+            ref_egrid_init(&ref, &dom, &got);
+            for (k = 0; k < 1000; ++k) {
+                const double d = fabs(ref_everett_step(&ref, (double)xs[k]) - want[k]) / range;
+                if (noise > 0.0) {
+                    worst_noisy = d > worst_noisy ? d : worst_noisy;
+                } else {
+                    worst = d > worst ? d : worst;
+                }
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_knots(fx, fy, FIT_SAMPLES, g.knots[0],
+                                                               g.knots[g.intervals], g.intervals, knots,
+                                                               fit_work, 256u));
+        for (i = 1u; i <= g.intervals; ++i) {
+            TEST_ASSERT_TRUE(knots[i] > knots[i - 1u]);
+        }
+        TEST_ASSERT_TRUE(knots[0] == g.knots[0] && knots[g.intervals] == g.knots[g.intervals]);
+    }
+    TEST_PRINTF("grid fit: worst error %g of the range exact, %g with 1 %% noise", worst, worst_noisy);
+    TEST_ASSERT_TRUE(worst <= 1e-6);
+    TEST_ASSERT_TRUE(worst_noisy <= 0.01);
+}
+
 #ifndef HYST_USE_DOUBLE
 /* The integer-code variant runs the same curve: bit for bit the f32
  * variant's outputs on codes. */
@@ -363,6 +432,7 @@ int main(void)
     RUN_TEST(test_block_and_snapshots);
     RUN_TEST(test_bounded_memory_keeps_its_bound);
     RUN_TEST(test_deadband_bound_holds);
+    RUN_TEST(test_identification_recovers_the_grid);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_codes_run_the_grid_kind);
 #endif
