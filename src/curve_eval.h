@@ -406,7 +406,7 @@ static NUM_T NUM_NAME(everett_grid_from_lo)(const hyst_curve_t *curve, NUM_T d)
 {
     const NUM_T *tab = curve->u.everett_grid.table.NUM_F;
     const unsigned k = curve->u.everett_grid.intervals;
-    const NUM_T x = curve->lo.NUM_F + d, r = tab[1] - tab[0];
+    const NUM_T x = tab[0] + d, r = tab[1] - tab[0]; /* tab[0]: lo, the inverse's too */
     const NUM_T *rec;
     NUM_T t;
     unsigned i = 0u;
@@ -429,6 +429,23 @@ static NUM_T NUM_NAME(curve_g_impl)(const hyst_curve_t *curve, NUM_T d)
     }
     if (curve->kind == (unsigned)HYST_CURVE_EVERETT_GRID) {
         return NUM_NAME(everett_grid_from_lo)(curve, d);
+    }
+    if (curve->kind == (unsigned)HYST_CURVE_EVERETT_GRID_INV) { /* that branch's inverse, bisected */
+        const NUM_T *tab = curve->u.everett_grid.table.NUM_F;
+        NUM_T a = 0, b = tab[curve->u.everett_grid.intervals] - tab[0];
+        unsigned it;
+        for (it = 0u; it < 2u * (unsigned)(sizeof(NUM_T) * CHAR_BIT); ++it) {
+            const NUM_T m = (a + b) * NUM_C(0.5);
+            if (!(m > a && m < b)) {
+                break;
+            }
+            if (NUM_NAME(everett_grid_from_lo)(curve, m) < d) {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        return a;
     }
     return curve->kind == (unsigned)HYST_CURVE_POLY
                ? NUM_NAME(horner)(curve->u.poly.a, curve->u.poly.degree, d * curve->unit.NUM_F)

@@ -214,6 +214,48 @@ hyst_status_t hyst_f64_curve_from_everett_grid_(hyst_curve_t *curve, const hyst_
 }
 #endif
 
+/* The compensator's curve: the axes swapped, the table kept. */
+static hyst_status_t grid_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd, unsigned variant)
+{
+    hyst_curve_t out;
+    hyst_wide_t span, eps;
+    if (inv == NULL || fwd == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (fwd->layout != HYST_LAYOUT || fwd->variant != variant) {
+        return HYST_ERR_LAYOUT;
+    }
+    if (fwd->kind != (unsigned)HYST_CURVE_EVERETT_GRID || hyst_everett_grid_check_(fwd) != HYST_OK ||
+        !(hyst_num_get(&fwd->y_lo, variant) < hyst_num_get(&fwd->y_hi, variant))) {
+        return HYST_ERR_ARG;
+    }
+    out = *fwd;
+    out.kind = HYST_CURVE_EVERETT_GRID_INV;
+    out.lo = fwd->y_lo;
+    out.hi = fwd->y_hi;
+    out.y_lo = fwd->lo;
+    out.y_hi = fwd->hi;
+    (void)hyst_num_set(&out.unit, variant, 1); /* G^-1 takes the output step itself */
+    span = hyst_num_get(&fwd->hi, variant) - hyst_num_get(&fwd->lo, variant);
+    eps = variant == (unsigned)HYST_VARIANT_F64 ? (hyst_wide_t)DBL_EPSILON / 2
+                                                : (hyst_wide_t)FLT_EPSILON / 2;
+    (void)hyst_num_set(&out.rounding, variant, 16 * eps * span);
+    *inv = out;
+    return HYST_OK;
+}
+
+hyst_status_t hyst_f32_curve_everett_grid_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
+{
+    return grid_inverse(inv, fwd, HYST_VARIANT_F32);
+}
+
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_everett_grid_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
+{
+    return grid_inverse(inv, fwd, HYST_VARIANT_F64);
+}
+#endif
+
 hyst_status_t hyst_everett_grid_check_(const hyst_curve_t *curve)
 {
     return curve->u.everett_grid.table.f32 != NULL && curve->u.everett_grid.intervals >= 1u &&

@@ -52,9 +52,9 @@ HYST_INLINE TCM_Y TCM_NAME(eg_user)(const hyst_tcm_t *S, TCM_Y x)
 #endif
 }
 
-/* The piece of the current branch that holds u (>= 0), from the branch's
- * numbers and the table: the same numbers whichever path asks. */
-static TCM_NAME(eg_piece_t) TCM_NAME(eg_piece)(const hyst_tcm_t *S, TCM_Y u)
+/* Piece i of the current branch (knot interval i: m, m + 1, ... rising;
+ * m, m - 1, ... falling), from the branch's numbers and the table. */
+static TCM_NAME(eg_piece_t) TCM_NAME(eg_piece_at)(const hyst_tcm_t *S, unsigned i)
 {
     const TCM_Y *tab = TCM_EG_TABLE_(S);
     const unsigned k = S->curve->u.everett_grid.intervals;
@@ -62,39 +62,46 @@ static TCM_NAME(eg_piece_t) TCM_NAME(eg_piece)(const hyst_tcm_t *S, TCM_Y u)
     const TCM_Y x0 = YV(S->curv), far = TCM_NAME(eg_far)(S);
     const TCM_Y *rec;
     TCM_NAME(eg_piece_t) p;
-    unsigned i = m;
-    p.start = 0;
-    if (S->moving_end == 0u) { /* rising: intervals m, m + 1, ... */
+    p.c0 = 0;
+    p.c1 = 0;
+    p.c2 = tab[k + 1u + i];
+    if (S->moving_end == 0u) { /* rising */
+        p.start = i == m ? 0 : tab[i] - x0;
         p.end = i + 1u < k ? tab[i + 1u] - x0 : far;
-        while (i + 1u < k && u >= p.end) {
-            ++i;
-            p.start = p.end;
-            p.end = i + 1u < k ? tab[i + 1u] - x0 : far;
-        }
         if (i != m) {
             rec = tab + 2u * k + 1u + 4u * (i * (i - 1u) / 2u + m);
             p.c0 = NUM_MULADD(YV(S->v_scale), rec[1], rec[0]) + YV(S->secant);
             p.c1 = NUM_MULADD(rec[3], YV(S->v_scale), rec[2]);
         }
-    } else { /* falling: intervals m, m - 1, ... */
+    } else { /* falling */
+        p.start = i == m ? 0 : x0 - tab[i + 1u];
         p.end = i > 0u ? x0 - tab[i] : far;
-        while (i > 0u && u >= p.end) {
-            --i;
-            p.start = p.end;
-            p.end = i > 0u ? x0 - tab[i] : far;
-        }
         if (i != m) {
             rec = tab + 2u * k + 1u + 4u * (m * (m - 1u) / 2u + i);
             p.c0 = NUM_MULADD(YV(S->v_scale), rec[2], rec[0]) + YV(S->secant);
             p.c1 = NUM_MULADD(rec[3], YV(S->v_scale), rec[1]);
         }
     }
-    if (i == m) { /* the TP's own interval: q_m u^2 */
-        p.c0 = 0;
-        p.c1 = 0;
-    }
-    p.c2 = tab[k + 1u + i];
     return p;
+}
+
+/* The piece of the current branch that holds u (>= 0). */
+static TCM_NAME(eg_piece_t) TCM_NAME(eg_piece)(const hyst_tcm_t *S, TCM_Y u)
+{
+    const TCM_Y *tab = TCM_EG_TABLE_(S);
+    const unsigned k = S->curve->u.everett_grid.intervals;
+    const TCM_Y x0 = YV(S->curv);
+    unsigned i = (unsigned)S->cached_k;
+    if (S->moving_end == 0u) {
+        while (i + 1u < k && u >= tab[i + 1u] - x0) {
+            ++i;
+        }
+    } else {
+        while (i > 0u && u >= x0 - tab[i]) {
+            --i;
+        }
+    }
+    return TCM_NAME(eg_piece_at)(S, i);
 }
 
 /* G at u on the current branch, out of line (rare paths: merges, the
@@ -117,12 +124,11 @@ static TCM_NOINLINE void TCM_NAME(eg_cache)(hyst_tcm_t *S, TCM_Y u)
     YV(S->w_end) = p.end;
 }
 
-/* A new branch's numbers, from its TP (x_ctp), and its first piece. */
-static TCM_NOINLINE void TCM_NAME(eg_derive)(hyst_tcm_t *S)
+/* A new branch's numbers from its TP's drive x0 (the curve's units). */
+static void TCM_NAME(eg_derive_at)(hyst_tcm_t *S, TCM_Y x0)
 {
     const TCM_Y *tab = TCM_EG_TABLE_(S);
     const unsigned k = S->curve->u.everett_grid.intervals;
-    const TCM_Y x0 = TCM_NAME(eg_user)(S, YV(S->x_ctp));
     unsigned m = 0u;
     TCM_Y r;
     if (S->moving_end == 0u) { /* knot m <= b < knot m + 1 (the last interval holds hi) */
@@ -140,24 +146,22 @@ static TCM_NOINLINE void TCM_NAME(eg_derive)(hyst_tcm_t *S)
     S->cached_k = m;
     YV(S->v_scale) = r;
     YV(S->secant) = tab[k + 1u + m] * r * r;
+}
+
+/* A new branch's numbers, from its TP (x_ctp), and its first piece. */
+static TCM_NOINLINE void TCM_NAME(eg_derive)(hyst_tcm_t *S)
+{
+    TCM_NAME(eg_derive_at)(S, TCM_NAME(eg_user)(S, YV(S->x_ctp)));
     TCM_NAME(eg_cache)(S, 0);
 }
 
-/* The end of a sample on the current branch (how: as emit()): G from the
- * current piece (another's made current first), the output guarded against
- * the last one in the input's direction. */
-HYST_INLINE TCM_Y TCM_NAME(eg_end)(hyst_tcm_t *S, TCM_X x, const int how)
+/* A sample's end once G (its g_prev) is known, how as emit(): the output
+ * guarded against the last one in the input's direction (this kind's and
+ * its compensator's). */
+HYST_INLINE TCM_Y TCM_NAME(eg_guarded)(hyst_tcm_t *S, TCM_X x, const int how)
 {
     const int up = how == TCM_FAST ? S->moving_end == 0u : how == TCM_ROSE;
-    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
-    TCM_Y t, y;
-    if (!(u >= YV(S->blend[3]) && u < YV(S->w_end))) {
-        TCM_NAME(eg_cache)(S, u);
-    }
-    t = u - YV(S->blend[3]);
-    YV(S->g_prev) = NUM_MULADD(NUM_MULADD(YV(S->blend[2]), t, YV(S->blend[1])), t,
-                               YV(S->blend[0]));
-    y = TCM_NAME(on_branch)(S, YV(S->g_prev));
+    TCM_Y y = TCM_NAME(on_branch)(S, YV(S->g_prev));
     if (up ? y < YV(S->y_prev) : y > YV(S->y_prev)) {
         y = YV(S->y_prev);
     }
@@ -166,6 +170,21 @@ HYST_INLINE TCM_Y TCM_NAME(eg_end)(hyst_tcm_t *S, TCM_X x, const int how)
     }
     YV(S->y_prev) = y;
     return y;
+}
+
+/* The end of a sample on the current branch (how: as emit()): G from the
+ * current piece (another's made current first), then eg_guarded(). */
+HYST_INLINE TCM_Y TCM_NAME(eg_end)(hyst_tcm_t *S, TCM_X x, const int how)
+{
+    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
+    TCM_Y t;
+    if (!(u >= YV(S->blend[3]) && u < YV(S->w_end))) {
+        TCM_NAME(eg_cache)(S, u);
+    }
+    t = u - YV(S->blend[3]);
+    YV(S->g_prev) = NUM_MULADD(NUM_MULADD(YV(S->blend[2]), t, YV(S->blend[1])), t,
+                               YV(S->blend[0]));
+    return TCM_NAME(eg_guarded)(S, x, how);
 }
 
 /* The fast path's sample: its own copy, how a constant. */

@@ -394,6 +394,60 @@ static void test_identification_recovers_the_grid(void)
     TEST_ASSERT_TRUE(worst_noisy <= 0.01);
 }
 
+/* The compensator: the model driven by it follows the desired outputs
+ * (random walks with minor loops and wipe-outs) within rounding, the
+ * drive is monotone along each monotone run of desired outputs, block =
+ * step bit for bit; refusals. */
+static void test_compensator_inverts_the_model(void)
+{
+    int trial;
+    double worst = 0.0;
+    hyst_curve_t inv;
+    for (trial = 0; trial < 40; ++trial) {
+        const hyst_everett_grid_t g = ref_egrid_random(&rng, HYST_EVERETT_GRID_MAX_INTERVALS);
+        /* inside the compensator's domain, whose ends are rounded */
+        const double range = range_of(&g), lo = g.y_lo + 1e-6 * range, hi = g.y_lo + range * (1.0 - 1e-6);
+        double v = 0.5 * (lo + hi), d_prev = g.y_lo, x_prev = (double)g.knots[0];
+        int up = 1;
+        long k;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_grid_inverse(&inv, &curve));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl2, yl2, xr2, yr2, CAP));
+        for (k = 0; k < SAMPLES; ++k) {
+            xs[k] = (hyst_real_t)ref_everett_walk(&rng, &v, lo, hi);
+        }
+        for (k = 0; k < SAMPLES; ++k) {
+            const hyst_real_t x = hyst_step(&T, xs[k]);
+            const double y = (double)hyst_step(&S, x);
+            const double d = fabs(y - (double)xs[k]) / range;
+            worst = d > worst ? d : worst;
+            if ((double)xs[k] != d_prev) {
+                up = (double)xs[k] > d_prev;
+            }
+            TEST_ASSERT_TRUE(up ? (double)x >= x_prev : (double)x <= x_prev);
+            d_prev = (double)xs[k];
+            x_prev = (double)x;
+            ys[k] = x;
+        }
+        hyst_reset(&T);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_process(&T, xs, ys2, (size_t)SAMPLES));
+        TEST_ASSERT_EQUAL_MEMORY(ys, ys2, sizeof ys);
+    }
+    TEST_PRINTF("compensator: worst |model(drive) - desired| %g of the range", worst);
+    TEST_ASSERT_TRUE(worst <= 10.0 * AGREE);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_everett_grid_inverse(NULL, &curve));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_everett_grid_inverse(&curve2, &inv));
+#ifdef HYST_USE_DOUBLE
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_LAYOUT, hyst_f32_curve_everett_grid_inverse(&curve2, &curve));
+#else
+    {
+        hyst_poly_t f0 = {1u, 0.0, 1.0, {1.0, 0.0}};
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&curve2, &f0));
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_everett_grid_inverse(&inv, &curve2));
+    }
+#endif
+}
+
 #ifndef HYST_USE_DOUBLE
 /* The integer-code variant runs the same curve: bit for bit the f32
  * variant's outputs on codes. */
@@ -433,6 +487,7 @@ int main(void)
     RUN_TEST(test_bounded_memory_keeps_its_bound);
     RUN_TEST(test_deadband_bound_holds);
     RUN_TEST(test_identification_recovers_the_grid);
+    RUN_TEST(test_compensator_inverts_the_model);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_codes_run_the_grid_kind);
 #endif

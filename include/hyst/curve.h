@@ -62,7 +62,9 @@ typedef enum hyst_curve_kind {
     HYST_CURVE_EVERETT_INV_TABLE = 8,
     /** asymmetric: E of a Preisach density constant on the cells of a grid
      *  (hyst_everett_grid_t); branches piecewise quadratic */
-    HYST_CURVE_EVERETT_GRID = 9
+    HYST_CURVE_EVERETT_GRID = 9,
+    /** its compensator: each branch's quadratic pieces solved in closed form */
+    HYST_CURVE_EVERETT_GRID_INV = 10
 } hyst_curve_kind_t;
 
 /** Numbers of the table of an HYST_CURVE_INV_TABLE curve with @p intervals
@@ -241,7 +243,7 @@ typedef struct hyst_curve {
              *  unit of a, and the cell's density (src/kind_everett_grid.h) */
             hyst_cptr_t table;
             unsigned intervals; /**< K */
-        } everett_grid; /**< EVERETT_GRID */
+        } everett_grid; /**< EVERETT_GRID and EVERETT_GRID_INV */
         struct {
             hyst_cptr_t x;  /**< the curve's breakpoints (caller's array) */
             hyst_cptr_t y;  /**< its values (caller's array) */
@@ -369,8 +371,9 @@ hyst_status_t hyst_f64_curve_from_everett_(hyst_curve_t *curve, const hyst_evere
  * hyst_*_init_curve(). A sample on the fast path costs a compare and one
  * quadratic while it stays within a knot interval; a new interval's
  * coefficients come from the table in a few operations, and a branch's
- * from its turning point when it starts. No compensator yet:
- * hyst_curve_inverse() and hyst_curve_check() answer HYST_ERR_ARG.
+ * from its turning point when it starts. Its compensator:
+ * hyst_*_curve_everett_grid_inverse(); hyst_curve_inverse(), the tables'
+ * builders and hyst_curve_check() answer HYST_ERR_ARG for the kind.
  * @return HYST_OK or the first failed check; @p curve and @p table written
  *         only on success (the table is filled, then the curve).
  */
@@ -386,6 +389,32 @@ hyst_status_t hyst_f64_curve_from_everett_grid_(hyst_curve_t *curve, const hyst_
                                                 unsigned long layout);
 #define hyst_f64_curve_from_everett_grid(curve, g, table, table_len) \
     hyst_f64_curve_from_everett_grid_((curve), (g), (table), (table_len), HYST_LAYOUT)
+#endif
+/**@}*/
+
+/**
+ * @name The compensator of an asymmetric curve on a grid
+ * @brief Prepares the inverse of a grid curve (hyst_*_curve_from_everett_grid()):
+ *        its input the desired output on [y_lo, y_hi], its output the drive.
+ *
+ * The forward branch from a turning point is increasing and quadratic on
+ * each knot interval, so the compensator solves it in closed form on the
+ * piece whose output steps hold the desired one (a square root and a few
+ * operations); the current piece is kept, so a sample in it costs no
+ * search. Stored turning points are (desired output, drive); the drive is
+ * monotone along a branch (the engine's guard). Deadband and bounded memory
+ * state the drive range as their bound. The curve keeps the forward curve's
+ * table (which must outlive it) and runs on hyst_*_init_curve(). Its rounding
+ * (hyst_rounding_bound()) is the solve's, 16 eps of the drive span; where a
+ * branch starts flat (its slope 0 at its turning point) a rounding of the
+ * desired output is magnified in the drive.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT (a curve of another variant),
+ *         HYST_ERR_ARG (not a grid curve); @p inv written only on success.
+ */
+/**@{*/
+hyst_status_t hyst_f32_curve_everett_grid_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_everett_grid_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
 #endif
 /**@}*/
 
@@ -624,8 +653,9 @@ hyst_wide_t hyst_curve_inverse_error(const hyst_curve_t *curve);
  * A cheap structural check (layout, variant, kind, domain, pointers), not a
  * re-validation. It is what the functions that take any prepared curve
  * (hyst_curve_inverse(), the tables' builders and seals) require; a grid
- * curve (HYST_CURVE_EVERETT_GRID), which they have nothing for yet, is
- * HYST_ERR_ARG here and is checked by hyst_*_init_curve() alone.
+ * curve (HYST_CURVE_EVERETT_GRID, _INV), which they have nothing for, is
+ * HYST_ERR_ARG here and is checked by hyst_*_init_curve() alone (its
+ * compensator: hyst_*_curve_everett_grid_inverse()).
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT or HYST_ERR_ARG.
  */
 hyst_status_t hyst_curve_check(const hyst_curve_t *curve);
@@ -688,6 +718,7 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 #define hyst_seal_poly HYST_DEFAULT_NAME_(seal_poly)
 #define hyst_curve_from_everett HYST_DEFAULT_NAME_(curve_from_everett)
 #define hyst_curve_from_everett_grid HYST_DEFAULT_NAME_(curve_from_everett_grid)
+#define hyst_curve_everett_grid_inverse HYST_DEFAULT_NAME_(curve_everett_grid_inverse)
 #define hyst_curve_from_pwl HYST_DEFAULT_NAME_(curve_from_pwl)
 #define hyst_curve_eval HYST_DEFAULT_NAME_(curve_eval)
 #define hyst_curve_g HYST_DEFAULT_NAME_(curve_g)

@@ -3,8 +3,9 @@
 # Model files of kind everett_grid (the asymmetric kind on a grid) in `hyst`:
 #  - sim --model runs one: one cell of mass 8 on [0, 2] gives E(a, b) =
 #    8 ((a - b) / 2)^2, exact at these inputs;
-#  - malformed files are refused, naming line and field; inv and header
-#    --compensator refuse the kind (no compensator yet);
+#  - malformed files are refused, naming line and field; inv --model gives
+#    the drives of sim's outputs back; inv --intervals and header
+#    --compensator refuse the kind (no tabulated compensator);
 #  - header --model writes its hyst_everett_grid_t, which compiles (float and
 #    double) and which the library's constructor accepts;
 #  - fit --kind everett_grid on a record of a grid plant with minor loops
@@ -43,8 +44,13 @@ sed 's/^weights 8$/weights -8/' one.hyst > bad3.hyst
 refused bad3.hyst "model file bad3.hyst: "
 sed 's/^y_lo 1$/degree 2/' one.hyst > bad4.hyst
 refused bad4.hyst "bad4.hyst:5: field 1: degree is not a key of kind everett_grid"
-if "$tool" inv --model one.hyst x.txt > /dev/null 2> err.txt; then fail "inv accepted a grid"; fi
-grep -q "no compensator yet" err.txt || fail "inv: $(cat err.txt)"
+# inv --model: the compensator, in closed form: the drives of sim's outputs back
+"$tool" inv --model one.hyst y.txt > xi.txt || fail "inv of a grid model"
+[ "$(tr '\n' ' ' < xi.txt)" = "1 2 1.5 1.75 " ] || fail "inv: $(tr '\n' ' ' < xi.txt)"
+if "$tool" inv --model one.hyst --intervals 32 y.txt > /dev/null 2> err.txt; then
+    fail "inv --intervals accepted a grid"
+fi
+grep -q "no tabulated compensator" err.txt || fail "inv --intervals: $(cat err.txt)"
 
 "$tool" header --model one.hyst grid_model 2> /dev/null || fail "header"
 cat > use.c <<'EOF'

@@ -357,11 +357,17 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     }
     if (model_path != NULL && model.kind == CLI_MODEL_GRID) {
         static double grid_table[CLI_GRID_TABLE_LEN];
-        if (inverse || intervals > 0ul) {
-            return cli_fail(cmd, "%s: kind everett_grid has no compensator yet", model_path);
+        if (intervals > 0ul) {
+            return cli_fail(cmd, "%s: kind everett_grid has no tabulated compensator (it solves "
+                                 "each branch in closed form: inv --model without --intervals)",
+                            model_path);
         }
         if (cli_grid_curve(cmd, cli_file_name(model_path), &model, &everett, grid_table) != 0) {
             return 1;
+        }
+        if (inverse && hyst_f64_curve_everett_grid_inverse(&everett, &everett) != HYST_OK) {
+            return cli_fail(cmd, "%s: the model has no compensator (its outputs never rise)",
+                            model_path);
         }
     }
     if (model_path != NULL) {
@@ -423,7 +429,8 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     m.col2 = tp ? tcm_tp : NULL;
     m.digits = (int)digits;
     m.has_identified = 0;
-    if (inverse && model.kind == CLI_MODEL_EVERETT) { /* the inverse's domain: the outputs */
+    if (inverse && (model.kind == CLI_MODEL_EVERETT || model.kind == CLI_MODEL_GRID)) {
+        /* the inverse's domain: the outputs */
         m.clamp_what = "desired outputs";
         m.lo = intervals > 0ul ? tab.lo.f64 : everett.lo.f64;
         m.hi = intervals > 0ul ? tab.hi.f64 : everett.hi.f64;

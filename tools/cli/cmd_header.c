@@ -153,8 +153,8 @@ int cmd_header(int argc, char **argv)
             cli_grid_curve(a.cmd, cli_file_name(model), &m, &curve, grid_table) != 0) {
             free(text);
             return compensator || sealed
-                       ? cli_fail(a.cmd, "model file %s: kind everett_grid has no compensator "
-                                         "or sealed curve yet", cli_file_name(model))
+                       ? cli_fail(a.cmd, "model file %s: kind everett_grid has no tabulated "
+                                         "compensator or sealed curve", cli_file_name(model))
                        : 1;
         }
         over = cli_append(text, size, &len,
