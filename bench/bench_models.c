@@ -74,6 +74,21 @@ void bench_everett_codes(hyst_everett_t *e, double offset, unsigned degree)
     everett_of(e, &f0, degree);
 }
 
+void bench_grid_codes(hyst_everett_grid_t *g, double offset)
+{
+    static const double at[7] = {0.0, 0.1, 0.3, 0.45, 0.55, 0.8, 1.0};
+    unsigned i;
+    memset(g, 0, sizeof *g);
+    g->intervals = 6u;
+    for (i = 0u; i <= 6u; ++i) {
+        g->knots[i] = (hyst_wide_t)(offset + at[i] * (double)(BENCH_NU - 1u));
+    }
+    g->y_lo = 0;
+    for (i = 0u; i < HYST_EVERETT_GRID_CELLS(6u); ++i) {
+        g->weight[i] = (hyst_wide_t)(i == 9u ? 10.0 : 1.0 + 0.1 * (double)i);
+    }
+}
+
 void bench_everett_inverse_codes(hyst_everett_t *e, double offset)
 {
     hyst_poly_t f0;

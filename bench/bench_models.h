@@ -23,6 +23,10 @@ void bench_f0_codes(hyst_poly_t *f0, double offset);
  *  width term times t), of @p degree 3, or 4 with a w^4 term (linear in
  *  t still, as identified from major loops). */
 void bench_everett_codes(hyst_everett_t *e, double offset, unsigned degree);
+/* A grid branch function (hyst_everett_grid_t) on the same codes: 6 knot
+ * intervals, the inner knots uneven, every cell's mass positive, one cell
+ * ten times heavier (a near step). */
+void bench_grid_codes(hyst_everett_grid_t *g, double offset);
 /** The same asymmetry on bench_f0_inverse_codes()'s f0: the outputs span
  *  the codes, the asymmetric compensator's desired outputs. */
 void bench_everett_inverse_codes(hyst_everett_t *e, double offset);

@@ -110,7 +110,7 @@ typedef hyst_real_t bench_y_t;
 #endif
 #ifndef BENCH_EVERETT
 #define BENCH_EVERETT 0 /* 1: the asymmetric kind instead of the polynomial; 2: its compensator;
-                         * 3: its tabulated compensator */
+                         * 3: its tabulated compensator; 4: the asymmetric kind on a grid */
 #endif
 #ifndef BENCH_EVERETT_DEGREE
 #define BENCH_EVERETT_DEGREE 3u /* the asymmetric kind's degree (BENCH_EVERETT 1): 3 or 4 */
@@ -458,6 +458,12 @@ static void bench_tcm(void)
         if (st == HYST_OK) {
             curve = *from_flash;
         }
+#elif BENCH_EVERETT == 4 /* on a grid of 6 intervals over the codes, a near step inside */
+        static hyst_real_t grid_table[HYST_EVERETT_GRID_TABLE_LEN(6u)];
+        hyst_everett_grid_t g;
+        (void)e;
+        bench_grid_codes(&g, (double)BENCH_OFFSET);
+        st = hyst_curve_from_everett_grid(&curve, &g, grid_table, HYST_EVERETT_GRID_TABLE_LEN(6u));
 #else
         bench_everett_codes(&e, (double)BENCH_OFFSET, BENCH_EVERETT_DEGREE);
         st = hyst_curve_from_everett(&curve, &e);

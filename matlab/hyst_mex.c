@@ -1203,6 +1203,10 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     if (rc != 0) {
         mexErrMsgIdAndTxt("hyst:model_file", "%s", msg);
     }
+    if (m.kind == MODEL_TEXT_GRID) { /* read by `hyst sim --model`, not here yet */
+        mexErrMsgIdAndTxt("hyst:model_file",
+                          "kind everett_grid is not supported here yet (hyst sim --model runs it)");
+    }
     if (m.kind == MODEL_TEXT_EVERETT) {
         s = mxCreateStructMatrix(1, 1, 7, everett);
         set_field(s, "kind", mxCreateString("everett"));

@@ -400,10 +400,52 @@ NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
     return NUM_NAME(pwl_eval)(curve, curve->lo.NUM_F + d) - curve->y_lo.NUM_F;
 }
 
+/* E(lo + d, lo) of a grid curve (src/kind_everett_grid.h: the branch
+ * rising from lo, its TP in interval 0). */
+static NUM_T NUM_NAME(everett_grid_from_lo)(const hyst_curve_t *curve, NUM_T d)
+{
+    const NUM_T *tab = curve->u.everett_grid.table.NUM_F;
+    const unsigned k = curve->u.everett_grid.intervals;
+    const NUM_T x = tab[0] + d, r = tab[1] - tab[0]; /* tab[0]: lo, the inverse's too */
+    const NUM_T *rec;
+    NUM_T t;
+    unsigned i = 0u;
+    while (i + 1u < k && x >= tab[i + 1u]) {
+        ++i;
+    }
+    if (i == 0u) {
+        return tab[k + 1u] * d * d;
+    }
+    rec = tab + 2u * k + 1u + 4u * (i * (i - 1u) / 2u);
+    t = x - tab[i];
+    return NUM_MULADD(NUM_MULADD(tab[k + 1u + i], t, NUM_MULADD(rec[3], r, rec[2])), t,
+                      NUM_MULADD(r, rec[1], rec[0]) + tab[k + 1u] * r * r);
+}
+
 static NUM_T NUM_NAME(curve_g_impl)(const hyst_curve_t *curve, NUM_T d)
 {
     if (curve == NULL || curve->variant != (unsigned)NUM_VARIANT) {
         return 0;
+    }
+    if (curve->kind == (unsigned)HYST_CURVE_EVERETT_GRID) {
+        return NUM_NAME(everett_grid_from_lo)(curve, d);
+    }
+    if (curve->kind == (unsigned)HYST_CURVE_EVERETT_GRID_INV) { /* that branch's inverse, bisected */
+        const NUM_T *tab = curve->u.everett_grid.table.NUM_F;
+        NUM_T a = 0, b = tab[curve->u.everett_grid.intervals] - tab[0];
+        unsigned it;
+        for (it = 0u; it < 2u * (unsigned)(sizeof(NUM_T) * CHAR_BIT); ++it) {
+            const NUM_T m = (a + b) * NUM_C(0.5);
+            if (!(m > a && m < b)) {
+                break;
+            }
+            if (NUM_NAME(everett_grid_from_lo)(curve, m) < d) {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        return a;
     }
     return curve->kind == (unsigned)HYST_CURVE_POLY
                ? NUM_NAME(horner)(curve->u.poly.a, curve->u.poly.degree, d * curve->unit.NUM_F)

@@ -83,6 +83,10 @@ hyst_status_t hyst_check_init(const hyst_tcm_t *S, const hyst_curve_t *curve,
     if (st == HYST_OK) {
         st = hyst_curve_check(curve);
     }
+    if (st == HYST_ERR_ARG && (curve->kind == (unsigned)HYST_CURVE_EVERETT_GRID ||
+                               curve->kind == (unsigned)HYST_CURVE_EVERETT_GRID_INV)) {
+        st = hyst_everett_grid_check_(curve);
+    }
     if (st == HYST_OK && curve->variant != curve_variant) {
         st = HYST_ERR_LAYOUT;
     }

@@ -215,6 +215,13 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
 hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, unsigned variant,
                                   unsigned long layout);
 
+/* The structural check of a grid curve (HYST_CURVE_EVERETT_GRID, and its
+ * compensator's, _INV), which
+ * hyst_curve_check() refuses (the functions that take any prepared curve
+ * have nothing for it yet) and the inits accept (hyst_check_init()):
+ * HYST_OK or HYST_ERR_ARG. */
+hyst_status_t hyst_everett_grid_check_(const hyst_curve_t *curve);
+
 /* 1 if E increases in a and decreases in b on its whole triangle (the
  * check hyst_curve_everett_() makes, proved by Bernstein-Bezier
  * coefficients, subdivided where undecided). */

@@ -17,6 +17,8 @@
 #include "kind_everett.h"
 #include "kind_everett_inv.h"
 #include "kind_everett_inv_table.h"
+#include "kind_everett_grid.h"
+#include "kind_everett_grid_inv.h"
 
 /* The kind of a prepared curve (checked: hyst_curve_check()). */
 static const TCM_NAME(kind_t) *TCM_NAME(kind_of)(const hyst_curve_t *curve)
@@ -27,6 +29,8 @@ static const TCM_NAME(kind_t) *TCM_NAME(kind_of)(const hyst_curve_t *curve)
         return curve->u.everett.linear_x ? &TCM_NAME(kind_everett_lines) : &TCM_NAME(kind_everett);
     case HYST_CURVE_EVERETT_INV: return &TCM_NAME(kind_everett_inv);
     case HYST_CURVE_EVERETT_INV_TABLE: return &TCM_NAME(kind_everett_inv_table);
+    case HYST_CURVE_EVERETT_GRID: return &TCM_NAME(kind_everett_grid);
+    case HYST_CURVE_EVERETT_GRID_INV: return &TCM_NAME(kind_everett_grid_inv);
     default: return &TCM_NAME(kind_curve); /* PWL, PWL_INV, POLY_INV, INV_TABLE */
     }
 }

@@ -17,6 +17,7 @@
 #define NUM_C(v) (v##f)             /* a constant of the type */
 #define NUM_EPS ((float)FLT_EPSILON) /* its rounding unit */
 #define NUM_MULADD(a, b, c) HYST_F32_MULADD(a, b, c) /* src/hyst_util.h */
+#define NUM_SQRT(v) sqrtf(v)       /* <math.h>, where a template uses it */
 #if HYST_KEYED_SEARCH && FLT_RADIX == 2 && FLT_MANT_DIG == 24 && FLT_MAX_EXP == 128
 #define NUM_KEY_T int32_t           /* integer of the same size: keyed search */
 #define NUM_UKEY_T uint32_t

@@ -13,6 +13,7 @@
 #define NUM_VARIANT HYST_VARIANT_F64
 #define NUM_C(v) (v)
 #define NUM_EPS ((double)DBL_EPSILON)
+#define NUM_SQRT(v) sqrt(v) /* <math.h>, where a template uses it */
 #if HYST_KEYED_SEARCH && FLT_RADIX == 2 && DBL_MANT_DIG == 53 && DBL_MAX_EXP == 1024
 #define NUM_KEY_T int64_t
 #define NUM_UKEY_T uint64_t

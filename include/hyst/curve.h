@@ -59,7 +59,12 @@ typedef enum hyst_curve_kind {
     HYST_CURVE_EVERETT_INV = 7, /**< the asymmetric kind's inverse: Newton per branch, bracketed */
     /** the asymmetric kind's inverse tabulated: rows of cubic pieces over
      *  the branch's start, blended per branch (inline) */
-    HYST_CURVE_EVERETT_INV_TABLE = 8
+    HYST_CURVE_EVERETT_INV_TABLE = 8,
+    /** asymmetric: E of a Preisach density constant on the cells of a grid
+     *  (hyst_everett_grid_t); branches piecewise quadratic */
+    HYST_CURVE_EVERETT_GRID = 9,
+    /** its compensator: each branch's quadratic pieces solved in closed form */
+    HYST_CURVE_EVERETT_GRID_INV = 10
 } hyst_curve_kind_t;
 
 /** Numbers of the table of an HYST_CURVE_INV_TABLE curve with @p intervals
@@ -95,6 +100,40 @@ typedef struct hyst_everett {
     /** e[i - 1][j]: coefficient of w^i t^j; entries with i + j > degree must be 0 */
     hyst_wide_t e[HYST_EVERETT_MAX_DEGREE][HYST_EVERETT_MAX_DEGREE];
 } hyst_everett_t;
+
+/** Most knot intervals of a grid branch function (hyst_everett_grid_t). */
+#define HYST_EVERETT_GRID_MAX_INTERVALS 12
+/** Cells of a grid of @p k knot intervals: k (k + 1) / 2. */
+#define HYST_EVERETT_GRID_CELLS(k) ((k) * ((k) + 1u) / 2u)
+/** Numbers of the table an HYST_CURVE_EVERETT_GRID curve of @p k knot
+ *  intervals keeps (hyst_*_curve_from_everett_grid()): 2 k^2 + 1. */
+#define HYST_EVERETT_GRID_TABLE_LEN(k) (2u * (k) * (k) + 1u)
+
+/**
+ * @brief An asymmetric model whose branch function E is the Preisach
+ *        integral of a density constant on the cells of a grid
+ *        (docs/theory.md, "Asymmetric hysteresis"): loops with near-steps
+ *        and saturation (shape-memory alloys, magnetics) that a polynomial
+ *        E cannot follow.
+ *
+ * The knots lo = knots[0] < ... < knots[K] = hi cut the triangle
+ * lo <= b <= a <= hi into cells (i, j), j <= i: a in knot interval i, b in
+ * interval j (the cells i = j are triangles). weight[i (i + 1) / 2 + j] >= 0
+ * is the cell's mass: what the output gains when all of the cell switches
+ * up. E(a, b) is the mass of the part of the triangle b <= b' <= a' <= a,
+ * the density uniform in each cell; rising from a turning point (b, y_b)
+ * y = y_b + E(x, b), falling from (a, y_a) y = y_a - E(a, x), as for
+ * hyst_everett_t. Non-negative weights make every branch increasing, and
+ * every branch is piecewise quadratic in x with its knots at the grid's.
+ * y_hi = y_lo + the sum of the weights.
+ */
+typedef struct hyst_everett_grid {
+    unsigned intervals; /**< K, 1..HYST_EVERETT_GRID_MAX_INTERVALS */
+    hyst_wide_t knots[HYST_EVERETT_GRID_MAX_INTERVALS + 1]; /**< K + 1, strictly increasing */
+    hyst_wide_t y_lo;   /**< output at lo after reset */
+    /** weight[i (i + 1) / 2 + j], j <= i < K: cell (i, j)'s mass, >= 0 */
+    hyst_wide_t weight[HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS)];
+} hyst_everett_grid_t;
 
 /**
  * @brief Polynomial branch shape on u in [0, 1]:
@@ -195,6 +234,16 @@ typedef struct hyst_curve {
             unsigned drive_bits;
             uint_least32_t drive_code_lo;
         } inv_table; /**< INV_TABLE */
+        struct {
+            /** the caller's table, HYST_EVERETT_GRID_TABLE_LEN(intervals)
+             *  numbers: the knots (K + 1), half of each diagonal cell's
+             *  density (K), then for each cell (i, j), j < i, in the order
+             *  i = 1..K-1, j = 0..i-1, four numbers: E(knot i, knot j + 1),
+             *  the column's mass per unit of b between them, the row's per
+             *  unit of a, and the cell's density (src/kind_everett_grid.h) */
+            hyst_cptr_t table;
+            unsigned intervals; /**< K */
+        } everett_grid; /**< EVERETT_GRID and EVERETT_GRID_INV */
         struct {
             hyst_cptr_t x;  /**< the curve's breakpoints (caller's array) */
             hyst_cptr_t y;  /**< its values (caller's array) */
@@ -303,6 +352,69 @@ hyst_status_t hyst_f64_curve_from_everett_(hyst_curve_t *curve, const hyst_evere
                                            unsigned long layout);
 #define hyst_f64_curve_from_everett(curve, e) \
     hyst_f64_curve_from_everett_((curve), (e), HYST_LAYOUT)
+#endif
+/**@}*/
+
+/**
+ * @name Asymmetric curve on a grid
+ * @brief Validates a grid branch function (hyst_everett_grid_t) and
+ *        prepares its table.
+ *
+ * Checks: NULL pointers, intervals in 1..HYST_EVERETT_GRID_MAX_INTERVALS
+ * (HYST_ERR_DEGREE), finite and strictly increasing knots, also in the
+ * variant's type (HYST_ERR_BREAKPOINTS), a finite y_lo and finite weights
+ * (HYST_ERR_COEFF), weights >= 0 with a positive sum (HYST_ERR_NOT_MONOTONE),
+ * @p table_len >= HYST_EVERETT_GRID_TABLE_LEN(intervals) (HYST_ERR_NOSPACE),
+ * every tabulated number finite in the variant's type (HYST_ERR_COEFF) and
+ * the rounding bound (HYST_ERR_ILL_CONDITIONED). The curve keeps a pointer
+ * to @p table, which must outlive it, unchanged; it runs on
+ * hyst_*_init_curve(). A sample on the fast path costs a compare and one
+ * quadratic while it stays within a knot interval; a new interval's
+ * coefficients come from the table in a few operations, and a branch's
+ * from its turning point when it starts. Its compensator:
+ * hyst_*_curve_everett_grid_inverse(); hyst_curve_inverse(), the tables'
+ * builders and hyst_curve_check() answer HYST_ERR_ARG for the kind.
+ * @return HYST_OK or the first failed check; @p curve and @p table written
+ *         only on success (the table is filled, then the curve).
+ */
+/**@{*/
+hyst_status_t hyst_f32_curve_from_everett_grid_(hyst_curve_t *curve, const hyst_everett_grid_t *g,
+                                                float *table, size_t table_len,
+                                                unsigned long layout);
+#define hyst_f32_curve_from_everett_grid(curve, g, table, table_len) \
+    hyst_f32_curve_from_everett_grid_((curve), (g), (table), (table_len), HYST_LAYOUT)
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_from_everett_grid_(hyst_curve_t *curve, const hyst_everett_grid_t *g,
+                                                double *table, size_t table_len,
+                                                unsigned long layout);
+#define hyst_f64_curve_from_everett_grid(curve, g, table, table_len) \
+    hyst_f64_curve_from_everett_grid_((curve), (g), (table), (table_len), HYST_LAYOUT)
+#endif
+/**@}*/
+
+/**
+ * @name The compensator of an asymmetric curve on a grid
+ * @brief Prepares the inverse of a grid curve (hyst_*_curve_from_everett_grid()):
+ *        its input the desired output on [y_lo, y_hi], its output the drive.
+ *
+ * The forward branch from a turning point is increasing and quadratic on
+ * each knot interval, so the compensator solves it in closed form on the
+ * piece whose output steps hold the desired one (a square root and a few
+ * operations); the current piece is kept, so a sample in it costs no
+ * search. Stored turning points are (desired output, drive); the drive is
+ * monotone along a branch (the engine's guard). Deadband and bounded memory
+ * state the drive range as their bound. The curve keeps the forward curve's
+ * table (which must outlive it) and runs on hyst_*_init_curve(). Its rounding
+ * (hyst_rounding_bound()) is the solve's, 16 eps of the drive span; where a
+ * branch starts flat (its slope 0 at its turning point) a rounding of the
+ * desired output is magnified in the drive.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT (a curve of another variant),
+ *         HYST_ERR_ARG (not a grid curve); @p inv written only on success.
+ */
+/**@{*/
+hyst_status_t hyst_f32_curve_everett_grid_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_everett_grid_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
 #endif
 /**@}*/
 
@@ -540,7 +652,11 @@ hyst_wide_t hyst_curve_inverse_error(const hyst_curve_t *curve);
  * @brief Checks that a curve was prepared by a constructor of this library.
  *
  * A cheap structural check (layout, variant, kind, domain, pointers), not a
- * re-validation.
+ * re-validation. It is what the functions that take any prepared curve
+ * (hyst_curve_inverse(), the tables' builders and seals) require; a grid
+ * curve (HYST_CURVE_EVERETT_GRID, _INV), which they have nothing for, is
+ * HYST_ERR_ARG here and is checked by hyst_*_init_curve() alone (its
+ * compensator: hyst_*_curve_everett_grid_inverse()).
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT or HYST_ERR_ARG.
  */
 hyst_status_t hyst_curve_check(const hyst_curve_t *curve);
@@ -602,6 +718,8 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 #define hyst_curve_from_poly HYST_DEFAULT_NAME_(curve_from_poly)
 #define hyst_seal_poly HYST_DEFAULT_NAME_(seal_poly)
 #define hyst_curve_from_everett HYST_DEFAULT_NAME_(curve_from_everett)
+#define hyst_curve_from_everett_grid HYST_DEFAULT_NAME_(curve_from_everett_grid)
+#define hyst_curve_everett_grid_inverse HYST_DEFAULT_NAME_(curve_everett_grid_inverse)
 #define hyst_curve_from_pwl HYST_DEFAULT_NAME_(curve_from_pwl)
 #define hyst_curve_eval HYST_DEFAULT_NAME_(curve_eval)
 #define hyst_curve_g HYST_DEFAULT_NAME_(curve_g)

@@ -471,6 +471,94 @@ hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett
 hyst_status_t hyst_everett_fit_solve_unconstrained(const hyst_everett_fit_t *fit,
                                                    hyst_everett_t *e, hyst_wide_t *rms);
 
+/** Columns of a grid fit of @p k knot intervals: y_lo and each cell's mass. */
+#define HYST_EVERETT_GRID_FIT_COLS(k) (HYST_EVERETT_GRID_CELLS(k) + 1u)
+
+/**
+ * hyst_wide_t entries of the workspace of a grid fit (hyst_everett_grid_fit_init())
+ * of @p k knot intervals whose input record stacks at most @p capacity
+ * turning points: each one's input and regressors, the normal equations and
+ * the solver's (3 cols^2 + cols (capacity + 10) + capacity).
+ */
+#define HYST_EVERETT_GRID_FIT_WORK(k, capacity)                                               \
+    ((size_t)(capacity) * (HYST_EVERETT_GRID_FIT_COLS(k) + 1u) +                              \
+     3u * (size_t)HYST_EVERETT_GRID_FIT_COLS(k) * HYST_EVERETT_GRID_FIT_COLS(k) +             \
+     9u * (size_t)HYST_EVERETT_GRID_FIT_COLS(k))
+
+/**
+ * @brief A grid fit in progress (hyst_everett_grid_fit_init()): the cells'
+ *        masses of an E on a grid (hyst_everett_grid_t) by least squares
+ *        with every mass >= 0. Fields are private. As for the polynomial E
+ *        (hyst_everett_fit_t), the model's output is y_lo plus a signed sum
+ *        of E over the stacked turning points, linear in the masses: each
+ *        turning point keeps the regressors of its output.
+ */
+typedef struct hyst_everett_grid_fit {
+    unsigned intervals;  /**< K */
+    hyst_wide_t knots[HYST_EVERETT_GRID_MAX_INTERVALS + 1]; /**< the grid */
+    size_t cols;         /**< 1 + the cells */
+    hyst_wide_t *tp_x;   /**< caller's workspace: TP inputs (capacity) */
+    hyst_wide_t *tp_r;   /**< and their regressors (capacity x cols) */
+    hyst_wide_t *r_prev; /**< the last input's regressors (cols) */
+    hyst_wide_t *ata;    /**< normal equations (cols x cols, lower half) */
+    hyst_wide_t *aty;    /**< (cols) */
+    hyst_wide_t *solver; /**< the solver's (2 cols^2 + 7 cols) */
+    size_t capacity;     /**< TPs the workspace holds (A0 included) */
+    size_t n_tp;         /**< stacked, A0 included */
+    hyst_wide_t x_prev;  /**< last input */
+    hyst_wide_t y_ref;   /**< the first output: aty and yy take y - y_ref */
+    hyst_wide_t yy;      /**< sum of (y - y_ref)^2 */
+    size_t used;         /**< samples in the normal equations */
+} hyst_everett_grid_fit_t;
+
+/**
+ * @brief Starts a grid fit on the knots @p knots[0..intervals] (strictly
+ *        increasing; the domain their ends), the input record starting at
+ *        knots[0] (as an instance after reset).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_DEGREE (intervals outside
+ *         1..HYST_EVERETT_GRID_MAX_INTERVALS), HYST_ERR_BREAKPOINTS (knots not
+ *         finite or not increasing), HYST_ERR_NOSPACE (work_len below
+ *         HYST_EVERETT_GRID_FIT_WORK(intervals, 2)).
+ */
+hyst_status_t hyst_everett_grid_fit_init(hyst_everett_grid_fit_t *fit, const hyst_wide_t *knots,
+                                         unsigned intervals, hyst_wide_t *work, size_t work_len);
+
+/**
+ * @brief Moves the record's input to @p x and adds the row (regressors at x,
+ *        y) to the normal equations.
+ * @return as hyst_everett_fit_add(): HYST_OK; HYST_ERR_NONFINITE (y NaN or
+ *         infinite: the input still moves; x NaN: ignored); HYST_ERR_DOMAIN
+ *         (x outside the knots: ignored); HYST_ERR_NOSPACE (more turning
+ *         points than the workspace holds); HYST_ERR_NULL.
+ */
+hyst_status_t hyst_everett_grid_fit_add(hyst_everett_grid_fit_t *fit, hyst_wide_t x, hyst_wide_t y);
+
+/**
+ * @brief Solves for the masses (each >= 0: Lawson and Hanson's non-negative
+ *        least squares on the normal equations, y_lo free) into @p g (the
+ *        knots, y_lo, the masses) and the residual RMS over the samples used.
+ * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_SINGULAR (fewer than two samples);
+ *         HYST_ERR_NOT_MONOTONE (every mass 0: outputs that never rise;
+ *         @p g and @p rms hold the fit all the same).
+ */
+hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
+                                          hyst_everett_grid_t *g, hyst_wide_t *rms);
+
+/**
+ * @brief Knots for a grid fit where the output changes: the quantiles of
+ *        the inputs x[1..n) weighted by |y[k] - y[k - 1]| (the midpoint of
+ *        each step), on [lo, hi] = knots[0], knots[intervals]; no two closer
+ *        than (hi - lo) / (16 intervals). The weights are binned into the
+ *        caller's @p work (@p work_len >= 16 bins: the knots' resolution is
+ *        (hi - lo) / work_len).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_DEGREE, HYST_ERR_DOMAIN (lo, hi
+ *         not finite or lo >= hi), HYST_ERR_NOSPACE; uniform knots when the
+ *         output never moves.
+ */
+hyst_status_t hyst_everett_grid_knots(const hyst_wide_t *x, const hyst_wide_t *y, size_t n,
+                                      hyst_wide_t lo, hyst_wide_t hi, unsigned intervals,
+                                      hyst_wide_t *knots, hyst_wide_t *work, size_t work_len);
+
 #ifdef __cplusplus
 }
 #endif

@@ -124,11 +124,13 @@ grep -q '^# chosen by hold-out: degree 4, delay 4 (kind everett, t-degree 1, cre
 # everett.sh) and its creep option with p + 2 (weight and time constant); the fewest within 1 % of the
 # lowest, then the symmetric kind, then the lower error
 awk '/^# candidate .*hold-out rms/ {
-         ev = $3 == "everett"; d = ev ? $5 : $4; rms = ev ? $12 : $9; sub(/,$/, "", rms);
-         if (ev) { p = 1; for (i = 1; i <= d; i++) p += (d - i < $7 ? d - i : $7) + 1 } else p = d + 1;
-         n++; P[n] = p; K[n] = ev; R[n] = rms + 0; C[n] = / \(chosen\)$/;
+         ev = $3 == "everett"; gr = $3 == "everett_grid"; d = ev || gr ? $5 : $4;
+         rms = ev ? $12 : gr ? $10 : $9; sub(/,$/, "", rms);
+         if (ev) { p = 1; for (i = 1; i <= d; i++) p += (d - i < $7 ? d - i : $7) + 1 }
+         else if (gr) p = 1 + d * (d + 1) / 2 + d - 1; else p = d + 1;
+         n++; P[n] = p; K[n] = ev || gr; R[n] = rms + 0; C[n] = / \(chosen\)$/;
          if (match($0, /with creep tau [0-9.e+]+: [0-9.e+-]+/)) {
-             split(substr($0, RSTART, RLENGTH), f, " "); n++; P[n] = p + 2; K[n] = ev; R[n] = f[5] + 0;
+             split(substr($0, RSTART, RLENGTH), f, " "); n++; P[n] = p + 2; K[n] = ev || gr; R[n] = f[5] + 0;
              C[n] = /\(chosen, with creep\)$/ }
          if (best == "" || R[n - 1] < best) best = R[n - 1]; if (best == "" || R[n] < best) best = R[n] }
      END { for (i = 1; i <= n; i++) if (R[i] <= best * 1.01 && (w == "" || P[i] < P[w] ||

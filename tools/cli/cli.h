@@ -172,6 +172,11 @@ int cli_header_sealed(const char *cmd, const char *model, char *buf, size_t size
  * which checks that E is monotone on the triangle): 0, or 1 after a message
  * with the library's reason. */
 int cli_everett_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c);
+/* The same for a model of kind everett_grid, its table in table[0..CLI_GRID_TABLE_LEN). */
+#define CLI_MODEL_GRID MODEL_TEXT_GRID
+#define CLI_GRID_TABLE_LEN HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)
+int cli_grid_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c,
+                   double *table);
 
 
 /* ---- data files (cli_read.c): columns separated by blanks, ',' or ';' ---- */

@@ -329,7 +329,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     int tp = 0, kind, rc;
     unsigned long digits = 9ul;
     hyst_poly_t f0;
-    hyst_curve_t everett; /* a model of kind everett */
+    hyst_curve_t everett; /* a model of kind everett or everett_grid */
     /* inv --intervals / --rows: 0 when not given (the library's defaults with "default") */
     unsigned long intervals = 0ul, rows = 0ul;
     hyst_curve_t tab; /* the tabulated compensator's curve */
@@ -388,6 +388,21 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
             return cli_fail(cmd, "option --rows needs --intervals (the tabulated compensator)");
         }
     }
+    if (model_path != NULL && model.kind == CLI_MODEL_GRID) {
+        static double grid_table[CLI_GRID_TABLE_LEN];
+        if (intervals > 0ul) {
+            return cli_fail(cmd, "%s: kind everett_grid has no tabulated compensator (it solves "
+                                 "each branch in closed form: inv --model without --intervals)",
+                            model_path);
+        }
+        if (cli_grid_curve(cmd, cli_file_name(model_path), &model, &everett, grid_table) != 0) {
+            return 1;
+        }
+        if (inverse && hyst_f64_curve_everett_grid_inverse(&everett, &everett) != HYST_OK) {
+            return cli_fail(cmd, "%s: the model has no compensator (its outputs never rise)",
+                            model_path);
+        }
+    }
     if (model_path != NULL) {
         size_t i;
         if (model.kind == CLI_MODEL_EVERETT &&
@@ -414,7 +429,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
                           cmd, model_path, model.delay);
         }
     }
-    if (model.kind == CLI_MODEL_EVERETT) {
+    if (model.kind == CLI_MODEL_EVERETT || model.kind == CLI_MODEL_GRID) {
         memset(&f0, 0, sizeof f0);
         r.curve = &everett;
     } else if (make_poly(cmd, model_path, coeffs, ncoef, range, nrange, &f0) != 0) {
@@ -447,7 +462,8 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     m.col2 = tp ? tcm_tp : NULL;
     m.digits = (int)digits;
     m.has_identified = 0;
-    if (inverse && model.kind == CLI_MODEL_EVERETT) { /* the inverse's domain: the outputs */
+    if (inverse && (model.kind == CLI_MODEL_EVERETT || model.kind == CLI_MODEL_GRID)) {
+        /* the inverse's domain: the outputs */
         m.clamp_what = "desired outputs";
         m.lo = intervals > 0ul ? tab.lo.f64 : everett.lo.f64;
         m.hi = intervals > 0ul ? tab.hi.f64 : everett.hi.f64;

@@ -119,7 +119,7 @@ static const char help_output[] =
 
 /* --kind: not given (the automatic choice compares both TCM kinds), tcm
  * (the symmetric f0), everett (the asymmetric E) or pi. */
-enum { FIT_KIND_AUTO, FIT_KIND_TCM, FIT_KIND_EVERETT, FIT_KIND_PI };
+enum { FIT_KIND_AUTO, FIT_KIND_TCM, FIT_KIND_EVERETT, FIT_KIND_PI, FIT_KIND_GRID };
 
 typedef struct fit_opts {
     hyst_ident_config_t cfg;
@@ -209,10 +209,13 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             (void)snprintf(o->tcm_only, sizeof o->tcm_only, "%s", a.opt);
         }
         if (cli_is(&a, "--kind")) {
-            if (strcmp(v, "tcm") == 0 || strcmp(v, "everett") == 0 || strcmp(v, "pi") == 0) {
+            if (strcmp(v, "everett_grid") == 0) {
+                o->kind = FIT_KIND_GRID;
+            } else if (strcmp(v, "tcm") == 0 || strcmp(v, "everett") == 0 || strcmp(v, "pi") == 0) {
                 o->kind = v[0] == 't' ? FIT_KIND_TCM : v[0] == 'e' ? FIT_KIND_EVERETT : FIT_KIND_PI;
             } else {
-                return cli_fail(a.cmd, "option --kind: %s is neither tcm nor pi nor everett",
+                return cli_fail(a.cmd, "option --kind: %s is neither tcm nor pi nor everett nor "
+                                       "everett_grid",
                                 cli_quote(q, v));
             }
         } else if (cli_is(&a, "--operators") || cli_is(&a, "--compare-pi")) {
@@ -335,7 +338,12 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     if (o->kind == FIT_KIND_EVERETT && o->have_degree && !o->have_t_degree) {
         o->t_degree = o->cfg.degree - 1u; /* all of E's terms */
     }
-    o->final_kind = o->kind == FIT_KIND_EVERETT ? FIT_EVERETT : FIT_POLY;
+    if (o->kind == FIT_KIND_GRID && o->have_method) {
+        return cli_fail(a.cmd, "option --method does not apply to --kind everett_grid");
+    }
+    o->final_kind = o->kind == FIT_KIND_EVERETT ? FIT_EVERETT
+                    : o->kind == FIT_KIND_GRID  ? FIT_GRID
+                                                : FIT_POLY;
     if (o->kind != FIT_KIND_PI && o->operators != 0u) {
         return cli_fail(a.cmd, "option --operators needs --kind pi (or use --compare-pi N)");
     }
@@ -358,7 +366,8 @@ static int candidate_kinds(const fit_opts_t *o)
 {
     return o->kind == FIT_KIND_TCM       ? FIT_POLY
            : o->kind == FIT_KIND_EVERETT ? FIT_EVERETT
-                                         : FIT_POLY | FIT_EVERETT;
+           : o->kind == FIT_KIND_GRID    ? FIT_GRID
+                                         : FIT_POLY | FIT_EVERETT | FIT_GRID;
 }
 
 /* Why an E fit is singular: its terms are not determined by the turning
@@ -435,10 +444,13 @@ static void choose_creep(fit_opts_t *o, const cli_table_t *t)
     hyst_status_t st;
     fit_creep_t *creep = o->creep_tau >= 0 ? &o->creep : NULL;
     o->creep.tau = o->creep_tau > 0 ? o->creep_tau : 0.0;
-    if (o->final_kind == FIT_EVERETT) {
+    if (o->final_kind == FIT_EVERETT || o->final_kind == FIT_GRID) {
         fit_everett_result_t train;
-        o->holdout = fit_everett_holdout(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n, &st,
-                                         &train, creep, &o->last_third);
+        o->holdout = o->final_kind == FIT_GRID
+                         ? fit_grid_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train,
+                                            creep, &o->last_third)
+                         : fit_everett_holdout(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n,
+                                               &st, &train, creep, &o->last_third);
     } else {
         hyst_ident_result_t train;
         o->holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train, creep,
@@ -529,7 +541,9 @@ static void rank_others(fit_opts_t *o, const cli_table_t *t)
 /* A candidate's name in the printout into name[0..size). */
 static void candidate_name(const fit_candidate_t *c, char *name, size_t size)
 {
-    if (c->kind == FIT_EVERETT) {
+    if (c->kind == FIT_GRID) {
+        (void)snprintf(name, size, "everett_grid intervals %u", c->degree);
+    } else if (c->kind == FIT_EVERETT) {
         (void)snprintf(name, size, "everett degree %u t-degree %u%s", c->degree, c->t_degree,
                        c->widened ? " widened" : "");
     } else {
@@ -544,7 +558,10 @@ static double given_holdout(const fit_opts_t *o, const double *x, const cli_tabl
     hyst_ident_config_t cfg = o->cfg;
     hyst_status_t st;
     cfg.delay = d;
-    if (o->final_kind == FIT_EVERETT) {
+    if (o->final_kind == FIT_GRID) {
+        fit_everett_result_t train;
+        return fit_grid_holdout(&cfg, x, t->col[1], t->n, &st, &train, NULL, NULL);
+    } else if (o->final_kind == FIT_EVERETT) {
         fit_everett_result_t train;
         return fit_everett_holdout(&cfg, o->t_degree, x, t->col[1], t->n, &st, &train, NULL, NULL);
     } else {
@@ -617,15 +634,20 @@ static void print_candidates(const fit_opts_t *o)
                  "on the others, when each third holds %u samples or more; kinds compared: "
                  "%s)\n",
                  o->cfg.degree, (unsigned long)o->cfg.delay,
-                 o->final_kind == FIT_EVERETT ? "everett" : "poly", t_deg,
+                 o->final_kind == FIT_EVERETT ? "everett"
+                 : o->final_kind == FIT_GRID  ? "everett_grid"
+                                              : "poly",
+                 t_deg,
                  o->with_creep ? (o->with_rate ? "creep, rate, " : "creep, ")
                  : o->with_rate ? "rate, " : "",
                  fit_option_parameters(&candidates[best_candidate], o->with_creep) +
                      (o->with_rate ? FIT_RATE_PARAMETERS : 0u),
                  (unsigned)FIT_SPLIT_MIN,
-                 candidate_kinds(o) == (FIT_POLY | FIT_EVERETT) ? "poly, everett"
-                 : candidate_kinds(o) == FIT_EVERETT           ? "everett"
-                                                               : "poly");
+                 candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID)
+                     ? "poly, everett, everett_grid"
+                 : candidate_kinds(o) == FIT_EVERETT ? "everett"
+                 : candidate_kinds(o) == FIT_GRID    ? "everett_grid"
+                                                     : "poly");
     if (o->max_delay > FIT_MAX_DELAY) {
         (void)printf("# delays searched 0..%lu (1/%u of the drive's period): f0 of degree 3 "
                      "predicts best at %lu; every candidate at %lu..%lu\n",
@@ -698,7 +720,7 @@ static void print_candidates(const fit_opts_t *o)
 typedef struct fit_final {
     cli_model_t model;       /* what --save and --header write */
     hyst_ident_result_t r;   /* FIT_POLY */
-    fit_everett_result_t ev; /* FIT_EVERETT */
+    fit_everett_result_t ev; /* FIT_EVERETT, FIT_GRID */
     double rms, max_abs;     /* the residual printed on line 3 */
     int usable;              /* f0 increasing, or E accepted by the library */
 } fit_final_t;
@@ -751,13 +773,15 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
 {
     hyst_ident_t work;
     hyst_status_t st = HYST_ERR_ARG;
-    const int everett = o->final_kind == FIT_EVERETT;
+    const int everett = o->final_kind == FIT_EVERETT, grid = o->final_kind == FIT_GRID;
     unsigned k;
     memset(f, 0, sizeof *f);
     if (pairs > 0u) {
-        st = everett ? fit_everett_record(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n,
-                                          &f->ev)
-                     : hyst_ident_fit(&o->cfg, t->col[0], t->col[1], t->n, &work, &f->r);
+        st = grid      ? fit_grid_record(&o->cfg, o->cfg.degree, t->col[0], t->col[1], t->n,
+                                         &f->ev)
+             : everett ? fit_everett_record(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n,
+                                            &f->ev)
+                       : hyst_ident_fit(&o->cfg, t->col[0], t->col[1], t->n, &work, &f->r);
     }
     switch (st) {
     case HYST_OK:
@@ -777,7 +801,13 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
     default:
         return cli_fail("fit", "%s: %s", name, hyst_status_str(st));
     }
-    if (everett) {
+    if (grid) {
+        model_text_from_grid(&f->model, &f->ev.grid, (unsigned long)o->cfg.delay);
+        f->model.delay_fraction = o->delay_fraction;
+        f->usable = f->ev.curve_status == HYST_OK;
+        f->rms = f->usable ? f->ev.rms : f->ev.ls_rms;
+        f->max_abs = f->ev.max_abs;
+    } else if (everett) {
         double id_lo, id_hi;
         cli_model_from_everett(&f->model, &f->ev.e, (unsigned long)o->cfg.delay);
         f->model.delay_fraction = o->delay_fraction;
@@ -825,7 +855,15 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
     memset(&c, 0, sizeof c);
     c.tau = o->with_creep ? o->creep.tau : 0.0;
     c.rate_tau = o->with_rate ? o->rate.rate_tau : 0.0;
-    if (m->kind == CLI_MODEL_EVERETT) {
+    if (m->kind == CLI_MODEL_GRID) {
+        static double table[CLI_GRID_TABLE_LEN];
+        if (hyst_f64_curve_from_everett_grid(&curve, &f->ev.grid, table, CLI_GRID_TABLE_LEN) !=
+            HYST_OK) {
+            return 0; /* refused: reported as such, nothing written */
+        }
+        (void)fit_model_run_creep(NULL, &curve, t->col[0], t->col[1], t->n, o->cfg.skip,
+                                  o->cfg.delay, end, NULL, NULL, &c);
+    } else if (m->kind == CLI_MODEL_EVERETT) {
         if (hyst_f64_curve_from_everett(&curve, &f->ev.e) != HYST_OK) {
             return 0; /* refused: reported as such, nothing written */
         }
@@ -859,7 +897,7 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
         m->rate_tau = c.rate_tau;
         m->rate_weight = c.rate_weight;
     }
-    if (m->kind == CLI_MODEL_EVERETT) {
+    if (m->kind == CLI_MODEL_EVERETT || m->kind == CLI_MODEL_GRID) {
         m->y_lo += c.offset;
     } else {
         m->coeffs[m->ncoef - 1u] += c.offset;
@@ -879,7 +917,10 @@ static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, 
     const char *terms = o->with_creep ? (o->with_rate ? " with creep and rate" : " with creep")
                         : o->with_rate ? " with rate"
                                        : "";
-    if (o->final_kind == FIT_EVERETT) {
+    if (o->final_kind == FIT_GRID) {
+        (void)snprintf(tcm, sizeof tcm, "asymmetric TCM on a grid of %u intervals%s",
+                       o->cfg.degree, terms);
+    } else if (o->final_kind == FIT_EVERETT) {
         (void)snprintf(tcm, sizeof tcm, "asymmetric (everett) TCM degree %u t-degree %u%s",
                        o->cfg.degree, o->t_degree, terms);
     } else {
@@ -896,14 +937,30 @@ static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, 
 static void print_result(const fit_final_t *f, unsigned t_degree, size_t pairs)
 {
     const cli_model_t *m = &f->model;
-    const double *v = m->kind == CLI_MODEL_EVERETT ? m->terms : m->coeffs;
-    const size_t n = m->kind == CLI_MODEL_EVERETT ? m->nterms : m->ncoef;
+    const double *v = m->kind == CLI_MODEL_GRID      ? m->weights
+                      : m->kind == CLI_MODEL_EVERETT ? m->terms
+                                                     : m->coeffs;
+    const size_t n = m->kind == CLI_MODEL_GRID      ? m->nweights
+                     : m->kind == CLI_MODEL_EVERETT ? m->nterms
+                                                    : m->ncoef;
     size_t k;
     for (k = 0u; k < n; ++k) {
         (void)printf("%s%.15g", k ? "," : "", v[k]);
     }
     (void)printf("\n%.15g,%.15g\n%.6g,%.6g\n", m->lo, m->hi, f->rms, f->max_abs);
-    if (m->kind == CLI_MODEL_EVERETT) {
+    if (m->kind == CLI_MODEL_GRID) {
+        (void)printf("# residual rms,max above: the asymmetric model on a grid (kind "
+                     "everett_grid, %lu intervals, y_lo %.15g%s) run over the record, %lu of %lu "
+                     "samples used%s; line 1 the cells' masses (i, j), j <= i; knots",
+                     (unsigned long)m->nknots - 1ul, m->y_lo,
+                     m->ncreep > 0u ? ", with its creep term" : "", (unsigned long)f->ev.used,
+                     (unsigned long)pairs,
+                     f->usable ? "" : " (least-squares residual: the model cannot run)");
+        for (k = 0u; k < m->nknots; ++k) {
+            (void)printf(" %.9g", m->knots[k]);
+        }
+        (void)printf("\n");
+    } else if (m->kind == CLI_MODEL_EVERETT) {
         (void)printf("# residual rms,max above: the asymmetric model (kind everett, degree %u, "
                      "t-degree %u, y_lo %.15g%s) run over the record, %lu of %lu samples used%s; "
                      "line 1 E's terms e[i-1][j] of w^i t^j, i = 1..%u, j = 0..%u - i (0 above "
@@ -926,6 +983,17 @@ static void print_result(const fit_final_t *f, unsigned t_degree, size_t pairs)
 static void print_usable(const fit_final_t *f)
 {
     const cli_model_t *m = &f->model;
+    if (m->kind == CLI_MODEL_GRID) {
+        if (f->usable) {
+            (void)printf("# every cell's mass >= 0: E increases in a and decreases in b on "
+                         "[%.9g, %.9g]\n",
+                         m->lo, m->hi);
+        } else {
+            (void)printf("# the grid NOT accepted by the library: %s\n",
+                         hyst_status_str(f->ev.curve_status));
+        }
+        return;
+    }
     if (m->kind == CLI_MODEL_EVERETT) {
         if (f->usable) {
             (void)printf("# E increases in a and decreases in b on lo <= b <= a <= hi, "
@@ -971,7 +1039,18 @@ static size_t header_text(const fit_opts_t *o, const fit_final_t *f, char *buf, 
         }
     }
     source[j] = '\0';
-    if (m->kind == CLI_MODEL_EVERETT) {
+    if (m->kind == CLI_MODEL_GRID) {
+        over = cli_append(buf, size, &len,
+                          "/* Generated by 'hyst fit': asymmetric model on a grid identified\n"
+                          " * from %s (x column %lu, y column %lu, skip %lu, delay %lu),\n"
+                          " * %lu knot intervals, domain [%.9g, %.9g], y_lo %.9g; for\n"
+                          " * hyst_curve_from_everett_grid(), then hyst_init_curve().\n"
+                          " * Residual of the model over %lu samples:\n"
+                          " * RMS %.4g, max %.4g (output units). */\n",
+                          source, o->cols[0], o->cols[1], (unsigned long)o->cfg.skip,
+                          (unsigned long)o->cfg.delay, (unsigned long)m->nknots - 1ul, m->lo,
+                          m->hi, m->y_lo, (unsigned long)f->ev.used, f->rms, f->max_abs);
+    } else if (m->kind == CLI_MODEL_EVERETT) {
         over = cli_append(buf, size, &len,
                           "/* Generated by 'hyst fit': asymmetric model (branch function E)\n"
                           " * identified from %s (x column %lu, y column %lu, skip %lu,\n"
@@ -1009,7 +1088,7 @@ static int header_check(const fit_opts_t *o, cli_replace_t *h)
 /* The model file into its temporary file: 0, or 1 after a message. */
 static int model_write(const fit_final_t *f, cli_replace_t *ms)
 {
-    char text[2048];
+    char text[8192];
     const size_t len = cli_model_text(&f->model, text, sizeof text);
     if (len == 0u) {
         return cli_fail("fit", "%s: model text too long", ms->path);
@@ -1020,7 +1099,7 @@ static int model_write(const fit_final_t *f, cli_replace_t *ms)
 /* The header into its temporary file: 0, or 1 after a message. */
 static int header_write(const fit_opts_t *o, const fit_final_t *f, cli_replace_t *h)
 {
-    char text[8192];
+    char text[16384];
     const size_t len = header_text(o, f, text, sizeof text);
     if (len == 0u) {
         return cli_fail("fit", "%s: header text too long", h->path);
@@ -1194,7 +1273,7 @@ int cmd_fit(int argc, char **argv)
     if (!f.usable) {
         const char *nothing =
             o.header != NULL || o.save != NULL ? "; no header or model file written" : "";
-        if (o.final_kind == FIT_EVERETT) {
+        if (o.final_kind == FIT_EVERETT || o.final_kind == FIT_GRID) {
             (void)fprintf(stderr, "hyst fit: %s: the fitted E is refused by the library: %s: "
                                   "try another degree%s\n",
                           name, hyst_status_str(f.ev.curve_status), nothing);

@@ -129,6 +129,9 @@ size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const d
 unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree)
 {
     unsigned i, count = 1u; /* y_lo */
+    if (kind == FIT_GRID) { /* y_lo, the cells' masses, the inner knots */
+        return count + degree * (degree + 1u) / 2u + degree - 1u;
+    }
     if (kind != FIT_EVERETT) {
         return degree + 1u;
     }
@@ -292,7 +295,19 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
         }
         yf = masked;
     }
-    if (kind == FIT_EVERETT) {
+    if (kind == FIT_GRID) {
+        static double table[HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)];
+        *status = fit_grid_record(&part, cfg->degree, x, yf, count, ev);
+        if (*status == HYST_OK) {
+            *status = ev->curve_status;
+        }
+        if (*status != HYST_OK ||
+            hyst_f64_curve_from_everett_grid(&curve, &ev->grid, table,
+                                             sizeof table / sizeof table[0]) != HYST_OK) {
+            free(masked);
+            return NAN;
+        }
+    } else if (kind == FIT_EVERETT) {
         memset(ev, 0, sizeof *ev);
         if (widened) { /* about the inputs whose outputs are fitted */
             double lo, hi, lo2, hi2;
@@ -334,7 +349,7 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
         }
     }
     free(masked);
-    e = model_run(kind == FIT_EVERETT ? NULL : &f0, kind == FIT_EVERETT ? &curve : NULL, x, y, n,
+    e = model_run(kind != FIT_POLY ? NULL : &f0, kind != FIT_POLY ? &curve : NULL, x, y, n,
                   cfg->skip, cfg->delay, from, to, split != 0,
                   split != 0 && settle > from ? settle : from, &before, NULL, creep);
     return e;
@@ -408,6 +423,14 @@ double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, co
                    last_third);
 }
 
+double fit_grid_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
+                        size_t n, hyst_status_t *status, fit_everett_result_t *fit,
+                        fit_creep_t *creep, double *last_third)
+{
+    hyst_ident_result_t unused;
+    return holdout(cfg, FIT_GRID, 0u, 0, x, y, n, status, &unused, fit, creep, last_third);
+}
+
 double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const double *y,
                       size_t n, hyst_status_t *status, hyst_pi_fit_result_t *fit, double *r,
                       double *w)
@@ -451,10 +474,10 @@ void fit_score(const hyst_ident_config_t *base, const double *x, const double *y
     cfg.delay = c->delay;
     c->creep.tau = creep_tau >= 0 ? creep_tau : 0.0;
     c->creep.holdout_rms = NAN;
-    if (c->kind == FIT_EVERETT) {
+    if (c->kind == FIT_EVERETT || c->kind == FIT_GRID) {
         fit_everett_result_t ev;
         hyst_ident_result_t unused;
-        c->holdout_rms = holdout(&cfg, FIT_EVERETT, c->t_degree, c->widened, x, y, n, &c->status,
+        c->holdout_rms = holdout(&cfg, c->kind, c->t_degree, c->widened, x, y, n, &c->status,
                                  &unused, &ev, creep, &c->last_third_rms);
         c->fit_rms = ev.rms;
     } else {
@@ -540,6 +563,10 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
         }
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
             add(base, x, y, n, creep_tau, FIT_POLY, deg, 0u, d, 0, cand, max_cand, &count);
+        }
+        for (k = 0u; (kinds & FIT_GRID) != 0 && k < FIT_GRID_CANDIDATES; ++k) {
+            add(base, x, y, n, creep_tau, FIT_GRID, FIT_GRID_INTERVALS(k), 0u, d, 0, cand,
+                max_cand, &count);
         }
         for (deg = 1u; (kinds & FIT_EVERETT) != 0 && deg <= HYST_EVERETT_MAX_DEGREE; ++deg) {
             for (k = 0u; k < deg && (everett_degree == 0u || deg == everett_degree); ++k) {

@@ -65,11 +65,17 @@ void fit_widened_domain(double lo, double hi, double first, double *wide_lo, dou
 
 /* Kinds of model a candidate may be (see below); FIT_CANDIDATES_PER_DELAY:
  * the most fit_select() adds at one delay (everett ones also widened). */
-#define FIT_CANDIDATES_PER_DELAY (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES)
+#define FIT_CANDIDATES_PER_DELAY (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES + FIT_GRID_CANDIDATES)
 
 /* Kinds of model a candidate may be (a mask for fit_select()): the
  * symmetric TCM's polynomial f0 and the asymmetric kind's E. */
-enum { FIT_POLY = 1, FIT_EVERETT = 2 };
+enum { FIT_POLY = 1, FIT_EVERETT = 2, FIT_GRID = 4 };
+
+/* Grid candidates of each delay (FIT_GRID, the asymmetric kind on a grid):
+ * FIT_GRID_INTERVALS(i) knot intervals, i < FIT_GRID_CANDIDATES (the
+ * candidate's degree is its number of intervals). */
+#define FIT_GRID_CANDIDATES 2u
+#define FIT_GRID_INTERVALS(i) (4u + 2u * (i))
 
 /* fit_select(): every t-degree of each everett degree. */
 #define FIT_ANY_T_DEGREE 99u
@@ -147,6 +153,7 @@ typedef struct fit_candidate {
 /* The asymmetric kind fitted on a record (fit_everett.c). */
 typedef struct fit_everett_result {
     hyst_everett_t e;
+    hyst_everett_grid_t grid;   /* FIT_GRID: its grid (e unused) */
     hyst_status_t curve_status; /* hyst_f64_curve_from_everett() of e */
     double rms, max_abs;        /* the model run over the samples fitted (NaN if refused) */
     double ls_rms;              /* the least-squares residual (hyst_everett_fit_solve()) */
@@ -213,11 +220,22 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
                                  const double *x, const double *y, size_t n,
                                  fit_everett_result_t *res);
 
+/* The asymmetric kind on a grid of k knot intervals fitted as
+ * fit_everett_record() fits E (fit_grid.c): the knots where the output
+ * steps, refined; res->grid, its curve's status, the model's run. */
+hyst_status_t fit_grid_record(const hyst_ident_config_t *cfg, unsigned k, const double *x,
+                              const double *y, size_t n, fit_everett_result_t *res);
+
 /* fit_tcm_holdout() for the asymmetric kind: NaN if the fit failed or the
  * library refused E (*status says which). */
 double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
                            const double *y, size_t n, hyst_status_t *status,
                            fit_everett_result_t *fit, fit_creep_t *creep, double *last_third);
+
+/* The same for the asymmetric kind on a grid of cfg->degree intervals. */
+double fit_grid_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,
+                        size_t n, hyst_status_t *status, fit_everett_result_t *fit,
+                        fit_creep_t *creep, double *last_third);
 
 /* The same for the PI model of cfg (operators, skip, delay; the thresholds
  * uniform over the training part's inputs unless given): r, w its N

@@ -51,6 +51,16 @@ int cli_everett_curve(const char *cmd, const char *path, const cli_model_t *m, h
     return st == HYST_OK ? 0 : cli_fail(cmd, "model file %s: %s", path, hyst_status_str(st));
 }
 
+int cli_grid_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c,
+                   double *table)
+{
+    hyst_everett_grid_t g;
+    hyst_status_t st;
+    model_text_to_grid(m, &g);
+    st = hyst_f64_curve_from_everett_grid(c, &g, table, CLI_GRID_TABLE_LEN);
+    return st == HYST_OK ? 0 : cli_fail(cmd, "model file %s: %s", path, hyst_status_str(st));
+}
+
 int cli_header_model(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m)
 {
     return model_text_header_open(buf, size, len, name, m) |

@@ -15,8 +15,10 @@
 #define STR(x) STR_(x)
 
 /* Fields of a key's line: the key and its values, at most. */
-#define MAX_FIELDS \
+#define MAX_FIELDS_ \
     (HYST_MAX_DEGREE + 2 > HYST_EVERETT_TERMS + 1 ? HYST_MAX_DEGREE + 2 : HYST_EVERETT_TERMS + 1)
+#define GRID_CELLS_ HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS)
+#define MAX_FIELDS (MAX_FIELDS_ > GRID_CELLS_ + 1 ? MAX_FIELDS_ : GRID_CELLS_ + 1)
 
 /* The longest number read without an allocation (a 17-digit number needs
  * 24 characters). */
@@ -36,12 +38,14 @@ enum {
     K_IDENTIFIED,
     K_RATE_TAU,
     K_RATE_WEIGHT,
+    K_KNOTS,
+    K_WEIGHTS,
     K_COUNT
 };
 static const char *const keys[K_COUNT] = {"kind",      "lo",           "hi",        "coeffs",
                                           "delay",     "y_lo",         "degree",    "terms",
                                           "creep_tau", "creep_weight", "identified",
-                                          "rate_tau",  "rate_weight"};
+                                          "rate_tau",  "rate_weight",  "knots",     "weights"};
 
 /* A field of a line: its start and length. */
 typedef struct field {
@@ -219,6 +223,17 @@ static int check_count(const reader_t *r, unsigned long no, int k, size_t n)
     } else if (k == K_IDENTIFIED) {
         least = most = 3u;
         needs = "two values (LO HI)";
+    } else if (k == K_KNOTS) {
+        least = 3u;
+        most = HYST_EVERETT_GRID_MAX_INTERVALS + 2u;
+        (void)snprintf(text, sizeof text, "2 to %u numbers (lo ... hi)",
+                       (unsigned)HYST_EVERETT_GRID_MAX_INTERVALS + 1u);
+        needs = text;
+    } else if (k == K_WEIGHTS) {
+        most = GRID_CELLS_ + 1u;
+        (void)snprintf(text, sizeof text, "1 to %u numbers (the cells' masses)",
+                       (unsigned)GRID_CELLS_);
+        needs = text;
     }
     if (n < least) {
         return fail(r, "%s:%lu: field %lu is missing: %s needs %s", r->path, no,
@@ -282,6 +297,8 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
     case K_IDENTIFIED: *(i == 1u ? &m->id_lo : &m->id_hi) = v; break;
     case K_RATE_TAU: m->rate_tau = v; break;
     case K_RATE_WEIGHT: m->rate_weight = v; break;
+    case K_KNOTS: m->knots[i - 1u] = v; break;
+    case K_WEIGHTS: m->weights[i - 1u] = v; break;
     default: m->coeffs[i - 1u] = v; break;
     }
     return 0;
@@ -352,17 +369,20 @@ static int read_line(reader_t *r, unsigned long no, const char *s, size_t n, mod
         return fail(r, "%s:%lu: field 1: %s %s", r->path, no, model_text_quote(q, f[0].s, f[0].n),
                     k == K_COUNT ? "is not a key (kind, lo, hi, identified, delay, coeffs, "
                                    "creep_tau, creep_weight, rate_tau, rate_weight; kind "
-                                   "everett: y_lo, degree, terms)"
+                                   "everett: y_lo, degree, terms; kind everett_grid: y_lo, "
+                                   "knots, weights)"
                                  : "given twice");
     }
     r->seen[k] = no;
     if (k == K_KIND) {
         const int poly = count == 2u && f[1].n == 4u && memcmp(f[1].s, "poly", 4u) == 0;
         const int everett = count == 2u && f[1].n == 7u && memcmp(f[1].s, "everett", 7u) == 0;
-        if (!poly && !everett) {
-            return fail(r, "%s:%lu: field 2: kind must be 'poly' or 'everett'", r->path, no);
+        const int grid = count == 2u && f[1].n == 12u && memcmp(f[1].s, "everett_grid", 12u) == 0;
+        if (!poly && !everett && !grid) {
+            return fail(r, "%s:%lu: field 2: kind must be 'poly', 'everett' or 'everett_grid'",
+                        r->path, no);
         }
-        m->kind = everett ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
+        m->kind = grid ? MODEL_TEXT_GRID : everett ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
         return 0;
     }
     if (check_count(r, no, k, count) != 0) {
@@ -385,6 +405,10 @@ static int read_line(reader_t *r, unsigned long no, const char *s, size_t n, mod
         m->has_identified = 1;
     } else if (k == K_RATE_TAU) {
         m->has_rate = 1;
+    } else if (k == K_KNOTS) {
+        m->nknots = count - 1u;
+    } else if (k == K_WEIGHTS) {
+        m->nweights = count - 1u;
     }
     return 0;
 }
@@ -396,21 +420,30 @@ static int read_complete(const reader_t *r, const model_text_t *m)
 {
     static const int poly_keys[] = {K_KIND, K_LO, K_HI, K_COEFFS};
     static const int everett_keys[] = {K_KIND, K_LO, K_HI, K_Y_LO, K_DEGREE, K_TERMS};
+    static const int grid_keys[] = {K_KIND, K_LO, K_HI, K_Y_LO, K_KNOTS, K_WEIGHTS};
     const unsigned long *line = r->seen;
     const int everett = line[K_KIND] != 0ul && m->kind == MODEL_TEXT_EVERETT;
-    const int *need = everett ? everett_keys : poly_keys;
-    const size_t n_need = everett ? sizeof everett_keys / sizeof everett_keys[0]
-                                  : sizeof poly_keys / sizeof poly_keys[0];
+    const int grid = line[K_KIND] != 0ul && m->kind == MODEL_TEXT_GRID;
+    const int *need = grid ? grid_keys : everett ? everett_keys : poly_keys;
+    const size_t n_need = grid      ? sizeof grid_keys / sizeof grid_keys[0]
+                          : everett ? sizeof everett_keys / sizeof everett_keys[0]
+                                    : sizeof poly_keys / sizeof poly_keys[0];
     size_t i;
     int k;
     if (line[K_KIND] != 0ul) {
         for (k = 0; k < K_COUNT; ++k) {
-            const int of_everett = k == K_Y_LO || k == K_DEGREE || k == K_TERMS;
-            if (line[k] != 0ul && (everett ? k == K_COEFFS : of_everett)) {
+            const int of_everett = k == K_DEGREE || k == K_TERMS;
+            const int of_grid = k == K_KNOTS || k == K_WEIGHTS;
+            const int bad = grid      ? k == K_COEFFS || of_everett
+                            : everett ? k == K_COEFFS || of_grid
+                                      : k == K_Y_LO || of_everett || of_grid;
+            if (line[k] != 0ul && bad) {
                 return fail(r, "%s:%lu: field 1: %s is not a key of kind %s (%s)", r->path,
-                            line[k], keys[k], everett ? "everett" : "poly",
-                            everett ? "E is given by degree and terms"
-                                    : "y_lo, degree and terms are kind everett's");
+                            line[k], keys[k], grid ? "everett_grid" : everett ? "everett" : "poly",
+                            grid      ? "E is given by knots and weights"
+                            : everett ? "E is given by degree and terms"
+                                      : "y_lo, degree, terms, knots and weights are the "
+                                        "asymmetric kinds'");
             }
         }
     }
@@ -444,6 +477,19 @@ static int read_complete(const reader_t *r, const model_text_t *m)
                     line[K_TERMS], (unsigned long)(m->nterms < want ? m->nterms : want) + 2ul,
                     m->nterms < want ? " is missing" : ": one too many", (unsigned long)want,
                     m->degree);
+    }
+    if (grid && m->nweights != HYST_EVERETT_GRID_CELLS(m->nknots - 1u)) {
+        const size_t want = HYST_EVERETT_GRID_CELLS(m->nknots - 1u);
+        return fail(r, "%s:%lu: field %lu%s: weights needs %lu numbers for %lu knots", r->path,
+                    line[K_WEIGHTS],
+                    (unsigned long)(m->nweights < want ? m->nweights : want) + 2ul,
+                    m->nweights < want ? " is missing" : ": one too many", (unsigned long)want,
+                    (unsigned long)m->nknots);
+    }
+    if (grid && (m->knots[0] != m->lo || m->knots[m->nknots - 1u] != m->hi)) {
+        return fail(r, "%s:%lu: field %lu: knots must run from lo to hi (%.17g, %.17g)", r->path,
+                    line[K_KNOTS], m->knots[0] != m->lo ? 2ul : (unsigned long)m->nknots + 1ul,
+                    m->lo, m->hi);
     }
     if (!(m->lo < m->hi)) { /* blamed on the later line of the two */
         const int k_late = line[K_HI] > line[K_LO] ? K_HI : K_LO;
@@ -515,8 +561,18 @@ int model_text_check(const model_text_t *m, char *msg, size_t msg_size)
 {
     size_t i;
     const char *why = NULL;
-    if (m->kind != MODEL_TEXT_POLY && m->kind != MODEL_TEXT_EVERETT) {
-        why = "kind must be 'poly' or 'everett'";
+    if (m->kind != MODEL_TEXT_POLY && m->kind != MODEL_TEXT_EVERETT && m->kind != MODEL_TEXT_GRID) {
+        why = "kind must be 'poly', 'everett' or 'everett_grid'";
+    } else if (m->kind == MODEL_TEXT_GRID &&
+               (m->nknots < 2u || m->nknots > HYST_EVERETT_GRID_MAX_INTERVALS + 1u ||
+                !all_finite(m->knots, m->nknots) || m->knots[0] != m->lo ||
+                m->knots[m->nknots - 1u] != m->hi)) {
+        why = "knots needs 2 to " STR(HYST_EVERETT_GRID_MAX_INTERVALS) " + 1 finite numbers from "
+              "lo to hi";
+    } else if (m->kind == MODEL_TEXT_GRID &&
+               (m->nweights != HYST_EVERETT_GRID_CELLS(m->nknots - 1u) ||
+                !all_finite(m->weights, m->nweights) || !isfinite(m->y_lo))) {
+        why = "weights needs K (K + 1) / 2 finite numbers for K + 1 knots, y_lo a finite number";
     } else if (m->kind == MODEL_TEXT_POLY &&
                (m->ncoef < 2u || m->ncoef > HYST_MAX_DEGREE + 1u ||
                 !all_finite(m->coeffs, m->ncoef))) {
@@ -578,7 +634,20 @@ size_t model_text_write(const model_text_t *m, char *buf, size_t size)
 {
     size_t len = 0u;
     int over;
-    if (m->kind == MODEL_TEXT_EVERETT) {
+    if (m->kind == MODEL_TEXT_GRID) {
+        over = model_text_append(
+            buf, size, &len,
+            MODEL_TEXT_MAGIC "\n# hyst model: asymmetric, E(a, b) the mass of b <= b' <= a' <= a "
+                             "of a density constant on each cell of the knots' grid, weights "
+                             "the cells' masses (i, j), j <= i, in the order i = 0.., j = 0..i; "
+                             "the output %.17g samples after its input (docs/cli.md)\n"
+                             "kind everett_grid\nlo %.17g\nhi %.17g\ny_lo %.17g\ndelay %.17g\n"
+                             "knots",
+            model_text_delay(m), m->lo, m->hi, m->y_lo, model_text_delay(m));
+        over |= append_numbers(buf, size, &len, m->knots, m->nknots);
+        over |= model_text_append(buf, size, &len, "\nweights");
+        over |= append_numbers(buf, size, &len, m->weights, m->nweights);
+    } else if (m->kind == MODEL_TEXT_EVERETT) {
         over = model_text_append(
             buf, size, &len,
             MODEL_TEXT_MAGIC "\n# hyst model: asymmetric, E(a, b) = sum of e[i-1][j] w^i t^j, "
@@ -628,6 +697,39 @@ size_t model_text_write(const model_text_t *m, char *buf, size_t size)
 double model_text_delay(const model_text_t *m) { return (double)m->delay + m->delay_fraction; }
 
 size_t model_text_everett_terms(unsigned degree) { return (size_t)degree * (degree + 1u) / 2u; }
+
+void model_text_to_grid(const model_text_t *m, hyst_everett_grid_t *g)
+{
+    size_t i;
+    memset(g, 0, sizeof *g);
+    g->intervals = m->nknots >= 2u ? (unsigned)(m->nknots - 1u) : 0u;
+    for (i = 0u; i < m->nknots && i <= HYST_EVERETT_GRID_MAX_INTERVALS; ++i) {
+        g->knots[i] = (hyst_wide_t)m->knots[i];
+    }
+    for (i = 0u; i < m->nweights && i < GRID_CELLS_; ++i) {
+        g->weight[i] = (hyst_wide_t)m->weights[i];
+    }
+    g->y_lo = (hyst_wide_t)m->y_lo;
+}
+
+void model_text_from_grid(model_text_t *m, const hyst_everett_grid_t *g, unsigned long delay)
+{
+    size_t i;
+    memset(m, 0, sizeof *m);
+    m->kind = MODEL_TEXT_GRID;
+    m->nknots = (size_t)g->intervals + 1u;
+    for (i = 0u; i < m->nknots; ++i) {
+        m->knots[i] = (double)g->knots[i];
+    }
+    m->nweights = HYST_EVERETT_GRID_CELLS((size_t)g->intervals);
+    for (i = 0u; i < m->nweights; ++i) {
+        m->weights[i] = (double)g->weight[i];
+    }
+    m->lo = m->knots[0];
+    m->hi = m->knots[m->nknots - 1u];
+    m->y_lo = (double)g->y_lo;
+    m->delay = delay;
+}
 
 void model_text_to_everett(const model_text_t *m, hyst_everett_t *e)
 {
@@ -699,6 +801,30 @@ static int header_everett(char *buf, size_t size, size_t *len, const char *name,
             over |= append_real(buf, size, len, j ? ", " : "", (double)e.e[i][j]);
         }
         over |= model_text_append(buf, size, len, "}");
+    }
+    return over | model_text_append(buf, size, len, "}};\n");
+}
+
+/* The grid kind's initializer: the knots and every cell's mass written
+ * out, zeros beyond the grid's. */
+static int header_grid(char *buf, size_t size, size_t *len, const char *name,
+                       const model_text_t *m)
+{
+    size_t i;
+    int over = model_text_append(
+        buf, size, len,
+        "/* hyst_curve_from_everett_grid(&curve, &%s, table, HYST_EVERETT_GRID_TABLE_LEN(%luu)) */\n"
+        "static const hyst_everett_grid_t %s = {\n    %luu,\n    {",
+        name, (unsigned long)m->nknots - 1ul, name, (unsigned long)m->nknots - 1ul);
+    for (i = 0u; i < HYST_EVERETT_GRID_MAX_INTERVALS + 1u; ++i) {
+        over |= append_real(buf, size, len, i ? ", " : "", i < m->nknots ? m->knots[i] : 0.0);
+    }
+    over |= model_text_append(buf, size, len, "},\n   ");
+    over |= append_real(buf, size, len, " ", m->y_lo);
+    over |= model_text_append(buf, size, len, ",\n    {");
+    for (i = 0u; i < GRID_CELLS_; ++i) {
+        over |= append_real(buf, size, len, i == 0u ? "" : i % 4u == 0u ? ",\n     " : ", ",
+                            i < m->nweights ? m->weights[i] : 0.0);
     }
     return over | model_text_append(buf, size, len, "}};\n");
 }
@@ -776,6 +902,9 @@ int model_text_header_open(char *buf, size_t size, size_t *len, const char *name
     if (m->kind == MODEL_TEXT_EVERETT) {
         return over | header_everett(buf, size, len, name, m) |
                header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
+    }
+    if (m->kind == MODEL_TEXT_GRID) {
+        return over | header_grid(buf, size, len, name, m) | header_creep(buf, size, len, name, m);
     }
     over |= model_text_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,", name,
                               (unsigned)(m->ncoef - 1u));

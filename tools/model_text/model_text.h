@@ -29,10 +29,10 @@
 #define MODEL_TEXT_MSG_SIZE 1024u
 
 /* The kinds a model file holds (its key `kind`). */
-enum { MODEL_TEXT_POLY = 0, MODEL_TEXT_EVERETT = 1 };
+enum { MODEL_TEXT_POLY = 0, MODEL_TEXT_EVERETT = 1, MODEL_TEXT_GRID = 2 };
 
 typedef struct model_text {
-    int kind;                               /* MODEL_TEXT_POLY or MODEL_TEXT_EVERETT */
+    int kind;                               /* MODEL_TEXT_POLY, _EVERETT or _GRID */
     double coeffs[HYST_MAX_DEGREE + 1];     /* poly: c_n ... c_0, highest power first */
     size_t ncoef;                           /* poly: degree + 1 */
     double lo, hi;                          /* domain, lo < hi */
@@ -51,6 +51,12 @@ typedef struct model_text {
      * i = 1..degree, then j = 0..degree - i */
     double terms[HYST_EVERETT_TERMS];
     size_t nterms; /* everett: degree (degree + 1) / 2 */
+    /* everett_grid (hyst_everett_grid_t): its knots (the first lo, the last
+     * hi) and the cells' masses, weight[i (i + 1) / 2 + j]; y_lo above */
+    double knots[HYST_EVERETT_GRID_MAX_INTERVALS + 1];
+    size_t nknots;
+    double weights[HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS)];
+    size_t nweights;
     /* creep (hyst/creep.h), either kind: lags of the model's input with
      * these time constants (samples) and weights, added to its output; 0
      * terms: none */
@@ -85,9 +91,10 @@ int model_text_check(const model_text_t *m, char *msg, size_t msg_size);
 size_t model_text_write(const model_text_t *m, char *buf, size_t size);
 
 /* The firmware header of *m, declaring NAME (a C identifier): the include
- * guard, 'static const hyst_poly_t NAME = {...};' (kind poly) or 'static
+ * guard, 'static const hyst_poly_t NAME = {...};' (kind poly), 'static
  * const hyst_everett_t NAME = {...};' (kind everett, every row of e written
- * out), and with a creep term NAME_CREEP_TERMS, NAME_creep_tau and
+ * out) or 'static const hyst_everett_grid_t NAME = {...};' (kind
+ * everett_grid: hyst_*_curve_from_everett_grid() prepares it), and with a creep term NAME_CREEP_TERMS, NAME_creep_tau and
  * NAME_creep_weight; 17-digit literals in HYST_REAL_C(). Appended to
  * buf[*len..size); 1 when it did not fit. In two parts, the guard's opening
  * and the model, then the guard's end, so that a compensator's table may go
@@ -139,6 +146,10 @@ size_t model_text_everett_terms(unsigned degree);
 /* E's terms in the file's order <-> hyst_everett_t. */
 void model_text_to_everett(const model_text_t *m, hyst_everett_t *e);
 void model_text_from_everett(model_text_t *m, const hyst_everett_t *e, unsigned long delay);
+
+/* A grid model's E <-> hyst_everett_grid_t (delay 0, no creep). */
+void model_text_to_grid(const model_text_t *m, hyst_everett_grid_t *g);
+void model_text_from_grid(model_text_t *m, const hyst_everett_grid_t *g, unsigned long delay);
 
 /* Appends printf output to buf[*len..size); 1 when it did not fit. */
 int model_text_append(char *buf, size_t size, size_t *len, const char *fmt, ...)

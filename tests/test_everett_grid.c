@@ -1,0 +1,495 @@
+/* SPDX-License-Identifier: MIT */
+/* The asymmetric kind on a grid (curve.h, hyst_everett_grid_t): E of a
+ * density constant on the cells of a grid. Checked against a plain double
+ * reference (tests/support/ref_egrid.c: E cell by cell, Madelung's rules on
+ * a list of turning points) for random grids and random drives with minor
+ * loops and wipe-outs; the refusals; monotone branches; minor loops that
+ * close bit for bit; block call, snapshots, bounded memory, the deadband's
+ * bound and the code variant as for the polynomial asymmetric kind. */
+#include "ref_egrid.h"
+#include "support.h"
+#include "unity.h"
+
+#include <math.h>
+#include <string.h>
+
+#define CAP 256
+#define SAMPLES 4000L
+#define TABLE HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)
+
+static hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
+static hyst_real_t xl2[CAP], yl2[CAP], xr2[CAP], yr2[CAP];
+static hyst_real_t xs[SAMPLES], ys[SAMPLES], ys2[SAMPLES];
+static hyst_real_t table[TABLE], table2[TABLE];
+static unsigned char snap[HYST_SNAPSHOT_SIZE(CAP)];
+static hyst_curve_t curve, curve2;
+static hyst_t S, T;
+static rng_t rng;
+static ref_everett_t ref; /* 16 KB: off the stack */
+static hyst_everett_t dom;
+
+#ifdef HYST_USE_DOUBLE
+#define AGREE 1e-9 /* of the output range */
+#else
+#define AGREE 2e-5
+#endif
+
+void setUp(void) { rng_seed(&rng, 2718u); }
+void tearDown(void) {}
+
+static hyst_status_t init_g(hyst_t *I, hyst_curve_t *c, const hyst_everett_grid_t *g,
+                            hyst_real_t *tab, hyst_real_t *a, hyst_real_t *b, hyst_real_t *d,
+                            hyst_real_t *f, size_t cap)
+{
+    const hyst_status_t st = hyst_curve_from_everett_grid(c, g, tab, TABLE);
+    return st != HYST_OK ? st : hyst_init_curve(I, c, a, b, d, f, cap);
+}
+
+static double range_of(const hyst_everett_grid_t *g)
+{
+    return ref_egrid_e(g, g->knots[0], g->knots[0]) +
+           ref_egrid_e(g, g->knots[g->intervals], g->knots[0]);
+}
+
+static void walk(const hyst_everett_grid_t *g, hyst_real_t *x, long n)
+{
+    const double lo = g->knots[0], hi = g->knots[g->intervals];
+    double v = 0.5 * (lo + hi);
+    long k;
+    for (k = 0; k < n; ++k) {
+        x[k] = (hyst_real_t)ref_everett_walk(&rng, &v, lo, hi);
+        if (rng_below(&rng, 50u) == 0u) { /* now and then exactly on a knot */
+            x[k] = (hyst_real_t)g->knots[rng_below(&rng, g->intervals + 1u)];
+            v = (double)x[k];
+        }
+    }
+}
+
+static void test_random_grids_agree_with_the_reference(void)
+{
+    int trial;
+    double worst = 0.0;
+    for (trial = 0; trial < 60; ++trial) {
+        const hyst_everett_grid_t g = ref_egrid_random(&rng, HYST_EVERETT_GRID_MAX_INTERVALS);
+        const double range = range_of(&g);
+        double x_prev = g.knots[0], y_prev = g.y_lo;
+        int up = 1;
+        long k;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+        ref_egrid_init(&ref, &dom, &g);
+        walk(&g, xs, SAMPLES);
+        for (k = 0; k < SAMPLES; ++k) {
+            const double y = (double)hyst_step(&S, xs[k]);
+            const double d = fabs(y - ref_everett_step(&ref, (double)xs[k])) / range;
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_status(&S));
+            worst = d > worst ? d : worst;
+            /* monotone: the output never moves against the input */
+            if ((double)xs[k] != x_prev) {
+                up = (double)xs[k] > x_prev;
+            }
+            TEST_ASSERT_TRUE(up ? y >= y_prev : y <= y_prev);
+            x_prev = (double)xs[k];
+            y_prev = y;
+        }
+        TEST_ASSERT_EQUAL_UINT((unsigned)(ref.n - 1), (unsigned)hyst_tp_count(&S));
+    }
+    TEST_PRINTF("random grids: worst |y - y_ref| %g of the range", worst);
+    TEST_ASSERT_TRUE(worst <= AGREE);
+}
+
+/* One cell: E(a, b) = W ((a - b) / (hi - lo))^2, exactly at these inputs. */
+static void test_one_cell_is_a_parabola(void)
+{
+    hyst_everett_grid_t g;
+    memset(&g, 0, sizeof g);
+    g.intervals = 1u;
+    g.knots[0] = 0.0;
+    g.knots[1] = 2.0;
+    g.y_lo = 1.0;
+    g.weight[0] = 8.0;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_TRUE(hyst_step(&S, (hyst_real_t)1.0) == (hyst_real_t)3.0);   /* 1 + 8 / 4 */
+    TEST_ASSERT_TRUE(hyst_step(&S, (hyst_real_t)2.0) == (hyst_real_t)9.0);   /* 1 + 8 */
+    TEST_ASSERT_TRUE(hyst_step(&S, (hyst_real_t)1.5) == (hyst_real_t)8.5);   /* 9 - 8 / 16 */
+    TEST_ASSERT_TRUE(hyst_step(&S, (hyst_real_t)1.75) == (hyst_real_t)8.625); /* 8.5 + 8 / 64 */
+    TEST_ASSERT_TRUE(hyst_curve_eval(&curve, (hyst_real_t)0.5) == (hyst_real_t)1.5);
+}
+
+/* Rules 2 and 3: an excursion inside the current branch returns to the
+ * same output, and continues like a twin that stayed, bit for bit. */
+static void test_minor_loops_close_bit_for_bit(void)
+{
+    int trial;
+    for (trial = 0; trial < 100; ++trial) {
+        const hyst_everett_grid_t g = ref_egrid_random(&rng, 8u);
+        const double lo = g.knots[0], span = g.knots[g.intervals] - lo;
+        const hyst_real_t xa = (hyst_real_t)(lo + span * rng_range(&rng, 0.3, 0.6));
+        const hyst_real_t xb = (hyst_real_t)(lo + span * rng_range(&rng, 0.05, 0.29));
+        const hyst_real_t xc = (hyst_real_t)(lo + span * rng_range(&rng, 0.61, 0.95));
+        hyst_real_t ya, y1, y2;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, CAP));
+        (void)hyst_step(&S, (hyst_real_t)(lo + span * 0.02));
+        (void)hyst_step(&T, (hyst_real_t)(lo + span * 0.02));
+        ya = hyst_step(&S, xa);
+        (void)hyst_step(&T, xa);
+        (void)hyst_step(&S, xb); /* down and back up to xa: the loop closes */
+        TEST_ASSERT_TRUE(hyst_step(&S, xa) == ya);
+        y1 = hyst_step(&S, xc);
+        y2 = hyst_step(&T, xc);
+        TEST_ASSERT_EQUAL_MEMORY(&y2, &y1, sizeof y1);
+    }
+}
+
+static void test_bad_grids_are_refused(void)
+{
+    hyst_everett_grid_t g = ref_egrid_random(&rng, 6u), bad;
+    memset(&curve, 0x5a, sizeof curve);
+    curve2 = curve;
+    memset(table, 0, sizeof table);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_from_everett_grid(NULL, &g, table, TABLE));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_from_everett_grid(&curve, NULL, table, TABLE));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_from_everett_grid(&curve, &g, NULL, TABLE));
+    bad = g;
+    bad.intervals = 0u;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DEGREE, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+    bad.intervals = HYST_EVERETT_GRID_MAX_INTERVALS + 1u;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DEGREE, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+    bad = g;
+    bad.knots[1] = bad.knots[0];
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_BREAKPOINTS, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+    bad = g;
+    bad.knots[g.intervals] = NAN;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_BREAKPOINTS, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+    bad = g;
+    bad.knots[1] = bad.knots[0] + fabs(bad.knots[0]) * 1e-12 + 1e-300; /* equal as floats */
+#ifndef HYST_USE_DOUBLE
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_BREAKPOINTS, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+#endif
+    bad = g;
+    bad.weight[0] = INFINITY;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+    bad = g;
+    bad.y_lo = NAN;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+    bad = g;
+    bad.weight[HYST_EVERETT_GRID_CELLS(g.intervals) - 1u] = -1e-9;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_MONOTONE, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+    memset(bad.weight, 0, sizeof bad.weight);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_MONOTONE, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NOSPACE,
+                          hyst_curve_from_everett_grid(&curve, &g, table,
+                                                       HYST_EVERETT_GRID_TABLE_LEN(g.intervals) - 1u));
+    bad = g; /* finite in double, not in float: a density of 1e300 */
+    bad.weight[0] = 1e300;
+#ifndef HYST_USE_DOUBLE
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_curve_from_everett_grid(&curve, &bad, table, TABLE));
+#endif
+    /* nothing written by a refusal */
+    TEST_ASSERT_EQUAL_MEMORY(&curve2, &curve, sizeof curve);
+    memset(table2, 0, sizeof table2);
+    TEST_ASSERT_EQUAL_MEMORY(table2, table, sizeof table);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett_grid(&curve, &g, table,
+                                                                HYST_EVERETT_GRID_TABLE_LEN(g.intervals)));
+    /* the inits take it; the functions that take any prepared curve (the
+     * compensators, their tables) have nothing for it yet */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&S, &curve, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_check(&curve));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_inverse(&curve2, &curve));
+    curve.u.everett_grid.intervals = HYST_EVERETT_GRID_MAX_INTERVALS + 1u; /* not as prepared */
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_init_curve(&S, &curve, xl, yl, xr, yr, CAP));
+}
+
+/* The curve's own evaluation: the branch rising from lo. */
+static void test_curve_eval_is_the_major_rising_branch(void)
+{
+    int trial;
+    for (trial = 0; trial < 20; ++trial) {
+        const hyst_everett_grid_t g = ref_egrid_random(&rng, HYST_EVERETT_GRID_MAX_INTERVALS);
+        const double lo = g.knots[0], hi = g.knots[g.intervals], range = range_of(&g);
+        int i;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett_grid(&curve, &g, table, TABLE));
+        for (i = 0; i <= 100; ++i) {
+            const hyst_real_t x = (hyst_real_t)(lo + (hi - lo) * i / 100.0);
+            const double want = g.y_lo + ref_egrid_e(&g, (double)x, lo);
+            TEST_ASSERT_TRUE(fabs((double)hyst_curve_eval(&curve, x) - want) <= AGREE * range);
+        }
+        TEST_ASSERT_TRUE(fabs((double)hyst_curve_eval(&curve, (hyst_real_t)hi) - (g.y_lo + range)) <= AGREE * range);
+    }
+}
+
+static void test_block_and_snapshots(void)
+{
+    hyst_everett_grid_t g;
+    size_t len = 0u;
+    long k;
+    do {
+        g = ref_egrid_random(&rng, 8u);
+    } while (g.intervals < 2u);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, CAP));
+    walk(&g, xs, SAMPLES);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_process(&T, xs, ys2, (size_t)SAMPLES));
+    for (k = 0; k < SAMPLES; ++k) {
+        ys[k] = hyst_step(&S, xs[k]);
+    }
+    TEST_ASSERT_EQUAL_MEMORY(ys, ys2, sizeof ys);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&S, snap, sizeof snap, &len));
+    hyst_reset(&T);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&T, snap, len));
+    walk(&g, xs, 500L);
+    for (k = 0; k < 500; ++k) {
+        const hyst_real_t y1 = hyst_step(&S, xs[k]), y2 = hyst_step(&T, xs[k]);
+        TEST_ASSERT_EQUAL_MEMORY(&y1, &y2, sizeof y1);
+    }
+    { /* another grid of the same domain and range: the snapshot is not its */
+        const unsigned last = HYST_EVERETT_GRID_CELLS(g.intervals) - 1u;
+        unsigned i;
+        for (i = 0u; i <= last; ++i) { /* whole weights: the sums exact */
+            g.weight[i] = (double)(i % 3u + 1u);
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&S, snap, sizeof snap, &len));
+        g.weight[0] = 2.0;
+        g.weight[1] = 1.0;
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&T, &curve2, &g, table2, xl2, yl2, xr2, yr2, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&T, snap, len));
+}
+
+/* Bounded memory: a small capacity merges loops and states a bound that
+ * holds against the unbounded reference. */
+static void test_bounded_memory_keeps_its_bound(void)
+{
+    int trial, merged = 0;
+    double worst_ratio = 0.0;
+    for (trial = 0; trial < 30; ++trial) {
+        const hyst_everett_grid_t g = ref_egrid_random(&rng, 8u);
+        long k;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, 3u));
+        ref_egrid_init(&ref, &dom, &g);
+        walk(&g, xs, 2000L);
+        for (k = 0; k < 2000; ++k) {
+            const double y = (double)hyst_step(&S, xs[k]);
+            const double err = fabs(y - ref_everett_step(&ref, (double)xs[k]));
+            const double bound = (double)hyst_error_bound(&S) + 6.0 * (double)hyst_rounding_bound(&S);
+            merged += hyst_status(&S) == HYST_WARN_FULL;
+            if (err > 0.0) {
+                worst_ratio = err / bound > worst_ratio ? err / bound : worst_ratio;
+            }
+        }
+    }
+    TEST_PRINTF("bounded memory: %d merges; worst |y - y_ref| / bound %g", merged, worst_ratio);
+    TEST_ASSERT_TRUE(merged > 0);
+    TEST_ASSERT_TRUE(worst_ratio <= 1.0);
+}
+
+/* The deadband's stated bound (the window's densest cell times a quarter
+ * of its width squared) holds against the full model. */
+static void test_deadband_bound_holds(void)
+{
+    int trial;
+    double worst = 0.0, worst_ratio = 0.0;
+    for (trial = 0; trial < 200; ++trial) {
+        const hyst_everett_grid_t g = ref_egrid_random(&rng, 8u);
+        const double lo = g.knots[0], span = g.knots[g.intervals] - lo, range = range_of(&g);
+        const int rising = trial % 2 == 0;
+        const double tp = lo + span * (rising ? 0.35 : 0.65);
+        long k;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, CAP));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_set_deadband(&S, (hyst_real_t)(0.3 * span)));
+        for (k = 0; k < 80; ++k) {
+            double x, err, bound;
+            if (k == 0) {
+                x = lo + span * (rising ? 0.8 : 0.2);
+            } else if (k == 1) {
+                x = tp;
+            } else if (k == 79) {
+                x = rising ? lo + span : lo;
+            } else {
+                x = tp + (rising ? 1.0 : -1.0) * 0.29 * span * rng_unit(&rng);
+            }
+            err = fabs((double)hyst_step(&S, (hyst_real_t)x) - (double)hyst_step(&T, (hyst_real_t)x));
+            bound = (double)hyst_error_bound(&S);
+            if (err > bound + AGREE * range) {
+                TEST_PRINTF("grid %d, sample %ld: |y - y_full| = %g > bound %g", trial, k, err, bound);
+                TEST_FAIL_MESSAGE("deadband error beyond the stated bound");
+            }
+            worst = err / range > worst ? err / range : worst;
+            worst_ratio = bound > 0.0 && err / bound > worst_ratio ? err / bound : worst_ratio;
+        }
+        TEST_ASSERT_TRUE(hyst_error_bound(&S) == 0);
+    }
+    TEST_PRINTF("deadband: worst error %g of the range, at most %g of the bound", worst, worst_ratio);
+    TEST_ASSERT_TRUE(worst > 100.0 * AGREE);
+}
+
+/* Identification: a random grid's record (minor loops, wipe-outs), fitted
+ * on its own knots, gives a model whose outputs on a new drive are the
+ * grid's within rounding, every mass >= 0; on a noisy record the masses
+ * stay >= 0 and the model within a few noise levels; the knots from the
+ * record's output steps are strictly increasing on [lo, hi]. */
+#define FIT_SAMPLES 3000
+static hyst_wide_t fit_work[HYST_EVERETT_GRID_FIT_WORK(6u, 400u)];
+static hyst_wide_t fx[FIT_SAMPLES], fy[FIT_SAMPLES];
+
+static void test_identification_recovers_the_grid(void)
+{
+    int trial;
+    double worst = 0.0, worst_noisy = 0.0;
+    for (trial = 0; trial < 20; ++trial) {
+        const hyst_everett_grid_t g = ref_egrid_random(&rng, 6u);
+        const double range = range_of(&g), noise = trial % 2 == 0 ? 0.0 : 0.01 * range;
+        hyst_everett_grid_fit_t fit;
+        hyst_everett_grid_t got;
+        hyst_wide_t rms = 0, knots[HYST_EVERETT_GRID_MAX_INTERVALS + 1];
+        hyst_everett_t dom2;
+        static ref_everett_t truth;
+        long k;
+        unsigned i;
+        walk(&g, xs, FIT_SAMPLES);
+        ref_egrid_init(&ref, &dom, &g);
+        for (k = 0; k < FIT_SAMPLES; ++k) {
+            fx[k] = (hyst_wide_t)xs[k];
+            fy[k] = (hyst_wide_t)(ref_everett_step(&ref, (double)xs[k]) + noise * (rng_unit(&rng) - 0.5));
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_init(&fit, g.knots, g.intervals, fit_work,
+                                                                   sizeof fit_work / sizeof fit_work[0]));
+        for (k = 0; k < FIT_SAMPLES; ++k) {
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_add(&fit, fx[k], fy[k]));
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_solve(&fit, &got, &rms));
+        for (i = 0u; i < HYST_EVERETT_GRID_CELLS(g.intervals); ++i) {
+            TEST_ASSERT_TRUE(got.weight[i] >= 0);
+        }
+        /* the fitted model against the true one on a new drive */
+        ref_egrid_init(&truth, &dom2, &g);
+        walk(&g, xs, 1000L);
+        {
+            static double want[1000];
+            for (k = 0; k < 1000; ++k) {
+                want[k] = ref_everett_step(&truth, (double)xs[k]);
+            }
+            ref_egrid_init(&ref, &dom, &got);
+            for (k = 0; k < 1000; ++k) {
+                const double d = fabs(ref_everett_step(&ref, (double)xs[k]) - want[k]) / range;
+                if (noise > 0.0) {
+                    worst_noisy = d > worst_noisy ? d : worst_noisy;
+                } else {
+                    worst = d > worst ? d : worst;
+                }
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_knots(fx, fy, FIT_SAMPLES, g.knots[0],
+                                                               g.knots[g.intervals], g.intervals, knots,
+                                                               fit_work, 256u));
+        for (i = 1u; i <= g.intervals; ++i) {
+            TEST_ASSERT_TRUE(knots[i] > knots[i - 1u]);
+        }
+        TEST_ASSERT_TRUE(knots[0] == g.knots[0] && knots[g.intervals] == g.knots[g.intervals]);
+    }
+    TEST_PRINTF("grid fit: worst error %g of the range exact, %g with 1 %% noise", worst, worst_noisy);
+    TEST_ASSERT_TRUE(worst <= 1e-6);
+    TEST_ASSERT_TRUE(worst_noisy <= 0.01);
+}
+
+/* The compensator: the model driven by it follows the desired outputs
+ * (random walks with minor loops and wipe-outs) within rounding, the
+ * drive is monotone along each monotone run of desired outputs, block =
+ * step bit for bit; refusals. */
+static void test_compensator_inverts_the_model(void)
+{
+    int trial;
+    double worst = 0.0;
+    hyst_curve_t inv;
+    for (trial = 0; trial < 40; ++trial) {
+        const hyst_everett_grid_t g = ref_egrid_random(&rng, HYST_EVERETT_GRID_MAX_INTERVALS);
+        /* inside the compensator's domain, whose ends are rounded */
+        const double range = range_of(&g), lo = g.y_lo + 1e-6 * range, hi = g.y_lo + range * (1.0 - 1e-6);
+        double v = 0.5 * (lo + hi), d_prev = g.y_lo, x_prev = (double)g.knots[0];
+        int up = 1;
+        long k;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_grid_inverse(&inv, &curve));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl2, yl2, xr2, yr2, CAP));
+        for (k = 0; k < SAMPLES; ++k) {
+            xs[k] = (hyst_real_t)ref_everett_walk(&rng, &v, lo, hi);
+        }
+        for (k = 0; k < SAMPLES; ++k) {
+            const hyst_real_t x = hyst_step(&T, xs[k]);
+            const double y = (double)hyst_step(&S, x);
+            const double d = fabs(y - (double)xs[k]) / range;
+            worst = d > worst ? d : worst;
+            if ((double)xs[k] != d_prev) {
+                up = (double)xs[k] > d_prev;
+            }
+            TEST_ASSERT_TRUE(up ? (double)x >= x_prev : (double)x <= x_prev);
+            d_prev = (double)xs[k];
+            x_prev = (double)x;
+            ys[k] = x;
+        }
+        hyst_reset(&T);
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_process(&T, xs, ys2, (size_t)SAMPLES));
+        TEST_ASSERT_EQUAL_MEMORY(ys, ys2, sizeof ys);
+    }
+    TEST_PRINTF("compensator: worst |model(drive) - desired| %g of the range", worst);
+    TEST_ASSERT_TRUE(worst <= 10.0 * AGREE);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_everett_grid_inverse(NULL, &curve));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_everett_grid_inverse(&curve2, &inv));
+#ifdef HYST_USE_DOUBLE
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_LAYOUT, hyst_f32_curve_everett_grid_inverse(&curve2, &curve));
+#else
+    {
+        hyst_poly_t f0 = {1u, 0.0, 1.0, {1.0, 0.0}};
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&curve2, &f0));
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_ARG, hyst_curve_everett_grid_inverse(&inv, &curve2));
+    }
+#endif
+}
+
+#ifndef HYST_USE_DOUBLE
+/* The integer-code variant runs the same curve: bit for bit the f32
+ * variant's outputs on codes. */
+static void test_codes_run_the_grid_kind(void)
+{
+    static hyst_code_word_t cl[CAP], cr[CAP];
+    static float cyl[CAP], cyr[CAP];
+    hyst_everett_grid_t g = ref_egrid_random(&rng, 8u);
+    const double lo = g.knots[0], span = g.knots[g.intervals] - lo;
+    hyst_t C;
+    unsigned i;
+    long k;
+    for (i = 0u; i <= g.intervals; ++i) { /* onto codes 0..4095, knots on whole codes */
+        g.knots[i] = floor((g.knots[i] - lo) * 4095.0 / span + 0.5);
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init_curve(&C, &curve, 0u, 4095u, cl, cyl, cr, cyr, CAP));
+    walk(&g, xs, SAMPLES);
+    for (k = 0; k < SAMPLES; ++k) {
+        const unsigned long code = (unsigned long)floor((double)xs[k] + 0.5);
+        const float yc = hyst_code_step(&C, (uint_least32_t)code);
+        const float yf = hyst_step(&S, (hyst_real_t)code);
+        TEST_ASSERT_EQUAL_MEMORY(&yf, &yc, sizeof yf);
+    }
+}
+#endif
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_random_grids_agree_with_the_reference);
+    RUN_TEST(test_one_cell_is_a_parabola);
+    RUN_TEST(test_minor_loops_close_bit_for_bit);
+    RUN_TEST(test_bad_grids_are_refused);
+    RUN_TEST(test_curve_eval_is_the_major_rising_branch);
+    RUN_TEST(test_block_and_snapshots);
+    RUN_TEST(test_bounded_memory_keeps_its_bound);
+    RUN_TEST(test_deadband_bound_holds);
+    RUN_TEST(test_identification_recovers_the_grid);
+    RUN_TEST(test_compensator_inverts_the_model);
+#ifndef HYST_USE_DOUBLE
+    RUN_TEST(test_codes_run_the_grid_kind);
+#endif
+    return UNITY_END();
+}
