@@ -4,6 +4,7 @@
  * down from the newest TP, so a sample costs one comparison per TP it wipes
  * out; same results, since the arrays are sorted. Benchmarks only. */
 #include <float.h>
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -16,6 +17,7 @@
 #define NUM_VARIANT HYST_VARIANT_F32
 #define NUM_C(v) (v##f)
 #define NUM_EPS ((float)FLT_EPSILON)
+#define NUM_SQRT(v) sqrtf(v)
 
 static size_t bench_lin_scan_below(const float *xltp, size_t n, float x)
 {
