@@ -99,6 +99,39 @@ static hyst_wide_t branch_solve(const branch_t *b, hyst_wide_t v, hyst_wide_t gu
     return w;
 }
 
+/* Whether the w a solve would give for output step v (p(w) = v on [0, W],
+ * 0 below, W above) is within dw of w, without solving: p increases on
+ * [0, W], so that root is at least w - dw iff w - dw <= 0 or
+ * p(w - dw) <= v, at most w + dw iff w + dw >= W or p(w + dw) >= v. Each
+ * p within 8 units of rounding of its terms (Horner's scheme on the
+ * coefficients' magnitudes): a root beyond dw by at most that rounding
+ * over p' passes. */
+static int within_of_root(const branch_t *b, hyst_wide_t v, hyst_wide_t w, hyst_wide_t dw)
+{
+    const hyst_wide_t eps = (hyst_wide_t)8 * HYST_WIDE_EPS;
+    int side;
+    if (!(dw >= 0)) {
+        return 0;
+    }
+    for (side = 0; side < 2; ++side) {
+        const hyst_wide_t at = side ? w + dw : w - dw;
+        hyst_wide_t p, dp, m = 0;
+        unsigned i;
+        if (side ? at >= b->width : at <= 0) {
+            continue;
+        }
+        for (i = 0u; i < b->n; ++i) {
+            m = m * hyst_wide_abs(at) + hyst_wide_abs(b->q[i]);
+        }
+        p = branch_p(b, at, &dp);
+        m = eps * hyst_wide_abs(at) * m + 8 * HYST_WIDE_MIN; /* and subnormal numbers */
+        if (side ? !(p + m >= v) : !(p - m <= v)) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 /* V(a) = p_a(W(a)) as a polynomial in the anchor (degree n, highest power
  * first, into v[0..n]): each row's polynomial times W^(n - i), W = 1 - a
  * rising, a falling. */
@@ -253,15 +286,19 @@ static hyst_wide_t entry(const build_t *b, size_t i)
  * rounding of the sample's arithmetic in the variant's type: the weights
  * (5 eps of each product) and the blend's four products and three sums
  * (4 eps), the cubic's (4 eps of its terms), the anchor's and the index's
- * (2 eps of the span each). Returns the worst error (drive units). */
-static hyst_wide_t measure(const build_t *b, int fall, size_t r, size_t k)
+ * (2 eps of the span each). Returns the worst error (drive units).
+ * `anchors`: the first 1 .. BLEND_ANCHORS of them. `solve` 0: no solve off
+ * the interval, the point's error bounded instead (within_of_root()): 0 if
+ * within what the build accepts there, else HYST_WIDE_MAX. */
+static hyst_wide_t measure(const build_t *b, int fall, size_t r, size_t k, unsigned anchors,
+                           int solve)
 {
     hyst_wide_t worst = 0;
     unsigned ia, ip, i, q;
-    for (ia = 0u; ia < BLEND_ANCHORS; ++ia) {
+    for (ia = 0u; ia < anchors; ++ia) {
         const hyst_wide_t x = (hyst_wide_t)r + (hyst_wide_t)ia / (hyst_wide_t)BLEND_ANCHORS;
         const hyst_wide_t a = x / (hyst_wide_t)b->rows;
-        hyst_wide_t l[4], c[4], mag = 0, terms = 0, range, at_anchor = 0, end;
+        hyst_wide_t l[4], c[4], mag = 0, terms = 0, range, at_anchor = 0, end, allowance;
         branch_t br;
         const size_t base = blend_weights(b->rows, x, l);
         branch_at(&br, b->c, fall, a);
@@ -279,6 +316,7 @@ static hyst_wide_t measure(const build_t *b, int fall, size_t r, size_t k)
             continue;
         }
         end = br.width * b->span;
+        allowance = b->eps * (9 * mag + 4 * terms + 4 * b->span);
         for (ip = 0u; ip < BLEND_PROBES; ++ip) {
             const hyst_wide_t t = ((hyst_wide_t)ip + (hyst_wide_t)0.5) / (hyst_wide_t)BLEND_PROBES;
             hyst_wide_t d = c[0] + t * (c[1] + t * (c[2] + t * c[3])), dp, s, err;
@@ -291,11 +329,19 @@ static hyst_wide_t measure(const build_t *b, int fall, size_t r, size_t k)
                 err = hyst_wide_abs(c[0] + s * (c[1] + s * (c[2] + s * c[3])) - d);
             } else { /* off its interval: against the branch solved at this output step */
                 const hyst_wide_t v = ((hyst_wide_t)k + t) * range / (hyst_wide_t)b->intervals;
-                err = hyst_wide_abs(d - b->span * branch_solve(&br, v, d / b->span));
+                if (solve) {
+                    err = hyst_wide_abs(d - b->span * branch_solve(&br, v, d / b->span));
+                } else if (within_of_root(&br, v, d / b->span,
+                                          ((hyst_wide_t)HYST_INV_TABLE_TOL * b->span - allowance) /
+                                              b->span)) {
+                    err = 0;
+                } else {
+                    return HYST_WIDE_MAX;
+                }
             }
             at_anchor = err > at_anchor ? err : at_anchor;
         }
-        at_anchor += b->eps * (9 * mag + 4 * terms + 4 * b->span);
+        at_anchor += allowance;
         worst = at_anchor > worst ? at_anchor : worst;
     }
     return worst;
@@ -325,7 +371,7 @@ static void fill_direction(build_t *b, int fall)
     for (k = 0u; k < b->intervals; ++k) {
         hyst_wide_t worst = 0;
         for (r = 0u; r < b->rows; ++r) {
-            const hyst_wide_t err = measure(b, fall, r, k);
+            const hyst_wide_t err = measure(b, fall, r, k, BLEND_ANCHORS, 1);
             worst = err > worst ? err : worst;
         }
         if (!(worst <= (hyst_wide_t)HYST_INV_TABLE_TOL * b->span)) {
@@ -633,6 +679,12 @@ static int direction_matches(build_t *b, int fall)
         }
         if (!empty && !row_structured(b, &br, base, range)) {
             return 0;
+        }
+        for (k = 0u; r < b->rows && k < n; ++k) { /* empty row: anchors after it may not be */
+            if (entry(b, base + 4u * k) >= 0 &&
+                !(measure(b, fall, r, k, BLEND_ANCHORS, 0) <= (hyst_wide_t)HYST_INV_TABLE_TOL * b->span)) {
+                return 0;
+            }
         }
     }
     return 1;
