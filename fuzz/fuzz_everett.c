@@ -38,10 +38,26 @@
  * error), and its block call equals its steps; it runs from a copy of
  * its table taken as from flash (hyst_curve_table_seal(), then
  * hyst_curve_everett_inverse_table_const(): accepted, the build's curve),
- * and that copy with one bit flipped is refused (HYST_ERR_CRC). */
+ * and that copy with one bit flipped is refused (HYST_ERR_CRC); pieces
+ * changed and sealed again are refused (HYST_ERR_CURVE): a slope halved, a
+ * knot's slope halved on both sides, an interval the build solves given
+ * back the pieces its rows were built with. */
 
 #include "fuzz_common.h"
 #include "ref_everett.h"
+
+static const double table_tol = HYST_INV_TABLE_TOL;
+
+/* The library's build with a tolerance no interval misses: every interval
+ * keeps the cubic pieces its rows are given, none solved. */
+#undef HYST_INV_TABLE_TOL
+#define HYST_INV_TABLE_TOL 1e6
+#define hyst_curve_everett_inverse_table_ build_keeping_pieces
+#define hyst_curve_everett_inverse_table_const_ const_keeping_pieces
+#include "../src/hyst_everett_inv.c"
+#undef hyst_curve_everett_inverse_table_
+#undef hyst_curve_everett_inverse_table_const_
+#undef HYST_INV_TABLE_TOL
 
 #define MAX_CAP 40u
 #define MAX_SAMPLES 512u
@@ -140,7 +156,7 @@ static void check_tabulated(const hyst_curve_t *curve, const hyst_everett_t *e, 
     /* the pieces within the tolerance, plus the drive's last rounding (curve.h) */
     CHECK(hyst_curve_inverse_error(&tinv) >= 0 &&
           hyst_curve_inverse_error(&tinv) <=
-              HYST_INV_TABLE_TOL * (1.0 + 1e-6) +
+              table_tol * (1.0 + 1e-6) +
                   DBL_EPSILON * fmax(fabs(e->lo), fabs(e->hi)) / (e->hi - e->lo) * (1.0 + 1e-6));
     /* the same table as firmware takes it from flash: sealed, accepted, the
      * build's curve (the samples below run on it) */
@@ -210,6 +226,37 @@ static void check_tabulated(const hyst_curve_t *curve, const hyst_everett_t *e, 
         CHECK(hyst_curve_everett_inverse_table_const(&from_flash, curve, flash, rows, intervals,
                                                      &seal2) == HYST_ERR_CURVE);
         memcpy(&flash[4u * k - 4u], keep, sizeof keep);
+    }
+    /* an interval the build solves (the samples pick which) given back the
+     * pieces its rows were built with, and the table sealed again: refused */
+    if (tinv.u.everett.exact > 0u) {
+        static double kept[HYST_EVERETT_INV_TABLE_LEN(15u, 31u)];
+        const size_t row = HYST_INV_TABLE_LEN(intervals);
+        hyst_curve_t unsolved, resealed = tinv;
+        hyst_table_seal_t seal2;
+        hyst_ptr_t to;
+        size_t r, i, at = 0u, seen = 0u, pick = (n * 31u + flags) % tinv.u.everett.exact;
+        to.f64 = kept;
+        CHECK(build_keeping_pieces(&unsolved, curve, to, rows, intervals,
+                                   (unsigned)HYST_VARIANT_F64) == HYST_OK &&
+              unsolved.u.everett.exact == 0u);
+        for (k = 0u; k < 2u * intervals; ++k) { /* interval k % intervals of direction k / intervals */
+            at = (k / intervals) * (rows + 1u) * row + 4u * (k % intervals);
+            if (flash[at] < 0 && seen++ == pick) {
+                break;
+            }
+        }
+        CHECK(k < 2u * intervals);
+        for (r = 0u; r <= rows; ++r) {
+            for (i = 0u; i < 4u; ++i) {
+                flash[at + r * row + i] = kept[at + r * row + i];
+            }
+        }
+        --resealed.u.everett.exact;
+        CHECK(hyst_curve_table_seal(&resealed, &seal2) == HYST_OK);
+        CHECK(hyst_curve_everett_inverse_table_const(&from_flash, curve, flash, rows, intervals,
+                                                     &seal2) == HYST_ERR_CURVE);
+        memcpy(flash, table, len * sizeof table[0]);
     }
     /* one bit of one number flipped (the samples pick which): refused */
     k = (n * 2654435761u + flags) % len;

@@ -99,6 +99,39 @@ static hyst_wide_t branch_solve(const branch_t *b, hyst_wide_t v, hyst_wide_t gu
     return w;
 }
 
+/* Whether the w a solve would give for output step v (p(w) = v on [0, W],
+ * 0 below, W above) is within dw of w, without solving: p increases on
+ * [0, W], so that root is at least w - dw iff w - dw <= 0 or
+ * p(w - dw) <= v, at most w + dw iff w + dw >= W or p(w + dw) >= v. Each
+ * p within 8 units of rounding of its terms (Horner's scheme on the
+ * coefficients' magnitudes): a root beyond dw by at most that rounding
+ * over p' passes. */
+static int within_of_root(const branch_t *b, hyst_wide_t v, hyst_wide_t w, hyst_wide_t dw)
+{
+    const hyst_wide_t eps = (hyst_wide_t)8 * HYST_WIDE_EPS;
+    int side;
+    if (!(dw >= 0)) {
+        return 0;
+    }
+    for (side = 0; side < 2; ++side) {
+        const hyst_wide_t at = side ? w + dw : w - dw;
+        hyst_wide_t p, dp, m = 0;
+        unsigned i;
+        if (side ? at >= b->width : at <= 0) {
+            continue;
+        }
+        for (i = 0u; i < b->n; ++i) {
+            m = m * hyst_wide_abs(at) + hyst_wide_abs(b->q[i]);
+        }
+        p = branch_p(b, at, &dp);
+        m = eps * hyst_wide_abs(at) * m + 8 * HYST_WIDE_MIN; /* and subnormal numbers */
+        if (side ? !(p + m >= v) : !(p - m <= v)) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 /* V(a) = p_a(W(a)) as a polynomial in the anchor (degree n, highest power
  * first, into v[0..n]): each row's polynomial times W^(n - i), W = 1 - a
  * rising, a falling. */
@@ -139,7 +172,7 @@ typedef struct {
     hyst_ptr_t table; /* written by a build */
     hyst_cptr_t view; /* read: the same table */
     size_t rows, intervals, row_len;
-    hyst_wide_t span, eps, worst;
+    hyst_wide_t span, inv_span, eps, worst;
 } build_t;
 
 static size_t row_at(const build_t *b, int fall, size_t r)
@@ -241,9 +274,25 @@ static hyst_wide_t entry(const build_t *b, size_t i)
     return (hyst_wide_t)b->view.f32[i];
 }
 
-/* Interval k between rows r and r + 1 of a direction, against the exact
- * inverse, at BLEND_ANCHORS anchors (r itself among them) and BLEND_PROBES
- * points each: the blend's drive d at the point is taken as exact for its
+/* An anchor x (in rows) of a direction, as measure_at() takes it: its
+ * branch and V, the four rows blended there and their weights. */
+typedef struct {
+    branch_t br;
+    hyst_wide_t range, index_scale, l[4]; /* index_scale: intervals / V */
+    size_t base;
+} anchor_t;
+
+static void anchor_at(anchor_t *an, const build_t *b, int fall, hyst_wide_t x)
+{
+    const hyst_wide_t a = x / (hyst_wide_t)b->rows;
+    an->base = blend_weights(b->rows, x, an->l);
+    branch_at(&an->br, b->c, fall, a);
+    an->range = range_at(b, fall, a);
+    an->index_scale = (hyst_wide_t)b->intervals / an->range;
+}
+
+/* Interval k at an anchor, against the exact inverse, at BLEND_PROBES
+ * points: the blend's drive d at the point is taken as exact for its
  * output step v = p(d) (one evaluation of the branch, no solve), and the
  * blend evaluated where the sample would for v; where v falls outside the
  * interval (the blend is off by more than the interval is wide), the
@@ -253,50 +302,75 @@ static hyst_wide_t entry(const build_t *b, size_t i)
  * rounding of the sample's arithmetic in the variant's type: the weights
  * (5 eps of each product) and the blend's four products and three sums
  * (4 eps), the cubic's (4 eps of its terms), the anchor's and the index's
- * (2 eps of the span each). Returns the worst error (drive units). */
+ * (2 eps of the span each). Returns the worst error (drive units), 0 at an
+ * empty branch (no drive step). `solve` 0: no solve off the interval, the
+ * point's error bounded instead (within_of_root()): 0 if within what the
+ * build accepts, else HYST_WIDE_MAX. */
+static hyst_wide_t measure_at(const build_t *b, int fall, const anchor_t *an, size_t k, int solve)
+{
+    const branch_t *br = &an->br;
+    const hyst_wide_t range = an->range;
+    hyst_wide_t c[4], mag = 0, terms = 0, worst = 0, end, allowance;
+    unsigned ip, i, q;
+    for (i = 0u; i < 4u; ++i) {
+        c[i] = 0;
+        for (q = 0u; q < 4u; ++q) {
+            const hyst_wide_t e = entry(b, row_at(b, fall, an->base + q) + 4u * k + i);
+            c[i] += an->l[q] * e;
+            mag += hyst_wide_abs(an->l[q] * e);
+        }
+        terms += hyst_wide_abs(c[i]);
+    }
+    if (!(range > 0) || !(br->width > 0)) { /* an empty branch: no drive step */
+        return 0;
+    }
+    end = br->width * b->span;
+    allowance = b->eps * (9 * mag + 4 * terms + 4 * b->span);
+    for (ip = 0u; ip < BLEND_PROBES; ++ip) {
+        const hyst_wide_t t = ((hyst_wide_t)ip + (hyst_wide_t)0.5) / (hyst_wide_t)BLEND_PROBES;
+        hyst_wide_t d = c[0] + t * (c[1] + t * (c[2] + t * c[3])), dp, s, err;
+        d = d < 0 ? 0 : (d > end ? end : d);
+        s = branch_p(br, d * b->inv_span, &dp) * an->index_scale;
+        if (s >= (hyst_wide_t)k && s < (hyst_wide_t)k + 1) {
+            /* d is exact for its output, which falls in this interval: the
+             * blend where the sample evaluates it (one evaluation) */
+            s -= (hyst_wide_t)k;
+            err = hyst_wide_abs(c[0] + s * (c[1] + s * (c[2] + s * c[3])) - d);
+        } else { /* off its interval: against the branch solved at this output step */
+            const hyst_wide_t v = ((hyst_wide_t)k + t) * range / (hyst_wide_t)b->intervals;
+            if (solve) {
+                err = hyst_wide_abs(d - b->span * branch_solve(br, v, d / b->span));
+            } else if (within_of_root(br, v, d / b->span,
+                                      ((hyst_wide_t)HYST_INV_TABLE_TOL * b->span - allowance) /
+                                          b->span)) {
+                err = 0;
+            } else {
+                return HYST_WIDE_MAX;
+            }
+        }
+        worst = err > worst ? err : worst;
+    }
+    return worst + allowance;
+}
+
+/* The anchor ia (0 .. BLEND_ANCHORS - 1) between rows r and r + 1. */
+static hyst_wide_t anchor_x(size_t r, unsigned ia)
+{
+    return (hyst_wide_t)r + (hyst_wide_t)ia / (hyst_wide_t)BLEND_ANCHORS;
+}
+
+/* Interval k between rows r and r + 1 of a direction, at BLEND_ANCHORS
+ * anchors, r itself among them: the worst error (measure_at()). */
 static hyst_wide_t measure(const build_t *b, int fall, size_t r, size_t k)
 {
     hyst_wide_t worst = 0;
-    unsigned ia, ip, i, q;
+    unsigned ia;
     for (ia = 0u; ia < BLEND_ANCHORS; ++ia) {
-        const hyst_wide_t x = (hyst_wide_t)r + (hyst_wide_t)ia / (hyst_wide_t)BLEND_ANCHORS;
-        const hyst_wide_t a = x / (hyst_wide_t)b->rows;
-        hyst_wide_t l[4], c[4], mag = 0, terms = 0, range, at_anchor = 0, end;
-        branch_t br;
-        const size_t base = blend_weights(b->rows, x, l);
-        branch_at(&br, b->c, fall, a);
-        range = range_at(b, fall, a);
-        for (i = 0u; i < 4u; ++i) {
-            c[i] = 0;
-            for (q = 0u; q < 4u; ++q) {
-                const hyst_wide_t e = entry(b, row_at(b, fall, base + q) + 4u * k + i);
-                c[i] += l[q] * e;
-                mag += hyst_wide_abs(l[q] * e);
-            }
-            terms += hyst_wide_abs(c[i]);
-        }
-        if (!(range > 0) || !(br.width > 0)) { /* an empty branch: no drive step */
-            continue;
-        }
-        end = br.width * b->span;
-        for (ip = 0u; ip < BLEND_PROBES; ++ip) {
-            const hyst_wide_t t = ((hyst_wide_t)ip + (hyst_wide_t)0.5) / (hyst_wide_t)BLEND_PROBES;
-            hyst_wide_t d = c[0] + t * (c[1] + t * (c[2] + t * c[3])), dp, s, err;
-            d = d < 0 ? 0 : (d > end ? end : d);
-            s = branch_p(&br, d / b->span, &dp) * (hyst_wide_t)b->intervals / range;
-            if (s >= (hyst_wide_t)k && s < (hyst_wide_t)k + 1) {
-                /* d is exact for its output, which falls in this interval: the
-                 * blend where the sample evaluates it (one evaluation) */
-                s -= (hyst_wide_t)k;
-                err = hyst_wide_abs(c[0] + s * (c[1] + s * (c[2] + s * c[3])) - d);
-            } else { /* off its interval: against the branch solved at this output step */
-                const hyst_wide_t v = ((hyst_wide_t)k + t) * range / (hyst_wide_t)b->intervals;
-                err = hyst_wide_abs(d - b->span * branch_solve(&br, v, d / b->span));
-            }
-            at_anchor = err > at_anchor ? err : at_anchor;
-        }
-        at_anchor += b->eps * (9 * mag + 4 * terms + 4 * b->span);
-        worst = at_anchor > worst ? at_anchor : worst;
+        anchor_t an;
+        hyst_wide_t err;
+        anchor_at(&an, b, fall, anchor_x(r, ia));
+        err = measure_at(b, fall, &an, k, 1);
+        worst = err > worst ? err : worst;
     }
     return worst;
 }
@@ -409,6 +483,7 @@ static hyst_status_t prepare(hyst_curve_t *out, build_t *b, const hyst_curve_t *
     b->intervals = intervals;
     b->row_len = HYST_INV_TABLE_LEN(intervals);
     b->span = hyst_num_get(&out->u.everett.span, variant);
+    b->inv_span = 1 / b->span;
     b->eps = hyst_real_eps(variant);
     return HYST_OK;
 }
@@ -588,6 +663,33 @@ static int row_structured(const build_t *b, const branch_t *br, size_t base, hys
     return 1;
 }
 
+/* Every interval held as pieces measured as the build measures it, at
+ * the same anchors and points (measure_at(), no solve): within
+ * HYST_INV_TABLE_TOL of the drive range, as the build keeps an interval
+ * only then. No fewer points will do: the build solves an interval where
+ * any of them misses, and one point misses alone (most solved intervals of
+ * random E miss only between rows). Each anchor derived once for all its
+ * intervals. */
+static int pieces_measured(const build_t *b, int fall)
+{
+    const hyst_wide_t tol = (hyst_wide_t)HYST_INV_TABLE_TOL * b->span;
+    size_t r, k;
+    unsigned ia;
+    for (r = 0u; r < b->rows; ++r) {
+        for (ia = 0u; ia < BLEND_ANCHORS; ++ia) {
+            anchor_t an;
+            anchor_at(&an, b, fall, anchor_x(r, ia));
+            for (k = 0u; k < b->intervals; ++k) {
+                if (entry(b, row_at(b, fall, 0u) + 4u * k) >= 0 && /* not solved */
+                    !(measure_at(b, fall, &an, k, 0) <= tol)) {
+                    return 0;
+                }
+            }
+        }
+    }
+    return 1;
+}
+
 /* A direction of a table given ready-made, against the model: in every
  * row, numbers finite and knots rising to the end (the drive steps the
  * build stores: hyst_table_shape_ok_()); an interval solved instead in one
@@ -635,7 +737,7 @@ static int direction_matches(build_t *b, int fall)
             return 0;
         }
     }
-    return 1;
+    return pieces_measured(b, fall);
 }
 
 hyst_status_t hyst_curve_everett_inverse_table_const_(hyst_curve_t *inv, const hyst_curve_t *fwd,

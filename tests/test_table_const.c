@@ -13,6 +13,18 @@
 #include <math.h>
 #include <string.h>
 
+/* The library's build with a tolerance no interval misses: every interval
+ * keeps the cubic pieces its rows are given, none solved (what a table
+ * whose solved intervals were given back their pieces holds). */
+#undef HYST_INV_TABLE_TOL
+#define HYST_INV_TABLE_TOL 1e6
+#define hyst_curve_everett_inverse_table_ build_keeping_pieces
+#define hyst_curve_everett_inverse_table_const_ const_keeping_pieces
+#include "../src/hyst_everett_inv.c"
+#undef hyst_curve_everett_inverse_table_
+#undef hyst_curve_everett_inverse_table_const_
+#undef HYST_INV_TABLE_TOL
+
 #define CAP 64
 #define SAMPLES 3000L
 #define ROWS HYST_EVERETT_INV_ROWS
@@ -281,6 +293,61 @@ static void test_resealed_knot_slope_is_refused(void)
     TEST_PRINTF("%d knots' slopes changed alike and resealed: all refused", changed);
 }
 
+/* An interval the build solves (its pieces blended miss
+ * HYST_INV_TABLE_TOL) given back the pieces its rows were built with, and
+ * the table sealed again: every piece is the build's, only the mark is
+ * gone; the compensator would miss there by 2 % of the drive range
+ * (E = w^2 (1 + t / 2)). The check from flash measures each interval it
+ * finds with pieces as the build measures it (HYST_ERR_CURVE). */
+static void test_solved_interval_given_its_pieces_is_refused(void)
+{
+    static hyst_real_t kept[EV_LEN];
+    const size_t row = HYST_INV_TABLE_LEN(INTERVALS);
+    hyst_everett_t e;
+    hyst_curve_t unsolved, resealed;
+    hyst_ptr_t to;
+    size_t k, r, i;
+    unsigned given = 0u;
+    memset(&e, 0, sizeof e);
+    e.degree = 3u;
+    e.lo = 0;
+    e.hi = 10;
+    e.y_lo = -1;
+    e.e[1][0] = 2;
+    e.e[1][1] = 1;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&fwd, &e));
+    TEST_ASSERT_EQUAL_INT(HYST_OK,
+                          hyst_curve_everett_inverse_table(&inv, &fwd, flash, ROWS, INTERVALS));
+    TEST_ASSERT_TRUE(inv.u.everett.exact > 0u);
+    to.HYST_R = kept;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, build_keeping_pieces(&unsolved, &fwd, to, ROWS, INTERVALS,
+                                                        (unsigned)HYST_DEFAULT_VARIANT));
+    TEST_ASSERT_EQUAL_UINT(0u, unsolved.u.everett.exact);
+    memcpy(built, flash, sizeof built);
+    for (k = 0u; k < 2u * INTERVALS; ++k) {
+        /* interval k % INTERVALS of direction k / INTERVALS */
+        const size_t at = (k / INTERVALS) * (ROWS + 1u) * row + 4u * (k % INTERVALS);
+        if (!(flash[at] < 0)) {
+            continue;
+        }
+        for (r = 0u; r <= ROWS; ++r) {
+            for (i = 0u; i < 4u; ++i) {
+                flash[at + r * row + i] = kept[at + r * row + i];
+            }
+        }
+        resealed = inv; /* its table is flash */
+        --resealed.u.everett.exact;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_table_seal(&resealed, &seal));
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, everett_from_flash(ROWS, INTERVALS));
+        memcpy(flash, built, sizeof flash);
+        ++given;
+    }
+    TEST_ASSERT_EQUAL_UINT(inv.u.everett.exact, given);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_table_seal(&inv, &seal));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, everett_from_flash(ROWS, INTERVALS));
+    TEST_PRINTF("%u solved intervals given back their pieces and resealed: all refused", given);
+}
+
 /* A table is in output steps relative to the branch's whole step, so E
  * times a constant has the same table (accepted); any other E is refused. */
 static void test_another_models_table_is_refused(void)
@@ -388,6 +455,7 @@ int main(void)
     RUN_TEST(test_sealed_garbage_is_refused);
     RUN_TEST(test_resealed_slopes_are_refused);
     RUN_TEST(test_resealed_knot_slope_is_refused);
+    RUN_TEST(test_solved_interval_given_its_pieces_is_refused);
     RUN_TEST(test_symmetric_table_from_flash_is_the_build);
     RUN_TEST(test_bad_arguments);
     return UNITY_END();

@@ -599,20 +599,22 @@ hyst_status_t hyst_curve_table_seal(const hyst_curve_t *inv, hyst_table_seal_t *
  * of rounding (of its terms, of the drive step and the solver's width), the
  * end is the drive span, and every piece the table evaluates is measured
  * as the build measures it, within HYST_INV_TABLE_TOL and the error sealed.
- * The asymmetric kind's table, in one pass over it: every knot of every row
- * on the model's branch as above, each row's end the branch's whole drive
- * step, the intervals evaluated exactly marked alike in every row, and
- * every piece the build's: a cubic Hermite piece between two knots, its
- * slope at each the one the build computes from the model there (limited
- * as Fritsch and Carlson limit it), within their rounding; no piece is
- * measured again. Not detected: an interval the build evaluates exactly
- * given back the cubic piece the build measured beyond HYST_INV_TABLE_TOL
- * there (every piece is then the build's, but the error is not the one
- * sealed). HYST_ERR_CURVE otherwise: a table of another model, or pieces
+ * The asymmetric kind's table: every knot of every row on the model's
+ * branch as above, each row's end the branch's whole drive step, the
+ * intervals evaluated exactly marked alike in every row, every piece the
+ * build's (a cubic Hermite piece between two knots, its slope at each the
+ * one the build computes from the model there, limited as Fritsch and
+ * Carlson limit it, within their rounding), and every interval held as
+ * pieces measured as the build measures it, at the same anchors and
+ * points, within HYST_INV_TABLE_TOL (where the build would solve, a point
+ * off its interval is bounded by two evaluations of the model instead):
+ * an interval the build evaluates exactly given back its pieces is
+ * refused. HYST_ERR_CURVE otherwise: a table of another model, or pieces
  * changed and sealed again (the table is in output steps relative to a
  * branch's whole step, so the model times a constant has the same table,
  * and is accepted). What is saved is the table's RAM, and for the
- * asymmetric kind most of the build's time (docs/results.md). The
+ * asymmetric kind the build's solving: its measurement is done again
+ * (docs/results.md). The
  * table must hold the counts' numbers
  * (HYST_INV_TABLE_LEN(@p intervals), HYST_EVERETT_INV_TABLE_LEN(@p rows,
  * @p intervals)) and outlive the curve, unchanged.
