@@ -33,7 +33,15 @@ function f = hyst_fit(x, y, varargin)
 %     monotone    true if the library accepts E (else hyst_sim raises
 %                 hyst:ERR_NOT_MONOTONE)
 %
-%   Options (name/value): 'kind' 'poly' (default) or 'everett', 'degree'
+%   F = HYST_FIT(X, Y, 'kind', 'everett_grid') fits the asymmetric kind on a
+%   grid of 'degree' knot intervals (1..12) as 'hyst fit --kind
+%   everett_grid' does (the knots where the output steps, the cells'
+%   masses by least squares; no 'method', 'tdegree'): fields kind
+%   'everett_grid', degree, lo, hi, y_lo, knots, weights (HYST_SIM takes
+%   it), rms, max_abs, used, monotone (the library accepts the grid).
+%
+%   Options (name/value): 'kind' 'poly' (default), 'everett' or
+%   'everett_grid', 'degree'
 %   (default 3; [] chooses it), 'skip' samples dropped at the start
 %   (default 0), 'delay' samples the output lags the input (default 0; []
 %   chooses it as hyst fit does, with 'degree' []: 0..8, or up to 1/64 of
@@ -42,7 +50,8 @@ function f = hyst_fit(x, y, varargin)
 %   (default) or 'reflect' (kind poly), 'domain' [LO HI] (default: the
 %   range of the inputs), 'creep' (below).
 %
-%   'degree', [] chooses the kind (both compared unless 'kind' is given),
+%   'degree', [] chooses the kind (the three compared, grids of 4 and 6
+%   intervals among them, unless 'kind' is given),
 %   the degree, the t-degree and, with 'delay', [], the delay by hold-out
 %   with the hyst tool's own code ('hyst fit' without --degree; the Python
 %   package's fit(degree=None) alike): F also has the field candidates, a
@@ -73,11 +82,11 @@ function f = hyst_fit(x, y, varargin)
                                        'method', 'joint', 'domain', [], 'tdegree', [], ...
                                        'creep', 'auto'), ...
                       'hyst_fit');
-  kinds = 3;  % the choice compares both kinds unless 'kind' names one
+  kinds = 7;  % the choice compares the three kinds unless 'kind' names one
   if isempty(opts.kind)
     opts.kind = 'poly';
   elseif ischar(opts.kind)
-    kinds = 1 + strcmp(opts.kind, 'everett');
+    kinds = kind_code(opts.kind);
   end
   if ~isempty(opts.tdegree) && ~strcmp(opts.kind, 'everett')
     error('hyst:usage', 'hyst_fit: tdegree needs kind ''everett''');
@@ -97,8 +106,8 @@ function f = hyst_fit(x, y, varargin)
   else
     error('hyst:usage', 'hyst_fit: domain is [LO HI] with LO < HI');
   end
-  if ~ischar(opts.kind) || ~any(strcmp(opts.kind, {'poly', 'everett'}))
-    error('hyst:usage', 'hyst_fit: kind is ''poly'' or ''everett''');
+  if ~ischar(opts.kind) || ~any(strcmp(opts.kind, {'poly', 'everett', 'everett_grid'}))
+    error('hyst:usage', 'hyst_fit: kind is ''poly'', ''everett'' or ''everett_grid''');
   end
   creep_tau = creep_option(opts.creep);
   x = double(x(:));
@@ -136,6 +145,10 @@ function f = hyst_fit(x, y, varargin)
     warning('hyst:not_monotone', ...
             'hyst_fit: the fitted E is not increasing in a and decreasing in b on [%g, %g]: try another degree', ...
             f.lo, f.hi);
+  elseif strcmp(opts.kind, 'everett_grid') && ~f.monotone
+    warning('hyst:not_monotone', ...
+            'hyst_fit: the library refuses the fitted grid on [%g, %g]: try another number of intervals', ...
+            f.lo, f.hi);
   end
   skip = double(opts.skip);
   delay = double(opts.delay);
@@ -144,8 +157,10 @@ function f = hyst_fit(x, y, varargin)
   end
   % the creep term scored by hold-out as hyst fit scores it (the gateway's
   % score: fit_score() of tools/cli/fit_select.c, the hold-out splits)
-  kind_code = 1 + strcmp(opts.kind, 'everett');
-  [without, c] = hyst_mex('score', x, y, kind_code, double(opts.degree), double(tdegree), ...
+  if strcmp(opts.kind, 'everett_grid')
+    tdegree = 0;
+  end
+  [without, c] = hyst_mex('score', x, y, kind_code(opts.kind), double(opts.degree), double(tdegree), ...
                           method, domain(1), domain(2), skip, delay, creep_tau);
   if ~isfinite(without)
     c = [];
@@ -161,7 +176,7 @@ function f = hyst_fit(x, y, varargin)
     error('hyst:creep', ['hyst_fit: the creep term of time constant %g samples could not be ' ...
                          'fitted to the model''s residual (a drive that never moves?)'], c.tau);
   end
-  if strcmp(opts.kind, 'everett')
+  if any(strcmp(opts.kind, {'everett', 'everett_grid'}))
     f.y_lo = f.y_lo + cf.offset;
   else
     f.coeffs(end) = f.coeffs(end) + cf.offset;
@@ -225,6 +240,9 @@ function f = fit_part(opts, method, domain, tdegree, x, y)
   if strcmp(opts.kind, 'poly')
     f = hyst_mex('fit', x, y, double(opts.degree), method, domain(1), domain(2), ...
                  double(opts.skip), double(opts.delay));
+  elseif strcmp(opts.kind, 'everett_grid')
+    f = hyst_mex('fit_grid', x, y, double(opts.degree), domain(1), domain(2), ...
+                 double(opts.skip), double(opts.delay));
   else
     f = hyst_mex('fit_everett', x, y, double(opts.degree), domain(1), domain(2), ...
                  double(opts.skip), double(opts.delay), double(tdegree));
@@ -233,7 +251,7 @@ end
 
 function ok = usable(f)
 % f0 increasing, or E accepted by the library: a model that runs.
-  if isfield(f, 'kind') && strcmp(f.kind, 'everett')
+  if isfield(f, 'kind') && any(strcmp(f.kind, {'everett', 'everett_grid'}))
     ok = f.monotone;
   else
     ok = f.increasing;
@@ -245,12 +263,20 @@ function [rms, c] = holdout(f, x, y, skip, delay, from, tau)
 % gateway's holdout: its RMS error from sample from + 1 on), and the creep
 % term of time constant tau (0: the best of hyst fit's series) fitted to
 % its residual before that sample and scored after.
-  if isfield(f, 'kind') && strcmp(f.kind, 'everett')
+  if isfield(f, 'kind') && strcmp(f.kind, 'everett_grid')
+    [rms, c] = hyst_mex('holdout_grid', f.knots, f.weights, f.y_lo, x, y, skip, delay, from, tau);
+  elseif isfield(f, 'kind') && strcmp(f.kind, 'everett')
     [rms, c] = hyst_mex('holdout_everett', f.degree, f.lo, f.hi, f.y_lo, f.terms, x, y, ...
                         skip, delay, from, tau);
   else
     [rms, c] = hyst_mex('holdout', f.coeffs, f.lo, f.hi, x, y, skip, delay, from, tau);
   end
+end
+
+function code = kind_code(kind)
+% The kind as the gateway's select and score take it (fit_select.h's
+% FIT_POLY 1, FIT_EVERETT 2, FIT_GRID 4).
+  code = 1 + strcmp(kind, 'everett') + 3 * strcmp(kind, 'everett_grid');
 end
 
 function tau = creep_option(c)

@@ -9,7 +9,10 @@ function [x, status, tp_count, inv_err] = hyst_inv(model, y, varargin)
 %   as HYST_SIM takes it) the compensator is hyst_curve_inverse() of its
 %   curve: desired outputs on [y_lo, y_lo + E(hi, lo)], each branch solved
 %   (Newton's iteration, bracketed), the drive within about 1e-12 (double)
-%   or 1e-6 (single) of hi - lo. Options and outputs as HYST_SIM.
+%   or 1e-6 (single) of hi - lo. For kind 'everett_grid' it is
+%   hyst_*_curve_everett_grid_inverse(), each branch solved in closed form
+%   (no table: 'intervals' and 'rows' are refused). Options and outputs as
+%   HYST_SIM.
 %
 %   HYST_INV(MODEL, Y, 'intervals', N) runs the tabulated compensator
 %   firmware runs, bit for bit (the same C code; Y double: f64, single: f32):

@@ -15,16 +15,22 @@
  *                           [, ctau, cweight[, rtau, rweight]])
  *   [x, st, ntp, err] = hyst_mex('inv_everett', degree, lo, hi, y_lo, terms, y, capacity,
  *                                deadband, intervals, rows[, ctau, cweight[, rtau, rweight]])
+ *   [y, st, ntp] = hyst_mex('sim_grid', knots, weights, y_lo, x, capacity, deadband
+ *                           [, ctau, cweight[, rtau, rweight]])
+ *   [x, st, ntp] = hyst_mex('inv_grid', knots, weights, y_lo, y, capacity, deadband
+ *                           [, ctau, cweight[, rtau, rweight]])
  *   [c, st] = hyst_mex('creep', tau, weight, x_rest, x)
  *   [rms, creep] = hyst_mex('holdout', coeffs, lo, hi, x, y, skip, delay, from, tau)
  *   [rms, creep] = hyst_mex('holdout_everett', degree, lo, hi, y_lo, terms, x, y, skip, delay,
  *                           from, tau)
+ *   [rms, creep] = hyst_mex('holdout_grid', knots, weights, y_lo, x, y, skip, delay, from, tau)
  *   [t, crc, max_err, exact, err] = hyst_mex('inv_table', coeffs, lo, hi, intervals, class)
  *   [t, crc, max_err, exact, err] = hyst_mex('inv_table_everett', degree, lo, hi, y_lo, terms,
  *                                            intervals, rows, class)
  *   c = hyst_mex('config')                       the compensators' default table sizes
  *   f = hyst_mex('fit', x, y, degree, method, lo, hi, skip, delay)
  *   f = hyst_mex('fit_everett', x, y, degree, lo, hi, skip, delay)
+ *   f = hyst_mex('fit_grid', x, y, intervals, lo, hi, skip, delay)
  *   [cands, best, with_creep] = hyst_mex('select', x, y, kinds, method, lo, hi, skip,
  *                                        delay_first, max_delay, t_degree, creep_tau)
  *   m = hyst_mex('model_parse', bytes, file)    the reader of tools/model_text
@@ -35,6 +41,15 @@
  *   t = hyst_mex('header_table', name, kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau,
  *                cweight, intervals, rows)   the compensator's table of a header
  *
+ * sim_grid runs the asymmetric kind on a grid (hyst_everett_grid_t: knots
+ * lo .. hi, weights the cells' masses, y_lo), inv_grid its compensator
+ * (hyst_*_curve_everett_grid_inverse(), each branch solved in closed form),
+ * as `hyst sim --model` and `hyst inv --model` run a file of kind
+ * everett_grid. model_write, header_open and model_parse take and give such
+ * a file's knots and weights in the places of coeffs and terms (kind
+ * 'everett_grid'; model_parse's struct names them knots and weights).
+ * fit_grid: the grid of `intervals` knot intervals as `hyst fit --kind
+ * everett_grid` fits it (fit_grid_record(), tools/cli/fit_grid.c).
  * sim_everett runs the asymmetric kind (hyst_everett_t; terms are e[i-1][j]
  * of w^i t^j for i = 1..degree, then j = 0..degree-i), inv_everett its
  * compensator: intervals 0, hyst_curve_inverse() (HYST_CURVE_EVERETT_INV,
@@ -253,10 +268,12 @@ static hyst_everett_t everett_arg(const mxArray *const prhs[5], const char *cont
 typedef struct model_arg {
     int inverse;        /* the compensator */
     int everett;        /* the asymmetric kind: e, not f0 */
+    int grid;           /* the asymmetric kind on a grid: g (e, f0 unused) */
     size_t intervals;   /* the compensator tabulated (firmware's); 0: exact (or solved) */
     size_t rows;        /* E's tabulated compensator: rows per direction */
     hyst_poly_t f0;
     hyst_everett_t e;
+    hyst_everett_grid_t g;
     size_t ncreep;      /* lags of its creep term; 0: none */
     hyst_wide_t creep_tau[HYST_CREEP_MAX_TERMS], creep_weight[HYST_CREEP_MAX_TERMS];
     int has_rate;       /* a rate term of time constant rate_tau, weight rate_weight */
@@ -304,6 +321,9 @@ static void creep_arg(model_arg_t *m, const mxArray *tau, const mxArray *weight)
 static double table_numbers(const model_arg_t *m)
 {
     const double row = 4.0 * ((double)m->intervals + 1.0); /* HYST_INV_TABLE_LEN */
+    if (m->grid) {
+        return (double)HYST_EVERETT_GRID_TABLE_LEN(m->g.intervals);
+    }
     if (!m->inverse || m->intervals == 0u) {
         return 0.0;
     }
@@ -313,6 +333,9 @@ static double table_numbers(const model_arg_t *m)
 /* The same as a size_t, once table_numbers() is known to fit. */
 static size_t table_len(const model_arg_t *m)
 {
+    if (m->grid) { /* the grid curve's own table */
+        return HYST_EVERETT_GRID_TABLE_LEN(m->g.intervals);
+    }
     if (!m->inverse || m->intervals == 0u) {
         return 0u;
     }
@@ -331,6 +354,16 @@ static size_t table_len(const model_arg_t *m)
         T *const xl = tp, *const yl = tp + cap, *const xr = tp + 2u * cap,                  \
                  *const yr = tp + 3u * cap;                                                 \
         int st;                                                                             \
+        if (m->grid) {                                                                      \
+            hyst_curve_t fwd;                                                               \
+            st = hyst_##P##_curve_from_everett_grid(&fwd, &m->g, table, table_len(m));      \
+            if (st == HYST_OK && m->inverse) {                                              \
+                st = hyst_##P##_curve_everett_grid_inverse(curve, &fwd);                    \
+            } else {                                                                        \
+                *curve = fwd;                                                               \
+            }                                                                               \
+            return st != HYST_OK ? st : hyst_##P##_init_curve(S, curve, xl, yl, xr, yr, cap); \
+        }                                                                                   \
         if (m->everett) {                                                                   \
             hyst_curve_t fwd;                                                               \
             st = hyst_##P##_curve_from_everett(&fwd, &m->e);                                \
@@ -426,7 +459,8 @@ DEFINE_RUN(f32, float)
 /* The creep term of m in variant f64 (or f32), every lag at the domain's lo. */
 static int creep_init(hyst_creep_t *C, const model_arg_t *m, int f32)
 {
-    const hyst_wide_t x_rest = (hyst_wide_t)(m->everett ? m->e.lo : m->f0.lo);
+    const hyst_wide_t x_rest =
+        (hyst_wide_t)(m->grid ? m->g.knots[0] : m->everett ? m->e.lo : m->f0.lo);
     if (m->ncreep == 0u) {
         return HYST_OK;
     }
@@ -437,7 +471,8 @@ static int creep_init(hyst_creep_t *C, const model_arg_t *m, int f32)
 /* The rate term of m in variant f64 (or f32), at rest at the domain's lo. */
 static int rate_init(hyst_rate_t *R, const model_arg_t *m, int f32)
 {
-    const hyst_wide_t x_rest = (hyst_wide_t)(m->everett ? m->e.lo : m->f0.lo);
+    const hyst_wide_t x_rest =
+        (hyst_wide_t)(m->grid ? m->g.knots[0] : m->everett ? m->e.lo : m->f0.lo);
     if (!m->has_rate) {
         return HYST_OK;
     }
@@ -579,6 +614,53 @@ static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const 
         rate_arg(&m, prhs[args + 2], prhs[args + 3]);
     }
     run_tcm(&m, nlhs, plhs, prhs + 5);
+}
+
+/* A grid's knots, weights and y_lo (prhs[0..2]) into *g: real double
+ * vectors of 2..HYST_EVERETT_GRID_MAX_INTERVALS + 1 knots and K (K + 1) / 2
+ * weights for K intervals; their values are the library's to check. */
+static void grid_arg(hyst_everett_grid_t *g, const mxArray *const prhs[3])
+{
+    const size_t nk = mxGetNumberOfElements(prhs[0]), nw = mxGetNumberOfElements(prhs[1]);
+    size_t i;
+    if (!is_real_double(prhs[0]) || !is_real_double(prhs[1]) || nk < 2u ||
+        nk > HYST_EVERETT_GRID_MAX_INTERVALS + 1u || nw != HYST_EVERETT_GRID_CELLS(nk - 1u)) {
+        usage("a grid takes 2 to HYST_EVERETT_GRID_MAX_INTERVALS + 1 knots and K (K + 1) / 2 "
+              "weights for K knot intervals (real double vectors)");
+    }
+    memset(g, 0, sizeof *g);
+    g->intervals = (unsigned)(nk - 1u);
+    for (i = 0u; i < nk; ++i) {
+        g->knots[i] = (hyst_wide_t)((const double *)mxGetData(prhs[0]))[i];
+    }
+    for (i = 0u; i < nw; ++i) {
+        g->weight[i] = (hyst_wide_t)((const double *)mxGetData(prhs[1]))[i];
+    }
+    g->y_lo = (hyst_wide_t)scalar(prhs[2], "y_lo");
+}
+
+/* sim_grid or inv_grid: prhs = knots, weights, y_lo, x, capacity, deadband
+ * [, ctau, cweight[, rtau, rweight]]. */
+static void run_grid(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    model_arg_t m;
+    if (nrhs != 6 && nrhs != 8 && nrhs != 10) {
+        usage(inverse ? "inv_grid takes knots, weights, y_lo, y, capacity, deadband[, ctau, "
+                        "cweight[, rtau, rweight]]"
+                      : "sim_grid takes knots, weights, y_lo, x, capacity, deadband[, ctau, "
+                        "cweight[, rtau, rweight]]");
+    }
+    memset(&m, 0, sizeof m);
+    m.grid = 1;
+    m.inverse = inverse;
+    grid_arg(&m.g, prhs);
+    if (nrhs >= 8) {
+        creep_arg(&m, prhs[6], prhs[7]);
+    }
+    if (nrhs == 10) {
+        rate_arg(&m, prhs[8], prhs[9]);
+    }
+    run_tcm(&m, nlhs, plhs, prhs + 3);
 }
 
 /* v as a float build reads the header's literal of it (17 digits; HYST_REAL_C(lit)
@@ -835,6 +917,59 @@ static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     plhs[0] = s;
 }
 
+static mxArray *row_of(const double *v, size_t n);
+
+/* fit_grid: prhs = x, y, intervals, lo, hi, skip, delay; the grid as `hyst
+ * fit --kind everett_grid` fits it (fit_grid_record()): a struct of kind
+ * 'everett_grid', degree (its intervals), lo, hi, y_lo, knots, weights,
+ * rms (the model's run; the least-squares residual when the library refuses
+ * the grid), max_abs, used and monotone (the library accepts it). */
+static void run_fit_grid(mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *fields[] = {"kind", "degree", "lo", "hi", "y_lo", "knots", "weights",
+                                   "rms", "max_abs", "used", "monotone"};
+    hyst_ident_config_t cfg;
+    fit_everett_result_t r;
+    hyst_status_t st;
+    size_t n;
+    unsigned k;
+    mxArray *s;
+    if (nrhs != 7 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+        mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
+        usage("fit_grid takes x, y (real double vectors of one length), intervals, lo, hi, "
+              "skip, delay");
+    }
+    n = mxGetNumberOfElements(prhs[0]);
+    memset(&cfg, 0, sizeof cfg);
+    k = (unsigned)count(prhs[2], "intervals", 1.0, (double)HYST_EVERETT_GRID_MAX_INTERVALS);
+    cfg.degree = k;
+    cfg.lo = scalar(prhs[3], "lo");
+    cfg.hi = scalar(prhs[4], "hi");
+    cfg.skip = count(prhs[5], "skip", 0.0, 1e15);
+    cfg.delay = count(prhs[6], "delay", 0.0, 1e15);
+    if (cfg.skip >= n || cfg.delay >= n - cfg.skip) {
+        fail_status("hyst_fit", HYST_ERR_ARG);
+    }
+    st = fit_grid_record(&cfg, k, (const double *)mxGetData(prhs[0]),
+                         (const double *)mxGetData(prhs[1]), n, &r);
+    if (st != HYST_OK) {
+        fail_status("hyst_fit", st);
+    }
+    s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
+    set_field(s, "kind", mxCreateString("everett_grid"));
+    set_field(s, "degree", mxCreateDoubleScalar((double)r.grid.intervals));
+    set_field(s, "lo", mxCreateDoubleScalar(r.grid.knots[0]));
+    set_field(s, "hi", mxCreateDoubleScalar(r.grid.knots[r.grid.intervals]));
+    set_field(s, "y_lo", mxCreateDoubleScalar(r.grid.y_lo));
+    set_field(s, "knots", row_of(r.grid.knots, r.grid.intervals + 1u));
+    set_field(s, "weights", row_of(r.grid.weight, HYST_EVERETT_GRID_CELLS(r.grid.intervals)));
+    set_field(s, "rms", mxCreateDoubleScalar(r.curve_status == HYST_OK ? r.rms : r.ls_rms));
+    set_field(s, "max_abs", mxCreateDoubleScalar(r.max_abs));
+    set_field(s, "used", mxCreateDoubleScalar((double)r.used));
+    set_field(s, "monotone", mxCreateLogicalScalar(r.curve_status == HYST_OK));
+    plhs[0] = s;
+}
+
 /* creep: prhs = tau, weight, x_rest, x; plhs = c (x's class and shape), st. */
 static void run_creep(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
@@ -890,7 +1025,9 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
 {
     static const char *fields[] = {"tau", "weight", "offset", "holdout_rms", "fit_rms",
                                    "max_abs"};
-    const int at = everett ? 5 : 3; /* x, then y, skip, delay, from, tau */
+    static double grid_table[HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)];
+    const int grid = everett == 2; /* holdout_grid: knots, weights, y_lo */
+    const int at = grid ? 3 : everett ? 5 : 3; /* x, then y, skip, delay, from, tau */
     model_arg_t m;
     hyst_curve_t curve;
     fit_creep_t best;
@@ -898,13 +1035,18 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     size_t n, skip, delay, from;
     int st = HYST_OK;
     if (nrhs != at + 6) {
-        usage(everett ? "holdout_everett takes degree, lo, hi, y_lo, terms, x, y, skip, delay, "
-                        "from, tau"
-                      : "holdout takes coeffs, lo, hi, x, y, skip, delay, from, tau");
+        usage(grid      ? "holdout_grid takes knots, weights, y_lo, x, y, skip, delay, from, tau"
+              : everett ? "holdout_everett takes degree, lo, hi, y_lo, terms, x, y, skip, delay, "
+                          "from, tau"
+                        : "holdout takes coeffs, lo, hi, x, y, skip, delay, from, tau");
     }
     memset(&m, 0, sizeof m);
     memset(&best, 0, sizeof best);
-    if (everett) {
+    if (grid) {
+        grid_arg(&m.g, prhs);
+        st = hyst_f64_curve_from_everett_grid(&curve, &m.g, grid_table,
+                                              HYST_EVERETT_GRID_TABLE_LEN(m.g.intervals));
+    } else if (everett) {
         m.e = everett_arg(prhs, "hyst_fit");
         st = hyst_f64_curve_from_everett(&curve, &m.e);
     } else {
@@ -943,7 +1085,8 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     }
 }
 
-/* score: prhs = x, y, kind (1 poly, 2 everett), degree, t_degree, method,
+/* score: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid: degree its
+ * intervals), degree, t_degree, method,
  * lo, hi, skip, delay, creep_tau; one candidate scored as the automatic
  * choice scores it (fit_score(), tools/cli/fit_select.c: the hold-out
  * splits). plhs = its hold-out RMS (NaN: not scored) and its creep term (a
@@ -960,8 +1103,13 @@ static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     }
     memset(&base, 0, sizeof base);
     memset(&c, 0, sizeof c);
-    c.kind = count(prhs[2], "kind", 1.0, 2.0) == 2u ? FIT_EVERETT : FIT_POLY;
-    c.degree = (unsigned)count(prhs[3], "degree", 1.0, (double)HYST_MAX_DEGREE);
+    c.kind = (int)count(prhs[2], "kind", 1.0, 4.0);
+    if (c.kind != FIT_POLY && c.kind != FIT_EVERETT && c.kind != FIT_GRID) {
+        usage("kind is 1 (poly), 2 (everett) or 4 (everett_grid)");
+    }
+    c.degree = (unsigned)count(prhs[3], "degree", 1.0,
+                               c.kind == FIT_GRID ? (double)HYST_EVERETT_GRID_MAX_INTERVALS
+                                                  : (double)HYST_MAX_DEGREE);
     c.t_degree = (unsigned)count(prhs[4], "t_degree", 0.0, (double)HYST_EVERETT_MAX_DEGREE);
     base.method = (int)count(prhs[5], "method", 1.0, 2.0);
     base.lo = scalar(prhs[6], "lo");
@@ -981,7 +1129,7 @@ static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     }
 }
 
-/* select: prhs = x, y, kinds (1 poly, 2 everett, 3 both), method, lo, hi,
+/* select: prhs = x, y, kinds (a sum of 1 poly, 2 everett, 4 everett_grid), method, lo, hi,
  * skip, delay (-1: chosen), t_degree (-1: any), creep_tau; fit's
  * automatic choice by the `hyst` tool's own code (fit_search(),
  * tools/cli/fit_select.c). plhs = the candidates (a struct array: kind,
@@ -1012,7 +1160,7 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     }
     n = mxGetNumberOfElements(prhs[0]);
     memset(&base, 0, sizeof base);
-    kinds = (int)count(prhs[2], "kinds", 1.0, 3.0);
+    kinds = (int)count(prhs[2], "kinds", 1.0, 7.0);
     base.method = (int)count(prhs[3], "method", 1.0, 2.0);
     base.lo = scalar(prhs[4], "lo");
     base.hi = scalar(prhs[5], "hi");
@@ -1039,12 +1187,13 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     s = mxCreateStructMatrix(1, (mwSize)scored, (int)(sizeof fields / sizeof fields[0]), fields);
     for (i = 0u; i < scored; ++i) {
         const fit_candidate_t *c = &cand[i];
-        const int everett = c->kind == FIT_EVERETT;
-        const char *status = c->status == HYST_ERR_NOT_MONOTONE ? "E not monotone"
-                             : c->status != HYST_OK             ? status_name(c->status)
-                             : !everett && !c->fit.increasing   ? "f0 not increasing"
-                                                                : "OK";
-        mxSetField(s, (mwIndex)i, "kind", mxCreateString(everett ? "everett" : "poly"));
+        const int everett = c->kind == FIT_EVERETT, grid = c->kind == FIT_GRID;
+        const char *status = c->status == HYST_ERR_NOT_MONOTONE       ? "E not monotone"
+                             : c->status != HYST_OK                   ? status_name(c->status)
+                             : !everett && !grid && !c->fit.increasing ? "f0 not increasing"
+                                                                       : "OK";
+        mxSetField(s, (mwIndex)i, "kind",
+                   mxCreateString(grid ? "everett_grid" : everett ? "everett" : "poly"));
         mxSetField(s, (mwIndex)i, "degree", mxCreateDoubleScalar((double)c->degree));
         mxSetField(s, (mwIndex)i, "t_degree",
                    everett ? mxCreateDoubleScalar((double)c->t_degree)
@@ -1116,14 +1265,17 @@ static void model_text_arg(model_text_t *m, const mxArray *const prhs[10],
                            const mxArray *identified, const mxArray *const *rate,
                            const char *caller)
 {
-    char kind[8], msg[MODEL_TEXT_MSG_SIZE];
+    char kind[16], msg[MODEL_TEXT_MSG_SIZE];
     double v;
     memset(m, 0, sizeof *m);
     if (!mxIsChar(prhs[0]) || mxGetString(prhs[0], kind, sizeof kind) != 0 ||
-        (strcmp(kind, "poly") != 0 && strcmp(kind, "everett") != 0)) {
-        usage("kind must be 'poly' or 'everett'");
+        (strcmp(kind, "poly") != 0 && strcmp(kind, "everett") != 0 &&
+         strcmp(kind, "everett_grid") != 0)) {
+        usage("kind must be 'poly', 'everett' or 'everett_grid'");
     }
-    m->kind = strcmp(kind, "everett") == 0 ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
+    m->kind = strcmp(kind, "everett_grid") == 0 ? MODEL_TEXT_GRID
+              : strcmp(kind, "everett") == 0    ? MODEL_TEXT_EVERETT
+                                                : MODEL_TEXT_POLY;
     m->lo = scalar(prhs[1], "lo");
     m->hi = scalar(prhs[2], "hi");
     v = scalar(prhs[3], "delay");
@@ -1137,6 +1289,12 @@ static void model_text_arg(model_text_t *m, const mxArray *const prhs[10],
         m->degree = v >= 1.0 && v <= HYST_EVERETT_MAX_DEGREE && v == floor(v) ? (unsigned)v : 0u;
         m->y_lo = scalar(prhs[6], "y_lo");
         numbers_arg(prhs[7], "terms", m->terms, HYST_EVERETT_TERMS, &m->nterms);
+    } else if (m->kind == MODEL_TEXT_GRID) { /* knots in coeffs' place, weights in terms' */
+        m->y_lo = scalar(prhs[6], "y_lo");
+        numbers_arg(prhs[4], "knots", m->knots, HYST_EVERETT_GRID_MAX_INTERVALS + 1u,
+                    &m->nknots);
+        numbers_arg(prhs[7], "weights", m->weights,
+                    HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS), &m->nweights);
     } else {
         numbers_arg(prhs[4], "coeffs", m->coeffs, HYST_MAX_DEGREE + 1u, &m->ncoef);
     }
@@ -1182,6 +1340,7 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *poly[] = {"coeffs", "lo", "hi", "delay"};
     static const char *everett[] = {"kind", "lo", "hi", "y_lo", "degree", "terms", "delay"};
+    static const char *grid[] = {"kind", "lo", "hi", "y_lo", "knots", "weights", "delay"};
     model_text_t m;
     char msg[MODEL_TEXT_MSG_SIZE], *path, *text;
     size_t n, i;
@@ -1203,11 +1362,13 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     if (rc != 0) {
         mexErrMsgIdAndTxt("hyst:model_file", "%s", msg);
     }
-    if (m.kind == MODEL_TEXT_GRID) { /* read by `hyst sim --model`, not here yet */
-        mexErrMsgIdAndTxt("hyst:model_file",
-                          "kind everett_grid is not supported here yet (hyst sim --model runs it)");
-    }
-    if (m.kind == MODEL_TEXT_EVERETT) {
+    if (m.kind == MODEL_TEXT_GRID) {
+        s = mxCreateStructMatrix(1, 1, 7, grid);
+        set_field(s, "kind", mxCreateString("everett_grid"));
+        set_field(s, "y_lo", mxCreateDoubleScalar(m.y_lo));
+        set_field(s, "knots", row_of(m.knots, m.nknots));
+        set_field(s, "weights", row_of(m.weights, m.nweights));
+    } else if (m.kind == MODEL_TEXT_EVERETT) {
         s = mxCreateStructMatrix(1, 1, 7, everett);
         set_field(s, "kind", mxCreateString("everett"));
         set_field(s, "y_lo", mxCreateDoubleScalar(m.y_lo));
@@ -1338,6 +1499,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         }
     } else if (strcmp(cmd, "sim") == 0 || strcmp(cmd, "inv") == 0) {
         run_poly(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "sim_grid") == 0 || strcmp(cmd, "inv_grid") == 0) {
+        run_grid(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "sim_everett") == 0 || strcmp(cmd, "inv_everett") == 0) {
         run_everett(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "inv_table") == 0 || strcmp(cmd, "inv_table_everett") == 0) {
@@ -1346,10 +1509,14 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_config(plhs);
     } else if (strcmp(cmd, "fit") == 0) {
         run_fit(plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "fit_grid") == 0) {
+        run_fit_grid(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "fit_everett") == 0) {
         run_fit_everett(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "creep") == 0) {
         run_creep(nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "holdout_grid") == 0) {
+        run_holdout(2, nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "holdout") == 0 || strcmp(cmd, "holdout_everett") == 0) {
         run_holdout(cmd[7] == '_', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "select") == 0) {

@@ -15,7 +15,9 @@ function hyst_model_save(file, model)
 %     coeffs -6.1875999999999998e-06 0.0011949 0.086443999999999993 0.58516999999999997
 %
 %   A model of kind 'everett' (HYST_SIM) is written with the keys kind
-%   everett, lo, hi, y_lo, delay, degree and terms. A model
+%   everett, lo, hi, y_lo, delay, degree and terms; one of kind
+%   'everett_grid' with the keys kind everett_grid, lo, hi, y_lo, delay,
+%   knots and weights. A model
 %   with a creep term (fields creep_tau and creep_weight, 1 to 4 numbers
 %   each) gets a comment line and the keys creep_tau and creep_weight after
 %   its own, as the host tool writes them ('hyst fit --save'); one with a
@@ -33,7 +35,10 @@ function hyst_model_save(file, model)
   hyst_model_check(p, 'hyst_model_save');
   % the text of the format's one implementation (tools/model_text), the
   % one 'hyst fit --save' and the Python package write
-  if strcmp(p.kind, 'everett')
+  if strcmp(p.kind, 'everett_grid')  % the gateway takes knots, weights in coeffs', terms' places
+    text = hyst_mex('model_write', 'everett_grid', p.lo, p.hi, p.delay, p.knots, 0, p.y_lo, ...
+                    p.weights, p.creep_tau, p.creep_weight, p.identified, p.rate_tau, p.rate_weight);
+  elseif strcmp(p.kind, 'everett')
     text = hyst_mex('model_write', 'everett', p.lo, p.hi, p.delay, [], p.degree, p.y_lo, ...
                     p.terms, p.creep_tau, p.creep_weight, p.identified, p.rate_tau, p.rate_weight);
   else

@@ -11,7 +11,11 @@ function [y, status, tp_count] = hyst_sim(model, x, varargin)
 %   (hyst_everett_t: hyst_*_curve_from_everett, hyst_*_init_curve), with
 %   fields kind 'everett', degree (1..4), lo, hi, y_lo (the output at lo)
 %   and terms, the coefficients e[i-1][j] of w^i t^j of the branch function
-%   E for i = 1..degree, then j = 0..degree-i (docs/matlab.md).
+%   E for i = 1..degree, then j = 0..degree-i (docs/matlab.md); or, for the
+%   asymmetric kind on a grid (hyst_everett_grid_t:
+%   hyst_*_curve_from_everett_grid), with fields kind 'everett_grid', y_lo,
+%   knots (lo first, hi last) and weights (the cells' masses), as
+%   HYST_MODEL_LOAD returns a model file of that kind.
 %
 %   A MODEL with a creep term (the fields creep_tau, 1 to 4 time constants
 %   in samples, and creep_weight, as many weights: what HYST_MODEL_LOAD and

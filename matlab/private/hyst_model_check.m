@@ -16,6 +16,13 @@ function hyst_model_check(p, caller)
       error('hyst:usage', '%s: degree is 1..4 and terms has degree (degree + 1) / 2 numbers', ...
             caller);
     end
+  elseif strcmp(p.kind, 'everett_grid')
+    numbers = [p.knots p.weights p.y_lo];
+    k = numel(p.knots) - 1;
+    if k < 1 || k > 12 || numel(p.weights) ~= k * (k + 1) / 2
+      error('hyst:usage', '%s: knots has 2 to 13 numbers and weights K (K + 1) / 2 for K + 1 knots', ...
+            caller);
+    end
   else
     numbers = p.coeffs;
   end

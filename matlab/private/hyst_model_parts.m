@@ -3,7 +3,9 @@ function p = hyst_model_parts(model, caller)
 % HYST_MODEL_PARTS  The parts of a model struct (what hyst_fit and
 % hyst_model_load return), as doubles: P.kind 'poly' with P.coeffs (a row,
 % highest power first), P.lo, P.hi; or P.kind 'everett' (MODEL.kind is
-% 'everett') with P.degree, P.lo, P.hi, P.y_lo, P.terms (a row). P.delay:
+% 'everett') with P.degree, P.lo, P.hi, P.y_lo, P.terms (a row); or P.kind
+% 'everett_grid' with P.y_lo, P.knots, P.weights (rows), P.lo and P.hi the
+% first and the last knot. P.delay:
 % MODEL.delay, 0 without one (the sensor's delay in samples: not part of the
 % model, kept in its file and stated in its header). P.creep_tau and
 % P.creep_weight: the creep term's time constants (samples) and weights,
@@ -11,7 +13,16 @@ function p = hyst_model_parts(model, caller)
 % term). P.rate_tau and P.rate_weight: the rate term's time constant
 % (samples) and weight, from MODEL's fields of those names ([] and []
 % without: no rate term). Not checked here: HYST_MODEL_CHECK, or the library.
-  if isstruct(model) && isfield(model, 'kind') && strcmp(model.kind, 'everett')
+  if isstruct(model) && isfield(model, 'kind') && strcmp(model.kind, 'everett_grid')
+    if ~all(isfield(model, {'y_lo', 'knots', 'weights'}))
+      error('hyst:usage', '%s: an everett_grid model is a struct with fields kind, y_lo, knots, weights', ...
+            caller);
+    end
+    p = struct('kind', 'everett_grid', 'y_lo', double(model.y_lo), ...
+               'knots', double(model.knots(:)'), 'weights', double(model.weights(:)'));
+    p.lo = p.knots(1);
+    p.hi = p.knots(end);
+  elseif isstruct(model) && isfield(model, 'kind') && strcmp(model.kind, 'everett')
     if ~all(isfield(model, {'degree', 'lo', 'hi', 'y_lo', 'terms'}))
       error('hyst:usage', '%s: an everett model is a struct with fields kind, degree, lo, hi, y_lo, terms', ...
             caller);

@@ -24,7 +24,14 @@ function [out, status, tp_count, inv_err] = hyst_run(command, model, in, args)
     [intervals, rows] = hyst_table_sizes(opts.intervals, opts.rows, p.kind, caller, true);
   end
   creep = {p.creep_tau, p.creep_weight, p.rate_tau, p.rate_weight};
-  if strcmp(p.kind, 'everett') && strcmp(command, 'inv')
+  if strcmp(p.kind, 'everett_grid') && strcmp(command, 'inv') && (intervals > 0 || ~isempty(opts.rows))
+    error('hyst:usage', ['%s: kind everett_grid has no tabulated compensator (it solves each ' ...
+                         'branch in closed form): no ''intervals'' or ''rows'''], caller);
+  end
+  if strcmp(p.kind, 'everett_grid')
+    [out, status, tp_count] = hyst_mex([command '_grid'], p.knots, p.weights, p.y_lo, in, ...
+                                       double(opts.capacity), double(opts.deadband), creep{:});
+  elseif strcmp(p.kind, 'everett') && strcmp(command, 'inv')
     [out, status, tp_count, inv_err] = hyst_mex('inv_everett', p.degree, p.lo, p.hi, p.y_lo, ...
                                                 p.terms, in, double(opts.capacity), ...
                                                 double(opts.deadband), intervals, rows, creep{:});

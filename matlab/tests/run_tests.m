@@ -21,7 +21,9 @@ function failed = run_tests(root, ref, cli)
            @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors, ...
            @t_readers_agree, @t_fit_delay_saved, @t_fit_chooses_as_cli, ...
            @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
-           @t_rate_refused};
+           @t_rate_refused, @t_grid_sim_inv_equal_cli, @t_grid_written_as_cli, ...
+           @t_grid_header_equals_cli, @t_grid_refused, @t_grid_fit_as_cli, ...
+           @t_grid_chosen_as_cli};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -349,7 +351,7 @@ function t_load_rejects(ctx)
     [good {'gain 3'}], ':6: field 1: ''gain'' is not a key'
     [good {'lo 1'}], ':6: field 1: ''lo'' given twice'
     good([1 2 3 5]), 'the key hi is missing'
-    {'hyst-model-text 1', 'kind pwl', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':2: field 2: kind must be ''poly'' or ''everett'''
+    {'hyst-model-text 1', 'kind pwl', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':2: field 2: kind must be ''poly'', ''everett'' or ''everett_grid'''
     {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi Inf', 'coeffs 1 2'}, ':4: field 2: ''Inf'' is not a finite number'
     {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 x'}, ':5: field 3: ''x'' is not a finite number'
     [good {'delay -2.5'}], ':6: field 2: ''-2.5'' is not a delay of 0 to 1000000000 samples'
@@ -619,7 +621,7 @@ function t_everett_load_rejects(ctx)
     [good(1:6) {'terms 1 2'}], ':7: field 4 is missing: terms needs 3 numbers for degree 2'
     [good(1:6) {'terms 1 NaN 2'}], ':7: field 3: ''NaN'' is not a finite number'
     [good(1:4) {'y_lo Inf'} good(6:7)], ':5: field 2: ''Inf'' is not a finite number'
-    [{'hyst-model-text 1', 'kind preisach'} good(3:7)], ':2: field 2: kind must be ''poly'' or ''everett'''
+    [{'hyst-model-text 1', 'kind preisach'} good(3:7)], ':2: field 2: kind must be ''poly'', ''everett'' or ''everett_grid'''
   };
   expect_load_errors(file, bad);
 end
@@ -1386,7 +1388,8 @@ function t_fit_chooses_as_cli(ctx)
   check(isfield(f, 'creep_tau') && f.creep_tau == tau, 'creep term, hyst fit: tau %g', tau);
   check(numel(f.candidates) == 81 && sum([f.candidates.chosen]) == 1, '%d candidates', ...
         numel(f.candidates));
-  % both kinds compared when 'kind' is not given: hyst fit's 171 candidates
+  % the three kinds compared when 'kind' is not given: hyst fit's candidates
+  % (189: 9 delays of 9 f0, 10 E and 2 grids)
   g = hyst_fit(d(:, 1), d(:, 5), 'degree', [], 'delay', [], 'skip', 350, 'creep', 'none');
   out = run_cli(ctx, ['fit --skip 350 --creep none --xcol 1 --ycol 5 "' data '"']);
   t = regexp(out, 'chosen by hold-out: degree (\d+), delay (\d+) \(kind (\w+)', 'tokens', 'once');
@@ -1394,7 +1397,8 @@ function t_fit_chooses_as_cli(ctx)
   if isfield(g, 'kind')
     kind = g.kind;
   end
-  check(numel(g.candidates) == 171 && strcmp(kind, t{3}) && g.degree == str2double(t{1}) && ...
+  listed = numel(regexp(out, '^# candidate ', 'start', 'lineanchors'));
+  check(numel(g.candidates) == 189 && listed == 189 && strcmp(kind, t{3}) && g.degree == str2double(t{1}) && ...
         g.delay == str2double(t{2}), 'the choice differs from hyst fit''s: %s', strjoin(t, ' '));
 end
 
@@ -1536,4 +1540,145 @@ function t_rate_refused(ctx)
   expect_error('hyst:usage', @() hyst_header(m, 'rate_model'));
   m.rate_tau = 0.5;  % below 1 sample: the library refuses it
   expect_error('hyst:ERR_ARG', @() hyst_sim(m, 1));
+end
+
+% ---- the asymmetric kind on a grid (model files of kind everett_grid) ----
+
+function text = grid_plant_text(with_creep)
+  % tests/cli/grid.sh's plant: a near step between 1 and 1.4 of 0..3; with
+  % a delay, an identified range and a creep term too
+  text = sprintf(['hyst-model-text 1\nkind everett_grid\nlo 0\nhi 3\ny_lo 0\n' ...
+                  'knots 0 1 1.4 3\nweights 1 0.5 8 0.2 0.5 1\n']);
+  if with_creep
+    text = [text sprintf('delay 2\nidentified 0.5 2.5\ncreep_tau 300\ncreep_weight 0.05\n')];
+  end
+end
+
+function x = grid_loops()
+  % tests/cli/grid.sh's record's input: minor loops of decreasing size
+  x = [];
+  for c = 0:11
+    a = 3 - c * 0.2;
+    b = c * 0.2;
+    x = [x, b:0.01:a - 1e-9, a:-0.01:b + 1e-9];  %#ok<AGROW>
+  end
+  x = x(:);
+end
+
+function t_grid_sim_inv_equal_cli(ctx)
+  % a model file of kind everett_grid runs bit for bit as hyst sim --model
+  % (output delay samples later) and its compensator as hyst inv --model;
+  % the model driven by the compensator gives the desired outputs back
+  file = fullfile(ctx.tmp, 'grid.hyst');
+  fx = fullfile(ctx.tmp, 'grid_x.txt');
+  fy = fullfile(ctx.tmp, 'grid_y.txt');
+  for with_creep = [false true]
+    write_text(file, grid_plant_text(with_creep));
+    m = hyst_model_load(file);
+    check(strcmp(m.kind, 'everett_grid') && isequal(m.knots, [0 1 1.4 3]) && ...
+          isequal(m.weights, [1 0.5 8 0.2 0.5 1]) && m.y_lo == 0, 'the grid as loaded');
+    x = [signal(3000, 0, 3, 40); grid_loops()];
+    write_numbers(fx, x);
+    y = hyst_sim(m, x);
+    c = read_numbers(run_cli(ctx, sprintf('sim --model "%s" --digits 17 "%s" 2>/dev/null', ...
+                                          file, fx)));
+    d = m.delay;
+    check(isequal(c(d + 1:end), y(1:end - d)), 'creep %d: sim differs from hyst sim --model', ...
+          with_creep);
+    write_numbers(fy, y);
+    c = read_numbers(run_cli(ctx, sprintf('inv --model "%s" --digits 17 "%s" 2>/dev/null', ...
+                                          file, fy)));
+    xd = hyst_inv(m, y);
+    check(isequal(c, xd), 'creep %d: inv differs from hyst inv --model', with_creep);
+    err = max(abs(hyst_sim(m, xd) - y));
+    check(err < 1e-8 * (max(y) - min(y)), 'creep %d: |sim(inv(y)) - y| up to %g', with_creep, err);
+    ys = hyst_sim(m, single(x));
+    check(isa(ys, 'single') && max(abs(double(ys) - y)) < 1e-5 * (max(y) - min(y)), ...
+          'creep %d: single does not follow double', with_creep);
+  end
+end
+
+function t_grid_written_as_cli(ctx)
+  % a grid fitted and saved by hyst fit --kind everett_grid, loaded and
+  % saved again: the same text; the creep plant's file round-trips
+  [~, ~, rec] = grid_record(ctx);
+  cli_file = fullfile(ctx.tmp, 'grid_cli.hyst');
+  run_cli(ctx, sprintf(['fit --kind everett_grid --degree 3 --delay 0 --creep none ' ...
+                        '--save "%s" "%s" 2>&1'], cli_file, rec));
+  plant = fullfile(ctx.tmp, 'grid_plant.hyst');
+  again = fullfile(ctx.tmp, 'grid_again.hyst');
+  hyst_model_save(again, hyst_model_load(cli_file));
+  check(strcmp(fileread(again), fileread(cli_file)), 'the text differs from hyst fit --save''s');
+  write_text(plant, grid_plant_text(true));
+  hyst_model_save(again, hyst_model_load(plant));
+  check(isequal(hyst_model_load(again), hyst_model_load(plant)), 'the creep plant differs');
+end
+
+function t_grid_header_equals_cli(ctx)
+  % hyst_header of a grid: hyst header --model's text after the first line
+  file = fullfile(ctx.tmp, 'grid_h.hyst');
+  write_text(file, grid_plant_text(false));
+  run_cli(ctx, sprintf('header --model "%s" --dir "%s" gridm 2>&1', file, ctx.tmp));
+  cli_text = fileread(fullfile(ctx.tmp, 'gridm.h'));
+  text = hyst_header(hyst_model_load(file), 'gridm');
+  check(strcmp(after_first_line(text), after_first_line(cli_text)), ...
+        'hyst_header differs from hyst header --model');
+end
+
+function t_grid_refused(ctx)
+  m = hyst_model_load(fullfile(ctx.tmp, 'grid_h.hyst'));
+  expect_error('hyst:usage', @() hyst_inv(m, 1, 'intervals', 32));
+  expect_error('hyst:usage', @() hyst_header(m, 'g', 'compensator', true));
+  bad = m;
+  bad.weights(2) = -0.5;
+  expect_error('hyst:ERR_NOT_MONOTONE', @() hyst_sim(bad, 1));
+  bad = m;
+  bad.weights = [1 2];
+  expect_error('hyst:usage', @() hyst_model_save(fullfile(ctx.tmp, 'bad.hyst'), bad));
+  check(~exist(fullfile(ctx.tmp, 'bad.hyst'), 'file'), 'a refused model was written');
+end
+
+function [x, y, rec] = grid_record(ctx)
+  x = grid_loops();
+  plant = fullfile(ctx.tmp, 'grid_plant.hyst');
+  write_text(plant, grid_plant_text(false));
+  y = hyst_sim(hyst_model_load(plant), x);
+  rec = fullfile(ctx.tmp, 'grid_rec.txt');
+  fid = fopen(rec, 'w');
+  fprintf(fid, '%.17g %.17g\n', [x y]');
+  fclose(fid);
+end
+
+function t_grid_fit_as_cli(ctx)
+  % 'kind', 'everett_grid' fits as hyst fit --kind everett_grid: the same
+  % knots and masses, the knots near the plant's
+  [x, y, rec] = grid_record(ctx);
+  cli_file = fullfile(ctx.tmp, 'grid_cli.hyst');
+  run_cli(ctx, sprintf(['fit --kind everett_grid --degree 3 --delay 0 --creep none ' ...
+                        '--save "%s" "%s" 2>&1'], cli_file, rec));
+  c = hyst_model_load(cli_file);
+  f = hyst_fit(x, y, 'kind', 'everett_grid', 'degree', 3, 'creep', 'none');
+  check(strcmp(f.kind, 'everett_grid') && f.monotone && isequal(f.knots, c.knots) && ...
+        isequal(f.weights, c.weights) && f.y_lo == c.y_lo, 'the grid differs from hyst fit''s');
+  check(abs(f.knots(2) - 1) < 0.02 && abs(f.knots(3) - 1.4) < 0.02, 'knots %s', mat2str(f.knots));
+  err = sqrt(mean((hyst_sim(f, x) - y) .^ 2));
+  check(err < 0.01 * (max(y) - min(y)), 'the fitted grid misses the plant by %g', err);
+end
+
+function t_grid_chosen_as_cli(ctx)
+  % 'degree', [] considers the grids as hyst fit does: on the near step (a
+  % sharp loop, as an SMA's) both choose a grid, of the same degree and
+  % delay, and save the same model
+  [x, y, rec] = grid_record(ctx);
+  cli_file = fullfile(ctx.tmp, 'grid_auto.hyst');
+  out = run_cli(ctx, sprintf('fit --creep none --save "%s" "%s" 2>&1', cli_file, rec));
+  t = regexp(out, 'chosen by hold-out: degree (\d+), delay (\d+) \(kind (\w+)', 'tokens', 'once');
+  f = hyst_fit(x, y, 'degree', [], 'delay', [], 'creep', 'none');
+  check(strcmp(t{3}, 'everett_grid') && strcmp(f.kind, 'everett_grid') && ...
+        f.degree == str2double(t{1}) && f.delay == str2double(t{2}), ...
+        'the choice differs from hyst fit''s: %s', strjoin(t, ' '));
+  kinds = unique({f.candidates.kind});
+  check(isequal(kinds, {'everett', 'everett_grid', 'poly'}), 'kinds %s', strjoin(kinds, ' '));
+  c = hyst_model_load(cli_file);
+  check(isequal(f.knots, c.knots) && isequal(f.weights, c.weights), 'the grid saved differs');
 end

@@ -150,6 +150,25 @@ def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
     return _with_creep(m, creep_tau, creep_weight)
 
 
+def ModelFromEverettGrid(knots, weights, y_lo, *, dtype=np.float64, capacity=DEFAULT_CAPACITY,
+                         deadband=0.0, inverse=False, creep_tau=None, creep_weight=None):
+    """The asymmetric kind on a grid (hyst_everett_grid_t): E of a Preisach
+    density constant on each cell of the grid of ``knots`` (K + 1 strictly
+    increasing, K in 1..12; lo the first, hi the last), the cell (i, j)'s
+    mass ``weights[i (i + 1) / 2 + j]`` (K (K + 1) / 2 numbers, >= 0);
+    ``y_lo`` the output at lo after reset (hyst_*_curve_from_everett_grid(),
+    docs/theory.md). ``inverse=True`` gives its compensator, each branch
+    solved in closed form (hyst_*_curve_everett_grid_inverse()). What the
+    library refuses raises ``HystError``. ``creep_tau``, ``creep_weight``: a
+    creep term, as :func:`Model` and :func:`Compensator` take it."""
+    m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
+        list(map(float, knots)), list(map(float, weights)), float(y_lo), int(capacity),
+        bool(inverse))
+    if deadband:
+        m.deadband = deadband
+    return _with_creep(m, creep_tau, creep_weight)
+
+
 def _creep_of(desc):
     """The creep keys of a description (none when it has no creep term)."""
     return {"creep_tau": desc.get("creep_tau"), "creep_weight": desc.get("creep_weight")}
@@ -172,7 +191,13 @@ def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
     ``creep_weight``, and its rate term (docs/rate.md: the output plus
     ``rate_weight`` times a low-pass, of time constant ``rate_tau`` samples,
     of the input's change) when it has ``rate_tau`` and ``rate_weight``.
-    A model with a rate term has no snapshot (``save()`` raises)."""
+    A model with a rate term has no snapshot (``save()`` raises). Kind
+    everett_grid (``y_lo``, ``knots``, ``weights``) is E on a grid
+    (hyst_*_curve_from_everett_grid()), as ``hyst sim --model`` runs it."""
+    if desc.get("kind", "poly") == "everett_grid":
+        return _with_rate(ModelFromEverettGrid(desc["knots"], desc["weights"], desc["y_lo"],
+                                               dtype=dtype, capacity=capacity,
+                                               **_creep_of(desc)), desc)
     if desc.get("kind", "poly") == "everett":
         return _with_rate(ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
                                            desc["terms"], dtype=dtype, capacity=capacity,
@@ -191,7 +216,18 @@ def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inter
     kind's: given for kind poly, it raises ``HystError`` (ERR_ARG). With
     the description's creep term, the compensator subtracts the creep's
     contribution from each desired output first (:func:`Compensator`); with
-    its rate term, the rate term's too (known before the drive is chosen)."""
+    its rate term, the rate term's too (known before the drive is chosen).
+    Kind everett_grid's compensator solves each branch in closed form
+    (hyst_*_curve_everett_grid_inverse(), as ``hyst inv --model``): it has
+    no table (``intervals`` or ``rows`` given raise ``HystError``, ERR_ARG)."""
+    if desc.get("kind", "poly") == "everett_grid":
+        if intervals or rows is not None:
+            raise HystError(_hyst.Status.ERR_ARG,
+                            "kind everett_grid has no tabulated compensator (it solves each "
+                            "branch in closed form)")
+        return _with_rate(ModelFromEverettGrid(desc["knots"], desc["weights"], desc["y_lo"],
+                                               dtype=dtype, capacity=capacity, inverse=True,
+                                               **_creep_of(desc)), desc)
     if desc.get("kind", "poly") == "everett":
         return _with_rate(ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
                                            desc["terms"], dtype=dtype, capacity=capacity,
@@ -274,6 +310,9 @@ class Fit:
         if self.kind == "everett":
             d = {"kind": "everett", "degree": self.degree, "lo": self.lo, "hi": self.hi,
                  "y_lo": self.y_lo, "terms": list(self.terms)}
+        elif self.kind == "everett_grid":
+            d = {"kind": "everett_grid", "lo": self.lo, "hi": self.hi, "y_lo": self.y_lo,
+                 "knots": list(self.knots), "weights": list(self.weights)}
         else:
             d = {"kind": "poly", "coeffs": list(self.coeffs), "lo": self.lo, "hi": self.hi}
         if self.creep_tau:
@@ -338,6 +377,10 @@ class Fit:
                     f"terms=[{t}], "
                     f"y_lo={self.y_lo:.9g}, lo={self.lo:.9g}, hi={self.hi:.9g}, "
                     f"rms={self.rms:.6g}{creep})")
+        if self.kind == "everett_grid":
+            k = ", ".join(f"{v:.9g}" for v in self.knots)
+            return (f"Fit(kind='everett_grid', intervals={self.degree}, knots=[{k}], "
+                    f"y_lo={self.y_lo:.9g}, rms={self.rms:.6g}{creep})")
         c = ", ".join(f"{v:.9g}" for v in self.coeffs)
         return (f"Fit(coeffs=[{c}], lo={self.lo:.9g}, hi={self.hi:.9g}, "
                 f"rms={self.rms:.6g}, max_abs={self.max_abs:.6g}, method={self.method!r}{creep})")
@@ -353,10 +396,12 @@ CREEP_PARAMS = _hyst.FIT_CREEP_PARAMETERS
 
 
 #: The kinds fit() knows.
-KINDS = ("poly", "everett")
+KINDS = ("poly", "everett", "everett_grid")
 
 
 def _fit_one(x, y, kind, degree, method, lo, hi, skip, delay, t_degree=None):
+    if kind == "everett_grid":  # degree: the grid's knot intervals
+        return _hyst.fit_grid(x, y, degree, lo, hi, skip, delay)
     if kind == "everett":
         return _hyst.fit_everett(x, y, degree, lo, hi, skip, delay,
                                  -1 if t_degree is None else int(t_degree))
@@ -365,7 +410,7 @@ def _fit_one(x, y, kind, degree, method, lo, hi, skip, delay, t_degree=None):
 
 def _refusal(res):
     """Why the fitted parameters give no model, or None when they do."""
-    if res.get("kind") == "everett":
+    if res.get("kind") in ("everett", "everett_grid"):
         st = res["curve_status"]
         if st == _hyst.Status.ERR_NOT_MONOTONE:
             return "E not monotone"
@@ -377,11 +422,15 @@ def _score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau):
     """One candidate (kind, degree deg, t_degree k, delay d) scored on the
     hold-out splits; with creep_tau >= 0 also its creep term (hyst fit's
     fit_score(), tools/cli/fit_select.c)."""
-    c = _hyst.score(x, y, _hyst.FIT_EVERETT if kind == "everett" else _hyst.FIT_POLY, int(deg),
+    c = _hyst.score(x, y, _FIT_KINDS[kind], int(deg),
                     0 if k is None else int(k), _METHODS[method], lo, hi, skip, int(d),
                     creep_tau)
     c["status"] = _status(c)
     return c
+
+
+_FIT_KINDS = {"poly": _hyst.FIT_POLY, "everett": _hyst.FIT_EVERETT,
+              "everett_grid": _hyst.FIT_GRID}
 
 
 def _status(c):
@@ -409,8 +458,9 @@ def _select(x, y, kinds, method, lo, hi, skip, delay, t_degree=None, creep_tau=-
     else None, and the search (fit_search(): with delay None the delays are
     scaled to the drive and a fraction of a sample may be chosen; its "x"
     is then the drive interpolated, which the model is fitted on)."""
-    mask = ((_hyst.FIT_POLY if "poly" in kinds else 0) |
-            (_hyst.FIT_EVERETT if "everett" in kinds else 0))
+    mask = 0
+    for k in kinds:
+        mask |= _FIT_KINDS[k]
     cands, best, with_creep, domain, search = _hyst.select(
         x, y, mask, _METHODS[method], lo, hi, skip, -1 if delay is None else int(delay),
         -1 if t_degree is None else int(t_degree), creep_tau)
@@ -450,7 +500,7 @@ def _final_creep(res, x, y, kind, skip, delay, tau):
                          math.isfinite(c["offset"])):
         raise ValueError(f"the creep term of time constant {tau:g} samples could not be fitted "
                          "to the model's residual (a drive that never moves?)")
-    if kind == "everett":
+    if kind in ("everett", "everett_grid"):
         res["y_lo"] += c["offset"]
     else:
         res["coeffs"][-1] += c["offset"]
@@ -538,7 +588,7 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
         raise ValueError("delay=None (chosen) needs degree=None")
     elif creep_tau >= 0 and len(x) > skip + int(delay):
         # the model as given, its creep term scored by the same hold-out
-        k = None if (kind or "poly") == "poly" else (
+        k = None if (kind or "poly") in ("poly", "everett_grid") else (
             int(degree) - 1 if t_degree is None else int(t_degree))
         chosen = _score(x, y, kind or "poly", int(degree), k, int(delay), method, lo, hi, skip,
                         creep_tau)

@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: MIT
 """Model files in the format hyst-model-text 1, the one ``hyst fit --save``
 writes and ``hyst sim --model`` reads (docs/cli.md, "Model files"), also
-read and written by the MATLAB/Octave functions. Two kinds: ``poly`` (f0,
-coefficients highest power first) and ``everett`` (the asymmetric kind's
-branch function E)."""
+read and written by the MATLAB/Octave functions. Three kinds: ``poly`` (f0,
+coefficients highest power first), ``everett`` (the asymmetric kind's
+branch function E) and ``everett_grid`` (E of a Preisach density constant
+on each cell of a grid: ``knots``, ``weights``)."""
 import math
 import os
 import tempfile
@@ -13,6 +14,7 @@ _MAX_COEFFS = 10  # HYST_MAX_DEGREE + 1 in the default build
 _MAX_BYTES = 1 << 20  # MODEL_TEXT_MAX_BYTES: a larger file is refused unread
 _EVERETT_MAX_DEGREE = 4  # HYST_EVERETT_MAX_DEGREE
 _CREEP_MAX_TERMS = 4  # HYST_CREEP_MAX_TERMS
+_GRID_MAX_INTERVALS = 12  # HYST_EVERETT_GRID_MAX_INTERVALS
 
 
 def everett_terms(degree):
@@ -56,7 +58,7 @@ def _rate_args(rate_tau, rate_weight):
 
 
 def _model_call(what, kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
-                creep_weight, *before, identified=None, rate=()):
+                creep_weight, *before, identified=None, rate=(), knots=(), weights=()):
     """The extension's model_write or model_header (tools/model_text), the
     model given by its parts (checked there as the reader checks a file)."""
     from . import _hyst
@@ -67,11 +69,13 @@ def _model_call(what, kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_ta
              list(creep_tau or []), list(creep_weight or [])]
     if what == "model_write":
         args.append([float(v) for v in identified] if identified is not None else [])
-    return getattr(_hyst, what)(*before, *args, rate=list(rate))
+    return getattr(_hyst, what)(*before, *args, rate=list(rate), knots=list(knots or []),
+                                weights=list(weights or []))
 
 
 def load_model(path):
-    """Reads a model file. Returns a dict: ``kind`` ("poly" or "everett"),
+    """Reads a model file. Returns a dict: ``kind`` ("poly", "everett" or
+    "everett_grid"),
     ``lo``, ``hi``, ``delay`` (samples, 0 when absent; an int, or a float
     with a sub-sample delay such as 3.5: the model's input is then
     (1 - f) x[k] + f x[k - 1]), ``identified`` (only when the file records
@@ -79,6 +83,8 @@ def load_model(path):
     branches continued beyond it up to [lo, hi]) and, for poly,
     ``coeffs`` (highest power first); for everett ``y_lo``, ``degree`` and
     ``terms`` (e[i-1][j] of w^i t^j, i = 1..degree, then j = 0..degree-i);
+    for everett_grid ``y_lo``, ``knots`` (lo first, hi last) and ``weights``
+    (the cells' masses, weight[i (i + 1) / 2 + j]);
     with a creep term also ``creep_tau`` (time constants, samples) and
     ``creep_weight`` (lists of 1 to 4 numbers, one per lag; the keys are
     absent when the file has none); with a rate term also ``rate_tau``
@@ -112,10 +118,22 @@ def _everett_args(degree, y_lo, terms):
     return int(degree), float(y_lo), terms
 
 
+def _grid_args(y_lo, knots, weights):
+    """Checks an everett_grid description; returns (y_lo, knots, weights) as
+    numbers (their values are checked by the reader's checks in C)."""
+    if y_lo is None or knots is None or weights is None:
+        raise ValueError("kind 'everett_grid' needs y_lo, knots and weights")
+    knots = [float(v) for v in knots]
+    weights = [float(v) for v in weights]
+    if not 2 <= len(knots) <= _GRID_MAX_INTERVALS + 1:
+        raise ValueError(f"knots: 2 to {_GRID_MAX_INTERVALS + 1} numbers")
+    return float(y_lo), knots, weights
+
+
 def _poly_args(coeffs, kind, degree, y_lo, terms):
     """Checks a poly description; returns its coefficients as numbers."""
     if kind != "poly":
-        raise ValueError(f"kind must be 'poly' or 'everett', not {kind!r}")
+        raise ValueError(f"kind must be 'poly', 'everett' or 'everett_grid', not {kind!r}")
     if degree is not None or y_lo is not None or terms is not None:
         raise ValueError("degree, y_lo and terms belong to kind 'everett'")
     coeffs = [float(c) for c in coeffs] if coeffs is not None else []
@@ -126,11 +144,12 @@ def _poly_args(coeffs, kind, degree, y_lo, terms):
 
 def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", degree=None,
                y_lo=None, terms=None, creep_tau=None, creep_weight=None, identified=None,
-               rate_tau=None, rate_weight=None):
+               rate_tau=None, rate_weight=None, knots=None, weights=None):
     """Writes a model file (17 significant digits: the same doubles read
     back), replacing ``path`` whole or not at all. ``kind="everett"`` writes
     the asymmetric kind from ``degree``, ``y_lo`` and ``terms`` (no
-    ``coeffs``). ``creep_tau`` and ``creep_weight`` (both or neither, 1 to 4
+    ``coeffs``); ``kind="everett_grid"`` the kind on a grid from ``y_lo``,
+    ``knots`` and ``weights``, as ``hyst fit --save`` writes it. ``creep_tau`` and ``creep_weight`` (both or neither, 1 to 4
     numbers each, time constants >= 1 sample) add a creep term, written after
     the model as ``hyst fit --save`` writes it; ``rate_tau`` and
     ``rate_weight`` (both or neither, one number each, the time constant >= 1
@@ -146,10 +165,18 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
         if coeffs is not None:
             raise ValueError("kind 'everett' has terms, not coeffs")
         degree, y_lo, terms = _everett_args(degree, y_lo, terms)
+    elif kind == "everett_grid":
+        if coeffs is not None or degree is not None or terms is not None:
+            raise ValueError("kind 'everett_grid' has y_lo, knots and weights, not coeffs, "
+                             "degree or terms")
+        y_lo, knots, weights = _grid_args(y_lo, knots, weights)
     else:
+        if knots is not None or weights is not None:
+            raise ValueError("knots and weights belong to kind 'everett_grid'")
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
     text = _model_call("model_write", kind, lo, hi, delay, coeffs, degree, y_lo, terms,
-                       creep_tau, creep_weight, identified=identified, rate=rate)
+                       creep_tau, creep_weight, identified=identified, rate=rate, knots=knots,
+                       weights=weights)
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=os.path.basename(path) + ".")
     try:
@@ -187,11 +214,13 @@ def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals
 def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,
                 terms=None, delay=0, compensator=False, intervals=None, rows=None,
                 creep_tau=None, creep_weight=None, identified=None, rate_tau=None,
-                rate_weight=None):
+                rate_weight=None, knots=None, weights=None):
     """C header declaring the firmware's model as ``hyst fit --header``
     writes it: ``static const hyst_poly_t name`` (f0), or for
     ``kind="everett"`` ``static const hyst_everett_t name`` (degree, lo, hi,
-    y_lo, e[i-1][j]); 17-digit literals in HYST_REAL_C(), exact in a double
+    y_lo, e[i-1][j]), for ``kind="everett_grid"`` ``static const
+    hyst_everett_grid_t name`` (knots, y_lo, weights; no compensator's
+    table: its compensator needs none); 17-digit literals in HYST_REAL_C(), exact in a double
     build (HYST_USE_DOUBLE). ``delay`` and ``identified`` are not part of a
     header; they are accepted so that a :func:`load_model` dict can be
     passed whole.
@@ -222,12 +251,19 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
         degree, y_lo, terms = _everett_args(degree, y_lo, terms)
         what = (f"asymmetric model (branch function E),\n * degree {degree}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
+    elif kind == "everett_grid":
+        if compensator:
+            raise ValueError("kind everett_grid has no tabulated compensator (it solves each "
+                             "branch in closed form)")
+        y_lo, knots, weights = _grid_args(y_lo, knots, weights)
+        what = (f"asymmetric model on a grid of {len(knots) - 1} knot intervals,\n * "
+                f"domain [{float(lo):.9g}, {float(hi):.9g}]")
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
         what = (f"major ascending curve f0,\n * degree {len(coeffs) - 1}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
     head = _model_call("model_header", kind, lo, hi, 0, coeffs, degree, y_lo, terms, creep_tau,
-                       creep_weight, name, True, rate=rate)
+                       creep_weight, name, True, rate=rate, knots=knots, weights=weights)
     table = (_compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows)
              if compensator else "")
     from . import _hyst

@@ -159,6 +159,8 @@ template <class T> struct Ops;
         static constexpr auto curve_from_pwl = hyst_##P##_curve_from_pwl_;  \
         static constexpr auto curve_from_everett = hyst_##P##_curve_from_everett_; \
         static constexpr auto curve_everett_inverse_table = hyst_##P##_curve_everett_inverse_table; \
+        static constexpr auto curve_from_everett_grid = hyst_##P##_curve_from_everett_grid_; \
+        static constexpr auto curve_everett_grid_inverse = hyst_##P##_curve_everett_grid_inverse; \
         static constexpr auto step = hyst_##P##_step;                       \
         static constexpr auto process = hyst_##P##_process;                 \
         static constexpr auto set_deadband = hyst_##P##_set_deadband;       \
@@ -229,11 +231,12 @@ template <class X, class Y, class Fn> nb::object block(const In<X> &x, nb::handl
 struct Tcm {
     hyst_tcm_t S{};
     int block_status = HYST_OK; /* returned by the last process() */
-    const char *kind = "poly";  /* the curve's kind: poly, pwl or everett */
+    const char *kind = "poly";  /* the curve's kind: poly, pwl, everett or everett_grid */
     std::vector<double> coeffs; /* poly: f0, highest power first */
     std::vector<double> terms;  /* everett: E's coefficients, as make_everett() takes them */
     double lo = 0.0, hi = 0.0;
-    double y_lo = 0.0;          /* everett: the output at lo */
+    double y_lo = 0.0;          /* everett, everett_grid: the output at lo */
+    std::vector<double> knots, weights; /* everett_grid: its knots and cells' masses */
 
     Tcm() = default;
     Tcm(const Tcm &) = delete;
@@ -348,6 +351,7 @@ template <class T> struct Real : Owned<T, T> {
     hyst_curve_t fwd{}; /* a piecewise-linear f0 or an E (the model's curve; inv derives from it) */
     std::vector<T> bx, by; /* its breakpoints (fwd points at them) */
     std::vector<T> table;  /* the tabulated compensator's table (inv points at it) */
+    std::vector<T> grid_table; /* a grid E's table (fwd, and inv, point at it) */
     bool inverse;
     size_t intervals = 0u; /* the table's intervals (per row); 0: the exact compensator */
     size_t rows = 0u;      /* the asymmetric kind's table: rows per direction; 0: none */
@@ -421,6 +425,51 @@ template <class T> struct Real : Owned<T, T> {
         this->terms = terms_;
         this->lo = lo_;
         this->hi = hi_;
+        this->y_lo = y_lo_;
+    }
+
+    /* The asymmetric kind on a grid (hyst_everett_grid_t: knots, the
+     * cells' masses weight[i (i + 1) / 2 + j], y_lo), or its compensator
+     * (HYST_CURVE_EVERETT_GRID_INV, each branch solved in closed form: no
+     * table), as `hyst sim --model` and `hyst inv --model` build them. */
+    Real(const std::vector<double> &knots_, const std::vector<double> &weights_, double y_lo_,
+         size_t capacity, bool inverse_)
+        : Owned<T, T>(capacity), inverse(inverse_)
+    {
+        if (knots_.size() < 2u || knots_.size() > HYST_EVERETT_GRID_MAX_INTERVALS + 1u) {
+            raise_status(HYST_ERR_ARG, "a grid needs 2 .. HYST_EVERETT_GRID_MAX_INTERVALS + 1 "
+                                       "knots");
+        }
+        const size_t k = knots_.size() - 1u;
+        if (weights_.size() != HYST_EVERETT_GRID_CELLS(k)) {
+            raise_status(HYST_ERR_ARG, "a grid of K knot intervals needs K (K + 1) / 2 weights");
+        }
+        hyst_everett_grid_t g{};
+        g.intervals = static_cast<unsigned>(k);
+        g.y_lo = static_cast<hyst_wide_t>(y_lo_);
+        for (size_t i = 0u; i < knots_.size(); ++i) {
+            g.knots[i] = static_cast<hyst_wide_t>(knots_[i]);
+        }
+        for (size_t i = 0u; i < weights_.size(); ++i) {
+            g.weight[i] = static_cast<hyst_wide_t>(weights_[i]);
+        }
+        grid_table.resize(HYST_EVERETT_GRID_TABLE_LEN(k));
+        check(O::curve_from_everett_grid(&fwd, &g, grid_table.data(), grid_table.size(),
+                                         HYST_LAYOUT),
+              "curve");
+        const hyst_curve_t *c = &fwd;
+        if (inverse) {
+            check(O::curve_everett_grid_inverse(&inv, &fwd), "inverse curve");
+            c = &inv;
+        }
+        check(O::init_curve(&this->S, c, this->xl.data(), this->yl.data(), this->xr.data(),
+                            this->yr.data(), capacity, HYST_LAYOUT),
+              inverse ? "compensator init" : "model init");
+        this->kind = "everett_grid";
+        this->knots = knots_;
+        this->weights = weights_;
+        this->lo = knots_.front();
+        this->hi = knots_.back();
         this->y_lo = y_lo_;
     }
 
@@ -658,8 +707,8 @@ nb::dict holdout(Real<double> &m, const In<double> &x, const In<double> &y, size
         raise_status(HYST_ERR_ARG, "x and y differ in length");
     }
     if (m.has_creep || m.inverse || std::strcmp(m.kind, "pwl") == 0) {
-        raise_status(HYST_ERR_ARG, "holdout runs a model of kind poly or everett, without a "
-                                   "creep term");
+        raise_status(HYST_ERR_ARG, "holdout runs a model of kind poly, everett or everett_grid, "
+                                   "without a creep term");
     }
     hyst_poly_t f0{};
     const bool poly = std::strcmp(m.kind, "poly") == 0;
@@ -870,13 +919,53 @@ nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, 
     return d;
 }
 
+/*
+ * The asymmetric kind on a grid of k knot intervals fitted to a record as
+ * `hyst fit --kind everett_grid` fits it (fit_grid_record(),
+ * tools/cli/fit_grid.c): the knots where the output steps, the cells'
+ * masses by least squares; on [lo, hi], or the inputs' range when lo == hi.
+ * A dict as fit_everett() gives (knots, weights instead of terms; rms the
+ * model's run over the samples fitted, or the least-squares residual when
+ * the library refuses the grid: curve_status).
+ */
+nb::dict fit_grid(const In<double> &x, const In<double> &y, unsigned k, double lo, double hi,
+                  size_t skip, size_t delay)
+{
+    const size_t n = x.shape(0);
+    if (y.shape(0) != n) {
+        raise_status(HYST_ERR_ARG, "x and y differ in length");
+    }
+    if (skip >= n || delay >= n - skip) {
+        raise_status(HYST_ERR_ARG, "skip + delay leaves no sample");
+    }
+    const hyst_ident_config_t cfg = ident_config(x, y, k, 0, lo, hi, skip, delay);
+    fit_everett_result_t r;
+    check(fit_grid_record(&cfg, k, x.data(), y.data(), n, &r), "fit");
+    const hyst_everett_grid_t &g = r.grid;
+    nb::dict d;
+    d["kind"] = "everett_grid";
+    d["degree"] = g.intervals;
+    d["lo"] = static_cast<double>(g.knots[0]);
+    d["hi"] = static_cast<double>(g.knots[g.intervals]);
+    d["y_lo"] = static_cast<double>(g.y_lo);
+    d["knots"] = std::vector<double>(g.knots, g.knots + g.intervals + 1u);
+    d["weights"] = std::vector<double>(g.weight, g.weight + HYST_EVERETT_GRID_CELLS(g.intervals));
+    d["rms"] = r.curve_status == HYST_OK ? r.rms : r.ls_rms;
+    d["max_abs"] = r.max_abs;
+    d["used"] = r.used;
+    d["curve_status"] = static_cast<int>(r.curve_status);
+    return d;
+}
+
 /* ---- the model file format, one implementation (tools/model_text) ---- */
 
 /* The load_model() dict of a model as the reader gives it. */
 nb::dict model_dict(const model_text_t &m)
 {
     nb::dict d;
-    d["kind"] = m.kind == MODEL_TEXT_EVERETT ? "everett" : "poly";
+    d["kind"] = m.kind == MODEL_TEXT_GRID      ? "everett_grid"
+                : m.kind == MODEL_TEXT_EVERETT ? "everett"
+                                               : "poly";
     d["lo"] = m.lo;
     d["hi"] = m.hi;
     if (m.delay_fraction > 0.0) { /* a sub-sample delay: a float, else an int */
@@ -891,6 +980,10 @@ nb::dict model_dict(const model_text_t &m)
         d["y_lo"] = m.y_lo;
         d["degree"] = m.degree;
         d["terms"] = std::vector<double>(m.terms, m.terms + m.nterms);
+    } else if (m.kind == MODEL_TEXT_GRID) {
+        d["y_lo"] = m.y_lo;
+        d["knots"] = std::vector<double>(m.knots, m.knots + m.nknots);
+        d["weights"] = std::vector<double>(m.weights, m.weights + m.nweights);
     } else {
         d["coeffs"] = std::vector<double>(m.coeffs, m.coeffs + m.ncoef);
     }
@@ -914,10 +1007,6 @@ nb::object model_parse(const nb::bytes &data, const std::string &path)
     if (model_text_parse(data.c_str(), data.size(), path.c_str(), &m, msg, sizeof msg) != 0) {
         return nb::str(msg);
     }
-    if (m.kind == MODEL_TEXT_GRID) { /* read by `hyst sim --model`, not here yet */
-        return nb::str((path + ": kind everett_grid is not supported here yet (hyst sim --model "
-                               "runs it)").c_str());
-    }
     return model_dict(m);
 }
 
@@ -936,13 +1025,15 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
                       const std::vector<double> &terms, const std::vector<double> &creep_tau,
                       const std::vector<double> &creep_weight,
                       const std::vector<double> &identified = {},
-                      const std::vector<double> &rate = {})
+                      const std::vector<double> &rate = {},
+                      const std::vector<double> &knots = {},
+                      const std::vector<double> &weights = {})
 {
     model_text_t m;
     char msg[MODEL_TEXT_MSG_SIZE];
     std::memset(&m, 0, sizeof m);
-    if (kind != "poly" && kind != "everett") {
-        throw nb::value_error("kind must be 'poly' or 'everett'");
+    if (kind != "poly" && kind != "everett" && kind != "everett_grid") {
+        throw nb::value_error("kind must be 'poly', 'everett' or 'everett_grid'");
     }
     if (!(delay >= 0.0 && delay <= static_cast<double>(MODEL_TEXT_MAX_DELAY))) {
         throw nb::value_error("delay is not a delay of 0 to 1000000000 samples");
@@ -958,7 +1049,9 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
         m.rate_tau = rate[0];
         m.rate_weight = rate[1];
     }
-    m.kind = kind == "everett" ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
+    m.kind = kind == "everett_grid" ? MODEL_TEXT_GRID
+             : kind == "everett"    ? MODEL_TEXT_EVERETT
+                                    : MODEL_TEXT_POLY;
     m.lo = lo;
     m.hi = hi;
     m.delay = static_cast<unsigned long>(delay);
@@ -975,6 +1068,11 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
         m.degree = static_cast<unsigned>(degree);
         m.y_lo = y_lo;
         copy_numbers(terms, m.terms, HYST_EVERETT_TERMS, &m.nterms);
+    } else if (m.kind == MODEL_TEXT_GRID) {
+        m.y_lo = y_lo;
+        copy_numbers(knots, m.knots, HYST_EVERETT_GRID_MAX_INTERVALS + 1u, &m.nknots);
+        copy_numbers(weights, m.weights,
+                     HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS), &m.nweights);
     } else {
         copy_numbers(coeffs, m.coeffs, HYST_MAX_DEGREE + 1u, &m.ncoef);
     }
@@ -991,10 +1089,11 @@ std::string model_write(const std::string &kind, double lo, double hi, double de
                         const std::vector<double> &coeffs, double degree, double y_lo,
                         const std::vector<double> &terms, const std::vector<double> &creep_tau,
                         const std::vector<double> &creep_weight,
-                        const std::vector<double> &identified, const std::vector<double> &rate)
+                        const std::vector<double> &identified, const std::vector<double> &rate,
+                        const std::vector<double> &knots, const std::vector<double> &weights)
 {
     const model_text_t m = model_of(kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
-                                    creep_weight, identified, rate);
+                                    creep_weight, identified, rate, knots, weights);
     std::vector<char> buf(16384u);
     const size_t len = model_text_write(&m, buf.data(), buf.size());
     if (len == 0u) {
@@ -1009,7 +1108,8 @@ std::string model_header(const std::string &name, bool open, const std::string &
                          double hi, const std::vector<double> &coeffs, double degree,
                          double y_lo, const std::vector<double> &terms,
                          const std::vector<double> &creep_tau,
-                         const std::vector<double> &creep_weight, const std::vector<double> &rate)
+                         const std::vector<double> &creep_weight, const std::vector<double> &rate,
+                         const std::vector<double> &knots, const std::vector<double> &weights)
 {
     if (!model_text_identifier(name.c_str()) || name.size() != std::strlen(name.c_str())) {
         throw nb::value_error(("'" + name + "' is not a C identifier").c_str());
@@ -1020,7 +1120,7 @@ std::string model_header(const std::string &name, bool open, const std::string &
     if (open) {
         const model_text_t m =
             model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, creep_tau, creep_weight, {},
-                     rate);
+                     rate, knots, weights);
         over = model_text_header_open(buf.data(), buf.size(), &len, name.c_str(), &m);
     } else {
         over = model_text_header_close(buf.data(), buf.size(), &len, name.c_str());
@@ -1062,9 +1162,9 @@ std::string model_header_table(const std::string &name, const std::string &kind,
 /* A scored candidate as the dict fit() lists. */
 nb::dict candidate_dict(const fit_candidate_t &c)
 {
-    const bool everett = c.kind == FIT_EVERETT;
+    const bool everett = c.kind == FIT_EVERETT, grid = c.kind == FIT_GRID;
     nb::dict d;
-    d["kind"] = everett ? "everett" : "poly";
+    d["kind"] = grid ? "everett_grid" : everett ? "everett" : "poly";
     d["degree"] = c.degree;
     d["t_degree"] = everett ? nb::cast(c.t_degree) : nb::none();
     d["delay"] = c.delay;
@@ -1073,14 +1173,15 @@ nb::dict candidate_dict(const fit_candidate_t &c)
     d["holdout_rms"] = c.holdout_rms;
     d["fit_rms"] = c.fit_rms;
     d["status_code"] = static_cast<int>(c.status);
-    d["increasing"] = everett || c.fit.increasing != 0;
+    d["increasing"] = everett || grid || c.fit.increasing != 0;
     d["creep_tau"] = c.creep.tau;
     d["creep_weight"] = c.creep.tau > 0 ? c.creep.weight : NAN;
     d["creep_holdout_rms"] = c.creep.tau > 0 ? c.creep.holdout_rms : NAN;
     return d;
 }
 
-/* One candidate (kind FIT_POLY or FIT_EVERETT, degree, t_degree, delay)
+/* One candidate (kind FIT_POLY, FIT_EVERETT or FIT_GRID (degree: its
+ * intervals), degree, t_degree, delay)
  * scored as the automatic choice scores it (fit_score(): the hold-out
  * splits), with its creep term unless creep_tau < 0 (0: chosen). */
 nb::dict score_candidate(const In<double> &x, const In<double> &y, int kind, unsigned degree,
@@ -1090,7 +1191,7 @@ nb::dict score_candidate(const In<double> &x, const In<double> &y, int kind, uns
     const hyst_ident_config_t base = ident_config(x, y, 0u, method, lo, hi, skip, 0u);
     fit_candidate_t c;
     std::memset(&c, 0, sizeof c);
-    c.kind = kind == FIT_EVERETT ? FIT_EVERETT : FIT_POLY;
+    c.kind = kind == FIT_EVERETT || kind == FIT_GRID ? kind : FIT_POLY;
     c.degree = degree;
     c.t_degree = t_degree;
     c.delay = delay;
@@ -1098,7 +1199,7 @@ nb::dict score_candidate(const In<double> &x, const In<double> &y, int kind, uns
     return candidate_dict(c);
 }
 
-/* Every candidate of the kinds (FIT_POLY | FIT_EVERETT) at the delay given
+/* Every candidate of the kinds (FIT_POLY | FIT_EVERETT | FIT_GRID) at the delay given
  * or, delay < 0, at the delays fit_search() chooses among, scored on the
  * hold-out splits: a list of dicts, the index chosen (None: none), whether
  * with its creep term, the chosen one's domain when widened
@@ -1147,7 +1248,8 @@ nb::tuple choose(const nb::list &cands, double creep_tau)
         const nb::dict d = nb::cast<nb::dict>(cands[i]);
         fit_candidate_t &c = cand[i];
         std::memset(&c, 0, sizeof c);
-        c.kind = nb::cast<std::string>(d["kind"]) == "everett" ? FIT_EVERETT : FIT_POLY;
+        const std::string kind = nb::cast<std::string>(d["kind"]);
+        c.kind = kind == "everett_grid" ? FIT_GRID : kind == "everett" ? FIT_EVERETT : FIT_POLY;
         c.degree = nb::cast<unsigned>(d["degree"]);
         c.t_degree = d.contains("t_degree") && !d["t_degree"].is_none()
                          ? nb::cast<unsigned>(d["t_degree"])
@@ -1225,6 +1327,9 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
                       bool, long long, std::optional<long long>>(),
              "degree"_a, "lo"_a, "hi"_a, "y_lo"_a, "terms"_a, "capacity"_a, "inverse"_a = false,
              "intervals"_a = 0, "rows"_a = nb::none())
+        .def(nb::init<const std::vector<double> &, const std::vector<double> &, double, size_t,
+                      bool>(),
+             "knots"_a, "weights"_a, "y_lo"_a, "capacity"_a, "inverse"_a = false)
         .def("step", &R::step, "x"_a, "One sample in, one output out.")
         .def_prop_rw("deadband", [](const R &s) { return s.deadband; }, &R::set_deadband)
         .def_prop_ro("output", [](const R &s) { return Ops<T>::output(&s.S); })
@@ -1388,6 +1493,8 @@ NB_MODULE(_hyst, m)
         .def_prop_ro("kind", [](const Tcm &s) { return s.kind; })
         .def_ro("coeffs", &Tcm::coeffs)
         .def_ro("terms", &Tcm::terms)
+        .def_ro("knots", &Tcm::knots)
+        .def_ro("weights", &Tcm::weights)
         .def_ro("lo", &Tcm::lo)
         .def_ro("hi", &Tcm::hi)
         .def_ro("y_lo", &Tcm::y_lo);
@@ -1427,11 +1534,13 @@ NB_MODULE(_hyst, m)
     m.def("model_write", &model_write, "kind"_a, "lo"_a, "hi"_a, "delay"_a, "coeffs"_a,
           "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
           "identified"_a = std::vector<double>(), "rate"_a = std::vector<double>(),
+          "knots"_a = std::vector<double>(), "weights"_a = std::vector<double>(),
           "A model file's text (ValueError for what the reader would refuse); rate: "
-          "(rate_tau, rate_weight), or empty.");
+          "(rate_tau, rate_weight), or empty; knots, weights: kind everett_grid's.");
     m.def("model_header", &model_header, "name"_a, "open"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
-          "rate"_a = std::vector<double>(),
+          "rate"_a = std::vector<double>(), "knots"_a = std::vector<double>(),
+          "weights"_a = std::vector<double>(),
           "A firmware header's opening (the model) or close, as `hyst header` writes them.");
     m.def("model_header_table", &model_header_table, "name"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "intervals"_a, "rows"_a,
@@ -1449,9 +1558,12 @@ NB_MODULE(_hyst, m)
           "hyst fit's rule (fit_choose()) over scored candidates: (index or None, with creep).");
     m.attr("FIT_POLY") = static_cast<int>(FIT_POLY);
     m.attr("FIT_EVERETT") = static_cast<int>(FIT_EVERETT);
+    m.attr("FIT_GRID") = static_cast<int>(FIT_GRID);
     m.attr("FIT_MAX_DELAY") = static_cast<unsigned long>(FIT_MAX_DELAY);
     m.attr("FIT_PARSIMONY") = FIT_PARSIMONY;
     m.attr("FIT_CREEP_PARAMETERS") = static_cast<unsigned>(FIT_CREEP_PARAMETERS);
     m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a = -1);
+    m.def("fit_grid", &fit_grid, "x"_a, "y"_a, "intervals"_a, "lo"_a, "hi"_a, "skip"_a,
+          "delay"_a);
 }
