@@ -102,6 +102,7 @@ hyst_status_t hyst_code_set_deadband(hyst_tcm_t *S, uint_least32_t codes)
     if (st != HYST_OK) {
         return st;
     }
+    hyst_code_bind_skip(S);
     S->deadband.code = (hyst_code_word_t)codes;
     hyst_code_set_detour(S);
     ++S->seq;
@@ -110,6 +111,11 @@ hyst_status_t hyst_code_set_deadband(hyst_tcm_t *S, uint_least32_t codes)
 
 hyst_status_t hyst_code_request_deadband(hyst_tcm_t *S, uint_least32_t codes)
 {
+    const hyst_status_t st = hyst_codes_deadband_check_(S, (unsigned)HYST_VARIANT_CODE, codes);
+    if (st != HYST_OK) {
+        return st;
+    }
+    hyst_code_bind_skip(S); /* before the request is posted */
     return hyst_codes_request_deadband_(S, (unsigned)HYST_VARIANT_CODE, codes);
 }
 

@@ -194,6 +194,7 @@ hyst_status_t hyst_q31_inv_set_deadband(hyst_tcm_t *S, hyst_q31_t width)
     if (st != HYST_OK) {
         return st;
     }
+    hyst_q31_inv_bind_skip(S);
     S->deadband.q31 = width;
     hyst_q31_inv_set_detour(S);
     ++S->seq;
@@ -206,6 +207,7 @@ hyst_status_t hyst_q31_inv_request_deadband(hyst_tcm_t *S, hyst_q31_t width)
     if (st != HYST_OK) {
         return st;
     }
+    hyst_q31_inv_bind_skip(S); /* before the counter, as the width */
     S->req_width.q31 = width; /* before the counter: the step reads it after */
     return hyst_post_request_(S, &S->req_deadband);
 }

@@ -205,6 +205,7 @@ HYST_INLINE TCM_Y TCM_NAME(branch_y)(const hyst_tcm_t *S, TCM_X x)
 }
 
 static TCM_NOINLINE TCM_Y TCM_NAME(emit_rare)(hyst_tcm_t *S, TCM_X x, int how);
+static void TCM_NAME(bind_skip)(hyst_tcm_t *S);
 static void TCM_NAME(close_window)(hyst_tcm_t *S);
 
 /* Float evaluation of an increasing G is not monotone at the rounding level
@@ -497,6 +498,7 @@ void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
     for (i = 0u; i < S->n_rtp; ++i) {
         XV(S->xrtp)[i] = TCM_NORM(XV(S->xrtp)[i]);
     }
+    TCM_NAME(bind_skip)(S); /* the run saved may have skipped a reversal (db_reach) */
     YV(S->forgot) = (TCM_Y)book->forgot;
     S->forgot_level = book->forgot_level;
     XV(S->db_reach) = (TCM_X)book->db_reach;
@@ -529,6 +531,7 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve,
     S->curve = curve;
     S->kind = kind;
     S->slow = (void (*)(void))(kind->slow != NULL ? kind->slow : TCM_NAME(step_slow));
+    S->skip = NULL; /* no deadband yet (bind_skip()) */
     /* -0 made +0: the anchor A0 = lo is a stored TP, and a restore
      * normalises every stored TP (resume_): one bit pattern either way */
     XV(S->lo) = TCM_NORM(lo);
@@ -827,6 +830,20 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
                 NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));
         }
         TCM_NAME(set_detour)(S);
+    }
+}
+
+/* The deadband's skip, called through S->skip: bound by the calls that can
+ * make a reversal skip (set_deadband, request_deadband, resume_), never by
+ * an init, so a firmware that sets no deadband does not link skip(). Written
+ * only while unbound: a request from another context never rewrites the
+ * pointer a step may be reading. */
+typedef void (*TCM_NAME(skip_fn))(hyst_tcm_t *S, TCM_X b, TCM_X a);
+#define TCM_SKIP(S, b, a) ((TCM_NAME(skip_fn))(S)->skip)((S), (b), (a))
+static void TCM_NAME(bind_skip)(hyst_tcm_t *S)
+{
+    if (S->skip == NULL) {
+        S->skip = (void (*)(void))TCM_NAME(skip);
     }
 }
 

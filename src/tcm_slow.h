@@ -124,7 +124,7 @@ static TCM_NOINLINE TCM_Y TCM_SLOW(reverse_up)(hyst_tcm_t *S, TCM_X x, TCM_X x_p
     TCM_NAME(fresh)(S);
     TCM_NAME(release_held)(S);
     if (TCM_NAME(skips)(S, (TCM_X)(XV(S->xrtp)[nr - 1u] - x_prev))) {
-        TCM_NAME(skip)(S, x_prev, XV(S->xrtp)[nr - 1u]); /* keep falling */
+        TCM_SKIP(S, x_prev, XV(S->xrtp)[nr - 1u]); /* keep falling */
     } else {
         if (nl == S->capacity) {
             /* Only the LTP array can fill (A0 takes one of its entries). */
@@ -152,7 +152,7 @@ static TCM_NOINLINE TCM_Y TCM_SLOW(reverse_down)(hyst_tcm_t *S, TCM_X x, TCM_X x
     TCM_NAME(fresh)(S);
     TCM_NAME(release_held)(S);
     if (TCM_NAME(skips)(S, (TCM_X)(x_prev - XV(S->xltp)[nl - 1u]))) {
-        TCM_NAME(skip)(S, XV(S->xltp)[nl - 1u], x_prev); /* keep rising */
+        TCM_SKIP(S, XV(S->xltp)[nl - 1u], x_prev); /* keep rising */
     } else {
         XV(S->xrtp)[nr] = TCM_NORM(x_prev);
         YV(S->yrtp)[nr] = YV(S->y_prev);

@@ -321,6 +321,7 @@ static hyst_status_t NUM_NAME(set_deadband_impl)(hyst_tcm_t *S, NUM_T width)
     if (st != HYST_OK) {
         return st;
     }
+    NUM_NAME(bind_skip)(S);
     S->deadband.NUM_F = width;
     NUM_NAME(set_detour)(S);
     ++S->seq;
@@ -333,6 +334,7 @@ static hyst_status_t NUM_NAME(request_deadband_impl)(hyst_tcm_t *S, NUM_T width)
     if (st != HYST_OK) {
         return st;
     }
+    NUM_NAME(bind_skip)(S); /* before the counter, as the width */
     S->req_width.NUM_F = width; /* before the counter: the step reads it after */
     return hyst_post_request_(S, &S->req_deadband);
 }

@@ -401,6 +401,38 @@ static void test_snapshot_round_trips_bit_identically(void)
     }
 }
 
+/* A deadband requested from another context skips reversals as a set one
+ * does, on codes and in q31: the request binds the skip. */
+static void test_requested_deadband_skips_as_a_set_one(void)
+{
+    static const uint_least32_t walk[] = {40000u, 39998u, 39999u, 39998u, 39999u, 39997u};
+    static hyst_code_word_t cx[4][SNAP_CAP];
+    static float cy[4][SNAP_CAP];
+    hyst_t C1, C2;
+    size_t i;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_q31(&paper_eq20, 0u, 65535u, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_init(&Q2, &paper_eq20, 0u, 65535u, sx[0], sy[0],
+                                                 sx[1], sy[1], SNAP_CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init(&C1, &paper_eq20, 0u, 65535u, cx[0], cy[0],
+                                                  cx[1], cy[1], SNAP_CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init(&C2, &paper_eq20, 0u, 65535u, cx[2], cy[2],
+                                                  cx[3], cy[3], SNAP_CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_request_deadband(&Q, 3u));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_request_deadband(&C1, 3u));
+    for (i = 0u; i < sizeof walk / sizeof walk[0]; ++i) {
+        const hyst_q31_t q1 = hyst_q31_step(&Q, walk[i]), q2 = hyst_q31_step(&Q2, walk[i]);
+        const float y1 = hyst_code_step(&C1, walk[i]), y2 = hyst_code_step(&C2, walk[i]);
+        TEST_ASSERT_EQUAL_INT32(q1, q2);
+        TEST_ASSERT_EQUAL_MEMORY(&y1, &y2, sizeof y1);
+        if (i == 0u) { /* the requests apply at the end of the first sample */
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_set_deadband(&Q2, 3u));
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_set_deadband(&C2, 3u));
+        }
+    }
+    TEST_ASSERT_EQUAL_UINT(1u, (unsigned)hyst_tp_count(&Q)); /* 40000 only: the rest skipped */
+    TEST_ASSERT_EQUAL_UINT(1u, (unsigned)hyst_tp_count(&C1));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -413,5 +445,6 @@ int main(void)
     RUN_TEST(test_overflowing_curves_are_refused);
     RUN_TEST(test_snapshot_round_trips_bit_identically);
     RUN_TEST(test_bad_arguments_are_refused);
+    RUN_TEST(test_requested_deadband_skips_as_a_set_one);
     return UNITY_END();
 }

@@ -454,6 +454,26 @@ static void test_snapshot_round_trips_bit_identically(void)
     }
 }
 
+/* A deadband requested from another context skips reversals as a set one
+ * does: the request binds the skip. */
+static void test_requested_deadband_skips_as_a_set_one(void)
+{
+    static const hyst_q31_t walk[] = {40000L * 2048L, 39990L * 2048L, 39995L * 2048L,
+                                      39991L * 2048L, 39994L * 2048L, 39980L * 2048L};
+    size_t i;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_comp(&paper_eq20, 0u, 4095u, INTERVALS, SNAP_CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_comp2(&paper_eq20));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_inv_request_deadband(&C, 1 << 16));
+    for (i = 0u; i < sizeof walk / sizeof walk[0]; ++i) {
+        TEST_ASSERT_EQUAL_INT32(hyst_q31_inv_step(&C2, walk[i]), hyst_q31_inv_step(&C, walk[i]));
+        if (i == 0u) { /* the request applies at the end of the first sample */
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_q31_inv_set_deadband(&C2, 1 << 16));
+        }
+    }
+    TEST_ASSERT_EQUAL_UINT(1u, (unsigned)hyst_tp_count(&C)); /* the first only: the rest skipped */
+    TEST_ASSERT_EQUAL_UINT(1u, (unsigned)hyst_tp_count(&C2));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -468,5 +488,6 @@ int main(void)
     RUN_TEST(test_table_sizes_and_macros);
     RUN_TEST(test_snapshot_round_trips_bit_identically);
     RUN_TEST(test_bad_arguments_are_refused);
+    RUN_TEST(test_requested_deadband_skips_as_a_set_one);
     return UNITY_END();
 }

@@ -348,6 +348,30 @@ static void test_live_merges_continue_bit_identically(void)
     }
 }
 
+/* A deadband's open window (a skipped reversal, its reach saved) continues
+ * in an instance that never set a deadband: the restore binds the skip. */
+static void test_deadband_window_continues_without_a_deadband_set(void)
+{
+    static const double walk[] = {20.0, 19.5, 19.8, 19.6, 19.75, 19.65};
+    size_t i;
+    init_inst(&A, &paper_eq20, CAP);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_set_deadband(&A.S, (hyst_real_t)1.0));
+    for (i = 0u; i < 3u; ++i) { /* 20 stored, the reversal at 19.5 skipped */
+        (void)hyst_step(&A.S, (hyst_real_t)walk[i]);
+    }
+    TEST_ASSERT_EQUAL_UINT(1u, (unsigned)hyst_tp_count(&A.S));
+    TEST_ASSERT_TRUE(hyst_error_bound(&A.S) > 0); /* the skipped loop's bound */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&A.S, snap, sizeof(snap), &snap_len));
+    init_inst(&B, &paper_eq20, CAP);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, snap, snap_len));
+    for (; i < sizeof walk / sizeof walk[0]; ++i) { /* reversals inside the reach: skipped */
+        const hyst_real_t ya = hyst_step(&A.S, (hyst_real_t)walk[i]);
+        const hyst_real_t yb = hyst_step(&B.S, (hyst_real_t)walk[i]);
+        TEST_ASSERT_EQUAL_MEMORY(&ya, &yb, sizeof ya);
+        TEST_ASSERT_EQUAL_UINT((unsigned)hyst_tp_count(&A.S), (unsigned)hyst_tp_count(&B.S));
+    }
+}
+
 /* A snapshot whose TP is -0.0 (earlier versions stored the input as given)
  * restores as +0.0 and then behaves exactly like the instance that stored
  * +0.0: the search by bit patterns tells -0 from +0 otherwise. */
@@ -782,6 +806,7 @@ int main(void)
     RUN_TEST(test_every_truncation_is_refused);
     RUN_TEST(test_other_version_or_real_width_is_refused);
     RUN_TEST(test_live_merges_continue_bit_identically);
+    RUN_TEST(test_deadband_window_continues_without_a_deadband_set);
     RUN_TEST(test_other_curve_is_refused);
     RUN_TEST(test_capacity_must_hold_the_saved_points);
     RUN_TEST(test_impossible_state_with_valid_crc_is_refused);

@@ -198,6 +198,10 @@ typedef struct hyst_tcm {
     const void *kind;
     /** the kind's slow sample (repeats, reversals, wipe-outs), bound with it */
     void (*slow)(void);
+    /** the deadband's skip of a reversal, bound by the calls that can make
+     *  a reversal skip (setting or requesting a deadband, a restore): NULL
+     *  until then, so a firmware that sets no deadband does not link it */
+    void (*skip)(void);
 } hyst_tcm_t;
 
 /**
