@@ -23,8 +23,8 @@
 #define FIT_PI_DEFAULT_OPERATORS 10u
 
 static const char help[] =
-    "usage: hyst fit [--kind tcm|everett] [--degree N] [--t-degree K] [--skip S]\n"
-    "                [--delay D] [--xcol I --ycol J] [--method joint|reflect]\n"
+    "usage: hyst fit [--kind tcm|everett|everett_grid] [--degree N] [--t-degree K]\n"
+    "                [--skip S] [--delay D] [--xcol I --ycol J] [--method joint|reflect]\n"
     "                [--domain LO,HI] [--creep none|auto|TAU] [--rate none|auto|TAU]\n"
     "                [--header NAME] [--header-dir DIR] [--save MODEL]\n"
     "                [--compare-pi N] [--decimal-comma] FILE\n"
@@ -94,7 +94,8 @@ static const char help_more[] =
     "                 --kind pi) on the same first two thirds, with the same skip\n"
     "                 and delay, and print both models' hold-out RMS on the last\n"
     "                 third as a '# compare' line\n"
-    "  --kind K       not given: tcm and everett compared as above; tcm: f0 only;\n"
+    "  --kind K       not given: tcm, everett and everett_grid compared as above;\n"
+    "                 tcm: f0 only; everett_grid: E on a grid (docs/theory.md);\n"
     "                 everett: E only (least squares along the record, the model\n"
     "                 from rest at the first sample used); pi: the weights\n"
     "                 w1..wN >= 0 and an output offset of a\n"
