@@ -496,6 +496,48 @@ hyst_status_t hyst_curve_inverse_table_const_(hyst_curve_t *inv, const hyst_curv
     return HYST_OK;
 }
 
+hyst_status_t hyst_inverse_table_measure_(const hyst_curve_t *inv)
+{
+    hyst_curve_t fwd, out;
+    table_build_t b;
+    hyst_wide_t err;
+    const unsigned v = inv->variant;
+    const size_t n = inv->u.inv_table.intervals;
+    hyst_status_t st;
+    unsigned k;
+    fwd = *inv; /* the forward curve the table was built from, axes swapped back */
+    fwd.kind = HYST_CURVE_POLY;
+    fwd.lo = inv->y_lo;
+    fwd.hi = inv->y_hi;
+    fwd.y_lo = inv->lo;
+    fwd.y_hi = inv->hi;
+    fwd.u.poly = inv->u.inv_table.fwd;
+    st = table_prepare(&out, &b, inv, &fwd, inv->u.inv_table.table, n, v);
+    if (st != HYST_OK) {
+        return HYST_ERR_CURVE;
+    }
+    { /* the build's scales, bit for bit */
+        const hyst_num_t *const have[5] = {&inv->unit, &inv->u.inv_table.span,
+                                           &inv->u.inv_table.u_per_d, &inv->lo, &inv->hi};
+        const hyst_num_t *const want[5] = {&out.unit, &out.u.inv_table.span,
+                                           &out.u.inv_table.u_per_d, &out.lo, &out.hi};
+        for (k = 0u; k < 5u; ++k) {
+            if (!(hyst_num_get(have[k], v) == hyst_num_get(want[k], v))) {
+                return HYST_ERR_CURVE;
+            }
+        }
+    }
+    if (!table_matches(&b, inv->u.inv_table.table, n) ||
+        out.u.inv_table.exact != inv->u.inv_table.exact) {
+        return HYST_ERR_CURVE;
+    }
+    /* every piece measured as the table from flash is (its const init) */
+    b.given = inv->u.inv_table.table;
+    err = hyst_table_err_((table_pieces(&b, n) + hyst_drive_rounding_(&out)) / b.span);
+    return b.beyond || !(err <= hyst_table_err_(inv->u.inv_table.max_err)) ? HYST_ERR_CURVE
+                                                                          : HYST_OK;
+}
+
 hyst_status_t hyst_q31_inverse_table_(hyst_q31_t *table, size_t intervals,
                                       const hyst_curve_t *fwd, hyst_q31_t drive_span,
                                       size_t *exact, hyst_wide_t *max_err)

@@ -353,6 +353,11 @@ hyst_status_t hyst_table_seal_check_(unsigned kind, unsigned variant, hyst_cptr_
 int hyst_table_shape_ok_(hyst_cptr_t table, size_t base, size_t intervals, unsigned variant);
 /* The constructors of tables given ready-made (hyst_*_curve_inverse_table_const,
  * hyst_*_curve_everett_inverse_table_const), written once. */
+/* A built symmetric table (HYST_CURVE_INV_TABLE, checked) measured as its
+ * const init measures it: its scales the build's, its knots on the model,
+ * every piece within HYST_INV_TABLE_TOL and the error it claims; else
+ * HYST_ERR_CURVE. The seal's check: firmware checks only the seal. */
+hyst_status_t hyst_inverse_table_measure_(const hyst_curve_t *inv);
 hyst_status_t hyst_curve_inverse_table_const_(hyst_curve_t *inv, const hyst_curve_t *fwd,
                                               hyst_cptr_t table, size_t intervals,
                                               const hyst_table_seal_t *seal, unsigned variant);

@@ -181,6 +181,9 @@ static hyst_status_t NUM_NAME(seal_inverse_table_impl)(NUM_SEALED_INVERSE_T *out
     if (inv->variant != (unsigned)NUM_VARIANT || inv->kind != (unsigned)HYST_CURVE_INV_TABLE) {
         return HYST_ERR_ARG;
     }
+    if (hyst_inverse_table_measure_(inv) != HYST_OK) { /* a table changed since its build */
+        return HYST_ERR_CURVE;
+    }
     err.f32 = (float)hyst_table_err_(inv->u.inv_table.max_err); /* a float already */
     memset(&c, 0, sizeof c);
     c.seal = hyst_inverse_seal_crc_(inv, &err);

@@ -231,22 +231,38 @@ static void test_header_sealed_compensator_is_the_built_one(void)
 
 /* The build's error, reported by hyst_curve_inverse_error(), comes back
  * exactly from its float in the seal (widened by its bits on a target
- * whose double is in software): normal, subnormal and zero errors. */
+ * whose double is in software): the error measured, and errors above it
+ * claimed; one below it (down to zero and subnormal) is refused by the
+ * seal, which measures the table first. */
 static void test_sealed_compensator_reports_the_built_error(void)
 {
-    static const float errs[] = {0.0f, 1.4e-45f, 1e-40f, 1.17549435e-38f, 3.0314681e-06f, 0.5f, 1.0f};
+    static const float above[] = {3.0314681e-06f, 0.5f, 1.0f};
+    static const float below[] = {0.0f, 1.4e-45f, 1e-40f, 1.17549435e-38f};
     hyst_sealed_inverse_t s;
     hyst_curve_t c;
+    float built;
     size_t k;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_table(&A, &inv_built, &eq20, table,
                                                            HYST_INV_TABLE, xl, yl, xr, yr, CAP));
-    for (k = 0u; k < sizeof errs / sizeof errs[0]; ++k) {
+    built = (float)hyst_curve_inverse_error(&inv_built);
+    TEST_ASSERT_TRUE((hyst_wide_t)built == hyst_curve_inverse_error(&inv_built));
+    for (k = 0u; k <= sizeof above / sizeof above[0]; ++k) {
+        const float err = k == 0u ? built : above[k - 1u];
+        if (err < built) {
+            continue;
+        }
         c = inv_built;
-        c.u.inv_table.max_err = (hyst_wide_t)errs[k];
+        c.u.inv_table.max_err = (hyst_wide_t)err;
         TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_seal_inverse_table(&s, &c));
         TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_sealed(&B, &inv_sealed, &s, table, xl2,
                                                                 yl2, xr2, yr2, CAP));
-        TEST_ASSERT_TRUE(hyst_curve_inverse_error(&inv_sealed) == (hyst_wide_t)errs[k]);
+        TEST_ASSERT_TRUE(hyst_curve_inverse_error(&inv_sealed) == (hyst_wide_t)err);
+    }
+    for (k = 0u; k <= sizeof below / sizeof below[0]; ++k) {
+        c = inv_built;
+        c.u.inv_table.max_err =
+            (hyst_wide_t)(k == 0u ? nextafterf(built, 0.0f) : below[k - 1u]);
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_seal_inverse_table(&s, &c));
     }
 }
 
@@ -294,6 +310,65 @@ static void test_damaged_sealed_compensator_is_refused(void)
     }
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_sealed(&B, &inv_sealed, &s, flash, xl2, yl2,
                                                             xr2, yr2, CAP));
+}
+
+/* A table changed in RAM after its build, then sealed: a slope of one
+ * piece halved (its knots still on the model), or an interval the build
+ * solves given a cubic piece again (the secant across its solved run). Firmware checks only
+ * the seal, so the seal measures every piece as the table from flash is
+ * measured: refused (HYST_ERR_CURVE), nothing written; the table put back
+ * is sealed again; a claimed error below the measured one is refused. */
+static void test_seal_refuses_a_changed_table(void)
+{
+    const hyst_poly_t cube = poly_monomial(3u, -1.0, 1.0); /* a flat point: exact intervals */
+    hyst_sealed_inverse_t s, before;
+    hyst_curve_t c;
+    size_t k;
+    int given_back = 0;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_table(&A, &inv_built, &eq20, table,
+                                                           HYST_INV_TABLE, xl, yl, xr, yr, CAP));
+    memset(&before, 0x5A, sizeof before);
+    for (k = 3u; k < HYST_INV_TABLE; k += 61u) {
+        const hyst_real_t slope = table[4u * k + 1u];
+        if (table[4u * k] < 0) {
+            continue; /* an interval solved instead */
+        }
+        table[4u * k + 1u] = slope * (hyst_real_t)0.5;
+        s = before;
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_seal_inverse_table(&s, &inv_built));
+        TEST_ASSERT_EQUAL_MEMORY(&before, &s, sizeof s);
+        table[4u * k + 1u] = slope;
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_seal_inverse_table(&s, &inv_built));
+    c = inv_built;
+    c.u.inv_table.max_err = 0;
+    s = before;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_seal_inverse_table(&s, &c));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &s, sizeof s);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_inverse_table(&A, &inv_built, &cube, table, 64u, xl,
+                                                           yl, xr, yr, CAP));
+    for (k = 1u; k < 64u; ++k) { /* the first solved interval given a piece: the secant */
+        if (table[4u * k] < 0 && table[4u * k - 4u] >= 0) {  /* across the solved run */
+            const hyst_real_t *left = &table[4u * k - 4u];
+            const hyst_real_t from = left[0] + left[1] + left[2] + left[3];
+            size_t m = k;
+            while (table[4u * m] < 0) {
+                ++m;
+            }
+            table[4u * k] = from;
+            table[4u * k + 1u] = (table[4u * m] - from) / (hyst_real_t)(m - k);
+            table[4u * k + 2u] = 0;
+            table[4u * k + 3u] = 0;
+            c = inv_built;
+            c.u.inv_table.exact -= 1u;
+            s = before;
+            TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_seal_inverse_table(&s, &c));
+            TEST_ASSERT_EQUAL_MEMORY(&before, &s, sizeof s);
+            ++given_back;
+            break;
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(1, given_back);
 }
 
 /* ---- the q31 model ---- */
@@ -369,6 +444,7 @@ int main(void)
     RUN_TEST(test_header_sealed_compensator_is_the_built_one);
     RUN_TEST(test_sealed_compensator_reports_the_built_error);
     RUN_TEST(test_damaged_sealed_compensator_is_refused);
+    RUN_TEST(test_seal_refuses_a_changed_table);
     RUN_TEST(test_q31_header_sealed_is_the_init_of_its_f0);
     RUN_TEST(test_q31_damaged_sealed_model_is_refused);
     return UNITY_END();

@@ -112,7 +112,10 @@ hyst_status_t hyst_f64_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
  *
  * hyst_*_seal_inverse_table() seals a curve made by
  * hyst_*_curve_inverse_table() (or hyst_*_init_inverse_table()) with its
- * table: HYST_ERR_ARG for another kind. The init checks the arrays, the
+ * table: HYST_ERR_ARG for another kind; it measures the table first, every
+ * piece as hyst_*_curve_inverse_table_const() does, and refuses one changed
+ * since its build or claiming less than its measured error (HYST_ERR_CURVE,
+ * nothing written). The init checks the arrays, the
  * caller's layout, the degree and intervals, then the seal over the struct
  * and @p table (HYST_ERR_CRC when a number of either differs from the ones
  * sealed), writes the curve into @p inv (caller storage that, like
