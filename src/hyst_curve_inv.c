@@ -504,7 +504,6 @@ hyst_status_t hyst_inverse_table_measure_(const hyst_curve_t *inv)
     const unsigned v = inv->variant;
     const size_t n = inv->u.inv_table.intervals;
     hyst_status_t st;
-    unsigned k;
     fwd = *inv; /* the forward curve the table was built from, axes swapped back */
     fwd.kind = HYST_CURVE_POLY;
     fwd.lo = inv->y_lo;
@@ -521,6 +520,7 @@ hyst_status_t hyst_inverse_table_measure_(const hyst_curve_t *inv)
                                            &inv->u.inv_table.u_per_d, &inv->lo, &inv->hi};
         const hyst_num_t *const want[5] = {&out.unit, &out.u.inv_table.span,
                                            &out.u.inv_table.u_per_d, &out.lo, &out.hi};
+        unsigned k;
         for (k = 0u; k < 5u; ++k) {
             if (!(hyst_num_get(have[k], v) == hyst_num_get(want[k], v))) {
                 return HYST_ERR_CURVE;
