@@ -1,10 +1,14 @@
 % SPDX-License-Identifier: MIT
 function f = hyst_fit(x, y, varargin)
 % HYST_FIT  Identifies a model (f0, or the asymmetric kind's E) from measured x, y.
-%   F = HYST_FIT(X, Y) fits a cubic f0 to the record (X drive, Y measured
-%   output) of a full-range periodic excitation, by hyst_ident_fit()
-%   (include/hyst/ident.h, docs/identification.md). F is a model for
-%   HYST_SIM, HYST_INV and HYST_MODEL_SAVE, with the fields
+%   F = HYST_FIT(X, Y) chooses the model of the record (X drive, Y measured
+%   output) as 'hyst fit' with no option does: the kind, degree, delay and
+%   creep term by hold-out (below, 'degree', []). F = HYST_FIT(X, Y,
+%   'degree', N) fits f0 of degree N to a full-range periodic excitation by
+%   hyst_ident_fit() (include/hyst/ident.h, docs/identification.md), its
+%   delay chosen as 'hyst fit --degree N' chooses it unless 'delay' is
+%   given. F is a model for HYST_SIM, HYST_INV and HYST_MODEL_SAVE, with the
+%   fields
 %     coeffs      f0's coefficients, highest power first (as polyfit)
 %     lo, hi      the domain
 %     rms, max_abs  residuals of the samples against the fitted major loop
@@ -40,13 +44,12 @@ function f = hyst_fit(x, y, varargin)
 %   'everett_grid', degree, lo, hi, y_lo, knots, weights (HYST_SIM takes
 %   it), rms, max_abs, used, monotone (the library accepts the grid).
 %
-%   Options (name/value): 'kind' 'poly' (default), 'everett' or
-%   'everett_grid', 'degree'
-%   (default 3; [] chooses it), 'skip' samples dropped at the start
-%   (default 0), 'delay' samples the output lags the input (default 0; []
-%   chooses it as hyst fit does, with 'degree' []: 0..8, or up to 1/64 of
-%   the drive's period, then a fraction of a sample: f.delay 12.5, the
-%   model fitted on the drive interpolated), 'method' 'joint'
+%   Options (name/value): 'kind' 'poly' (default with a degree),
+%   'everett' or 'everett_grid', 'degree' (default []: chosen), 'skip'
+%   samples dropped at the start (default 0), 'delay' samples the output
+%   lags the input (default []: chosen as hyst fit does, 0..8, or up to
+%   1/64 of the drive's period, then a fraction of a sample: f.delay 12.5,
+%   the model fitted on the drive interpolated), 'method' 'joint'
 %   (default) or 'reflect' (kind poly), 'domain' [LO HI] (default: the
 %   range of the inputs), 'creep' (below).
 %
@@ -78,7 +81,7 @@ function f = hyst_fit(x, y, varargin)
 %   (none of them without a creep term). rms and max_abs stay the
 %   hysteresis fit's own.
 %   A library error raises hyst:<status name>, e.g. hyst:ERR_SINGULAR.
-  opts = hyst_options(varargin, struct('kind', '', 'degree', 3, 'skip', 0, 'delay', 0, ...
+  opts = hyst_options(varargin, struct('kind', '', 'degree', [], 'skip', 0, 'delay', [], ...
                                        'method', 'joint', 'domain', [], 'tdegree', [], ...
                                        'creep', 'auto'), ...
                       'hyst_fit');
@@ -118,7 +121,18 @@ function f = hyst_fit(x, y, varargin)
     [opts, cands, creep_tau, domain, x, fraction] = choose(opts, kinds, method, domain, x, y, ...
                                                            creep_tau);
   elseif isempty(opts.delay)
-    error('hyst:usage', 'hyst_fit: ''delay'', [] (chosen) needs ''degree'', [] (chosen)');
+    % the delay of the model given, as 'hyst fit --degree D' without --delay
+    % chooses it (the gateway's given_delay: fit_given_delay())
+    tk = 0;
+    if strcmp(opts.kind, 'everett')
+      tk = opts.degree - 1;
+      if ~isempty(opts.tdegree)
+        tk = opts.tdegree;
+      end
+    end
+    [opts.delay, fraction, x] = hyst_mex('given_delay', x, y, kind_code(opts.kind), ...
+                                         double(opts.degree), double(tk), method, domain(1), ...
+                                         domain(2), double(opts.skip));
   end
   tdegree = opts.tdegree;
   if isempty(tdegree)

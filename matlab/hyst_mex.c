@@ -31,6 +31,8 @@
  *   f = hyst_mex('fit', x, y, degree, method, lo, hi, skip, delay)
  *   f = hyst_mex('fit_everett', x, y, degree, lo, hi, skip, delay)
  *   f = hyst_mex('fit_grid', x, y, intervals, lo, hi, skip, delay)
+ *   [delay, fraction, x] = hyst_mex('given_delay', x, y, kind, degree, t_degree, method, lo,
+ *                                   hi, skip)
  *   [cands, best, with_creep] = hyst_mex('select', x, y, kinds, method, lo, hi, skip,
  *                                        delay_first, max_delay, t_degree, creep_tau)
  *   m = hyst_mex('model_parse', bytes, file)    the reader of tools/model_text
@@ -1129,6 +1131,59 @@ static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     }
 }
 
+/* given_delay: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid: degree its
+ * intervals), degree, t_degree, method, lo, hi, skip; the delay of that one
+ * model as `hyst fit --degree D` without --delay chooses it
+ * (fit_given_delay(), tools/cli/fit_select.c). plhs = the whole delay, the
+ * sub-sample fraction (0: none) and the drive interpolated by it (a column;
+ * x as given without one). */
+static void run_given_delay(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    hyst_ident_config_t base;
+    fit_found_t found;
+    size_t n, delay = 0u;
+    int kind;
+    unsigned t_degree;
+    double *drive;
+    hyst_status_t st;
+    if (nrhs != 9 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+        mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
+        usage("given_delay takes x, y (real double vectors of one length), kind, degree, "
+              "t_degree, method, lo, hi, skip");
+    }
+    n = mxGetNumberOfElements(prhs[0]);
+    memset(&base, 0, sizeof base);
+    kind = (int)count(prhs[2], "kind", 1.0, 4.0);
+    if (kind != FIT_POLY && kind != FIT_EVERETT && kind != FIT_GRID) {
+        usage("kind is 1 (poly), 2 (everett) or 4 (everett_grid)");
+    }
+    /* a degree the fit refuses scores nothing here (delay 0): the fit says why */
+    base.degree = (unsigned)count(prhs[3], "degree", 0.0, 64.0);
+    t_degree = (unsigned)count(prhs[4], "t_degree", 0.0, (double)HYST_EVERETT_MAX_DEGREE);
+    base.method = (int)count(prhs[5], "method", 1.0, 2.0);
+    base.lo = scalar(prhs[6], "lo");
+    base.hi = scalar(prhs[7], "hi");
+    base.skip = count(prhs[8], "skip", 0.0, 1e15);
+    plhs[0] = NULL;
+    drive = (double *)mxCalloc(n > 0u ? n : 1u, sizeof *drive);
+    memcpy(drive, mxGetData(prhs[0]), n * sizeof *drive);
+    st = fit_given_delay(&base, kind, t_degree, drive, (const double *)mxGetData(prhs[1]), n,
+                         &delay, &found);
+    if (st != HYST_OK) {
+        mxFree(drive);
+        fail_status("given_delay", (int)st);
+    }
+    plhs[0] = mxCreateDoubleScalar((double)delay);
+    if (nlhs > 1) {
+        plhs[1] = mxCreateDoubleScalar(found.delay_fraction);
+    }
+    if (nlhs > 2) {
+        plhs[2] = mxCreateDoubleMatrix((mwSize)n, 1, mxREAL);
+        memcpy(mxGetPr(plhs[2]), drive, n * sizeof *drive);
+    }
+    mxFree(drive);
+}
+
 /* select: prhs = x, y, kinds (a sum of 1 poly, 2 everett, 4 everett_grid), method, lo, hi,
  * skip, delay (-1: chosen), t_degree (-1: any), creep_tau; fit's
  * automatic choice by the `hyst` tool's own code (fit_search(),
@@ -1519,6 +1574,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_holdout(2, nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "holdout") == 0 || strcmp(cmd, "holdout_everett") == 0) {
         run_holdout(cmd[7] == '_', nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "given_delay") == 0) {
+        run_given_delay(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "select") == 0) {
         run_select(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "score") == 0) {

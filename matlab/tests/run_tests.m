@@ -245,7 +245,7 @@ function t_fit_measured(ctx)
   e1 = max(abs(p1(half + 1:end - 1) - y(half + 2:end)));
   check(e3 < 0.03 * range, 'prediction error %g of range %g', e3, range);
   check(e3 < e1 / 2, 'cubic %g is not far better than a line %g', e3, e1);
-  r = hyst_fit(x, y, 'method', 'reflect', 'skip', 350, 'delay', 1, 'domain', [min(x) max(x)]);
+  r = hyst_fit(x, y, 'degree', 3, 'method', 'reflect', 'skip', 350, 'delay', 1, 'domain', [min(x) max(x)]);
   check(strcmp(r.method, 'reflect') && r.increasing, 'reflect estimator');
 end
 
@@ -268,8 +268,8 @@ function t_errors_status_names(~)
     -2, 'ERR_DOMAIN', @() hyst_inv(struct('coeffs', [1 0], 'lo', 1, 'hi', 1), 0)
     -4, 'ERR_CAPACITY', @() hyst_sim(paper_f0(), 0, 'capacity', 1)
     -21, 'ERR_ILL_CONDITIONED', @() hyst_sim(struct('coeffs', [1 0 0 0 0 0 0 0 0 0], 'lo', -1, 'hi', 1), single(0))
-    -10, 'ERR_SINGULAR', @() hyst_fit([0 1 0 1 0 1], [0 1 0 1 0 1], 'degree', 3)
-    -3, 'ERR_DEGREE', @() hyst_fit(0:9, 0:9, 'degree', 0)
+    -10, 'ERR_SINGULAR', @() hyst_fit([0 1 0 1 0 1], [0 1 0 1 0 1], 'degree', 3, 'delay', 0)
+    -3, 'ERR_DEGREE', @() hyst_fit(0:9, 0:9, 'degree', 0, 'delay', 0)
   };
   for k = 1:size(cases, 1)
     [text, name] = hyst_mex('status_str', cases{k, 1});
@@ -531,9 +531,11 @@ function t_everett_errors(~)
   expect_error('hyst:usage', @() hyst_sim(bad, 1));
   expect_error('hyst:usage', @() hyst_sim(rmfield(e, 'y_lo'), 1));
   expect_error('hyst:usage', @() hyst_fit(1:3, 1:3, 'kind', 'preisach'));
-  expect_error('hyst:ERR_SINGULAR', @() hyst_fit([0 1 0 1 0], [0 1 0 1 0], 'kind', 'everett'));
+  expect_error('hyst:ERR_SINGULAR', @() hyst_fit([0 1 0 1 0], [0 1 0 1 0], 'kind', 'everett', ...
+                                                  'degree', 3, 'delay', 0));
   expect_error('hyst:ERR_DEGREE', @() hyst_fit(0:9, 0:9, 'kind', 'everett', 'degree', 5));
-  expect_error('hyst:ERR_ARG', @() hyst_fit(0:9, 0:9, 'kind', 'everett', 'skip', 10));
+  expect_error('hyst:ERR_ARG', @() hyst_fit(0:9, 0:9, 'kind', 'everett', 'degree', 3, ...
+                                            'delay', 0, 'skip', 10));
 end
 
 function t_everett_fit(~)
@@ -557,7 +559,7 @@ function t_everett_fit(~)
   t = linspace(0, 1, 400)';
   u = abs(sin(6 * pi * t));
   warning('off', 'hyst:not_monotone');
-  g = hyst_fit(u, -u, 'kind', 'everett', 'degree', 2);
+  g = hyst_fit(u, -u, 'kind', 'everett', 'degree', 2, 'delay', 0);
   warning('on', 'hyst:not_monotone');
   check(~g.monotone, 'a falling plant gave a monotone E');
   expect_error('hyst:ERR_NOT_MONOTONE', @() hyst_sim(g, u));
@@ -567,8 +569,9 @@ function t_everett_fit(~)
              'terms', [3 1 0 2 -0.5 0.4]);
   xm = repmat([0:0.25:40, 39.75:-0.25:0.25]', 4, 1);
   ym = hyst_sim(p, xm);
-  expect_error('hyst:ERR_SINGULAR', @() hyst_fit(xm, ym, 'kind', 'everett', 'degree', 3));
-  h = hyst_fit(xm, ym, 'kind', 'everett', 'degree', 3, 'tdegree', 1);
+  expect_error('hyst:ERR_SINGULAR', @() hyst_fit(xm, ym, 'kind', 'everett', 'degree', 3, ...
+                                                  'delay', 0));
+  h = hyst_fit(xm, ym, 'kind', 'everett', 'degree', 3, 'tdegree', 1, 'delay', 0);
   check(h.t_degree == 1 && h.monotone && h.terms(3) == 0, 't-degree 1: %s', mat2str(h.terms));
   check(max(abs(h.terms - p.terms)) < 1e-9, 't-degree 1 terms %s', mat2str(h.terms, 12));
   expect_error('hyst:usage', @() hyst_fit(xm, ym, 'tdegree', 1));
@@ -1433,6 +1436,18 @@ function t_fit_searches_delays_as_cli(ctx)
   t = regexp(out, 'chosen by hold-out: degree (\d+), delay \d+ \(kind (\w+)', 'tokens', 'once');
   check(strcmp(f.kind, t{2}) && f.degree == str2double(t{1}), ...
         'the choice differs from hyst fit''s: %s', strjoin(t, ' '));
+  % no option: the same choice, saved as the same model file
+  cli_file = fullfile(ctx.tmp, 'default_cli.hyst');
+  run_cli(ctx, ['fit --save "' cli_file '" "' rec '"']);
+  oct_file = fullfile(ctx.tmp, 'default_oct.hyst');
+  hyst_model_save(oct_file, hyst_fit(x, y));
+  check(strcmp(fileread(oct_file), fileread(cli_file)), 'hyst_fit(x, y) differs from hyst fit');
+  % a degree given: its delay chosen as hyst fit --degree 3 chooses it
+  out = run_cli(ctx, ['fit --degree 3 "' rec '"']);
+  delay = str2double(regexp(out, '# delay (\S+) samples', 'tokens', 'once'));
+  g = hyst_fit(x, y, 'degree', 3);
+  check(g.delay == delay && delay > 10, 'degree 3: delay %g, hyst fit --degree 3 %g', g.delay, delay);
+  check(hyst_fit(x, y, 'degree', 3, 'delay', 0).delay == 0, 'delay 0 given is not kept');
 end
 
 % ---- the rate term (hyst/rate.h, docs/rate.md) ----
@@ -1657,7 +1672,7 @@ function t_grid_fit_as_cli(ctx)
   run_cli(ctx, sprintf(['fit --kind everett_grid --degree 3 --delay 0 --creep none ' ...
                         '--save "%s" "%s" 2>&1'], cli_file, rec));
   c = hyst_model_load(cli_file);
-  f = hyst_fit(x, y, 'kind', 'everett_grid', 'degree', 3, 'creep', 'none');
+  f = hyst_fit(x, y, 'kind', 'everett_grid', 'degree', 3, 'delay', 0, 'creep', 'none');
   check(strcmp(f.kind, 'everett_grid') && f.monotone && isequal(f.knots, c.knots) && ...
         isequal(f.weights, c.weights) && f.y_lo == c.y_lo, 'the grid differs from hyst fit''s');
   check(abs(f.knots(2) - 1) < 0.02 && abs(f.knots(3) - 1.4) < 0.02, 'knots %s', mat2str(f.knots));

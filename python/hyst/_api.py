@@ -507,8 +507,8 @@ def _final_creep(res, x, y, kind, skip, delay, tau):
     return c
 
 
-def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None, skip=0,
-        delay=0, creep="auto", dtype=np.float64, capacity=DEFAULT_CAPACITY):
+def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=None, skip=0,
+        delay=None, creep="auto", dtype=np.float64, capacity=DEFAULT_CAPACITY):
     """Identifies a model from a recorded drive ``x`` and response ``y``.
 
     Sample i (skip <= i < n - delay) pairs x[i] with y[i + delay]; the domain
@@ -520,11 +520,15 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
     inputs outside the domain are clamped as the model clamps them;
     ``t_degree`` fits only E's terms w^i t^j with j <= t_degree, the others
     0: major loops alone determine E of t_degree 1 at most, at any degree).
-    ``degree=None`` chooses the degree, and ``delay=None`` the delay
-    (0..MAX_DELAY, or up to 1/64 of the drive's period, then a fraction of
-    a sample: the result's ``delay`` is then a float, the model fitted on
-    the drive interpolated), by hold-out exactly as ``hyst fit`` without --degree
-    does, the kind too when ``kind`` is None (both kinds compared; everett
+    With no option, ``fit(x, y)`` chooses as ``hyst fit`` with no option
+    does: ``degree=None`` (the default) chooses the degree, and
+    ``delay=None`` (the default) the delay (0..MAX_DELAY, or up to 1/64 of
+    the drive's period, then a fraction of a sample: the result's ``delay``
+    is then a float, the model fitted on the drive interpolated), by
+    hold-out exactly as ``hyst fit`` without --degree does; with a degree
+    given, ``delay=None`` chooses the delay of that model as ``hyst fit
+    --degree D`` without --delay does. The kind too when ``kind`` is None
+    (the three kinds compared; everett
     of each degree with each t_degree 0..degree-1, or only the one given;
     the parameter count is degree + 1 for poly, E's terms fitted + 1 for
     everett): every candidate is in the result's ``candidates`` (dicts:
@@ -584,9 +588,16 @@ def fit(x, y, degree=3, *, kind=None, t_degree=None, method="joint", domain=None
         for i, c in enumerate(cands):
             c["chosen"] = i == best
             c["with_creep"] = i == best and with_creep
-    elif delay is None:
-        raise ValueError("delay=None (chosen) needs degree=None")
-    elif creep_tau >= 0 and len(x) > skip + int(delay):
+    elif delay is None:  # the delay of the model given, as hyst fit --degree D chooses it
+        k = 0 if (kind or "poly") in ("poly", "everett_grid") else (
+            int(degree) - 1 if t_degree is None else int(t_degree))
+        g = _hyst.given_delay(x, y, _FIT_KINDS[kind or "poly"], int(degree), k,
+                              _METHODS[method], lo, hi, skip)
+        delay = g["delay"]
+        if g["x"] is not None:
+            x = np.asarray(g["x"], dtype=np.float64)
+            fraction = g["delay_fraction"]
+    if degree is not None and cands is None and creep_tau >= 0 and len(x) > skip + int(delay):
         # the model as given, its creep term scored by the same hold-out
         k = None if (kind or "poly") in ("poly", "everett_grid") else (
             int(degree) - 1 if t_degree is None else int(t_degree))

@@ -1238,6 +1238,30 @@ nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds,
                           search);
 }
 
+/* The delay of one model (kind FIT_POLY, FIT_EVERETT (t_degree) or FIT_GRID,
+ * degree, no creep term) as `hyst fit --degree D` without --delay chooses it
+ * (fit_given_delay()): delay (whole samples), delay_fraction, max_delay,
+ * integer_holdout, and x: the drive interpolated by the fraction, or None. */
+nb::dict given_delay(const In<double> &x, const In<double> &y, int kind, unsigned degree,
+                     unsigned t_degree, int method, double lo, double hi, size_t skip)
+{
+    const size_t n = x.shape(0);
+    const hyst_ident_config_t base = ident_config(x, y, degree, method, lo, hi, skip, 0u);
+    std::vector<double> drive(x.data(), x.data() + n);
+    fit_found_t found;
+    size_t delay = 0u;
+    check(fit_given_delay(&base, kind == FIT_EVERETT || kind == FIT_GRID ? kind : FIT_POLY,
+                          t_degree, drive.data(), y.data(), n, &delay, &found),
+          "given_delay");
+    nb::dict d;
+    d["delay"] = delay;
+    d["delay_fraction"] = found.delay_fraction;
+    d["max_delay"] = found.max_delay;
+    d["integer_holdout"] = found.integer_holdout;
+    d["x"] = found.delay_fraction > 0.0 ? nb::cast(drive) : nb::none();
+    return d;
+}
+
 /* fit_choose() over candidates given as dicts (kind, degree, t_degree,
  * holdout_rms and, optionally, creep_tau, creep_holdout_rms): the rule
  * select() applies, alone. */
@@ -1554,6 +1578,10 @@ NB_MODULE(_hyst, m)
     m.def("score", &score_candidate, "x"_a, "y"_a, "kind"_a, "degree"_a, "t_degree"_a, "method"_a,
           "lo"_a, "hi"_a, "skip"_a, "delay"_a, "creep_tau"_a,
           "One candidate scored as hyst fit scores it (fit_score()): its dict.");
+    m.def("given_delay", &given_delay, "x"_a, "y"_a, "kind"_a, "degree"_a, "t_degree"_a,
+          "method"_a, "lo"_a, "hi"_a, "skip"_a,
+          "The delay of one model as hyst fit --degree D without --delay chooses it "
+          "(fit_given_delay()): dict delay, delay_fraction, max_delay, integer_holdout, x.");
     m.def("choose", &choose, "candidates"_a, "creep_tau"_a = -1.0,
           "hyst fit's rule (fit_choose()) over scored candidates: (index or None, with creep).");
     m.attr("FIT_POLY") = static_cast<int>(FIT_POLY);

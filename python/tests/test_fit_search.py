@@ -30,13 +30,19 @@ def record():
     return x, y + 1e-4 * np.random.default_rng(5).standard_normal(len(y))
 
 
-def test_fit_searches_the_delays_as_the_tool(c_build, tmp_path):
-    x, y = record()
+def cli_fit(c_build, tmp_path, x, y, *opts):
+    """`hyst fit OPTS --save cli.hyst` on the record (x, y): its output."""
     rec = tmp_path / "rec.txt"
     rec.write_text("".join(f"{a:.17g} {b:.17g}\n" for a, b in zip(x, y)))
-    r = subprocess.run([str(c_build["cli"]), "fit", "--save", str(tmp_path / "cli.hyst"),
+    r = subprocess.run([str(c_build["cli"]), "fit", *opts, "--save", str(tmp_path / "cli.hyst"),
                         str(rec)], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
+    return r
+
+
+def test_fit_searches_the_delays_as_the_tool(c_build, tmp_path):
+    x, y = record()
+    r = cli_fit(c_build, tmp_path, x, y)
     said = float(re.search(r"^# delay (\S+) samples", r.stdout, re.M).group(1))
     assert re.search(r"^# delays searched 0\.\.\d+ ", r.stdout, re.M)  # scaled to the period
     f = hyst.fit(x, y, None, delay=None)
@@ -47,3 +53,29 @@ def test_fit_searches_the_delays_as_the_tool(c_build, tmp_path):
     py = hyst.load_model(tmp_path / "py.hyst")
     assert py["delay"] == DELAY and (py["lo"], py["hi"]) == (cli["lo"], cli["hi"])
     np.testing.assert_allclose(py["terms"], cli["terms"], rtol=1e-9, atol=1e-12)
+
+
+def test_fit_with_no_option_is_the_tools_default(c_build, tmp_path):
+    """fit(x, y) chooses as `hyst fit FILE` with no option: the same kind,
+    delay and numbers (the model file both write)."""
+    x, y = record()
+    cli_fit(c_build, tmp_path, x, y)
+    f = hyst.fit(x, y)
+    f.save(tmp_path / "py.hyst")
+    assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
+
+
+def test_fit_of_a_degree_chooses_its_delay_as_the_tool(c_build, tmp_path):
+    """fit(x, y, D) without a delay chooses the delay of that model as `hyst
+    fit --degree D` does (fit_given_delay()): whole samples, then a fraction;
+    delay=0 given is kept."""
+    x, y = record()
+    for kind, opts in (("poly", ["--degree", "3"]),
+                       ("everett", ["--kind", "everett", "--degree", "2"])):
+        cli_fit(c_build, tmp_path, x, y, *opts)
+        cli = hyst.load_model(tmp_path / "cli.hyst")
+        f = hyst.fit(x, y, int(opts[-1]), kind=kind)
+        assert f.delay == cli["delay"] and f.delay > 10  # the plant's lag, not 0
+        f.save(tmp_path / "py.hyst")
+        assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
+    assert hyst.fit(x, y, 3, delay=0).delay == 0

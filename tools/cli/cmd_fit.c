@@ -552,73 +552,21 @@ static void candidate_name(const fit_candidate_t *c, char *name, size_t size)
     }
 }
 
-/* The model of --degree alone (no creep term) fitted on the first two
- * thirds at delay d of the drive x, its hold-out RMS (NaN: not scored). */
-static double given_holdout(const fit_opts_t *o, const double *x, const cli_table_t *t, size_t d)
-{
-    hyst_ident_config_t cfg = o->cfg;
-    hyst_status_t st;
-    cfg.delay = d;
-    if (o->final_kind == FIT_GRID) {
-        fit_everett_result_t train;
-        return fit_grid_holdout(&cfg, x, t->col[1], t->n, &st, &train, NULL, NULL);
-    } else if (o->final_kind == FIT_EVERETT) {
-        fit_everett_result_t train;
-        return fit_everett_holdout(&cfg, o->t_degree, x, t->col[1], t->n, &st, &train, NULL, NULL);
-    } else {
-        hyst_ident_result_t train;
-        return fit_tcm_holdout(&cfg, x, t->col[1], t->n, &st, &train, NULL, NULL);
-    }
-}
-
-/* --degree without --delay: the delay by the same hold-out, whole samples up
- * to fit_max_delay() (every one: a single model), then a fraction of a sample
- * at it and one below, kept when more than FIT_FRACTION_GAIN better (the drive
- * then interpolated in place). 0 (delay 0 when nothing could be scored), or
- * 1 when out of memory. */
+/* --degree without --delay: the delay by the same hold-out (fit_given_delay()).
+ * 0, or 1 when out of memory. */
 static int choose_delay(fit_opts_t *o, cli_table_t *t)
 {
-    const size_t end = t->n > o->cfg.skip ? t->n - o->cfg.skip : 0u;
-    double lowest = NAN, f, best_f = 0.0, limit;
-    double *xf;
-    size_t d, best_d = 0u, k;
-    unsigned i;
-    o->max_delay = fit_max_delay(t->col[0], o->cfg.skip, t->n);
-    for (d = 0u; d <= o->max_delay && d + 3u < end; ++d) {
-        const double e = given_holdout(o, t->col[0], t, d);
-        if (isfinite(e) && !(lowest <= e)) {
-            lowest = e;
-            best_d = d;
-        }
-    }
-    o->integer_delay = best_d;
-    o->integer_holdout = lowest;
-    o->cfg.delay = best_d;
-    if (!isfinite(lowest)) {
-        o->cfg.delay = 0u;
-        return 0;
-    }
-    if ((xf = (double *)malloc(t->n * sizeof(double))) == NULL) {
+    fit_found_t found;
+    size_t delay;
+    if (fit_given_delay(&o->cfg, o->final_kind, o->t_degree, t->col[0], t->col[1], t->n, &delay,
+                        &found) != HYST_OK) {
         return 1;
     }
-    limit = lowest * (1.0 - FIT_FRACTION_GAIN);
-    for (i = 1u; i < FIT_FRACTIONS; ++i) {
-        f = (double)i / (double)FIT_FRACTIONS;
-        fit_delay_fraction(t->col[0], t->n, f, xf);
-        for (k = 0u; k <= 1u && k <= best_d; ++k) { /* D + f and D - 1 + f */
-            const double e = given_holdout(o, xf, t, best_d - k);
-            if (isfinite(e) && e < limit) {
-                limit = e;
-                best_f = f;
-                o->cfg.delay = best_d - k;
-            }
-        }
-    }
-    if (best_f > 0.0) {
-        o->delay_fraction = best_f;
-        fit_delay_fraction(t->col[0], t->n, best_f, t->col[0]);
-    }
-    free(xf);
+    o->cfg.delay = delay;
+    o->max_delay = found.max_delay;
+    o->integer_delay = found.integer_delay;
+    o->integer_holdout = found.integer_holdout;
+    o->delay_fraction = found.delay_fraction;
     return 0;
 }
 

@@ -628,6 +628,67 @@ void fit_choose(const fit_candidate_t *cand, size_t count, double creep_tau, siz
     }
 }
 
+/* One model's hold-out at delay d (its own kind's, no creep term). */
+static double kind_holdout(const hyst_ident_config_t *base, int kind, unsigned t_degree,
+                           const double *x, const double *y, size_t n, size_t d)
+{
+    hyst_ident_config_t cfg = *base;
+    hyst_status_t st;
+    fit_everett_result_t ev;
+    hyst_ident_result_t poly;
+    cfg.delay = d;
+    return holdout(&cfg, kind, t_degree, 0, x, y, n, &st, &poly, &ev, NULL, NULL);
+}
+
+hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigned t_degree,
+                              double *x, const double *y, size_t n, size_t *delay,
+                              fit_found_t *out)
+{
+    const size_t end = n > base->skip ? n - base->skip : 0u;
+    double lowest = NAN, f, best_f = 0.0, limit;
+    double *xf;
+    size_t d, best_d = 0u, k;
+    unsigned i;
+    memset(out, 0, sizeof *out);
+    out->best = (size_t)-1;
+    out->max_delay = fit_max_delay(x, base->skip, n);
+    for (d = 0u; d <= out->max_delay && d + 3u < end; ++d) {
+        const double e = kind_holdout(base, kind, t_degree, x, y, n, d);
+        if (isfinite(e) && !(lowest <= e)) {
+            lowest = e;
+            best_d = d;
+        }
+    }
+    out->integer_delay = best_d;
+    out->integer_holdout = lowest;
+    *delay = isfinite(lowest) ? best_d : 0u;
+    if (!isfinite(lowest)) {
+        return HYST_OK;
+    }
+    if ((xf = (double *)malloc(n * sizeof(double))) == NULL) {
+        return HYST_ERR_NOSPACE;
+    }
+    limit = lowest * (1.0 - FIT_FRACTION_GAIN);
+    for (i = 1u; i < FIT_FRACTIONS; ++i) {
+        f = (double)i / (double)FIT_FRACTIONS;
+        fit_delay_fraction(x, n, f, xf);
+        for (k = 0u; k <= 1u && k <= best_d; ++k) { /* D + f and D - 1 + f */
+            const double e = kind_holdout(base, kind, t_degree, xf, y, n, best_d - k);
+            if (isfinite(e) && e < limit) {
+                limit = e;
+                best_f = f;
+                *delay = best_d - k;
+            }
+        }
+    }
+    if (best_f > 0.0) {
+        out->delay_fraction = best_f;
+        fit_delay_fraction(x, n, best_f, x);
+    }
+    free(xf);
+    return HYST_OK;
+}
+
 /* The sub-sample delay of fit_search(): the choice's model (kind, degree,
  * domain, creep option) scored again with the drive a fraction of a sample
  * later, at the chosen delay and one below; the best of no more parameters,

@@ -322,6 +322,18 @@ hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_
                          double creep_tau, int choose_delay, double *x, const double *y,
                          size_t n, fit_candidate_t *cand, size_t max_cand, fit_found_t *out);
 
+/* A model of one kind and degree (base->degree; t_degree: everett's), no
+ * creep term: its delay by the same hold-out, each whole delay up to
+ * fit_max_delay() (a single model each), then a fraction of a sample at the
+ * best and one below, kept when more than FIT_FRACTION_GAIN better (x then
+ * the drive interpolated in place). *delay the whole delay chosen (0 when
+ * nothing could be scored); out's max_delay, integer_delay, integer_holdout
+ * and delay_fraction set, its best (size_t)-1. HYST_OK, or HYST_ERR_NOSPACE
+ * (out of memory). */
+hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigned t_degree,
+                              double *x, const double *y, size_t n, size_t *delay,
+                              fit_found_t *out);
+
 /* The chosen candidate (kind, degree, delay, its creep option) scored again
  * with a rate term of each of fit_rate_taus() (rate_tau 0; > 0: that time
  * constant alone; < 0: none), its weight fitted with the creep lag's on the
