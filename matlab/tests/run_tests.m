@@ -1638,12 +1638,19 @@ function t_grid_header_equals_cli(ctx)
   text = hyst_header(hyst_model_load(file), 'gridm');
   check(strcmp(after_first_line(text), after_first_line(cli_text)), ...
         'hyst_header differs from hyst header --model');
+  % the compensator: the same text as hyst header --compensator, no table
+  run_cli(ctx, sprintf('header --model "%s" --dir "%s" --compensator gridm 2>&1', file, ctx.tmp));
+  cli_text = fileread(fullfile(ctx.tmp, 'gridm.h'));
+  text = hyst_header(hyst_model_load(file), 'gridm', 'compensator', true);
+  check(~isempty(strfind(text, 'hyst_curve_everett_grid_inverse()')) && ...
+        strcmp(after_first_line(text), after_first_line(cli_text)), ...
+        'hyst_header ''compensator'' differs from hyst header --compensator');
 end
 
 function t_grid_refused(ctx)
   m = hyst_model_load(fullfile(ctx.tmp, 'grid_h.hyst'));
   expect_error('hyst:usage', @() hyst_inv(m, 1, 'intervals', 32));
-  expect_error('hyst:usage', @() hyst_header(m, 'g', 'compensator', true));
+  expect_error('hyst:usage', @() hyst_header(m, 'g', 'compensator', true, 'intervals', 32));
   bad = m;
   bad.weights(2) = -0.5;
   expect_error('hyst:ERR_NOT_MONOTONE', @() hyst_sim(bad, 1));

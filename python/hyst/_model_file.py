@@ -230,7 +230,9 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
     ``name_INTERVALS`` (and ``name_ROWS``), for firmware's
     ``hyst_curve_inverse_table_const()`` or
     ``hyst_curve_everett_inverse_table_const()`` (``intervals``, ``rows``:
-    the table's size, the library's defaults when None). A creep term
+    the table's size, the library's defaults when None); kind
+    ``everett_grid`` has no table (``hyst_curve_everett_grid_inverse()``
+    solves each branch in closed form): the header says so. A creep term
     (``creep_tau``, ``creep_weight``, as :func:`save_model` takes them) adds
     ``#include "hyst/creep.h"``, ``name_CREEP_TERMS``, ``name_creep_tau`` and
     ``name_creep_weight`` after the model, as ``hyst header`` writes them,
@@ -252,12 +254,16 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
         what = (f"asymmetric model (branch function E),\n * degree {degree}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
     elif kind == "everett_grid":
-        if compensator:
-            raise ValueError("kind everett_grid has no tabulated compensator (it solves each "
-                             "branch in closed form)")
+        if compensator and (intervals is not None or rows is not None):
+            raise ValueError("kind everett_grid has no compensator table (its compensator solves "
+                             "each branch in closed form)")
         y_lo, knots, weights = _grid_args(y_lo, knots, weights)
         what = (f"asymmetric model on a grid of {len(knots) - 1} knot intervals,\n * "
-                f"domain [{float(lo):.9g}, {float(hi):.9g}]")
+                f"domain [{float(lo):.9g}, {float(hi):.9g}]" +
+                (";\n * the compensator: hyst_curve_everett_grid_inverse() of that curve,\n"
+                 " * then hyst_init_curve(); each branch solved in closed form, no\n"
+                 " * table of its own" if compensator else ""))
+        compensator = False  # no table to write
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
         what = (f"major ascending curve f0,\n * degree {len(coeffs) - 1}, "

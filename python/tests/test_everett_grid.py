@@ -135,8 +135,15 @@ def test_header_is_the_clis(c_build, tmp_path):
     text = hyst.header_text("g", **hyst.load_model(path))
     guard = "#ifndef"
     assert text[text.index(guard):] == cli_text[cli_text.index(guard):]
-    with pytest.raises(ValueError, match="no tabulated compensator"):
-        hyst.header_text("g", **hyst.load_model(path), compensator=True)
+    # the compensator: the same header, saying how firmware builds it; no table to size
+    run_cli(c_build, "header", "--model", path, "--dir", tmp_path, "--compensator", "g")
+    cli_text = (tmp_path / "g.h").read_text()
+    assert "hyst_curve_everett_grid_inverse()" in cli_text
+    text = hyst.header_text("g", **hyst.load_model(path), compensator=True)
+    assert "hyst_curve_everett_grid_inverse()" in text
+    assert text[text.index(guard):] == cli_text[cli_text.index(guard):]
+    with pytest.raises(ValueError, match="no compensator table"):
+        hyst.header_text("g", **hyst.load_model(path), compensator=True, intervals=32)
 
 
 def test_refusals(tmp_path):

@@ -4,8 +4,9 @@
 #  - sim --model runs one: one cell of mass 8 on [0, 2] gives E(a, b) =
 #    8 ((a - b) / 2)^2, exact at these inputs;
 #  - malformed files are refused, naming line and field; inv --model gives
-#    the drives of sim's outputs back; inv --intervals and header
-#    --compensator refuse the kind (no tabulated compensator);
+#    the drives of sim's outputs back; inv --intervals refuses the kind (no
+#    tabulated compensator); header --compensator says how firmware builds
+#    it (compiled and run: inv's drives), --sealed, --intervals refused;
 #  - header --model writes its hyst_everett_grid_t, which compiles (float and
 #    double) and which the library's constructor accepts;
 #  - fit --kind everett_grid on a record of a grid plant with minor loops
@@ -68,7 +69,53 @@ for d in "" -DHYST_USE_DOUBLE; do
         || fail "header does not compile ($d)"
     ./use || fail "the header's grid refused ($d)"
 done
-if "$tool" header --model one.hyst --compensator g2 2> err.txt; then fail "header --compensator"; fi
+# header --compensator: the same grid, the compensator built from it in firmware gives
+# inv --model's drives; no table of its own (--intervals, --sealed refused)
+"$tool" header --model one.hyst --compensator grid_comp 2> /dev/null || fail "header --compensator"
+grep -q "hyst_curve_everett_grid_inverse()" grid_comp.h || fail "header --compensator: no inverse named"
+cat > comp.c <<'EOF'
+#include <stdio.h>
+#include "hyst/hyst.h"
+#include "grid_comp.h"
+int main(void)
+{
+    static hyst_real_t table[HYST_EVERETT_GRID_TABLE_LEN(1u)];
+    static hyst_real_t xl[8], yl[8], xr[8], yr[8];
+    static const hyst_real_t want[] = {WANT};
+    hyst_curve_t fwd, inv;
+    hyst_tcm_t S;
+    hyst_real_t x;
+    unsigned i;
+    if (hyst_curve_from_everett_grid(&fwd, &grid_comp, table, HYST_EVERETT_GRID_TABLE_LEN(1u)) != HYST_OK ||
+        hyst_curve_everett_grid_inverse(&inv, &fwd) != HYST_OK ||
+        hyst_init_curve(&S, &inv, xl, yl, xr, yr, 8u) != HYST_OK) {
+        return 1;
+    }
+    for (i = 0u; i < sizeof want / sizeof want[0]; ++i) {
+        x = hyst_step(&S, want[i]);
+        if (hyst_status(&S) != HYST_OK) {
+            return 1;
+        }
+        printf("%.9g\n", (double)x);
+    }
+    return 0;
+}
+EOF
+want=$(paste -s -d, y.txt)
+for d in "" -DHYST_USE_DOUBLE; do
+    "$cc" -std=c99 -Wall -Wextra -Wpedantic -Werror $d -DWANT="$want" -I"$inc" -I. comp.c \
+        "$src"/*.c -lm -o comp || fail "header --compensator does not compile ($d)"
+    ./comp > xc.txt || fail "the header's compensator refused ($d)"
+    [ "$(tr '\n' ' ' < xc.txt)" = "$(tr '\n' ' ' < xi.txt)" ] ||
+        fail "header --compensator drives ($d): $(tr '\n' ' ' < xc.txt), inv: $(tr '\n' ' ' < xi.txt)"
+done
+for opt in --sealed "--intervals 32" "--rows 8"; do
+    # shellcheck disable=SC2086
+    if "$tool" header --model one.hyst --compensator $opt g2 2> err.txt; then
+        fail "header --compensator $opt accepted a grid"
+    fi
+    grep -q "closed form" err.txt || fail "header --compensator $opt: $(cat err.txt)"
+done
 # ---- a grid plant: a near step between 1 and 1.4 of 0..3, minor loops of decreasing size ----
 cat > plant.hyst <<'EOF'
 hyst-model-text 1
