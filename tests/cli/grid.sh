@@ -140,6 +140,10 @@ paste -d ' ' py.txt fy.txt | awk '{ d = $1 - $2; s += d * d; n++; lo = n == 1 ||
 awk '/knots 0 [0-9.]+ [0-9.]+ [0-9.]+$/ { k1 = $(NF - 2); k2 = $(NF - 1);
      exit !(k1 > 0.98 && k1 < 1.02 && k2 > 1.38 && k2 < 1.42) }' fit.txt ||
     fail "the knots found: $(grep -o 'knots.*' fit.txt)"
+# the grid's most intervals (above f0's highest degree) are accepted
+"$tool" fit --kind everett_grid --degree 12 --delay 0 --creep none rec.txt > fit12.txt ||
+    fail "fit --kind everett_grid --degree 12: $(cat fit12.txt)"
+grep -q "kind everett_grid, 12 intervals" fit12.txt || fail "--degree 12: $(grep residual fit12.txt)"
 "$tool" fit --creep none rec.txt > auto.txt || fail "default fit"
 grep -q '^# chosen by hold-out: degree [46], delay 0 (kind everett_grid' auto.txt ||
     fail "default fit on a grid plant: $(grep chosen auto.txt)"

@@ -37,7 +37,8 @@ static const char help[] =
     "full-range periodic wave. Columns are separated by blanks, ',' or ';'; '#'\n"
     "lines and blank lines are skipped.\n"
     "\n"
-    "  --degree N     polynomial degree, 1..9 (--kind everett: E's, 1..4). Without\n"
+    "  --degree N     polynomial degree, 1..9 (--kind everett: E's, 1..4;\n"
+    "                 --kind everett_grid: the grid's knot intervals, 1..12). Without\n"
     "                 it, the kind (unless --kind is given), the degree and the\n"
     "                 delay (unless --delay is given) are chosen by hold-out: each\n"
     "                 f0 of degree 1..9 and each E of degree 1..4 in each t-degree\n"
@@ -225,7 +226,11 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             }
             *(cli_is(&a, "--operators") ? &o->operators : &o->compare_pi) = (size_t)u;
         } else if (cli_is(&a, "--degree")) {
-            if (!cli_opt_ulong(&a, v, 1ul, HYST_MAX_DEGREE, &u)) {
+            /* each kind's own bound is checked below, once --kind is known */
+            if (!cli_opt_ulong(&a, v, 1ul, HYST_MAX_DEGREE > HYST_EVERETT_GRID_MAX_INTERVALS
+                                                ? HYST_MAX_DEGREE
+                                                : HYST_EVERETT_GRID_MAX_INTERVALS,
+                               &u)) {
                 return 1;
             }
             o->cfg.degree = (unsigned)u;
@@ -322,6 +327,13 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     if (o->kind == FIT_KIND_EVERETT && o->have_method) {
         return cli_fail(a.cmd, "option --method does not apply to --kind everett (it chooses "
                                "the estimator of the symmetric f0)");
+    }
+    if (o->kind != FIT_KIND_GRID && o->kind != FIT_KIND_EVERETT && o->have_degree &&
+        o->cfg.degree > HYST_MAX_DEGREE) {
+        return cli_fail(a.cmd, "option --degree: %u is above %u, the highest degree of f0 "
+                               "(--kind everett_grid: intervals up to %u)",
+                        o->cfg.degree, (unsigned)HYST_MAX_DEGREE,
+                        (unsigned)HYST_EVERETT_GRID_MAX_INTERVALS);
     }
     if (o->kind == FIT_KIND_EVERETT && o->have_degree && o->cfg.degree > HYST_EVERETT_MAX_DEGREE) {
         return cli_fail(a.cmd, "option --degree: %u is above %u, the highest degree of --kind "
