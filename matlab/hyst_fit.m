@@ -80,10 +80,20 @@ function f = hyst_fit(x, y, varargin)
 %                 and holdout_rms_without it on the last third
 %   (none of them without a creep term). rms and max_abs stay the
 %   hysteresis fit's own.
+%
+%   'rate' chooses a rate term (docs/rate.md) as 'hyst fit --rate R' does,
+%   with 'degree', [] only: 'none' (the default), 'auto' (the choice scored
+%   again with one of time constant 1 sample, 1/256 and 1/64 of the drive's
+%   period, kept when it lowers the hold-out error by more than 1 %) or a
+%   time constant TAU (1..1e9 samples, always). Its weight is fitted with
+%   the creep lag's and the constant on the whole record; F then has the
+%   fields rate_tau, rate_weight (HYST_SIM, HYST_INV, HYST_MODEL_SAVE and
+%   HYST_HEADER take them) and rate (tau, weight, holdout_rms,
+%   holdout_rms_without).
 %   A library error raises hyst:<status name>, e.g. hyst:ERR_SINGULAR.
   opts = hyst_options(varargin, struct('kind', '', 'degree', [], 'skip', 0, 'delay', [], ...
                                        'method', 'joint', 'domain', [], 'tdegree', [], ...
-                                       'creep', 'auto'), ...
+                                       'creep', 'auto', 'rate', 'none'), ...
                       'hyst_fit');
   kinds = 7;  % the choice compares the three kinds unless 'kind' names one
   if isempty(opts.kind)
@@ -112,14 +122,20 @@ function f = hyst_fit(x, y, varargin)
   if ~ischar(opts.kind) || ~any(strcmp(opts.kind, {'poly', 'everett', 'everett_grid'}))
     error('hyst:usage', 'hyst_fit: kind is ''poly'', ''everett'' or ''everett_grid''');
   end
-  creep_tau = creep_option(opts.creep);
+  creep_tau = creep_option(opts.creep, 'creep');
+  rate_tau = creep_option(opts.rate, 'rate');
+  if rate_tau >= 0 && ~isempty(opts.degree)
+    error('hyst:usage', ['hyst_fit: ''rate'' applies to the automatic choice (''degree'', []), ' ...
+                         'as hyst fit --rate']);
+  end
   x = double(x(:));
   y = double(y(:));
   cands = [];
   fraction = 0;  % a sub-sample delay chosen: the drive x interpolated by it
+  rate = struct('with_rate', false);  % a rate term chosen with the model
   if isempty(opts.degree)
-    [opts, cands, creep_tau, domain, x, fraction] = choose(opts, kinds, method, domain, x, y, ...
-                                                           creep_tau);
+    [opts, cands, creep_tau, domain, x, fraction, rate] = choose(opts, kinds, method, domain, ...
+                                                                 x, y, creep_tau, rate_tau);
   elseif isempty(opts.delay)
     % the delay of the model given, as 'hyst fit --degree D' without --delay
     % chooses it (the gateway's given_delay: fit_given_delay())
@@ -166,50 +182,82 @@ function f = hyst_fit(x, y, varargin)
   end
   skip = double(opts.skip);
   delay = double(opts.delay);
-  if creep_tau < 0 || numel(x) <= skip + delay || ~usable(f)
+  if numel(x) <= skip + delay || ~usable(f)
+    return;
+  end
+  if creep_tau < 0 && ~rate.with_rate
     return;
   end
   % the creep term scored by hold-out as hyst fit scores it (the gateway's
   % score: fit_score() of tools/cli/fit_select.c, the hold-out splits)
-  if strcmp(opts.kind, 'everett_grid')
-    tdegree = 0;
+  c = [];
+  without = NaN;
+  if creep_tau >= 0
+    if strcmp(opts.kind, 'everett_grid')
+      tdegree = 0;
+    end
+    [without, c] = hyst_mex('score', x, y, kind_code(opts.kind), double(opts.degree), ...
+                            double(tdegree), method, domain(1), domain(2), skip, delay, creep_tau);
+    if ~isfinite(without) || isempty(c) || ~(c.tau > 0) || ~isfinite(c.holdout_rms) || ...
+       (creep_tau == 0 && without <= c.holdout_rms * 1.01)
+      c = [];
+    end
   end
-  [without, c] = hyst_mex('score', x, y, kind_code(opts.kind), double(opts.degree), double(tdegree), ...
-                          method, domain(1), domain(2), skip, delay, creep_tau);
-  if ~isfinite(without)
-    c = [];
-  end
-  if isempty(c) || ~(c.tau > 0) || ~isfinite(c.holdout_rms) || ...
-     (creep_tau == 0 && without <= c.holdout_rms * 1.01)
+  if isempty(c) && ~rate.with_rate
     return;
   end
-  % its weight and a constant fitted to the residual of the model fitted on
+  % the weights and a constant fitted to the residual of the model fitted on
   % the whole record (no hold-out), the constant folded into the model
-  [~, cf] = holdout(f, x, y, skip, delay, numel(x) - delay, c.tau);
-  if ~(cf.tau > 0 && isfinite(cf.weight) && isfinite(cf.offset))
-    error('hyst:creep', ['hyst_fit: the creep term of time constant %g samples could not be ' ...
-                         'fitted to the model''s residual (a drive that never moves?)'], c.tau);
+  tau = -1;
+  if ~isempty(c)
+    tau = c.tau;
+  end
+  rate_tau = 0;
+  if rate.with_rate
+    rate_tau = rate.rate_tau;
+  end
+  [~, cf] = holdout(f, x, y, skip, delay, numel(x) - delay, tau, rate_tau);
+  if isempty(cf) || ~isfinite(cf.weight) || ~isfinite(cf.offset) || ...
+     (rate_tau > 0 && ~isfinite(cf.rate_weight))
+    what = 'creep';
+    if isempty(c)
+      what = 'rate';
+      tau = rate_tau;
+    end
+    error('hyst:creep', ['hyst_fit: the %s term of time constant %g samples could not be ' ...
+                         'fitted to the model''s residual (a drive that never moves?)'], what, tau);
   end
   if any(strcmp(opts.kind, {'everett', 'everett_grid'}))
     f.y_lo = f.y_lo + cf.offset;
   else
     f.coeffs(end) = f.coeffs(end) + cf.offset;
   end
-  f.creep_tau = cf.tau;
-  f.creep_weight = cf.weight;
-  f.creep = struct('tau', cf.tau, 'weight', cf.weight, 'offset', cf.offset, 'rms', cf.fit_rms, ...
-                   'max_abs', cf.max_abs, 'holdout_rms', c.holdout_rms, ...
-                   'holdout_rms_without', without);
+  if ~isempty(c)
+    f.creep_tau = cf.tau;
+    f.creep_weight = cf.weight;
+    f.creep = struct('tau', cf.tau, 'weight', cf.weight, 'offset', cf.offset, 'rms', cf.fit_rms, ...
+                     'max_abs', cf.max_abs, 'holdout_rms', c.holdout_rms, ...
+                     'holdout_rms_without', without);
+  end
+  if rate_tau > 0
+    f.rate_tau = cf.rate_tau;
+    f.rate_weight = cf.rate_weight;
+    f.rate = struct('tau', cf.rate_tau, 'weight', cf.rate_weight, ...
+                    'holdout_rms', rate.holdout_rms, 'holdout_rms_without', rate.without);
+  end
 end
 
-function [opts, cands, creep_tau, domain, x, fraction] = choose(opts, kinds, method, domain, ...
-                                                               x, y, creep_tau)
+function [opts, cands, creep_tau, domain, x, fraction, rate] = choose(opts, kinds, method, ...
+                                                                     domain, x, y, creep_tau, ...
+                                                                     rate_tau)
 % The kind, degree, t-degree and delay (and whether with a creep term)
 % chosen by hold-out with the hyst tool's own code (the gateway's select:
 % fit_search() of tools/cli/fit_select.c), as 'hyst fit' without --degree
 % and the Python package's fit(degree=None) choose: with 'delay', [] the
 % delays scaled to the drive and a fraction of a sample (x is then the
-% drive interpolated by it, which the model is fitted on).
+% drive interpolated by it, which the model is fitted on). rate: the rate
+% term scored on the choice's hold-out as hyst fit --rate scores it
+% (rate_tau: -1 none, 0 auto, > 0 that time constant).
   delay = -1;  % chosen
   if ~isempty(opts.delay)
     delay = double(opts.delay);
@@ -218,9 +266,9 @@ function [opts, cands, creep_tau, domain, x, fraction] = choose(opts, kinds, met
   if ~isempty(opts.tdegree)
     tdegree = double(opts.tdegree);
   end
-  [cands, best, with_creep, widened, fraction, xf] = ...
+  [cands, best, with_creep, widened, fraction, xf, rate] = ...
       hyst_mex('select', x, y, kinds, method, domain(1), domain(2), double(opts.skip), delay, ...
-               tdegree, creep_tau);
+               tdegree, creep_tau, rate_tau);
   if fraction > 0
     x = xf;
   end
@@ -272,18 +320,23 @@ function ok = usable(f)
   end
 end
 
-function [rms, c] = holdout(f, x, y, skip, delay, from, tau)
+function [rms, c] = holdout(f, x, y, skip, delay, from, tau, rate_tau)
 % The model f run from rest over the record as hyst fit scores it (the
 % gateway's holdout: its RMS error from sample from + 1 on), and the creep
-% term of time constant tau (0: the best of hyst fit's series) fitted to
-% its residual before that sample and scored after.
+% term of time constant tau (0: the best of hyst fit's series; < 0: none)
+% and the rate term of time constant rate_tau (0: none) fitted to its
+% residual before that sample and scored after.
+  if nargin < 8
+    rate_tau = 0;
+  end
   if isfield(f, 'kind') && strcmp(f.kind, 'everett_grid')
-    [rms, c] = hyst_mex('holdout_grid', f.knots, f.weights, f.y_lo, x, y, skip, delay, from, tau);
+    [rms, c] = hyst_mex('holdout_grid', f.knots, f.weights, f.y_lo, x, y, skip, delay, from, ...
+                        tau, rate_tau);
   elseif isfield(f, 'kind') && strcmp(f.kind, 'everett')
     [rms, c] = hyst_mex('holdout_everett', f.degree, f.lo, f.hi, f.y_lo, f.terms, x, y, ...
-                        skip, delay, from, tau);
+                        skip, delay, from, tau, rate_tau);
   else
-    [rms, c] = hyst_mex('holdout', f.coeffs, f.lo, f.hi, x, y, skip, delay, from, tau);
+    [rms, c] = hyst_mex('holdout', f.coeffs, f.lo, f.hi, x, y, skip, delay, from, tau, rate_tau);
   end
 end
 
@@ -293,14 +346,14 @@ function code = kind_code(kind)
   code = 1 + strcmp(kind, 'everett') + 3 * strcmp(kind, 'everett_grid');
 end
 
-function tau = creep_option(c)
-% 'creep' as hyst fit's --creep: -1 none, 0 auto, or the time constant.
+function tau = creep_option(c, what)
+% 'creep' ('rate') as hyst fit's --creep (--rate): -1 none, 0 auto, or the time constant.
   if ischar(c) && any(strcmp(c, {'none', 'auto'}))
     tau = -double(strcmp(c, 'none'));
   elseif isnumeric(c) && isscalar(c) && isreal(c) && c >= 1 && c <= 1e9
     tau = double(c);
   else
-    error('hyst:usage', ['hyst_fit: ''creep'' is ''none'', ''auto'' or a time constant of ' ...
-                         '1 to 1e9 samples']);
+    error('hyst:usage', ['hyst_fit: ''%s'' is ''none'', ''auto'' or a time constant of ' ...
+                         '1 to 1e9 samples'], what);
   end
 end

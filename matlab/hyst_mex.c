@@ -33,8 +33,8 @@
  *   f = hyst_mex('fit_grid', x, y, intervals, lo, hi, skip, delay)
  *   [delay, fraction, x] = hyst_mex('given_delay', x, y, kind, degree, t_degree, method, lo,
  *                                   hi, skip)
- *   [cands, best, with_creep] = hyst_mex('select', x, y, kinds, method, lo, hi, skip,
- *                                        delay_first, max_delay, t_degree, creep_tau)
+ *   [cands, best, with_creep, widened, fraction, x, rate] = hyst_mex('select', x, y, kinds,
+ *       method, lo, hi, skip, delay, t_degree, creep_tau[, rate_tau])
  *   m = hyst_mex('model_parse', bytes, file)    the reader of tools/model_text
  *   t = hyst_mex('model_write', kind, lo, hi, delay, coeffs, degree, y_lo, terms, ctau, cweight
  *                [, identified[, rtau, rweight]])
@@ -1026,7 +1026,7 @@ static void run_creep(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
 static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"tau", "weight", "offset", "holdout_rms", "fit_rms",
-                                   "max_abs"};
+                                   "max_abs", "rate_tau", "rate_weight"};
     static double grid_table[HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)];
     const int grid = everett == 2; /* holdout_grid: knots, weights, y_lo */
     const int at = grid ? 3 : everett ? 5 : 3; /* x, then y, skip, delay, from, tau */
@@ -1035,12 +1035,13 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     fit_creep_t best;
     double rms;
     size_t n, skip, delay, from;
-    int st = HYST_OK;
-    if (nrhs != at + 6) {
+    int st = HYST_OK, terms;
+    if (nrhs != at + 6 && nrhs != at + 7) {
         usage(grid      ? "holdout_grid takes knots, weights, y_lo, x, y, skip, delay, from, tau"
+                          "[, rate_tau]"
               : everett ? "holdout_everett takes degree, lo, hi, y_lo, terms, x, y, skip, delay, "
-                          "from, tau"
-                        : "holdout takes coeffs, lo, hi, x, y, skip, delay, from, tau");
+                          "from, tau[, rate_tau]"
+                        : "holdout takes coeffs, lo, hi, x, y, skip, delay, from, tau[, rate_tau]");
     }
     memset(&m, 0, sizeof m);
     memset(&best, 0, sizeof best);
@@ -1068,13 +1069,18 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     skip = count(prhs[at + 2], "skip", 0.0, 1e15);
     delay = count(prhs[at + 3], "delay", 0.0, 1e15);
     from = count(prhs[at + 4], "from", 0.0, 1e15);
+    /* tau < 0: no creep lag; a rate term (rate_tau > 0) is fitted with the lag's weight */
     best.tau = scalar(prhs[at + 5], "tau");
+    best.rate_tau = nrhs == at + 7 ? scalar(prhs[at + 6], "rate_tau") : 0.0;
+    best.rate_tau = best.rate_tau > 0 ? best.rate_tau : 0.0;
+    terms = best.tau >= 0 || best.rate_tau > 0;
+    best.tau = best.tau >= 0 ? best.tau : 0.0;
     rms = fit_model_run_creep(everett ? NULL : &m.f0, everett ? &curve : NULL,
                               (const double *)mxGetData(prhs[at]),
                               (const double *)mxGetData(prhs[at + 1]), n, skip, delay, from, NULL,
-                              NULL, best.tau >= 0 ? &best : NULL);
+                              NULL, terms ? &best : NULL);
     plhs[0] = mxCreateDoubleScalar(rms);
-    if (nlhs > 1 && (scalar(prhs[at + 5], "tau") < 0 || n <= delay + skip)) {
+    if (nlhs > 1 && (!terms || n <= delay + skip)) {
         plhs[1] = mxCreateDoubleMatrix(0, 0, mxREAL);
     } else if (nlhs > 1) {
         plhs[1] = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
@@ -1084,6 +1090,9 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
         set_field(plhs[1], "holdout_rms", mxCreateDoubleScalar(best.holdout_rms));
         set_field(plhs[1], "fit_rms", mxCreateDoubleScalar(best.fit_rms));
         set_field(plhs[1], "max_abs", mxCreateDoubleScalar(best.max_abs));
+        set_field(plhs[1], "rate_tau", mxCreateDoubleScalar(best.rate_tau));
+        set_field(plhs[1], "rate_weight",
+                  mxCreateDoubleScalar(best.rate_tau > 0 ? best.rate_weight : NAN));
     }
 }
 
@@ -1208,10 +1217,10 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     int kinds, with_creep = 0;
     hyst_status_t st;
     mxArray *s;
-    if (nrhs != 10 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+    if ((nrhs != 10 && nrhs != 11) || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
         mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
         usage("select takes x, y (real double vectors of one length), kinds, method, lo, hi, "
-              "skip, delay (-1: chosen), t_degree, creep_tau");
+              "skip, delay (-1: chosen), t_degree, creep_tau[, rate_tau]");
     }
     n = mxGetNumberOfElements(prhs[0]);
     memset(&base, 0, sizeof base);
@@ -1282,6 +1291,25 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     if (nlhs > 5) { /* a column, as hyst_fit holds x */
         plhs[5] = mxCreateDoubleMatrix((mwSize)n, 1, mxREAL);
         memcpy(mxGetPr(plhs[5]), drive, n * sizeof *drive);
+    }
+    if (nlhs > 6) { /* a rate term scored on the choice's hold-out (fit_rate_search()) */
+        static const char *rate_fields[] = {"with_rate", "rate_tau", "holdout_rms", "without"};
+        const double rate_tau = nrhs == 11 ? scalar(prhs[10], "rate_tau") : -1.0;
+        fit_candidate_t with_rate;
+        int kept = 0;
+        memset(&with_rate, 0, sizeof with_rate);
+        with_rate.creep.holdout_rms = NAN;
+        if (rate_tau >= 0 && best != (size_t)-1) {
+            kept = fit_rate_search(&base, drive, (const double *)mxGetData(prhs[1]), n,
+                                   &cand[best], with_creep, rate_tau, &with_rate);
+        }
+        plhs[6] = mxCreateStructMatrix(1, 1, 4, rate_fields);
+        mxSetField(plhs[6], 0, "with_rate", mxCreateLogicalScalar(kept != 0));
+        mxSetField(plhs[6], 0, "rate_tau", mxCreateDoubleScalar(with_rate.creep.rate_tau));
+        mxSetField(plhs[6], 0, "holdout_rms", mxCreateDoubleScalar(with_rate.creep.holdout_rms));
+        mxSetField(plhs[6], 0, "without",
+                   mxCreateDoubleScalar(best != (size_t)-1 ? fit_option_rms(&cand[best], with_creep)
+                                                           : NAN));
     }
     mxFree(cand);
     mxFree(drive);

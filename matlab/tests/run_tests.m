@@ -21,7 +21,7 @@ function failed = run_tests(root, ref, cli)
            @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors, ...
            @t_readers_agree, @t_fit_delay_saved, @t_fit_chooses_as_cli, ...
            @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
-           @t_rate_refused, @t_grid_sim_inv_equal_cli, @t_grid_written_as_cli, ...
+           @t_rate_refused, @t_rate_fit_as_cli, @t_grid_sim_inv_equal_cli, @t_grid_written_as_cli, ...
            @t_grid_header_equals_cli, @t_grid_refused, @t_grid_fit_as_cli, ...
            @t_grid_chosen_as_cli};
   passed = 0;
@@ -1555,6 +1555,33 @@ function t_rate_refused(ctx)
   expect_error('hyst:usage', @() hyst_header(m, 'rate_model'));
   m.rate_tau = 0.5;  % below 1 sample: the library refuses it
   expect_error('hyst:ERR_ARG', @() hyst_sim(m, 1));
+end
+
+function t_rate_fit_as_cli(ctx)
+  % hyst_fit(x, y, 'rate', R) scores and fits the rate term as hyst fit
+  % --rate R: the same model file; 'rate' with a degree given is refused
+  file = fullfile(ctx.tmp, 'rate_plant.hyst');
+  texts = rate_models();
+  write_text(file, texts{1});
+  x = signal(3000, 0, 40, 5);
+  y = hyst_sim(hyst_model_load(file), x);
+  rec = fullfile(ctx.tmp, 'rate_rec.txt');
+  fid = fopen(rec, 'w');
+  fprintf(fid, '%.17g %.17g\n', [x, y]');
+  fclose(fid);
+  cases = {1, '1'; 'auto', 'auto'};
+  for k = 1:size(cases, 1)
+    cli_file = fullfile(ctx.tmp, 'rate_cli.hyst');
+    run_cli(ctx, sprintf('fit --rate %s --save "%s" "%s" 2>&1', cases{k, 2}, cli_file, rec));
+    oct_file = fullfile(ctx.tmp, 'rate_oct.hyst');
+    f = hyst_fit(x, y, 'rate', cases{k, 1});
+    hyst_model_save(oct_file, f);
+    check(strcmp(fileread(oct_file), fileread(cli_file)), ...
+          'rate %s: hyst_fit differs from hyst fit --rate', cases{k, 2});
+    check(k > 1 || (isfield(f, 'rate_tau') && f.rate_tau == 1), 'rate 1: no rate term');
+  end
+  expect_error('hyst:usage', @() hyst_fit(x, y, 'degree', 3, 'rate', 1));
+  expect_error('hyst:usage', @() hyst_fit(x, y, 'rate', 0.5));
 end
 
 % ---- the asymmetric kind on a grid (model files of kind everett_grid) ----

@@ -284,11 +284,16 @@ class Fit:
     over the record, and ``holdout_rms`` with it and ``holdout_rms_without``
     it, the hold-out scores that chose it. ``creep_tau`` and
     ``creep_weight`` are the model's (lists; empty without one), and
-    ``model``, ``predict``, ``save`` and ``header`` include it. ``rms`` and
-    ``max_abs`` stay the hysteresis fit's own.
+    ``model``, ``predict``, ``save`` and ``header`` include it. ``rate`` is
+    the rate term fitted with it (:func:`fit`'s ``rate``), or None: a dict of
+    ``tau``, ``weight``, ``holdout_rms`` and ``holdout_rms_without``;
+    ``rate_tau`` and ``rate_weight`` the model's (None without one), which
+    the model, its file and its header include. ``rms`` and ``max_abs`` stay
+    the hysteresis fit's own.
     """
 
-    def __init__(self, result, dtype, capacity, delay=0, candidates=None, creep=None):
+    def __init__(self, result, dtype, capacity, delay=0, candidates=None, creep=None,
+                 rate=None):
         self.__dict__.update(result)
         self.kind = result.get("kind", "poly")
         self.t_degree = result.get("t_degree")
@@ -301,6 +306,9 @@ class Fit:
         self.creep = creep
         self.creep_tau = [creep["tau"]] if creep else []
         self.creep_weight = [creep["weight"]] if creep else []
+        self.rate = rate
+        self.rate_tau = rate["tau"] if rate else None
+        self.rate_weight = rate["weight"] if rate else None
         self.model = model_from(self.description(), dtype=dtype, capacity=capacity)
 
     def description(self):
@@ -317,6 +325,8 @@ class Fit:
             d = {"kind": "poly", "coeffs": list(self.coeffs), "lo": self.lo, "hi": self.hi}
         if self.creep_tau:
             d.update(creep_tau=list(self.creep_tau), creep_weight=list(self.creep_weight))
+        if self.rate:
+            d.update(rate_tau=self.rate_tau, rate_weight=self.rate_weight)
         if self.identified is not None:
             d["identified"] = tuple(self.identified)
         return d
@@ -446,7 +456,8 @@ def _status(c):
     return "OK" if increasing else "f0 not increasing"
 
 
-def _select(x, y, kinds, method, lo, hi, skip, delay, t_degree=None, creep_tau=-1.0):
+def _select(x, y, kinds, method, lo, hi, skip, delay, t_degree=None, creep_tau=-1.0,
+            rate_tau=-1.0):
     """Every candidate (kind, degree, t_degree, delay) and the choice, made
     by the `hyst` tool's own code (fit_select(), tools/cli/fit_select.c):
     fitted on the first two thirds, scored by its prediction of the last
@@ -457,13 +468,16 @@ def _select(x, y, kinds, method, lo, hi, skip, delay, t_degree=None, creep_tau=-
     one's domain (lo, hi) when it is a widened one (fit_chosen_domain()),
     else None, and the search (fit_search(): with delay None the delays are
     scaled to the drive and a fraction of a sample may be chosen; its "x"
-    is then the drive interpolated, which the model is fitted on)."""
+    is then the drive interpolated, which the model is fitted on; with
+    rate_tau >= 0 its "with_rate", "rate_tau", "rate_holdout_rms" and
+    "rate_without" say whether a rate term is kept, as ``hyst fit --rate``
+    scores it: fit_rate_search())."""
     mask = 0
     for k in kinds:
         mask |= _FIT_KINDS[k]
     cands, best, with_creep, domain, search = _hyst.select(
         x, y, mask, _METHODS[method], lo, hi, skip, -1 if delay is None else int(delay),
-        -1 if t_degree is None else int(t_degree), creep_tau)
+        -1 if t_degree is None else int(t_degree), creep_tau, rate_tau)
     for c in cands:
         c["status"] = _status(c)
     return cands, best, with_creep, domain, search
@@ -475,8 +489,9 @@ def _choose(cands, creep_tau=-1.0):
     return _hyst.choose(cands, creep_tau)
 
 
-def _creep_option(creep):
-    """fit()'s ``creep`` as hyst fit's --creep: -1 none, 0 auto, or the time constant."""
+def _creep_option(creep, what="creep"):
+    """fit()'s ``creep`` (or ``rate``) as hyst fit's --creep (--rate): -1
+    none, 0 auto, or the time constant."""
     if isinstance(creep, str) and creep in ("none", "auto"):
         return -1.0 if creep == "none" else 0.0
     try:
@@ -484,21 +499,24 @@ def _creep_option(creep):
     except (TypeError, ValueError):
         tau = math.nan
     if isinstance(creep, (str, bool)) or not 1.0 <= tau <= 1e9:
-        raise ValueError("creep must be 'none', 'auto' or a time constant of 1 to 1e9 samples, "
+        raise ValueError(f"{what} must be 'none', 'auto' or a time constant of 1 to 1e9 samples, "
                          f"not {creep!r}")
     return tau
 
 
-def _final_creep(res, x, y, kind, skip, delay, tau):
-    """The creep term of time constant tau fitted to the residual of the
-    model fitted on the whole record (hyst fit's fit_final_creep()), its
-    offset folded into the model (res: f0's constant or E's y_lo)."""
+def _final_creep(res, x, y, kind, skip, delay, tau, rate_tau=0.0):
+    """The creep term of time constant tau (0: none) and the rate term of
+    time constant rate_tau (0: none) fitted to the residual of the model
+    fitted on the whole record (hyst fit's fit_final_creep()), the offset
+    folded into the model (res: f0's constant or E's y_lo)."""
     n = len(x) - delay
     m = model_from(res, capacity=(n - skip) // 2 + 2)
-    c = _hyst.holdout(m, x, y, skip, delay, n, tau)["creep"]
-    if c is None or not (c["tau"] > 0 and math.isfinite(c["weight"]) and
-                         math.isfinite(c["offset"])):
-        raise ValueError(f"the creep term of time constant {tau:g} samples could not be fitted "
+    c = _hyst.holdout(m, x, y, skip, delay, n, tau, rate_tau if rate_tau > 0 else -1.0)["creep"]
+    if c is None or not ((c["tau"] > 0 or c["rate_tau"] > 0) and math.isfinite(c["weight"]) and
+                         math.isfinite(c["offset"]) and
+                         (not c["rate_tau"] > 0 or math.isfinite(c["rate_weight"]))):
+        what, t = ("creep", tau) if tau > 0 else ("rate", rate_tau)
+        raise ValueError(f"the {what} term of time constant {t:g} samples could not be fitted "
                          "to the model's residual (a drive that never moves?)")
     if kind in ("everett", "everett_grid"):
         res["y_lo"] += c["offset"]
@@ -508,7 +526,7 @@ def _final_creep(res, x, y, kind, skip, delay, tau):
 
 
 def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=None, skip=0,
-        delay=None, creep="auto", dtype=np.float64, capacity=DEFAULT_CAPACITY):
+        delay=None, creep="auto", rate="none", dtype=np.float64, capacity=DEFAULT_CAPACITY):
     """Identifies a model from a recorded drive ``x`` and response ``y``.
 
     Sample i (skip <= i < n - delay) pairs x[i] with y[i + delay]; the domain
@@ -548,8 +566,17 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     fits one lag of TAU samples. The creep term chosen gets its weight and a
     constant from the residual of the model fitted on the whole record, the
     constant folded into the model (f0's constant, E's y_lo): the result's
-    ``creep``, ``creep_tau`` and ``creep_weight`` (:class:`Fit`). Returns a
-    :class:`Fit`.
+    ``creep``, ``creep_tau`` and ``creep_weight`` (:class:`Fit`).
+
+    ``rate`` chooses a rate term (docs/rate.md) as ``hyst fit --rate`` does,
+    with ``degree=None`` only: ``"none"`` (the default), ``"auto"`` (the
+    choice scored again with one of time constant 1 sample, 1/256 and 1/64
+    of the drive's period, kept when it lowers the hold-out error by more
+    than PARSIMONY) or a time constant TAU (1..1e9 samples, always). Its
+    weight is fitted with the creep lag's and the constant on the whole
+    record: the result's ``rate`` (tau, weight, holdout_rms,
+    holdout_rms_without), ``rate_tau`` and ``rate_weight`` (None without
+    one). Returns a :class:`Fit`.
     """
     if method not in _METHODS:
         raise ValueError(f"method must be one of {sorted(_METHODS)}, not {method!r}")
@@ -561,16 +588,19 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
             degree is None or int(t_degree) < int(degree))):
         raise ValueError(f"t_degree must be 0..degree-1, not {t_degree!r}")
     creep_tau = _creep_option(creep)
+    rate_tau = _creep_option(rate, "rate")
+    if rate_tau >= 0 and degree is not None:
+        raise ValueError("rate applies to the automatic choice (degree=None), as hyst fit --rate")
     lo, hi = (0.0, 0.0) if domain is None else (float(domain[0]), float(domain[1]))
     x = np.ascontiguousarray(x, dtype=np.float64)
     y = np.ascontiguousarray(y, dtype=np.float64)
     skip = int(skip)
-    cands, chosen, with_creep, fraction = None, None, False, 0.0
+    cands, chosen, with_creep, fraction, search = None, None, False, 0.0, {}
     if degree is None:
         kinds = KINDS if kind is None else (kind,)
         cands, best, with_creep, widened, search = _select(
             x, y, kinds, method, lo, hi, skip, delay,
-            None if t_degree is None else int(t_degree), creep_tau)
+            None if t_degree is None else int(t_degree), creep_tau, rate_tau)
         if best is None:
             raise ValueError("no candidate gave a model (an increasing f0, a monotone E) "
                              "that could predict the last third of the record"
@@ -615,12 +645,20 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
         a, b = float(used.min()), float(used.max())
         if res["lo"] < a or b < res["hi"]:
             res["identified"] = (max(a, res["lo"]), min(b, res["hi"]))
-    creep_info = None
-    if with_creep and _refusal(res) is None:
-        c = _final_creep(res, x, y, kind or "poly", skip, int(delay), chosen["creep_tau"])
-        creep_info = {"tau": c["tau"], "weight": c["weight"], "offset": c["offset"],
-                      "rms": c["fit_rms"], "max_abs": c["max_abs"],
-                      "holdout_rms": chosen["creep_holdout_rms"],
-                      "holdout_rms_without": chosen["holdout_rms"]}
+    creep_info = rate_info = None
+    with_rate = search.get("with_rate", False)
+    if (with_creep or with_rate) and _refusal(res) is None:
+        c = _final_creep(res, x, y, kind or "poly", skip, int(delay),
+                         chosen["creep_tau"] if with_creep else 0.0,
+                         search["rate_tau"] if with_rate else 0.0)
+        if with_creep:
+            creep_info = {"tau": c["tau"], "weight": c["weight"], "offset": c["offset"],
+                          "rms": c["fit_rms"], "max_abs": c["max_abs"],
+                          "holdout_rms": chosen["creep_holdout_rms"],
+                          "holdout_rms_without": chosen["holdout_rms"]}
+        if with_rate:
+            rate_info = {"tau": c["rate_tau"], "weight": c["rate_weight"],
+                         "holdout_rms": search["rate_holdout_rms"],
+                         "holdout_rms_without": search["rate_without"]}
     return Fit(res, dtype, capacity, delay=int(delay) + fraction if fraction else int(delay),
-               candidates=cands, creep=creep_info)
+               candidates=cands, creep=creep_info, rate=rate_info)

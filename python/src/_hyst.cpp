@@ -674,6 +674,8 @@ nb::dict creep_dict(const fit_creep_t &c)
     d["holdout_rms"] = c.holdout_rms;
     d["fit_rms"] = c.fit_rms;
     d["max_abs"] = c.max_abs;
+    d["rate_tau"] = c.rate_tau;
+    d["rate_weight"] = c.rate_tau > 0 ? c.rate_weight : NAN;
     return d;
 }
 
@@ -700,7 +702,7 @@ nb::dict creep_score(const std::vector<double> &u, const std::vector<double> &r,
  * residual on the samples before `from` and scored after.
  */
 nb::dict holdout(Real<double> &m, const In<double> &x, const In<double> &y, size_t skip,
-                 size_t delay, size_t from, double creep_tau)
+                 size_t delay, size_t from, double creep_tau, double rate_tau)
 {
     const size_t n = x.shape(0);
     if (y.shape(0) != n) {
@@ -716,13 +718,15 @@ nb::dict holdout(Real<double> &m, const In<double> &x, const In<double> &y, size
         f0 = make_poly(m.coeffs, m.lo, m.hi);
     }
     fit_creep_t c{};
+    const bool terms = creep_tau >= 0 || rate_tau > 0;
     c.tau = creep_tau >= 0 ? creep_tau : 0.0;
+    c.rate_tau = rate_tau > 0 ? rate_tau : 0.0;
     const double rms = fit_model_run_creep(poly ? &f0 : nullptr, poly ? nullptr : &m.fwd,
                                            x.data(), y.data(), n, skip, delay, from, nullptr,
-                                           nullptr, creep_tau >= 0 ? &c : nullptr);
+                                           nullptr, terms ? &c : nullptr);
     nb::dict d;
     d["rms"] = rms;
-    d["creep"] = creep_tau >= 0 && n > skip + delay ? nb::object(creep_dict(c)) : nb::none();
+    d["creep"] = terms && n > skip + delay ? nb::object(creep_dict(c)) : nb::none();
     return d;
 }
 
@@ -1205,7 +1209,8 @@ nb::dict score_candidate(const In<double> &x, const In<double> &y, int kind, uns
  * with its creep term, the chosen one's domain when widened
  * (fit_chosen_domain(), else None) and the search's figures. */
 nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds, int method, double lo,
-                 double hi, size_t skip, long delay, long t_degree, double creep_tau)
+                 double hi, size_t skip, long delay, long t_degree, double creep_tau,
+                 double rate_tau)
 {
     const size_t n = x.shape(0);
     const hyst_ident_config_t base =
@@ -1232,6 +1237,17 @@ nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds,
     search["integer_delay"] = found.integer_delay;
     search["integer_holdout"] = found.integer_holdout;
     search["x"] = found.delay_fraction > 0.0 ? nb::cast(drive) : nb::none();
+    /* a rate term scored on the choice's hold-out, as hyst fit --rate scores it */
+    search["with_rate"] = false;
+    if (rate_tau >= 0 && best != (size_t)-1) {
+        fit_candidate_t with_rate;
+        const int kept = fit_rate_search(&base, drive.data(), y.data(), n, &cand[best],
+                                         with_creep, rate_tau, &with_rate);
+        search["with_rate"] = kept != 0;
+        search["rate_tau"] = with_rate.creep.rate_tau;
+        search["rate_holdout_rms"] = with_rate.creep.holdout_rms;
+        search["rate_without"] = fit_option_rms(&cand[best], with_creep);
+    }
     return nb::make_tuple(out, best == (size_t)-1 ? nb::none() : nb::cast(best),
                           with_creep != 0,
                           widened ? nb::object(nb::make_tuple(dom_lo, dom_hi)) : nb::none(),
@@ -1548,9 +1564,10 @@ NB_MODULE(_hyst, m)
     m.def("fit", &fit, "x"_a, "y"_a, "degree"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a);
     m.def("holdout", &holdout, "model"_a, "x"_a, "y"_a, "skip"_a, "delay"_a, "first"_a,
-          "creep_tau"_a = -1.0,
+          "creep_tau"_a = -1.0, "rate_tau"_a = -1.0,
           "A fresh float64 model run over the record as hyst fit scores it: its RMS error from "
-          "sample first on and, creep_tau >= 0, the creep term fitted to its residual.");
+          "sample first on and, creep_tau >= 0 (0: no lag) or rate_tau > 0, the creep lag and "
+          "rate term fitted to its residual.");
     m.def("creep_score", &creep_score, "u"_a, "r"_a, "train"_a, "x_rest"_a, "tau"_a,
           "The creep term hyst fit fits to a model's inputs u and residual r.");
     m.def("model_parse", &model_parse, "data"_a, "path"_a,
@@ -1570,7 +1587,7 @@ NB_MODULE(_hyst, m)
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "intervals"_a, "rows"_a,
           "A firmware header's compensator table, as `hyst header --compensator` writes it.");
     m.def("select", &select_candidates, "x"_a, "y"_a, "kinds"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
-          "delay"_a, "t_degree"_a, "creep_tau"_a,
+          "delay"_a, "t_degree"_a, "creep_tau"_a, "rate_tau"_a = -1.0,
           "hyst fit's automatic choice (fit_search(); delay < 0: chosen, scaled to the drive and "
           "to a fraction of a sample): (candidates, index chosen, with creep, the chosen one's "
           "domain (lo, hi) when widened, else None, and the search: max_delay, delay_fraction, "

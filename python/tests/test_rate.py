@@ -153,3 +153,28 @@ def test_written_as_the_cli_writes_it(c_build, tmp_path, text):
     assert '#include "hyst/rate.h"' in mine
     if desc["kind"] == "poly":
         assert mine[mine.index("#ifndef"):] == cli_text[cli_text.index("#ifndef"):]
+
+
+@pytest.mark.parametrize("rate", ["1", "auto"])
+def test_fit_chooses_the_rate_term_as_the_cli(c_build, tmp_path, rate):
+    """fit(x, y, rate=R) scores and fits the rate term as `hyst fit --rate R`:
+    the same model file, bit for bit; rate with a degree given is refused."""
+    plant = tmp_path / "plant.hyst"
+    plant.write_text(EV_RATE)
+    x = signal(3000, 0.0, 40.0, seed=5)
+    y = hyst.model_from(hyst.load_model(plant)).process(x)
+    rec = tmp_path / "rec.txt"
+    rec.write_text("".join(f"{a:.17g} {b:.17g}\n" for a, b in zip(x, y)))
+    r = subprocess.run([str(c_build["cli"]), "fit", "--rate", rate, "--save",
+                        str(tmp_path / "cli.hyst"), str(rec)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    f = hyst.fit(x, y, rate=rate if rate == "auto" else float(rate))
+    f.save(tmp_path / "py.hyst")
+    assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
+    if rate == "1":  # always kept: the model runs it
+        assert f.rate_tau == 1.0 and f.rate["holdout_rms"] > 0
+        assert "rate_tau 1" in (tmp_path / "py.hyst").read_text()
+    with pytest.raises(ValueError, match="rate applies to the automatic choice"):
+        hyst.fit(x, y, 3, rate=1)
+    with pytest.raises(ValueError, match="rate must be"):
+        hyst.fit(x, y, rate=0.5)
