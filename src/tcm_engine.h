@@ -158,10 +158,15 @@ HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
 
 /* G at u = d scale for the rare paths (merges, the deadband, requests,
  * degrees 9 and up, the clamped output of a live merge): one out-of-line
- * copy, not one inlined Horner switch per call site. */
+ * copy, Horner's loop (the same multiply-adds as the per-sample paths'
+ * unrolled cases, so the same G). */
 static TCM_NOINLINE TCM_Y TCM_NAME(g_of)(const hyst_tcm_t *S, TCM_Y d, TCM_Y scale)
 {
-    return TCM_NAME(g_unit)(S, d * scale);
+    const TCM_Y u = d * scale;
+    if (S->degree - 1u < (unsigned)HYST_MAX_DEGREE) {
+        return NUM_MUL_G(NUM_NAME(horner_loop)(S->coef, S->degree, u), u);
+    }
+    return TCM_KIND_G(S, u);
 }
 
 /* The same at an input difference d. */
