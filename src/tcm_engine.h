@@ -30,7 +30,10 @@
  *   TCM_ADD_BOUND(a, e)  a += e for an error bound (saturating in fixed point)
  * and the products of Horner's rule (src/num_ops.h: NUM_MUL, NUM_MUL_G).
  * TCM_REAL_INPUT 1 says TCM_X is TCM_Y (a TP's input may then be any real:
- * achieved_top()); default 0. */
+ * achieved_top()); default 0. TCM_POLY_ONLY 1 says the variant binds the
+ * polynomial kind alone (src/hyst_q31.c): emit() then has Horner's cases
+ * only, none of the other kinds' (a table, the banks, the kinds' own);
+ * default 0. */
 #ifndef HYST_TCM_ENGINE_H
 #define HYST_TCM_ENGINE_H
 
@@ -74,6 +77,9 @@
 #endif
 #ifndef TCM_REAL_INPUT
 #define TCM_REAL_INPUT 0
+#endif
+#ifndef TCM_POLY_ONLY
+#define TCM_POLY_ONLY 0
 #endif
 
 /* Members of the variant's numbers: inputs and outputs. */
@@ -317,6 +323,11 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
 /* emit()'s cases of the kinds without a slow sample of their own: a table
  * of cubic pieces (case 0: G = acc; its exact intervals by the tail call)
  * and polynomials of degree 1..8. */
+#if TCM_POLY_ONLY /* case 0 never runs: the jump table starts there (one subtraction less) */
+#define TCM_EMIT_CASES_(S, x, how, u, acc)                      \
+    case 0: acc = 0; break;                                     \
+        NUM_HORNER_CASES_((S)->coef, u, acc)
+#else
 #define TCM_EMIT_CASES_(S, x, how, u, acc)                      \
     case 0:                                                     \
         acc = NUM_NAME(table_g)((S)->table.TCM_YF, u);          \
@@ -326,6 +337,7 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
         u = NUM_G_ONE;                                          \
         break;                                                  \
         NUM_HORNER_CASES_((S)->coef, u, acc)
+#endif
 
 /* The end of a sample on the current branch, as its kind set it up
  * (S->horner, hyst_util.h): its output, stored as y_prev (and as the moving
@@ -348,10 +360,12 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
     if (how == TCM_FAST) {
         switch (S->horner) {
         TCM_EMIT_CASES_(S, x, how, u, acc);
+#if !TCM_POLY_ONLY
         TCM_HORNER_BANK_(HYST_HORNER_BANK1_, S->coef, u, acc);
         TCM_HORNER_BANK_(HYST_HORNER_BANK2_, S->coef, u, acc);
         case HYST_HORNER_OWN_: /* the kind evaluates every sample */
             return TCM_KIND(S)->fast(S, x);
+#endif
 #ifndef NUM_FIXED
         case HYST_HORNER_PIECE_: { /* a cubic piece of the branch (S->coef), cached for
                                     * interval cached_k at v_scale intervals per unit of u:
@@ -1057,10 +1071,12 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
 /* G at u, as emit() evaluates it. */
 HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u)
 {
+#if !TCM_POLY_ONLY
     if (deg == 0u) { /* a tabulated inverse: the same arithmetic as emit(), whose G * 1 is G */
         const TCM_Y v = NUM_NAME(table_g)(S->table.TCM_YF, u);
         return v >= 0 ? v : TCM_KIND_G(S, u);
     }
+#endif
     return NUM_NAME(horner)(S->coef, deg, u);
 }
 
