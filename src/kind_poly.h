@@ -8,13 +8,15 @@
 #ifndef HYST_KIND_POLY_H
 #define HYST_KIND_POLY_H
 
-/* f0's G of degree 1..HYST_MAX_DEGREE: S->degree and S->coef. */
+/* f0's G of degree n = 1..HYST_MAX_DEGREE (the curve's check): S->degree
+ * and S->coef, lowest power first (the curve's a[0] is the highest). */
 static void TCM_NAME(poly_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 {
+    const unsigned n = curve->u.poly.degree;
     unsigned k;
-    S->degree = curve->u.poly.degree;
-    for (k = 0u; k < S->degree && k < HYST_MAX_DEGREE; ++k) {
-        YV(S->coef[k]) = YV(curve->u.poly.a[k]);
+    S->degree = n;
+    for (k = 0u; k < n; ++k) {
+        YV(S->coef[n - 1u - k]) = YV(curve->u.poly.a[k]);
     }
 }
 

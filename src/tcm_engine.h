@@ -9,7 +9,7 @@
  *   TCM_VARIANT          hyst_variant_t of its instances
  *   TCM_X, TCM_XF        stored input type and its hyst_num_t member
  *   TCM_Y, TCM_YF        output type and its member (src/num_ops.h included
- *                        for it: NUM_NAME(horner), NUM_NAME(abs))
+ *                        for it: NUM_MULADD, NUM_NAME(abs))
  *   TCM_ARG, TCM_IN      per-sample input type (may be wider than TCM_X),
  *                        block input type
  *   TCM_R(a)             a as TCM_Y (exact for codes up to 24 bits)
@@ -155,24 +155,83 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in);
 #define TCM_KIND_G(S, u) TCM_KIND(S)->g((S), (u))
 #endif
 
+/* The instance's polynomial branches (S->degree n = 1..HYST_MAX_DEGREE):
+ * G(u) = u acc(u), acc = c[0] + c[1] u + ... + c[n-1] u^(n-1) with c =
+ * S->coef, lowest power first. Horner's rule for degree n starts at c[n-1],
+ * and every degree ends with the same multiply-adds on the same
+ * coefficients (..., c[1], c[0]): a compiler optimising for size keeps one
+ * copy of those tails for all the unrolled cases, where an array highest
+ * power first ends each degree on a coefficient of its own. Cases above
+ * HYST_MAX_DEGREE cannot run and read c[0], not past the array. */
+#define TCM_C_(c, k) YV((c)[(k) < HYST_MAX_DEGREE ? (k) : 0])
+#define TCM_H_(acc, c, u, k) NUM_MULADD(acc, u, TCM_C_(c, k)) /* acc u + c[k] */
+#define TCM_HORNER1_(c, u) TCM_C_(c, 0)
+#define TCM_HORNER2_(c, u) TCM_H_(TCM_C_(c, 1), c, u, 0)
+#define TCM_HORNER3_(c, u) TCM_H_(TCM_H_(TCM_C_(c, 2), c, u, 1), c, u, 0)
+#define TCM_HORNER4_(c, u) TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 3), c, u, 2), c, u, 1), c, u, 0)
+#define TCM_HORNER5_(c, u) \
+    TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 4), c, u, 3), c, u, 2), c, u, 1), c, u, 0)
+#define TCM_HORNER6_(c, u) \
+    TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 5), c, u, 4), c, u, 3), c, u, 2), c, u, 1), c, u, 0)
+#define TCM_HORNER7_(c, u)                                                                      \
+    TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 6), c, u, 5), c, u, 4), c, u, 3), c, u, 2), \
+                  c, u, 1),                                                                     \
+           c, u, 0)
+#define TCM_HORNER8_(c, u)                                                                      \
+    TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 7), c, u, 6), c, u, 5), c, u, 4), \
+                                c, u, 3),                                                       \
+                         c, u, 2),                                                              \
+                  c, u, 1),                                                                     \
+           c, u, 0)
+/* The cases 1..8 of a switch on the degree, unrolled (the per-sample
+ * paths: no loop, no call); the caller writes case 0 (the jump table
+ * starts there) and the default (degree 9 and up). */
+#define TCM_HORNER_CASES_(c, u, acc)          \
+    case 1: acc = TCM_HORNER1_(c, u); break;  \
+    case 2: acc = TCM_HORNER2_(c, u); break;  \
+    case 3: acc = TCM_HORNER3_(c, u); break;  \
+    case 4: acc = TCM_HORNER4_(c, u); break;  \
+    case 5: acc = TCM_HORNER5_(c, u); break;  \
+    case 6: acc = TCM_HORNER6_(c, u); break;  \
+    case 7: acc = TCM_HORNER7_(c, u); break;  \
+    case 8: acc = TCM_HORNER8_(c, u); break
+
+/* Horner's loop over acc's n >= 1 coefficients: the degrees above 8. */
+HYST_INLINE TCM_Y TCM_NAME(poly_loop)(const hyst_num_t *c, unsigned n, TCM_Y u)
+{
+    TCM_Y acc = YV(c[n - 1u]);
+    unsigned k;
+    for (k = 2u; k <= n; ++k) {
+        acc = NUM_MULADD(acc, u, YV(c[n - k]));
+    }
+    return acc;
+}
+
+/* G(u) of a polynomial branch of n coefficients c. */
+HYST_INLINE TCM_Y TCM_NAME(poly_g)(const hyst_num_t *c, unsigned n, TCM_Y u)
+{
+    TCM_Y acc;
+    switch (n) { /* independent cases: no register merges */
+    case 0: acc = 0; break; /* never called so */
+    TCM_HORNER_CASES_(c, u, acc);
+    default: acc = TCM_NAME(poly_loop)(c, n, u); break;
+    }
+    return NUM_MUL_G(acc, u);
+}
+
 /* G at u, any kind: Horner for polynomial branches, else the kind's. */
 HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
 {
-    return S->degree - 1u < (unsigned)HYST_MAX_DEGREE ? NUM_NAME(horner)(S->coef, S->degree, u)
+    return S->degree - 1u < (unsigned)HYST_MAX_DEGREE ? TCM_NAME(poly_g)(S->coef, S->degree, u)
                                                       : TCM_KIND_G(S, u);
 }
 
 /* G at u = d scale for the rare paths (merges, the deadband, requests,
  * degrees 9 and up, the clamped output of a live merge): one out-of-line
- * copy, Horner's loop (the same multiply-adds as the per-sample paths'
- * unrolled cases, so the same G). */
+ * copy, not one inlined Horner switch per call site. */
 static TCM_NOINLINE TCM_Y TCM_NAME(g_of)(const hyst_tcm_t *S, TCM_Y d, TCM_Y scale)
 {
-    const TCM_Y u = d * scale;
-    if (S->degree - 1u < (unsigned)HYST_MAX_DEGREE) {
-        return NUM_MUL_G(NUM_NAME(horner_loop)(S->coef, S->degree, u), u);
-    }
-    return TCM_KIND_G(S, u);
+    return TCM_NAME(g_unit)(S, d * scale);
 }
 
 /* The same at an input difference d. */
@@ -315,10 +374,10 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
  * path out better so (one instruction less on a rising or a falling
  * sample of every kind). */
 #define TCM_HORNER_BANK_(base, a, u, acc)                  \
-    case (base) + 1u: acc = NUM_HORNER1_(a, u); break;     \
-    case (base) + 2u: acc = NUM_HORNER2_(a, u); break;     \
-    case (base) + 3u: acc = NUM_HORNER3_(a, u); break;     \
-    case (base) + 4u: acc = NUM_HORNER4_(a, u); break
+    case (base) + 1u: acc = TCM_HORNER1_(a, u); break;     \
+    case (base) + 2u: acc = TCM_HORNER2_(a, u); break;     \
+    case (base) + 3u: acc = TCM_HORNER3_(a, u); break;     \
+    case (base) + 4u: acc = TCM_HORNER4_(a, u); break
 
 /* emit()'s cases of the kinds without a slow sample of their own: a table
  * of cubic pieces (case 0: G = acc; its exact intervals by the tail call)
@@ -326,7 +385,7 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
 #if TCM_POLY_ONLY /* case 0 never runs: the jump table starts there (one subtraction less) */
 #define TCM_EMIT_CASES_(S, x, how, u, acc)                      \
     case 0: acc = 0; break;                                     \
-        NUM_HORNER_CASES_((S)->coef, u, acc)
+        TCM_HORNER_CASES_((S)->coef, u, acc)
 #else
 #define TCM_EMIT_CASES_(S, x, how, u, acc)                      \
     case 0:                                                     \
@@ -336,7 +395,7 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
         }                                                       \
         u = NUM_G_ONE;                                          \
         break;                                                  \
-        NUM_HORNER_CASES_((S)->coef, u, acc)
+        TCM_HORNER_CASES_((S)->coef, u, acc)
 #endif
 
 /* The end of a sample on the current branch, as its kind set it up
@@ -857,14 +916,14 @@ static TCM_Y TCM_NAME(poly_loop_error)(const hyst_tcm_t *S, TCM_Y full)
     const TCM_Y u = full * YV(S->unit);
     TCM_Y rest = 0, sum = 0, pw = u; /* pw = u^(k-2) from k = 3 */
     unsigned k;
-    for (k = 3u; k <= n; ++k) { /* coef[n - k] multiplies u^k */
-        const TCM_Y t = NUM_NAME(abs)(YV(S->coef[n - k])) * pw;
+    for (k = 3u; k <= n; ++k) { /* coef[k - 1] multiplies u^k */
+        const TCM_Y t = NUM_NAME(abs)(YV(S->coef[k - 1u])) * pw;
         rest += (TCM_Y)(k * (k - 1u)) * t;
         sum += t;
         pw *= u;
     }
     if (n >= 2u) {
-        const TCM_Y a2 = NUM_NAME(abs)(YV(S->coef[n - 2u]));
+        const TCM_Y a2 = NUM_NAME(abs)(YV(S->coef[1]));
         if (rest < 2 * a2) {
             return TCM_NAME(loop_height)(S, full);
         }
@@ -1077,7 +1136,7 @@ HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u)
         return v >= 0 ? v : TCM_KIND_G(S, u);
     }
 #endif
-    return NUM_NAME(horner)(S->coef, deg, u);
+    return TCM_NAME(poly_g)(S->coef, deg, u);
 }
 
 /* The block call's inner loop: the samples from i on that stay inside the
