@@ -55,6 +55,7 @@ static hyst_q31_t hyst_q31_no_other(const hyst_curve_t *curve, hyst_q31_t v)
 /* d * unit is exact: halve the argument, not the code difference */
 #define TCM_G_HALF(S, d) TCM_NAME(g_of)((S), (d) * (S)->unit.q31 / 2, 1)
 #define TCM_ADD_BOUND(a, e) ((a) = hyst_q31_add_bound((a), (e)))
+#define TCM_POLY_ONLY 1 /* kind_poly alone */
 #include "tcm_engine.h"
 #include "kind_poly.h"
 

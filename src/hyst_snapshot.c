@@ -283,7 +283,11 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
         return crc_num(crc, &c->u.everett.tol, f->yt);
     }
     for (k = 0u; k < S->degree && k < HYST_MAX_DEGREE; ++k) {
-        crc = crc_num(crc, &S->coef[k], f->yt);
+        /* a polynomial's coefficients highest power first, as the curve
+         * holds them (the instance keeps them lowest first); other kinds'
+         * numbers as stored */
+        const unsigned at = S->degree <= HYST_MAX_DEGREE ? S->degree - 1u - k : k;
+        crc = crc_num(crc, &S->coef[at], f->yt);
     }
     if (c == NULL) {
         return crc;

@@ -11,8 +11,9 @@
 #define HYST_KIND_EVERETT_H
 
 /* The branch's G coefficients at `anchor` from a table of the
- * curve (curve.h): coef[i], of w^(n - i), is row i (i + 1 entries), a
- * polynomial in the anchor, by Horner's rule. */
+ * curve (curve.h): coef[n - 1 - i], of w^(n - i), is row i (i + 1
+ * entries), a polynomial in the anchor, by Horner's rule (lowest power
+ * first, as the engine evaluates S->coef). */
 HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
                                        hyst_num_t *coef)
 {
@@ -20,15 +21,16 @@ HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y 
      * the curve's check): a slow sample derives them */
     switch (n) {
     case 4u:
-        YV(coef[3]) = NUM_MULADD(
+        YV(coef[n - 4u]) = NUM_MULADD(
             NUM_MULADD(NUM_MULADD(YV(row[6]), anchor, YV(row[7])), anchor, YV(row[8])), anchor,
             YV(row[9]));
         /* fall through */
     case 3u:
-        YV(coef[2]) = NUM_MULADD(NUM_MULADD(YV(row[3]), anchor, YV(row[4])), anchor, YV(row[5]));
+        YV(coef[n - 3u]) =
+            NUM_MULADD(NUM_MULADD(YV(row[3]), anchor, YV(row[4])), anchor, YV(row[5]));
         /* fall through */
-    case 2u: YV(coef[1]) = NUM_MULADD(YV(row[1]), anchor, YV(row[2])); /* fall through */
-    case 1u: YV(coef[0]) = YV(row[0]); /* fall through */
+    case 2u: YV(coef[n - 2u]) = NUM_MULADD(YV(row[1]), anchor, YV(row[2])); /* fall through */
+    case 1u: YV(coef[n - 1u]) = YV(row[0]); /* fall through */
     default: break;
     }
 }
@@ -40,10 +42,10 @@ HYST_INLINE void TCM_NAME(table_coefs_x)(const hyst_num_t *lin, unsigned n, TCM_
                                          hyst_num_t *coef)
 {
     switch (n) {
-    case 4u: YV(coef[3]) = NUM_MULADD(YV(lin[5]), x, YV(lin[6])); /* fall through */
-    case 3u: YV(coef[2]) = NUM_MULADD(YV(lin[3]), x, YV(lin[4])); /* fall through */
-    case 2u: YV(coef[1]) = NUM_MULADD(YV(lin[1]), x, YV(lin[2])); /* fall through */
-    case 1u: YV(coef[0]) = YV(lin[0]); /* fall through */
+    case 4u: YV(coef[n - 4u]) = NUM_MULADD(YV(lin[5]), x, YV(lin[6])); /* fall through */
+    case 3u: YV(coef[n - 3u]) = NUM_MULADD(YV(lin[3]), x, YV(lin[4])); /* fall through */
+    case 2u: YV(coef[n - 2u]) = NUM_MULADD(YV(lin[1]), x, YV(lin[2])); /* fall through */
+    case 1u: YV(coef[n - 1u]) = YV(lin[0]); /* fall through */
     default: break;
     }
 }
@@ -120,7 +122,7 @@ static TCM_NOINLINE void TCM_NAME(everett_derive)(hyst_tcm_t *S)
         if (TCM_DERIVES(derive)) {                \
             derivation(n##u);                     \
         }                                         \
-        acc = NUM_HORNER##n##_(S->coef, u);       \
+        acc = TCM_HORNER##n##_(S->coef, u);       \
         break
 #define TCM_EVERETT_CASES_(base, derivation)      \
     TCM_EVERETT_CASE_(base, 1, derivation);       \

@@ -8,62 +8,20 @@
 #ifndef HYST_KIND_POLY_H
 #define HYST_KIND_POLY_H
 
-/* f0's G of degree 1..HYST_MAX_DEGREE: S->degree and S->coef. */
+/* f0's G of degree n = 1..HYST_MAX_DEGREE (the curve's check): S->degree
+ * and S->coef, lowest power first (the curve's a[0] is the highest). */
 static void TCM_NAME(poly_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 {
+    const unsigned n = curve->u.poly.degree;
     unsigned k;
-    S->degree = curve->u.poly.degree;
-    for (k = 0u; k < S->degree && k < HYST_MAX_DEGREE; ++k) {
-        YV(S->coef[k]) = YV(curve->u.poly.a[k]);
+    S->degree = n;
+    for (k = 0u; k < n; ++k) {
+        YV(S->coef[n - 1u - k]) = YV(curve->u.poly.a[k]);
     }
 }
 
-#ifndef NUM_FIXED
-/* The deadband's error bound of a skipped loop [b, a] of width d = a - b
- * (full: d as g's argument difference, u in g's units). Inside the window
- * the full model differs from the branch moved back along by the measure
- * of relays in a rectangle (x - b) x (a - x) of density g''(a' - b'), whose
- * diagonal a' - b' = v is at most min(v, u - v) long: the error is at most
- * the integral of |g''(v)| min(v, u - v) over [0, u], bounded term by term
- * (g = sum a_k u^k: |a_2| u^2 / 2 + the sum of |a_k| u^k, k >= 3, with
- * min(v, u - v) <= u - v). Where g'' is proven one-signed on [0, u] (its
- * constant term wins), the tighter height of the loop at its middle,
- * |g(d) - 2 g(d/2)| (docs/memory.md). */
-static TCM_NOINLINE TCM_Y TCM_NAME(poly_loop_error)(const hyst_tcm_t *S, TCM_X b, TCM_X a)
-{
-    const TCM_Y full = TCM_D((TCM_X)(a - b), (TCM_X)0);
-    const unsigned n = S->degree;
-    const TCM_Y u = full * YV(S->unit);
-    TCM_Y rest = 0, sum = 0, pw = u; /* pw = u^(k-2) from k = 3 */
-    unsigned k;
-    for (k = 3u; k <= n; ++k) { /* coef[n - k] multiplies u^k */
-        const TCM_Y t = NUM_NAME(abs)(YV(S->coef[n - k])) * pw;
-        rest += (TCM_Y)(k * (k - 1u)) * t;
-        sum += t;
-        pw *= u;
-    }
-    if (n >= 2u) {
-        const TCM_Y a2 = NUM_NAME(abs)(YV(S->coef[n - 2u]));
-        if (rest < 2 * a2) {
-            return NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));
-        }
-        sum += a2 * NUM_C(0.5);
-    }
-    return sum * u * u * NUM_C(1.01); /* rounded up by 1 % */
-}
-#endif
-
-/* Fixed-point outputs: the deadband's bound of the engine (loop_error NULL). */
-#ifdef NUM_FIXED
-#define TCM_POLY_LOOP_ERROR NULL
-#else
-#define TCM_POLY_LOOP_ERROR TCM_NAME(poly_loop_error)
-#endif
-
-static const TCM_NAME(kind_t) TCM_NAME(kind_poly) = {
-    .loop_error = TCM_POLY_LOOP_ERROR,
-    .attach = TCM_NAME(poly_attach)};
-
-#undef TCM_POLY_LOOP_ERROR
+/* Its deadband bound is the engine's for a polynomial branch (skip()):
+ * no loop_error. */
+static const TCM_NAME(kind_t) TCM_NAME(kind_poly) = {.attach = TCM_NAME(poly_attach)};
 
 #endif /* HYST_KIND_POLY_H */

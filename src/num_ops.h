@@ -37,11 +37,12 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
 #define NUM_G_ONE 1 /* NUM_MUL_G(a, NUM_G_ONE) is a */
 #endif
 
-/* The cases 1..8 of Horner's rule unrolled by a switch on the degree n:
+/* The cases 1..8 of Horner's rule unrolled by a switch on the degree n
+ * over a curve's coefficients (curve.h, highest power first; the engine's
+ * instance keeps them lowest first, src/tcm_engine.h):
  * acc = a[0] u^(n-1) + ... + a[n-1], one multiply-add per coefficient, no
- * loop and no call (the per-sample path). The caller writes the switch, its
- * case 0 (the jump table starts there) and its default (n >= 9), so that
- * the engine can route other values there. */
+ * loop and no call. The caller writes the switch, its case 0 (the jump
+ * table starts there) and its default (n >= 9). */
 #define NUM_HORNER_CASES_(a, u, acc)                                                         \
     case 1: acc = NUM_HORNER1_(a, u); break;                                                  \
     case 2: acc = NUM_HORNER2_(a, u); break;                                                  \
@@ -67,7 +68,7 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
  * are at most HYST_MAX_DEGREE) and read a[0], not past the array. */
 #define NUM_HORNER_(a, u, acc_, k_) \
     NUM_MULADD(acc_, u, (a)[(k_) < HYST_MAX_DEGREE ? (k_) : 0].NUM_F)
-/* Degrees 1..4 (n coefficients; also the engine's asymmetric cases). */
+/* Degrees 1..4 (n coefficients). */
 #define NUM_HORNER1_(a, u) ((a)[0].NUM_F)
 #define NUM_HORNER2_(a, u) NUM_HORNER_(a, u, NUM_HORNER1_(a, u), 1)
 #define NUM_HORNER3_(a, u) NUM_HORNER_(a, u, NUM_HORNER2_(a, u), 2)

@@ -9,7 +9,7 @@
  *   TCM_VARIANT          hyst_variant_t of its instances
  *   TCM_X, TCM_XF        stored input type and its hyst_num_t member
  *   TCM_Y, TCM_YF        output type and its member (src/num_ops.h included
- *                        for it: NUM_NAME(horner), NUM_NAME(abs))
+ *                        for it: NUM_MULADD, NUM_NAME(abs))
  *   TCM_ARG, TCM_IN      per-sample input type (may be wider than TCM_X),
  *                        block input type
  *   TCM_R(a)             a as TCM_Y (exact for codes up to 24 bits)
@@ -30,7 +30,10 @@
  *   TCM_ADD_BOUND(a, e)  a += e for an error bound (saturating in fixed point)
  * and the products of Horner's rule (src/num_ops.h: NUM_MUL, NUM_MUL_G).
  * TCM_REAL_INPUT 1 says TCM_X is TCM_Y (a TP's input may then be any real:
- * achieved_top()); default 0. */
+ * achieved_top()); default 0. TCM_POLY_ONLY 1 says the variant binds the
+ * polynomial kind alone (src/hyst_q31.c): emit() then has Horner's cases
+ * only, none of the other kinds' (a table, the banks, the kinds' own);
+ * default 0. */
 #ifndef HYST_TCM_ENGINE_H
 #define HYST_TCM_ENGINE_H
 
@@ -74,6 +77,9 @@
 #endif
 #ifndef TCM_REAL_INPUT
 #define TCM_REAL_INPUT 0
+#endif
+#ifndef TCM_POLY_ONLY
+#define TCM_POLY_ONLY 0
 #endif
 
 /* Members of the variant's numbers: inputs and outputs. */
@@ -123,7 +129,8 @@ typedef struct TCM_NAME(kind) {
     /* the kind's slow sample (src/tcm_slow.h); NULL: the engine's */
     TCM_Y (*slow)(hyst_tcm_t *S, TCM_ARG x);
     /* the deadband's error bound of a skipped loop [b, a]; NULL: the
-     * symmetric kinds' |g(a - b) - 2 g((a - b) / 2)| */
+     * engine's (skip(): a polynomial branch's bound by its coefficients,
+     * else |g(a - b) - 2 g((a - b) / 2)|) */
     TCM_Y (*loop_error)(const hyst_tcm_t *S, TCM_X b, TCM_X a);
     /* the kind's numbers of the instance, set once at init; NULL if none */
     void (*attach)(hyst_tcm_t *S, const hyst_curve_t *curve);
@@ -148,10 +155,74 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in);
 #define TCM_KIND_G(S, u) TCM_KIND(S)->g((S), (u))
 #endif
 
+/* The instance's polynomial branches (S->degree n = 1..HYST_MAX_DEGREE):
+ * G(u) = u acc(u), acc = c[0] + c[1] u + ... + c[n-1] u^(n-1) with c =
+ * S->coef, lowest power first. Horner's rule for degree n starts at c[n-1],
+ * and every degree ends with the same multiply-adds on the same
+ * coefficients (..., c[1], c[0]): a compiler optimising for size keeps one
+ * copy of those tails for all the unrolled cases, where an array highest
+ * power first ends each degree on a coefficient of its own. Cases above
+ * HYST_MAX_DEGREE cannot run and read c[0], not past the array. */
+#define TCM_C_(c, k) YV((c)[(k) < HYST_MAX_DEGREE ? (k) : 0])
+#define TCM_H_(acc, c, u, k) NUM_MULADD(acc, u, TCM_C_(c, k)) /* acc u + c[k] */
+#define TCM_HORNER1_(c, u) TCM_C_(c, 0)
+#define TCM_HORNER2_(c, u) TCM_H_(TCM_C_(c, 1), c, u, 0)
+#define TCM_HORNER3_(c, u) TCM_H_(TCM_H_(TCM_C_(c, 2), c, u, 1), c, u, 0)
+#define TCM_HORNER4_(c, u) TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 3), c, u, 2), c, u, 1), c, u, 0)
+#define TCM_HORNER5_(c, u) \
+    TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 4), c, u, 3), c, u, 2), c, u, 1), c, u, 0)
+#define TCM_HORNER6_(c, u) \
+    TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 5), c, u, 4), c, u, 3), c, u, 2), c, u, 1), c, u, 0)
+#define TCM_HORNER7_(c, u)                                                                      \
+    TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 6), c, u, 5), c, u, 4), c, u, 3), c, u, 2), \
+                  c, u, 1),                                                                     \
+           c, u, 0)
+#define TCM_HORNER8_(c, u)                                                                      \
+    TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_H_(TCM_C_(c, 7), c, u, 6), c, u, 5), c, u, 4), \
+                                c, u, 3),                                                       \
+                         c, u, 2),                                                              \
+                  c, u, 1),                                                                     \
+           c, u, 0)
+/* The cases 1..8 of a switch on the degree, unrolled (the per-sample
+ * paths: no loop, no call); the caller writes case 0 (the jump table
+ * starts there) and the default (degree 9 and up). */
+#define TCM_HORNER_CASES_(c, u, acc)          \
+    case 1: acc = TCM_HORNER1_(c, u); break;  \
+    case 2: acc = TCM_HORNER2_(c, u); break;  \
+    case 3: acc = TCM_HORNER3_(c, u); break;  \
+    case 4: acc = TCM_HORNER4_(c, u); break;  \
+    case 5: acc = TCM_HORNER5_(c, u); break;  \
+    case 6: acc = TCM_HORNER6_(c, u); break;  \
+    case 7: acc = TCM_HORNER7_(c, u); break;  \
+    case 8: acc = TCM_HORNER8_(c, u); break
+
+/* Horner's loop over acc's n >= 1 coefficients: the degrees above 8. */
+HYST_INLINE TCM_Y TCM_NAME(poly_loop)(const hyst_num_t *c, unsigned n, TCM_Y u)
+{
+    TCM_Y acc = YV(c[n - 1u]);
+    unsigned k;
+    for (k = 2u; k <= n; ++k) {
+        acc = NUM_MULADD(acc, u, YV(c[n - k]));
+    }
+    return acc;
+}
+
+/* G(u) of a polynomial branch of n coefficients c. */
+HYST_INLINE TCM_Y TCM_NAME(poly_g)(const hyst_num_t *c, unsigned n, TCM_Y u)
+{
+    TCM_Y acc;
+    switch (n) { /* independent cases: no register merges */
+    case 0: acc = 0; break; /* never called so */
+    TCM_HORNER_CASES_(c, u, acc);
+    default: acc = TCM_NAME(poly_loop)(c, n, u); break;
+    }
+    return NUM_MUL_G(acc, u);
+}
+
 /* G at u, any kind: Horner for polynomial branches, else the kind's. */
 HYST_INLINE TCM_Y TCM_NAME(g_unit)(const hyst_tcm_t *S, TCM_Y u)
 {
-    return S->degree - 1u < (unsigned)HYST_MAX_DEGREE ? NUM_NAME(horner)(S->coef, S->degree, u)
+    return S->degree - 1u < (unsigned)HYST_MAX_DEGREE ? TCM_NAME(poly_g)(S->coef, S->degree, u)
                                                       : TCM_KIND_G(S, u);
 }
 
@@ -287,16 +358,12 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
 }
 #endif
 
-/* What a slow sample's emit() derives first (a constant per call site):
- * nothing (the branch is cached), or for the asymmetric kinds the new
- * branch's coefficients, rising or falling. */
+/* What a kind's slow sample derives first at its end (a constant per call
+ * site, src/tcm_slow.h): nothing (the branch is cached), or for the
+ * asymmetric kinds the new branch's coefficients, rising or falling. */
 #define TCM_KEEP 0
 #define TCM_DERIVE_RISE 1
 #define TCM_DERIVE_FALL 2
-/* TCM_KEEP on a slow path (finish()): the tabulated asymmetric
- * compensator's sample out of line there, inline on the fast path only, so
- * the slow paths of the other kinds keep their code */
-#define TCM_KEEP_SLOW 3
 #define TCM_DERIVES(derive) ((derive) == TCM_DERIVE_RISE || (derive) == TCM_DERIVE_FALL)
 
 /* Horner's cases of degrees 1..HYST_EVERETT_MAX_DEGREE at S->horner
@@ -307,54 +374,66 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
  * path out better so (one instruction less on a rising or a falling
  * sample of every kind). */
 #define TCM_HORNER_BANK_(base, a, u, acc)                  \
-    case (base) + 1u: acc = NUM_HORNER1_(a, u); break;     \
-    case (base) + 2u: acc = NUM_HORNER2_(a, u); break;     \
-    case (base) + 3u: acc = NUM_HORNER3_(a, u); break;     \
-    case (base) + 4u: acc = NUM_HORNER4_(a, u); break
+    case (base) + 1u: acc = TCM_HORNER1_(a, u); break;     \
+    case (base) + 2u: acc = TCM_HORNER2_(a, u); break;     \
+    case (base) + 3u: acc = TCM_HORNER3_(a, u); break;     \
+    case (base) + 4u: acc = TCM_HORNER4_(a, u); break
+
+/* emit()'s cases of the kinds without a slow sample of their own: a table
+ * of cubic pieces (case 0: G = acc; its exact intervals by the tail call)
+ * and polynomials of degree 1..8. */
+#if TCM_POLY_ONLY /* case 0 never runs: the jump table starts there (one subtraction less) */
+#define TCM_EMIT_CASES_(S, x, how, u, acc)                      \
+    case 0: acc = 0; break;                                     \
+        TCM_HORNER_CASES_((S)->coef, u, acc)
+#else
+#define TCM_EMIT_CASES_(S, x, how, u, acc)                      \
+    case 0:                                                     \
+        acc = NUM_NAME(table_g)((S)->table.TCM_YF, u);          \
+        if (!(acc >= 0)) {                                      \
+            return TCM_NAME(emit_rare)((S), (x), (how));        \
+        }                                                       \
+        u = NUM_G_ONE;                                          \
+        break;                                                  \
+        TCM_HORNER_CASES_((S)->coef, u, acc)
+#endif
 
 /* The end of a sample on the current branch, as its kind set it up
  * (S->horner, hyst_util.h): its output, stored as y_prev (and as the moving
- * window end on the fast path). The same cases for every kind: polynomials
- * of degree up to 8 and a table's cubic piece inline, a cached cubic piece
- * inline when it is the sample's, else the kind's own evaluation; every
- * other value of S->horner (degree 9 and up, or a pending request:
+ * window end on the fast path). how: TCM_FAST, TCM_ROSE, TCM_FELL.
+ * The fast path takes every kind's cases: polynomials of degree up to 8
+ * and a table's cubic piece inline, the banks, a cached cubic piece
+ * inline when it is the sample's, else the kind's own evaluation. A slow
+ * sample ends here only for the kinds without a slow sample of their own
+ * (src/tcm_slow.h's copy of the engine: polynomials, tables, the kinds
+ * evaluated out of line): the kinds that derive their branches end theirs
+ * themselves, so their cases are the fast path's only. Every other value
+ * of S->horner (degree 9 and up, or a pending request:
  * HYST_HORNER_REQUEST_) leaves by a tail call, so a request costs the
  * per-sample paths nothing (the jump table's range check was there anyway)
- * and the fast path needs no stack frame. how: TCM_FAST, TCM_ROSE,
- * TCM_FELL; derive: above. */
-HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const int derive)
+ * and the fast path needs no stack frame. */
+HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
 {
     TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
     TCM_Y acc, g, y;
-    switch (S->horner) {
-    case 0: /* a table of cubic pieces: G = acc; its exact intervals by the tail call */
-        acc = NUM_NAME(table_g)(S->table.TCM_YF, u);
-        if (!(acc >= 0)) {
-            return TCM_NAME(emit_rare)(S, x, how);
-        }
-        u = NUM_G_ONE;
-        break;
-    NUM_HORNER_CASES_(S->coef, u, acc);
-    TCM_HORNER_BANK_(HYST_HORNER_BANK1_, S->coef, u, acc);
-    TCM_HORNER_BANK_(HYST_HORNER_BANK2_, S->coef, u, acc);
-    case HYST_HORNER_OWN_: /* the kind evaluates every sample */
-        if (how == TCM_FAST) {
+    if (how == TCM_FAST) {
+        switch (S->horner) {
+        TCM_EMIT_CASES_(S, x, how, u, acc);
+#if !TCM_POLY_ONLY
+        TCM_HORNER_BANK_(HYST_HORNER_BANK1_, S->coef, u, acc);
+        TCM_HORNER_BANK_(HYST_HORNER_BANK2_, S->coef, u, acc);
+        case HYST_HORNER_OWN_: /* the kind evaluates every sample */
             return TCM_KIND(S)->fast(S, x);
-        }
-        return TCM_KIND(S)->emit(S, x, how, derive);
+#endif
 #ifndef NUM_FIXED
-    case HYST_HORNER_PIECE_: /* a cubic piece of the branch (S->coef), cached for interval
-                              * cached_k at v_scale intervals per unit of u: a sample in it
-                              * costs one cubic, inline; the others (and a new branch: no
-                              * interval cached yet) are the kind's */
-        if (derive != TCM_KEEP) {
-            return TCM_KIND(S)->emit(S, x, how, derive);
-        } else {
+        case HYST_HORNER_PIECE_: { /* a cubic piece of the branch (S->coef), cached for
+                                    * interval cached_k at v_scale intervals per unit of u:
+                                    * a sample in it costs one cubic, inline; the others
+                                    * are the kind's */
             const TCM_Y s = u * YV(S->v_scale);
             const unsigned long k = (unsigned long)s; /* s >= 0, below 2^31 */
             if (k != S->cached_k) {
-                return how == TCM_FAST ? TCM_KIND(S)->fast(S, x)
-                                       : TCM_KIND(S)->emit(S, x, how, derive);
+                return TCM_KIND(S)->fast(S, x);
             }
             acc = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
             if (acc < 0) { /* a solved interval; "< 0", not "!(>= 0)" as for the table of
@@ -363,19 +442,20 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how, const in
                 return TCM_NAME(emit_rare)(S, x, how);
             }
             u = NUM_G_ONE;
+            break;
         }
-        break;
 #endif
-    default: /* a pending request, or degree 9 and up */
-        if (TCM_DERIVES(derive) && (S->detour & TCM_PER_BRANCH) != 0u) {
-            TCM_KIND(S)->derive(S);
+        default: /* a pending request, or degree 9 and up */
+            return TCM_NAME(emit_rare)(S, x, how);
         }
+        return TCM_NAME(fast_end)(S, x, NUM_MUL_G(acc, u));
+    }
+    switch (S->horner) {
+    TCM_EMIT_CASES_(S, x, how, u, acc);
+    default: /* a pending request, or degree 9 and up */
         return TCM_NAME(emit_rare)(S, x, how);
     }
     g = NUM_MUL_G(acc, u);
-    if (how == TCM_FAST) {
-        return TCM_NAME(fast_end)(S, x, g);
-    }
     y = TCM_NAME(slow_guard)(S, g, how);
     YV(S->y_prev) = y;
     return y;
@@ -811,12 +891,56 @@ static TCM_NOINLINE void TCM_NAME(merge)(hyst_tcm_t *S, TCM_X x_prev, size_t *nr
     TCM_NAME(set_detour)(S);
 }
 
+/* The height of a loop of width full (g's argument difference) at its
+ * middle, |g(full) - 2 g(full / 2)|: the deadband's error bound where g''
+ * keeps one sign (docs/memory.md). */
+static TCM_Y TCM_NAME(loop_height)(const hyst_tcm_t *S, TCM_Y full)
+{
+    return NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));
+}
+
+#ifndef NUM_FIXED
+/* The deadband's error bound of a skipped loop of width full (g's argument
+ * difference) on a polynomial branch (S->coef, S->degree; u in g's units).
+ * Inside the window the full model differs from the branch moved back
+ * along by the measure of relays in a rectangle (x - b) x (a - x) of
+ * density g''(a' - b'), whose diagonal a' - b' = v is at most
+ * min(v, u - v) long: the error is at most the integral of
+ * |g''(v)| min(v, u - v) over [0, u], bounded term by term (g = sum a_k u^k:
+ * |a_2| u^2 / 2 + the sum of |a_k| u^k, k >= 3, with min(v, u - v) <= u - v).
+ * Where g'' is proven one-signed on [0, u] (its constant term wins), the
+ * tighter loop_height(). */
+static TCM_Y TCM_NAME(poly_loop_error)(const hyst_tcm_t *S, TCM_Y full)
+{
+    const unsigned n = S->degree;
+    const TCM_Y u = full * YV(S->unit);
+    TCM_Y rest = 0, sum = 0, pw = u; /* pw = u^(k-2) from k = 3 */
+    unsigned k;
+    for (k = 3u; k <= n; ++k) { /* coef[k - 1] multiplies u^k */
+        const TCM_Y t = NUM_NAME(abs)(YV(S->coef[k - 1u])) * pw;
+        rest += (TCM_Y)(k * (k - 1u)) * t;
+        sum += t;
+        pw *= u;
+    }
+    if (n >= 2u) {
+        const TCM_Y a2 = NUM_NAME(abs)(YV(S->coef[1]));
+        if (rest < 2 * a2) {
+            return TCM_NAME(loop_height)(S, full);
+        }
+        sum += a2 * NUM_C(0.5);
+    }
+    return sum * u * u * NUM_C(1.01); /* rounded up by 1 % */
+}
+#endif
+
 /* Deadband: the input reversed at x_prev within d < deadband of the
  * current TP. Nothing is stored: the trajectory moves back along the current
  * branch (reversibly), where the full model would run a minor loop of width
- * at most d inside it; its error is at most that loop's height
- * |g(d) - 2 g(d/2)| (docs/memory.md), kept for the widest d until the stack
- * next changes (the full model has then wiped that loop too). */
+ * at most d inside it. Its error bound: the kind's loop_error, else on a
+ * polynomial branch poly_loop_error(), else the loop's height (docs/memory.md),
+ * kept for the widest d until the stack next changes (the full model has
+ * then wiped that loop too). The bounds are here, not in a kind: a firmware
+ * that sets no deadband links none of them (bind_skip()). */
 static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
 {
     const TCM_X d = (TCM_X)(a - b);
@@ -825,9 +949,12 @@ static TCM_NOINLINE void TCM_NAME(skip)(hyst_tcm_t *S, TCM_X b, TCM_X a)
         XV(S->db_reach) = d;
         if (TCM_KIND(S)->loop_error != NULL) {
             YV(S->db_err) = TCM_KIND(S)->loop_error(S, b, a);
+#ifndef NUM_FIXED
+        } else if (S->degree - 1u < (unsigned)HYST_MAX_DEGREE) {
+            YV(S->db_err) = TCM_NAME(poly_loop_error)(S, full);
+#endif
         } else {
-            YV(S->db_err) =
-                NUM_NAME(abs)(TCM_NAME(g)(S, full) - 2 * TCM_G_HALF(S, full));
+            YV(S->db_err) = TCM_NAME(loop_height)(S, full);
         }
         TCM_NAME(set_detour)(S);
     }
@@ -951,7 +1078,7 @@ HYST_INLINE int TCM_NAME(skips)(const hyst_tcm_t *S, TCM_X d)
 
 /* The slow sample of the kinds emit() ends (src/tcm_slow.h). */
 #define TCM_SLOW(n) TCM_NAME(n)
-#define TCM_SLOW_EMIT(S, x, how, derive) TCM_NAME(emit)((S), (x), (how), (derive))
+#define TCM_SLOW_EMIT(S, x, how, derive) TCM_NAME(emit)((S), (x), (how))
 #define TCM_SLOW_PER_BRANCH 0
 #include "tcm_slow.h"
 
@@ -997,17 +1124,19 @@ HYST_INLINE TCM_Y TCM_NAME(sample)(hyst_tcm_t *S, TCM_ARG x)
     if (!(x > XV(S->window[0]) && x < XV(S->window[1]))) {
         return TCM_STEP_SLOW(S, x);
     }
-    return TCM_NAME(emit)(S, (TCM_X)x, TCM_FAST, TCM_KEEP); /* the window is empty for other curve kinds */
+    return TCM_NAME(emit)(S, (TCM_X)x, TCM_FAST); /* the window is empty for other curve kinds */
 }
 
 /* G at u, as emit() evaluates it. */
 HYST_INLINE TCM_Y TCM_NAME(run_g)(const hyst_tcm_t *S, unsigned deg, TCM_Y u)
 {
+#if !TCM_POLY_ONLY
     if (deg == 0u) { /* a tabulated inverse: the same arithmetic as emit(), whose G * 1 is G */
         const TCM_Y v = NUM_NAME(table_g)(S->table.TCM_YF, u);
         return v >= 0 ? v : TCM_KIND_G(S, u);
     }
-    return NUM_NAME(horner)(S->coef, deg, u);
+#endif
+    return TCM_NAME(poly_g)(S->coef, deg, u);
 }
 
 /* The block call's inner loop: the samples from i on that stay inside the

@@ -9,7 +9,7 @@
  * engine. Parameters, undefined at the end:
  *   TCM_SLOW(n)                the copy's names
  *   TCM_SLOW_EMIT(S, x, how, derive)  the end of a slow sample (emit()'s
- *                              contract: TCM_ROSE/TCM_FELL, TCM_KEEP_SLOW or
+ *                              contract: TCM_ROSE/TCM_FELL, TCM_KEEP or
  *                              TCM_DERIVE_RISE/FALL)
  *   TCM_SLOW_PER_BRANCH        1 if the kind derives every branch
  *                              (TCM_PER_BRANCH: settle() derives, an edge
@@ -59,7 +59,7 @@ static TCM_Y TCM_SLOW(finish)(hyst_tcm_t *S, TCM_X x, int how)
     TCM_Y y;
     TCM_SLOW_SETTLE(S, x);
     if ((S->detour & TCM_SLOW_ONLY) == 0u) {
-        y = TCM_SLOW_EMIT(S, x, how, TCM_KEEP_SLOW); /* serves a pending request */
+        y = TCM_SLOW_EMIT(S, x, how, TCM_KEEP); /* serves a pending request */
     } else {
         y = TCM_NAME(slow_only)(S, x, how);
         YV(S->y_prev) = y;
