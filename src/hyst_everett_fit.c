@@ -74,31 +74,14 @@ hyst_status_t hyst_everett_fit_init_terms(hyst_everett_fit_t *fit, unsigned degr
     fit->capacity = work_len / (HYST_EVERETT_FIT_COLS + 1u);
     fit->tp_x = work;
     fit->tp_r = work + fit->capacity;
-    /* A0 = (lo, output y_lo): regressors (1, 0, ...) */
-    memset(fit->tp_r, 0, fit->cols * sizeof fit->tp_r[0]);
-    fit->tp_r[0] = 1;
-    fit->tp_x[0] = lo;
+    hyst_tp_start_(fit->tp_x, fit->tp_r, fit->cols, fit->r_prev, lo);
     fit->n_tp = 1u;
     fit->x_prev = lo;
-    fit->r_prev[0] = 1;
     return HYST_OK;
-}
-
-/* Pushes the last sample as a turning point. */
-static int push(hyst_everett_fit_t *f)
-{
-    if (f->n_tp == f->capacity) {
-        return 0;
-    }
-    f->tp_x[f->n_tp] = f->x_prev;
-    memcpy(f->tp_r + f->n_tp * f->cols, f->r_prev, f->cols * sizeof f->r_prev[0]);
-    ++f->n_tp;
-    return 1;
 }
 
 hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_wide_t y)
 {
-    int rising;
     size_t i, j;
     if (fit == NULL) {
         return HYST_ERR_NULL;
@@ -109,30 +92,14 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
     if (x < fit->lo || x > fit->hi) {
         return HYST_ERR_DOMAIN;
     }
-    rising = (fit->n_tp - 1u) % 2u == 0u; /* LTPs at even places, A0 first */
     if (x > fit->x_prev || x < fit->x_prev) {
-        const int up = x > fit->x_prev;
-        if (up != rising && !push(fit)) {
+        hyst_wide_t a, b;
+        const int sign = hyst_tp_step_(fit->tp_x, fit->tp_r, &fit->n_tp, fit->capacity,
+                                       fit->cols, fit->r_prev, fit->x_prev, x, &a, &b);
+        if (sign == 0) {
             return HYST_ERR_NOSPACE;
         }
-        /* wipe-out: passed the TP before the current one */
-        while (fit->n_tp >= 3u &&
-               (up ? x >= fit->tp_x[fit->n_tp - 2u] : x <= fit->tp_x[fit->n_tp - 2u])) {
-            fit->n_tp -= 2u;
-        }
-        if (!up && x <= fit->lo) {
-            fit->n_tp = 1u; /* back at A0 */
-        }
-        {
-            const hyst_wide_t ctp = fit->tp_x[fit->n_tp - 1u];
-            memcpy(fit->r_prev, fit->tp_r + (fit->n_tp - 1u) * fit->cols,
-                   fit->cols * sizeof fit->r_prev[0]);
-            if ((fit->n_tp - 1u) % 2u == 0u) {
-                add_terms(fit, x, ctp, 1, fit->r_prev);
-            } else {
-                add_terms(fit, ctp, x, -1, fit->r_prev);
-            }
-        }
+        add_terms(fit, a, b, (hyst_wide_t)sign, fit->r_prev);
         fit->x_prev = x;
     }
     if (!hyst_wide_is_finite(y)) {

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Identification of the asymmetric kind on a grid (ident.h,
- * hyst_everett_grid_fit_*): Madelung's rules run on the recorded inputs as
- * for the polynomial E (src/hyst_everett_fit.c); a sample's row is the
- * current TP's plus or minus the share of each cell inside the triangle of
- * E between them. Normal equations in hyst_wide_t; the masses by the
+ * hyst_everett_grid_fit_*): Madelung's rules run on the recorded inputs by
+ * the turning-point stack the polynomial E's uses (hyst_tp_step_); a
+ * sample's row is the current TP's plus or minus the share of each cell
+ * inside the triangle of E between them. Normal equations in hyst_wide_t; the masses by the
  * library's non-negative least squares (hyst_nnls_t) with y_lo eliminated. */
 #include "hyst/ident.h"
 
@@ -77,33 +77,16 @@ hyst_status_t hyst_everett_grid_fit_init(hyst_everett_grid_fit_t *fit, const hys
     fit->tp_x = fit->r_prev + cols;
     fit->tp_r = fit->tp_x + fit->capacity;
     memset(work, 0, (size_t)(fit->tp_x - work) * sizeof *work);
-    /* A0 = (lo, output y_lo): regressors (1, 0, ...) */
-    memset(fit->tp_r, 0, cols * sizeof fit->tp_r[0]);
-    fit->tp_r[0] = 1;
-    fit->tp_x[0] = knots[0];
+    hyst_tp_start_(fit->tp_x, fit->tp_r, cols, fit->r_prev, knots[0]);
     fit->n_tp = 1u;
     fit->x_prev = knots[0];
-    fit->r_prev[0] = 1;
     return HYST_OK;
-}
-
-/* Pushes the last sample as a turning point. */
-static int push(hyst_everett_grid_fit_t *f)
-{
-    if (f->n_tp == f->capacity) {
-        return 0;
-    }
-    f->tp_x[f->n_tp] = f->x_prev;
-    memcpy(f->tp_r + f->n_tp * f->cols, f->r_prev, f->cols * sizeof f->r_prev[0]);
-    ++f->n_tp;
-    return 1;
 }
 
 hyst_status_t hyst_everett_grid_fit_add(hyst_everett_grid_fit_t *fit, hyst_wide_t x, hyst_wide_t y)
 {
     const hyst_wide_t *r;
     size_t i, j, cols;
-    int rising;
     if (fit == NULL) {
         return HYST_ERR_NULL;
     }
@@ -113,28 +96,14 @@ hyst_status_t hyst_everett_grid_fit_add(hyst_everett_grid_fit_t *fit, hyst_wide_
     if (x < fit->knots[0] || x > fit->knots[fit->intervals]) {
         return HYST_ERR_DOMAIN;
     }
-    rising = (fit->n_tp - 1u) % 2u == 0u; /* LTPs at even places, A0 first */
     if (x > fit->x_prev || x < fit->x_prev) {
-        const int up = x > fit->x_prev;
-        hyst_wide_t ctp;
-        if (up != rising && !push(fit)) {
+        hyst_wide_t a, b;
+        const int sign = hyst_tp_step_(fit->tp_x, fit->tp_r, &fit->n_tp, fit->capacity,
+                                       fit->cols, fit->r_prev, fit->x_prev, x, &a, &b);
+        if (sign == 0) {
             return HYST_ERR_NOSPACE;
         }
-        while (fit->n_tp >= 3u &&
-               (up ? x >= fit->tp_x[fit->n_tp - 2u] : x <= fit->tp_x[fit->n_tp - 2u])) {
-            fit->n_tp -= 2u; /* wipe-out */
-        }
-        if (!up && x <= fit->knots[0]) {
-            fit->n_tp = 1u; /* back at A0 */
-        }
-        ctp = fit->tp_x[fit->n_tp - 1u];
-        memcpy(fit->r_prev, fit->tp_r + (fit->n_tp - 1u) * fit->cols,
-               fit->cols * sizeof fit->r_prev[0]);
-        if ((fit->n_tp - 1u) % 2u == 0u) {
-            add_terms(fit, x, ctp, 1, fit->r_prev);
-        } else {
-            add_terms(fit, ctp, x, -1, fit->r_prev);
-        }
+        add_terms(fit, a, b, (hyst_wide_t)sign, fit->r_prev);
         fit->x_prev = x;
     }
     if (!hyst_wide_is_finite(y)) {

@@ -6,6 +6,7 @@
 #include "hyst_util.h"
 
 #include <math.h>
+#include <string.h>
 
 
 
@@ -834,6 +835,54 @@ int hyst_nnls_(const hyst_nnls_t *f, hyst_wide_t tol)
         }
     }
     return 0;
+}
+
+/* ---- The turning-point stack of E's identifications (hyst_util.h),
+ * shared by the polynomial E's and the grid's (src/hyst_everett_fit.c,
+ * src/hyst_everett_grid_fit.c) ---- */
+
+void hyst_tp_start_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t cols, hyst_wide_t *r_prev,
+                    hyst_wide_t lo)
+{
+    /* A0 = (lo, output y_lo): regressors (1, 0, ...) */
+    memset(tp_r, 0, cols * sizeof *tp_r);
+    memset(r_prev, 0, cols * sizeof *r_prev);
+    tp_r[0] = 1;
+    r_prev[0] = 1;
+    tp_x[0] = lo;
+}
+
+int hyst_tp_step_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t *n_tp, size_t capacity,
+                  size_t cols, hyst_wide_t *r_prev, hyst_wide_t x_prev, hyst_wide_t x,
+                  hyst_wide_t *a, hyst_wide_t *b)
+{
+    const int up = x > x_prev;
+    size_t n = *n_tp;
+    if (up != ((n - 1u) % 2u == 0u)) { /* LTPs at even places, A0 first: x_prev turned */
+        if (n == capacity) {
+            return 0;
+        }
+        tp_x[n] = x_prev;
+        memcpy(tp_r + n * cols, r_prev, cols * sizeof *r_prev);
+        ++n;
+    }
+    /* wipe-out: passed the TP before the current one */
+    while (n >= 3u && (up ? x >= tp_x[n - 2u] : x <= tp_x[n - 2u])) {
+        n -= 2u;
+    }
+    if (!up && x <= tp_x[0]) {
+        n = 1u; /* back at A0 */
+    }
+    memcpy(r_prev, tp_r + (n - 1u) * cols, cols * sizeof *r_prev);
+    *n_tp = n;
+    if ((n - 1u) % 2u == 0u) { /* rising from an LTP: E(x, LTP) */
+        *a = x;
+        *b = tp_x[n - 1u];
+        return 1;
+    }
+    *a = tp_x[n - 1u]; /* falling from a UTP: -E(UTP, x) */
+    *b = x;
+    return -1;
 }
 
 static hyst_wide_t pi_gram_at(const void *ctx, size_t i, size_t j)

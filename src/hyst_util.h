@@ -268,6 +268,22 @@ typedef struct {
  * iterations (w is then feasible, not optimal). */
 int hyst_nnls_(const hyst_nnls_t *f, hyst_wide_t tol);
 
+/* The turning-point stack of an identification of E (src/hyst_ident.c): the
+ * caller's tp_x (TP inputs) and tp_r (each TP's regressors, cols numbers),
+ * A0 = (lo, regressors 1, 0, ...) at the bottom; r_prev holds the last
+ * input's regressors. hyst_tp_start_ lays A0 and sets r_prev to its row. */
+void hyst_tp_start_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t cols, hyst_wide_t *r_prev,
+                    hyst_wide_t lo);
+/* Madelung's rules for the input moving from x_prev to x (x != x_prev) on the
+ * stack of height *n_tp: pushes x_prev where the input turns, wipes out the
+ * TPs x passes and copies the current TP's regressors to r_prev. x's
+ * regressors are then r_prev plus sign times E(a, b)'s: returns that sign
+ * (1 rising from an LTP, -1 falling from a UTP); 0, nothing changed, if
+ * x_prev would not fit in the capacity. */
+int hyst_tp_step_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t *n_tp, size_t capacity,
+                  size_t cols, hyst_wide_t *r_prev, hyst_wide_t x_prev, hyst_wide_t x,
+                  hyst_wide_t *a, hyst_wide_t *b);
+
 /* f0 (coefficients c, highest power first, degree n) on [lo, hi] as a
  * polynomial in u = (x - lo) / (hi - lo): g[k] multiplies u^k. */
 void hyst_unit_poly_(hyst_wide_t *g, const hyst_wide_t *c, unsigned n, hyst_wide_t lo,
