@@ -104,8 +104,8 @@ class Recursion(RuntimeError):
 
 
 # C library and compiler runtime functions the library may call (the grid
-# compensator's square root; a float widened at a kind's attach): no call
-# graph of their own, so their stack is read off a linked image.
+# compensator's square root): no call graph of their own, so their stack is
+# read off a linked image.
 def is_c_library(fn):
     return fn in ("sqrtf", "sqrt", "memcpy", "memset") or fn.startswith("__aeabi_")
 

@@ -252,7 +252,37 @@ unsigned long hyst_crc_num_(unsigned long crc, const hyst_num_t *v, unsigned var
     return crc_num(crc, v, t);
 }
 
-/* Curve identity: everything that shapes the branches of this instance. */
+/* Entry i of a curve's table as the table stores it: t is the instance's
+ * output type, the table's (no float widened to double). */
+static hyst_num_t table_num(hyst_cptr_t table, size_t i, num_type_t t)
+{
+    hyst_num_t v;
+    if (t == NUM_Q31) {
+        v.q31 = table.q31[i];
+#if HYST_ENABLE_F64
+    } else if (t == NUM_F64) {
+        v.f64 = table.f64[i];
+#endif
+    } else {
+        v.f32 = table.f32[i];
+    }
+    return v;
+}
+
+/* The first n entries of a curve's table. */
+static unsigned long crc_table(unsigned long crc, hyst_cptr_t table, size_t n, num_type_t t)
+{
+    size_t i;
+    for (i = 0u; i < n; ++i) {
+        const hyst_num_t v = table_num(table, i, t);
+        crc = crc_num(crc, &v, t);
+    }
+    return crc;
+}
+
+/* Curve identity: everything that shapes the branches of this instance,
+ * each kind's numbers here (not at attach): only a firmware that saves or
+ * restores snapshots computes it. */
 static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
 {
     const hyst_curve_t *c = S->curve;
@@ -282,6 +312,13 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
         crc = crc_num(crc, &c->u.everett.span, f->yt);
         return crc_num(crc, &c->u.everett.tol, f->yt);
     }
+    if (c != NULL && (c->kind == (unsigned)HYST_CURVE_EVERETT_GRID ||
+                      c->kind == (unsigned)HYST_CURVE_EVERETT_GRID_INV)) {
+        /* no coefficients: the caller's table, the knots to the cells' numbers */
+        crc = crc_word(crc, (unsigned long)c->u.everett_grid.intervals);
+        return crc_table(crc, c->u.everett_grid.table,
+                         HYST_EVERETT_GRID_TABLE_LEN((size_t)c->u.everett_grid.intervals), f->yt);
+    }
     for (k = 0u; k < S->degree && k < HYST_MAX_DEGREE; ++k) {
         /* a polynomial's coefficients highest power first, as the curve
          * holds them (the instance keeps them lowest first); other kinds'
@@ -303,23 +340,14 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
             crc = crc_num(crc, &c->u.poly_inv.knot_u[k], f->yt);
         }
     } else if (c->kind == (unsigned)HYST_CURVE_INV_TABLE) {
-        size_t i;
         crc = crc_word(crc, c->u.inv_table.fwd.degree);
         for (k = 0u; k < c->u.inv_table.fwd.degree && k < HYST_MAX_DEGREE; ++k) {
             crc = crc_num(crc, &c->u.inv_table.fwd.a[k], f->yt);
         }
         crc = crc_num(crc, &c->u.inv_table.span, f->yt);
         crc = crc_word(crc, (unsigned long)c->u.inv_table.intervals);
-        for (i = 0u; i < HYST_INV_TABLE_LEN(c->u.inv_table.intervals); ++i) { /* the pieces */
-            hyst_num_t v; /* exact: the table has the curve's type */
-            if (f->yt == NUM_Q31) {
-                v.q31 = c->u.inv_table.table.q31[i];
-            } else {
-                (void)hyst_num_set(&v, c->variant,
-                                   hyst_cptr_get(c->u.inv_table.table, i, c->variant));
-            }
-            crc = crc_num(crc, &v, f->yt);
-        }
+        crc = crc_table(crc, c->u.inv_table.table, HYST_INV_TABLE_LEN(c->u.inv_table.intervals),
+                        f->yt); /* the pieces */
         if (f->yt == NUM_Q31) { /* the drive's format: its fraction bits and first code */
             crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_bits);
             crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_code_lo);
@@ -328,9 +356,8 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
         size_t i;
         crc = crc_word(crc, (unsigned long)c->u.pwl.n);
         for (i = 0u; i < c->u.pwl.n; ++i) { /* interior points shape the curve too */
-            hyst_num_t px, py; /* exact: the points have the curve's type */
-            (void)hyst_num_set(&px, c->variant, hyst_cptr_get(c->u.pwl.x, i, c->variant));
-            (void)hyst_num_set(&py, c->variant, hyst_cptr_get(c->u.pwl.y, i, c->variant));
+            const hyst_num_t px = table_num(c->u.pwl.x, i, f->yt);
+            const hyst_num_t py = table_num(c->u.pwl.y, i, f->yt);
             crc = crc_num(crc, &px, f->yt);
             crc = crc_num(crc, &py, f->yt);
         }
@@ -386,9 +413,9 @@ static int same_num(const hyst_num_t *a, const hyst_num_t *b, num_type_t t)
 
 /* The part of a snapshot that only slow samples change (tcm.h: they
  * change seq): everything but the last sample, read with counts nl, nr
- * into buf. Returns the offset of the CRC. */
+ * into buf, with the curve's identity id. Returns the offset of the CRC. */
 static size_t put_body(const hyst_tcm_t *S, const format_t *f, unsigned char *buf,
-                       size_t need, size_t nl, size_t nr)
+                       size_t need, size_t nl, size_t nr, unsigned long id)
 {
     size_t i, at;
     hyst_num_t v;
@@ -400,7 +427,7 @@ static size_t put_body(const hyst_tcm_t *S, const format_t *f, unsigned char *bu
     buf[6] = (unsigned char)f->r;
     buf[7] = (unsigned char)S->variant;
     put_u32(buf + 8, (unsigned long)need);
-    put_u32(buf + 12, curve_id(S, f));
+    put_u32(buf + 12, id);
     put_u32(buf + 16, (unsigned long)nl);
     put_u32(buf + 20, (unsigned long)nr);
     put_u32(buf + 24, (unsigned long)S->events);
@@ -433,6 +460,7 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t
 {
     const volatile hyst_tcm_t *V = S;
     format_t f;
+    unsigned long id;
     unsigned attempt;
     if (S == NULL || buf == NULL) {
         return HYST_ERR_NULL;
@@ -440,6 +468,9 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t
     if (S->layout != HYST_LAYOUT || !format_of(S->variant, &f)) {
         return HYST_ERR_ARG;
     }
+    /* before the attempts: the identity is the curve's, which no sample
+     * changes, and a grid's or a table's is long to hash */
+    id = curve_id(S, &f);
     for (attempt = 0u; attempt < HYST_READ_ATTEMPTS; ++attempt) {
         const unsigned long seq = V->seq;
         size_t nl, nr, need, at;
@@ -463,7 +494,7 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t
             }
             return HYST_ERR_NOSPACE;
         }
-        at = put_body(S, &f, buf, need, nl, nr);
+        at = put_body(S, &f, buf, need, nl, nr, id);
         HYST_BARRIER();
         x = V->window[V->moving_end];
         y = V->y_prev;

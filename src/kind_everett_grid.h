@@ -244,24 +244,13 @@ static TCM_NOINLINE TCM_Y TCM_NAME(eg_loop_error)(const hyst_tcm_t *S, TCM_X b, 
     return most * d * d * NUM_C(0.2525); /* 1/4, rounded up by 1 % */
 }
 
-/* Every sample is the kind's own (emit()'s HYST_HORNER_OWN_ case). The
- * coefficients the kind does not use hold its table's checksum, 16 bits
- * each (exact in any real type): a snapshot's curve identity covers them,
- * so that a snapshot of another grid is refused. */
+/* Every sample is the kind's own (emit()'s HYST_HORNER_OWN_ case); no
+ * coefficients (a snapshot's curve identity covers the table: curve_id in
+ * src/hyst_snapshot.c). */
 static void TCM_NAME(eg_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 {
-    const size_t n = HYST_EVERETT_GRID_TABLE_LEN((size_t)curve->u.everett_grid.intervals);
-    unsigned long crc = 0ul;
-    size_t at;
-    unsigned k;
+    (void)curve;
     S->degree = HYST_HORNER_OWN_;
-    for (at = 0u; at < n; ++at) {
-        crc = hyst_crc_real_(crc, hyst_cptr_get(curve->u.everett_grid.table, at, curve->variant),
-                             curve->variant);
-    }
-    for (k = 0u; k < 2u && k < (unsigned)HYST_MAX_DEGREE; ++k) {
-        YV(S->coef[k]) = (TCM_Y)(unsigned)((crc >> (16u * k)) & 0xFFFFul);
-    }
 }
 
 #define TCM_SLOW(n) TCM_NAME(eg_##n)

@@ -218,14 +218,21 @@ static void test_curve_eval_is_the_major_rising_branch(void)
     }
 }
 
-static void test_block_and_snapshots(void)
+/* A random grid of 2 to 8 intervals (an interior knot to move). */
+static hyst_everett_grid_t random_grid_of_two_or_more(void)
 {
     hyst_everett_grid_t g;
-    size_t len = 0u;
-    long k;
     do {
         g = ref_egrid_random(&rng, 8u);
     } while (g.intervals < 2u);
+    return g;
+}
+
+static void test_block_and_snapshots(void)
+{
+    hyst_everett_grid_t g = random_grid_of_two_or_more();
+    size_t len = 0u;
+    long k;
     TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, CAP));
     walk(&g, xs, SAMPLES);
@@ -253,6 +260,27 @@ static void test_block_and_snapshots(void)
         g.weight[0] = 2.0;
         g.weight[1] = 1.0;
     }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&T, &curve2, &g, table2, xl2, yl2, xr2, yr2, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&T, snap, len));
+}
+
+/* A snapshot's curve identity is the grid's table, not where it lies: the
+ * same grid built into another table takes the snapshot; the grid with an
+ * interior knot moved (the same domain and masses) refuses it. */
+static void test_snapshot_identity_is_the_table(void)
+{
+    hyst_everett_grid_t g = random_grid_of_two_or_more();
+    size_t len = 0u;
+    long k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+    walk(&g, xs, 500L);
+    for (k = 0; k < 500; ++k) { /* turning points to restore */
+        (void)hyst_step(&S, xs[k]);
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&S, snap, sizeof snap, &len));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&T, &curve2, &g, table2, xl2, yl2, xr2, yr2, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&T, snap, len));
+    g.knots[1] = 0.5 * (g.knots[0] + g.knots[1]);
     TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&T, &curve2, &g, table2, xl2, yl2, xr2, yr2, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&T, snap, len));
 }
@@ -484,6 +512,7 @@ int main(void)
     RUN_TEST(test_bad_grids_are_refused);
     RUN_TEST(test_curve_eval_is_the_major_rising_branch);
     RUN_TEST(test_block_and_snapshots);
+    RUN_TEST(test_snapshot_identity_is_the_table);
     RUN_TEST(test_bounded_memory_keeps_its_bound);
     RUN_TEST(test_deadband_bound_holds);
     RUN_TEST(test_identification_recovers_the_grid);

@@ -45,9 +45,11 @@
  *
  * L = 40 + (X + R)(1 + n_ltp + n_rtp) + 2R + X. Curve identity (the id):
  * kind, degree or point count and variant, the domain, its values and scale,
- * every coefficient of a polynomial, every point of a piecewise-linear curve
- * and the start table of an inverted polynomial: a curve of the same ends
- * but another shape is another curve. The CRC is CRC-32/ISO-HDLC (the
+ * every coefficient of a polynomial, every point of a piecewise-linear curve,
+ * the start table of an inverted polynomial and the pieces of a tabulated
+ * one, the per-direction tables of an asymmetric curve and every number of a
+ * grid curve's table: a curve of the same ends but another shape is another
+ * curve. The CRC is CRC-32/ISO-HDLC (the
  * zlib/Ethernet CRC: reflected polynomial 0xEDB88320, initial value and
  * final XOR 0xFFFFFFFF). Version 2 snapshots (real variants only, a weaker
  * curve id) are refused with HYST_ERR_VERSION.
