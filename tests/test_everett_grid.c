@@ -448,6 +448,125 @@ static void test_compensator_inverts_the_model(void)
 #endif
 }
 
+
+/* A grid whose first diagonal cell is empty (the major rising branch is
+ * flat over the first interval) while its first column holds mass: driven
+ * to y_hi, then to y_lo, the compensator's drive is lo itself, where the
+ * plant forgets its memory as the compensator does; a drive at the end of
+ * the flat piece would leave the column switched up (the output 16.5 too
+ * high here). */
+static void test_compensator_reaches_lo_past_an_empty_first_cell(void)
+{
+    hyst_everett_grid_t g;
+    hyst_curve_t inv;
+    static const hyst_real_t desired[4] = {HYST_REAL_C(50.0), HYST_REAL_C(97.25), HYST_REAL_C(1.0),
+                                           HYST_REAL_C(40.0)};
+    unsigned i;
+    memset(&g, 0, sizeof g);
+    g.intervals = 12u;
+    for (i = 1u; i <= 12u; ++i) { /* widths 0.25 .. 1.25: exact in float */
+        g.knots[i] = g.knots[i - 1u] + 0.25 * (double)(1u + (i - 1u) % 5u);
+    }
+    g.y_lo = 1.0;
+    for (i = 0u; i < HYST_EVERETT_GRID_CELLS(12u); ++i) {
+        g.weight[i] = (double)((i * 7u) % 11u) / 4.0; /* cell (0, 0): 0 */
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_grid_inverse(&inv, &curve));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl2, yl2, xr2, yr2, CAP));
+    for (i = 0u; i < 4u; ++i) {
+        const hyst_real_t x = hyst_step(&T, desired[i]);
+        const double y = (double)hyst_step(&S, x);
+        if (i == 2u) {
+            TEST_ASSERT_TRUE(x == (hyst_real_t)0.0);
+        }
+        TEST_ASSERT_TRUE(fabs(y - (double)desired[i]) <= 10.0 * AGREE * 96.25);
+    }
+}
+
+/* A nearly flat last piece (the last diagonal cell a millionth of the
+ * rest, its row empty): a desired output at or near y_hi exceeds the
+ * branch's reach by a rounding, and the drive stays on the domain (within
+ * the 8 units in the last place tcm.h states), where the solve extrapolated
+ * it past hi (by up to 1.8 in float, 6e-9 in double). */
+static void test_compensator_drive_stays_on_the_domain(void)
+{
+    const double hi = 2.0, allowed = 8.0 * (double)(NEXT((hyst_real_t)hi, (hyst_real_t)4.0) - (hyst_real_t)hi);
+    hyst_everett_grid_t g;
+    hyst_curve_t inv;
+    double worst = 0.0;
+    int j;
+    for (j = 0; j < 200; ++j) {
+        hyst_real_t y_hi, x[3];
+        int i;
+        memset(&g, 0, sizeof g);
+        g.intervals = 2u;
+        g.knots[1] = 1.0;
+        g.knots[2] = hi;
+        g.y_lo = 0.1 * j + 0.013;
+        g.weight[0] = 1.0 + 0.37 * j;
+        g.weight[2] = 1e-6;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett_grid(&curve, &g, table, TABLE));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_grid_inverse(&inv, &curve));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl2, yl2, xr2, yr2, CAP));
+        y_hi = CURVE_NUM(curve.y_hi);
+        x[0] = hyst_step(&T, y_hi);
+        x[1] = hyst_step(&T, (hyst_real_t)(g.y_lo + 0.5));
+        x[2] = hyst_step(&T, y_hi - (y_hi - (hyst_real_t)g.y_lo) * (hyst_real_t)1e-9);
+        for (i = 0; i < 3; ++i) {
+            worst = (double)x[i] - hi > worst ? (double)x[i] - hi : worst;
+        }
+    }
+    TEST_PRINTF("nearly flat last piece: the drive at most %g past hi", worst);
+    TEST_ASSERT_TRUE(worst <= allowed);
+}
+
+/* The fit's outputs so large that its normal equations overflow: refused
+ * (HYST_ERR_COEFF), the grid and the RMS not written, where it answered
+ * HYST_OK with an infinite mass. */
+static void test_fit_refuses_outputs_that_overflow(void)
+{
+    static const hyst_wide_t knots[4] = {0.0, 1.0, 2.0, 3.0};
+    static const hyst_wide_t x[6] = {0.5, 1.5, 2.5, 1.0, 2.0, 0.5};
+    static const hyst_wide_t y[6] = {1.0, 2.0, 4.0, -1.4e308, 3.0, 1.5};
+    hyst_everett_grid_fit_t fit;
+    hyst_everett_grid_t got, before;
+    hyst_wide_t rms = -1;
+    int k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_init(&fit, knots, 3u, fit_work,
+                                                               sizeof fit_work / sizeof fit_work[0]));
+    for (k = 0; k < 6; ++k) {
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_add(&fit, x[k], y[k]));
+    }
+    memset(&got, 0x5a, sizeof got);
+    before = got;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_everett_grid_fit_solve(&fit, &got, &rms));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &got, sizeof got);
+    TEST_ASSERT_TRUE(rms == -1);
+}
+
+/* The knots: output steps whose sum overflows (two of 1.5e308 in one bin)
+ * still give finite knots at their quantiles, where they were NaN; a
+ * domain too narrow for the type to hold the knots apart is refused, the
+ * knots not written, where equal knots were returned (the fit refuses them). */
+static void test_knots_of_extreme_records(void)
+{
+    static const hyst_wide_t x[4] = {0.1, 0.5, 0.1, 0.5};
+    static const hyst_wide_t y[4] = {0.0, 1.5e308, 0.0, 1.5e308};
+    hyst_wide_t knots[5], keep[5];
+    unsigned q;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_knots(x, y, 4u, 0.0, 1.0, 4u, knots, fit_work, 64u));
+    for (q = 1u; q <= 4u; ++q) {
+        TEST_ASSERT_TRUE(knots[q] > knots[q - 1u]); /* NaN fails */
+    }
+    TEST_ASSERT_TRUE(knots[1] >= 0.29 && knots[3] <= 0.35); /* every step at mid 0.3 */
+    memset(knots, 0x5a, sizeof knots);
+    memcpy(keep, knots, sizeof knots);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_everett_grid_knots(x, y, 4u, 1.0, 1.0 + 0x1p-50, 4u,
+                                                                   knots, fit_work, 64u));
+    TEST_ASSERT_EQUAL_MEMORY(keep, knots, sizeof knots);
+}
+
 #ifndef HYST_USE_DOUBLE
 /* The integer-code variant runs the same curve: bit for bit the f32
  * variant's outputs on codes. */
@@ -488,6 +607,10 @@ int main(void)
     RUN_TEST(test_deadband_bound_holds);
     RUN_TEST(test_identification_recovers_the_grid);
     RUN_TEST(test_compensator_inverts_the_model);
+    RUN_TEST(test_compensator_reaches_lo_past_an_empty_first_cell);
+    RUN_TEST(test_compensator_drive_stays_on_the_domain);
+    RUN_TEST(test_fit_refuses_outputs_that_overflow);
+    RUN_TEST(test_knots_of_extreme_records);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_codes_run_the_grid_kind);
 #endif
