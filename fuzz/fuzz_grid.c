@@ -30,7 +30,8 @@
  *
  * Checks: each refusal is the first of curve.h's (ident.h's) checks that
  * fails, and writes nothing (the curve, its table, the fit, the knots, an
- * instance restored into); an accepted grid's outputs equal the reference
+ * instance restored into); an accepted grid's major rising branch reaches
+ * y_hi within its rounding bound (raw grids too); its outputs equal the reference
  * within (d + 1) times (the curve's rounding bound + 8 eps of the output
  * scale, the reference's own), d the stacked turning points (tcm.h), and
  * within the error bound on top once memory fills; the output never moves
@@ -284,7 +285,7 @@ static void check_knots(size_t n, double lo, double hi, unsigned k, size_t nbins
 }
 
 /* The fit on the grid's knots of the record (x, y)[0..n): see the header.
- * exact: the record is the grid's own (no memory filled, no raw output). */
+ * exact: the record is the grid's own (a small grid, no memory filled, no raw output). */
 static void check_fit(const hyst_everett_grid_t *g, size_t n, unsigned fit_cap, int exact,
                       double scale, const int *nospace_at)
 {
@@ -449,6 +450,11 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     }
     for (i = 0u; i < cells; ++i) total += g.weight[i];
     scale = fabs(g.y_lo) + total;
+    { /* the model holds every mass: its major rising branch reaches y_hi
+       * within one evaluation's rounding bound (and y_hi's own rounding) */
+        const double y_hi = curve.y_hi.f64, top = hyst_curve_eval(&curve, hi);
+        CHECK(fabs(top - y_hi) <= curve.rounding.f64 + EPS * fabs(y_hi));
+    }
     st = hyst_init_curve(&S, &curve, xl, yl, xr, yr, cap);
     if (st != HYST_OK) {
         CHECK(cap < 2u && st == HYST_ERR_CAPACITY);
@@ -566,7 +572,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                 if (hyst_status(&F) == HYST_WARN_FULL || hyst_f32_error_bound(&F) > 0) {
                     break; /* merges: the bound on forgetting is the double run's check */
                 }
-                CHECK(hyst_status(&F) == HYST_OK && fabs(y - y_ref) <= tol);
+                /* raw doubles reach the subnormals, where the relative bound says nothing */
+                CHECK(hyst_status(&F) == HYST_OK && isfinite(y) && (raw || fabs(y - y_ref) <= tol));
             }
         }
     }
@@ -574,7 +581,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         check_compensator(&g, scale, raw, n);
     }
     if (flags & 4u) {
-        check_fit(&g, n, fit_cap, exact && !full, scale, nospace_at);
+        /* raw grids: the reference's E underflows (a mass times a width squared) where
+         * the library's does not, so the record is not held to it */
+        check_fit(&g, n, fit_cap, exact && !full && !raw, scale, nospace_at);
         check_knots(n, lo, hi, g.intervals, nbins);
     }
     return 0;

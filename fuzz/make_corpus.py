@@ -535,6 +535,11 @@ grid_seeds.update({
         "07021e280000000000000000c0000000000000e03f00000000000008406464646464646464646464646464646464"
         "64646464646464000000000000d03f000000000000f03f000000000000e03f00000000000000404f9fefa65d56db"
         "63989f28"),
+    # widths of 1.6e220 and 3.1e231: the densities' squares of widths overflowed, the masses
+    # tabulated as 0 (the model never reached y_hi); refused now (HYST_ERR_COEFF)
+    "regress_grid_density_underflow": bytes.fromhex(
+        "05021e280000600000000000f03f020000000000f01204032900000000f0f0f0f0035877efca140428031e280000033f"
+        "040000000000f03830480038778128b33c77ef81147758db812077f0f0f0f0f0f012202020202000e03f000902100038"),
     # a raw output of -1.4e308: the fit answered HYST_OK with an infinite mass (now HYST_ERR_COEFF)
     "regress_grid_fit_overflow": bytes.fromhex("04031e2800000309021038304800385877eface1486db3ea7f1ef4f0ace1486db3eaff65"),
     # output steps of 1.5e308 in one bin: their sum overflowed and the knots were NaN

@@ -521,6 +521,31 @@ static void test_compensator_drive_stays_on_the_domain(void)
     TEST_ASSERT_TRUE(worst <= allowed);
 }
 
+/* A mass whose density the type holds only as a subnormal or as 0 (a
+ * width's square overflowing) is refused (HYST_ERR_COEFF), where the curve
+ * was accepted with the mass lost to the model (its output at hi short of
+ * y_hi, or its density's precision). */
+static void test_densities_the_type_cannot_hold_are_refused(void)
+{
+    static float t32[TABLE];
+    hyst_everett_grid_t g;
+    hyst_curve_t c;
+    memset(&g, 0, sizeof g);
+    g.intervals = 1u;
+    g.knots[1] = 1e20; /* density 1e-40: subnormal in float */
+    g.weight[0] = 1.0;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_f32_curve_from_everett_grid(&c, &g, t32, TABLE));
+#if HYST_ENABLE_F64
+    {
+        static double t64[TABLE];
+        g.knots[1] = 1e160; /* h^2 overflows: density 0 */
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_f64_curve_from_everett_grid(&c, &g, t64, TABLE));
+    }
+#endif
+    g.knots[1] = 1e18; /* density 1e-36: normal, accepted */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f32_curve_from_everett_grid(&c, &g, t32, TABLE));
+}
+
 /* The fit's outputs so large that its normal equations overflow: refused
  * (HYST_ERR_COEFF), the grid and the RMS not written, where it answered
  * HYST_OK with an infinite mass. */
@@ -609,6 +634,7 @@ int main(void)
     RUN_TEST(test_compensator_inverts_the_model);
     RUN_TEST(test_compensator_reaches_lo_past_an_empty_first_cell);
     RUN_TEST(test_compensator_drive_stays_on_the_domain);
+    RUN_TEST(test_densities_the_type_cannot_hold_are_refused);
     RUN_TEST(test_fit_refuses_outputs_that_overflow);
     RUN_TEST(test_knots_of_extreme_records);
 #ifndef HYST_USE_DOUBLE
