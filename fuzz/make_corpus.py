@@ -535,11 +535,17 @@ grid_seeds.update({
         "07021e280000000000000000c0000000000000e03f00000000000008406464646464646464646464646464646464"
         "64646464646464000000000000d03f000000000000f03f000000000000e03f00000000000000404f9fefa65d56db"
         "63989f28"),
-    # widths of 1.6e220 and 3.1e231: the densities' squares of widths overflowed, the masses
-    # tabulated as 0 (the model never reached y_hi); refused now (HYST_ERR_COEFF)
-    "regress_grid_density_underflow": bytes.fromhex(
-        "05021e280000600000000000f03f020000000000f01204032900000000f0f0f0f0035877efca140428031e280000033f"
-        "040000000000f03830480038778128b33c77ef81147758db812077f0f0f0f0f0f012202020202000e03f000902100038"),
+    # a width of 1e160: its square overflowed, the mass tabulated as 0 (the model never reached
+    # y_hi); refused now (HYST_ERR_COEFF)
+    "regress_grid_density_underflow": graw(G_COMP, [0.0, 1e160], 0.0, [1.0], gwalk(1, 2)),
+    # a width of 1.6e-159: its square subnormal, the density off by 1.3e-7 (now divided in turn)
+    "regress_grid_width_square_subnormal": bytes.fromhex(
+        "c5c5c5c5c5c516031e0403588128b17c775003f71e04300358c78828b33c7750031e04b33c7750031e0403811477"
+        "db822b775877ef77c7882828b33c7750031e04035877ef77c78828b33c7750031e04b33c7750031e0403811477db"
+        "812b772f033c7750031e04035877882828b33c7750031e04035877ef77c78828b33c28b33c7750031e04b3775003"
+        "1e04b33c7750031e0403811477db812b772f033c7750031e04035877ef77c78828b33c7750031e04b33c7750031e"
+        "0403811400000077db822b772f031e0403ef05050577c7883f28b33c7740031e04b33c7750031e040381146777db"
+        "812b772f031e0403587721811477db28b33c774141"),
     # a raw output of -1.4e308: the fit answered HYST_OK with an infinite mass (now HYST_ERR_COEFF)
     "regress_grid_fit_overflow": bytes.fromhex("04031e2800000309021038304800385877eface1486db3ea7f1ef4f0ace1486db3eaff65"),
     # output steps of 1.5e308 in one bin: their sum overflowed and the knots were NaN

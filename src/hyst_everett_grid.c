@@ -21,6 +21,15 @@ static hyst_wide_t weight(const hyst_everett_grid_t *g, unsigned i, unsigned j)
     return g->weight[i * (i + 1u) / 2u + j];
 }
 
+/* m / (a b): the product first, as it always was, unless it leaves the
+ * normal numbers (widths below 1e-154 in double: a subnormal product has
+ * lost digits); then one division after the other. */
+static hyst_wide_t per_area(hyst_wide_t m, hyst_wide_t a, hyst_wide_t b)
+{
+    const hyst_wide_t ab = a * b;
+    return ab >= HYST_WIDE_MIN && ab <= HYST_WIDE_MAX ? m / ab : m / a / b;
+}
+
 /* Table entry `at` (curve.h: knots, half diagonal densities, then four
  * numbers per cell (i, j), j < i); *mass: the mass a density or a mass per
  * unit of input carries (0 for the others). */
@@ -37,7 +46,7 @@ static hyst_wide_t entry(const hyst_everett_grid_t *g, const grid_t *w, size_t a
     if (at <= 2u * k) {
         i = (unsigned)(at - k - 1u);
         *mass = weight(g, i, i);
-        return *mass / (w->h[i] * w->h[i]);
+        return per_area(*mass, w->h[i], w->h[i]);
     }
     r = (at - 2u * k - 1u) / 4u;
     for (i = 1u; (size_t)i * (i + 1u) / 2u <= r; ++i) {
@@ -65,7 +74,7 @@ static hyst_wide_t entry(const hyst_everett_grid_t *g, const grid_t *w, size_t a
         return sum / w->h[i];
     default: /* the cell's density */
         *mass = weight(g, i, j);
-        return *mass / (w->h[i] * w->h[j]);
+        return per_area(*mass, w->h[i], w->h[j]);
     }
 }
 

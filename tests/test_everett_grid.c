@@ -524,7 +524,8 @@ static void test_compensator_drive_stays_on_the_domain(void)
 /* A mass whose density the type holds only as a subnormal or as 0 (a
  * width's square overflowing) is refused (HYST_ERR_COEFF), where the curve
  * was accepted with the mass lost to the model (its output at hi short of
- * y_hi, or its density's precision). */
+ * y_hi, or its density's precision); a width whose square is subnormal
+ * gives its density to rounding. */
 static void test_densities_the_type_cannot_hold_are_refused(void)
 {
     static float t32[TABLE];
@@ -544,6 +545,16 @@ static void test_densities_the_type_cannot_hold_are_refused(void)
 #endif
     g.knots[1] = 1e18; /* density 1e-36: normal, accepted */
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f32_curve_from_everett_grid(&c, &g, t32, TABLE));
+#if HYST_ENABLE_F64
+    { /* a width of 1.6e-159, its square subnormal: the density still exact to rounding
+       * (it was off by 1.3e-7, the model's output at hi with it) */
+        static double t64[TABLE];
+        g.knots[1] = 1.6368713072402582e-159;
+        g.weight[0] = 2.639011642716169e-16;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_curve_from_everett_grid(&c, &g, t64, TABLE));
+        TEST_ASSERT_TRUE(fabs(hyst_f64_curve_eval(&c, g.knots[1]) - g.weight[0]) <= 1e-14 * g.weight[0]);
+    }
+#endif
 }
 
 /* The fit's outputs so large that its normal equations overflow: refused
