@@ -546,6 +546,11 @@ grid_seeds.update({
         "1e04b33c7750031e0403811477db812b772f033c7750031e04035877ef77c78828b33c7750031e04b33c7750031e"
         "0403811400000077db822b772f031e0403ef05050577c7883f28b33c7740031e04b33c7750031e040381146777db"
         "812b772f031e0403587721811477db28b33c774141"),
+    # back to a setpoint one rounding above an LTP's output, the branch flat below it: the
+    # drive crossed the flat stretch past the LTP, the plant wiped it out (8.7 off); the drive
+    # now stops at the stored TP the branch would wipe out next
+    "regress_grid_comp_setpoint_flat": bytes.fromhex(
+        "120403280000010f0307100100001325ffffffffff77ef811477f100db81281c1c1c1c1c9f50817777641c8b8178"),
     # a raw output of -1.4e308: the fit answered HYST_OK with an infinite mass (now HYST_ERR_COEFF)
     "regress_grid_fit_overflow": bytes.fromhex("04031e2800000309021038304800385877eface1486db3ea7f1ef4f0ace1486db3eaff65"),
     # output steps of 1.5e308 in one bin: their sum overflowed and the knots were NaN

@@ -61,6 +61,22 @@ static TCM_NAME(eg_piece_t) TCM_NAME(egi_piece)(const hyst_tcm_t *S, TCM_Y v, TC
     return p;
 }
 
+/* The drive step from the TP to the drive of the stored TP the branch
+ * would wipe out next (the current LTP's falling; the current RTP's, or
+ * hi, rising): the drive never passes it before the desired output passes
+ * that TP's. Else a desired output within a rounding of the TP's (a
+ * setpoint come back to) could carry the drive across a flat stretch of
+ * the branch, the plant forgetting that TP while the compensator keeps it. */
+static TCM_Y TCM_NAME(egi_reach)(const hyst_tcm_t *S)
+{
+    const unsigned k = S->curve->u.everett_grid.intervals;
+    if (S->moving_end == 0u) {
+        return (S->n_rtp > 0u ? YV(S->yrtp)[S->n_rtp - 1u]
+                              : S->curve->u.everett_grid.table.TCM_YF[k]) - YV(S->y_ctp);
+    }
+    return YV(S->y_ctp) - YV(S->yltp)[S->n_ltp - 1u];
+}
+
 /* The drive step of the output step v on the current branch, out of line
  * (rare paths: merges, a restore): the kind's g. */
 static TCM_NOINLINE TCM_Y TCM_NAME(egi_g)(const hyst_tcm_t *S, TCM_Y v)
@@ -68,20 +84,23 @@ static TCM_NOINLINE TCM_Y TCM_NAME(egi_g)(const hyst_tcm_t *S, TCM_Y v)
     TCM_Y g_end;
     const TCM_NAME(eg_piece_t) p = TCM_NAME(egi_piece)(S, v, &g_end);
     const TCM_Y w = TCM_NAME(egi_solve)(p.c0, p.c1, p.c2, p.start, v);
-    return w < p.end ? w : p.end;
+    const TCM_Y reach = TCM_NAME(egi_reach)(S), end = p.end < reach ? p.end : reach;
+    return w < end ? w : end;
 }
 
-/* The piece holding v made the current one. */
+/* The piece holding v made the current one; its end, the drive step no
+ * sample passes, at most the reach. */
 static TCM_NOINLINE void TCM_NAME(egi_cache)(hyst_tcm_t *S, TCM_Y v)
 {
     TCM_Y g_end;
     const TCM_NAME(eg_piece_t) p = TCM_NAME(egi_piece)(S, v, &g_end);
+    const TCM_Y reach = TCM_NAME(egi_reach)(S);
     YV(S->blend[0]) = p.c0;
     YV(S->blend[1]) = p.c1;
     YV(S->blend[2]) = p.c2;
     YV(S->blend[3]) = p.start;
     YV(S->v_least) = g_end;
-    YV(S->w_end) = p.end;
+    YV(S->w_end) = p.end < reach ? p.end : reach;
 }
 
 /* A new branch's numbers from its TP's drive, and its first piece. */
@@ -102,9 +121,9 @@ HYST_INLINE TCM_Y TCM_NAME(egi_end)(hyst_tcm_t *S, TCM_X x, const int how)
         TCM_NAME(egi_cache)(S, v);
     }
     w = TCM_NAME(egi_solve)(YV(S->blend[0]), YV(S->blend[1]), YV(S->blend[2]), YV(S->blend[3]), v);
-    /* at most the piece's end: beyond the branch's reach (a desired output
-     * past it by rounding) the solve would extrapolate past the domain, far
-     * past it on a nearly flat last piece */
+    /* at most the piece's end and the reach: beyond the branch's reach (a
+     * desired output past it by rounding) the solve would extrapolate past
+     * the domain, far past it on a nearly flat last piece */
     YV(S->g_prev) = w < YV(S->w_end) ? w : YV(S->w_end);
     return TCM_NAME(eg_guarded)(S, x, how);
 }
