@@ -6,7 +6,7 @@
  *
  * Input layout (reads past the end yield zeros, so every input is valid):
  *   [0]  module (byte % 4): 0 PI, 1 PWL curve, 2 polynomial inverse, 3 ident;
- *        252..255: creep (fuzz_creep())
+ *        252..255: creep (fuzz_creep()), 248..251: rate (fuzz_rate())
  *   [1]  flags: bit1 raw parameters (arbitrary doubles) else structured
  *        grids; bit2 a module-specific corruption (ident: REFLECT, or the
  *        domain from the data; PI fit: a workspace one entry short); bit3
@@ -1689,12 +1689,258 @@ static void fuzz_creep(reader_t *rd, unsigned flags)
     }
 }
 
+/* ------------------------------------------------------------------ rate --- */
+
+/* The rate term as rate.h states it, in double: r = w v, then
+ * v += a ((x - p) - v), p = x. */
+typedef struct {
+    double a, w, p, v;
+} rate_ref_t;
+
+static double rate_ref_step(rate_ref_t *q, double x)
+{
+    const double out = q->w * q->v;
+    q->v += q->a * ((x - q->p) - q->v);
+    q->p = x;
+    return out;
+}
+
+/* rate.h's init checks in its order, for the variant of numbers t_min..t_max
+ * (f32: float's, f64: double's), the numbers rounded to it by `round`. */
+static hyst_status_t rate_expected(double tau, double w, double x_rest, int f32)
+{
+    const double t_min = f32 ? (double)FLT_MIN : DBL_MIN, t_max = f32 ? (double)FLT_MAX : DBL_MAX;
+    double a, wt, limit;
+    if (!(isfinite(tau) && tau >= 1.0)) return HYST_ERR_ARG;
+    a = f32 ? (double)(float)(1.0 / tau) : 1.0 / tau;
+    if (!(a >= t_min)) return HYST_ERR_ARG;
+    wt = f32 ? (double)(float)w : w;
+    if (!isfinite(wt)) return HYST_ERR_WEIGHTS;
+    limit = t_max / (4.0 * (fabs(wt) > 1.0 ? fabs(wt) : 1.0));
+    limit = f32 ? (double)(float)limit : limit;
+    if (!isfinite(x_rest) || !(fabs(x_rest) <= limit) || (f32 && !isfinite((double)(float)x_rest))) {
+        return HYST_ERR_NONFINITE;
+    }
+    return HYST_OK;
+}
+
+/* rate.h's bound on |r - r_exact|: |w| (tau + 12) ulp(2M) / 2 in the
+ * variant's type, M the largest |drive| taken (x_rest included), plus the
+ * subnormals' absolute rounding. */
+static double rate_bound(double tau, double w, double m, int f32)
+{
+    const double two_m = 2.0 * m;
+    const double ulp = f32 ? (double)(nextafterf((float)two_m, INFINITY) - (float)two_m)
+                           : nextafter(two_m, INFINITY) - two_m;
+    return fabs(w) * (tau + 12.0) * ulp / 2.0 +
+           (tau + 12.0) * (fabs(w) > 1.0 ? fabs(w) : 1.0) * (f32 ? (double)FLT_MIN * FLT_EPSILON : UNDER);
+}
+
+/* Config: tau (structured byte: 1 + b^2 / 4 samples, 0 gives 0.5 and 255
+ * gives 1e308, both refused; raw: any double), the weight ((signed char) /
+ * 16; raw: any double), the rest drive ((signed char) / 8; raw: any
+ * double). The term runs in both real variants (the float one from the
+ * same numbers, if its init accepts them). Opcodes: 0xF0 reset to the
+ * rest drive; 0xF1 a reset refused (byte: NaN, infinite, beyond the drive
+ * limit; an instance not initialised, or of the other variant), nothing
+ * changed; 0xF2 a NaN sample; 0xF3 a finite sample beyond the drive limit
+ * (byte: by how much); 0xF4 a snapshot (two bytes: an octet to damage, a
+ * mask) refused damaged by a twin, changing nothing, then restored whole
+ * (the twin then runs beside, bit for bit), refused too by a term of
+ * another time constant, of the other variant and not initialised; 0xF5
+ * clear the events; any other byte a drive sample (structured: (signed
+ * char) b2 / 8; raw: a double).
+ * Checks: init refuses exactly what rate.h says, in its order, writing
+ * nothing; output() is bit for bit the next step's value; each value
+ * within twice rate.h's bound of a double reference (the reference rounds
+ * alike); a NaN or a drive beyond the limit changes no state, says
+ * HYST_ERR_NONFINITE or HYST_ERR_DOMAIN and sets the sticky event until
+ * cleared; a restored twin continues bit for bit. */
+static void fuzz_rate(reader_t *rd, unsigned flags)
+{
+    static hyst_rate_t R, F, twin, keep;
+    static unsigned char buf[HYST_RATE_SNAPSHOT_SIZE + 1u], keep_buf[HYST_RATE_SNAPSHOT_SIZE + 1u];
+    const int raw = (flags & 2u) != 0u;
+    const unsigned tb = rd_u8(rd);
+    const double tau = raw ? rd_f64(rd) : tb == 0u ? 0.5 : tb == 255u ? 1e308 : 1.0 + (double)(tb * tb) / 4.0;
+    const double w = raw ? rd_f64(rd) : (double)(signed char)rd_u8(rd) / 16.0;
+    const double x_rest = raw ? rd_f64(rd) : (double)(signed char)rd_u8(rd) / 8.0;
+    rate_ref_t q, q32;
+    double m, m32, limit;
+    hyst_status_t st;
+    unsigned ops;
+    int f32_on, twin_on = 0;
+    /* every variant refuses what rate.h says, writing nothing */
+    memset(&R, 0x5A, sizeof R);
+    memcpy(&keep, &R, sizeof R);
+    CHECK(hyst_f64_rate_init(NULL, tau, w, x_rest) == HYST_ERR_NULL);
+    CHECK(hyst_f64_rate_init_(&R, tau, w, x_rest, HYST_LAYOUT ^ 1ul) == HYST_ERR_LAYOUT);
+    CHECK(memcmp(&R, &keep, sizeof R) == 0);
+    st = hyst_f32_rate_init(&F, tau, w, x_rest);
+    CHECK(st == rate_expected(tau, w, x_rest, 1));
+    f32_on = st == HYST_OK;
+    st = hyst_f64_rate_init(&R, tau, w, x_rest);
+    CHECK(st == rate_expected(tau, w, x_rest, 0));
+    if (st != HYST_OK) {
+        CHECK(memcmp(&R, &keep, sizeof R) == 0);
+        return;
+    }
+    CHECK(hyst_rate_status(&R) == HYST_OK && hyst_rate_events(&R) == 0u && hyst_rate_output(&R) == 0);
+    CHECK(hyst_rate_status(NULL) == HYST_ERR_NULL && hyst_rate_events(NULL) == 0u &&
+          hyst_rate_output(NULL) == 0 && hyst_rate_step(NULL, 1.0) == 0);
+    hyst_rate_clear_events(NULL);
+    limit = R.x_limit.f64;
+    q.a = 1.0 / tau;
+    q.w = w;
+    q.p = x_rest;
+    q.v = 0.0;
+    q32.a = 1.0 / tau;
+    q32.w = (double)(float)w;
+    q32.p = (double)(float)x_rest;
+    q32.v = 0.0;
+    m = fabs(x_rest);
+    m32 = fabs(q32.p);
+    for (ops = 0u; ops < MAX_OPS && rd->at < rd->n; ++ops) {
+        const unsigned op = rd_u8(rd);
+        double x, r, before;
+        if (op == 0xF0u) {
+            CHECK(hyst_f64_rate_reset(&R, x_rest) == HYST_OK && hyst_rate_events(&R) == 0u &&
+                  hyst_rate_status(&R) == HYST_OK && hyst_rate_output(&R) == 0);
+            q.p = x_rest;
+            q.v = 0.0;
+            if (f32_on) {
+                CHECK(hyst_f32_rate_reset(&F, (float)x_rest) == HYST_OK);
+                q32.p = (double)(float)x_rest;
+                q32.v = 0.0;
+            }
+            if (twin_on) {
+                CHECK(hyst_f64_rate_reset(&twin, x_rest) == HYST_OK);
+            }
+            continue;
+        }
+        if (op == 0xF1u) { /* a reset refused: nothing changes */
+            const unsigned b = rd_u8(rd) % 5u;
+            static hyst_rate_t blank;
+            const double bad = b == 0u ? NAN : b == 1u ? -INFINITY : nextafter(limit, INFINITY);
+            memcpy(&keep, &R, sizeof R);
+            if (b < 3u) {
+                CHECK(hyst_f64_rate_reset(&R, bad) == HYST_ERR_NONFINITE);
+            } else if (b == 3u) {
+                memset(&blank, 0, sizeof blank);
+                CHECK(hyst_f64_rate_reset(&blank, 0.0) == HYST_ERR_LAYOUT);
+            } else {
+                CHECK(hyst_f32_rate_reset(&R, 0.0f) == HYST_ERR_LAYOUT);
+            }
+            CHECK(memcmp(&R, &keep, sizeof R) == 0);
+            continue;
+        }
+        if (op == 0xF5u) {
+            hyst_rate_clear_events(&R);
+            CHECK(hyst_rate_events(&R) == 0u);
+            if (twin_on) hyst_rate_clear_events(&twin);
+            continue;
+        }
+        if (op == 0xF4u) { /* a snapshot: refused damaged, restored whole into a twin */
+            const unsigned at = rd_u8(rd), flip = rd_u8(rd) | 1u;
+            static hyst_rate_t other, other32, blank;
+            size_t len = 0u;
+            CHECK(hyst_rate_snapshot_size(&R) == 44u && hyst_rate_snapshot_size(NULL) == 0u);
+            memset(buf, 0xA5, sizeof buf);
+            memcpy(keep_buf, buf, sizeof buf);
+            CHECK(hyst_rate_snapshot_save(&R, buf, 43u, &len) == HYST_ERR_NOSPACE && len == 0u);
+            CHECK(memcmp(buf, keep_buf, sizeof buf) == 0);
+            CHECK(hyst_rate_snapshot_save(NULL, buf, sizeof buf, &len) == HYST_ERR_NULL);
+            CHECK(hyst_rate_snapshot_save(&R, buf, sizeof buf, &len) == HYST_OK && len == 44u);
+            CHECK(hyst_f64_rate_init(&twin, tau, w, 0.0) == HYST_OK);
+            memcpy(&keep, &twin, sizeof twin);
+            buf[at % len] = (unsigned char)(buf[at % len] ^ (flip & 0xFFu));
+            CHECK(hyst_rate_snapshot_restore(&twin, buf, len) != HYST_OK);
+            CHECK(memcmp(&twin, &keep, sizeof twin) == 0);
+            buf[at % len] = (unsigned char)(buf[at % len] ^ (flip & 0xFFu));
+            CHECK(hyst_rate_snapshot_restore(&twin, buf, len - 1u) == HYST_ERR_FORMAT);
+            CHECK(hyst_rate_snapshot_restore(NULL, buf, len) == HYST_ERR_NULL);
+            memset(&blank, 0, sizeof blank);
+            CHECK(hyst_rate_snapshot_restore(&blank, buf, len) == HYST_ERR_ARG);
+            if (hyst_f64_rate_init(&other, tau + 1.0, w, 0.0) == HYST_OK && 1.0 / (tau + 1.0) != 1.0 / tau) {
+                memcpy(&keep, &other, sizeof other);
+                CHECK(hyst_rate_snapshot_restore(&other, buf, len) == HYST_ERR_CURVE);
+                CHECK(memcmp(&other, &keep, sizeof other) == 0);
+            }
+            if (hyst_f32_rate_init(&other32, tau, w, 0.0) == HYST_OK) {
+                CHECK(hyst_rate_snapshot_restore(&other32, buf, len) == HYST_ERR_VERSION);
+            }
+            CHECK(hyst_rate_snapshot_restore(&twin, buf, len) == HYST_OK);
+            CHECK(memcmp(&twin.last, &R.last, sizeof R.last) == 0 &&
+                  memcmp(&twin.state, &R.state, sizeof R.state) == 0 &&
+                  hyst_rate_status(&twin) == hyst_rate_status(&R) &&
+                  hyst_rate_events(&twin) == hyst_rate_events(&R));
+            twin_on = 1;
+            if (f32_on) { /* the float variant's: 36 octets, restored whole */
+                static hyst_rate_t twin32;
+                CHECK(hyst_rate_snapshot_size(&F) == 36u);
+                CHECK(hyst_rate_snapshot_save(&F, buf, sizeof buf, &len) == HYST_OK && len == 36u);
+                CHECK(hyst_f32_rate_init(&twin32, tau, w, 0.0) == HYST_OK);
+                CHECK(hyst_rate_snapshot_restore(&twin32, buf, len) == HYST_OK);
+                CHECK(memcmp(&twin32.last, &F.last, sizeof F.last) == 0 &&
+                      memcmp(&twin32.state, &F.state, sizeof F.state) == 0);
+            }
+            continue;
+        }
+        if (op == 0xF2u || op == 0xF3u) { /* ignored: NaN, or beyond the drive limit */
+            const unsigned b = op == 0xF3u ? rd_u8(rd) : 0u;
+            hyst_rate_t copy;
+            x = op == 0xF2u ? NAN : (b & 1u ? -1.0 : 1.0) * (b & 2u ? nextafter(limit, INFINITY) : limit * (2.0 + b));
+            memcpy(&copy, &R, sizeof R);
+            before = hyst_f64_rate_output(&R);
+            r = hyst_f64_rate_step(&R, x);
+            CHECK(memcmp(&r, &before, sizeof r) == 0);
+            CHECK(hyst_rate_status(&R) == (op == 0xF2u || !isfinite(x) ? HYST_ERR_NONFINITE : HYST_ERR_DOMAIN));
+            CHECK((hyst_rate_events(&R) & HYST_EVENT_NONFINITE) != 0u);
+            CHECK(memcmp(&copy.last, &R.last, sizeof R.last) == 0 && memcmp(&copy.state, &R.state, sizeof R.state) == 0);
+            if (twin_on) (void)hyst_f64_rate_step(&twin, x);
+            continue;
+        }
+        x = raw ? rd_f64(rd) : (double)(signed char)rd_u8(rd) / 8.0;
+        if (!(fabs(x) <= limit)) continue; /* ops 0xF2 and 0xF3 probe these */
+        m = fmax(m, fabs(x));
+        before = hyst_f64_rate_output(&R);
+        r = hyst_f64_rate_step(&R, x);
+        CHECK(memcmp(&r, &before, sizeof r) == 0);
+        CHECK(hyst_rate_status(&R) == HYST_OK);
+        {
+            const double r_ref = rate_ref_step(&q, x), bound = rate_bound(tau, w, m, 0);
+            if (isfinite(bound) && isfinite(r_ref)) {
+                CLOSE("rate_vs_reference", fabs(r - r_ref), 2.0 * bound);
+            }
+        }
+        if (twin_on) { /* the twin restored from a snapshot: bit for bit */
+            const double r2 = hyst_f64_rate_step(&twin, x);
+            CHECK(memcmp(&r2, &r, sizeof r) == 0 && hyst_rate_status(&twin) == hyst_rate_status(&R));
+        }
+        if (f32_on) {
+            const float xf = (float)x;
+            if (fabs((double)xf) <= (double)F.x_limit.f32) {
+                const float bf = hyst_f32_rate_output(&F), rf = hyst_f32_rate_step(&F, xf);
+                const double r_ref = rate_ref_step(&q32, (double)xf);
+                double bound;
+                m32 = fmax(m32, fabs((double)xf));
+                bound = rate_bound(tau, (double)(float)w, m32, 1) + rate_bound(tau, w, m32, 0);
+                CHECK(memcmp(&rf, &bf, sizeof rf) == 0 && hyst_rate_status(&F) == HYST_OK);
+                if (isfinite(bound) && isfinite(r_ref)) {
+                    CLOSE("rate_f32_vs_reference", fabs((double)rf - r_ref), bound);
+                }
+            }
+        }
+    }
+}
+
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
 {
     reader_t r = {data, size, 0};
     const unsigned b0 = rd_u8(&r);
-    /* 252..255: the creep module; below, the others (as before it came) */
-    const unsigned module = b0 >= 252u ? 4u : b0 % 4u;
+    /* 252..255: the creep module, 248..251 the rate term; below, the others
+     * (as before they came) */
+    const unsigned module = b0 >= 252u ? 4u : b0 >= 248u ? 5u : b0 % 4u;
     const unsigned flags = rd_u8(&r);
     g_raw = (int)(flags & 2u);
     { /* every status has a distinct, non-empty name; unknown codes one too */
@@ -1708,7 +1954,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     case 1: fuzz_pwl(&r, flags); break;
     case 2: fuzz_inverse(&r, flags); break;
     case 3: fuzz_ident(&r, flags); break;
-    default: fuzz_creep(&r, flags); break;
+    case 4: fuzz_creep(&r, flags); break;
+    default: fuzz_rate(&r, flags); break;
     }
     return 0;
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """Writes the seed corpora (small, committed): fuzz/corpus/ for fuzz_hyst.c,
-fuzz/corpus_models/ for fuzz_models.c, fuzz/corpus_code/ for fuzz_code.c, fuzz/corpus_q31/ for fuzz_q31.c
+fuzz/corpus_models/ for fuzz_models.c, fuzz/corpus_code/ for fuzz_code.c, fuzz/corpus_q31/ for fuzz_q31.c, fuzz/corpus_grid/ for fuzz_grid.c
 (layouts in their header comments) and fuzz/corpus_model_file/ for fuzz_model_file.c (model files: tests/cli/models/*.hyst, tests/model_files/*.hyst, a valid one
 in several spellings, and malformed variants of it).
 regress_* files are fuzzer finds, kept by hand, never written here."""
@@ -198,6 +198,33 @@ models.update({
                             + bytes([0xF4, 255, 0x41])),
     "creep_raw": bytes([CREEP, 2, 1]) + struct.pack("<3d", 5000.0, 0.3, 0.0)
         + b"".join(bytes([1]) + struct.pack("<d", d / 4) for d in steps[:20]) + b"\xf2",
+})
+
+
+# fuzz_models.c's rate module (first byte 248..251): [flags] tau byte (1 + b^2 / 4 samples;
+# 0: 0.5, 255: 1e308, both refused), weight ((signed char) / 16), rest drive ((signed char) /
+# 8), then ops: 0xF0 reset, 0xF1 + which refused reset, 0xF2 NaN, 0xF3 + how far beyond the
+# limit, 0xF4 snapshot (octet to damage, mask), 0xF5 clear events, else a sample (op, (signed
+# char) / 8)
+RATE = 248
+
+def rate(tb, w, rest, drives, ops=b"", flags=0):
+    return bytes([RATE, flags, tb]) + sbyte(w * 16) + sbyte(rest * 8) + \
+        b"".join(bytes([1]) + sbyte(d * 8) for d in drives) + ops
+
+models.update({
+    "rate_tau1_last_change": rate(1, -1.75, 0.5, steps[:30], bytes([0xF2, 0xF5, 0xF0, 1, 40])),
+    "rate_long_tau_snapshot": rate(40, 0.5, 2.0, steps[:20], bytes([0xF4, 5, 0x80]) + b"".join(bytes([1]) + sbyte(d * 8) for d in steps[20:40])
+                                   + bytes([0xF4, 40, 1, 0xF0]) + b"".join(bytes([1]) + sbyte(d * 8) for d in steps[40:50])),
+    "rate_bad_drives": rate(6, 7.9, -1.0, steps[:10], bytes([0xF3, 0, 0xF3, 3, 0xF2, 0xF1, 0, 0xF1, 1, 0xF1, 2, 0xF1, 3, 0xF1, 4, 0xF5])
+                            + b"".join(bytes([1]) + sbyte(d * 8) for d in steps[10:20])),
+    "rate_tau_below_1": rate(0, 0.5, 0.0, steps[:4]),
+    "rate_tau_huge": rate(255, 0.5, 0.0, steps[:4]),
+    "rate_raw_nan_weight": bytes([RATE + 1, 2]) + struct.pack("<3d", 5.0, math.nan, 0.0),
+    "rate_raw_float_limits": bytes([RATE + 2, 2]) + struct.pack("<3d", 3.0, 1e10, 1e28)
+        + b"".join(bytes([1]) + struct.pack("<d", d * 1e27) for d in steps[:20]) + bytes([0xF4, 30, 4]),
+    "rate_raw_beyond_float": bytes([RATE + 3, 2]) + struct.pack("<3d", 2.5, 1e39, 0.0)
+        + b"".join(bytes([1]) + struct.pack("<d", d * 1e300) for d in steps[:12]) + bytes([0xF3, 2, 0xF4, 0, 0x10]),
 })
 
 # ---- fuzz_code.c: [flags][cap % 20] config, code range, [deadband], ops ----
@@ -445,11 +472,100 @@ q31_seeds = {
     "comp_bad_cap1": q31_cfg(QCOMP, 1, eq20_like, intervals=4),
     "comp_raw_coeff_x7": q31_cfg(QCOMP | QRAW, 8, (7, 0.0, 1.0, [1.0, -3.5, 5.25, -4.375, 2.1875, -0.65625, 0.109375, -0.0078125]), intervals=8),
 }
+# fuzz_grid.c: flags, intervals, capacity, fit byte, probe byte, then lo, the widths, y_lo
+# and the cells' masses (structured bytes), then opcodes (0xF0 snapshot + which mass the
+# other grid changes, 0xF1 reset, 0xF2 + knot, 0xF3 + where: an excursion, 0xF4 + a raw
+# double: the fit's output, + the sample, 0xF5 hi, 0xF6 lo, else a sample b / 239).
+G_RAW, G_COMP, G_FIT, G_PROBE, G_F32 = 1, 2, 4, 8, 16
+
+def grid(flags, widths, masses, ops, cap=30, fit=40, probe=0, lo=0.0, y_lo_byte=16):
+    k = len(widths)
+    assert len(masses) == k * (k + 1) // 2
+    b = bytes([flags, k, cap, fit, probe]) + sbyte(lo * 8) + bytes([int(w * 4) - 1 for w in widths])
+    b += sbyte(y_lo_byte) + bytes([0 if m == 0 else (255 if m > 12 else int(m * 16) + 40) for m in masses])
+    return b + ops
+
+def gwalk(levels=4, steps=3):
+    b, at = b"", 0
+    for j in range(levels):
+        for target in (239 - 20 * j, 20 * (j + 1)):
+            for i in range(1, steps + 1):
+                b += bytes([at + (target - at) * i // steps])
+            at = target
+    return b
+
+def graw(flags, knots, y_lo, masses, ops=b"", cap=30):
+    return bytes([flags | G_RAW, len(knots) - 1, cap, 40, 0]) + struct.pack("<%dd" % len(knots), *knots) + \
+        struct.pack("<d", y_lo) + struct.pack("<%dd" % len(masses), *masses) + ops
+
+tri3 = [1.0, 0.5, 2.0, 0.0, 1.0, 3.0]  # cells (0,0) (1,0) (1,1) (2,0) (2,1) (2,2)
+sharp4 = [0.5, 0, 4.0, 0.25, 13, 0.5, 0, 0, 1.0, 2.0]
+many12 = [((i * 7) % 11) / 4.0 for i in range(78)]
+grid_seeds = {
+    "grid_one_cell": grid(0, [2.0], [8.0], gwalk(2, 2) + bytes([0xF2, 1, 0xF2, 0])),
+    "grid_three_all": grid(G_COMP | G_FIT | G_F32, [1.0, 2.5, 0.75], tri3, gwalk(4, 3), lo=-1.0),
+    "grid_sharp_cell": grid(G_COMP | G_FIT, [0.5, 4.0, 1.0, 2.0], sharp4, gwalk(5, 2) + bytes([0xF3, 100]) + gwalk(1, 4)),
+    "grid_snapshot_reset": grid(0, [1.0, 2.5, 0.75], tri3, gwalk(2, 3) + bytes([0xF0, 3]) + gwalk(1, 3) +
+                                bytes([0xF3, 50, 0xF1]) + gwalk(2, 2) + bytes([0xF0, 0])),
+    "grid_twelve_intervals": grid(G_COMP | G_FIT | G_F32, [0.25 * (1 + i % 5) for i in range(12)], many12,
+                                  gwalk(5, 3) + bytes([0xF2, 6, 0xF5, 0xF6]), cap=39, fit=47),
+    "grid_small_capacity": grid(G_COMP | G_F32, [0.5, 4.0, 1.0, 2.0], sharp4, gwalk(6, 2), cap=3),
+    "grid_fit_nospace": grid(G_FIT, [1.0, 2.5, 0.75], tri3, gwalk(4, 2), fit=3),
+    "grid_fit_raw_outputs": grid(G_FIT, [1.0, 2.5, 0.75], tri3, gwalk(1, 2) + bytes([0xF4]) + struct.pack("<d", math.nan)
+                                 + bytes([100, 0xF4]) + struct.pack("<d", 1.5e308) + bytes([30, 0xF4])
+                                 + struct.pack("<d", -1.5e308) + bytes([101])),
+    "grid_24bit_offset": grid(G_COMP | G_FIT, [1.0, 2.5, 0.75], tri3, gwalk(3, 3), y_lo_byte=-128),
+    "grid_knot_bins_short": grid(G_FIT, [1.0, 2.5], [1.0, 0.5, 2.0], gwalk(1, 2), fit=0),
+}
+for p_ in range(12):
+    grid_seeds["grid_probe_%d" % p_] = grid(G_PROBE, [1.0, 2.5, 0.75], tri3, gwalk(1, 2), probe=p_)
+grid_seeds.update({
+    "grid_bad_intervals0": grid(0, [], [], b""),
+    "grid_bad_all_zero": grid(0, [1.0, 2.0], [0, 0, 0], gwalk(1, 2)),
+    "grid_bad_capacity": grid(0, [1.0, 2.0], [1.0, 0, 1.0], gwalk(1, 2), cap=1),
+    "grid_raw_valid": graw(G_COMP | G_FIT, [-2.0, 0.5, 3.0], 0.25, [1.0, 0.5, 2.0], gwalk(2, 3)),
+    "grid_raw_nan_knot": graw(G_FIT, [0.0, math.nan, 3.0], 0.0, [1.0, 0.5, 2.0], gwalk(1, 2)),
+    "grid_raw_huge_density": graw(G_F32, [0.0, 1e-300, 1.0], 0.0, [1e300, 1.0, 1.0], gwalk(1, 2)),
+    # finds, fixed: desired y_lo from above with the first diagonal cell empty drove to the end
+    # of the flat first piece, not to lo (the plant kept its first column switched up)
+    "regress_grid_comp_empty_first_cell": grid(G_COMP, [1.0, 2.0], [0, 1.5, 2.0], bytes([120, 0xF5, 0xF6, 60])),
+    # outputs of 1e176 and a last cell of 1: a desired output past the branch's reach by a
+    # rounding drove to 1.8e88, past hi = 3 (the drive now stops at the piece's end)
+    "regress_grid_comp_beyond_reach": bytes.fromhex(
+        "07021e280000000000000000c0000000000000e03f00000000000008406464646464646464646464646464646464"
+        "64646464646464000000000000d03f000000000000f03f000000000000e03f00000000000000404f9fefa65d56db"
+        "63989f28"),
+    # a width of 1e160: its square overflowed, the mass tabulated as 0 (the model never reached
+    # y_hi); refused now (HYST_ERR_COEFF)
+    "regress_grid_density_underflow": graw(G_COMP, [0.0, 1e160], 0.0, [1.0], gwalk(1, 2)),
+    # a width of 1.6e-159: its square subnormal, the density off by 1.3e-7 (now divided in turn)
+    "regress_grid_width_square_subnormal": bytes.fromhex(
+        "c5c5c5c5c5c516031e0403588128b17c775003f71e04300358c78828b33c7750031e04b33c7750031e0403811477"
+        "db822b775877ef77c7882828b33c7750031e04035877ef77c78828b33c7750031e04b33c7750031e0403811477db"
+        "812b772f033c7750031e04035877882828b33c7750031e04035877ef77c78828b33c28b33c7750031e04b3775003"
+        "1e04b33c7750031e0403811477db812b772f033c7750031e04035877ef77c78828b33c7750031e04b33c7750031e"
+        "0403811400000077db822b772f031e0403ef05050577c7883f28b33c7740031e04b33c7750031e040381146777db"
+        "812b772f031e0403587721811477db28b33c774141"),
+    # back to a setpoint one rounding above an LTP's output, the branch flat below it: the
+    # drive crossed the flat stretch past the LTP, the plant wiped it out (8.7 off); the drive
+    # now stops at the stored TP the branch would wipe out next
+    "regress_grid_comp_setpoint_flat": bytes.fromhex(
+        "120403280000010f0307100100001325ffffffffff77ef811477f100db81281c1c1c1c1c9f50817777641c8b8178"),
+    # a raw output of -1.4e308: the fit answered HYST_OK with an infinite mass (now HYST_ERR_COEFF)
+    "regress_grid_fit_overflow": bytes.fromhex("04031e2800000309021038304800385877eface1486db3ea7f1ef4f0ace1486db3eaff65"),
+    # output steps of 1.5e308 in one bin: their sum overflowed and the knots were NaN
+    "regress_grid_knots_overflow": grid(G_FIT, [1.0, 2.5, 0.75], tri3, bytes([50, 0xF4]) + struct.pack("<d", 1.5e308)
+                                        + bytes([120, 50, 0xF4]) + struct.pack("<d", 1.5e308) + bytes([120, 50])),
+    # a domain of 4 units in the last place: the knots collapsed to equal ones (now HYST_ERR_DOMAIN)
+    "regress_grid_knots_narrow_domain": graw(G_FIT, [1.0, 1.0 + 2 ** -51, 1.0 + 2 ** -50], 0.0, [1.0, 0.5, 2.0],
+                                             bytes([200, 0xF5] * 4)),
+})
 for d, group in ((out, seeds), (os.path.join(here, "corpus_models"), models),
                  (os.path.join(here, "corpus_code"), code_seeds),
                  (os.path.join(here, "corpus_model_file"), model_files),
                  (os.path.join(here, "corpus_everett"), everett_seeds),
-                 (os.path.join(here, "corpus_q31"), q31_seeds)):
+                 (os.path.join(here, "corpus_q31"), q31_seeds),
+                 (os.path.join(here, "corpus_grid"), grid_seeds)):
     os.makedirs(d, exist_ok=True)
     for name, data in group.items():
         assert len(data) < (8192 if group is model_files else 300), name

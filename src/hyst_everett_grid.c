@@ -21,20 +21,32 @@ static hyst_wide_t weight(const hyst_everett_grid_t *g, unsigned i, unsigned j)
     return g->weight[i * (i + 1u) / 2u + j];
 }
 
+/* m / (a b): the product first, as it always was, unless it leaves the
+ * normal numbers (widths below 1e-154 in double: a subnormal product has
+ * lost digits); then one division after the other. */
+static hyst_wide_t per_area(hyst_wide_t m, hyst_wide_t a, hyst_wide_t b)
+{
+    const hyst_wide_t ab = a * b;
+    return ab >= HYST_WIDE_MIN && ab <= HYST_WIDE_MAX ? m / ab : m / a / b;
+}
+
 /* Table entry `at` (curve.h: knots, half diagonal densities, then four
- * numbers per cell (i, j), j < i). */
-static hyst_wide_t entry(const hyst_everett_grid_t *g, const grid_t *w, size_t at)
+ * numbers per cell (i, j), j < i); *mass: the mass a density or a mass per
+ * unit of input carries (0 for the others). */
+static hyst_wide_t entry(const hyst_everett_grid_t *g, const grid_t *w, size_t at, hyst_wide_t *mass)
 {
     const size_t k = w->k;
     size_t r;
     unsigned i, j, l, p;
     hyst_wide_t sum = 0;
+    *mass = 0;
     if (at <= k) {
         return g->knots[at];
     }
     if (at <= 2u * k) {
         i = (unsigned)(at - k - 1u);
-        return weight(g, i, i) / (w->h[i] * w->h[i]);
+        *mass = weight(g, i, i);
+        return per_area(*mass, w->h[i], w->h[i]);
     }
     r = (at - 2u * k - 1u) / 4u;
     for (i = 1u; (size_t)i * (i + 1u) / 2u <= r; ++i) {
@@ -52,14 +64,17 @@ static hyst_wide_t entry(const hyst_everett_grid_t *g, const grid_t *w, size_t a
         for (l = j + 1u; l < i; ++l) {
             sum += weight(g, l, j);
         }
+        *mass = sum;
         return sum / w->h[j];
     case 2u: /* row i between them, per unit of a */
         for (l = j + 1u; l < i; ++l) {
             sum += weight(g, i, l);
         }
+        *mass = sum;
         return sum / w->h[i];
     default: /* the cell's density */
-        return weight(g, i, j) / (w->h[i] * w->h[j]);
+        *mass = weight(g, i, j);
+        return per_area(*mass, w->h[i], w->h[j]);
     }
 }
 
@@ -89,11 +104,13 @@ static hyst_status_t everett_grid(hyst_curve_t *curve, const hyst_everett_grid_t
                            hyst_ptr_t table, size_t table_len, unsigned variant,
                            unsigned long layout)
 {
+    const hyst_wide_t least =
+        variant == (unsigned)HYST_VARIANT_F32 ? (hyst_wide_t)FLT_MIN : HYST_WIDE_MIN;
     hyst_curve_t out;
     grid_t w;
     hyst_wide_t total = 0, eps, bound, slope = 0, reach, ymax;
     size_t len, at;
-    unsigned k, i, j;
+    unsigned k, i, j, cells;
     int finite = 1;
     if (curve == NULL || g == NULL || table.f32 == NULL) {
         return HYST_ERR_NULL;
@@ -127,12 +144,21 @@ static hyst_status_t everett_grid(hyst_curve_t *curve, const hyst_everett_grid_t
         return HYST_ERR_NOT_MONOTONE;
     }
     len = HYST_EVERETT_GRID_TABLE_LEN(k);
+    cells = HYST_EVERETT_GRID_CELLS(k);
     if (table_len < len) {
         return HYST_ERR_NOSPACE;
     }
     for (at = 0u; at < len; ++at) { /* every entry finite before one is written */
         hyst_num_t v;
-        if (!hyst_num_set(&v, variant, entry(g, &w, at))) {
+        hyst_wide_t mass;
+        if (!hyst_num_set(&v, variant, entry(g, &w, at, &mass))) {
+            return HYST_ERR_COEFF;
+        }
+        /* a mass whose density the type holds only as a subnormal or as 0
+         * (a width's square overflowing): the model would lose it, more
+         * than a rounding of the total if it is a cell's share of one */
+        if (mass > total * hyst_real_eps(variant) / (hyst_wide_t)cells &&
+            !(hyst_num_get(&v, variant) >= least)) {
             return HYST_ERR_COEFF;
         }
     }
@@ -180,13 +206,14 @@ static hyst_status_t everett_grid(hyst_curve_t *curve, const hyst_everett_grid_t
         return HYST_ERR_ILL_CONDITIONED;
     }
     for (at = 0u; at < len; ++at) {
+        hyst_wide_t mass;
 #if HYST_ENABLE_F64
         if (variant == (unsigned)HYST_VARIANT_F64) {
-            table.f64[at] = (double)entry(g, &w, at);
+            table.f64[at] = (double)entry(g, &w, at, &mass);
             continue;
         }
 #endif
-        table.f32[at] = (float)entry(g, &w, at);
+        table.f32[at] = (float)entry(g, &w, at, &mass);
     }
     out.u.everett_grid.table = hyst_cptr_of(table, variant);
     out.u.everett_grid.intervals = k;

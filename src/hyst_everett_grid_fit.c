@@ -189,11 +189,6 @@ hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
     } else {
         memset(w, 0, m * sizeof *w);
     }
-    memset(g, 0, sizeof *g);
-    g->intervals = fit->intervals;
-    for (i = 0u; i <= fit->intervals; ++i) {
-        g->knots[i] = fit->knots[i];
-    }
     rss = syy;
     offset = fit->aty[0];
     for (i = 0u; i < m; ++i) {
@@ -203,8 +198,21 @@ hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
         }
         rss += w[i] * (hw - 2 * c[i]);
         offset -= w[i] * fit->ata[(i + 1u) * cols];
-        g->weight[i] = w[i];
         sum += w[i];
+    }
+    /* outputs so large that the normal equations overflow: no fit (a NaN
+     * residual would read as 0 below) */
+    if (!hyst_wide_is_finite(sum) || !hyst_wide_is_finite(rss) ||
+        !hyst_wide_is_finite(fit->y_ref + offset / n)) {
+        return HYST_ERR_COEFF;
+    }
+    memset(g, 0, sizeof *g);
+    g->intervals = fit->intervals;
+    for (i = 0u; i <= fit->intervals; ++i) {
+        g->knots[i] = fit->knots[i];
+    }
+    for (i = 0u; i < m; ++i) {
+        g->weight[i] = w[i];
     }
     g->y_lo = fit->y_ref + offset / n;
     *rms = HYST_WIDE_SQRT((rss > 0 ? rss : 0) / n);
@@ -216,7 +224,8 @@ hyst_status_t hyst_everett_grid_knots(const hyst_wide_t *x, const hyst_wide_t *y
                                       hyst_wide_t *knots, hyst_wide_t *work, size_t work_len)
 {
     const hyst_wide_t span = hi - lo;
-    hyst_wide_t total = 0, cum = 0, gap;
+    hyst_wide_t out[HYST_EVERETT_GRID_MAX_INTERVALS + 1];
+    hyst_wide_t total = 0, cum = 0, gap, most = 0;
     size_t k, bin = 0u;
     unsigned q;
     if (x == NULL || y == NULL || knots == NULL || work == NULL) {
@@ -233,40 +242,54 @@ hyst_status_t hyst_everett_grid_knots(const hyst_wide_t *x, const hyst_wide_t *y
         return HYST_ERR_NOSPACE;
     }
     memset(work, 0, work_len * sizeof *work);
+    /* the steps relative to the largest: their sum cannot overflow */
+    for (k = 1u; k < n; ++k) {
+        const hyst_wide_t dy = hyst_wide_abs(y[k] - y[k - 1u]);
+        most = hyst_wide_is_finite(dy) && dy > most ? dy : most;
+    }
     for (k = 1u; k < n; ++k) {
         const hyst_wide_t mid = (x[k] + x[k - 1u]) / 2, dy = hyst_wide_abs(y[k] - y[k - 1u]);
         hyst_wide_t at;
-        if (!hyst_wide_is_finite(mid) || !hyst_wide_is_finite(dy)) {
+        if (!hyst_wide_is_finite(mid) || !hyst_wide_is_finite(dy) || !(most > 0)) {
             continue;
         }
         at = (mid - lo) / span * (hyst_wide_t)work_len;
         bin = at <= 0 ? 0u : at >= (hyst_wide_t)work_len ? work_len - 1u : (size_t)at;
-        work[bin] += dy;
-        total += dy;
+        work[bin] += dy / most;
+        total += dy / most;
     }
-    knots[0] = lo;
-    knots[intervals] = hi;
+    out[0] = lo;
+    out[intervals] = hi;
     bin = 0u;
     for (q = 1u; q < intervals; ++q) {
         const hyst_wide_t target = total * (hyst_wide_t)q / (hyst_wide_t)intervals;
         if (!(total > 0)) {
-            knots[q] = lo + span * (hyst_wide_t)q / (hyst_wide_t)intervals;
+            out[q] = lo + span * (hyst_wide_t)q / (hyst_wide_t)intervals;
             continue;
         }
         while (bin + 1u < work_len && cum + work[bin] < target) {
             cum += work[bin++];
         }
-        knots[q] = lo + span * ((hyst_wide_t)bin +
-                                (work[bin] > 0 ? (target - cum) / work[bin] : 0)) /
-                            (hyst_wide_t)work_len;
+        out[q] = lo + span * ((hyst_wide_t)bin +
+                              (work[bin] > 0 ? (target - cum) / work[bin] : 0)) /
+                          (hyst_wide_t)work_len;
     }
     /* at least gap apart: pushed up from lo, then down from hi */
     gap = span / (hyst_wide_t)(16u * intervals);
     for (q = 1u; q < intervals; ++q) {
-        knots[q] = knots[q] < knots[q - 1u] + gap ? knots[q - 1u] + gap : knots[q];
+        out[q] = out[q] < out[q - 1u] + gap ? out[q - 1u] + gap : out[q];
     }
     for (q = intervals - 1u; q >= 1u; --q) {
-        knots[q] = knots[q] > knots[q + 1u] - gap ? knots[q + 1u] - gap : knots[q];
+        out[q] = out[q] > out[q + 1u] - gap ? out[q + 1u] - gap : out[q];
+    }
+    /* a domain too narrow for the type to hold the knots gap apart */
+    for (q = 1u; q <= intervals; ++q) {
+        if (!(out[q] > out[q - 1u])) {
+            return HYST_ERR_DOMAIN;
+        }
+    }
+    for (q = 0u; q <= intervals; ++q) {
+        knots[q] = out[q];
     }
     return HYST_OK;
 }

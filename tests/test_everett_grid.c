@@ -476,6 +476,211 @@ static void test_compensator_inverts_the_model(void)
 #endif
 }
 
+
+/* A grid whose first diagonal cell is empty (the major rising branch is
+ * flat over the first interval) while its first column holds mass: driven
+ * to y_hi, then to y_lo, the compensator's drive is lo itself, where the
+ * plant forgets its memory as the compensator does; a drive at the end of
+ * the flat piece would leave the column switched up (the output 16.5 too
+ * high here). */
+static void test_compensator_reaches_lo_past_an_empty_first_cell(void)
+{
+    hyst_everett_grid_t g;
+    hyst_curve_t inv;
+    static const hyst_real_t desired[4] = {HYST_REAL_C(50.0), HYST_REAL_C(97.25), HYST_REAL_C(1.0),
+                                           HYST_REAL_C(40.0)};
+    unsigned i;
+    memset(&g, 0, sizeof g);
+    g.intervals = 12u;
+    for (i = 1u; i <= 12u; ++i) { /* widths 0.25 .. 1.25: exact in float */
+        g.knots[i] = g.knots[i - 1u] + 0.25 * (double)(1u + (i - 1u) % 5u);
+    }
+    g.y_lo = 1.0;
+    for (i = 0u; i < HYST_EVERETT_GRID_CELLS(12u); ++i) {
+        g.weight[i] = (double)((i * 7u) % 11u) / 4.0; /* cell (0, 0): 0 */
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, init_g(&S, &curve, &g, table, xl, yl, xr, yr, CAP));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_grid_inverse(&inv, &curve));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl2, yl2, xr2, yr2, CAP));
+    for (i = 0u; i < 4u; ++i) {
+        const hyst_real_t x = hyst_step(&T, desired[i]);
+        const double y = (double)hyst_step(&S, x);
+        if (i == 2u) {
+            TEST_ASSERT_TRUE(x == (hyst_real_t)0.0);
+        }
+        TEST_ASSERT_TRUE(fabs(y - (double)desired[i]) <= 10.0 * AGREE * 96.25);
+    }
+}
+
+/* A nearly flat last piece (the last diagonal cell a millionth of the
+ * rest, its row empty): a desired output at or near y_hi exceeds the
+ * branch's reach by a rounding, and the drive stays on the domain (within
+ * the 8 units in the last place tcm.h states), where the solve extrapolated
+ * it past hi (by up to 1.8 in float, 6e-9 in double). */
+static void test_compensator_drive_stays_on_the_domain(void)
+{
+    const double hi = 2.0, allowed = 8.0 * (double)(NEXT((hyst_real_t)hi, (hyst_real_t)4.0) - (hyst_real_t)hi);
+    hyst_everett_grid_t g;
+    hyst_curve_t inv;
+    double worst = 0.0;
+    int j;
+    for (j = 0; j < 200; ++j) {
+        hyst_real_t y_hi, x[3];
+        int i;
+        memset(&g, 0, sizeof g);
+        g.intervals = 2u;
+        g.knots[1] = 1.0;
+        g.knots[2] = hi;
+        g.y_lo = 0.1 * j + 0.013;
+        g.weight[0] = 1.0 + 0.37 * j;
+        g.weight[2] = 1e-6;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett_grid(&curve, &g, table, TABLE));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_grid_inverse(&inv, &curve));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl2, yl2, xr2, yr2, CAP));
+        y_hi = CURVE_NUM(curve.y_hi);
+        x[0] = hyst_step(&T, y_hi);
+        x[1] = hyst_step(&T, (hyst_real_t)(g.y_lo + 0.5));
+        x[2] = hyst_step(&T, y_hi - (y_hi - (hyst_real_t)g.y_lo) * (hyst_real_t)1e-9);
+        for (i = 0; i < 3; ++i) {
+            worst = (double)x[i] - hi > worst ? (double)x[i] - hi : worst;
+        }
+    }
+    TEST_PRINTF("nearly flat last piece: the drive at most %g past hi", worst);
+    TEST_ASSERT_TRUE(worst <= allowed);
+}
+
+/* A setpoint come back to: falling from a reversal whose branch is flat
+ * below the last LTP (its columns empty there), a desired output at (or a
+ * rounding above) that LTP's output carried the drive across the flat
+ * stretch when the branch's own value there rounded below it, so the plant
+ * wiped out the LTP the compensator kept (up to 21 of a range of 672 off
+ * in these walks, float and double). The drive now never passes the
+ * stored TP the branch would wipe out next before the desired output
+ * passes that TP's. */
+static void test_compensator_keeps_the_plants_memory_at_a_setpoint(void)
+{
+    hyst_everett_grid_t g;
+    hyst_curve_t inv;
+    double worst = 0.0;
+    unsigned i;
+    int trial;
+    memset(&g, 0, sizeof g);
+    g.intervals = 4u;
+    g.knots[1] = 0.5;
+    g.knots[2] = 4.5;
+    g.knots[3] = 5.5;
+    g.knots[4] = 7.5;
+    g.y_lo = 1.0;
+    for (i = 5u; i < 10u; ++i) { /* cells (2, 2), (3, 0..3): below a = 5.5 columns 0, 1 empty */
+        g.weight[i] = 134.375;
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett_grid(&curve, &g, table, TABLE));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_everett_grid_inverse(&inv, &curve));
+    for (trial = 0; trial < 4000; ++trial) {
+        const hyst_real_t drives[3] = {(hyst_real_t)(5.5 + 2.0 * ((trial * 37) % 101) / 101.0),
+                                       (hyst_real_t)(0.5 + 4.0 * ((trial * 53) % 97) / 97.0),
+                                       (hyst_real_t)(4.5 + 1.0 * ((trial * 71) % 89) / 89.0)};
+        hyst_real_t desired[5];
+        int k;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&S, &curve, xl, yl, xr, yr, CAP));
+        for (k = 0; k < 3; ++k) { /* the plant's own outputs: up, down to the LTP, up */
+            desired[k] = hyst_step(&S, drives[k]);
+        }
+        desired[3] = trial % 3 == 1 ? NEXT(desired[1], desired[2]) : desired[1]; /* back */
+        desired[4] = desired[2];
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&S, &curve, xl, yl, xr, yr, CAP));
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl2, yl2, xr2, yr2, CAP));
+        for (k = 0; k < 5; ++k) {
+            const double y = (double)hyst_step(&S, hyst_step(&T, desired[k]));
+            worst = fabs(y - (double)desired[k]) > worst ? fabs(y - (double)desired[k]) : worst;
+        }
+    }
+    TEST_PRINTF("setpoints come back to: worst |model(drive) - desired| %g", worst);
+    TEST_ASSERT_TRUE(worst <= 10.0 * AGREE * 5.0 * 134.375);
+}
+
+/* A mass whose density the type holds only as a subnormal or as 0 (a
+ * width's square overflowing) is refused (HYST_ERR_COEFF), where the curve
+ * was accepted with the mass lost to the model (its output at hi short of
+ * y_hi, or its density's precision); a width whose square is subnormal
+ * gives its density to rounding. */
+static void test_densities_the_type_cannot_hold_are_refused(void)
+{
+    static float t32[TABLE];
+    hyst_everett_grid_t g;
+    hyst_curve_t c;
+    memset(&g, 0, sizeof g);
+    g.intervals = 1u;
+    g.knots[1] = 1e20; /* density 1e-40: subnormal in float */
+    g.weight[0] = 1.0;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_f32_curve_from_everett_grid(&c, &g, t32, TABLE));
+#if HYST_ENABLE_F64
+    {
+        static double t64[TABLE];
+        g.knots[1] = 1e160; /* h^2 overflows: density 0 */
+        TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_f64_curve_from_everett_grid(&c, &g, t64, TABLE));
+    }
+#endif
+    g.knots[1] = 1e18; /* density 1e-36: normal, accepted */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f32_curve_from_everett_grid(&c, &g, t32, TABLE));
+#if HYST_ENABLE_F64
+    { /* a width of 1.6e-159, its square subnormal: the density still exact to rounding
+       * (it was off by 1.3e-7, the model's output at hi with it) */
+        static double t64[TABLE];
+        g.knots[1] = 1.6368713072402582e-159;
+        g.weight[0] = 2.639011642716169e-16;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_f64_curve_from_everett_grid(&c, &g, t64, TABLE));
+        TEST_ASSERT_TRUE(fabs(hyst_f64_curve_eval(&c, g.knots[1]) - g.weight[0]) <= 1e-14 * g.weight[0]);
+    }
+#endif
+}
+
+/* The fit's outputs so large that its normal equations overflow: refused
+ * (HYST_ERR_COEFF), the grid and the RMS not written, where it answered
+ * HYST_OK with an infinite mass. */
+static void test_fit_refuses_outputs_that_overflow(void)
+{
+    static const hyst_wide_t knots[4] = {0.0, 1.0, 2.0, 3.0};
+    static const hyst_wide_t x[6] = {0.5, 1.5, 2.5, 1.0, 2.0, 0.5};
+    static const hyst_wide_t y[6] = {1.0, 2.0, 4.0, -1.4e308, 3.0, 1.5};
+    hyst_everett_grid_fit_t fit;
+    hyst_everett_grid_t got, before;
+    hyst_wide_t rms = -1;
+    int k;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_init(&fit, knots, 3u, fit_work,
+                                                               sizeof fit_work / sizeof fit_work[0]));
+    for (k = 0; k < 6; ++k) {
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_add(&fit, x[k], y[k]));
+    }
+    memset(&got, 0x5a, sizeof got);
+    before = got;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_everett_grid_fit_solve(&fit, &got, &rms));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &got, sizeof got);
+    TEST_ASSERT_TRUE(rms == -1);
+}
+
+/* The knots: output steps whose sum overflows (two of 1.5e308 in one bin)
+ * still give finite knots at their quantiles, where they were NaN; a
+ * domain too narrow for the type to hold the knots apart is refused, the
+ * knots not written, where equal knots were returned (the fit refuses them). */
+static void test_knots_of_extreme_records(void)
+{
+    static const hyst_wide_t x[4] = {0.1, 0.5, 0.1, 0.5};
+    static const hyst_wide_t y[4] = {0.0, 1.5e308, 0.0, 1.5e308};
+    hyst_wide_t knots[5], keep[5];
+    unsigned q;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_knots(x, y, 4u, 0.0, 1.0, 4u, knots, fit_work, 64u));
+    for (q = 1u; q <= 4u; ++q) {
+        TEST_ASSERT_TRUE(knots[q] > knots[q - 1u]); /* NaN fails */
+    }
+    TEST_ASSERT_TRUE(knots[1] >= 0.29 && knots[3] <= 0.35); /* every step at mid 0.3 */
+    memset(knots, 0x5a, sizeof knots);
+    memcpy(keep, knots, sizeof knots);
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_DOMAIN, hyst_everett_grid_knots(x, y, 4u, 1.0, 1.0 + 0x1p-50, 4u,
+                                                                   knots, fit_work, 64u));
+    TEST_ASSERT_EQUAL_MEMORY(keep, knots, sizeof knots);
+}
+
 #ifndef HYST_USE_DOUBLE
 /* The integer-code variant runs the same curve: bit for bit the f32
  * variant's outputs on codes. */
@@ -517,6 +722,12 @@ int main(void)
     RUN_TEST(test_deadband_bound_holds);
     RUN_TEST(test_identification_recovers_the_grid);
     RUN_TEST(test_compensator_inverts_the_model);
+    RUN_TEST(test_compensator_reaches_lo_past_an_empty_first_cell);
+    RUN_TEST(test_compensator_drive_stays_on_the_domain);
+    RUN_TEST(test_compensator_keeps_the_plants_memory_at_a_setpoint);
+    RUN_TEST(test_densities_the_type_cannot_hold_are_refused);
+    RUN_TEST(test_fit_refuses_outputs_that_overflow);
+    RUN_TEST(test_knots_of_extreme_records);
 #ifndef HYST_USE_DOUBLE
     RUN_TEST(test_codes_run_the_grid_kind);
 #endif

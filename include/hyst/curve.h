@@ -365,7 +365,9 @@ hyst_status_t hyst_f64_curve_from_everett_(hyst_curve_t *curve, const hyst_evere
  * variant's type (HYST_ERR_BREAKPOINTS), a finite y_lo and finite weights
  * (HYST_ERR_COEFF), weights >= 0 with a positive sum (HYST_ERR_NOT_MONOTONE),
  * @p table_len >= HYST_EVERETT_GRID_TABLE_LEN(intervals) (HYST_ERR_NOSPACE),
- * every tabulated number finite in the variant's type (HYST_ERR_COEFF) and
+ * every tabulated number finite in the variant's type, and a normal number
+ * of it where it carries more than a cell's share of a rounding of the
+ * total mass (a density, a mass per unit of input) (HYST_ERR_COEFF) and
  * the rounding bound (HYST_ERR_ILL_CONDITIONED). The curve keeps a pointer
  * to @p table, which must outlive it, unchanged; it runs on
  * hyst_*_init_curve(). A sample on the fast path costs a compare and one

@@ -538,8 +538,10 @@ hyst_status_t hyst_everett_grid_fit_add(hyst_everett_grid_fit_t *fit, hyst_wide_
  *        least squares on the normal equations, y_lo free) into @p g (the
  *        knots, y_lo, the masses) and the residual RMS over the samples used.
  * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_SINGULAR (fewer than two samples);
- *         HYST_ERR_NOT_MONOTONE (every mass 0: outputs that never rise;
- *         @p g and @p rms hold the fit all the same).
+ *         HYST_ERR_COEFF (a mass, y_lo or the residual not finite: outputs
+ *         so large that the normal equations overflow); HYST_ERR_NOT_MONOTONE
+ *         (every mass 0: outputs that never rise; @p g and @p rms hold the
+ *         fit all the same). @p g and @p rms not written on another error.
  */
 hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
                                           hyst_everett_grid_t *g, hyst_wide_t *rms);
@@ -552,8 +554,10 @@ hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
  *        caller's @p work (@p work_len >= 16 bins: the knots' resolution is
  *        (hi - lo) / work_len).
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_DEGREE, HYST_ERR_DOMAIN (lo, hi
- *         not finite or lo >= hi), HYST_ERR_NOSPACE; uniform knots when the
- *         output never moves.
+ *         not finite or lo >= hi, or too close for the type to hold
+ *         intervals + 1 knots that far apart), HYST_ERR_NOSPACE; uniform
+ *         knots when the output never moves. @p knots written only on
+ *         success.
  */
 hyst_status_t hyst_everett_grid_knots(const hyst_wide_t *x, const hyst_wide_t *y, size_t n,
                                       hyst_wide_t lo, hyst_wide_t hi, unsigned intervals,
