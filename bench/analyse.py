@@ -185,7 +185,9 @@ def stack_of(build_m4, opt, root):
             if c == "__indirect_call":
                 return max([reachable(t) for t in targets[object_of[fn]]] or [0])
             return depth(c, seen | {fn})
-        memo[fn] = frame[fn] + max([callee(c) for c in edges.get(fn, ())] or [0])
+        # sorted: the memo depends on the order paths are walked, which must
+        # not depend on the interpreter's string hashing
+        memo[fn] = frame[fn] + max([callee(c) for c in sorted(edges.get(fn, ()))] or [0])
         return memo[fn]
 
     return depth(root, frozenset())
