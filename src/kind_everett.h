@@ -10,34 +10,44 @@
 #ifndef HYST_KIND_EVERETT_H
 #define HYST_KIND_EVERETT_H
 
-/* The branch's G coefficients at `anchor` from a table of the
- * curve (curve.h): coef[n - 1 - i], of w^(n - i), is row i (i + 1
- * entries), a polynomial in the anchor, by Horner's rule (lowest power
- * first, as the engine evaluates S->coef). */
+/* The order a branch's coefficients are written in: lowest power first
+ * (the forward kind's S->coef, which the engine evaluates:
+ * src/tcm_engine.h), or highest first (the compensators' own Newton
+ * evaluation, src/kind_everett_inv.h). A constant at each call site. */
+#define TCM_LOWEST_FIRST 1
+#define TCM_HIGHEST_FIRST 0
+#define TCM_COEF_AT_(n, i, lowest) ((lowest) ? (n) - 1u - (i) : (i))
+
+/* The branch's G coefficients at `anchor` from a table of the curve
+ * (curve.h): the coefficient of w^(n - i) is row i (i + 1 entries), a
+ * polynomial in the anchor, by Horner's rule; written in the order
+ * `lowest` (above). */
 HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
-                                       hyst_num_t *coef)
+                                       hyst_num_t *coef, const int lowest)
 {
     /* rows start at i (i + 1) / 2; unrolled (n <= HYST_EVERETT_MAX_DEGREE = 4,
      * the curve's check): a slow sample derives them */
     switch (n) {
     case 4u:
-        YV(coef[n - 4u]) = NUM_MULADD(
+        YV(coef[TCM_COEF_AT_(n, 3u, lowest)]) = NUM_MULADD(
             NUM_MULADD(NUM_MULADD(YV(row[6]), anchor, YV(row[7])), anchor, YV(row[8])), anchor,
             YV(row[9]));
         /* fall through */
     case 3u:
-        YV(coef[n - 3u]) =
+        YV(coef[TCM_COEF_AT_(n, 2u, lowest)]) =
             NUM_MULADD(NUM_MULADD(YV(row[3]), anchor, YV(row[4])), anchor, YV(row[5]));
         /* fall through */
-    case 2u: YV(coef[n - 2u]) = NUM_MULADD(YV(row[1]), anchor, YV(row[2])); /* fall through */
-    case 1u: YV(coef[n - 1u]) = YV(row[0]); /* fall through */
+    case 2u:
+        YV(coef[TCM_COEF_AT_(n, 1u, lowest)]) = NUM_MULADD(YV(row[1]), anchor, YV(row[2]));
+        /* fall through */
+    case 1u: YV(coef[TCM_COEF_AT_(n, 0u, lowest)]) = YV(row[0]); /* fall through */
     default: break;
     }
 }
 
 /* The branch's coefficients from the curve's rows as functions of the
  * TP's input itself (lin_x, curve.h: rows at most linear in the anchor):
- * no anchor to compute, one multiply-add each. */
+ * no anchor to compute, one multiply-add each; lowest power first. */
 HYST_INLINE void TCM_NAME(table_coefs_x)(const hyst_num_t *lin, unsigned n, TCM_Y x,
                                          hyst_num_t *coef)
 {
@@ -108,7 +118,8 @@ static TCM_NOINLINE void TCM_NAME(everett_derive)(hyst_tcm_t *S)
                                 c->u.everett.degree, YV(S->x_ctp), S->coef);
     } else {
         TCM_NAME(table_coefs)(S->moving_end == 0u ? c->u.everett.rise : c->u.everett.fall,
-                              c->u.everett.degree, TCM_NAME(input_anchor)(S), S->coef);
+                              c->u.everett.degree, TCM_NAME(input_anchor)(S), S->coef,
+                              TCM_LOWEST_FIRST);
     }
 }
 
@@ -136,7 +147,7 @@ static TCM_NOINLINE void TCM_NAME(everett_derive)(hyst_tcm_t *S)
 #define TCM_EVERETT_ROWS_(n)                                                                \
     TCM_NAME(table_coefs)(derive == TCM_DERIVE_RISE ? S->curve->u.everett.rise              \
                                                     : S->curve->u.everett.fall,             \
-                          n, TCM_NAME(input_anchor)(S), S->coef)
+                          n, TCM_NAME(input_anchor)(S), S->coef, TCM_LOWEST_FIRST)
 #define TCM_EVERETT_LINES_(n)                                                               \
     TCM_NAME(table_coefs_x)(S->curve->u.everett.lin_x[derive == TCM_DERIVE_RISE ? 0 : 1], n, \
                             YV(S->x_ctp), S->coef)

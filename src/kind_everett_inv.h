@@ -12,25 +12,21 @@
 #define TCM_SOLVE_STEPS 48u
 
 /* p(w) = w q(w) and p'(w) on the current branch, q of degree n - 1 <= 3
- * (HYST_EVERETT_MAX_DEGREE; c lowest power first), by Horner's rule
- * unrolled. */
+ * (HYST_EVERETT_MAX_DEGREE), by Horner's rule unrolled. */
 #define TCM_HORNER_D_(c, n, w, p, dp)                                        \
     do {                                                                   \
-        TCM_Y q_, dq_ = 0;                                                 \
+        TCM_Y q_ = YV((c)[0]), dq_ = 0;                                    \
         switch (n) {                                                       \
-        case 4u: q_ = YV((c)[3]); dq_ = q_;                                \
+        case 4u: dq_ = q_; q_ = NUM_MULADD(q_, (w), YV((c)[1]));           \
+            dq_ = NUM_MULADD(dq_, (w), q_);                                \
             q_ = NUM_MULADD(q_, (w), YV((c)[2]));                          \
             dq_ = NUM_MULADD(dq_, (w), q_);                                \
-            q_ = NUM_MULADD(q_, (w), YV((c)[1]));                          \
+            q_ = NUM_MULADD(q_, (w), YV((c)[3])); break;                   \
+        case 3u: dq_ = q_; q_ = NUM_MULADD(q_, (w), YV((c)[1]));           \
             dq_ = NUM_MULADD(dq_, (w), q_);                                \
-            q_ = NUM_MULADD(q_, (w), YV((c)[0])); break;                   \
-        case 3u: q_ = YV((c)[2]); dq_ = q_;                                \
-            q_ = NUM_MULADD(q_, (w), YV((c)[1]));                          \
-            dq_ = NUM_MULADD(dq_, (w), q_);                                \
-            q_ = NUM_MULADD(q_, (w), YV((c)[0])); break;                   \
-        case 2u: q_ = YV((c)[1]); dq_ = q_;                                \
-            q_ = NUM_MULADD(q_, (w), YV((c)[0])); break;                   \
-        default: q_ = YV((c)[0]); break;                                   \
+            q_ = NUM_MULADD(q_, (w), YV((c)[2])); break;                   \
+        case 2u: dq_ = q_; q_ = NUM_MULADD(q_, (w), YV((c)[1])); break;    \
+        default: break;                                                    \
         }                                                                  \
         (p) = q_ * (w);                                                    \
         (dp) = NUM_MULADD((w), dq_, q_);                                   \
@@ -127,13 +123,13 @@ static void TCM_NAME(newton_state)(const hyst_tcm_t *S, hyst_num_t *coef, TCM_Y 
     const TCM_Y v_end = NUM_NAME(abs)(TCM_R(x_end) - YV(S->x_ctp)) * YV(S->unit);
     unsigned i;
     TCM_NAME(table_coefs)(up ? c->u.everett.rise : c->u.everett.fall, n,
-                          TCM_NAME(drive_anchor)(S, YV(S->y_ctp)), coef);
+                          TCM_NAME(drive_anchor)(S, YV(S->y_ctp)), coef, TCM_HIGHEST_FIRST);
     *w_end = NUM_NAME(abs)(y_end - YV(S->y_ctp)) * YV(c->u.everett.inv_span);
     *secant = v_end > 0 ? *w_end / v_end : 0;
     *curv = 0; /* |p''| <= sum k (k - 1) |a_k| on w in [0, 1] */
     for (i = 0u; i + 2u <= n; ++i) {
-        const unsigned k = n - i; /* coef[k - 1] multiplies w^k in p */
-        *curv += (TCM_Y)(k * (k - 1u)) * NUM_NAME(abs)(YV(coef[k - 1u]));
+        const unsigned k = n - i; /* coef[i] multiplies w^k in p */
+        *curv += (TCM_Y)(k * (k - 1u)) * NUM_NAME(abs)(YV(coef[i]));
     }
 }
 

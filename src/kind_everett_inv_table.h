@@ -67,7 +67,7 @@ static TCM_NOINLINE TCM_Y TCM_NAME(blend_g)(const hyst_tcm_t *S, TCM_Y u)
 /* Horner's rule over n = 1..HYST_EVERETT_MAX_DEGREE coefficients a[0]
  * (highest power) .. a[n - 1] at x, unrolled (a slow sample cannot afford
  * the loop): the numbers of the loop acc = acc x + a[i] from acc = 0, and
- * of NUM_NAME(horner) before its last product (a curve's table, curve.h). */
+ * of NUM_NAME(horner) before its last product. */
 HYST_INLINE TCM_Y TCM_NAME(poly_at)(const hyst_num_t *a, unsigned n, TCM_Y x)
 {
     switch (n) {
@@ -80,19 +80,28 @@ HYST_INLINE TCM_Y TCM_NAME(poly_at)(const hyst_num_t *a, unsigned n, TCM_Y x)
 
 #if TCM_REAL_INPUT
 HYST_INLINE void TCM_NAME(table_coefs)(const hyst_num_t *row, unsigned n, TCM_Y anchor,
-                                       hyst_num_t *coef);
+                                       hyst_num_t *coef, const int lowest);
 
 /* p(w) = w q(w) on the branch that `row`'s table gives at `anchor`:
- * table_coefs() (lowest power first), then Horner's rule (the engine's
- * cases' numbers), in one switch on the degree n. */
+ * table_coefs(), then Horner's rule (NUM_NAME(horner)'s numbers), in one
+ * switch on the degree n. */
 HYST_INLINE TCM_Y TCM_NAME(branch_p)(const hyst_num_t *row, unsigned n, TCM_Y anchor, TCM_Y w)
 {
     hyst_num_t c[HYST_EVERETT_MAX_DEGREE];
     TCM_Y q;
     switch (n) {
-    case 4u: TCM_NAME(table_coefs)(row, 4u, anchor, c); q = TCM_HORNER4_(c, w); break;
-    case 3u: TCM_NAME(table_coefs)(row, 3u, anchor, c); q = TCM_HORNER3_(c, w); break;
-    case 2u: TCM_NAME(table_coefs)(row, 2u, anchor, c); q = TCM_HORNER2_(c, w); break;
+    case 4u:
+        TCM_NAME(table_coefs)(row, 4u, anchor, c, TCM_HIGHEST_FIRST);
+        q = TCM_NAME(poly_at)(c, 4u, w);
+        break;
+    case 3u:
+        TCM_NAME(table_coefs)(row, 3u, anchor, c, TCM_HIGHEST_FIRST);
+        q = TCM_NAME(poly_at)(c, 3u, w);
+        break;
+    case 2u:
+        TCM_NAME(table_coefs)(row, 2u, anchor, c, TCM_HIGHEST_FIRST);
+        q = TCM_NAME(poly_at)(c, 2u, w);
+        break;
     default: q = YV(row[0]); break;
     }
     return NUM_MUL_G(q, w);
