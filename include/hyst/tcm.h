@@ -399,12 +399,13 @@ hyst_status_t hyst_f64_set_deadband(hyst_tcm_t *S, double width);
  *        deadband: the sum of the misses of the full-array merges whose
  *        outer turning point is still stored, plus the bound of the open
  *        deadband excursion (docs/memory.md; rounding not included).
- *        rounding_bound: for polynomial curves, the bound on the rounding
+ *        rounding_bound: the bound the curve's kind states on the rounding
  *        error of one branch evaluation in the variant's type (curve.h,
- *        "rounding": at most HYST_MAX_ROUNDING of the output range, checked
- *        at init); an output after d stored turning points differs from
- *        exact arithmetic on the same inputs by at most (d + 1) times it.
- *        0 for other curve kinds.
+ *        each constructor's "rounding"; a polynomial's at most
+ *        HYST_MAX_ROUNDING of the output range, checked at init); an output
+ *        after d stored turning points differs from exact arithmetic on the
+ *        same inputs by at most (d + 1) times it. 0 for a kind that states
+ *        none.
  */
 /**@{*/
 float hyst_f32_output(const hyst_tcm_t *S);
