@@ -48,16 +48,7 @@
 
 static const double table_tol = HYST_INV_TABLE_TOL;
 
-/* The library's build with a tolerance no interval misses: every interval
- * keeps the cubic pieces its rows are given, none solved. */
-#undef HYST_INV_TABLE_TOL
-#define HYST_INV_TABLE_TOL 1e6
-#define hyst_curve_everett_inverse_table_ build_keeping_pieces
-#define hyst_curve_everett_inverse_table_const_ const_keeping_pieces
-#include "../src/hyst_everett_inv.c"
-#undef hyst_curve_everett_inverse_table_
-#undef hyst_curve_everett_inverse_table_const_
-#undef HYST_INV_TABLE_TOL
+#include "everett_inv_keeping_pieces.h"
 
 #define MAX_CAP 40u
 #define MAX_SAMPLES 512u

@@ -13,17 +13,7 @@
 #include <math.h>
 #include <string.h>
 
-/* The library's build with a tolerance no interval misses: every interval
- * keeps the cubic pieces its rows are given, none solved (what a table
- * whose solved intervals were given back their pieces holds). */
-#undef HYST_INV_TABLE_TOL
-#define HYST_INV_TABLE_TOL 1e6
-#define hyst_curve_everett_inverse_table_ build_keeping_pieces
-#define hyst_curve_everett_inverse_table_const_ const_keeping_pieces
-#include "../src/hyst_everett_inv.c"
-#undef hyst_curve_everett_inverse_table_
-#undef hyst_curve_everett_inverse_table_const_
-#undef HYST_INV_TABLE_TOL
+#include "everett_inv_keeping_pieces.h"
 
 #define CAP 64
 #define SAMPLES 3000L

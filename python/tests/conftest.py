@@ -85,3 +85,17 @@ def same_bits(a, b):
         return False
     u = {4: np.uint32, 8: np.uint64}[a.dtype.itemsize]
     return bool(np.array_equal(a.view(u), b.view(u)))
+
+
+def run_cli(c_build, *args, ok=True, stdin=None):
+    """`hyst ARGS...` (each argument str()'d): its CompletedProcess, the exit
+    status asserted 0 (ok=False: non-zero)."""
+    r = subprocess.run([str(c_build["cli"]), *map(str, args)], input=stdin, capture_output=True,
+                       text=True)
+    assert (r.returncode == 0) == ok, r.stderr
+    return r
+
+
+def numbers(text):
+    """The numbers of a tool's output, as a float64 array."""
+    return np.array([float(v) for v in text.split()])

@@ -6,13 +6,12 @@ term run bit for bit as `hyst sim --model` and `hyst inv --model`; the
 header's creep block is the tool's; fit() chooses a creep term as `hyst fit
 --creep` does; Creep is the library's lag."""
 import math
-import subprocess
 
 import numpy as np
 import pytest
 
 import hyst
-from conftest import PAPER_F0, signal
+from conftest import PAPER_F0, numbers, run_cli, signal
 
 # tests/cli/creep.sh's plant: Eq. 20 on 0..40 V, delay 3, one lag of 2000
 # samples weighing 0.05 um/V
@@ -32,16 +31,6 @@ EV_CREEP = {"kind": "everett", "lo": 0.0, "hi": 40.0, "y_lo": 0.5, "degree": 3,
             "creep_tau": [300.0, 5000.0], "creep_weight": [0.02, -0.01]}
 POLY_CREEP = {"kind": "poly", "lo": 5.0, "hi": 40.0, "coeffs": PAPER_F0, "delay": 0,
               "creep_tau": [1.0, 50.0, 700.5, 1e6], "creep_weight": [0.01, -0.02, 0.03, 0.5]}
-
-
-def run_cli(c_build, *args, ok=True):
-    r = subprocess.run([str(c_build["cli"]), *map(str, args)], capture_output=True, text=True)
-    assert (r.returncode == 0) == ok, r.stderr
-    return r
-
-
-def numbers(text):
-    return np.array([float(v) for v in text.split()])
 
 
 def lags(u, x_rest, tau, weight):
@@ -159,9 +148,7 @@ def test_refusals_name_file_line_and_field_as_the_cli(c_build, tmp_path, after, 
         hyst.load_model(path)
     assert str(err.value) == f"{path}{message}"
     # the tool refuses it with the same words (one reader: tools/model_text)
-    r = subprocess.run([str(c_build["cli"]), "sim", "--model", str(path)], input="0.5\n",
-                       capture_output=True, text=True)
-    assert r.returncode != 0
+    r = run_cli(c_build, "sim", "--model", path, ok=False, stdin="0.5\n")
     assert r.stderr.strip() == f"hyst sim: {path}{message}"
 
 

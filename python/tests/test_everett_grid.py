@@ -3,13 +3,12 @@
 everett_grid) in the package: a file read by the one reader in C, its model
 and its compensator bit for bit as `hyst sim --model` and `hyst inv
 --model`; save_model and header_text write it as the tool does."""
-import subprocess
 
 import numpy as np
 import pytest
 
 import hyst
-from conftest import signal
+from conftest import numbers, run_cli, signal
 
 # tests/cli/grid.sh's plant: a near step between 1 and 1.4 of 0..3
 PLANT = """hyst-model-text 1
@@ -22,16 +21,6 @@ weights 1 0.5 8 0.2 0.5 1
 """
 # with a delay, a creep term and an identified range
 PLANT_CREEP = PLANT + "delay 2\nidentified 0.5 2.5\ncreep_tau 300\ncreep_weight 0.05\n"
-
-
-def run_cli(c_build, *args, ok=True):
-    r = subprocess.run([str(c_build["cli"]), *map(str, args)], capture_output=True, text=True)
-    assert (r.returncode == 0) == ok, r.stderr
-    return r
-
-
-def numbers(text):
-    return np.array([float(v) for v in text.split()])
 
 
 def loops():

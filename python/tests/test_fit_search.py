@@ -4,11 +4,11 @@ the tool's own code (fit_search()): scaled to the drive's period beyond
 MAX_DELAY samples, then a fraction of a sample; the model fitted on the
 drive interpolated by it, saved with that delay."""
 import re
-import subprocess
 
 import numpy as np
 
 import hyst
+from conftest import run_cli
 
 PLANT = {"kind": "everett", "lo": 0.0, "hi": 40.0, "y_lo": 0.0, "degree": 2,
          "terms": [3.0, -0.5, 1.0]}
@@ -34,10 +34,7 @@ def cli_fit(c_build, tmp_path, x, y, *opts):
     """`hyst fit OPTS --save cli.hyst` on the record (x, y): its output."""
     rec = tmp_path / "rec.txt"
     rec.write_text("".join(f"{a:.17g} {b:.17g}\n" for a, b in zip(x, y)))
-    r = subprocess.run([str(c_build["cli"]), "fit", *opts, "--save", str(tmp_path / "cli.hyst"),
-                        str(rec)], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    return r
+    return run_cli(c_build, "fit", *opts, "--save", tmp_path / "cli.hyst", rec)
 
 
 def test_fit_searches_the_delays_as_the_tool(c_build, tmp_path):

@@ -5,22 +5,15 @@
 the tool's choice takes on the tool's widened domain and records the range
 it was identified on."""
 import re
-import subprocess
 
 import numpy as np
 
 import hyst
+from conftest import run_cli
 
 # tests/cli/fidelity.sh's asymmetric plant
 PLANT = {"kind": "everett", "lo": 0.0, "hi": 40.0, "y_lo": 0.0, "degree": 2,
          "terms": [3.0, -0.5, 1.0]}
-
-
-def run_cli(c_build, *args, stdin=None):
-    r = subprocess.run([str(c_build["cli"]), *map(str, args)], input=stdin, capture_output=True,
-                       text=True)
-    assert r.returncode == 0, r.stderr
-    return r
 
 
 def triangles():

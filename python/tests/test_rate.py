@@ -3,13 +3,12 @@
 with rate_tau and rate_weight is read and run as `hyst sim --model` and
 `hyst inv --model` run it, bit for bit; the term is the library's low-pass
 of the change of the input as the model took it."""
-import subprocess
 
 import numpy as np
 import pytest
 
 import hyst
-from conftest import PAPER_F0, signal
+from conftest import PAPER_F0, numbers, run_cli, signal
 
 # an asymmetric model with a creep lag and a rate term, and a poly on a
 # domain that does not start at 0 with a rate term alone
@@ -29,12 +28,6 @@ rate_weight 0.3
 POLY_RATE = ("hyst-model-text 1\nkind poly\nlo 5\nhi 40\n"
              "coeffs " + " ".join("%.17g" % c for c in PAPER_F0) + "\n"
              "rate_tau 1\nrate_weight -0.05\n")
-
-
-def run_cli(c_build, *args):
-    r = subprocess.run([str(c_build["cli"]), *map(str, args)], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    return np.array([float(v) for v in r.stdout.split()])
 
 
 def low_pass(u, x_rest, tau, weight):
@@ -58,7 +51,7 @@ def test_sim_and_inv_match_the_cli_bit_for_bit(c_build, tmp_path, text):
     x = signal(5000, desc["lo"], desc["hi"], seed=11)  # clamped samples included
     inp = tmp_path / "x.txt"
     np.savetxt(inp, x, fmt="%.17g")
-    cli = run_cli(c_build, "sim", "--model", path, "--digits", 17, inp)
+    cli = numbers(run_cli(c_build, "sim", "--model", path, "--digits", 17, inp).stdout)
     y = hyst.model_from(desc).process(x)
     assert len(cli) == len(x) and np.array_equal(cli[d:], y[:len(y) - d])
     # the rate term is there: without it the model differs by the low-pass
@@ -72,7 +65,7 @@ def test_sim_and_inv_match_the_cli_bit_for_bit(c_build, tmp_path, text):
     # the compensator, as inv --model; sim's outputs give back the inputs
     out = tmp_path / "y.txt"
     np.savetxt(out, y, fmt="%.17g")
-    drive_cli = run_cli(c_build, "inv", "--model", path, "--digits", 17, out)
+    drive_cli = numbers(run_cli(c_build, "inv", "--model", path, "--digits", 17, out).stdout)
     comp = hyst.compensator_from(desc)
     drive = comp.process(y)
     assert np.array_equal(drive_cli, drive)
@@ -144,8 +137,7 @@ def test_written_as_the_cli_writes_it(c_build, tmp_path, text):
     lines = again.read_text().splitlines()
     assert lines[-2:] == ["rate_tau %.17g" % desc["rate_tau"],
                           "rate_weight %.17g" % desc["rate_weight"]]
-    subprocess.run([str(c_build["cli"]), "header", "--model", str(path), "--dir", str(tmp_path),
-                    "mdl"], check=True, capture_output=True)
+    run_cli(c_build, "header", "--model", path, "--dir", tmp_path, "mdl")
     cli_text = (tmp_path / "mdl.h").read_text()
     mine = hyst.header_text("mdl", **desc)
     block = mine[mine.index("/* rate:"):mine.index(";", mine.index("mdl_rate_weight")) + 1]
@@ -165,9 +157,7 @@ def test_fit_chooses_the_rate_term_as_the_cli(c_build, tmp_path, rate):
     y = hyst.model_from(hyst.load_model(plant)).process(x)
     rec = tmp_path / "rec.txt"
     rec.write_text("".join(f"{a:.17g} {b:.17g}\n" for a, b in zip(x, y)))
-    r = subprocess.run([str(c_build["cli"]), "fit", "--rate", rate, "--save",
-                        str(tmp_path / "cli.hyst"), str(rec)], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
+    run_cli(c_build, "fit", "--rate", rate, "--save", tmp_path / "cli.hyst", rec)
     f = hyst.fit(x, y, rate=rate if rate == "auto" else float(rate))
     f.save(tmp_path / "py.hyst")
     assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
