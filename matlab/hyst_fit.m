@@ -185,9 +185,6 @@ function f = hyst_fit(x, y, varargin)
   if numel(x) <= skip + delay || ~usable(f)
     return;
   end
-  if creep_tau < 0 && ~rate.with_rate
-    return;
-  end
   % the creep term scored by hold-out as hyst fit scores it (the gateway's
   % score: fit_score() of tools/cli/fit_select.c, the hold-out splits)
   c = [];

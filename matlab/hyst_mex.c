@@ -318,6 +318,18 @@ static void creep_arg(model_arg_t *m, const mxArray *tau, const mxArray *weight)
     }
 }
 
+/* The optional tail of a model's arguments, prhs[0 .. n): none, the creep
+ * term's ctau, cweight, or those and the rate term's rtau, rweight. */
+static void terms_args(model_arg_t *m, const mxArray *const *prhs, int n)
+{
+    if (n >= 2) {
+        creep_arg(m, prhs[0], prhs[1]);
+    }
+    if (n == 4) {
+        rate_arg(m, prhs[2], prhs[3]);
+    }
+}
+
 /* Numbers of the table m's compensator needs (0: none), counted in double
  * where size_t could wrap (rows and intervals at their largest need 2^35). */
 static double table_numbers(const model_arg_t *m)
@@ -580,12 +592,7 @@ static void run_poly(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxA
     m.inverse = inverse;
     m.intervals = inverse ? count(prhs[6], "intervals", 0.0, INTERVALS_MAX) : 0u;
     m.f0 = poly_arg(prhs[0], prhs[1], prhs[2]);
-    if (nrhs >= args + 2) {
-        creep_arg(&m, prhs[args], prhs[args + 1]);
-    }
-    if (nrhs == args + 4) {
-        rate_arg(&m, prhs[args + 2], prhs[args + 3]);
-    }
+    terms_args(&m, prhs + args, nrhs - args);
     run_tcm(&m, nlhs, plhs, prhs + 3);
 }
 
@@ -609,12 +616,7 @@ static void run_everett(int inverse, int nlhs, mxArray *plhs[], int nrhs, const 
         m.rows = count(prhs[9], "rows", ROWS_MIN, ROWS_MAX);
     }
     m.e = everett_arg(prhs, inverse ? "hyst_inv" : "hyst_sim");
-    if (nrhs >= args + 2) {
-        creep_arg(&m, prhs[args], prhs[args + 1]);
-    }
-    if (nrhs == args + 4) {
-        rate_arg(&m, prhs[args + 2], prhs[args + 3]);
-    }
+    terms_args(&m, prhs + args, nrhs - args);
     run_tcm(&m, nlhs, plhs, prhs + 5);
 }
 
@@ -656,12 +658,7 @@ static void run_grid(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxA
     m.grid = 1;
     m.inverse = inverse;
     grid_arg(&m.g, prhs);
-    if (nrhs >= 8) {
-        creep_arg(&m, prhs[6], prhs[7]);
-    }
-    if (nrhs == 10) {
-        rate_arg(&m, prhs[8], prhs[9]);
-    }
+    terms_args(&m, prhs + 6, nrhs - 6);
     run_tcm(&m, nlhs, plhs, prhs + 3);
 }
 

@@ -627,7 +627,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
         if g["x"] is not None:
             x = np.asarray(g["x"], dtype=np.float64)
             fraction = g["delay_fraction"]
-    if degree is not None and cands is None and creep_tau >= 0 and len(x) > skip + int(delay):
+    if degree is not None and creep_tau >= 0 and len(x) > skip + int(delay):
         # the model as given, its creep term scored by the same hold-out
         k = None if (kind or "poly") in ("poly", "everett_grid") else (
             int(degree) - 1 if t_degree is None else int(t_degree))

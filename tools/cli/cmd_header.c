@@ -75,7 +75,7 @@ int cmd_header(int argc, char **argv)
     unsigned long intervals = 0ul, rows = 0ul; /* 0: not given */
     unsigned long code_lo = 0ul, code_hi = 0ul;
     hyst_status_t st = HYST_OK;
-    int kind, over, compensator = 0, sealed = 0, codes = 0, failed;
+    int kind, over, compensator = 0, sealed = 0, codes = 0, failed, table;
     cli_args_init(&a, "header", argc, argv);
     while ((kind = cli_args_next(&a, &pos)) != CLI_END) {
         if (kind < 0) {
@@ -135,18 +135,19 @@ int cmd_header(int argc, char **argv)
         cli_model_read(a.cmd, model, &m) != 0 || cli_replace_check(&h, a.cmd, "header", path) != 0) {
         return 1;
     }
-    if (compensator && intervals == 0ul && m.kind != CLI_MODEL_GRID) {
-        intervals = CLI_TABLE_DEFAULT;
-    }
     if (m.kind == CLI_MODEL_GRID && (sealed || intervals != 0ul || rows != 0ul)) {
         return cli_fail(a.cmd, "model file %s: kind everett_grid has no %s (its compensator "
                                "solves each branch in closed form)", cli_file_name(model),
                         sealed ? "sealed curve" : "compensator table");
     }
+    table = compensator && m.kind != CLI_MODEL_GRID; /* a grid's compensator needs none */
+    if (table && intervals == 0ul) {
+        intervals = CLI_TABLE_DEFAULT;
+    }
     if (cli_table_sizes(a.cmd, m.kind == CLI_MODEL_EVERETT, &intervals, &rows) != 0) {
         return 1;
     }
-    if (compensator && m.kind != CLI_MODEL_GRID) {
+    if (table) {
         size += model_text_header_table_size(&m, (size_t)rows, (size_t)intervals);
     }
     if ((text = (char *)malloc(size)) == NULL) {
@@ -194,7 +195,7 @@ int cmd_header(int argc, char **argv)
                           cli_model_delay(&m));
     }
     over |= cli_header_open(text, size, &len, name, &m);
-    if (over == 0 && compensator && m.kind != CLI_MODEL_GRID &&
+    if (over == 0 && table &&
         model_text_header_table(text, size, &len, name, &m, (size_t)rows, (size_t)intervals,
                                 sealed, &st) != 0) {
         free(text);
