@@ -17,12 +17,6 @@
 #define WINDOW 4000L   /* equations of a fit */
 #define BOUND_SAMPLES 100000L
 
-#ifdef HYST_USE_DOUBLE
-#define REAL_INF ((hyst_real_t)HUGE_VAL)
-#else
-#define REAL_INF ((hyst_real_t)HUGE_VALF)
-#endif
-
 static hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
 static hyst_real_t il[CAP], jl[CAP], ir[CAP], jr[CAP];
 static hyst_real_t drive[SETTLE + WINDOW];
@@ -69,23 +63,6 @@ static double ref_step(ref_creep_t *r, double x)
 
 /* ---- Helpers ---- */
 
-static double dabs(double v) { return v < 0 ? -v : v; }
-
-/* A random walk on [lo, hi], steps uniform in +-2 % of the span. */
-static hyst_real_t walk(double *x, double lo, double hi)
-{
-    const double next = *x + rng_range(&rng, -0.02, 0.02) * (hi - lo);
-    *x = next < lo ? lo : next > hi ? hi : next;
-    return (hyst_real_t)*x;
-}
-
-/* ulp(m) of creep.h: the build's real type's spacing at m >= 0. */
-static double ulp_at(double m)
-{
-    const hyst_real_t v = (hyst_real_t)m;
-    return (double)(NEXT(v, REAL_INF) - v);
-}
-
 /* The bound on c of creep.h: sum_k |w_k| (tau_k + 4 n + 12) ulp(M) / 2. */
 static double c_bound(size_t n, const hyst_wide_t *tau, const hyst_wide_t *w, double m)
 {
@@ -94,15 +71,8 @@ static double c_bound(size_t n, const hyst_wide_t *tau, const hyst_wide_t *w, do
     for (k = 0u; k < n; ++k) {
         sum += dabs((double)w[k]) * ((double)tau[k] + 4.0 * (double)n + 12.0);
     }
-    return sum * ulp_at(m) / 2.0;
+    return sum * real_ulp(m) / 2.0;
 }
-
-/* The call returns `code` and leaves *obj as its copy *copy. */
-#define UNCHANGED(copy, obj, code, call)                          \
-    do {                                                          \
-        TEST_ASSERT_EQUAL_INT((code), (call));                    \
-        TEST_ASSERT_EQUAL_MEMORY((copy), (obj), sizeof *(obj));   \
-    } while (0)
 
 /* ---- The instance ---- */
 
@@ -182,7 +152,7 @@ static void test_matches_the_double_reference(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&K, 3u, tau, w, x_rest));
     ref_init(&ref, 3u, tau, w, x_rest);
     for (i = 0; i < 20000L; ++i) {
-        const hyst_real_t xi = walk(&x, lo, hi);
+        const hyst_real_t xi = rng_walk(&rng, &x, lo, hi);
         const double c = (double)hyst_creep_step(&K, xi);
         const double err = dabs(c - ref_step(&ref, (double)xi));
         worst = err > worst ? err : worst;
@@ -204,7 +174,7 @@ static void test_state_error_within_the_stated_bound(void)
     for (d = 0; d < 2; ++d) {
         const double lo = span[d][0], hi = span[d][1];
         const double m = dabs(lo) > dabs(hi) ? dabs(lo) : dabs(hi);
-        const double bound = (5000.0 + 10.0) * ulp_at(m) / 2.0, bound2 = c_bound(2u, tau2, w2, m);
+        const double bound = (5000.0 + 10.0) * real_ulp(m) / 2.0, bound2 = c_bound(2u, tau2, w2, m);
         ref_creep_t r1, r2;
         double x = lo, worst = 0.0, worst2 = 0.0;
         long i;
@@ -213,7 +183,7 @@ static void test_state_error_within_the_stated_bound(void)
         ref_init(&r1, 1u, tau1, one, lo);
         ref_init(&r2, 2u, tau2, w2, lo);
         for (i = 0; i < BOUND_SAMPLES; ++i) {
-            const hyst_real_t xi = walk(&x, lo, hi);
+            const hyst_real_t xi = rng_walk(&rng, &x, lo, hi);
             const double e1 = dabs((double)hyst_creep_step(&K, xi) - ref_step(&r1, (double)xi));
             const double e2 = dabs((double)hyst_creep_step(&L, xi) - ref_step(&r2, (double)xi));
             worst = e1 > worst ? e1 : worst;
@@ -235,7 +205,7 @@ static void test_reset(void)
     long i;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&K, 2u, tau, w, 0.25));
     for (i = 0; i < 100; ++i) {
-        (void)hyst_creep_step(&K, walk(&x, -1.0, 1.0));
+        (void)hyst_creep_step(&K, rng_walk(&rng, &x, -1.0, 1.0));
     }
     (void)hyst_creep_step(&K, (hyst_real_t)NAN);
     TEST_ASSERT_EQUAL_UINT(HYST_EVENT_NONFINITE, hyst_creep_events(&K));
@@ -254,7 +224,7 @@ static void test_reset(void)
     TEST_ASSERT_EQUAL_MEMORY(&L, &K, sizeof K);
     TEST_ASSERT_TRUE(hyst_creep_output(&K) == (hyst_real_t)(2.5 * 0.75));
     for (i = 0; i < 100; ++i) {
-        const hyst_real_t xi = walk(&x, -1.0, 1.0);
+        const hyst_real_t xi = rng_walk(&rng, &x, -1.0, 1.0);
         TEST_ASSERT_TRUE(hyst_creep_step(&K, xi) == hyst_creep_step(&L, xi));
     }
 }
@@ -313,7 +283,7 @@ static void test_nonfinite_sample_leaves_the_state(void)
     long i;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&K, 2u, tau, w, 0.0));
     for (i = 0; i < 50; ++i) {
-        (void)hyst_creep_step(&K, walk(&x, -1.0, 1.0));
+        (void)hyst_creep_step(&K, rng_walk(&rng, &x, -1.0, 1.0));
     }
     for (b = 0; b < 3; ++b) {
         hyst_creep_t copy = K;
@@ -343,7 +313,7 @@ static void test_strictly_causal(void)
     long i;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_init(&K, 3u, tau, w, 0.0));
     for (i = 0; i < 2000; ++i) {
-        const hyst_real_t xi = walk(&x, -1.0, 1.0), before = hyst_creep_output(&K);
+        const hyst_real_t xi = rng_walk(&rng, &x, -1.0, 1.0), before = hyst_creep_output(&K);
         hyst_real_t a, b;
         L = K;
         a = hyst_creep_step(&K, xi);
@@ -369,7 +339,7 @@ static void test_compensation_round_trip(void)
     range = y_hi - y_lo;
     w[0] = 0.02 * range / 40.0; /* creep up to 5 % of the range at 40 V */
     w[1] = 0.03 * range / 40.0;
-    tol = TOL_OF_RANGE + 8.0 * ulp_at(dabs(y_hi) > dabs(y_lo) ? dabs(y_hi) : dabs(y_lo)) / range;
+    tol = TOL_OF_RANGE + 8.0 * real_ulp(dabs(y_hi) > dabs(y_lo) ? dabs(y_hi) : dabs(y_lo)) / range;
     for (kind = 0; kind < SIG_KINDS; ++kind) {
         static hyst_real_t desired[20000];
         double worst = 0.0, creep_max = 0.0;
@@ -407,7 +377,7 @@ static void fit_drive(void)
     double x = -1.0;
     long i;
     for (i = 0; i < SETTLE + WINDOW; ++i) {
-        drive[i] = walk(&x, -1.0, 1.0);
+        drive[i] = rng_walk(&rng, &x, -1.0, 1.0);
     }
 }
 
@@ -540,7 +510,7 @@ static void test_fit_singular_cases(void)
     assert_singular("no equations");
     for (i = 0; i < 2; ++i) {
         TEST_ASSERT_EQUAL_INT(HYST_OK,
-                              hyst_creep_fit_add(&F, walk(&x, -1.0, 1.0), 0.1 * (double)i));
+                              hyst_creep_fit_add(&F, rng_walk(&rng, &x, -1.0, 1.0), 0.1 * (double)i));
     }
     assert_singular("two equations, three unknowns");
     /* a drive that stays where the lags rest: they never move */
@@ -553,7 +523,7 @@ static void test_fit_singular_cases(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_fit_init(&F, 2u, same, 0.0));
     for (i = 0; i < 500; ++i) {
         TEST_ASSERT_EQUAL_INT(HYST_OK,
-                              hyst_creep_fit_add(&F, walk(&x, -1.0, 1.0), rng_gauss(&rng)));
+                              hyst_creep_fit_add(&F, rng_walk(&rng, &x, -1.0, 1.0), rng_gauss(&rng)));
     }
     assert_singular("equal taus");
     /* a constant drive away from rest is not singular: one lag's step response */
@@ -589,7 +559,7 @@ static void test_fit_refuses_bad_input(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_creep_fit_init(&F, 2u, tau, 0.0));
     for (i = 0; i < 100; ++i) {
         TEST_ASSERT_EQUAL_INT(HYST_OK,
-                              hyst_creep_fit_add(&F, walk(&x, -1.0, 1.0), 0.01 * (double)i));
+                              hyst_creep_fit_add(&F, rng_walk(&rng, &x, -1.0, 1.0), 0.01 * (double)i));
     }
     before = F;
     UNCHANGED(&before, &F, HYST_ERR_NONFINITE, hyst_creep_fit_add(&F, (hyst_wide_t)NAN, 0.0));
@@ -620,7 +590,7 @@ static void test_fit_holdout_scores_the_rest(void)
     long k;
     ref_init(&ref, 1u, &tau, &w, 0.0);
     for (k = 0; k < LEN; ++k) {
-        u[k] = (hyst_wide_t)walk(&x, 0.0, 1.0);
+        u[k] = (hyst_wide_t)rng_walk(&rng, &x, 0.0, 1.0);
         r[k] = (hyst_wide_t)(ref_step(&ref, (double)u[k]) - 0.2);
     }
     r[17] = (hyst_wide_t)NAN; /* missing: the lag goes on */

@@ -32,8 +32,6 @@ static hyst_curve_t Cinv; /* compensators' curves: kept by their instances */
 void setUp(void) { rng_seed(&rng, 777u); }
 void tearDown(void) {}
 
-static double dabs(double v) { return v < 0 ? -v : v; }
-
 /* g of a polynomial-kind curve, in double, from its coefficients. */
 static double unit_g(const hyst_curve_t *c, double u)
 {

@@ -44,8 +44,6 @@ static const hyst_poly_t piezo_fit = {3u, HYST_REAL_C(0.0), HYST_REAL_C(3.6),
 void setUp(void) { rng_seed(&rng, 4242u); }
 void tearDown(void) {}
 
-static double dabs(double v) { return v < 0 ? -v : v; }
-
 /* G of the forward curve, in double, from the coefficients the samples use. */
 static double fwd_g(const hyst_curve_poly_t *p, double u)
 {

@@ -51,8 +51,6 @@ static hyst_status_t init_comp(const hyst_poly_t *f0, uint_least32_t lo, uint_le
                                        cx[1], cy[1], cap);
 }
 
-static double dabs(double v) { return v < 0 ? -v : v; }
-
 /* A drive (drive units) as an input of f0 (its domain). */
 static double drive_real(const hyst_poly_t *f0, hyst_q31_t d)
 {

@@ -15,12 +15,6 @@
 #define CAP 256
 #define BOUND_SAMPLES 100000L
 
-#ifdef HYST_USE_DOUBLE
-#define REAL_INF ((hyst_real_t)HUGE_VAL)
-#else
-#define REAL_INF ((hyst_real_t)HUGE_VALF)
-#endif
-
 static hyst_real_t xl[CAP], yl[CAP], xr[CAP], yr[CAP];
 static hyst_real_t il[CAP], jl[CAP], ir[CAP], jr[CAP];
 static hyst_rate_t R, Q;
@@ -53,29 +47,6 @@ static double ref_step(ref_rate_t *r, double x)
     r->p = x;
     return out;
 }
-
-static double dabs(double v) { return v < 0 ? -v : v; }
-
-/* A random walk on [lo, hi], steps uniform in +-2 % of the span. */
-static hyst_real_t walk(double *x, double lo, double hi)
-{
-    const double next = *x + rng_range(&rng, -0.02, 0.02) * (hi - lo);
-    *x = next < lo ? lo : next > hi ? hi : next;
-    return (hyst_real_t)*x;
-}
-
-/* The build's real type's spacing at m >= 0. */
-static double ulp_at(double m)
-{
-    const hyst_real_t v = (hyst_real_t)m;
-    return (double)(NEXT(v, REAL_INF) - v);
-}
-
-#define UNCHANGED(copy, obj, code, call)                        \
-    do {                                                        \
-        TEST_ASSERT_EQUAL_INT((code), (call));                  \
-        TEST_ASSERT_EQUAL_MEMORY((copy), (obj), sizeof *(obj)); \
-    } while (0)
 
 static void test_init_refuses_each_bad_argument(void)
 {
@@ -134,14 +105,14 @@ static void test_matches_the_double_reference_within_the_bound(void)
         for (d = 0; d < 2; ++d) {
             const double lo = span[d][0], hi = span[d][1], w = -1.75;
             const double m = dabs(lo) > dabs(hi) ? dabs(lo) : dabs(hi);
-            const double bound = dabs(w) * (taus[t] + 12.0) * ulp_at(2.0 * m) / 2.0;
+            const double bound = dabs(w) * (taus[t] + 12.0) * real_ulp(2.0 * m) / 2.0;
             ref_rate_t ref;
             double x = lo, worst = 0.0, largest = 0.0;
             long i;
             TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&R, taus[t], w, lo));
             ref_init(&ref, taus[t], w, lo);
             for (i = 0; i < BOUND_SAMPLES; ++i) {
-                const hyst_real_t xi = walk(&x, lo, hi);
+                const hyst_real_t xi = rng_walk(&rng, &x, lo, hi);
                 const double r = (double)hyst_rate_step(&R, xi);
                 const double want = ref_step(&ref, (double)xi);
                 worst = dabs(r - want) > worst ? dabs(r - want) : worst;
@@ -164,7 +135,7 @@ static void test_reset(void)
     long i;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&R, 4.0, 2.0, 0.25));
     for (i = 0; i < 100; ++i) {
-        (void)hyst_rate_step(&R, walk(&x, -1.0, 1.0));
+        (void)hyst_rate_step(&R, rng_walk(&rng, &x, -1.0, 1.0));
     }
     (void)hyst_rate_step(&R, (hyst_real_t)NAN);
     TEST_ASSERT_EQUAL_UINT(HYST_EVENT_NONFINITE, hyst_rate_events(&R));
@@ -182,7 +153,7 @@ static void test_reset(void)
     Q.seq = R.seq; /* the sequence counter (snapshots) counts R's changes */
     TEST_ASSERT_EQUAL_MEMORY(&Q, &R, sizeof R);
     for (i = 0; i < 100; ++i) {
-        const hyst_real_t xi = walk(&x, -1.0, 1.0);
+        const hyst_real_t xi = rng_walk(&rng, &x, -1.0, 1.0);
         TEST_ASSERT_TRUE(hyst_rate_step(&R, xi) == hyst_rate_step(&Q, xi));
     }
 }
@@ -204,7 +175,7 @@ static void test_bad_drives_leave_the_state(void)
     long i;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&R, 3.0, -1.5, 0.0));
     for (i = 0; i < 50; ++i) {
-        (void)hyst_rate_step(&R, walk(&x, -1.0, 1.0));
+        (void)hyst_rate_step(&R, rng_walk(&rng, &x, -1.0, 1.0));
     }
     for (b = 0; b < 4; ++b) {
         hyst_rate_t copy = R;
@@ -238,7 +209,7 @@ static void test_strictly_causal(void)
     long i;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&R, 10.0, 0.7, 0.0));
     for (i = 0; i < 2000; ++i) {
-        const hyst_real_t xi = walk(&x, -1.0, 1.0), before = hyst_rate_output(&R);
+        const hyst_real_t xi = rng_walk(&rng, &x, -1.0, 1.0), before = hyst_rate_output(&R);
         hyst_real_t a, b;
         Q = R;
         a = hyst_rate_step(&R, xi);
@@ -261,7 +232,7 @@ static void test_compensation_round_trip(void)
     y_lo = (double)CURVE_NUM(fwd.y_lo);
     y_hi = (double)CURVE_NUM(fwd.y_hi);
     range = y_hi - y_lo;
-    tol = TOL_OF_RANGE + 8.0 * ulp_at(dabs(y_hi) > dabs(y_lo) ? dabs(y_hi) : dabs(y_lo)) / range;
+    tol = TOL_OF_RANGE + 8.0 * real_ulp(dabs(y_hi) > dabs(y_lo) ? dabs(y_hi) : dabs(y_lo)) / range;
     for (kind = 0; kind < SIG_KINDS; ++kind) {
         static hyst_real_t desired[20000];
         const hyst_wide_t w = 0.05 * range / 40.0; /* a jump over the drive's span: 5 % */

@@ -40,6 +40,21 @@ uint32_t rng_below(rng_t *r, uint32_t n)
     return (uint32_t)(rng_unit(r) * (double)n);
 }
 
+hyst_real_t rng_walk(rng_t *r, double *x, double lo, double hi)
+{
+    const double next = *x + rng_range(r, -0.02, 0.02) * (hi - lo);
+    *x = next < lo ? lo : next > hi ? hi : next;
+    return (hyst_real_t)*x;
+}
+
+double dabs(double v) { return v < 0 ? -v : v; }
+
+double real_ulp(double m)
+{
+    const hyst_real_t v = (hyst_real_t)m;
+    return (double)(NEXT(v, REAL_INF) - v);
+}
+
 double rng_gauss(rng_t *r)
 {
     const double u1 = 1.0 - rng_unit(r), u2 = rng_unit(r);

@@ -4,6 +4,7 @@
 #define HYST_TEST_SUPPORT_H
 
 #include "hyst/hyst.h"
+#include <math.h>
 #include <stdint.h>
 
 /* Tolerance of the build's real type, as a fraction of the output range. */
@@ -23,6 +24,21 @@
 #define CURVE_NUM(n) ((n).f32)
 #endif
 
+/* The build's real type's infinity. */
+#ifdef HYST_USE_DOUBLE
+#define REAL_INF ((hyst_real_t)HUGE_VAL)
+#else
+#define REAL_INF ((hyst_real_t)HUGE_VALF)
+#endif
+
+/* The call returns `code` and leaves *obj as its copy *copy (unity.h's
+ * asserts: a refusal writes nothing). */
+#define UNCHANGED(copy, obj, code, call)                          \
+    do {                                                          \
+        TEST_ASSERT_EQUAL_INT((code), (call));                    \
+        TEST_ASSERT_EQUAL_MEMORY((copy), (obj), sizeof *(obj));   \
+    } while (0)
+
 /* Paper Eq. 20: piezo positioner, 0..40 V, output in um. */
 extern const hyst_poly_t paper_eq20;
 extern const double paper_eq20_coeffs[4];
@@ -37,6 +53,14 @@ double rng_unit(rng_t *r);                  /* [0, 1) */
 double rng_range(rng_t *r, double a, double b);
 uint32_t rng_below(rng_t *r, uint32_t n);   /* [0, n) */
 double rng_gauss(rng_t *r);                 /* standard normal (Box-Muller) */
+
+/* A random walk on [lo, hi]: *x moved by a step uniform in +-2 % of the
+ * span, kept inside; returns it in the build's real type. */
+hyst_real_t rng_walk(rng_t *r, double *x, double lo, double hi);
+
+/* |v|, and the build's real type's spacing at m >= 0. */
+double dabs(double v);
+double real_ulp(double m);
 
 /* The paper's test signal: a triangle from lo whose amplitude shrinks around
  * the centre for 7 peaks and 7 valleys, then grows back to the full range and
