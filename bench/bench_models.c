@@ -89,6 +89,22 @@ void bench_grid_codes(hyst_everett_grid_t *g, double offset)
     }
 }
 
+hyst_status_t bench_grid_inverse_codes(hyst_curve_t *fwd, hyst_everett_grid_t *g, double offset,
+                                       hyst_real_t *table, size_t len)
+{
+    double sum = 0.0;
+    unsigned i;
+    bench_grid_codes(g, 0.0);
+    for (i = 0u; i < HYST_EVERETT_GRID_CELLS(6u); ++i) {
+        sum += (double)g->weight[i];
+    }
+    for (i = 0u; i < HYST_EVERETT_GRID_CELLS(6u); ++i) { /* y_hi - y_lo: the codes' span */
+        g->weight[i] = (hyst_wide_t)((double)g->weight[i] * (double)(BENCH_NU - 1u) / sum);
+    }
+    g->y_lo = (hyst_wide_t)offset;
+    return hyst_curve_from_everett_grid(fwd, g, table, len);
+}
+
 void bench_everett_inverse_codes(hyst_everett_t *e, double offset)
 {
     hyst_poly_t f0;

@@ -27,6 +27,11 @@ void bench_everett_codes(hyst_everett_t *e, double offset, unsigned degree);
  * intervals, the inner knots uneven, every cell's mass positive, one cell
  * ten times heavier (a near step). */
 void bench_grid_codes(hyst_everett_grid_t *g, double offset);
+/* The same grid with its weights scaled so that its outputs span the codes
+ * from offset: the forward curve of the grid's compensator (BENCH_EVERETT
+ * 5), built into fwd with table (len numbers). */
+hyst_status_t bench_grid_inverse_codes(hyst_curve_t *fwd, hyst_everett_grid_t *g, double offset,
+                                       hyst_real_t *table, size_t len);
 /** The same asymmetry on bench_f0_inverse_codes()'s f0: the outputs span
  *  the codes, the asymmetric compensator's desired outputs. */
 void bench_everett_inverse_codes(hyst_everett_t *e, double offset);

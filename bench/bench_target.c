@@ -464,6 +464,16 @@ static void bench_tcm(void)
         (void)e;
         bench_grid_codes(&g, (double)BENCH_OFFSET);
         st = hyst_curve_from_everett_grid(&curve, &g, grid_table, HYST_EVERETT_GRID_TABLE_LEN(6u));
+#elif BENCH_EVERETT == 5 /* the grid's compensator: the codes are desired outputs */
+        static hyst_real_t grid_table[HYST_EVERETT_GRID_TABLE_LEN(6u)];
+        static hyst_curve_t fwd;
+        hyst_everett_grid_t g;
+        (void)e;
+        st = bench_grid_inverse_codes(&fwd, &g, (double)BENCH_OFFSET, grid_table,
+                                      HYST_EVERETT_GRID_TABLE_LEN(6u));
+        if (st == HYST_OK) {
+            st = hyst_curve_everett_grid_inverse(&curve, &fwd);
+        }
 #else
         bench_everett_codes(&e, (double)BENCH_OFFSET, BENCH_EVERETT_DEGREE);
         st = hyst_curve_from_everett(&curve, &e);

@@ -22,6 +22,17 @@ set(HYST_GOAL_EVERETT_INV_TABLE_WORST_INSNS 160)
 # everett_*_insns*, everett4_*_insns* for E of degree 4 linear in t).
 set(HYST_BUDGET_EVERETT_TYPICAL_INSNS 39)
 set(HYST_BUDGET_EVERETT_WORST_INSNS 157)
+# The asymmetric kind's solved compensator (Newton per branch, bracketed), the
+# kind on a grid (6 intervals, a near step inside) and the grid's compensator
+# (each branch's quadratic pieces solved): no product target, held at their
+# figures so that no change makes them slower unseen (docs/results.md:
+# everett_inv_*, everett_grid_*, everett_grid_inv_*).
+set(HYST_BUDGET_EVERETT_INV_TYPICAL_INSNS 106)
+set(HYST_BUDGET_EVERETT_INV_WORST_INSNS 331)
+set(HYST_BUDGET_EVERETT_GRID_TYPICAL_INSNS 55)
+set(HYST_BUDGET_EVERETT_GRID_WORST_INSNS 408)
+set(HYST_BUDGET_EVERETT_GRID_INV_TYPICAL_INSNS 81)
+set(HYST_BUDGET_EVERETT_GRID_INV_WORST_INSNS 737)
 # The q31 variant on the Cortex-M3 without an FPU (hyst/q31.h): the same
 # trajectory at Nu = 4096 (docs/results.md: m3_q31_*_insns*).
 set(HYST_BUDGET_Q31_TYPICAL_INSNS 48)
@@ -81,6 +92,14 @@ if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
                          ${HYST_BUDGET_EVERETT_WORST_INSNS} --elf $<TARGET_FILE:bench_budget_everett4>
                          --elf $<TARGET_FILE:bench_budget_everett4_bipolar> --no-pi)
     endif()
+    foreach(image everett_inv everett_grid everett_grid_inv)
+        if(TARGET bench_budget_${image})
+            string(TOUPPER ${image} upper)
+            hyst_budget_test(${image}_budget ${HYST_BUDGET_${upper}_TYPICAL_INSNS}
+                             ${HYST_BUDGET_${upper}_WORST_INSNS}
+                             --elf $<TARGET_FILE:bench_budget_${image}> --no-pi)
+        endif()
+    endforeach()
     # Its tabulated compensator (the default table). The typical budget is asserted; the
     # worst is not met (everett_inv_table_worst_insns_nu4096: a slow sample derives the
     # branch's four rows and blends an interval on top of the forward kind's path,
