@@ -6,6 +6,7 @@
  * model driven by it reproduces the desired output; the drive never goes
  * back while the desired output moves on; block call = steps and restores
  * bit for bit; the inverse of the inverse is the forward curve. */
+#include "comp_contract.h"
 #include "ref_everett.h"
 #include "support.h"
 #include "unity.h"
@@ -105,23 +106,7 @@ static void test_drive_is_monotone(void)
     for (trial = 0; trial < 10; ++trial) {
         const hyst_everett_t e = accepted_e();
         const double lo = e.y_lo, hi = e.y_lo + ref_everett_e(&e, e.hi, e.lo);
-        hyst_real_t y = (hyst_real_t)(lo + (hi - lo) * rng_range(&rng, 0.2, 0.8));
-        hyst_real_t prev = hyst_step(&C, y);
-        long k;
-        int up = 1;
-        for (k = 0; k < 20000L; ++k) {
-            hyst_real_t x;
-            if (rng_below(&rng, 50u) == 0u) {
-                up = !up;
-            }
-            y = up ? NEXT(y, (hyst_real_t)hi) : NEXT(y, (hyst_real_t)lo);
-            if (rng_below(&rng, 100u) == 0u) { /* and a few wider moves */
-                y = (hyst_real_t)(y + (up ? 1 : -1) * (hi - lo) * 1e-3);
-            }
-            x = hyst_step(&C, y);
-            TEST_ASSERT_TRUE(up ? x >= prev : x <= prev);
-            prev = x;
-        }
+        contract_drive_is_monotone(&C, lo, hi, 1e-3, 20000L, &rng);
     }
 }
 
@@ -129,32 +114,10 @@ static void test_drive_is_monotone(void)
 static void test_block_and_snapshots(void)
 {
     const hyst_everett_t e = accepted_e();
-    size_t len = 0u;
-    long k;
+    const comp_instance_t a = {&C, &inv, xl, yl, xr, yr, CAP};
+    const comp_instance_t b = {&T, &inv, xl3, yl3, xr3, yr3, CAP};
     desired(&e, SAMPLES);
-    for (k = 0; k < SAMPLES; ++k) {
-        drive[k] = hyst_step(&C, yd[k]);
-    }
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&T, &inv, xl3, yl3, xr3, yr3, CAP));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_process(&T, yd, drive2, (size_t)SAMPLES));
-    TEST_ASSERT_EQUAL_MEMORY(drive, drive2, sizeof drive);
-    for (k = 100; k < SAMPLES; k += 97) {
-        long j;
-        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&C, &inv, xl, yl, xr, yr, CAP));
-        for (j = 0; j < k; ++j) {
-            (void)hyst_step(&C, yd[j]);
-        }
-        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&C, snap, sizeof snap, &len));
-        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&T, snap, len));
-        for (j = k; j < k + 200 && j < SAMPLES; ++j) {
-            const hyst_real_t a = hyst_step(&C, yd[j]), b = hyst_step(&T, yd[j]);
-            TEST_ASSERT_EQUAL_MEMORY(&a, &b, sizeof a);
-            TEST_ASSERT_EQUAL_MEMORY(&drive[j], &a, sizeof a);
-        }
-    }
-    /* the forward model's snapshot is not the compensator's */
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_save(&M, snap, sizeof snap, &len));
-    TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&T, snap, len));
+    contract_block_and_snapshots(&a, &b, &M, yd, drive, drive2, SAMPLES, snap, sizeof snap);
 }
 
 /* Inverting twice gives the forward curve back; out-of-range and
