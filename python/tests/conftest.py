@@ -99,3 +99,18 @@ def run_cli(c_build, *args, ok=True, stdin=None):
 def numbers(text):
     """The numbers of a tool's output, as a float64 array."""
     return np.array([float(v) for v in text.split()])
+
+
+def inv_matches_cli(c_build, tmp_path, path, desc, y):
+    """hyst.compensator_from(desc), desc model file `path`'s description, gives
+    bit for bit the drives `hyst inv --model path` gives for the desired
+    outputs y: the compensator and its drives."""
+    import hyst
+
+    out = tmp_path / "y.txt"
+    np.savetxt(out, y, fmt="%.17g")
+    drive_cli = numbers(run_cli(c_build, "inv", "--model", path, "--digits", 17, out).stdout)
+    comp = hyst.compensator_from(desc)
+    drive = comp.process(y)
+    assert np.array_equal(drive_cli, drive)
+    return comp, drive

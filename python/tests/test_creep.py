@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import hyst
-from conftest import PAPER_F0, numbers, run_cli, signal
+from conftest import PAPER_F0, inv_matches_cli, numbers, run_cli, signal
 
 # tests/cli/creep.sh's plant: Eq. 20 on 0..40 V, delay 3, one lag of 2000
 # samples weighing 0.05 um/V
@@ -202,12 +202,7 @@ def test_sim_and_inv_match_the_cli_bit_for_bit(c_build, tmp_path, desc):
     # the compensator: the drive of each desired output, as inv --model
     # (which does not compensate the delay); sim's own outputs give back the
     # inputs (clamped)
-    out = tmp_path / "y.txt"
-    np.savetxt(out, y, fmt="%.17g")
-    drive_cli = numbers(run_cli(c_build, "inv", "--model", path, "--digits", 17, out).stdout)
-    comp = hyst.compensator_from(desc)
-    drive = comp.process(y)
-    assert np.array_equal(drive_cli, drive)
+    comp, drive = inv_matches_cli(c_build, tmp_path, path, desc, y)
     span = desc["hi"] - desc["lo"]
     assert np.max(np.abs(drive - np.clip(x, desc["lo"], desc["hi"]))) < 1e-9 * span
     # sample by sample, the same numbers; reset: the lags back at lo too

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import hyst
-from conftest import numbers, run_cli, signal
+from conftest import inv_matches_cli, numbers, run_cli, signal
 
 # tests/cli/grid.sh's plant: a near step between 1 and 1.4 of 0..3
 PLANT = """hyst-model-text 1
@@ -58,12 +58,7 @@ def test_sim_and_inv_match_the_cli_bit_for_bit(c_build, tmp_path, text):
     m = hyst.model_from(desc)
     assert np.array_equal([m.step(v) for v in x], y)
     # the compensator: sim's own outputs give the inputs back (clamped)
-    out = tmp_path / "y.txt"
-    np.savetxt(out, y, fmt="%.17g")
-    drive_cli = numbers(run_cli(c_build, "inv", "--model", path, "--digits", 17, out).stdout)
-    comp = hyst.compensator_from(desc)
-    drive = comp.process(y)
-    assert np.array_equal(drive_cli, drive)
+    comp, drive = inv_matches_cli(c_build, tmp_path, path, desc, y)
     # the model driven by it gives the desired outputs back; without a
     # creep term the drive is the input itself (clamped). With one, the
     # desired outputs may rise while the input falls (the lag rises): the

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import hyst
-from conftest import PAPER_F0, numbers, run_cli, signal
+from conftest import PAPER_F0, inv_matches_cli, numbers, run_cli, signal
 
 # an asymmetric model with a creep lag and a rate term, and a poly on a
 # domain that does not start at 0 with a rate term alone
@@ -63,12 +63,7 @@ def test_sim_and_inv_match_the_cli_bit_for_bit(c_build, tmp_path, text):
     assert np.max(np.abs(diff)) > 0.1
     assert np.allclose(diff, rate, rtol=0, atol=1e-12)
     # the compensator, as inv --model; sim's outputs give back the inputs
-    out = tmp_path / "y.txt"
-    np.savetxt(out, y, fmt="%.17g")
-    drive_cli = numbers(run_cli(c_build, "inv", "--model", path, "--digits", 17, out).stdout)
-    comp = hyst.compensator_from(desc)
-    drive = comp.process(y)
-    assert np.array_equal(drive_cli, drive)
+    comp, drive = inv_matches_cli(c_build, tmp_path, path, desc, y)
     assert np.max(np.abs(drive - u)) < 1e-9 * (desc["hi"] - desc["lo"])
     # sample by sample the same numbers; reset: the term back at rest too
     comp.reset()
