@@ -858,7 +858,9 @@ nb::dict fit(const In<double> &x, const In<double> &y, unsigned degree, int meth
 /*
  * Identification of the asymmetric kind's E (hyst_everett_fit_*) from
  * recorded arrays, as fit() does f0: sample i (skip <= i < n - delay) pairs
- * x[i] with y[i + delay], the record starting from rest at sample skip; the
+ * x[i] with y[i + delay], the record starting from rest at sample skip (its
+ * outputs fitted from the first input near an end of their range on:
+ * fit_settled(), before it the model's state is not the record's); the
  * domain is [lo, hi] or, when lo == hi, the range of those x. Inputs are
  * clamped to the domain, as the model clamps them. Only the terms w^i t^j
  * with j <= t_degree are fitted (hyst_everett_fit_init_terms(); the others
@@ -889,9 +891,10 @@ nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, 
     check(hyst_everett_fit_init_terms(&fit, degree, t_deg, lo, hi, work.data(), work.size()),
           "fit");
     size_t used = 0u;
+    const size_t settle = fit_settled(px, 0u, count); /* the model's state is the record's */
     for (size_t i = 0u; i < count; ++i) {
         const double xi = px[i] < lo ? lo : (px[i] > hi ? hi : px[i]); /* NaN stays NaN */
-        const int st = hyst_everett_fit_add(&fit, xi, py[i]);
+        const int st = hyst_everett_fit_add(&fit, xi, i < settle ? NAN : py[i]);
         if (st == HYST_ERR_NOSPACE) {
             raise_status(st, "fit");
         }

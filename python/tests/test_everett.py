@@ -187,6 +187,23 @@ def test_fit_recovers_a_known_e():
     assert np.array_equal(f.process(xt), hyst.model_from(f.description()).process(xt))
 
 
+def test_fit_from_inside_a_loop():
+    """A record that starts inside a loop: the model, from rest, follows
+    another branch than the plant's until the input first comes near an end
+    of its range; the outputs are fitted from there on, E recovered."""
+    x = np.clip(signal(6000, E3["lo"], E3["hi"], seed=33, outside=False), E3["lo"], E3["hi"])
+    y = hyst.ModelFromEverett(**E3).process(x)
+    near_end = (x <= E3["lo"] + 0.1) | (x >= E3["hi"] - 0.1)
+    start = int(np.argmax(near_end)) + 40  # past the first extreme, inside a loop
+    start += int(np.argmax(~near_end[start:]))
+    xm, ym = x[start:], y[start:]
+    settle = int(np.argmax((xm <= xm.min() + 0.01 * np.ptp(xm)) | (xm >= xm.max() - 0.01 * np.ptp(xm))))
+    assert settle > 100  # the record's own head, not fitted
+    f = hyst.fit(xm, ym, 3, kind="everett", domain=(E3["lo"], E3["hi"]))
+    assert f.used == len(xm) - settle
+    assert np.max(np.abs(np.array(f.terms) - E3["terms"])) < 1e-3 * np.max(np.abs(E3["terms"]))
+
+
 def test_auto_choice_prefers_the_asymmetric_kind_on_an_asymmetric_plant():
     x, y = noisy_record(E3, 6000, seed=33, delay=2)
     f = hyst.fit(x, y, None, delay=None, domain=(E3["lo"], E3["hi"]))

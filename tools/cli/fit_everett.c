@@ -13,12 +13,14 @@
 #define EVERETT_FIT_CAP0 64u
 
 /* E (its terms w^i t^j with j <= t_degree) fitted to x[k], y[k + delay],
- * skip <= k < end, on [lo, hi], into *e:
- * HYST_OK or the library's status; *used the samples in the fit, *ls_rms
- * its least-squares residual. */
+ * settle <= k < end, on [lo, hi], into *e, the inputs from skip on taken
+ * in (the model from rest at skip, as sim runs it: before settle its state
+ * is not the record's, fit_settled()): HYST_OK or the library's status;
+ * *used the samples in the fit, *ls_rms its least-squares residual. */
 static hyst_status_t fit_samples(unsigned degree, unsigned t_degree, double lo, double hi,
-                                 const double *x, const double *y, size_t skip, size_t end,
-                                 size_t delay, hyst_everett_t *e, size_t *used, double *ls_rms)
+                                 const double *x, const double *y, size_t skip, size_t settle,
+                                 size_t end, size_t delay, hyst_everett_t *e, size_t *used,
+                                 double *ls_rms)
 {
     size_t cap = EVERETT_FIT_CAP0;
     for (;;) {
@@ -33,7 +35,8 @@ static hyst_status_t fit_samples(unsigned degree, unsigned t_degree, double lo, 
         *used = 0u;
         st = hyst_everett_fit_init_terms(&fit, degree, t_degree, lo, hi, work, len);
         for (k = skip; k < end && st == HYST_OK; ++k) {
-            const hyst_status_t add = hyst_everett_fit_add(&fit, x[k], y[k + delay]);
+            const hyst_status_t add =
+                hyst_everett_fit_add(&fit, x[k], k < settle ? (hyst_wide_t)NAN : y[k + delay]);
             /* HYST_ERR_DOMAIN: outside a given domain, ignored as the poly fit ignores it */
             if (add == HYST_ERR_NOSPACE) {
                 st = add;
@@ -77,8 +80,8 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
             hi = x[k] > hi ? x[k] : hi;
         }
     }
-    st = fit_samples(cfg->degree, t_degree, lo, hi, x, y, skip, end, delay, &res->e, &res->used,
-                     &res->ls_rms);
+    st = fit_samples(cfg->degree, t_degree, lo, hi, x, y, skip, fit_settled(x, skip, end), end,
+                     delay, &res->e, &res->used, &res->ls_rms);
     /* HYST_ERR_NOT_MONOTONE: E is returned all the same; the curve's own
      * refusal below says why (curve_status) */
     if (st != HYST_OK && st != HYST_ERR_NOT_MONOTONE) {

@@ -24,7 +24,7 @@
 
 typedef struct {
     const double *x, *y;
-    size_t skip, end, delay, stride;
+    size_t skip, settle, end, delay, stride; /* outputs fitted from settle on (fit_settled()) */
     double *work;
     size_t work_len;
 } grid_data_t;
@@ -40,7 +40,8 @@ static double fit_on(const grid_data_t *d, const double *knots, unsigned k, hyst
     *status = hyst_everett_grid_fit_init(&fit, knots, k, d->work, d->work_len);
     *used = 0u;
     for (i = d->skip; i < d->end && *status == HYST_OK; i += d->stride) {
-        const hyst_status_t add = hyst_everett_grid_fit_add(&fit, d->x[i], d->y[i + d->delay]);
+        const hyst_status_t add = hyst_everett_grid_fit_add(
+            &fit, d->x[i], i < d->settle ? (hyst_wide_t)NAN : d->y[i + d->delay]);
         if (add == HYST_ERR_NOSPACE) {
             *status = add;
         }
@@ -74,6 +75,7 @@ hyst_status_t fit_grid_record(const hyst_ident_config_t *cfg, unsigned k, const 
     d.skip = cfg->skip;
     d.delay = cfg->delay;
     d.end = n - cfg->delay;
+    d.settle = fit_settled(x, d.skip, d.end);
     if (!(lo < hi)) {
         fit_input_range(x, d.skip, d.end, 0.0, &lo, &hi);
     }
