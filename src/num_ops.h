@@ -33,9 +33,6 @@ HYST_INLINE int NUM_NAME(is_finite)(NUM_T v)
 #ifndef NUM_MULADD
 #define NUM_MULADD(a, b, c) (NUM_MUL(a, b) + (c))
 #endif
-#ifndef NUM_G_ONE
-#define NUM_G_ONE 1 /* NUM_MUL_G(a, NUM_G_ONE) is a */
-#endif
 
 /* The cases 1..8 of Horner's rule unrolled by a switch on the degree n
  * over a curve's coefficients (curve.h, highest power first; the engine's

@@ -27,8 +27,6 @@
 #define NUM_MUL(a, b) ((hyst_q31_t)(((int_least64_t)(a) * (b)) >> HYST_Q31_U_BITS))
 #define NUM_MUL_G(a, b) \
     ((hyst_q31_t)(((int_least64_t)(a) * (b)) >> (HYST_Q31_U_BITS - HYST_Q31_GUARD_BITS)))
-/* NUM_MUL_G(a, NUM_G_ONE) is a, exactly: the tabulated inverse's G. */
-#define NUM_G_ONE ((hyst_q31_t)1 << (HYST_Q31_U_BITS - HYST_Q31_GUARD_BITS))
 
 /* An error bound plus e >= 0, saturated at HYST_Q31_BOUND_MAX (merges add
  * up; each e is below 2^30, so the test cannot overflow). */

@@ -68,6 +68,13 @@
 #else
 #define TCM_EVEN(c) (c)
 #endif
+/* v, usually c: GCC then lays case c of a switch on v out on the straight
+ * path, and what follows the switch next to it. */
+#if defined(__GNUC__)
+#define TCM_USUALLY(v, c) ((unsigned)__builtin_expect((long)(v), (long)(c)))
+#else
+#define TCM_USUALLY(v, c) (v)
+#endif
 
 #ifndef TCM_G_HALF
 #define TCM_G_HALF(S, d) TCM_NAME(g)((S), (d) * NUM_C(0.5))
@@ -183,18 +190,32 @@ static TCM_Y TCM_NAME(step_slow)(hyst_tcm_t *S, TCM_ARG x_in);
                          c, u, 2),                                                              \
                   c, u, 1),                                                                     \
            c, u, 0)
+/* What a case of Horner's rule yields (TCM_CASE_G_), and G from a
+ * switch's result r (TCM_G_AFTER_). Where some case has G at once (a
+ * table's cubic, a cached piece's), every case yields G = acc u: they all
+ * join after their products, with no product by one. The variant of
+ * polynomials alone (TCM_POLY_ONLY) yields acc and multiplies once after
+ * the switch (its fixed-point product is a call on the Cortex-M0: one
+ * copy, not one per case). */
+#if TCM_POLY_ONLY
+#define TCM_CASE_G_(acc, u) (acc)
+#define TCM_G_AFTER_(r, u) NUM_MUL_G(r, u)
+#else
+#define TCM_CASE_G_(acc, u) NUM_MUL_G(acc, u)
+#define TCM_G_AFTER_(r, u) (r)
+#endif
 /* The cases 1..8 of a switch on the degree, unrolled (the per-sample
  * paths: no loop, no call); the caller writes case 0 (the jump table
  * starts there) and the default (degree 9 and up). */
-#define TCM_HORNER_CASES_(c, u, acc)          \
-    case 1: acc = TCM_HORNER1_(c, u); break;  \
-    case 2: acc = TCM_HORNER2_(c, u); break;  \
-    case 3: acc = TCM_HORNER3_(c, u); break;  \
-    case 4: acc = TCM_HORNER4_(c, u); break;  \
-    case 5: acc = TCM_HORNER5_(c, u); break;  \
-    case 6: acc = TCM_HORNER6_(c, u); break;  \
-    case 7: acc = TCM_HORNER7_(c, u); break;  \
-    case 8: acc = TCM_HORNER8_(c, u); break
+#define TCM_HORNER_CASES_(c, u, r)                          \
+    case 1: r = TCM_CASE_G_(TCM_HORNER1_(c, u), u); break;  \
+    case 2: r = TCM_CASE_G_(TCM_HORNER2_(c, u), u); break;  \
+    case 3: r = TCM_CASE_G_(TCM_HORNER3_(c, u), u); break;  \
+    case 4: r = TCM_CASE_G_(TCM_HORNER4_(c, u), u); break;  \
+    case 5: r = TCM_CASE_G_(TCM_HORNER5_(c, u), u); break;  \
+    case 6: r = TCM_CASE_G_(TCM_HORNER6_(c, u), u); break;  \
+    case 7: r = TCM_CASE_G_(TCM_HORNER7_(c, u), u); break;  \
+    case 8: r = TCM_CASE_G_(TCM_HORNER8_(c, u), u); break
 
 /* Horner's loop over acc's n >= 1 coefficients: the degrees above 8. */
 HYST_INLINE TCM_Y TCM_NAME(poly_loop)(const hyst_num_t *c, unsigned n, TCM_Y u)
@@ -210,13 +231,13 @@ HYST_INLINE TCM_Y TCM_NAME(poly_loop)(const hyst_num_t *c, unsigned n, TCM_Y u)
 /* G(u) of a polynomial branch of n coefficients c. */
 HYST_INLINE TCM_Y TCM_NAME(poly_g)(const hyst_num_t *c, unsigned n, TCM_Y u)
 {
-    TCM_Y acc;
+    TCM_Y r;
     switch (n) { /* independent cases: no register merges */
-    case 0: acc = 0; break; /* never called so */
-    TCM_HORNER_CASES_(c, u, acc);
-    default: acc = TCM_NAME(poly_loop)(c, n, u); break;
+    case 0: r = 0; break; /* never called so */
+    TCM_HORNER_CASES_(c, u, r);
+    default: r = TCM_CASE_G_(TCM_NAME(poly_loop)(c, n, u), u); break;
     }
-    return NUM_MUL_G(acc, u);
+    return TCM_G_AFTER_(r, u);
 }
 
 /* G at u, any kind: Horner for polynomial branches, else the kind's. */
@@ -373,29 +394,34 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
  * Cases of their own, not labels of the polynomial's: GCC lays the fast
  * path out better so (one instruction less on a rising or a falling
  * sample of every kind). */
-#define TCM_HORNER_BANK_(base, a, u, acc)                  \
-    case (base) + 1u: acc = TCM_HORNER1_(a, u); break;     \
-    case (base) + 2u: acc = TCM_HORNER2_(a, u); break;     \
-    case (base) + 3u: acc = TCM_HORNER3_(a, u); break;     \
-    case (base) + 4u: acc = TCM_HORNER4_(a, u); break
+#define TCM_HORNER_BANK_(base, a, u, r)                                    \
+    case (base) + 1u: r = TCM_CASE_G_(TCM_HORNER1_(a, u), u); break;       \
+    case (base) + 2u: r = TCM_CASE_G_(TCM_HORNER2_(a, u), u); break;       \
+    case (base) + 3u: r = TCM_CASE_G_(TCM_HORNER3_(a, u), u); break;       \
+    case (base) + 4u: r = TCM_CASE_G_(TCM_HORNER4_(a, u), u); break
+
+/* The fast path's usual case (TCM_USUALLY): the method's cubic f0, whose
+ * branches are G of degree 3. GCC then runs that case straight into the
+ * sample's end, with the end's two directions next to each other (a
+ * compare-and-branch picks one): two instructions less on that sample. */
+#define TCM_HORNER_USUAL 3u
 
 /* emit()'s cases of the kinds without a slow sample of their own: a table
- * of cubic pieces (case 0: G = acc; its exact intervals by the tail call)
- * and polynomials of degree 1..8. */
+ * of cubic pieces (case 0: its cubic is G; its exact intervals by the tail
+ * call) and polynomials of degree 1..8. */
 #if TCM_POLY_ONLY /* case 0 never runs: the jump table starts there (one subtraction less) */
-#define TCM_EMIT_CASES_(S, x, how, u, acc)                      \
-    case 0: acc = 0; break;                                     \
-        TCM_HORNER_CASES_((S)->coef, u, acc)
+#define TCM_EMIT_CASES_(S, x, how, u, r)                        \
+    case 0: r = 0; break;                                       \
+        TCM_HORNER_CASES_((S)->coef, u, r)
 #else
-#define TCM_EMIT_CASES_(S, x, how, u, acc)                      \
+#define TCM_EMIT_CASES_(S, x, how, u, r)                        \
     case 0:                                                     \
-        acc = NUM_NAME(table_g)((S)->table.TCM_YF, u);          \
-        if (!(acc >= 0)) {                                      \
+        r = NUM_NAME(table_g)((S)->table.TCM_YF, u);            \
+        if (!(r >= 0)) {                                        \
             return TCM_NAME(emit_rare)((S), (x), (how));        \
         }                                                       \
-        u = NUM_G_ONE;                                          \
         break;                                                  \
-        TCM_HORNER_CASES_((S)->coef, u, acc)
+        TCM_HORNER_CASES_((S)->coef, u, r)
 #endif
 
 /* The end of a sample on the current branch, as its kind set it up
@@ -414,14 +440,14 @@ HYST_INLINE TCM_Y TCM_NAME(cubic)(const hyst_num_t *c, TCM_Y t)
  * and the fast path needs no stack frame. */
 HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
 {
-    TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
-    TCM_Y acc, g, y;
+    const TCM_Y u = (TCM_R(x) - YV(S->x_ctp)) * YV(S->u_scale);
+    TCM_Y r, y;
     if (how == TCM_FAST) {
-        switch (S->horner) {
-        TCM_EMIT_CASES_(S, x, how, u, acc);
+        switch (TCM_USUALLY(S->horner, TCM_HORNER_USUAL)) {
+        TCM_EMIT_CASES_(S, x, how, u, r);
 #if !TCM_POLY_ONLY
-        TCM_HORNER_BANK_(HYST_HORNER_BANK1_, S->coef, u, acc);
-        TCM_HORNER_BANK_(HYST_HORNER_BANK2_, S->coef, u, acc);
+        TCM_HORNER_BANK_(HYST_HORNER_BANK1_, S->coef, u, r);
+        TCM_HORNER_BANK_(HYST_HORNER_BANK2_, S->coef, u, r);
         case HYST_HORNER_OWN_: /* the kind evaluates every sample */
             return TCM_KIND(S)->fast(S, x);
 #endif
@@ -435,28 +461,26 @@ HYST_INLINE TCM_Y TCM_NAME(emit)(hyst_tcm_t *S, TCM_X x, const int how)
             if (k != S->cached_k) {
                 return TCM_KIND(S)->fast(S, x);
             }
-            acc = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k);
-            if (acc < 0) { /* a solved interval; "< 0", not "!(>= 0)" as for the table of
-                            * case 0 (acc is a number: s and the blend are): GCC then
-                            * does not share that case's tail, one branch less */
+            r = TCM_NAME(cubic)(S->coef, s - (TCM_Y)k); /* G */
+            if (r < 0) { /* a solved interval; "< 0", not "!(>= 0)" as for the table of
+                          * case 0 (r is a number: s and the blend are): GCC then
+                          * does not share that case's tail, one branch less */
                 return TCM_NAME(emit_rare)(S, x, how);
             }
-            u = NUM_G_ONE;
             break;
         }
 #endif
         default: /* a pending request, or degree 9 and up */
             return TCM_NAME(emit_rare)(S, x, how);
         }
-        return TCM_NAME(fast_end)(S, x, NUM_MUL_G(acc, u));
+        return TCM_NAME(fast_end)(S, x, TCM_G_AFTER_(r, u));
     }
     switch (S->horner) {
-    TCM_EMIT_CASES_(S, x, how, u, acc);
+    TCM_EMIT_CASES_(S, x, how, u, r);
     default: /* a pending request, or degree 9 and up */
         return TCM_NAME(emit_rare)(S, x, how);
     }
-    g = NUM_MUL_G(acc, u);
-    y = TCM_NAME(slow_guard)(S, g, how);
+    y = TCM_NAME(slow_guard)(S, TCM_G_AFTER_(r, u), how);
     YV(S->y_prev) = y;
     return y;
 }

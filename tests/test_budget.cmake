@@ -7,20 +7,20 @@
 option(HYST_BUDGET_TEST "Assert the per-sample instruction budgets under QEMU" ON)
 # The product budgets, on the domain 0..4095 and on one across
 # zero (-2048..2047: the keyed search's other ladder).
-set(HYST_BUDGET_TYPICAL_INSNS 37)  # a sample that stays on its branch (docs/results.md: tcm_typical_insns)
+set(HYST_BUDGET_TYPICAL_INSNS 35)  # a sample that stays on its branch (docs/results.md: tcm_typical_insns)
 set(HYST_BUDGET_WORST_INSNS 145)   # any sample at Nu = 4096 (paper: ~420 DSP cycles)
 # The compensator (HYST_INIT_INVERSE: the tabulated inverse of Eq. 20).
-set(HYST_BUDGET_INV_TYPICAL_INSNS 46)
+set(HYST_BUDGET_INV_TYPICAL_INSNS 45)
 set(HYST_BUDGET_INV_WORST_INSNS 154)
 # The asymmetric kind's tabulated compensator: its typical sample, and the
 # compensators' worst-case goal it does not meet (printed, not asserted).
-set(HYST_BUDGET_EVERETT_INV_TABLE_TYPICAL_INSNS 49)
+set(HYST_BUDGET_EVERETT_INV_TABLE_TYPICAL_INSNS 48)
 set(HYST_GOAL_EVERETT_INV_TABLE_WORST_INSNS 160)
 # The asymmetric kind (HYST_CURVE_EVERETT: Eq. 20 as an Everett function of
 # degree 3 with a term in the loop's lower end) on the same trajectory: a
 # slow sample derives the new branch's coefficients (docs/results.md:
 # everett_*_insns*, everett4_*_insns* for E of degree 4 linear in t).
-set(HYST_BUDGET_EVERETT_TYPICAL_INSNS 39)
+set(HYST_BUDGET_EVERETT_TYPICAL_INSNS 38)
 set(HYST_BUDGET_EVERETT_WORST_INSNS 157)
 # The asymmetric kind's solved compensator (Newton per branch, bracketed), the
 # kind on a grid (6 intervals, a near step inside) and the grid's compensator
@@ -35,12 +35,12 @@ set(HYST_BUDGET_EVERETT_GRID_INV_TYPICAL_INSNS 81)
 set(HYST_BUDGET_EVERETT_GRID_INV_WORST_INSNS 737)
 # The q31 variant on the Cortex-M3 without an FPU (hyst/q31.h): the same
 # trajectory at Nu = 4096 (docs/results.md: m3_q31_*_insns*).
-set(HYST_BUDGET_Q31_TYPICAL_INSNS 48)
+set(HYST_BUDGET_Q31_TYPICAL_INSNS 45)
 set(HYST_BUDGET_Q31_WORST_INSNS 149)
 # Its compensator (HYST_Q31_INIT_INVERSE: the q31 tabulated inverse of
 # Eq. 20, 32 intervals) on 4096 levels of the desired output.
-set(HYST_BUDGET_Q31_INV_TYPICAL_INSNS 58)
-set(HYST_BUDGET_Q31_INV_WORST_INSNS 160)
+set(HYST_BUDGET_Q31_INV_TYPICAL_INSNS 46)
+set(HYST_BUDGET_Q31_INV_WORST_INSNS 146)
 
 # hyst_budget_test(<name> <typical> <worst> <test_budget.py options...>)
 function(hyst_budget_test name typical worst)
