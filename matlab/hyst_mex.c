@@ -846,7 +846,7 @@ static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     hyst_curve_t curve;
     hyst_wide_t *work, rms = 0.0, lo, hi;
     const double *x, *y;
-    size_t n, skip, delay, len, i, j, settle, used = 0u;
+    size_t n, skip, delay, len, i, j, used = 0u;
     unsigned degree, t_degree;
     mxArray *s, *t;
     int st;
@@ -879,14 +879,8 @@ static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     t_degree = nrhs == 8 ? (unsigned)count(prhs[7], "t_degree", 0.0, 1e9)
                          : (degree > 0u ? degree - 1u : 0u);
     st = hyst_everett_fit_init_terms(&fit, degree, t_degree, lo, hi, work, len);
-    settle = fit_settled(x, 0u, n); /* before it the model's state is not the record's */
-    for (i = 0u; st == HYST_OK && i < n; ++i) {
-        const double xi = x[i] < lo ? lo : (x[i] > hi ? hi : x[i]); /* NaN stays NaN */
-        const int added = hyst_everett_fit_add(&fit, xi, i < settle ? (double)NAN : y[i]);
-        if (added == HYST_OK) {
-            ++used;
-        }
-        st = added == HYST_ERR_NOSPACE ? added : HYST_OK;
+    if (st == HYST_OK) {
+        st = fit_everett_add_clamped(&fit, x, y, n, lo, hi, &used);
     }
     if (st == HYST_OK) {
         st = hyst_everett_fit_solve(&fit, &e, &rms);

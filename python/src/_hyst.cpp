@@ -891,17 +891,7 @@ nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, 
     check(hyst_everett_fit_init_terms(&fit, degree, t_deg, lo, hi, work.data(), work.size()),
           "fit");
     size_t used = 0u;
-    const size_t settle = fit_settled(px, 0u, count); /* the model's state is the record's */
-    for (size_t i = 0u; i < count; ++i) {
-        const double xi = px[i] < lo ? lo : (px[i] > hi ? hi : px[i]); /* NaN stays NaN */
-        const int st = hyst_everett_fit_add(&fit, xi, i < settle ? NAN : py[i]);
-        if (st == HYST_ERR_NOSPACE) {
-            raise_status(st, "fit");
-        }
-        if (st == HYST_OK) {
-            ++used;
-        }
-    }
+    check(fit_everett_add_clamped(&fit, px, py, count, lo, hi, &used), "fit");
     hyst_everett_t e;
     hyst_wide_t rms = 0.0;
     check(hyst_everett_fit_solve(&fit, &e, &rms), "fit");

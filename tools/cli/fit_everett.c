@@ -56,6 +56,23 @@ static hyst_status_t fit_samples(unsigned degree, unsigned t_degree, double lo, 
     }
 }
 
+hyst_status_t fit_everett_add_clamped(hyst_everett_fit_t *fit, const double *x, const double *y,
+                                      size_t n, double lo, double hi, size_t *used)
+{
+    const size_t settle = fit_settled(x, 0u, n);
+    size_t i;
+    *used = 0u;
+    for (i = 0u; i < n; ++i) {
+        const double xi = x[i] < lo ? lo : (x[i] > hi ? hi : x[i]); /* NaN stays NaN */
+        const hyst_status_t st = hyst_everett_fit_add(fit, xi, i < settle ? (double)NAN : y[i]);
+        if (st == HYST_ERR_NOSPACE) {
+            return st;
+        }
+        *used += st == HYST_OK ? 1u : 0u;
+    }
+    return HYST_OK;
+}
+
 hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degree,
                                  const double *x, const double *y, size_t n,
                                  fit_everett_result_t *res)

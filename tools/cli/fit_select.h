@@ -220,6 +220,16 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
                                  const double *x, const double *y, size_t n,
                                  fit_everett_result_t *res);
 
+/* x[i] with y[i] (i < n) added to an everett fit started from rest at x[0],
+ * as the front ends fit E (Python's fit(kind="everett"), Octave's
+ * hyst_fit): each input clamped to [lo, hi] as the model clamps it, the
+ * outputs fitted from fit_settled() on (before it the model's state is not
+ * the record's: those inputs move the fit's turning points only). *used
+ * the rows added. HYST_OK, or HYST_ERR_NOSPACE (the fit's workspace holds
+ * fewer turning points than the record stacks). */
+hyst_status_t fit_everett_add_clamped(hyst_everett_fit_t *fit, const double *x, const double *y,
+                                      size_t n, double lo, double hi, size_t *used);
+
 /* The asymmetric kind on a grid of k knot intervals fitted as
  * fit_everett_record() fits E (fit_grid.c): the knots where the output
  * steps, refined; res->grid, its curve's status, the model's run. */
