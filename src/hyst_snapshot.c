@@ -243,13 +243,18 @@ unsigned long hyst_crc_real_(unsigned long crc, hyst_wide_t v, unsigned variant)
 
 unsigned long hyst_crc_word_(unsigned long crc, unsigned long w) { return crc_word(crc, w); }
 
+/* The type a variant stores its numbers in. */
+HYST_INLINE num_type_t num_type_of(unsigned variant)
+{
+    return variant == (unsigned)HYST_VARIANT_F64    ? NUM_F64
+           : variant == (unsigned)HYST_VARIANT_Q31  ? NUM_Q31
+           : variant == (unsigned)HYST_VARIANT_CODE ? NUM_CODE
+                                                    : NUM_F32;
+}
+
 unsigned long hyst_crc_num_(unsigned long crc, const hyst_num_t *v, unsigned variant)
 {
-    const num_type_t t = variant == (unsigned)HYST_VARIANT_F64   ? NUM_F64
-                         : variant == (unsigned)HYST_VARIANT_Q31  ? NUM_Q31
-                         : variant == (unsigned)HYST_VARIANT_CODE ? NUM_CODE
-                                                                  : NUM_F32;
-    return crc_num(crc, v, t);
+    return crc_num(crc, v, num_type_of(variant));
 }
 
 /* Entry i of a curve's table as the table stores it: t is the instance's
@@ -270,7 +275,7 @@ static hyst_num_t table_num(hyst_cptr_t table, size_t i, num_type_t t)
 }
 
 /* The first n entries of a curve's table. */
-static unsigned long crc_table(unsigned long crc, hyst_cptr_t table, size_t n, num_type_t t)
+HYST_INLINE unsigned long crc_table(unsigned long crc, hyst_cptr_t table, size_t n, num_type_t t)
 {
     size_t i;
     for (i = 0u; i < n; ++i) {
@@ -278,6 +283,11 @@ static unsigned long crc_table(unsigned long crc, hyst_cptr_t table, size_t n, n
         crc = crc_num(crc, &v, t);
     }
     return crc;
+}
+
+unsigned long hyst_crc_table_(unsigned long crc, hyst_cptr_t table, size_t n, unsigned variant)
+{
+    return crc_table(crc, table, n, num_type_of(variant));
 }
 
 /* Curve identity: everything that shapes the branches of this instance,

@@ -31,15 +31,12 @@ static unsigned long table_crc(unsigned kind, unsigned variant, hyst_cptr_t tabl
                                unsigned long rows, unsigned long intervals, hyst_wide_t max_err)
 {
     const unsigned long n = table_len(kind, rows, intervals);
-    unsigned long crc = hyst_crc_word_(0ul, kind), i;
+    unsigned long crc = hyst_crc_word_(0ul, kind);
     crc = hyst_crc_word_(crc, variant);
     crc = hyst_crc_word_(crc, rows);
     crc = hyst_crc_word_(crc, intervals);
     crc = hyst_crc_real_(crc, max_err, HYST_VARIANT_F32);
-    for (i = 0ul; i < n; ++i) {
-        crc = hyst_crc_real_(crc, hyst_cptr_get(table, (size_t)i, variant), variant);
-    }
-    return crc;
+    return hyst_crc_table_(crc, table, (size_t)n, variant);
 }
 
 static int real_variant(unsigned variant)

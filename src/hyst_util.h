@@ -341,6 +341,8 @@ unsigned long hyst_crc_word_(unsigned long crc, unsigned long w);
 /* The same over a number as stored (no conversion: integer work only); its
  * type is the variant's (HYST_VARIANT_CODE: an input code). */
 unsigned long hyst_crc_num_(unsigned long crc, const hyst_num_t *v, unsigned variant);
+/* The same over the first n numbers of a table, as the variant stores them. */
+unsigned long hyst_crc_table_(unsigned long crc, hyst_cptr_t table, size_t n, unsigned variant);
 /* The seal of a prepared polynomial curve (hyst_*_sealed_poly_t, curve.h):
  * the format, kind, variant, degree, the domain (codes for q31), the
  * outputs at its ends, unit, rounding and G's coefficients, as stored
