@@ -131,6 +131,7 @@ function f = hyst_fit(x, y, varargin)
   end
   x = double(x(:));
   y = double(y(:));
+  check_record(x, y, opts);
   cands = [];
   fraction = 0;  % a sub-sample delay chosen: the drive x interpolated by it
   rate = struct('with_rate', false);  % a rate term chosen with the model
@@ -353,5 +354,48 @@ function tau = creep_option(c, what)
   else
     error('hyst:usage', ['hyst_fit: ''%s'' is ''none'', ''auto'' or a time constant of ' ...
                          '1 to 1e9 samples'], what);
+  end
+end
+
+% The record as 'hyst fit' takes a file: NaN marks a missing sample; an
+% infinite one, skip or delay not a whole number >= 0 or a column that
+% does not vary is refused (hyst:usage), naming it; none left is the
+% library's ERR_ARG, as x and y of different lengths are (the gateway's).
+function check_record(x, y, opts)
+  if ~(hyst_is_whole(opts.skip) && opts.skip >= 0)
+    error('hyst:usage', 'hyst_fit: skip must be a whole number of samples >= 0');
+  end
+  delay = 0;
+  if ~isempty(opts.delay)
+    if ~(hyst_is_whole(opts.delay) && opts.delay >= 0)
+      error('hyst:usage', 'hyst_fit: delay must be a whole number of samples >= 0');
+    end
+    delay = double(opts.delay);
+  end
+  skip = double(opts.skip);
+  names = {'x', 'y'};
+  roles = {'drive', 'response'};
+  cols = {x, y};
+  for i = 1:2
+    k = find(isinf(cols{i}), 1);
+    if ~isempty(k)
+      error('hyst:usage', ['hyst_fit: %s(%d) is %g: a record''s samples are finite numbers, ' ...
+                           'or NaN where one is missing'], names{i}, k, cols{i}(k));
+    end
+  end
+  if numel(x) ~= numel(y)
+    return;
+  end
+  if numel(x) <= skip + delay
+    error('hyst:ERR_ARG', 'hyst_fit: skip %d and delay %d leave no sample of the %d given', ...
+          skip, delay, numel(x));
+  end
+  used = {x(skip + 1:end - delay), y(skip + 1 + delay:end)};
+  for i = 1:2
+    v = used{i}(~isnan(used{i}));
+    if isempty(v) || all(v == v(1))
+      error('hyst:usage', 'hyst_fit: %s is constant (NaN aside): a record''s %s must vary', ...
+            names{i}, roles{i});
+    end
   end
 end

@@ -23,7 +23,7 @@ function failed = run_tests(root, ref, cli)
            @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
            @t_rate_refused, @t_rate_fit_as_cli, @t_grid_sim_inv_equal_cli, @t_grid_written_as_cli, ...
            @t_grid_header_equals_cli, @t_grid_refused, @t_grid_fit_as_cli, ...
-           @t_grid_chosen_as_cli};
+           @t_grid_chosen_as_cli, @t_fit_missing_first_input, @t_fit_refuses_record};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -284,6 +284,49 @@ function t_errors_status_names(~)
   % a warning is not an error: clamped samples return status 1
   [~, st] = hyst_sim(paper_f0(), [0 50 20]);
   check(st == 1, 'status %d for a clamped sample', st);
+end
+
+function [x, y] = loops_record()
+  % a minor loop whose response E of degree 2 fits exactly (y = x + x^2 / 10)
+  x = [linspace(0, 10, 200) linspace(10, 2, 150) linspace(2, 8, 100) linspace(8, 0, 150)]';
+  y = x + 0.1 * x .^ 2;
+end
+
+function t_fit_missing_first_input(~)
+  % a NaN input is a missing sample, also the first: the fit is that of the
+  % record without it (the inputs' range is the others', not NaN)
+  [x, y] = loops_record();
+  x(1) = NaN;
+  f = hyst_fit(x, y);
+  r = hyst_fit(x(2:end), y(2:end));
+  check(strcmp(f.kind, r.kind) && f.degree == r.degree && f.lo == r.lo && f.hi == r.hi && ...
+        f.lo == 0 && max(abs(f.terms(:) - r.terms(:))) <= 1e-12 * max(abs(r.terms(:))), ...
+        'fit %s degree %d on [%g, %g], without the sample %s degree %d on [%g, %g]', f.kind, ...
+        f.degree, f.lo, f.hi, r.kind, r.degree, r.lo, r.hi);
+  e = hyst_fit(x, y, 'kind', 'everett', 'degree', 2);
+  check(max(abs(e.terms(:)' - [10 20 10])) < 1e-8, 'terms of E %s', mat2str(e.terms));
+end
+
+function t_fit_refuses_record(~)
+  % what hyst fit refuses in a file is refused here too, named
+  [x, y] = loops_record();
+  bad = x;
+  bad(6) = Inf;
+  cases = {{bad, y}, 'x\(6\) is Inf'; {x, -1 ./ (y - y(1))}, 'y\(1\) is -Inf'; ...
+           {x, y, 'delay', -1}, 'delay must be a whole'; {x, y, 'delay', 1.5}, 'delay must be'; ...
+           {x, y, 'skip', 2.5}, 'skip must be a whole'; {x, y, 'skip', 600}, 'leave no sample'; ...
+           {ones(50, 1), (1:50)'}, 'x is constant'; {x, NaN(size(y))}, 'y is constant'};
+  for i = 1:size(cases, 1)
+    msg = '';
+    try
+      hyst_fit(cases{i, 1}{:});
+    catch err
+      check(strcmp(err.identifier, 'hyst:usage') == isempty(strfind(cases{i, 2}, 'leave')), ...
+            'case %d: identifier %s', i, err.identifier);
+      msg = err.message;
+    end
+    check(~isempty(regexp(msg, cases{i, 2}, 'once')), 'case %d: message "%s"', i, msg);
+  end
 end
 
 function t_usage_errors(~)

@@ -25,6 +25,38 @@ def _count(n):
     return max(min(int(n), 1 << 62), -1)
 
 
+def _samples(name, v):
+    """skip or delay: a whole number of samples >= 0 (an int, or a float
+    without a fraction), never silently rounded or taken for "choose"."""
+    if (isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating))
+            or not float(v).is_integer() or v < 0):
+        raise ValueError(f"{name} must be a whole number of samples >= 0, not {v!r}")
+    return int(v)
+
+
+def _record(name, v):
+    """A record's column as float64: NaN marks a missing sample (an output
+    not fitted, an input the model ignores); an infinite one is refused."""
+    v = np.ascontiguousarray(v, dtype=np.float64)
+    if v.ndim != 1:
+        raise ValueError(f"{name} must be one-dimensional, not of shape {v.shape}")
+    bad = np.flatnonzero(np.isinf(v))
+    if bad.size:
+        raise ValueError(f"{name}[{bad[0]}] is {v[bad[0]]}: a record's samples are finite "
+                         "numbers, or NaN where one is missing")
+    return v
+
+
+def _varies(name, v, what):
+    """Refuses a column whose samples used (NaN aside) are all one number, as
+    hyst fit refuses a constant column: no model could be fitted to it."""
+    v = v[~np.isnan(v)]
+    if v.size == 0 or np.all(v == v[0]):
+        raise ValueError(f"{name} is constant ("
+                         + (f"{v[0]:.9g} at every sample used" if v.size else "NaN throughout")
+                         + f"): a record's {what} must vary")
+
+
 def _variant(dtype, f32, f64):
     dt = np.dtype(dtype)
     if dt == np.float64:
@@ -593,9 +625,16 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     if rate_tau >= 0 and degree is not None:
         raise ValueError("rate applies to the automatic choice (degree=None), as hyst fit --rate")
     lo, hi = (0.0, 0.0) if domain is None else (float(domain[0]), float(domain[1]))
-    x = np.ascontiguousarray(x, dtype=np.float64)
-    y = np.ascontiguousarray(y, dtype=np.float64)
-    skip = int(skip)
+    x = _record("x", x)
+    y = _record("y", y)
+    skip = _samples("skip", skip)
+    if delay is not None:
+        delay = _samples("delay", delay)
+    if len(x) <= skip + (delay or 0):
+        raise HystError(_hyst.Status.ERR_ARG, f"fit: skip {skip} and delay {delay or 0} "
+                        f"leave no sample of the {len(x)} given")
+    _varies("x", x[skip:len(x) - (delay or 0)], "drive")
+    _varies("y", y[skip + (delay or 0):], "response")
     cands, chosen, with_creep, fraction, search = None, None, False, 0.0, {}
     if degree is None:
         kinds = KINDS if kind is None else (kind,)
@@ -643,7 +682,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
         # a domain wider than the inputs: the range E was identified on is
         # recorded, as hyst fit --save records it
         used = x[skip:len(x) - int(delay)]
-        a, b = float(used.min()), float(used.max())
+        a, b = float(np.nanmin(used)), float(np.nanmax(used))
         if res["lo"] < a or b < res["hi"]:
             res["identified"] = (max(a, res["lo"]), min(b, res["hi"]))
     creep_info = rate_info = None

@@ -102,3 +102,46 @@ def test_unknown_status_has_a_name():
     err = hyst.HystError(12345, "ctx")
     assert err.name == "UNKNOWN" and err.status == 12345
     assert err.message == hyst.status_str(12345)
+
+
+def _loops():
+    """A record with a minor loop whose response the asymmetric kind of
+    degree 2 fits exactly (y = x + x^2 / 10 on both branches)."""
+    x = np.concatenate([np.linspace(0, 10, 200), np.linspace(10, 2, 150),
+                        np.linspace(2, 8, 100), np.linspace(8, 0, 150)])
+    return x, x + 0.1 * x * x
+
+
+def test_fit_takes_a_missing_first_input():
+    # a NaN input is a missing sample, also the first: the fit is that of the
+    # record without it (the inputs' range, the everett candidates' domain,
+    # is the others', not NaN)
+    x, y = _loops()
+    x[0] = np.nan
+    f, rest = hyst.fit(x, y), hyst.fit(x[1:], y[1:])
+    assert (f.kind, f.degree, f.lo, f.hi, f.delay) == (rest.kind, rest.degree, rest.lo, rest.hi,
+                                                       rest.delay) == ("everett", 2, 0.0, 20.0, 0)
+    assert np.allclose(f.terms, rest.terms, rtol=1e-12)
+    assert np.allclose(hyst.fit(x, y, 2, kind="everett").terms, [10, 20, 10], rtol=1e-9)
+
+
+def test_fit_refuses_what_it_cannot_use():
+    x, y = _loops()
+    bad = x.copy()
+    bad[5] = np.inf
+    with pytest.raises(ValueError, match=r"x\[5\] is inf"):
+        hyst.fit(bad, y)
+    with pytest.raises(ValueError, match=r"y\[7\] is -inf"):
+        hyst.fit(x, np.where(np.arange(len(y)) == 7, -np.inf, y))
+    for opts in ({"delay": -1}, {"delay": 1.5}, {"skip": -2}, {"skip": 2.5},
+                 {"delay": -1, "degree": 3}):
+        with pytest.raises(ValueError, match="whole number of samples"):
+            hyst.fit(x, y, **opts)
+    with pytest.raises(hyst.HystError, match="leave no sample") as err:
+        hyst.fit(x, y, skip=len(x))
+    assert err.value.status == hyst.Status.ERR_ARG
+    with pytest.raises(ValueError, match="x is constant"):
+        hyst.fit(np.ones(50), np.arange(50.0))
+    with pytest.raises(ValueError, match="y is constant"):
+        hyst.fit(x, np.full_like(y, np.nan))
+    assert hyst.fit(x, y, delay=2.0, skip=np.int64(1)).delay == 2

@@ -81,7 +81,7 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
     double lo = (double)cfg->lo, hi = (double)cfg->hi;
     hyst_curve_t curve;
     hyst_status_t st;
-    size_t end, k;
+    size_t end;
     memset(res, 0, sizeof *res);
     res->rms = NAN;
     res->max_abs = NAN;
@@ -91,11 +91,7 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
     }
     end = n - delay;
     if (!(lo < hi)) { /* the range of the inputs used, as hyst_ident_fit() takes it */
-        lo = hi = x[skip];
-        for (k = skip; k < end; ++k) {
-            lo = x[k] < lo ? x[k] : lo;
-            hi = x[k] > hi ? x[k] : hi;
-        }
+        fit_input_range(x, skip, end, 0.0, &lo, &hi);
     }
     st = fit_samples(cfg->degree, t_degree, lo, hi, x, y, skip, fit_settled(x, skip, end), end,
                      delay, &res->e, &res->used, &res->ls_rms);

@@ -23,13 +23,28 @@ void fit_input_range(const double *x, size_t from, size_t to, double widen, doub
                      double *hi)
 {
     size_t k;
-    double a = x[from], b = x[from];
+    double a = INFINITY, b = -INFINITY;
     for (k = from; k < to; ++k) {
-        a = x[k] < a ? x[k] : a;
-        b = x[k] > b ? x[k] : b;
+        if (isfinite(x[k])) { /* a missing (NaN) input is no end of the range */
+            a = x[k] < a ? x[k] : a;
+            b = x[k] > b ? x[k] : b;
+        }
+    }
+    if (!(a <= b)) { /* no finite input in [from, to) */
+        a = b = NAN;
     }
     *lo = a - widen * (b - a);
     *hi = b + widen * (b - a);
+}
+
+double fit_first_input(const double *x, size_t from, size_t to)
+{
+    for (; from < to; ++from) {
+        if (isfinite(x[from])) {
+            return x[from];
+        }
+    }
+    return NAN;
 }
 
 void fit_widened_domain(double lo, double hi, double first, double *wide_lo, double *wide_hi)
@@ -46,7 +61,7 @@ int fit_chosen_domain(const fit_candidate_t *c, const double *x, size_t skip, si
         return 0;
     }
     fit_input_range(x, skip, n - c->delay, 0.0, &a, &b);
-    fit_widened_domain(a, b, x[skip], lo, hi);
+    fit_widened_domain(a, b, fit_first_input(x, skip, n - c->delay), lo, hi);
     return 1;
 }
 
@@ -71,6 +86,9 @@ size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double 
     size_t k, count = 0u;
     int dir = 0;
     *inner = 0u;
+    while (from < to && !isfinite(x[from])) { /* a missing input is no extreme */
+        ++from;
+    }
     if (to <= from) {
         return 0u;
     }
@@ -321,7 +339,7 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
                     hi = hi2 > hi ? hi2 : hi;
                 }
             }
-            fit_widened_domain(lo, hi, x[cfg->skip], &lo, &hi);
+            fit_widened_domain(lo, hi, fit_first_input(x, cfg->skip, n - cfg->delay), &lo, &hi);
             part.lo = lo;
             part.hi = hi;
         }

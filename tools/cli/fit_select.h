@@ -56,6 +56,10 @@
  * requires), so later inputs outside that range are predicted, not clamped. */
 #define FIT_WIDEN 1.0
 
+/* The first finite entry of x[from .. to) (NaN if none): the record's first
+ * input, a missing one (NaN) skipped. */
+double fit_first_input(const double *x, size_t from, size_t to);
+
 /* The domain of a widened candidate from the range [lo, hi] of the inputs
  * fitted: FIT_WIDEN of it on each side, but lo kept when the record's first
  * input `first` is within 1 % of the range of it (the model starts at rest
@@ -179,7 +183,8 @@ size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double 
 size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
                        size_t n, size_t max_delay);
 
-/* The range of x[from .. to) widened by `widen` times it on each side. */
+/* The range of the finite entries of x[from .. to) widened by `widen` times
+ * it on each side (NaN if none is finite). */
 void fit_input_range(const double *x, size_t from, size_t to, double widen, double *lo,
                      double *hi);
 
