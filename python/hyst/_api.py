@@ -18,11 +18,15 @@ DEFAULT_CAPACITY = 2048
 _METHODS = {"joint": 1, "reflect": 2}
 
 
-def _count(n):
-    """A table's count (intervals, rows) as the extension's C long long: a
-    count beyond that range becomes 2^62 or -1, which it refuses as out of
-    range (HystError ERR_ARG) like any other, instead of a TypeError."""
-    return max(min(int(n), 1 << 62), -1)
+def _count(n, name="count", least=-1):
+    """A count (a table's intervals or rows, a capacity) as the extension's C
+    integer: a count beyond its range becomes 2^62 or `least`, which the
+    library refuses as out of range (HystError: ERR_ARG, ERR_CAPACITY) like
+    any other, instead of a TypeError; a fraction is refused, never
+    truncated."""
+    if isinstance(n, (float, np.floating)) and not float(n).is_integer():
+        raise ValueError(f"{name} must be a whole number, not {n!r}")
+    return max(min(int(n), 1 << 62), least)
 
 
 def _samples(name, v):
@@ -100,7 +104,7 @@ def Model(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, deadba
     ``hyst sim --model`` runs it.
     """
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
-        list(map(float, coeffs)), float(lo), float(hi), int(capacity), False)
+        list(map(float, coeffs)), float(lo), float(hi), _count(capacity, "capacity", 0), False)
     if deadband:
         m.deadband = deadband
     return _with_creep(m, creep_tau, creep_weight)
@@ -133,7 +137,8 @@ def Compensator(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, 
     contribution (``creep_output``, from the drives before), whose lags then
     take that drive in: ``hyst inv --model``'s compensator, bit for bit."""
     return _with_creep(_variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
-        list(map(float, coeffs)), float(lo), float(hi), int(capacity), True, _count(intervals)),
+        list(map(float, coeffs)), float(lo), float(hi), _count(capacity, "capacity", 0), True,
+        _count(intervals, "intervals")),
         creep_tau, creep_weight)
 
 
@@ -142,7 +147,8 @@ def ModelFromPoints(xs, ys, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inve
     xs strictly increasing, ys increasing (the library's PWL curve kind);
     ``inverse=True`` gives its compensator."""
     return _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
-        list(map(float, xs)), list(map(float, ys)), int(capacity), bool(inverse))
+        list(map(float, xs)), list(map(float, ys)), _count(capacity, "capacity", 0),
+        bool(inverse))
 
 
 def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
@@ -175,8 +181,9 @@ def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
     as :func:`Model` (the model) and :func:`Compensator` (its compensator)
     take it."""
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
-        int(degree), float(lo), float(hi), float(y_lo), list(map(float, terms)), int(capacity),
-        bool(inverse), _count(intervals), None if rows is None else _count(rows))
+        int(degree), float(lo), float(hi), float(y_lo), list(map(float, terms)),
+        _count(capacity, "capacity", 0), bool(inverse), _count(intervals, "intervals"),
+        None if rows is None else _count(rows, "rows"))
     if deadband:
         m.deadband = deadband
     return _with_creep(m, creep_tau, creep_weight)
@@ -194,8 +201,8 @@ def ModelFromEverettGrid(knots, weights, y_lo, *, dtype=np.float64, capacity=DEF
     library refuses raises ``HystError``. ``creep_tau``, ``creep_weight``: a
     creep term, as :func:`Model` and :func:`Compensator` take it."""
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
-        list(map(float, knots)), list(map(float, weights)), float(y_lo), int(capacity),
-        bool(inverse))
+        list(map(float, knots)), list(map(float, weights)), float(y_lo),
+        _count(capacity, "capacity", 0), bool(inverse))
     if deadband:
         m.deadband = deadband
     return _with_creep(m, creep_tau, creep_weight)

@@ -145,3 +145,16 @@ def test_fit_refuses_what_it_cannot_use():
     with pytest.raises(ValueError, match="y is constant"):
         hyst.fit(x, np.full_like(y, np.nan))
     assert hyst.fit(x, y, delay=2.0, skip=np.int64(1)).delay == 2
+
+
+def test_counts_are_whole_numbers():
+    # a capacity or a table's size is a count: a fraction is refused, never
+    # truncated; a negative capacity is the library's "too small"
+    raises(hyst.Status.ERR_CAPACITY, hyst.Model, PAPER_F0, 0, 40, capacity=-1)
+    for make in (lambda: hyst.Model(PAPER_F0, 0, 40, capacity=8.5),
+                 lambda: hyst.Compensator(PAPER_F0, 0, 40, intervals=16.5),
+                 lambda: hyst.ModelFromEverett(1, 0, 10, 0, [1.0], inverse=True, intervals=4,
+                                               rows=2.5)):
+        with pytest.raises(ValueError, match="must be a whole number"):
+            make()
+    assert hyst.Model(PAPER_F0, 0, 40, capacity=8.0).capacity == 8
