@@ -904,7 +904,8 @@ int model_text_header_open(char *buf, size_t size, size_t *len, const char *name
                header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
     }
     if (m->kind == MODEL_TEXT_GRID) {
-        return over | header_grid(buf, size, len, name, m) | header_creep(buf, size, len, name, m);
+        return over | header_grid(buf, size, len, name, m) |
+               header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
     }
     over |= model_text_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,", name,
                               (unsigned)(m->ncoef - 1u));
