@@ -1084,6 +1084,26 @@ static int constant_column(const char *name, unsigned long col, const double *v,
                     name, col, v[0], (unsigned long)n, what, option);
 }
 
+/* 1 after a message if fewer than two of the @p n inputs x lie in --domain
+ * (the others are ignored): the fit would blame the degree. */
+static int domain_empty(const fit_opts_t *o, const char *name, const double *x, size_t n)
+{
+    double lo = x[0], hi = x[0];
+    size_t i, inside = 0u;
+    for (i = 0u; i < n; ++i) {
+        inside += x[i] >= o->cfg.lo && x[i] <= o->cfg.hi;
+        lo = x[i] < lo ? x[i] : lo;
+        hi = x[i] > hi ? x[i] : hi;
+    }
+    if (inside >= 2u) {
+        return 0;
+    }
+    return cli_fail("fit", "%s: option --domain: %lu of the %lu inputs used lie in [%.9g, %.9g] "
+                           "(the inputs span [%.9g, %.9g]): too few to fit",
+                    name, (unsigned long)inside, (unsigned long)n, (double)o->cfg.lo,
+                    (double)o->cfg.hi, lo, hi);
+}
+
 /* 1 after a message if the output of the @p n pairs (x[i], y[i]) clearly
  * falls as the input rises (correlation below -1/2): every kind's branches
  * rise with the input, so no model fits it, though the choice would pick the
@@ -1145,6 +1165,10 @@ int cmd_fit(int argc, char **argv)
                               "--delay %lu): a fit needs a record",
                        name, (unsigned long)t.n, (unsigned long)o.cfg.skip,
                        (unsigned long)o.cfg.delay);
+        cli_table_free(&t);
+        return 1;
+    }
+    if (pairs > 1u && o.cfg.lo < o.cfg.hi && domain_empty(&o, name, t.col[0] + o.cfg.skip, pairs)) {
         cli_table_free(&t);
         return 1;
     }
