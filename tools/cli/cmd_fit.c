@@ -318,6 +318,11 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     if (o->header_dir != NULL && o->header == NULL) {
         return cli_fail(a.cmd, "option --header-dir needs --header NAME");
     }
+    if (o->cols[0] == o->cols[1]) { /* an identity fitted exactly: never what was meant */
+        return cli_fail(a.cmd, "options --xcol and --ycol both name column %lu: the output would "
+                               "be the input",
+                        o->cols[0]);
+    }
     if (o->have_degree && o->rate_tau >= 0.0) {
         return cli_fail(a.cmd, "option --rate applies to the automatic choice (without --degree)");
     }
