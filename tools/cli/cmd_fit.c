@@ -279,6 +279,11 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             }
             o->header = v;
         } else if (cli_is(&a, "--save")) {
+            if (strcmp(v, "-") == 0) { /* standard input's name: not a file to create */
+                return cli_fail(a.cmd, "option --save: '-' is not a model file name (standard "
+                                       "output holds the results; name a file, or ./- for one "
+                                       "called -)");
+            }
             o->save = v;
         } else if (cli_is(&a, "--rate")) {
             double tau;
