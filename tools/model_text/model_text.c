@@ -932,6 +932,17 @@ static int identifier_start(char c)
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
 }
 
+/* The keywords of C99 to C23: not identifiers (a header declaring one does not compile). */
+static const char *const c_keywords[] = {
+    "_Alignas", "_Alignof", "_Atomic", "_BitInt", "_Bool", "_Complex", "_Decimal128",
+    "_Decimal32", "_Decimal64", "_Generic", "_Imaginary", "_Noreturn", "_Static_assert",
+    "_Thread_local", "alignas", "alignof", "auto", "bool", "break", "case", "char", "const",
+    "constexpr", "continue", "default", "do", "double", "else", "enum", "extern", "false",
+    "float", "for", "goto", "if", "inline", "int", "long", "nullptr", "register", "restrict",
+    "return", "short", "signed", "sizeof", "static", "static_assert", "struct", "switch",
+    "thread_local", "true", "typedef", "typeof", "typeof_unqual", "union", "unsigned", "void",
+    "volatile", "while"};
+
 int model_text_identifier(const char *s)
 {
     size_t i;
@@ -943,5 +954,13 @@ int model_text_identifier(const char *s)
             return 0;
         }
     }
-    return i < 200u;
+    if (i >= 200u) {
+        return 0;
+    }
+    for (i = 0u; i < sizeof c_keywords / sizeof c_keywords[0]; ++i) {
+        if (strcmp(s, c_keywords[i]) == 0) {
+            return 0;
+        }
+    }
+    return 1;
 }
