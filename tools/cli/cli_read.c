@@ -278,6 +278,20 @@ static int reader_end(cli_reader_t *r)
     return 0;
 }
 
+/* A word on the first data line is most often a column's name (a spreadsheet
+ * export's first row): the way to keep it, as a hint to a refusal. */
+static const char *names_hint(const cli_reader_t *r, const char *field)
+{
+    const char *p = field[0] == '"' || field[0] == '\'' ? field + 1 : field;
+    const int letter = (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || *p == '_';
+    char *end;
+    if (r->rows != 0u || !letter) {
+        return "";
+    }
+    (void)strtod(p, &end); /* "nan", "inf": numbers, not names */
+    return end == p ? " (a line of column names? start it with '#')" : "";
+}
+
 int cli_reader_next(cli_reader_t *r, double *v)
 {
     size_t nul;
@@ -368,12 +382,12 @@ int cli_reader_next(cli_reader_t *r, double *v)
                     if (comma != NULL) {
                         *comma = ',';
                     }
-                    return -cli_fail(r->cmd, "%s:%lu: field %lu: %s is not a finite number",
-                                     r->name, r->lineno, k, cli_quote(q, f));
+                    return -cli_fail(r->cmd, "%s:%lu: field %lu: %s is not a finite number%s",
+                                     r->name, r->lineno, k, cli_quote(q, f), names_hint(r, f));
                 }
             } else if (!cli_parse_double(f, &v[c])) {
-                return -cli_fail(r->cmd, "%s:%lu: field %lu: %s is not a finite number", r->name,
-                                 r->lineno, k, cli_quote(q, f));
+                return -cli_fail(r->cmd, "%s:%lu: field %lu: %s is not a finite number%s",
+                                 r->name, r->lineno, k, cli_quote(q, f), names_hint(r, f));
             }
         }
         ++r->rows;
