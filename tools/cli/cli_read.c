@@ -22,9 +22,10 @@ static int is_delim(char c, int dc) { return c == ';' || (c == ',' && !dc); }
  * without newlines). */
 #define CLI_MAX_LINE (16ul << 20)
 
-/* One line into *buf (grown); 0 at end of file, -1 out of memory, -2 not
- * shorter than CLI_MAX_LINE. *nul: 0, or the 1-based column of the line's first NUL
- * byte (the line is then cut there as a C string). */
+/* One line, ended by LF, CR LF or CR, into *buf (grown); 0 at end of file,
+ * -1 out of memory, -2 not shorter than CLI_MAX_LINE. *nul: 0, or the
+ * 1-based column of the line's first NUL byte (the line is then cut there as
+ * a C string). */
 static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
 {
     size_t len = 0u;
@@ -47,6 +48,13 @@ static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
         if (c == '\n') {
             break;
         }
+        if (c == '\r') { /* CR LF, or CR alone (an old Mac export), as model files */
+            const int next = getc_unlocked(f);
+            if (next != '\n' && next != EOF) {
+                (void)ungetc(next, f);
+            }
+            break;
+        }
         if (c == '\0' && *nul == 0u) {
             *nul = len + 1u;
         }
@@ -54,9 +62,6 @@ static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
     }
     if (c == EOF && len == 0u) {
         return 0;
-    }
-    if (len > 0u && (*buf)[len - 1u] == '\r') {
-        --len;
     }
     (*buf)[len] = '\0';
     return 1;
