@@ -70,6 +70,13 @@ for d in "" -DHYST_USE_DOUBLE; do
         || fail "header does not compile ($d)"
     ./use || fail "the header's grid refused ($d)"
 done
+# a rate term on a grid: sim --model adds it, so the header declares it as for
+# the other kinds (it was dropped, the header including hyst/rate.h for nothing)
+{ cat one.hyst; printf 'rate_tau 4\nrate_weight 0.25\n'; } > rate.hyst
+"$tool" header --model rate.hyst grid_rate 2> /dev/null || fail "header of a grid with a rate term"
+grep -q 'static const hyst_wide_t grid_rate_rate_tau = HYST_REAL_C(4\.0);' grid_rate.h &&
+    grep -q 'static const hyst_wide_t grid_rate_rate_weight = HYST_REAL_C(0\.25);' grid_rate.h ||
+    fail "header of a grid with a rate term: $(grep -c rate grid_rate.h) lines name it, no declaration"
 # header --compensator: the same grid, the compensator built from it in firmware gives
 # inv --model's drives; no table of its own (--intervals, --sealed refused)
 "$tool" header --model one.hyst --compensator grid_comp 2> /dev/null || fail "header --compensator"

@@ -64,6 +64,13 @@ stdin_directory) # a directory as standard input: named as such, not "read error
     expect_fail "<stdin>: is a directory" inv --poly 1,0 --range 0,1 < .
     expect_fail "<stdin>: is a directory" fit --degree 1 - < .
     ;;
+cr_line_ends) # lines ended by CR alone (an old Mac export): read as lines, as model files
+    printf '# x\r0\r1\r\r2\r' > cr.txt
+    "$tool" pi --weights 1 --thresholds 0 cr.txt > out.txt 2> err.txt || fail "CR: $(cat err.txt)"
+    [ "$(tr '\n' ' ' < out.txt)" = "0 1 2 " ] || fail "CR: $(cat -v out.txt)"
+    printf '0 1\r\n1 x\r2 3\r' > crmix.txt # CR LF and CR: line 2 named
+    expect_fail "crmix.txt:2: field 2: 'x' is not a finite number" fit --degree 1 crmix.txt
+    ;;
 *)
     fail "unknown case '$case'"
     ;;

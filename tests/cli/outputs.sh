@@ -44,6 +44,29 @@ cmp -s f0.h f0.orig || fail "an existing header was replaced"
 "$tool" fit --degree 2 --save m.hyst --header f1 rec.csv > /dev/null 2>&1 || fail "distinct outputs"
 [ -s m.hyst ] && [ -s f1.h ] || fail "distinct outputs not written"
 
+# a target that is not a regular file: a pipe (or a device: as root, --save /dev/null
+# replaced the system's /dev/null with the model's text) is refused, left as it was;
+# a symbolic link is written through: the file it names replaced, the link kept
+mkfifo pipe.hyst
+refused "pipe.hyst: not a regular file (a device, pipe or socket): cannot write the model file" \
+    fit --degree 2 --save pipe.hyst rec.csv
+[ -p pipe.hyst ] || fail "the pipe was replaced"
+mkfifo pipe.h
+refused "pipe.h: not a regular file (a device, pipe or socket): cannot write the header" \
+    fit --degree 2 --header pipe rec.csv
+[ -p pipe.h ] || fail "the pipe was replaced"
+refused "pipe.h: not a regular file" header --model m.hyst pipe
+[ -p pipe.h ] || fail "the pipe was replaced by header"
+mkdir -p models
+cp m.hyst models/v1.hyst
+ln -s models/v1.hyst link.hyst
+"$tool" fit --degree 1 --save link.hyst rec.csv > /dev/null 2>&1 || fail "--save through a link"
+[ -L link.hyst ] || fail "--save replaced the symbolic link by a file"
+grep -q '^coeffs [^ ]* [^ ]*$' models/v1.hyst || fail "--save did not write the file the link names"
+ln -s nowhere/m.hyst dangling.hyst
+refused "dangling.hyst: a symbolic link to nothing" fit --degree 1 --save dangling.hyst rec.csv
+[ -L dangling.hyst ] || fail "the dangling link was replaced"
+
 # a model file with lo > hi: its reader's refusal, naming file, line and field
 printf 'hyst-model-text 1\nkind poly\nhi 1\nlo 2\ncoeffs 1 0\n' > inverted.hyst
 echo 1.5 > x.txt

@@ -172,6 +172,11 @@ int cli_header_sealed(const char *cmd, const char *model, char *buf, size_t size
  * which checks that E is monotone on the triangle): 0, or 1 after a message
  * with the library's reason. */
 int cli_everett_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c);
+/* f0 of --poly/--range or of a poly model (model_path, else NULL), checked as
+ * hyst_init() checks it (increasing on [LO, HI]): 0, or 1 after a message
+ * naming the option or the model file, and where the slope turns. */
+int cli_make_poly(const char *cmd, const char *model_path, const double *coeffs, size_t ncoef,
+                  const double *range, size_t nrange, hyst_poly_t *f0);
 /* The same for a model of kind everett_grid, its table in table[0..CLI_GRID_TABLE_LEN). */
 #define CLI_MODEL_GRID MODEL_TEXT_GRID
 #define CLI_GRID_TABLE_LEN HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)

@@ -22,9 +22,10 @@ static int is_delim(char c, int dc) { return c == ';' || (c == ',' && !dc); }
  * without newlines). */
 #define CLI_MAX_LINE (16ul << 20)
 
-/* One line into *buf (grown); 0 at end of file, -1 out of memory, -2 not
- * shorter than CLI_MAX_LINE. *nul: 0, or the 1-based column of the line's first NUL
- * byte (the line is then cut there as a C string). */
+/* One line, ended by LF, CR LF or CR, into *buf (grown); 0 at end of file,
+ * -1 out of memory, -2 not shorter than CLI_MAX_LINE. *nul: 0, or the
+ * 1-based column of the line's first NUL byte (the line is then cut there as
+ * a C string). */
 static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
 {
     size_t len = 0u;
@@ -47,6 +48,13 @@ static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
         if (c == '\n') {
             break;
         }
+        if (c == '\r') { /* CR LF, or CR alone (an old Mac export), as model files */
+            const int next = getc_unlocked(f);
+            if (next != '\n' && next != EOF) {
+                (void)ungetc(next, f);
+            }
+            break;
+        }
         if (c == '\0' && *nul == 0u) {
             *nul = len + 1u;
         }
@@ -54,9 +62,6 @@ static int read_line(FILE *f, char **buf, size_t *cap, size_t *nul)
     }
     if (c == EOF && len == 0u) {
         return 0;
-    }
-    if (len > 0u && (*buf)[len - 1u] == '\r') {
-        --len;
     }
     (*buf)[len] = '\0';
     return 1;
@@ -278,6 +283,20 @@ static int reader_end(cli_reader_t *r)
     return 0;
 }
 
+/* A word on the first data line is most often a column's name (a spreadsheet
+ * export's first row): the way to keep it, as a hint to a refusal. */
+static const char *names_hint(const cli_reader_t *r, const char *field)
+{
+    const char *p = field[0] == '"' || field[0] == '\'' ? field + 1 : field;
+    const int letter = (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || *p == '_';
+    char *end;
+    if (r->rows != 0u || !letter) {
+        return "";
+    }
+    (void)strtod(p, &end); /* "nan", "inf": numbers, not names */
+    return end == p ? " (a line of column names? start it with '#')" : "";
+}
+
 int cli_reader_next(cli_reader_t *r, double *v)
 {
     size_t nul;
@@ -368,12 +387,12 @@ int cli_reader_next(cli_reader_t *r, double *v)
                     if (comma != NULL) {
                         *comma = ',';
                     }
-                    return -cli_fail(r->cmd, "%s:%lu: field %lu: %s is not a finite number",
-                                     r->name, r->lineno, k, cli_quote(q, f));
+                    return -cli_fail(r->cmd, "%s:%lu: field %lu: %s is not a finite number%s",
+                                     r->name, r->lineno, k, cli_quote(q, f), names_hint(r, f));
                 }
             } else if (!cli_parse_double(f, &v[c])) {
-                return -cli_fail(r->cmd, "%s:%lu: field %lu: %s is not a finite number", r->name,
-                                 r->lineno, k, cli_quote(q, f));
+                return -cli_fail(r->cmd, "%s:%lu: field %lu: %s is not a finite number%s",
+                                 r->name, r->lineno, k, cli_quote(q, f), names_hint(r, f));
             }
         }
         ++r->rows;

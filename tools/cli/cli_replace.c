@@ -4,6 +4,9 @@
  * and closed, each step checked; only the caller's commit renames it over
  * the target (atomic on POSIX file systems) and syncs the directory. Any
  * failure before removes the temporary file and leaves the target as it was. */
+#ifndef _XOPEN_SOURCE
+#define _XOPEN_SOURCE 700 /* realpath() (POSIX, in glibc's headers under XSI) */
+#endif
 #include "cli.h"
 
 #include <errno.h>
@@ -41,15 +44,29 @@ int cli_replace_check(cli_replace_t *r, const char *cmd, const char *what, const
 {
     struct stat st;
     const char *slash;
+    char *target = NULL;
     size_t n = strlen(path);
     r->cmd = cmd;
     r->what = what;
     r->tmp[0] = '\0';
+    if (n > 0u && lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
+        /* written through: the file the link names is replaced, the link kept */
+        if ((target = realpath(path, NULL)) == NULL) {
+            const int err = errno;
+            return cli_fail(cmd, "%s: a symbolic link to nothing (%s): cannot write the %s",
+                            cli_file_name(path), strerror(err), what);
+        }
+        path = target;
+        n = strlen(path);
+    }
     if (n == 0u || n + 8u > sizeof r->path) {
+        free(target);
         return cli_fail(cmd, "%s path empty or longer than %u bytes", what,
                         (unsigned)(sizeof r->path - 8u));
     }
     memcpy(r->path, path, n + 1u);
+    free(target);
+    path = r->path;
     /* the directory to sync after the rename: the path's, or "." */
     slash = strrchr(path, '/');
     if (slash == NULL) {
@@ -62,6 +79,12 @@ int cli_replace_check(cli_replace_t *r, const char *cmd, const char *what, const
     }
     if (stat(r->path, &st) == 0 && S_ISDIR(st.st_mode)) {
         return cli_fail(cmd, "%s: is a directory: cannot write the %s", r->path, what);
+    }
+    if (stat(r->path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        /* a rename would put a file in its place (as root, /dev/null's) */
+        return cli_fail(cmd, "%s: not a regular file (a device, pipe or socket): cannot write "
+                             "the %s",
+                        r->path, what);
     }
     return 0;
 }

@@ -37,8 +37,8 @@ typedef struct tcm_run {
  * model's) and holds what the trajectory needs, not one per sample. */
 #define TCM_CAP0 256u
 
-static int make_poly(const char *cmd, const char *model_path, const double *coeffs, size_t ncoef,
-                     const double *range, size_t nrange, hyst_poly_t *f0)
+int cli_make_poly(const char *cmd, const char *model_path, const double *coeffs, size_t ncoef,
+                  const double *range, size_t nrange, hyst_poly_t *f0)
 {
     hyst_curve_t curve;
     hyst_status_t st;
@@ -379,7 +379,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
             return 1;
         }
     }
-    /* the kind known (else make_poly() says what is missing): --rows is the everett table's */
+    /* the kind known (else cli_make_poly() says what is missing): --rows is the everett table's */
     if (model_path != NULL || ncoef > 0u) {
         if (cli_table_sizes(cmd, model.kind == CLI_MODEL_EVERETT, &intervals, &rows) != 0) {
             return 1;
@@ -432,7 +432,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     if (model.kind == CLI_MODEL_EVERETT || model.kind == CLI_MODEL_GRID) {
         memset(&f0, 0, sizeof f0);
         r.curve = &everett;
-    } else if (make_poly(cmd, model_path, coeffs, ncoef, range, nrange, &f0) != 0) {
+    } else if (cli_make_poly(cmd, model_path, coeffs, ncoef, range, nrange, &f0) != 0) {
         return 1;
     } else {
         r.curve = NULL;

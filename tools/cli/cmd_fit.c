@@ -279,6 +279,11 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             }
             o->header = v;
         } else if (cli_is(&a, "--save")) {
+            if (strcmp(v, "-") == 0) { /* standard input's name: not a file to create */
+                return cli_fail(a.cmd, "option --save: '-' is not a model file name (standard "
+                                       "output holds the results; name a file, or ./- for one "
+                                       "called -)");
+            }
             o->save = v;
         } else if (cli_is(&a, "--rate")) {
             double tau;
@@ -317,6 +322,11 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     }
     if (o->header_dir != NULL && o->header == NULL) {
         return cli_fail(a.cmd, "option --header-dir needs --header NAME");
+    }
+    if (o->cols[0] == o->cols[1]) { /* an identity fitted exactly: never what was meant */
+        return cli_fail(a.cmd, "options --xcol and --ycol both name column %lu: the output would "
+                               "be the input",
+                        o->cols[0]);
     }
     if (o->have_degree && o->rate_tau >= 0.0) {
         return cli_fail(a.cmd, "option --rate applies to the automatic choice (without --degree)");
@@ -1084,6 +1094,55 @@ static int constant_column(const char *name, unsigned long col, const double *v,
                     name, col, v[0], (unsigned long)n, what, option);
 }
 
+/* 1 after a message if fewer than two of the @p n inputs x lie in --domain
+ * (the others are ignored): the fit would blame the degree. */
+static int domain_empty(const fit_opts_t *o, const char *name, const double *x, size_t n)
+{
+    double lo = x[0], hi = x[0];
+    size_t i, inside = 0u;
+    for (i = 0u; i < n; ++i) {
+        inside += x[i] >= o->cfg.lo && x[i] <= o->cfg.hi;
+        lo = x[i] < lo ? x[i] : lo;
+        hi = x[i] > hi ? x[i] : hi;
+    }
+    if (inside >= 2u) {
+        return 0;
+    }
+    return cli_fail("fit", "%s: option --domain: %lu of the %lu inputs used lie in [%.9g, %.9g] "
+                           "(the inputs span [%.9g, %.9g]): too few to fit",
+                    name, (unsigned long)inside, (unsigned long)n, (double)o->cfg.lo,
+                    (double)o->cfg.hi, lo, hi);
+}
+
+/* 1 after a message if the output of the @p n pairs (x[i], y[i]) clearly
+ * falls as the input rises (correlation below -1/2): every kind's branches
+ * rise with the input, so no model fits it, though the choice would pick the
+ * least bad (a grid of masses >= 0 is always accepted): a sensor of the
+ * opposite sign is the usual cause. */
+static int falling_output(const fit_opts_t *o, const char *name, const double *x,
+                          const double *y, size_t n)
+{
+    double mx = 0.0, my = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0, r;
+    size_t i;
+    for (i = 0u; i < n; ++i) {
+        mx += x[i] / (double)n;
+        my += y[i] / (double)n;
+    }
+    for (i = 0u; i < n; ++i) {
+        sxx += (x[i] - mx) * (x[i] - mx);
+        syy += (y[i] - my) * (y[i] - my);
+        sxy += (x[i] - mx) * (y[i] - my);
+    }
+    r = sxy / sqrt(sxx) / sqrt(syy); /* NaN if the sums overflow: the fit says "rescale" */
+    if (!(r < -0.5)) {
+        return 0;
+    }
+    return cli_fail("fit", "%s: the output (column %lu) falls as the input (column %lu) rises "
+                           "(correlation %.3g): every model of hyst rises with its input; negate "
+                           "the output column",
+                    name, o->cols[1], o->cols[0], r);
+}
+
 int cmd_fit(int argc, char **argv)
 {
     fit_opts_t o;
@@ -1111,10 +1170,24 @@ int cmd_fit(int argc, char **argv)
         return 1;
     }
     pairs = t.n > o.cfg.skip + o.cfg.delay ? t.n - o.cfg.skip - o.cfg.delay : 0u;
+    if (pairs == 1u) { /* not a column to choose again, as the constant check would say */
+        (void)cli_fail("fit", "%s: one sample to fit (of the %lu read, after --skip %lu and "
+                              "--delay %lu): a fit needs a record",
+                       name, (unsigned long)t.n, (unsigned long)o.cfg.skip,
+                       (unsigned long)o.cfg.delay);
+        cli_table_free(&t);
+        return 1;
+    }
+    if (pairs > 1u && o.cfg.lo < o.cfg.hi && domain_empty(&o, name, t.col[0] + o.cfg.skip, pairs)) {
+        cli_table_free(&t);
+        return 1;
+    }
     if (pairs > 0u &&
         (constant_column(name, o.cols[0], t.col[0] + o.cfg.skip, pairs, "input", "--xcol") ||
          constant_column(name, o.cols[1], t.col[1] + o.cfg.skip + o.cfg.delay, pairs, "output",
-                         "--ycol"))) {
+                         "--ycol") ||
+         falling_output(&o, name, t.col[0] + o.cfg.skip, t.col[1] + o.cfg.skip + o.cfg.delay,
+                        pairs))) {
         cli_table_free(&t);
         return 1;
     }

@@ -5,9 +5,11 @@
 #include "cli.h"
 #include "hyst/hyst.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
 {
@@ -33,9 +35,15 @@ int cli_model_parse(const char *cmd, const char *path, FILE *in, cli_model_t *m)
 int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
 {
     int rc;
+    struct stat st;
     FILE *in = fopen(path, "rb");
     if (in == NULL) {
-        return cli_fail(cmd, "%s: cannot open the model file", path);
+        return cli_fail(cmd, "%s: cannot open the model file: %s", path, strerror(errno));
+    }
+    /* fopen() opens a directory for reading; the first read fails (EISDIR) */
+    if (fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) {
+        (void)fclose(in);
+        return cli_fail(cmd, "%s: is a directory, not a model file", path);
     }
     rc = cli_model_parse(cmd, path, in, m);
     (void)fclose(in);

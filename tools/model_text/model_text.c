@@ -904,7 +904,8 @@ int model_text_header_open(char *buf, size_t size, size_t *len, const char *name
                header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
     }
     if (m->kind == MODEL_TEXT_GRID) {
-        return over | header_grid(buf, size, len, name, m) | header_creep(buf, size, len, name, m);
+        return over | header_grid(buf, size, len, name, m) |
+               header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
     }
     over |= model_text_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,", name,
                               (unsigned)(m->ncoef - 1u));
@@ -931,6 +932,17 @@ static int identifier_start(char c)
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
 }
 
+/* The keywords of C99 to C23: not identifiers (a header declaring one does not compile). */
+static const char *const c_keywords[] = {
+    "_Alignas", "_Alignof", "_Atomic", "_BitInt", "_Bool", "_Complex", "_Decimal128",
+    "_Decimal32", "_Decimal64", "_Generic", "_Imaginary", "_Noreturn", "_Static_assert",
+    "_Thread_local", "alignas", "alignof", "auto", "bool", "break", "case", "char", "const",
+    "constexpr", "continue", "default", "do", "double", "else", "enum", "extern", "false",
+    "float", "for", "goto", "if", "inline", "int", "long", "nullptr", "register", "restrict",
+    "return", "short", "signed", "sizeof", "static", "static_assert", "struct", "switch",
+    "thread_local", "true", "typedef", "typeof", "typeof_unqual", "union", "unsigned", "void",
+    "volatile", "while"};
+
 int model_text_identifier(const char *s)
 {
     size_t i;
@@ -942,5 +954,13 @@ int model_text_identifier(const char *s)
             return 0;
         }
     }
-    return i < 200u;
+    if (i >= 200u) {
+        return 0;
+    }
+    for (i = 0u; i < sizeof c_keywords / sizeof c_keywords[0]; ++i) {
+        if (strcmp(s, c_keywords[i]) == 0) {
+            return 0;
+        }
+    }
+    return 1;
 }

@@ -135,7 +135,8 @@ void model_text_poly_as_read(const model_text_t *m, int f32, hyst_poly_t *p);
 int model_text_append_real(char *buf, size_t size, size_t *len, const char *sep, double v,
                            int f32);
 
-/* 1 if s is a C identifier of fewer than 200 characters (a header's NAME). */
+/* 1 if s is a C identifier of fewer than 200 characters, not a keyword of
+ * C99 to C23 (a header's NAME). */
 int model_text_identifier(const char *s);
 
 /* The model's delay in samples, its fraction included. */
