@@ -68,6 +68,12 @@ function text = hyst_header(model, name, varargin)
   end
   if strcmp(p.kind, 'everett')
     check_everett(p, caller);
+  elseif strcmp(p.kind, 'poly')
+    try  % f0 as firmware's init would take it: the gateway inits it and runs no sample
+      hyst_mex('sim', p.coeffs, p.lo, p.hi, zeros(0, 1), 2, 0);
+    catch err
+      error(err.identifier, '%s: the model is refused: %s', caller, err.message);
+    end
   end
   if strcmp(p.kind, 'everett_grid')
     if c && (~isempty(opts.intervals) || ~isempty(opts.rows))

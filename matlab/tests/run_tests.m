@@ -23,7 +23,8 @@ function failed = run_tests(root, ref, cli)
            @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
            @t_rate_refused, @t_rate_fit_as_cli, @t_grid_sim_inv_equal_cli, @t_grid_written_as_cli, ...
            @t_grid_header_equals_cli, @t_grid_refused, @t_grid_fit_as_cli, ...
-           @t_grid_chosen_as_cli, @t_fit_missing_first_input, @t_fit_refuses_record};
+           @t_grid_chosen_as_cli, @t_fit_missing_first_input, @t_fit_refuses_record, ...
+           @t_save_writes_regular_files_only, @t_header_refuses_what_init_refuses};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -340,6 +341,47 @@ function t_usage_errors(~)
   expect_error('hyst:usage', @() hyst_mex('nosuchcommand'));
   check(strcmp(hyst_mex('version'), regexprep(hyst_mex('version'), '[^0-9.]', '')) && ...
         numel(strsplit(hyst_mex('version'), '.')) == 3, 'version %s', hyst_mex('version'));
+end
+
+function t_save_writes_regular_files_only(ctx)
+  % as hyst fit --save: a link is written through, kept; a directory, a pipe
+  % or a link to nothing is refused, left as it was
+  d = fullfile(ctx.tmp, 'regular');
+  mkdir(d);
+  f = struct('coeffs', [1 0], 'lo', 0, 'hi', 1);
+  real = fullfile(d, 'real.hyst');
+  fid = fopen(real, 'w');
+  fputs(fid, 'old');
+  fclose(fid);
+  link = fullfile(d, 'link.hyst');
+  symlink(real, link);
+  hyst_model_save(link, f);
+  [st, err] = lstat(link);
+  g = hyst_model_load(real);
+  check(err == 0 && S_ISLNK(st.mode) && isequal(g.coeffs(:)', [1 0]), 'the link written through');
+  pipe = fullfile(d, 'pipe');
+  check(mkfifo(pipe, 600) == 0, 'mkfifo');  % Octave reads the mode's digits as octal
+  dangling = fullfile(d, 'dangling.hyst');
+  symlink(fullfile(d, 'nowhere', 'm.hyst'), dangling);
+  cases = {d, 'is a directory'; pipe, 'not a regular file'; dangling, 'link to nothing'};
+  for i = 1:size(cases, 1)
+    before = sort({dir(d).name});
+    msg = error_message(@() hyst_model_save(cases{i, 1}, f));
+    check(~isempty(strfind(msg, cases{i, 2})), 'case %d: message "%s"', i, msg);
+    check(isequal(sort({dir(d).name}), before), 'case %d: a file left beside', i);
+  end
+  [st, err] = lstat(pipe);
+  check(err == 0 && S_ISFIFO(st.mode), 'the pipe replaced');
+end
+
+function t_header_refuses_what_init_refuses(~)
+  % as hyst header: no header of a model whose init would fail
+  expect_error('hyst:ERR_NOT_INCREASING', ...
+               @() hyst_header(struct('coeffs', [-1 0], 'lo', 0, 'hi', 1), 'falls'));
+  e = struct('kind', 'everett', 'degree', 1, 'lo', 0, 'hi', 1, 'y_lo', 0, 'terms', -1);
+  expect_error('hyst:ERR_NOT_MONOTONE', @() hyst_header(e, 'e'));
+  t = hyst_header(struct('coeffs', [1 0], 'lo', 0, 'hi', 1), 'rises');
+  check(~isempty(strfind(t, 'hyst_poly_t rises')), 'header %s', t);
 end
 
 function t_save_load_roundtrip(ctx)

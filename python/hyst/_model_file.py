@@ -177,6 +177,7 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
     text = _model_call("model_write", kind, lo, hi, delay, coeffs, degree, y_lo, terms,
                        creep_tau, creep_weight, identified=identified, rate=rate, knots=knots,
                        weights=weights)
+    path = _regular_target(path)
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=os.path.basename(path) + ".")
     try:
@@ -189,6 +190,39 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
         if os.path.exists(tmp):
             os.remove(tmp)
         raise
+
+
+def _regular_target(path):
+    """The file a model is written to, as hyst fit --save writes it: a
+    symbolic link is written through (the file it names replaced, the link
+    kept); a link to nothing, a directory, a device, a pipe or a socket is
+    refused (OSError), nothing written: a rename would put a file in its
+    place."""
+    path = os.fspath(path)
+    if os.path.islink(path):
+        target = os.path.realpath(path)
+        if not os.path.exists(target):
+            raise FileNotFoundError(f"{path}: a symbolic link to nothing: cannot write the model")
+        path = target
+    if os.path.isdir(path):
+        raise IsADirectoryError(f"{path}: is a directory: cannot write the model")
+    if os.path.exists(path) and not os.path.isfile(path):
+        raise OSError(f"{path}: not a regular file (a device, pipe or socket): cannot write "
+                      "the model")
+    return path
+
+
+def _check_curve(kind, coeffs, lo, hi, degree, y_lo, terms, knots, weights):
+    """Raises the library's HystError (ERR_NOT_INCREASING, ERR_NOT_MONOTONE...)
+    for a curve firmware's init would refuse, as hyst header refuses it: no
+    header of a model that cannot run."""
+    from . import _api  # the constructors; imported here, _api imports this module
+    if kind == "everett":
+        _api.ModelFromEverett(degree, lo, hi, y_lo, terms, capacity=2)
+    elif kind == "everett_grid":
+        _api.ModelFromEverettGrid(knots, weights, y_lo, capacity=2)
+    else:
+        _api.Model(coeffs, lo, hi, capacity=2)
 
 
 def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows):
@@ -267,6 +301,7 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
         what = (f"major ascending curve f0,\n * degree {len(coeffs) - 1}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
+    _check_curve(kind, coeffs, lo, hi, degree, y_lo, terms, knots, weights)
     head = _model_call("model_header", kind, lo, hi, 0, coeffs, degree, y_lo, terms, creep_tau,
                        creep_weight, name, True, rate=rate, knots=knots, weights=weights)
     table = (_compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows)

@@ -330,3 +330,38 @@ def test_everett_header_compiles_and_reproduces_the_model(tmp_path):
     # the same header from the model file, passed whole
     f.save(tmp_path / "e.hyst")
     assert hyst.header_text("e_fit", **hyst.load_model(tmp_path / "e.hyst")) == text
+
+
+def test_save_writes_regular_files_only(tmp_path):
+    # as hyst fit --save: a link is written through, kept; a directory, a pipe
+    # or a link to nothing is refused, left as it was, with no file beside it
+    f0 = dict(coeffs=[1.0, 0.0], lo=0.0, hi=1.0)
+    real = tmp_path / "real.hyst"
+    real.write_text("old")
+    link = tmp_path / "link.hyst"
+    link.symlink_to(real)
+    hyst.save_model(link, **f0)
+    assert link.is_symlink() and hyst.load_model(real)["coeffs"] == [1.0, 0.0]
+    pipe = tmp_path / "pipe"
+    os.mkfifo(pipe)
+    dangling = tmp_path / "dangling.hyst"
+    dangling.symlink_to(tmp_path / "nowhere" / "m.hyst")
+    for target, error, said in ((tmp_path, IsADirectoryError, "is a directory"),
+                                (pipe, OSError, "not a regular file"),
+                                (dangling, FileNotFoundError, "link to nothing")):
+        before = sorted(p.name for p in tmp_path.iterdir())
+        with pytest.raises(error, match=said):
+            hyst.save_model(target, **f0)
+        assert sorted(p.name for p in tmp_path.iterdir()) == before
+    assert pipe.is_fifo() and dangling.is_symlink()
+
+
+def test_header_of_a_curve_firmware_refuses_is_refused():
+    # as hyst header: no header of a model whose init would fail
+    with pytest.raises(hyst.HystError) as err:
+        hyst.header_text("falls", [-1.0, 0.0], 0.0, 1.0)
+    assert err.value.status == hyst.Status.ERR_NOT_INCREASING
+    with pytest.raises(hyst.HystError) as err:
+        hyst.header_text("e", kind="everett", degree=1, lo=0.0, hi=1.0, y_lo=0.0, terms=[-1.0])
+    assert err.value.status == hyst.Status.ERR_NOT_MONOTONE
+    assert "hyst_poly_t rises" in hyst.header_text("rises", [1.0, 0.0], 0.0, 1.0)
