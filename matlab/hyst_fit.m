@@ -358,9 +358,10 @@ function tau = creep_option(c, what)
 end
 
 % The record as 'hyst fit' takes a file: NaN marks a missing sample; an
-% infinite one, skip or delay not a whole number >= 0 or a column that
-% does not vary is refused (hyst:usage), naming it; none left is the
-% library's ERR_ARG, as x and y of different lengths are (the gateway's).
+% infinite one, skip or delay not a whole number >= 0, a column that does
+% not vary or a response that falls as the drive rises is refused
+% (hyst:usage), naming it; none left is the library's ERR_ARG, as x and y
+% of different lengths are (the gateway's).
 function check_record(x, y, opts)
   if ~(hyst_is_whole(opts.skip) && opts.skip >= 0)
     error('hyst:usage', 'hyst_fit: skip must be a whole number of samples >= 0');
@@ -397,5 +398,13 @@ function check_record(x, y, opts)
       error('hyst:usage', 'hyst_fit: %s is constant (NaN aside): a record''s %s must vary', ...
             names{i}, roles{i});
     end
+  end
+  % a response that clearly falls as the drive rises: every model of hyst
+  % rises with its input (a sensor of the opposite sign, as hyst fit says)
+  ok = ~isnan(used{1}) & ~isnan(used{2});
+  r = corrcoef(used{1}(ok), used{2}(ok));
+  if numel(r) == 4 && r(1, 2) < -0.5
+    error('hyst:usage', ['hyst_fit: y falls as x rises (correlation %.3g): every model of ' ...
+                         'hyst rises with its input; negate y'], r(1, 2));
   end
 end

@@ -61,6 +61,21 @@ def _varies(name, v, what):
                          + f"): a record's {what} must vary")
 
 
+def _rises(x, y):
+    """Refuses, as hyst fit does, a record whose response clearly falls as
+    its drive rises (correlation below -1/2): every model of hyst rises
+    with its input, so the choice could only pick the least bad; a sensor of
+    the opposite sign is the usual cause."""
+    if len(x) != len(y):
+        return  # the library's ERR_ARG says so
+    ok = ~(np.isnan(x) | np.isnan(y))
+    if np.count_nonzero(ok) > 1:
+        r = float(np.corrcoef(x[ok], y[ok])[0, 1])
+        if r < -0.5:
+            raise ValueError(f"y falls as x rises (correlation {r:.3g}): every model of hyst "
+                             "rises with its input; negate y")
+
+
 def _variant(dtype, f32, f64):
     dt = np.dtype(dtype)
     if dt == np.float64:
@@ -642,6 +657,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
                         f"leave no sample of the {len(x)} given")
     _varies("x", x[skip:len(x) - (delay or 0)], "drive")
     _varies("y", y[skip + (delay or 0):], "response")
+    _rises(x[skip:len(x) - (delay or 0)], y[skip + (delay or 0):])
     cands, chosen, with_creep, fraction, search = None, None, False, 0.0, {}
     if degree is None:
         kinds = KINDS if kind is None else (kind,)

@@ -142,6 +142,8 @@ def test_fit_refuses_what_it_cannot_use():
     assert err.value.status == hyst.Status.ERR_ARG
     with pytest.raises(ValueError, match="x is constant"):
         hyst.fit(np.ones(50), np.arange(50.0))
+    with pytest.raises(ValueError, match="y falls as x rises"):
+        hyst.fit(x, -y)
     with pytest.raises(ValueError, match="y is constant"):
         hyst.fit(x, np.full_like(y, np.nan))
     assert hyst.fit(x, y, delay=2.0, skip=np.int64(1)).delay == 2
