@@ -159,6 +159,7 @@ function f = hyst_fit(x, y, varargin)
   f = fit_part(opts, method, domain, tdegree, x, y);
   if ~isempty(cands)
     f.candidates = cands;
+    f.excitation = excitation(x, double(opts.skip), numel(x) - double(opts.delay));
   end
   % the delay the model was fitted at: HYST_MODEL_SAVE writes it,
   % HYST_HEADER states it
@@ -407,4 +408,22 @@ function check_record(x, y, opts)
     error('hyst:usage', ['hyst_fit: y falls as x rises (correlation %.3g): every model of ' ...
                          'hyst rises with its input; negate y'], r(1, 2));
   end
+end
+
+% What the hold-out's last third tested the automatic choice on (the
+% gateway's excitation: fit_holdout_excitation(), as 'hyst fit' prints it),
+% with hyst fit's warnings (hyst:excitation).
+function e = excitation(x, skip, finish)
+  e = hyst_mex('excitation', x, skip, finish);
+  if e.span < e.min_span
+    warning('hyst:excitation', ['hyst_fit: the last third''s inputs span %.3g %% of the ' ...
+                                'record''s range: the choice was not tested over the rest ' ...
+                                'of it'], 100 * e.span);
+  end
+  if e.minor == 0
+    warning('hyst:excitation', ['hyst_fit: the last third holds no minor loop (every ' ...
+                                'reversal at an end of the inputs'' range): the choice was ' ...
+                                'not tested on minor loops']);
+  end
+  e = rmfield(e, 'min_span');
 end

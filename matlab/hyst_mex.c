@@ -33,6 +33,7 @@
  *   f = hyst_mex('fit_grid', x, y, intervals, lo, hi, skip, delay)
  *   [delay, fraction, x] = hyst_mex('given_delay', x, y, kind, degree, t_degree, method, lo,
  *                                   hi, skip)
+ *   e = hyst_mex('excitation', x, skip, end)   what the hold-out tests a choice on
  *   [cands, best, with_creep, widened, fraction, x, rate] = hyst_mex('select', x, y, kinds,
  *       method, lo, hi, skip, delay, t_degree, creep_tau[, rate_tau])
  *   m = hyst_mex('model_parse', bytes, file)    the reader of tools/model_text
@@ -1132,6 +1133,38 @@ static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     }
 }
 
+/* excitation: prhs = x, skip, end; plhs = what the hold-out's last third of
+ * x(skip + 1 .. end) tests a choice on (fit_holdout_excitation(),
+ * tools/cli/fit_select.c): a struct fitted_lo, fitted_hi, holdout_n, beyond,
+ * span, minor, and min_span, the span below which hyst fit warns. */
+static void run_excitation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *fields[] = {"fitted_lo", "fitted_hi", "holdout_n", "beyond",
+                                   "span",      "minor",     "min_span"};
+    fit_excitation_t e;
+    size_t skip, end;
+    mxArray *s;
+    (void)nlhs;
+    if (nrhs != 3 || !is_real_double(prhs[0])) {
+        usage("excitation takes x (a real double vector), skip, end");
+    }
+    skip = count(prhs[1], "skip", 0.0, 1e15);
+    end = count(prhs[2], "end", 0.0, 1e15);
+    if (skip > end || end > mxGetNumberOfElements(prhs[0])) {
+        usage("excitation: skip <= end <= numel(x) needed");
+    }
+    fit_holdout_excitation((const double *)mxGetData(prhs[0]), skip, end, &e);
+    s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
+    set_field(s, "fitted_lo", mxCreateDoubleScalar(e.fitted_lo));
+    set_field(s, "fitted_hi", mxCreateDoubleScalar(e.fitted_hi));
+    set_field(s, "holdout_n", mxCreateDoubleScalar((double)e.holdout_n));
+    set_field(s, "beyond", mxCreateDoubleScalar((double)e.beyond));
+    set_field(s, "span", mxCreateDoubleScalar(e.span));
+    set_field(s, "minor", mxCreateDoubleScalar((double)e.minor));
+    set_field(s, "min_span", mxCreateDoubleScalar(FIT_HOLDOUT_MIN_SPAN));
+    plhs[0] = s;
+}
+
 /* given_delay: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid: degree its
  * intervals), degree, t_degree, method, lo, hi, skip; the delay of that one
  * model as `hyst fit --degree D` without --delay chooses it
@@ -1596,6 +1629,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_holdout(cmd[7] == '_', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "given_delay") == 0) {
         run_given_delay(nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "excitation") == 0) {
+        run_excitation(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "select") == 0) {
         run_select(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "score") == 0) {

@@ -11,7 +11,7 @@ f0 on a PC, check the model against measurements, deploy the coefficients.
 
 See docs/python.md in the repository.
 """
-from ._errors import HystError
+from ._errors import FitWarning, HystError
 from ._hyst import (
     CODE_MAX,
     CREEP_MAX_TERMS,
@@ -58,7 +58,7 @@ __all__ = [
     "CODE_MAX", "CREEP_MAX_TERMS", "EVERETT_MAX_DEGREE", "EVENT_CLAMPED", "EVENT_FULL",
     "EVENT_NONFINITE", "MAX_DEGREE", "SNAPSHOT_VERSION", "DEFAULT_CAPACITY",
     "EVERETT_INV_INTERVALS", "EVERETT_INV_ROWS", "INV_TABLE", "CodeModel", "Compensator",
-    "Creep", "CreepF32", "CreepF64", "Fit",
+    "Creep", "CreepF32", "CreepF64", "Fit", "FitWarning",
     "HystError", "Model", "ModelFromEverett", "ModelFromEverettGrid", "ModelFromPoints",
     "ModelF32", "ModelF64", "PI",
     "PIF32", "PIF64", "Status", "Tcm", "__version__", "compensator_from", "fit", "model_from",

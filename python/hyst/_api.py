@@ -1,11 +1,12 @@
 # SPDX-License-Identifier: MIT
 """Constructors that pick the library's variant by numpy dtype, and fit()."""
 import math
+import warnings
 
 import numpy as np
 
 from . import _hyst
-from ._errors import HystError
+from ._errors import FitWarning, HystError
 from ._model_file import _creep_args, header_text, save_model
 
 MAX_DEGREE = _hyst.MAX_DEGREE
@@ -363,6 +364,7 @@ class Fit:
         self.rate = rate
         self.rate_tau = rate["tau"] if rate else None
         self.rate_weight = rate["weight"] if rate else None
+        self.excitation = None  # the automatic choice's: set by fit()
         self.model = model_from(self.description(), dtype=dtype, capacity=capacity)
 
     def description(self):
@@ -723,5 +725,23 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
             rate_info = {"tau": c["rate_tau"], "weight": c["rate_weight"],
                          "holdout_rms": search["rate_holdout_rms"],
                          "holdout_rms_without": search["rate_without"]}
-    return Fit(res, dtype, capacity, delay=int(delay) + fraction if fraction else int(delay),
-               candidates=cands, creep=creep_info, rate=rate_info)
+    f = Fit(res, dtype, capacity, delay=int(delay) + fraction if fraction else int(delay),
+            candidates=cands, creep=creep_info, rate=rate_info)
+    if cands is not None:
+        f.excitation = _excitation(x, skip, len(x) - int(delay))
+    return f
+
+
+def _excitation(x, skip, end):
+    """What the hold-out's last third tested the choice on (fit_excitation(),
+    as hyst fit prints it), with hyst fit's warnings (FitWarning)."""
+    e = _hyst.excitation(x, skip, end)
+    if e["span"] < _hyst.FIT_HOLDOUT_MIN_SPAN:
+        warnings.warn(f"the last third's inputs span {100 * e['span']:.3g} % of the record's "
+                      "range: the choice was not tested over the rest of it", FitWarning,
+                      stacklevel=3)
+    if e["minor"] == 0:
+        warnings.warn("the last third holds no minor loop (every reversal at an end of the "
+                      "inputs' range): the choice was not tested on minor loops", FitWarning,
+                      stacklevel=3)
+    return e

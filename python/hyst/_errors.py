@@ -23,3 +23,9 @@ class HystError(Exception):
         self.context = context
         prefix = f"{context}: " if context else ""
         super().__init__(f"{prefix}{self.message} ({self.name}, {int(status)})")
+
+
+class FitWarning(UserWarning):
+    """What :func:`hyst.fit`'s automatic choice was not tested on, as ``hyst
+    fit`` warns of it: a last third whose inputs span less than half the
+    record's range, or that holds no minor loop."""

@@ -1271,6 +1271,26 @@ nb::dict given_delay(const In<double> &x, const In<double> &y, int kind, unsigne
     return d;
 }
 
+/* What the hold-out's last third of x[skip .. end) tests a choice on
+ * (fit_holdout_excitation()): dict fitted_lo, fitted_hi, holdout_n, beyond, span,
+ * minor. */
+nb::dict excitation(const In<double> &x, size_t skip, size_t end)
+{
+    fit_excitation_t e;
+    if (end > x.shape(0) || skip > end) {
+        throw nb::value_error("excitation: skip <= end <= len(x) needed");
+    }
+    fit_holdout_excitation(x.data(), skip, end, &e);
+    nb::dict d;
+    d["fitted_lo"] = e.fitted_lo;
+    d["fitted_hi"] = e.fitted_hi;
+    d["holdout_n"] = e.holdout_n;
+    d["beyond"] = e.beyond;
+    d["span"] = e.span;
+    d["minor"] = e.minor;
+    return d;
+}
+
 /* fit_choose() over candidates given as dicts (kind, degree, t_degree,
  * holdout_rms and, optionally, creep_tau, creep_holdout_rms): the rule
  * select() applies, alone. */
@@ -1592,6 +1612,10 @@ NB_MODULE(_hyst, m)
           "method"_a, "lo"_a, "hi"_a, "skip"_a,
           "The delay of one model as hyst fit --degree D without --delay chooses it "
           "(fit_given_delay()): dict delay, delay_fraction, max_delay, integer_holdout, x.");
+    m.def("excitation", &excitation, "x"_a, "skip"_a, "end"_a,
+          "What hyst fit's hold-out tests the choice on (fit_holdout_excitation()): dict fitted_lo, "
+          "fitted_hi, holdout_n, beyond, span, minor.");
+    m.attr("FIT_HOLDOUT_MIN_SPAN") = FIT_HOLDOUT_MIN_SPAN;
     m.def("choose", &choose, "candidates"_a, "creep_tau"_a = -1.0,
           "hyst fit's rule (fit_choose()) over scored candidates: (index or None, with creep).");
     m.attr("FIT_POLY") = static_cast<int>(FIT_POLY);

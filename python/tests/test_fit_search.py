@@ -4,8 +4,10 @@ the tool's own code (fit_search()): scaled to the drive's period beyond
 MAX_DELAY samples, then a fraction of a sample; the model fitted on the
 drive interpolated by it, saved with that delay."""
 import re
+import warnings
 
 import numpy as np
+import pytest
 
 import hyst
 from conftest import run_cli
@@ -15,12 +17,12 @@ PLANT = {"kind": "everett", "lo": 0.0, "hi": 40.0, "y_lo": 0.0, "degree": 2,
 DELAY = 12.5  # samples: beyond MAX_DELAY, and half a sample
 
 
-def record():
+def record(tops=(40.0, 30.0, 40.0, 20.0, 40.0, 35.0, 40.0, 25.0, 40.0)):
     """Triangles of 40, 30, 40, 20, ... 0.05 a sample (a period of about
     1600 samples: delays up to 25 searched), the plant's output DELAY
     samples later (interpolated) plus a little noise."""
     x = []
-    for top in (40.0, 30.0, 40.0, 20.0, 40.0, 35.0, 40.0, 25.0, 40.0):
+    for top in tops:
         x += list(np.arange(0.0, top, 0.05)) + list(np.arange(top, 0.0, -0.05))
     x = np.array(x + [0.0])
     y = hyst.model_from(PLANT).process(x)
@@ -76,3 +78,29 @@ def test_fit_of_a_degree_chooses_its_delay_as_the_tool(c_build, tmp_path):
         f.save(tmp_path / "py.hyst")
         assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
     assert hyst.fit(x, y, 3, delay=0).delay == 0
+
+
+@pytest.mark.parametrize("minor_loops", [False, True])
+def test_fit_says_what_the_hold_out_tested_as_the_tool(c_build, tmp_path, minor_loops):
+    """fit(x, y).excitation is what `hyst fit` prints of the hold-out, and
+    the same warnings come (FitWarning): a last third of major loops only
+    was not tested on minor loops."""
+    # record()'s last third turns back inside the range (tops 35, 25), or
+    # every triangle reaches 40: major loops only
+    x, y = record() if minor_loops else record((40.0,) * 9)
+    r = cli_fit(c_build, tmp_path, x, y)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        f = hyst.fit(x, y)
+    e = f.excitation
+    beyond = re.search(r"^# hold-out: (\d+) of its (\d+) inputs outside \[(\S+), (\S+)\]",
+                       r.stdout, re.M).groups()
+    assert (e["beyond"], e["holdout_n"]) == (int(beyond[0]), int(beyond[1]))
+    assert (e["fitted_lo"], e["fitted_hi"]) == (float(beyond[2]), float(beyond[3]))
+    said = re.search(r"^# hold-out excitation: its inputs span (\S+) %.*, (\d+) reversals",
+                     r.stdout, re.M).groups()
+    assert (round(100 * e["span"], 1), e["minor"]) == (float(said[0]), int(said[1]))
+    assert (e["minor"] > 0) == minor_loops
+    warned = [str(w.message) for w in caught if issubclass(w.category, hyst.FitWarning)]
+    assert any("no minor loop" in m for m in warned) == ("no minor loop" in r.stderr) \
+        == (not minor_loops)

@@ -15,10 +15,6 @@
 /* Longest --header-dir accepted (the header's path is built in a fixed buffer). */
 #define CLI_HEADER_DIR_MAX 4096u
 
-/* A hold-out part whose inputs span less than this fraction of the record's
- * range is warned about: the choice was not tested over the rest. */
-#define FIT_HOLDOUT_MIN_SPAN 0.5
-
 /* --kind pi without --operators: the size of the paper's Table 1 model. */
 #define FIT_PI_DEFAULT_OPERATORS 10u
 
@@ -150,9 +146,7 @@ typedef struct fit_opts {
     double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
     double last_third;    /* the same on the last third alone (what PI-10 is compared on) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
-    size_t holdout_n, beyond; /* hold-out inputs, those outside the part fitted */
-    double holdout_span;  /* the hold-out inputs' range over the record's */
-    size_t holdout_minor; /* reversals inside the record's range in the hold-out */
+    fit_excitation_t excitation; /* what the hold-out tested the choice on */
     size_t runner_up;     /* the best option of another model than the chosen ((size_t)-1: none) */
     int runner_up_creep;
     double pi10;          /* PI-10's hold-out RMS at the chosen delay (NaN: not scored) */
@@ -161,7 +155,6 @@ typedef struct fit_opts {
     size_t integer_delay;   /* that delay */
     size_t max_delay;     /* delays searched 0..max_delay (scaled to the drive's period) */
     size_t cheap_delay;   /* max_delay > FIT_MAX_DELAY: the cheap model's best delay */
-    double fitted_lo, fitted_hi; /* the range of the part fitted */
 } fit_opts_t;
 
 /* 0 on success, 1 after a message, -1 after --help. */
@@ -400,7 +393,6 @@ static const char everett_singular[] =
     "the record's turning points do not determine E of this degree; major loops alone "
     "determine t-degree 1 at most";
 
-static void count_beyond(fit_opts_t *o, const cli_table_t *t);
 static void rank_others(fit_opts_t *o, const cli_table_t *t);
 
 /* Sets o->final_kind, o->cfg.degree and .delay by hold-out: 0, or 1 after a message. */
@@ -452,7 +444,10 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
         }
     }
     o->creep = candidates[best_candidate].creep;
-    count_beyond(o, t);
+    /* at the chosen delay: the hold-out's inputs beyond the part fitted
+     * (predicted by branches continued beyond it, or clamped), its range and
+     * minor loops */
+    fit_holdout_excitation(t->col[0], o->cfg.skip, t->n - o->cfg.delay, &o->excitation);
     rank_others(o, t);
     o->holdout = candidates[best_candidate].holdout_rms;
     o->last_third = candidates[best_candidate].last_third_rms;
@@ -484,38 +479,16 @@ static void choose_creep(fit_opts_t *o, const cli_table_t *t)
                      !(o->holdout <= o->creep.holdout_rms * (1.0 + FIT_PARSIMONY)));
 }
 
-/* How many inputs of the hold-out part (the last third, at the chosen
- * delay) leave the range of the part fitted, into o: the candidates
- * predicted them by their branches continued beyond it, or clamped them. */
-static void count_beyond(fit_opts_t *o, const cli_table_t *t)
-{
-    const size_t from = o->cfg.skip, end = t->n - o->cfg.delay;
-    const size_t train = (2u * (end - from)) / 3u;
-    size_t k;
-    fit_input_range(t->col[0], from, from + train, 0.0, &o->fitted_lo, &o->fitted_hi);
-    o->holdout_n = end - from - train;
-    o->beyond = 0u;
-    double lo, hi, hold_lo, hold_hi;
-    for (k = from + train; k < end; ++k) {
-        o->beyond += t->col[0][k] < o->fitted_lo || t->col[0][k] > o->fitted_hi ? 1u : 0u;
-    }
-    /* the excitation the hold-out tests the choice on: its range and minor loops */
-    fit_input_range(t->col[0], from, end, 0.0, &lo, &hi);
-    fit_input_range(t->col[0], from + train, end, 0.0, &hold_lo, &hold_hi);
-    o->holdout_span = hi > lo ? (hold_hi - hold_lo) / (hi - lo) : 0.0;
-    (void)fit_reversals(t->col[0], from + train, end, lo, hi, &o->holdout_minor);
-}
-
 /* On stderr: what the hold-out part did not test the choice on. */
 static void warn_excitation(const fit_opts_t *o, const char *name)
 {
-    if (o->holdout_span < FIT_HOLDOUT_MIN_SPAN) {
+    if (o->excitation.span < FIT_HOLDOUT_MIN_SPAN) {
         (void)fprintf(stderr, "hyst fit: warning: %s: the last third's inputs span %.3g %% of "
                               "the record's range: the choice was not tested over the rest of "
                               "it\n",
-                      name, 100.0 * o->holdout_span);
+                      name, 100.0 * o->excitation.span);
     }
-    if (o->holdout_minor == 0u) {
+    if (o->excitation.minor == 0u) {
         (void)fprintf(stderr, "hyst fit: warning: %s: the last third holds no minor loop (every "
                               "reversal at an end of the inputs' range): the choice was not "
                               "tested on minor loops\n",
@@ -631,14 +604,14 @@ static void print_candidates(const fit_opts_t *o)
     }
     (void)printf("# hold-out: %lu of its %lu inputs outside [%.9g, %.9g], the range of the "
                  "part fitted%s\n",
-                 (unsigned long)o->beyond, (unsigned long)o->holdout_n, o->fitted_lo,
-                 o->fitted_hi,
-                 o->beyond > 0u ? " (predicted by the branches continued beyond it: everett "
+                 (unsigned long)o->excitation.beyond, (unsigned long)o->excitation.holdout_n,
+                 o->excitation.fitted_lo, o->excitation.fitted_hi,
+                 o->excitation.beyond > 0u ? " (predicted by the branches continued beyond it: everett "
                                   "widened; the others clamp them)"
                                 : "");
     (void)printf("# hold-out excitation: its inputs span %.3g %% of the record's range, %lu "
                  "reversals inside it (minor loops)\n",
-                 100.0 * o->holdout_span, (unsigned long)o->holdout_minor);
+                 100.0 * o->excitation.span, (unsigned long)o->excitation.minor);
     {
         const double chosen = fit_option_rms(&candidates[best_candidate], o->with_creep);
         char name[48];

@@ -110,6 +110,26 @@ size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double 
     return count;
 }
 
+void fit_holdout_excitation(const double *x, size_t skip, size_t end, fit_excitation_t *e)
+{
+    const size_t train = end > skip ? (2u * (end - skip)) / 3u : 0u;
+    double lo, hi, hold_lo, hold_hi;
+    size_t k;
+    memset(e, 0, sizeof *e);
+    if (end <= skip) {
+        return;
+    }
+    fit_input_range(x, skip, skip + train, 0.0, &e->fitted_lo, &e->fitted_hi);
+    e->holdout_n = end - skip - train;
+    for (k = skip + train; k < end; ++k) {
+        e->beyond += x[k] < e->fitted_lo || x[k] > e->fitted_hi ? 1u : 0u;
+    }
+    fit_input_range(x, skip, end, 0.0, &lo, &hi);
+    fit_input_range(x, skip + train, end, 0.0, &hold_lo, &hold_hi);
+    e->span = hi > lo && hold_hi >= hold_lo ? (hold_hi - hold_lo) / (hi - lo) : 0.0;
+    (void)fit_reversals(x, skip + train, end, lo, hi, &e->minor);
+}
+
 size_t fit_max_delay(const double *x, size_t from, size_t to)
 {
     double lo, hi;

@@ -178,6 +178,25 @@ size_t fit_max_delay(const double *x, size_t from, size_t to);
 size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double hi,
                      size_t *inner);
 
+/* A hold-out part whose inputs span less than this fraction of the record's
+ * range is warned about: the choice was not tested over the rest. */
+#define FIT_HOLDOUT_MIN_SPAN 0.5
+
+/* What the hold-out's last third tests a choice on (fit_holdout_excitation()): the
+ * front ends print it, and warn when it spans less than
+ * FIT_HOLDOUT_MIN_SPAN of the record's range or holds no minor loop. */
+typedef struct fit_excitation {
+    double fitted_lo, fitted_hi; /* the range of the first two thirds' inputs */
+    size_t holdout_n;            /* samples in the last third */
+    size_t beyond;               /* of them, inputs outside [fitted_lo, fitted_hi] */
+    double span;                 /* the last third's input range over the record's */
+    size_t minor;                /* its reversals inside the record's range (minor loops) */
+} fit_excitation_t;
+
+/* The excitation of the inputs x[skip .. end) split as the hold-out splits
+ * them (the first two thirds fitted, the last third scored). */
+void fit_holdout_excitation(const double *x, size_t skip, size_t end, fit_excitation_t *e);
+
 /* The delay in [0, max_delay] at which the cheap model (f0 of degree 3 on
  * base's skip and domain, no creep) predicts the hold-out best. */
 size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
