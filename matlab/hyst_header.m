@@ -66,26 +66,11 @@ function text = hyst_header(model, name, varargin)
     error('hyst:usage', '%s: coeffs has 2 to %d numbers (degree 1..HYST_MAX_DEGREE)', caller, ...
           config.max_degree + 1);
   end
-  if strcmp(p.kind, 'everett')
-    check_everett(p, caller);
-  elseif strcmp(p.kind, 'poly')
-    try  % f0 as firmware's init would take it: the gateway inits it and runs no sample
-      hyst_mex('sim', p.coeffs, p.lo, p.hi, zeros(0, 1), 2, 0);
-    catch err
-      error(err.identifier, '%s: the model is refused: %s', caller, err.message);
-    end
+  if strcmp(p.kind, 'everett_grid') && c && (~isempty(opts.intervals) || ~isempty(opts.rows))
+    error('hyst:usage', ['%s: kind everett_grid has no compensator table (its compensator ' ...
+                         'solves each branch in closed form)'], caller);
   end
-  if strcmp(p.kind, 'everett_grid')
-    if c && (~isempty(opts.intervals) || ~isempty(opts.rows))
-      error('hyst:usage', ['%s: kind everett_grid has no compensator table (its compensator ' ...
-                           'solves each branch in closed form)'], caller);
-    end
-    try  % as firmware's init would take it: the gateway inits it and runs no sample
-      hyst_mex('sim_grid', p.knots, p.weights, p.y_lo, zeros(0, 1), 2, 0);
-    catch err
-      error(err.identifier, '%s: the model is refused: %s', caller, err.message);
-    end
-  end
+  check_curve(p, caller);
   table = '';
   if c && ~strcmp(p.kind, 'everett_grid')  % a grid's compensator needs no table
     [intervals, rows] = hyst_table_sizes(opts.intervals, opts.rows, p.kind, caller, false);
@@ -102,12 +87,18 @@ function text = hyst_header(model, name, varargin)
   end
 end
 
-function check_everett(p, caller)
-% E as firmware's init would take it (hyst_f64_curve_from_everett(), then
-% hyst_f64_init_curve()), as the host tool checks it: the gateway inits it
-% and runs no sample.
+function check_curve(p, caller)
+% The curve as firmware's init would take it (f0, E or the grid: the
+% library's curve checks, then its init), as the host tool checks it: the
+% gateway inits it and runs no sample.
   try
-    hyst_mex('sim_everett', p.degree, p.lo, p.hi, p.y_lo, p.terms, zeros(0, 1), 2, 0);
+    if strcmp(p.kind, 'everett')
+      hyst_mex('sim_everett', p.degree, p.lo, p.hi, p.y_lo, p.terms, zeros(0, 1), 2, 0);
+    elseif strcmp(p.kind, 'everett_grid')
+      hyst_mex('sim_grid', p.knots, p.weights, p.y_lo, zeros(0, 1), 2, 0);
+    else
+      hyst_mex('sim', p.coeffs, p.lo, p.hi, zeros(0, 1), 2, 0);
+    end
   catch err
     error(err.identifier, '%s: the model is refused: %s', caller, err.message);
   end

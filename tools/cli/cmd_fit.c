@@ -1071,16 +1071,15 @@ static int constant_column(const char *name, unsigned long col, const double *v,
  * (the others are ignored): the fit would blame the degree. */
 static int domain_empty(const fit_opts_t *o, const char *name, const double *x, size_t n)
 {
-    double lo = x[0], hi = x[0];
+    double lo, hi;
     size_t i, inside = 0u;
     for (i = 0u; i < n; ++i) {
         inside += x[i] >= o->cfg.lo && x[i] <= o->cfg.hi;
-        lo = x[i] < lo ? x[i] : lo;
-        hi = x[i] > hi ? x[i] : hi;
     }
     if (inside >= 2u) {
         return 0;
     }
+    fit_input_range(x, 0u, n, 0.0, &lo, &hi);
     return cli_fail("fit", "%s: option --domain: %lu of the %lu inputs used lie in [%.9g, %.9g] "
                            "(the inputs span [%.9g, %.9g]): too few to fit",
                     name, (unsigned long)inside, (unsigned long)n, (double)o->cfg.lo,
