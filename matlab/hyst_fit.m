@@ -43,7 +43,10 @@ function f = hyst_fit(x, y, varargin)
 %   everett_grid' does (the knots where the output steps, the cells'
 %   masses by least squares; no 'method', 'tdegree'): fields kind
 %   'everett_grid', degree, lo, hi, y_lo, knots, weights (HYST_SIM takes
-%   it), rms, max_abs, used, monotone (the library accepts the grid).
+%   it), rms, max_abs, used, monotone (the library accepts the grid),
+%   determined (false, with a warning hyst:undetermined, when the record's
+%   turning points leave some masses open: major loops alone, for 4
+%   intervals or more).
 %
 %   Options (name/value): 'kind' 'poly' (default with a degree),
 %   'everett' or 'everett_grid', 'degree' (default []: chosen), 'skip'
@@ -182,6 +185,12 @@ function f = hyst_fit(x, y, varargin)
     warning('hyst:not_monotone', ...
             'hyst_fit: the library refuses the fitted grid on [%g, %g]: try another number of intervals', ...
             f.lo, f.hi);
+  end
+  if strcmp(opts.kind, 'everett_grid')
+    if ~f.determined
+      warning('hyst:undetermined', 'hyst_fit: %s', f.undetermined_why);
+    end
+    f = rmfield(f, 'undetermined_why');
   end
   skip = double(opts.skip);
   delay = double(opts.delay);

@@ -918,11 +918,15 @@ static mxArray *row_of(const double *v, size_t n);
  * fit --kind everett_grid` fits it (fit_grid_record()): a struct of kind
  * 'everett_grid', degree (its intervals), lo, hi, y_lo, knots, weights,
  * rms (the model's run; the least-squares residual when the library refuses
- * the grid), max_abs, used and monotone (the library accepts it). */
+ * the grid), max_abs, used, monotone (the library accepts it), determined
+ * (the record determines every mass) and undetermined_why (the tool's words
+ * when it does not, else ''). */
 static void run_fit_grid(mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
-    static const char *fields[] = {"kind", "degree", "lo", "hi", "y_lo", "knots", "weights",
-                                   "rms", "max_abs", "used", "monotone"};
+    static const char *fields[] = {"kind",    "degree", "lo",        "hi",
+                                   "y_lo",    "knots",  "weights",   "rms",
+                                   "max_abs", "used",   "monotone",  "determined",
+                                   "undetermined_why"};
     hyst_ident_config_t cfg;
     fit_everett_result_t r;
     hyst_status_t st;
@@ -962,6 +966,8 @@ static void run_fit_grid(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     set_field(s, "max_abs", mxCreateDoubleScalar(r.max_abs));
     set_field(s, "used", mxCreateDoubleScalar((double)r.used));
     set_field(s, "monotone", mxCreateLogicalScalar(r.curve_status == HYST_OK));
+    set_field(s, "determined", mxCreateLogicalScalar(r.determined != 0));
+    set_field(s, "undetermined_why", mxCreateString(r.determined ? "" : fit_grid_undetermined));
     plhs[0] = s;
 }
 

@@ -128,8 +128,58 @@ hyst_status_t hyst_everett_grid_fit_add(hyst_everett_grid_fit_t *fit, hyst_wide_
     return HYST_OK;
 }
 
-/* The masses' normal equations with y_lo eliminated (the solver's first
- * cells^2 numbers): the Gram matrix of the centred regressors. */
+/* The masses' normal equations with y_lo eliminated into h (m x m, m the
+ * cells) and c (m): H = A'A - s s' / n over the cells, s their sums; the
+ * largest diagonal entry returned. */
+static hyst_wide_t centre(const hyst_everett_grid_fit_t *fit, hyst_wide_t *h, hyst_wide_t *c)
+{
+    const size_t cols = fit->cols, m = cols - 1u;
+    const hyst_wide_t n = (hyst_wide_t)fit->used;
+    hyst_wide_t big = 0;
+    size_t i, j;
+    for (i = 0u; i < m; ++i) {
+        const hyst_wide_t si = fit->ata[(i + 1u) * cols];
+        for (j = 0u; j <= i; ++j) {
+            const hyst_wide_t v = fit->ata[(i + 1u) * cols + j + 1u] - si * fit->ata[(j + 1u) * cols] / n;
+            h[i * m + j] = v;
+            h[j * m + i] = v;
+        }
+        c[i] = fit->aty[i + 1u] - si * fit->aty[0] / n;
+        big = h[i * m + i] > big ? h[i * m + i] : big;
+    }
+    return big;
+}
+
+int hyst_everett_grid_fit_determined(const hyst_everett_grid_fit_t *fit)
+{
+    size_t m, i, j, k;
+    hyst_wide_t *h, *l;
+    if (fit == NULL || fit->used < 2u) {
+        return 0;
+    }
+    m = fit->cols - 1u;
+    h = fit->solver;
+    l = h + m * m + m; /* the factor where the solve keeps its weights and the rest */
+    (void)centre(fit, h, h + m * m);
+    for (i = 0u; i < m; ++i) { /* h = L L', each pivot above its diagonal's rounding */
+        for (j = 0u; j <= i; ++j) {
+            hyst_wide_t sum = h[i * m + j];
+            for (k = 0u; k < j; ++k) {
+                sum -= l[i * m + k] * l[j * m + k];
+            }
+            if (i > j) {
+                l[i * m + j] = sum / l[j * m + j];
+            } else if (sum > h[i * m + i] * HYST_WIDE_EPS * (hyst_wide_t)1e4) {
+                l[i * m + i] = HYST_WIDE_SQRT(sum);
+            } else {
+                return 0; /* a cell's column in the span of the others' */
+            }
+        }
+    }
+    return 1;
+}
+
+/* The centred Gram (the solver's first cells^2 numbers) for the NNLS. */
 typedef struct {
     const hyst_wide_t *h;
     size_t m;
@@ -145,7 +195,7 @@ hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
                                           hyst_everett_grid_t *g, hyst_wide_t *rms)
 {
     const size_t cols = fit != NULL ? fit->cols : 0u, m = cols - 1u;
-    hyst_wide_t *h, *c, *w, n, big = 0, syy, tol, rss, sum = 0, offset;
+    hyst_wide_t *h, *c, *w, n, big, syy, tol, rss, sum = 0, offset;
     centred_t ctx;
     hyst_nnls_t p;
     size_t i, j;
@@ -159,16 +209,7 @@ hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
     h = fit->solver;
     c = h + m * m;
     w = c + m;
-    for (i = 0u; i < m; ++i) { /* H = A'A - s s' / n over the cells, s their sums */
-        const hyst_wide_t si = fit->ata[(i + 1u) * cols];
-        for (j = 0u; j <= i; ++j) {
-            const hyst_wide_t v = fit->ata[(i + 1u) * cols + j + 1u] - si * fit->ata[(j + 1u) * cols] / n;
-            h[i * m + j] = v;
-            h[j * m + i] = v;
-        }
-        c[i] = fit->aty[i + 1u] - si * fit->aty[0] / n;
-        big = h[i * m + i] > big ? h[i * m + i] : big;
-    }
+    big = centre(fit, h, c);
     syy = fit->yy - fit->aty[0] * fit->aty[0] / n;
     tol = HYST_WIDE_SQRT(big * (syy > 0 ? syy : 0)) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m);
     ctx.h = h;

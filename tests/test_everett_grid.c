@@ -422,6 +422,71 @@ static void test_identification_recovers_the_grid(void)
     TEST_ASSERT_TRUE(worst_noisy <= 0.01);
 }
 
+/* A grid fit on g's knots of fx[0..n) and g's outputs for them, from rest. */
+static void fit_plant(hyst_everett_grid_fit_t *fit, const hyst_everett_grid_t *g, long n)
+{
+    long k;
+    ref_egrid_init(&ref, &dom, g);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_init(fit, g->knots, g->intervals, fit_work,
+                                                               sizeof fit_work / sizeof fit_work[0]));
+    for (k = 0; k < n; ++k) {
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_add(fit, fx[k],
+                                                                 (hyst_wide_t)ref_everett_step(&ref, (double)fx[k])));
+    }
+}
+
+/* Major loops alone do not determine a grid of 4 intervals' 10 masses (how
+ * the inner cells share theirs): the fit says so, and its solve is one of
+ * many; the same plant's reversal curves from points inside each interval
+ * determine them, and are fitted exactly. */
+static void test_fit_says_whether_the_record_determines_the_masses(void)
+{
+    static const hyst_wide_t knots[5] = {0.0, 1.0, 2.0, 3.0, 4.0};
+    hyst_everett_grid_t g, got;
+    hyst_everett_grid_fit_t fit;
+    hyst_wide_t rms = -1;
+    long n = 0, k;
+    int c, d;
+    unsigned i;
+    memset(&g, 0, sizeof g);
+    g.intervals = 4u;
+    for (i = 0u; i <= 4u; ++i) {
+        g.knots[i] = knots[i];
+    }
+    for (i = 0u; i < HYST_EVERETT_GRID_CELLS(4u); ++i) {
+        g.weight[i] = 1.0 + (hyst_wide_t)i;
+    }
+    for (c = 0; c < 3; ++c) { /* major loops: 0 -> 4 -> 0 */
+        for (k = 0; k <= 40; ++k) {
+            fx[n++] = (hyst_wide_t)(0.1 * (double)k);
+        }
+        for (k = 39; k >= 0; --k) {
+            fx[n++] = (hyst_wide_t)(0.1 * (double)k);
+        }
+    }
+    fit_plant(&fit, &g, n);
+    TEST_ASSERT_EQUAL_INT(0, hyst_everett_grid_fit_determined(&fit));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_solve(&fit, &got, &rms));
+    TEST_ASSERT_TRUE(rms < 1e-9);
+    /* reversal curves: up from 0 to a, down to 0, a at 0.25 .. 4 */
+    n = 0;
+    for (c = 1; c <= 16; ++c) {
+        const double a = 0.25 * (double)c;
+        for (d = 0; 0.07 * d < a; ++d) {
+            fx[n++] = (hyst_wide_t)(0.07 * d);
+        }
+        for (d = 0; a - 0.05 * d > 0.0; ++d) {
+            fx[n++] = (hyst_wide_t)(a - 0.05 * d);
+        }
+    }
+    fit_plant(&fit, &g, n);
+    TEST_ASSERT_EQUAL_INT(1, hyst_everett_grid_fit_determined(&fit));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_solve(&fit, &got, &rms));
+    for (i = 0u; i < HYST_EVERETT_GRID_CELLS(4u); ++i) {
+        TEST_ASSERT_TRUE(fabs((double)(got.weight[i] - g.weight[i])) <= 1e-6 * (double)g.weight[i]);
+    }
+}
+
 /* The compensator: the model driven by it follows the desired outputs
  * (random walks with minor loops and wipe-outs) within rounding, the
  * drive is monotone along each monotone run of desired outputs, block =
@@ -721,6 +786,7 @@ int main(void)
     RUN_TEST(test_bounded_memory_keeps_its_bound);
     RUN_TEST(test_deadband_bound_holds);
     RUN_TEST(test_identification_recovers_the_grid);
+    RUN_TEST(test_fit_says_whether_the_record_determines_the_masses);
     RUN_TEST(test_compensator_inverts_the_model);
     RUN_TEST(test_compensator_reaches_lo_past_an_empty_first_cell);
     RUN_TEST(test_compensator_drive_stays_on_the_domain);

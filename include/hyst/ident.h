@@ -547,6 +547,18 @@ hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
                                           hyst_everett_grid_t *g, hyst_wide_t *rms);
 
 /**
+ * @brief Whether the samples added determine every mass: 1, or 0 when the
+ *        record's turning points leave how some cells share their mass
+ *        open (major loops alone, for 4 intervals or more: they determine
+ *        each diagonal cell and the others' sums by row and by column), or
+ *        @p fit is NULL or holds fewer than two samples. Where it is 0,
+ *        hyst_everett_grid_fit_solve() returns one non-negative solution of
+ *        many, which fit the record alike and predict minor loops
+ *        differently. Uses the solver's workspace; the solve may follow.
+ */
+int hyst_everett_grid_fit_determined(const hyst_everett_grid_fit_t *fit);
+
+/**
  * @brief Knots for a grid fit where the output changes: the quantiles of
  *        the inputs x[1..n) weighted by |y[k] - y[k - 1]| (the midpoint of
  *        each step), on [lo, hi] = knots[0], knots[intervals]; no two closer

@@ -23,7 +23,7 @@ function failed = run_tests(root, ref, cli)
            @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
            @t_rate_refused, @t_rate_fit_as_cli, @t_grid_sim_inv_equal_cli, @t_grid_written_as_cli, ...
            @t_grid_header_equals_cli, @t_grid_refused, @t_grid_fit_as_cli, ...
-           @t_grid_chosen_as_cli, @t_fit_missing_first_input, @t_fit_refuses_record, ...
+           @t_grid_chosen_as_cli, @t_grid_fit_undetermined, @t_fit_missing_first_input, @t_fit_refuses_record, ...
            @t_save_writes_regular_files_only, @t_header_refuses_what_init_refuses};
   passed = 0;
   failed = 0;
@@ -1824,6 +1824,29 @@ function t_grid_fit_as_cli(ctx)
   check(abs(f.knots(2) - 1) < 0.02 && abs(f.knots(3) - 1.4) < 0.02, 'knots %s', mat2str(f.knots));
   err = sqrt(mean((hyst_sim(f, x) - y) .^ 2));
   check(err < 0.01 * (max(y) - min(y)), 'the fitted grid misses the plant by %g', err);
+end
+
+function t_grid_fit_undetermined(ctx)
+  % major loops determine every mass of 3 intervals, not how the inner cells
+  % of 4 share theirs: determined false and a warning hyst:undetermined in
+  % hyst fit's words, which warns too
+  x = repmat([0:0.01:2.99, 3:-0.01:0.01], 1, 3);
+  plant = fullfile(ctx.tmp, 'grid_plant_u.hyst');
+  write_text(plant, grid_plant_text(false));
+  y = hyst_sim(hyst_model_load(plant), x);
+  rec = fullfile(ctx.tmp, 'grid_major.txt');
+  write_text(rec, sprintf('%.17g %.17g\n', [x; y]));
+  lastwarn('');
+  f3 = hyst_fit(x, y, 'kind', 'everett_grid', 'degree', 3, 'delay', 0, 'creep', 'none');
+  [~, id] = lastwarn();
+  check(f3.determined && ~strcmp(id, 'hyst:undetermined'), '3 intervals said undetermined');
+  f4 = hyst_fit(x, y, 'kind', 'everett_grid', 'degree', 4, 'delay', 0, 'creep', 'none');
+  [msg, id] = lastwarn();
+  check(~f4.determined && strcmp(id, 'hyst:undetermined') && ~isfield(f4, 'undetermined_why'), ...
+        '4 intervals on major loops: %s %s', id, msg);
+  out = run_cli(ctx, sprintf(['fit --kind everett_grid --degree 4 --delay 0 --creep none ' ...
+                              '"%s" 2>&1'], rec));
+  check(~isempty(strfind(out, strrep(msg, 'hyst_fit: ', ''))), 'hyst fit says otherwise: %s', out);
 end
 
 function t_grid_chosen_as_cli(ctx)

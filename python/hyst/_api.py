@@ -344,7 +344,9 @@ class Fit:
     ``tau``, ``weight``, ``holdout_rms`` and ``holdout_rms_without``;
     ``rate_tau`` and ``rate_weight`` the model's (None without one), which
     the model, its file and its header include. ``rms`` and ``max_abs`` stay
-    the hysteresis fit's own.
+    the hysteresis fit's own. A grid (``"everett_grid"``) has ``knots``,
+    ``weights``, ``y_lo`` and ``determined``: False when the record's turning
+    points leave some masses open (then :class:`FitWarning`).
     """
 
     def __init__(self, result, dtype, capacity, delay=0, candidates=None, creep=None,
@@ -703,6 +705,8 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
                        chosen["creep_holdout_rms"] * (1 + PARSIMONY)))
     res = _fit_one(x, y, kind or "poly", int(degree), method, lo, hi, skip, int(delay),
                    t_degree)
+    if res.get("kind") == "everett_grid" and not res["determined"]:
+        warnings.warn(_hyst.FIT_GRID_UNDETERMINED, FitWarning, stacklevel=2)
     if res.get("kind") == "everett" and len(x) > skip + int(delay):
         # a domain wider than the inputs: the range E was identified on is
         # recorded, as hyst fit --save records it

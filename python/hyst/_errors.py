@@ -26,6 +26,7 @@ class HystError(Exception):
 
 
 class FitWarning(UserWarning):
-    """What :func:`hyst.fit`'s automatic choice was not tested on, as ``hyst
-    fit`` warns of it: a last third whose inputs span less than half the
-    record's range, or that holds no minor loop."""
+    """What :func:`hyst.fit`'s result was not tested on or determined by, as
+    ``hyst fit`` warns of it: the automatic choice's last third whose inputs
+    span less than half the record's range, or that holds no minor loop; a
+    grid whose masses the record's turning points do not determine."""

@@ -923,7 +923,8 @@ nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, 
  * masses by least squares; on [lo, hi], or the inputs' range when lo == hi.
  * A dict as fit_everett() gives (knots, weights instead of terms; rms the
  * model's run over the samples fitted, or the least-squares residual when
- * the library refuses the grid: curve_status).
+ * the library refuses the grid: curve_status; determined: whether the
+ * record determines every mass, hyst_everett_grid_fit_determined()).
  */
 nb::dict fit_grid(const In<double> &x, const In<double> &y, unsigned k, double lo, double hi,
                   size_t skip, size_t delay)
@@ -951,6 +952,7 @@ nb::dict fit_grid(const In<double> &x, const In<double> &y, unsigned k, double l
     d["max_abs"] = r.max_abs;
     d["used"] = r.used;
     d["curve_status"] = static_cast<int>(r.curve_status);
+    d["determined"] = r.determined != 0;
     return d;
 }
 
@@ -1626,6 +1628,7 @@ NB_MODULE(_hyst, m)
     m.attr("FIT_CREEP_PARAMETERS") = static_cast<unsigned>(FIT_CREEP_PARAMETERS);
     m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a = -1);
+    m.attr("FIT_GRID_UNDETERMINED") = nb::str(fit_grid_undetermined);
     m.def("fit_grid", &fit_grid, "x"_a, "y"_a, "intervals"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a);
 }

@@ -4,6 +4,8 @@ everett_grid) in the package: a file read by the one reader in C, its model
 and its compensator bit for bit as `hyst sim --model` and `hyst inv
 --model`; save_model and header_text write it as the tool does."""
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -194,3 +196,24 @@ def test_auto_choice_is_the_clis_with_the_grid_kind(c_build, tmp_path):
     # kind="everett" alone: no grid candidate
     e = hyst.fit(x, y, None, kind="everett", delay=None, creep="none")
     assert {c["kind"] for c in e.candidates} == {"everett"}
+
+
+
+def test_fit_says_when_the_record_does_not_determine_the_masses(c_build, tmp_path):
+    """Major loops determine every mass of 3 intervals, not how the inner
+    cells of 4 share theirs: fit(kind="everett_grid") then has determined
+    False and warns (FitWarning) in hyst fit's words, which warns too."""
+    x = np.concatenate([np.r_[np.arange(0, 3, 0.01), np.arange(3, 0, -0.01)]] * 3)
+    y = hyst.model_from(hyst.load_model(_plant(tmp_path))).process(x)
+    rec = tmp_path / "major.txt"
+    np.savetxt(rec, np.column_stack([x, y]), fmt="%.17g")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        f3 = hyst.fit(x, y, 3, kind="everett_grid", delay=0, creep="none")
+    assert f3.determined
+    with pytest.warns(hyst.FitWarning, match="do not determine every mass of this grid") as w:
+        f4 = hyst.fit(x, y, 4, kind="everett_grid", delay=0, creep="none")
+    assert not f4.determined
+    cli = run_cli(c_build, "fit", "--kind", "everett_grid", "--degree", 4, "--delay", 0,
+                  "--creep", "none", rec)
+    assert f"hyst fit: warning: {rec}: {w[0].message}" in cli.stderr

@@ -168,6 +168,22 @@ paste -d ' ' my.txt mfy.txt | awk '{ d = $1 - $2; s += d * d; n++; lo = n == 1 |
                                     hi = n == 1 || $1 > hi ? $1 : hi }
                                   END { exit !(100 * sqrt(s / n) / (hi - lo) < 1) }' ||
     fail "the grid fitted from inside a loop misses the plant"
+# major loops alone determine every mass of 3 intervals, not how the inner
+# cells of 4 share theirs: the fit says so (stdout and a warning), not silently
+awk 'BEGIN { for (c = 0; c < 3; c++) { for (x = 0; x < 3; x += 0.01) print x
+             for (x = 3; x > 0; x -= 0.01) print x } }' > major_x.txt
+"$tool" sim --model plant.hyst major_x.txt > major_y.txt || fail "sim of the plant (major loops)"
+paste -d ' ' major_x.txt major_y.txt > major.txt
+"$tool" fit --kind everett_grid --degree 3 --delay 0 --creep none major.txt > m3.txt 2> m3.err ||
+    fail "fit of 3 intervals on major loops: $(cat m3.err)"
+! grep -q "do not determine" m3.txt m3.err || fail "3 intervals on major loops said undetermined"
+"$tool" fit --kind everett_grid --degree 4 --delay 0 --creep none major.txt > m4.txt 2> m4.err ||
+    fail "fit of 4 intervals on major loops: $(cat m4.err)"
+grep -q "^# the record's turning points do not determine every mass of this grid" m4.txt ||
+    fail "4 intervals on major loops, the report: $(grep residual m4.txt)"
+grep -q "^hyst fit: warning: major.txt: the record's turning points do not determine every mass" m4.err ||
+    fail "4 intervals on major loops, no warning: $(cat m4.err)"
+! grep -q "do not determine" fit.txt || fail "the record with minor loops said undetermined"
 # the grid's most intervals (above f0's highest degree) are accepted
 "$tool" fit --kind everett_grid --degree 12 --delay 0 --creep none rec.txt > fit12.txt ||
     fail "fit --kind everett_grid --degree 12: $(cat fit12.txt)"

@@ -904,6 +904,9 @@ static void print_result(const fit_final_t *f, unsigned t_degree, size_t pairs)
             (void)printf(" %.9g", m->knots[k]);
         }
         (void)printf("\n");
+        if (!f->ev.determined) {
+            (void)printf("# %s\n", fit_grid_undetermined);
+        }
     } else if (m->kind == CLI_MODEL_EVERETT) {
         (void)printf("# residual rms,max above: the asymmetric model (kind everett, degree %u, "
                      "t-degree %u, y_lo %.15g%s) run over the record, %lu of %lu samples used%s; "
@@ -1185,6 +1188,9 @@ int cmd_fit(int argc, char **argv)
         }
     }
     rc = fit_final(&o, name, &t, pairs, &f);
+    if (rc == 0 && o.final_kind == FIT_GRID && !f.ev.determined) {
+        (void)fprintf(stderr, "hyst fit: warning: %s: %s\n", name, fit_grid_undetermined);
+    }
     if (rc == 0 && (o.with_creep || o.with_rate) && f.usable) {
         rc = fit_final_creep(&o, name, &t, &f);
     }

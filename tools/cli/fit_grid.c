@@ -22,6 +22,12 @@
 /* Turning points the fit's workspace holds at first (doubled as needed). */
 #define FIT_GRID_CAP0 256u
 
+const char fit_grid_undetermined[] =
+    "the record's turning points do not determine every mass of this grid (major loops alone "
+    "leave how the inner cells of 4 or more intervals share theirs open): these masses are one "
+    "solution of many that fit the record alike and predict minor loops differently; fewer "
+    "intervals, or a record whose reversals turn inside every interval";
+
 typedef struct {
     const double *x, *y;
     size_t skip, settle, end, delay, stride; /* outputs fitted from settle on (fit_settled()) */
@@ -32,7 +38,7 @@ typedef struct {
 /* The fit of every stride-th sample on the knots into *g: its residual
  * RMS, or NaN (HYST_ERR_NOSPACE: more turning points than the workspace). */
 static double fit_on(const grid_data_t *d, const double *knots, unsigned k, hyst_everett_grid_t *g,
-                     hyst_status_t *status, size_t *used)
+                     hyst_status_t *status, size_t *used, int *determined)
 {
     hyst_everett_grid_fit_t fit;
     hyst_wide_t rms = 0;
@@ -46,6 +52,9 @@ static double fit_on(const grid_data_t *d, const double *knots, unsigned k, hyst
             *status = add;
         }
         *used += add == HYST_OK ? 1u : 0u;
+    }
+    if (*status == HYST_OK && determined != NULL) {
+        *determined = hyst_everett_grid_fit_determined(&fit);
     }
     if (*status == HYST_OK) {
         *status = hyst_everett_grid_fit_solve(&fit, g, &rms);
@@ -97,7 +106,7 @@ hyst_status_t fit_grid_record(const hyst_ident_config_t *cfg, unsigned k, const 
             return HYST_ERR_NOSPACE;
         }
         d.stride = (d.end - d.skip + FIT_GRID_REFINE_SAMPLES - 1u) / FIT_GRID_REFINE_SAMPLES;
-        best = fit_on(&d, knots, k, &res->grid, &st, &res->used);
+        best = fit_on(&d, knots, k, &res->grid, &st, &res->used, NULL);
         for (pass = 0u; pass < FIT_GRID_PASSES && st == HYST_OK; ++pass) {
             for (m = 1u; m < k && st == HYST_OK; ++m) {
                 double place = knots[m];
@@ -106,7 +115,7 @@ hyst_status_t fit_grid_record(const hyst_ident_config_t *cfg, unsigned k, const 
                     double e;
                     knots[m] = knots[m - 1u] +
                                (knots[m + 1u] - knots[m - 1u]) * c / (FIT_GRID_PLACES + 1u);
-                    e = fit_on(&d, knots, k, &res->grid, &st, &res->used);
+                    e = fit_on(&d, knots, k, &res->grid, &st, &res->used, NULL);
                     knots[m] = keep;
                     if (st != HYST_OK) {
                         break;
@@ -122,7 +131,7 @@ hyst_status_t fit_grid_record(const hyst_ident_config_t *cfg, unsigned k, const 
         }
         if (st == HYST_OK) { /* the masses on every sample */
             d.stride = 1u;
-            res->ls_rms = fit_on(&d, knots, k, &res->grid, &st, &res->used);
+            res->ls_rms = fit_on(&d, knots, k, &res->grid, &st, &res->used, &res->determined);
         }
         free(d.work);
         if (st != HYST_ERR_NOSPACE || cap > d.end - d.skip) {

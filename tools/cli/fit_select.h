@@ -162,6 +162,8 @@ typedef struct fit_everett_result {
     double rms, max_abs;        /* the model run over the samples fitted (NaN if refused) */
     double ls_rms;              /* the least-squares residual (hyst_everett_fit_solve()) */
     size_t used;                /* samples fitted */
+    int determined;             /* FIT_GRID: the record determines every mass
+                                   (hyst_everett_grid_fit_determined()) */
 } fit_everett_result_t;
 
 /* Real numbers a model of this kind and degree identifies: poly the
@@ -259,6 +261,10 @@ hyst_status_t fit_everett_add_clamped(hyst_everett_fit_t *fit, const double *x, 
  * steps, refined; res->grid, its curve's status, the model's run. */
 hyst_status_t fit_grid_record(const hyst_ident_config_t *cfg, unsigned k, const double *x,
                               const double *y, size_t n, fit_everett_result_t *res);
+
+/* What the front ends say of a grid whose masses the record does not
+ * determine (fit_everett_result_t's determined 0). */
+extern const char fit_grid_undetermined[];
 
 /* fit_tcm_holdout() for the asymmetric kind: NaN if the fit failed or the
  * library refused E (*status says which). */
