@@ -28,4 +28,5 @@ class HystError(Exception):
 class FitWarning(UserWarning):
     """What :func:`hyst.fit`'s automatic choice was not tested on, as ``hyst
     fit`` warns of it: a last third whose inputs span less than half the
-    record's range, or that holds no minor loop."""
+    record's range, or that holds no minor loop; and f0 of a given degree
+    fitted on a drive with minor loops (biased)."""
