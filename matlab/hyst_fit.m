@@ -7,8 +7,10 @@ function f = hyst_fit(x, y, varargin)
 %   'degree', N) fits f0 of degree N to a full-range periodic excitation by
 %   hyst_ident_fit() (include/hyst/ident.h, docs/identification.md), its
 %   delay chosen as 'hyst fit --degree N' chooses it unless 'delay' is
-%   given. F is a model for HYST_SIM, HYST_INV and HYST_MODEL_SAVE, with the
-%   fields
+%   given; on a drive with minor loops such an f0 is biased (the estimator
+%   takes every sample for a major branch's): warning hyst:minor_loops, as
+%   hyst fit warns. F is a model for HYST_SIM, HYST_INV and
+%   HYST_MODEL_SAVE, with the fields
 %     coeffs      f0's coefficients, highest power first (as polyfit)
 %     lo, hi      the domain
 %     rms, max_abs  residuals of the samples against the fitted major loop

@@ -613,7 +613,9 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     fit_rms, status, chosen; with a creep term scored also creep_tau (0:
     none), creep_weight, creep_holdout_rms, with_creep: chosen with it).
     With a degree given, ``kind=None`` means poly and ``t_degree=None`` all
-    of E's terms (degree - 1).
+    of E's terms (degree - 1); f0 of a given degree on a drive with minor
+    loops is biased (its estimator takes every sample for a major branch's):
+    a :class:`FitWarning` says so, as ``hyst fit --degree`` warns.
 
     ``creep`` chooses a creep term as ``hyst fit --creep`` does
     (docs/creep.md): ``"auto"`` (the default) scores each candidate alone

@@ -395,7 +395,7 @@ enum {
     FIT_RECORD_FALLING          /* correlation below FIT_FALLING_CORRELATION */
 };
 
-/* What the front ends say of a record (fit_record_check()). */
+/* A record as fit_record_check() finds it. */
 typedef struct fit_record {
     int fault;          /* FIT_RECORD_OK, or what is wrong */
     size_t pairs;       /* (x[skip + i], y[skip + delay + i]), i < pairs */
