@@ -7,8 +7,10 @@ function f = hyst_fit(x, y, varargin)
 %   'degree', N) fits f0 of degree N to a full-range periodic excitation by
 %   hyst_ident_fit() (include/hyst/ident.h, docs/identification.md), its
 %   delay chosen as 'hyst fit --degree N' chooses it unless 'delay' is
-%   given. F is a model for HYST_SIM, HYST_INV and HYST_MODEL_SAVE, with the
-%   fields
+%   given; on a drive with minor loops such an f0 is biased (the estimator
+%   takes every sample for a major branch's): warning hyst:minor_loops, as
+%   hyst fit warns. F is a model for HYST_SIM, HYST_INV and
+%   HYST_MODEL_SAVE, with the fields
 %     coeffs      f0's coefficients, highest power first (as polyfit)
 %     lo, hi      the domain
 %     rms, max_abs  residuals of the samples against the fitted major loop
@@ -134,7 +136,9 @@ function f = hyst_fit(x, y, varargin)
   end
   x = double(x(:));
   y = double(y(:));
-  check_record(x, y, opts);
+  rec = check_record(x, y, opts);
+  % f0 of a given degree on a drive with minor loops: warned of below
+  minor_loops = ~isempty(opts.degree) && strcmp(opts.kind, 'poly') && rec.minor > 0;
   cands = [];
   fraction = 0;  % a sub-sample delay chosen: the drive x interpolated by it
   rate = struct('with_rate', false);  % a rate term chosen with the model
@@ -172,6 +176,14 @@ function f = hyst_fit(x, y, varargin)
   used = x(double(opts.skip) + 1:max(numel(x) - double(opts.delay), double(opts.skip)));
   if strcmp(opts.kind, 'everett') && ~isempty(used) && (f.lo < min(used) || max(used) < f.hi)
     f.identified = [max(min(used), f.lo), min(max(used), f.hi)];
+  end
+  if minor_loops
+    warning('hyst:minor_loops', ['hyst_fit: x has %d reversal%s inside its range (minor ' ...
+                                 'loops): f0 of degree %d is biased, its fit taking every ' ...
+                                 'rising sample for the major ascending branch and every ' ...
+                                 'falling one for the descending; leave ''degree'' [] to let ' ...
+                                 'hyst_fit choose, or fit ''kind'', ''everett'''], ...
+            rec.minor, repmat('s', 1, rec.minor ~= 1), opts.degree);
   end
   if strcmp(opts.kind, 'poly') && ~f.increasing
     warning('hyst:not_increasing', ...
@@ -370,9 +382,11 @@ end
 % The record as 'hyst fit' takes a file: NaN marks a missing sample; an
 % infinite one, skip or delay not a whole number >= 0, a column that does
 % not vary or a response that falls as the drive rises is refused
-% (hyst:usage), naming it; none left is the library's ERR_ARG, as x and y
-% of different lengths are (the gateway's).
-function check_record(x, y, opts)
+% (hyst:usage), naming it, by hyst fit's check (the gateway's record_check:
+% fit_record_check()); none left is the library's ERR_ARG, as x and y of
+% different lengths are (the gateway's). rec: the check (its minor: the
+% drive's reversals inside its range).
+function rec = check_record(x, y, opts)
   if ~(hyst_is_whole(opts.skip) && opts.skip >= 0)
     error('hyst:usage', 'hyst_fit: skip must be a whole number of samples >= 0');
   end
@@ -384,38 +398,25 @@ function check_record(x, y, opts)
     delay = double(opts.delay);
   end
   skip = double(opts.skip);
-  names = {'x', 'y'};
-  roles = {'drive', 'response'};
-  cols = {x, y};
-  for i = 1:2
-    k = find(isinf(cols{i}), 1);
-    if ~isempty(k)
+  rec = hyst_mex('record_check', x, y, skip, delay);
+  switch rec.fault
+    case {'infinite_input', 'infinite_output'}
+      names = 'xy';
       error('hyst:usage', ['hyst_fit: %s(%d) is %g: a record''s samples are finite numbers, ' ...
-                           'or NaN where one is missing'], names{i}, k, cols{i}(k));
-    end
-  end
-  if numel(x) ~= numel(y)
-    return;
-  end
-  if numel(x) <= skip + delay
-    error('hyst:ERR_ARG', 'hyst_fit: skip %d and delay %d leave no sample of the %d given', ...
-          skip, delay, numel(x));
-  end
-  used = {x(skip + 1:end - delay), y(skip + 1 + delay:end)};
-  for i = 1:2
-    v = used{i}(~isnan(used{i}));
-    if isempty(v) || all(v == v(1))
-      error('hyst:usage', 'hyst_fit: %s is constant (NaN aside): a record''s %s must vary', ...
-            names{i}, roles{i});
-    end
-  end
-  % a response that clearly falls as the drive rises: every model of hyst
-  % rises with its input (a sensor of the opposite sign, as hyst fit says)
-  ok = ~isnan(used{1}) & ~isnan(used{2});
-  r = corrcoef(used{1}(ok), used{2}(ok));
-  if numel(r) == 4 && r(1, 2) < -0.5
-    error('hyst:usage', ['hyst_fit: y falls as x rises (correlation %.3g): every model of ' ...
-                         'hyst rises with its input; negate y'], r(1, 2));
+                           'or NaN where one is missing'], ...
+            names(1 + strcmp(rec.fault, 'infinite_output')), rec.at, rec.value);
+    case 'no_sample'
+      error('hyst:ERR_ARG', 'hyst_fit: skip %d and delay %d leave no sample of the %d given', ...
+            skip, delay, numel(x));
+    case 'constant_input'
+      error('hyst:usage', 'hyst_fit: x is constant (NaN aside): a record''s drive must vary');
+    case 'constant_output'
+      error('hyst:usage', 'hyst_fit: y is constant (NaN aside): a record''s response must vary');
+    case 'falling'
+      % every model of hyst rises with its input (a sensor of the opposite
+      % sign, as hyst fit says)
+      error('hyst:usage', ['hyst_fit: y falls as x rises (correlation %.3g): every model of ' ...
+                           'hyst rises with its input; negate y'], rec.correlation);
   end
 end
 

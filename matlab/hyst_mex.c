@@ -34,6 +34,7 @@
  *   [delay, fraction, x] = hyst_mex('given_delay', x, y, kind, degree, t_degree, method, lo,
  *                                   hi, skip)
  *   e = hyst_mex('excitation', x, skip, end)   what the hold-out tests a choice on
+ *   r = hyst_mex('record_check', x, y, skip, delay)   what hyst fit refuses in a record
  *   [cands, best, with_creep, widened, fraction, x, rate] = hyst_mex('select', x, y, kinds,
  *       method, lo, hi, skip, delay, t_degree, creep_tau[, rate_tau])
  *   m = hyst_mex('model_parse', bytes, file)    the reader of tools/model_text
@@ -1171,6 +1172,36 @@ static void run_excitation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *p
     plhs[0] = s;
 }
 
+/* record_check: prhs = x, y, skip, delay; plhs = hyst fit's check of the
+ * record before fitting (fit_record_check(), tools/cli/fit_select.c; NaN a
+ * missing sample): a struct fault ('ok', 'infinite_input',
+ * 'infinite_output', 'no_sample', 'constant_input', 'constant_output' or
+ * 'falling'), pairs, at (the infinite sample's 1-based index), value,
+ * correlation, minor. */
+static void run_record_check(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *fields[] = {"fault", "pairs", "at", "value", "correlation", "minor"};
+    fit_record_t r;
+    int fault;
+    mxArray *s;
+    (void)nlhs;
+    if (nrhs != 4 || !is_real_double(prhs[0]) || !is_real_double(prhs[1])) {
+        usage("record_check takes x, y (real double vectors), skip, delay");
+    }
+    fault = fit_record_check((const double *)mxGetData(prhs[0]), mxGetNumberOfElements(prhs[0]),
+                             (const double *)mxGetData(prhs[1]), mxGetNumberOfElements(prhs[1]),
+                             count(prhs[2], "skip", 0.0, 1e15), count(prhs[3], "delay", 0.0, 1e15),
+                             &r);
+    s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
+    set_field(s, "fault", mxCreateString(fit_record_fault_name(fault)));
+    set_field(s, "pairs", mxCreateDoubleScalar((double)r.pairs));
+    set_field(s, "at", mxCreateDoubleScalar((double)r.at + 1.0));
+    set_field(s, "value", mxCreateDoubleScalar(r.value));
+    set_field(s, "correlation", mxCreateDoubleScalar(r.correlation));
+    set_field(s, "minor", mxCreateDoubleScalar((double)r.minor));
+    plhs[0] = s;
+}
+
 /* given_delay: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid: degree its
  * intervals), degree, t_degree, method, lo, hi, skip; the delay of that one
  * model as `hyst fit --degree D` without --delay chooses it
@@ -1637,6 +1668,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_given_delay(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "excitation") == 0) {
         run_excitation(nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "record_check") == 0) {
+        run_record_check(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "select") == 0) {
         run_select(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "score") == 0) {

@@ -23,8 +23,10 @@ function failed = run_tests(root, ref, cli)
            @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
            @t_rate_refused, @t_rate_fit_as_cli, @t_grid_sim_inv_equal_cli, @t_grid_written_as_cli, ...
            @t_grid_header_equals_cli, @t_grid_refused, @t_grid_fit_as_cli, ...
-           @t_grid_chosen_as_cli, @t_grid_fit_undetermined, @t_fit_missing_first_input, @t_fit_refuses_record, ...
-           @t_save_writes_regular_files_only, @t_header_refuses_what_init_refuses};
+           @t_grid_chosen_as_cli, @t_grid_fit_undetermined, @t_fit_missing_first_input, ...
+           @t_fit_refuses_record, @t_save_writes_regular_files_only, ...
+           @t_header_refuses_what_init_refuses, @t_fit_checks_record_as_cli, ...
+           @t_fit_warns_degree_on_minor_loops};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -1865,4 +1867,103 @@ function t_grid_chosen_as_cli(ctx)
   check(isequal(kinds, {'everett', 'everett_grid', 'poly'}), 'kinds %s', strjoin(kinds, ' '));
   c = hyst_model_load(cli_file);
   check(isequal(f.knots, c.knots) && isequal(f.weights, c.weights), 'the grid saved differs');
+end
+
+function x = edge_drive()
+  % triangles 0..10, 900 samples
+  x = 10 * abs(mod((0:899)' + 50, 100) - 50) / 50;
+end
+
+function t_fit_checks_record_as_cli(ctx)
+  % hyst_fit refuses a record as hyst fit does, by the tool's own check
+  % (fit_record_check()): a response whose correlation with the drive is
+  % just below -1/2 is refused by both, just above by neither; a missing
+  % (NaN) sample counts as the row left out of the tool's file
+  file = fullfile(ctx.tmp, 'edge.txt');
+  x = edge_drive();
+  xc = x - mean(x);
+  z = cos(0.37 * (0:899)');
+  z = z - mean(z);
+  z = z - (z' * xc) / (xc' * xc) * xc;
+  z = z * norm(xc) / norm(z);
+  warning('off', 'hyst:not_increasing', 'local');
+  for side = [-1 1]
+    r = -0.5 + side * 1e-6;
+    y = 5 - xc + sqrt(1 / r ^ 2 - 1) * z;
+    c = corrcoef(x, y);
+    check(abs(c(1, 2) - r) < 1e-7, 'correlation %.9g, not %.9g', c(1, 2), r);
+    fid = fopen(file, 'w');
+    fprintf(fid, '%.17g %.17g\n', [x y]');
+    fclose(fid);
+    [rc, out] = system(sprintf('"%s" fit --degree 1 --delay 0 --creep none "%s" 2>&1', ...
+                               ctx.cli, file));
+    cli_refused = rc == 1 && ~isempty(strfind(out, 'falls as the input (column 1) rises'));
+    % the record, and the same with a missing drive, response and both inserted
+    recs = {{x, y}, {[x(1:5); NaN; x(6:300); 6; x(301:600); NaN; x(601:end)], ...
+                     [y(1:5); 4; y(6:300); NaN; y(301:600); NaN; y(601:end)]}};
+    for k = 1:2
+      msg = '';
+      try
+        hyst_fit(recs{k}{:}, 'degree', 1, 'delay', 0, 'creep', 'none');
+      catch err
+        msg = err.message;
+      end
+      refused = ~isempty(strfind(msg, 'y falls as x rises'));
+      check(refused == cli_refused && refused == (side < 0), ...
+            'correlation -1/2 %+d e-6 (record %d): hyst_fit "%s", hyst fit (%d) "%s"', side, k, ...
+            msg, rc, out);
+    end
+  end
+end
+
+function x = loops_drive(minor)
+  % triangles 0..10, 0.1 a sample; with minor the later ones turn at 7 and
+  % 3 (three reversals inside the range each)
+  up = linspace(0, 10, 101)';
+  down = linspace(10, 0, 101)';
+  down = down(2:end);
+  a = linspace(0, 7, 71)';
+  b = linspace(7, 3, 41)';
+  c = linspace(3, 7, 41)';
+  d = linspace(7, 0, 71)';
+  inner = [a; b(2:end); c(2:end); d(2:end)];
+  later = [up(2:end); down];
+  if minor
+    later = inner;
+  end
+  x = [up; down; up; down; up; down; later; later; later];
+end
+
+function t_fit_warns_degree_on_minor_loops(ctx)
+  % f0 of a given degree on a drive with minor loops is biased: hyst_fit
+  % warns as hyst fit does (hyst:minor_loops), on major loops only neither
+  % does, nor for the asymmetric kind
+  file = fullfile(ctx.tmp, 'loops.txt');
+  for minor = [false true]
+    x = loops_drive(minor);
+    y = hyst_sim(struct('coeffs', [0.05 1 0], 'lo', 0, 'hi', 10), x);
+    fid = fopen(file, 'w');
+    fprintf(fid, '%.17g %.17g\n', [x y]');
+    fclose(fid);
+    [rc, out] = system(sprintf('"%s" fit --degree 2 --delay 0 --creep none "%s" 2>&1', ...
+                               ctx.cli, file));
+    said = regexp(out, ['the drive has (\d+) reversals inside its range \(minor loops\): f0 ' ...
+                        'of --degree 2 is biased'], 'tokens', 'once');
+    lastwarn('');
+    hyst_fit(x, y, 'degree', 2, 'delay', 0, 'creep', 'none');
+    [msg, id] = lastwarn();
+    warned = strcmp(id, 'hyst:minor_loops');
+    check(rc == 0 && warned == ~isempty(said) && warned == minor, ...
+          'minor loops %d: hyst_fit warned %s "%s", hyst fit (%d) "%s"', minor, id, msg, rc, out);
+    if minor
+      n = regexp(msg, ['^hyst_fit: x has (\d+) reversals inside its range \(minor loops\): ' ...
+                       'f0 of degree 2 is biased'], 'tokens', 'once');
+      check(~isempty(n) && str2double(n{1}) == str2double(said{1}) && str2double(n{1}) == 9, ...
+            'hyst_fit "%s", hyst fit "%s"', msg, out);
+    end
+    lastwarn('');
+    hyst_fit(x, y, 'kind', 'everett', 'degree', 2, 'delay', 0, 'creep', 'none');
+    [msg, id] = lastwarn();
+    check(~strcmp(id, 'hyst:minor_loops'), 'kind everett warned: %s', msg);
+  end
 end

@@ -41,40 +41,42 @@ def _samples(name, v):
 
 def _record(name, v):
     """A record's column as float64: NaN marks a missing sample (an output
-    not fitted, an input the model ignores); an infinite one is refused."""
+    not fitted, an input the model ignores); _check_record() refuses an
+    infinite one."""
     v = np.ascontiguousarray(v, dtype=np.float64)
     if v.ndim != 1:
         raise ValueError(f"{name} must be one-dimensional, not of shape {v.shape}")
-    bad = np.flatnonzero(np.isinf(v))
-    if bad.size:
-        raise ValueError(f"{name}[{bad[0]}] is {v[bad[0]]}: a record's samples are finite "
-                         "numbers, or NaN where one is missing")
     return v
 
 
-def _varies(name, v, what):
-    """Refuses a column whose samples used (NaN aside) are all one number, as
-    hyst fit refuses a constant column: no model could be fitted to it."""
-    v = v[~np.isnan(v)]
-    if v.size == 0 or np.all(v == v[0]):
+def _check_record(x, y, skip, delay):
+    """Refuses what hyst fit refuses in a record, by its check
+    (fit_record_check()): an infinite sample, no sample left, a column whose
+    samples used (NaN aside) are all one number (no model could be fitted
+    to it), a response that clearly falls as its drive rises (every model of
+    hyst rises with its input, so the choice could only pick the least bad;
+    a sensor of the opposite sign is the usual cause). Returns the check's
+    dict (its minor: the drive's reversals inside its range)."""
+    r = _hyst.record_check(x, y, skip, delay)
+    fault = r["fault"]
+    if fault in ("infinite_input", "infinite_output"):
+        name = "x" if fault == "infinite_input" else "y"
+        raise ValueError(f"{name}[{r['at']}] is {r['value']}: a record's samples are finite "
+                         "numbers, or NaN where one is missing")
+    if fault == "no_sample":
+        raise HystError(_hyst.Status.ERR_ARG, f"fit: skip {skip} and delay {delay} "
+                        f"leave no sample of the {len(x)} given")
+    if fault in ("constant_input", "constant_output"):
+        name, what = ("x", "drive") if fault == "constant_input" else ("y", "response")
+        v = r["value"]
         raise ValueError(f"{name} is constant ("
-                         + (f"{v[0]:.9g} at every sample used" if v.size else "NaN throughout")
+                         + (f"{v:.9g} at every sample used" if not math.isnan(v)
+                            else "NaN throughout")
                          + f"): a record's {what} must vary")
-
-
-def _rises(x, y):
-    """Refuses, as hyst fit does, a record whose response clearly falls as
-    its drive rises (correlation below -1/2): every model of hyst rises
-    with its input, so the choice could only pick the least bad; a sensor of
-    the opposite sign is the usual cause."""
-    if len(x) != len(y):
-        return  # the library's ERR_ARG says so
-    ok = ~(np.isnan(x) | np.isnan(y))
-    if np.count_nonzero(ok) > 1:
-        r = float(np.corrcoef(x[ok], y[ok])[0, 1])
-        if r < -0.5:
-            raise ValueError(f"y falls as x rises (correlation {r:.3g}): every model of hyst "
-                             "rises with its input; negate y")
+    if fault == "falling":
+        raise ValueError(f"y falls as x rises (correlation {r['correlation']:.3g}): every model "
+                         "of hyst rises with its input; negate y")
+    return r
 
 
 def _variant(dtype, f32, f64):
@@ -613,7 +615,9 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     fit_rms, status, chosen; with a creep term scored also creep_tau (0:
     none), creep_weight, creep_holdout_rms, with_creep: chosen with it).
     With a degree given, ``kind=None`` means poly and ``t_degree=None`` all
-    of E's terms (degree - 1).
+    of E's terms (degree - 1); f0 of a given degree on a drive with minor
+    loops is biased (its estimator takes every sample for a major branch's):
+    a :class:`FitWarning` says so, as ``hyst fit --degree`` warns.
 
     ``creep`` chooses a creep term as ``hyst fit --creep`` does
     (docs/creep.md): ``"auto"`` (the default) scores each candidate alone
@@ -656,12 +660,8 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     skip = _samples("skip", skip)
     if delay is not None:
         delay = _samples("delay", delay)
-    if len(x) <= skip + (delay or 0):
-        raise HystError(_hyst.Status.ERR_ARG, f"fit: skip {skip} and delay {delay or 0} "
-                        f"leave no sample of the {len(x)} given")
-    _varies("x", x[skip:len(x) - (delay or 0)], "drive")
-    _varies("y", y[skip + (delay or 0):], "response")
-    _rises(x[skip:len(x) - (delay or 0)], y[skip + (delay or 0):])
+    record = _check_record(x, y, skip, delay or 0)
+    minor_loops = degree is not None and (kind or "poly") == "poly" and record["minor"] > 0
     cands, chosen, with_creep, fraction, search = None, None, False, 0.0, {}
     if degree is None:
         kinds = KINDS if kind is None else (kind,)
@@ -733,7 +733,20 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
             candidates=cands, creep=creep_info, rate=rate_info)
     if cands is not None:
         f.excitation = _excitation(x, skip, len(x) - int(delay))
+    if minor_loops:
+        _warn_minor_loops(record["minor"], int(degree))
     return f
+
+
+def _warn_minor_loops(minor, degree):
+    """hyst fit's warning of f0 of a given degree fitted on a drive with
+    minor loops (FitWarning): biased, the estimator taking every sample for
+    a major branch's."""
+    warnings.warn(f"x has {minor} reversal{'' if minor == 1 else 's'} inside its range (minor "
+                  f"loops): f0 of degree {degree} is biased, its fit taking every rising sample "
+                  "for the major ascending branch and every falling one for the descending; "
+                  "leave degree=None to let fit choose, or fit kind='everett'", FitWarning,
+                  stacklevel=3)
 
 
 def _excitation(x, skip, end):

@@ -28,5 +28,6 @@ class HystError(Exception):
 class FitWarning(UserWarning):
     """What :func:`hyst.fit`'s result was not tested on or determined by, as
     ``hyst fit`` warns of it: the automatic choice's last third whose inputs
-    span less than half the record's range, or that holds no minor loop; a
-    grid whose masses the record's turning points do not determine."""
+    span less than half the record's range, or that holds no minor loop; f0
+    of a given degree fitted on a drive with minor loops (biased); a grid
+    whose masses the record's turning points do not determine."""

@@ -1293,6 +1293,25 @@ nb::dict excitation(const In<double> &x, size_t skip, size_t end)
     return d;
 }
 
+/* hyst fit's check of the record x, y before fitting, pairs x[skip + i] with
+ * y[skip + delay + i] (fit_record_check()): dict fault (what is wrong: "ok",
+ * "infinite_input", "infinite_output", "no_sample", "constant_input",
+ * "constant_output" or "falling"), pairs, at, value, correlation, minor. */
+nb::dict record_check(const In<double> &x, const In<double> &y, size_t skip, size_t delay)
+{
+    fit_record_t r;
+    const int fault = fit_record_check(x.data(), x.shape(0), y.data(), y.shape(0), skip, delay,
+                                       &r);
+    nb::dict d;
+    d["fault"] = fit_record_fault_name(fault);
+    d["pairs"] = r.pairs;
+    d["at"] = r.at;
+    d["value"] = r.value;
+    d["correlation"] = r.correlation;
+    d["minor"] = r.minor;
+    return d;
+}
+
 /* fit_choose() over candidates given as dicts (kind, degree, t_degree,
  * holdout_rms and, optionally, creep_tau, creep_holdout_rms): the rule
  * select() applies, alone. */
@@ -1618,6 +1637,11 @@ NB_MODULE(_hyst, m)
           "What hyst fit's hold-out tests the choice on (fit_holdout_excitation()): dict fitted_lo, "
           "fitted_hi, holdout_n, beyond, span, minor.");
     m.attr("FIT_HOLDOUT_MIN_SPAN") = FIT_HOLDOUT_MIN_SPAN;
+    m.def("record_check", &record_check, "x"_a, "y"_a, "skip"_a, "delay"_a,
+          "hyst fit's check of a record before fitting (fit_record_check()): dict fault "
+          "(\"ok\", \"infinite_input\", \"infinite_output\", \"no_sample\", "
+          "\"constant_input\", \"constant_output\", \"falling\"), pairs, at, value, "
+          "correlation, minor.");
     m.def("choose", &choose, "candidates"_a, "creep_tau"_a = -1.0,
           "hyst fit's rule (fit_choose()) over scored candidates: (index or None, with creep).");
     m.attr("FIT_POLY") = static_cast<int>(FIT_POLY);

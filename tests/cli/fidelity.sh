@@ -19,6 +19,9 @@
 #    split, the ratio as printed; a warning when the last third holds no
 #    minor loop (major loops only) or spans under half the inputs' range, none
 #    when it has both;
+#  - f0 of a given degree fitted on a drive with minor loops: a warning (the
+#    joint estimator takes every sample for a major branch's), none on major
+#    loops only, for --kind everett or without --degree;
 #  - a model file with an identified range outside its domain is refused.
 #   fidelity.sh <hyst> <work dir>
 set -euo pipefail
@@ -63,7 +66,7 @@ awk 'BEGIN { for (k = 0; k <= 32000; k++) printf "%.9g\n", 20 - 20 * cos(2 * 3.1
 grep -q '^# delay 20.5 samples (sub-sample' fith.txt || fail "sub-sample delay: $(grep '^# delay' fith.txt)"
 grep -qx 'delay 20.5' mh.hyst || fail "model file: $(grep delay mh.hyst)"
 # with --degree too (no --delay): the delay chosen for that model
-"$tool" fit --degree 3 --creep none rech.txt > fitd.txt || fail "fit --degree: $(cat fitd.txt)"
+"$tool" fit --degree 3 --creep none rech.txt > fitd.txt 2> fitd_err.txt || fail "fit --degree: $(cat fitd.txt)"
 grep -q '^# delay 20.5 samples (sub-sample' fitd.txt || fail "--degree 3: $(grep '^# delay' fitd.txt)"
 
 # ---- the choice's report ----
@@ -93,6 +96,16 @@ awk 'BEGIN { for (c = 0; c < 4; c++) { for (x = 0; x < 40; x += 0.25) print x; f
 "$tool" fit --creep none recc.txt > /dev/null 2> corner_err.txt || fail "fit of the corner record"
 grep -q 'warning: recc.txt: the last third.s inputs span 1[45][.0-9]* % of the record.s range' corner_err.txt ||
     fail "no warning of a narrow last third: $(cat corner_err.txt)"
+
+# ---- f0 of a given degree on minor loops ----
+# recc.txt's drive reverses inside its range 59 times (30 peaks at 15.75 V, 29
+# valleys at 10 V); rech.txt's (a sine 0..40) never
+"$tool" fit --degree 2 --delay 0 --creep none recc.txt > /dev/null 2> minor_err.txt || fail "fit --degree 2 of the corner record"
+grep -q '^hyst fit: warning: recc.txt: the drive has 59 reversals inside its range (minor loops): f0 of --degree 2 is biased,.* leave out --degree to let fit choose, or fit --kind everett$' minor_err.txt ||
+    fail "no warning of f0 fitted on minor loops: $(cat minor_err.txt)"
+! grep -q 'minor loops): f0' fitd_err.txt || fail "warned of minor loops on major loops only: $(cat fitd_err.txt)"
+"$tool" fit --kind everett --degree 2 --delay 0 --creep none recc.txt > /dev/null 2> minor_ev_err.txt || fail "fit --kind everett of the corner record"
+! grep -q 'minor loops): f0' minor_ev_err.txt corner_err.txt || fail "warned of f0 on minor loops for another kind or the choice"
 
 # ---- inputs beyond the range fitted ----
 cat > asym.hyst <<'MODEL'

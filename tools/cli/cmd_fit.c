@@ -45,7 +45,8 @@ static const char help[] =
     "                 last thirds and predicts the middle one (the RMS of both);\n"
     "                 of the candidates within 1 % of the lowest RMS prediction\n"
     "                 error, the one with the fewest parameters wins (every\n"
-    "                 candidate is printed as a '# candidate' line)\n"
+    "                 candidate is printed as a '# candidate' line). With N, f0 (kind\n"
+    "                 tcm) on a drive with minor loops is biased: a warning says so\n"
     "  --t-degree K   --kind everett: fit only E's terms w^i t^j with j <= K\n"
     "                 (0..N-1; the others 0). Default: with --degree, N-1 (all\n"
     "                 terms); without, every K is a candidate. Major loops alone\n"
@@ -494,6 +495,19 @@ static void warn_excitation(const fit_opts_t *o, const char *name)
                               "tested on minor loops\n",
                       name);
     }
+}
+
+/* On stderr: f0 of a given degree fitted on a drive with minor loops
+ * (reversals inside its range), whose samples lie on neither major branch
+ * although the estimator takes each for one of them. */
+static void warn_minor_loops(const fit_opts_t *o, const char *name, size_t minor)
+{
+    (void)fprintf(stderr, "hyst fit: warning: %s: the drive has %lu reversal%s inside its "
+                          "range (minor loops): f0 of --degree %u is biased, its fit taking "
+                          "every rising sample for the major ascending branch and every falling "
+                          "one for the descending; leave out --degree to let fit choose, or fit "
+                          "--kind everett\n",
+                  name, (unsigned long)minor, minor == 1u ? "" : "s", o->cfg.degree);
 }
 
 /* The same model (kind, degree, t-degree, domain, creep option) at any delay. */
@@ -1054,22 +1068,6 @@ static int header_write(const fit_opts_t *o, const fit_final_t *f, cli_replace_t
     return cli_replace_write(h, text, len);
 }
 
-/* 1 after a message if the @p n values @p v of column @p col are all equal:
- * nothing to fit, and the fit would only report a flat curve's slope. */
-static int constant_column(const char *name, unsigned long col, const double *v, size_t n,
-                           const char *what, const char *option)
-{
-    size_t i;
-    for (i = 1u; i < n && v[i] == v[0]; ++i) {
-    }
-    if (n == 0u || i < n) {
-        return 0;
-    }
-    return cli_fail("fit", "%s: column %lu is constant (%.9g on every one of the %lu lines "
-                           "used): choose the %s column with %s",
-                    name, col, v[0], (unsigned long)n, what, option);
-}
-
 /* 1 after a message if fewer than two of the @p n inputs x lie in --domain
  * (the others are ignored): the fit would blame the degree. */
 static int domain_empty(const fit_opts_t *o, const char *name, const double *x, size_t n)
@@ -1089,33 +1087,38 @@ static int domain_empty(const fit_opts_t *o, const char *name, const double *x, 
                     (double)o->cfg.hi, lo, hi);
 }
 
-/* 1 after a message if the output of the @p n pairs (x[i], y[i]) clearly
- * falls as the input rises (correlation below -1/2): every kind's branches
- * rise with the input, so no model fits it, though the choice would pick the
- * least bad (a grid of masses >= 0 is always accepted): a sensor of the
- * opposite sign is the usual cause. */
-static int falling_output(const fit_opts_t *o, const char *name, const double *x,
-                          const double *y, size_t n)
+/* 1 after a message if the record is refused before fitting
+ * (fit_record_check(): a constant column, nothing to fit and the fit would
+ * only report a flat curve's slope; an output that clearly falls as the
+ * input rises, which no model fits though the choice would pick the least
+ * bad); *rec what it found. */
+static int record_refused(const fit_opts_t *o, const char *name, const cli_table_t *t,
+                          fit_record_t *rec)
 {
-    double mx = 0.0, my = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0, r;
-    size_t i;
-    for (i = 0u; i < n; ++i) {
-        mx += x[i] / (double)n;
-        my += y[i] / (double)n;
-    }
-    for (i = 0u; i < n; ++i) {
-        sxx += (x[i] - mx) * (x[i] - mx);
-        syy += (y[i] - my) * (y[i] - my);
-        sxy += (x[i] - mx) * (y[i] - my);
-    }
-    r = sxy / sqrt(sxx) / sqrt(syy); /* NaN if the sums overflow: the fit says "rescale" */
-    if (!(r < -0.5)) {
+    int out;
+    (void)fit_record_check(t->col[0], t->n, t->col[1], t->n, o->cfg.skip, o->cfg.delay, rec);
+    out = rec->fault == FIT_RECORD_CONSTANT_OUTPUT;
+    switch (rec->fault) {
+    case FIT_RECORD_OK:
         return 0;
+    case FIT_RECORD_NO_SAMPLE:
+        return cli_fail("fit", "%s: --skip %lu and --delay %lu leave no sample of the %lu read",
+                        name, (unsigned long)o->cfg.skip, (unsigned long)o->cfg.delay,
+                        (unsigned long)t->n);
+    case FIT_RECORD_CONSTANT_INPUT:
+    case FIT_RECORD_CONSTANT_OUTPUT:
+        return cli_fail("fit", "%s: column %lu is constant (%.9g on every one of the %lu lines "
+                               "used): choose the %s column with %s",
+                        name, o->cols[out], rec->value, (unsigned long)rec->pairs,
+                        out ? "output" : "input", out ? "--ycol" : "--xcol");
+    case FIT_RECORD_FALLING:
+        return cli_fail("fit", "%s: the output (column %lu) falls as the input (column %lu) "
+                               "rises (correlation %.3g): every model of hyst rises with its "
+                               "input; negate the output column",
+                        name, o->cols[1], o->cols[0], rec->correlation);
+    default: /* an infinite sample: the reader refuses it */
+        return cli_fail("fit", "%s: a sample is not finite", name);
     }
-    return cli_fail("fit", "%s: the output (column %lu) falls as the input (column %lu) rises "
-                           "(correlation %.3g): every model of hyst rises with its input; negate "
-                           "the output column",
-                    name, o->cols[1], o->cols[0], r);
 }
 
 int cmd_fit(int argc, char **argv)
@@ -1124,6 +1127,7 @@ int cmd_fit(int argc, char **argv)
     cli_table_t t;
     fit_final_t f;
     cli_replace_t h, ms;
+    fit_record_t rec;
     const char *name;
     size_t pairs;
     char compare[512] = "";
@@ -1157,12 +1161,7 @@ int cmd_fit(int argc, char **argv)
         cli_table_free(&t);
         return 1;
     }
-    if (pairs > 0u &&
-        (constant_column(name, o.cols[0], t.col[0] + o.cfg.skip, pairs, "input", "--xcol") ||
-         constant_column(name, o.cols[1], t.col[1] + o.cfg.skip + o.cfg.delay, pairs, "output",
-                         "--ycol") ||
-         falling_output(&o, name, t.col[0] + o.cfg.skip, t.col[1] + o.cfg.skip + o.cfg.delay,
-                        pairs))) {
+    if (record_refused(&o, name, &t, &rec)) {
         cli_table_free(&t);
         return 1;
     }
@@ -1281,6 +1280,9 @@ int cmd_fit(int argc, char **argv)
     }
     if (!o.have_degree) {
         warn_excitation(&o, name);
+    }
+    if (o.have_degree && o.final_kind == FIT_POLY && rec.minor > 0u) {
+        warn_minor_loops(&o, name, rec.minor);
     }
     if (!f.usable) {
         const char *nothing =

@@ -820,3 +820,104 @@ hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_
     }
     return HYST_OK;
 }
+
+/* The first infinite entry of v[0..n) (n if none). */
+static size_t first_infinite(const double *v, size_t n)
+{
+    size_t k;
+    for (k = 0u; k < n && !isinf(v[k]); ++k) {
+    }
+    return k;
+}
+
+/* 1 if the entries of v[0..n), NaN aside, are one number or none (*value
+ * it, NaN if none). */
+static int constant_column(const double *v, size_t n, double *value)
+{
+    size_t k;
+    *value = fit_first_input(v, 0u, n);
+    for (k = 0u; k < n; ++k) {
+        if (!isnan(v[k]) && v[k] != *value) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* The correlation of the pairs (x[k], y[k]), k < n, with both present (NaN
+ * when fewer than two, a column of them constant or the sums overflow). */
+static double record_correlation(const double *x, const double *y, size_t n)
+{
+    double mx = 0.0, my = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0;
+    size_t k, m = 0u;
+    for (k = 0u; k < n; ++k) {
+        m += !isnan(x[k]) && !isnan(y[k]) ? 1u : 0u;
+    }
+    if (m < 2u) {
+        return NAN;
+    }
+    for (k = 0u; k < n; ++k) { /* each over m: the sum itself may overflow */
+        if (!isnan(x[k]) && !isnan(y[k])) {
+            mx += x[k] / (double)m;
+            my += y[k] / (double)m;
+        }
+    }
+    for (k = 0u; k < n; ++k) {
+        if (!isnan(x[k]) && !isnan(y[k])) {
+            sxx += (x[k] - mx) * (x[k] - mx);
+            syy += (y[k] - my) * (y[k] - my);
+            sxy += (x[k] - mx) * (y[k] - my);
+        }
+    }
+    return sxx > 0.0 && syy > 0.0 ? sxy / sqrt(sxx) / sqrt(syy) : NAN;
+}
+
+int fit_record_check(const double *x, size_t nx, const double *y, size_t ny, size_t skip,
+                     size_t delay, fit_record_t *r)
+{
+    const double *u, *v;
+    double lo, hi;
+    memset(r, 0, sizeof *r);
+    r->value = NAN;
+    r->correlation = NAN;
+    if ((r->at = first_infinite(x, nx)) < nx) {
+        r->value = x[r->at];
+        return r->fault = FIT_RECORD_INFINITE_INPUT;
+    }
+    if ((r->at = first_infinite(y, ny)) < ny) {
+        r->value = y[r->at];
+        return r->fault = FIT_RECORD_INFINITE_OUTPUT;
+    }
+    r->at = 0u;
+    if (nx != ny) {
+        return FIT_RECORD_OK;
+    }
+    if (nx <= skip || nx - skip <= delay) {
+        return r->fault = FIT_RECORD_NO_SAMPLE;
+    }
+    r->pairs = nx - skip - delay;
+    u = x + skip;
+    v = y + skip + delay;
+    if (constant_column(u, r->pairs, &r->value)) {
+        return r->fault = FIT_RECORD_CONSTANT_INPUT;
+    }
+    if (constant_column(v, r->pairs, &r->value)) {
+        return r->fault = FIT_RECORD_CONSTANT_OUTPUT;
+    }
+    r->value = NAN;
+    fit_input_range(u, 0u, r->pairs, 0.0, &lo, &hi);
+    (void)fit_reversals(u, 0u, r->pairs, lo, hi, &r->minor);
+    r->correlation = record_correlation(u, v, r->pairs);
+    if (r->correlation < FIT_FALLING_CORRELATION) {
+        return r->fault = FIT_RECORD_FALLING;
+    }
+    return FIT_RECORD_OK;
+}
+
+const char *fit_record_fault_name(int fault)
+{
+    static const char *const names[] = {"ok",        "infinite_input", "infinite_output",
+                                        "no_sample", "constant_input", "constant_output",
+                                        "falling"};
+    return fault >= 0 && fault <= FIT_RECORD_FALLING ? names[fault] : "unknown";
+}

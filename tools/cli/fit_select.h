@@ -385,4 +385,45 @@ int fit_rate_search(const hyst_ident_config_t *base, const double *x, const doub
                     const fit_candidate_t *chosen, int with_creep, double rate_tau,
                     fit_candidate_t *out);
 
+/* A response whose correlation with its drive is below this clearly falls
+ * as the drive rises: every kind's branches rise with the input, so no
+ * model fits it (a sensor of the opposite sign is the usual cause). */
+#define FIT_FALLING_CORRELATION (-0.5)
+
+/* What fit_record_check() finds wrong with a record: the first of these. */
+enum {
+    FIT_RECORD_OK = 0,
+    FIT_RECORD_INFINITE_INPUT,  /* x[at] is infinite (NaN is a missing sample) */
+    FIT_RECORD_INFINITE_OUTPUT, /* y[at] is */
+    FIT_RECORD_NO_SAMPLE,       /* skip and delay leave no pair */
+    FIT_RECORD_CONSTANT_INPUT,  /* the pairs' inputs, missing ones aside, one number or none */
+    FIT_RECORD_CONSTANT_OUTPUT, /* their outputs alike */
+    FIT_RECORD_FALLING          /* correlation below FIT_FALLING_CORRELATION */
+};
+
+/* A record as fit_record_check() finds it. */
+typedef struct fit_record {
+    int fault;          /* FIT_RECORD_OK, or what is wrong */
+    size_t pairs;       /* (x[skip + i], y[skip + delay + i]), i < pairs */
+    size_t at;          /* FIT_RECORD_INFINITE_*: the sample's index */
+    double value;       /* infinite: the sample; constant: the number (NaN: every one missing) */
+    double correlation; /* of the pairs with both samples (NaN: not determined) */
+    size_t minor;       /* the pairs' drive's reversals inside its range (fit_reversals()) */
+} fit_record_t;
+
+/* The record x[0..nx), y[0..ny) as hyst fit, Python's fit() and Octave's
+ * hyst_fit check it before fitting (x[skip + i] with y[skip + delay + i]; a
+ * NaN sample is missing: skipped in the sums): into *r, its fault the first
+ * of an infinite sample (x's, then y's), no pair left, a constant input, a
+ * constant output, an output that falls as the input rises. Columns of
+ * different lengths are checked for infinite samples only (the library
+ * refuses them: HYST_ERR_ARG). Returns r->fault. */
+int fit_record_check(const double *x, size_t nx, const double *y, size_t ny, size_t skip,
+                     size_t delay, fit_record_t *r);
+
+/* The fault's name as Python's and Octave's front ends take it: "ok",
+ * "infinite_input", "infinite_output", "no_sample", "constant_input",
+ * "constant_output" or "falling". */
+const char *fit_record_fault_name(int fault);
+
 #endif
