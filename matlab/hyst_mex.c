@@ -1121,7 +1121,7 @@ static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     base.skip = count(prhs[8], "skip", 0.0, 1e15);
     c.delay = count(prhs[9], "delay", 0.0, 1e15);
     fit_score(&base, (const double *)mxGetData(prhs[0]), (const double *)mxGetData(prhs[1]),
-              mxGetNumberOfElements(prhs[0]), scalar(prhs[10], "creep_tau"), &c);
+              mxGetNumberOfElements(prhs[0]), NULL, scalar(prhs[10], "creep_tau"), &c);
     plhs[0] = mxCreateDoubleScalar(c.holdout_rms);
     if (nlhs > 1) {
         plhs[1] = mxCreateStructMatrix(1, 1, 3, fields);
@@ -1202,7 +1202,7 @@ static void run_given_delay(int nlhs, mxArray *plhs[], int nrhs, const mxArray *
     drive = (double *)mxCalloc(n > 0u ? n : 1u, sizeof *drive);
     memcpy(drive, mxGetData(prhs[0]), n * sizeof *drive);
     st = fit_given_delay(&base, kind, t_degree, drive, (const double *)mxGetData(prhs[1]), n,
-                         &delay, &found);
+                         NULL, &delay, &found);
     if (st != HYST_OK) {
         mxFree(drive);
         fail_status("given_delay", (int)st);
@@ -1264,7 +1264,8 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
                     t_degree < 0 || t_degree >= HYST_EVERETT_MAX_DEGREE ? FIT_ANY_T_DEGREE
                                                                         : (unsigned)t_degree,
                     scalar(prhs[9], "creep_tau"), delay < 0, drive,
-                    (const double *)mxGetData(prhs[1]), n, cand, FIT_SEARCH_CANDIDATES, &found);
+                    (const double *)mxGetData(prhs[1]), n, NULL, cand, FIT_SEARCH_CANDIDATES,
+                    &found);
     if (st != HYST_OK) {
         mxFree(cand);
         mxFree(drive);
@@ -1325,7 +1326,7 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
         memset(&with_rate, 0, sizeof with_rate);
         with_rate.creep.holdout_rms = NAN;
         if (rate_tau >= 0 && best != (size_t)-1) {
-            kept = fit_rate_search(&base, drive, (const double *)mxGetData(prhs[1]), n,
+            kept = fit_rate_search(&base, drive, (const double *)mxGetData(prhs[1]), n, NULL,
                                    &cand[best], with_creep, rate_tau, &with_rate);
         }
         plhs[6] = mxCreateStructMatrix(1, 1, 4, rate_fields);

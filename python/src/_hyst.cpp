@@ -1192,7 +1192,7 @@ nb::dict score_candidate(const In<double> &x, const In<double> &y, int kind, uns
     c.degree = degree;
     c.t_degree = t_degree;
     c.delay = delay;
-    fit_score(&base, x.data(), y.data(), x.shape(0), creep_tau, &c);
+    fit_score(&base, x.data(), y.data(), x.shape(0), nullptr, creep_tau, &c);
     return candidate_dict(c);
 }
 
@@ -1213,7 +1213,8 @@ nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds,
     fit_found_t found;
     check(fit_search(&base, kinds,
                      t_degree < 0 ? FIT_ANY_T_DEGREE : static_cast<unsigned>(t_degree), creep_tau,
-                     delay < 0, drive.data(), y.data(), n, cand.data(), cand.size(), &found),
+                     delay < 0, drive.data(), y.data(), n, nullptr, cand.data(), cand.size(),
+                     &found),
           "select");
     const size_t count = found.count, best = found.best;
     const int with_creep = found.with_creep;
@@ -1234,7 +1235,7 @@ nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds,
     search["with_rate"] = false;
     if (rate_tau >= 0 && best != (size_t)-1) {
         fit_candidate_t with_rate;
-        const int kept = fit_rate_search(&base, drive.data(), y.data(), n, &cand[best],
+        const int kept = fit_rate_search(&base, drive.data(), y.data(), n, nullptr, &cand[best],
                                          with_creep, rate_tau, &with_rate);
         search["with_rate"] = kept != 0;
         search["rate_tau"] = with_rate.creep.rate_tau;
@@ -1260,7 +1261,7 @@ nb::dict given_delay(const In<double> &x, const In<double> &y, int kind, unsigne
     fit_found_t found;
     size_t delay = 0u;
     check(fit_given_delay(&base, kind == FIT_EVERETT || kind == FIT_GRID ? kind : FIT_POLY,
-                          t_degree, drive.data(), y.data(), n, &delay, &found),
+                          t_degree, drive.data(), y.data(), n, nullptr, &delay, &found),
           "given_delay");
     nb::dict d;
     d["delay"] = delay;
