@@ -8,7 +8,8 @@
 #    the hold-out takes a longer delay, one that imitates the loop's shape
 #    at that rate; scored on the fast record, the choice is the dead time,
 #    and its model predicts the fast record better. The validation RMS
-#    printed is the error of the model saved, run by `hyst sim --model`.
+#    printed is the error of the model saved, run by `hyst sim --model`,
+#    with a creep or a rate term too.
 # 2. A plant of the kinds compared (f0 of degree 3, which the everett kind
 #    of t-degree 0 holds, 3 samples late): the degree and the delay found on
 #    a record at another speed; with --degree, the delay.
@@ -77,6 +78,16 @@ printed=$(sed -n 's/^# chosen on .*validation rms \([0-9.e-]*\)$/\1/p' validated
     fail "validation rms $printed is not sim's $(sim_rms validated.hyst fast.txt)"
 awk -v a="$(sim_rms alone.hyst fast.txt)" -v b="$printed" 'BEGIN { exit !(b < a) }' ||
     fail "the validated model predicts the fast record no better: $printed, alone $(sim_rms alone.hyst fast.txt)"
+# a creep or a rate term given: fitted on the slow record, scored on the fast
+# one with the model, and the score the model file's error there
+for term in "--creep 500:creep_tau 500" "--creep none --rate 1:rate_tau 1"; do
+    "$tool" fit ${term%:*} --validate fast.txt --save terms.hyst slow.txt > terms.txt 2> /dev/null ||
+        fail "fit ${term%:*} --validate"
+    grep -qx "${term#*:}" terms.hyst || fail "${term%:*}: no ${term#*:} in the model file"
+    printed=$(sed -n 's/^# chosen on .*validation rms \([0-9.e-]*\)$/\1/p' terms.txt)
+    [ "$(sim_rms terms.hyst fast.txt)" = "$printed" ] ||
+        fail "$term: validation rms $printed is not sim's $(sim_rms terms.hyst fast.txt)"
+done
 # with the creep option compared too (the default), the same dead time
 "$tool" fit --validate fast.txt slow.txt > validated_creep.txt 2> /dev/null || fail "--creep auto"
 grep -q '^# delay 1 samples$' validated_creep.txt || fail "creep auto: $(grep '^# delay' validated_creep.txt)"
