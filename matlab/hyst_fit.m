@@ -469,30 +469,22 @@ end
 % gateway's excitation: fit_holdout_excitation(), as 'hyst fit' prints it),
 % with hyst fit's warnings (hyst:excitation).
 function e = excitation(x, skip, finish, vx, vy, delay)
-  if ~isempty(vx)  % what the validation record tests it on
+  if isempty(vx)
+    e = hyst_mex('excitation', x, skip, finish);
+    part = {'the last third''s', 'the record''s range', 'the last third', 'the inputs'' range'};
+  else  % what the validation record tests it on
     e = hyst_mex('excitation', x, skip, finish, vx, vy, delay);
-    if e.span < e.min_span
-      warning('hyst:excitation', ['hyst_fit: the validation record''s inputs span %.3g %% of ' ...
-                                  'the range of the record''s: the choice was not tested over ' ...
-                                  'the rest of it'], 100 * e.span);
-    end
-    if e.minor == 0
-      warning('hyst:excitation', ['hyst_fit: the validation record holds no minor loop: the ' ...
-                                  'choice was not tested on minor loops']);
-    end
-    e = rmfield(e, 'min_span');
-    return;
+    part = {'the validation record''s', 'the range of the record''s', 'the validation record', ...
+            'the record''s inputs'' range or beyond'};
   end
-  e = hyst_mex('excitation', x, skip, finish);
   if e.span < e.min_span
-    warning('hyst:excitation', ['hyst_fit: the last third''s inputs span %.3g %% of the ' ...
-                                'record''s range: the choice was not tested over the rest ' ...
-                                'of it'], 100 * e.span);
+    warning('hyst:excitation', ['hyst_fit: %s inputs span %.3g %% of %s: the choice was not ' ...
+                                'tested over the rest of it'], part{1}, 100 * e.span, part{2});
   end
   if e.minor == 0
-    warning('hyst:excitation', ['hyst_fit: the last third holds no minor loop (every ' ...
-                                'reversal at an end of the inputs'' range): the choice was ' ...
-                                'not tested on minor loops']);
+    warning('hyst:excitation', ['hyst_fit: %s holds no minor loop (every reversal at an end ' ...
+                                'of %s): the choice was not tested on minor loops'], ...
+            part{3}, part{4});
   end
   e = rmfield(e, 'min_span');
 end

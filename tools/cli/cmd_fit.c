@@ -646,6 +646,22 @@ static void chosen_words(const fit_opts_t *o, char *buf, size_t size)
                        (o->with_rate ? FIT_RATE_PARAMETERS : 0u));
 }
 
+/* The lines of what the choice was tested on (`what`: hold-out or
+ * validation) against the range of the `fitted` part or record. */
+static void print_excitation(const fit_opts_t *o, const char *what, const char *fitted)
+{
+    (void)printf("# %s: %lu of its %lu inputs outside [%.9g, %.9g], the range of the %s "
+                 "fitted%s\n",
+                 what, (unsigned long)o->excitation.beyond, (unsigned long)o->excitation.holdout_n,
+                 o->excitation.fitted_lo, o->excitation.fitted_hi, fitted,
+                 o->excitation.beyond > 0u ? " (predicted by the branches continued beyond it: "
+                                             "everett widened; the others clamp them)"
+                                           : "");
+    (void)printf("# %s excitation: its inputs span %.3g %% of the record's range, %lu reversals "
+                 "inside it (minor loops)\n",
+                 what, 100.0 * o->excitation.span, (unsigned long)o->excitation.minor);
+}
+
 /* --validate: what the choice was scored on, and the lines of its inputs. */
 static void print_validated(const fit_opts_t *o)
 {
@@ -657,16 +673,7 @@ static void print_validated(const fit_opts_t *o)
                  o->vname, chosen, (unsigned long)o->excitation.holdout_n, kinds_compared(o),
                  o->with_rate ? o->rate.holdout_rms
                               : fit_option_rms(&candidates[best_candidate], o->with_creep));
-    (void)printf("# validation: %lu of its %lu inputs outside [%.9g, %.9g], the range of the "
-                 "record fitted%s\n",
-                 (unsigned long)o->excitation.beyond, (unsigned long)o->excitation.holdout_n,
-                 o->excitation.fitted_lo, o->excitation.fitted_hi,
-                 o->excitation.beyond > 0u ? " (predicted by the branches continued beyond it: "
-                                             "everett widened; the others clamp them)"
-                                           : "");
-    (void)printf("# validation excitation: its inputs span %.3g %% of the record's range, %lu "
-                 "reversals inside it (minor loops)\n",
-                 100.0 * o->excitation.span, (unsigned long)o->excitation.minor);
+    print_excitation(o, "validation", "record");
     print_delays_searched(o);
 }
 
@@ -681,16 +688,7 @@ static void print_holdout(const fit_opts_t *o)
                  "more; kinds compared: %s)\n",
                  chosen, (unsigned)FIT_SPLIT_MIN, kinds_compared(o));
     print_delays_searched(o);
-    (void)printf("# hold-out: %lu of its %lu inputs outside [%.9g, %.9g], the range of the "
-                 "part fitted%s\n",
-                 (unsigned long)o->excitation.beyond, (unsigned long)o->excitation.holdout_n,
-                 o->excitation.fitted_lo, o->excitation.fitted_hi,
-                 o->excitation.beyond > 0u ? " (predicted by the branches continued beyond it: everett "
-                                  "widened; the others clamp them)"
-                                : "");
-    (void)printf("# hold-out excitation: its inputs span %.3g %% of the record's range, %lu "
-                 "reversals inside it (minor loops)\n",
-                 100.0 * o->excitation.span, (unsigned long)o->excitation.minor);
+    print_excitation(o, "hold-out", "part");
 }
 
 static void print_candidates(const fit_opts_t *o)
