@@ -96,10 +96,19 @@ function f = hyst_fit(x, y, varargin)
 %   fields rate_tau, rate_weight (HYST_SIM, HYST_INV, HYST_MODEL_SAVE and
 %   HYST_HEADER take them) and rate (tau, weight, holdout_rms,
 %   holdout_rms_without).
+%
+%   'validate', [X2 Y2] (a second record of the same actuator, its drive
+%   and output as two columns: validation data, as 'hyst fit --validate')
+%   makes every choice above (kind, degree, delay, creep, rate) on it
+%   instead of the hold-out: each candidate fitted on the whole of X, Y
+%   from 'skip' on and scored by its RMS error run from rest over X2, Y2
+%   from 'skip' on (the candidates' holdout_rms is that error). F then has
+%   the field validation_rms, the model's error there, and excitation says
+%   what X2 tests the choice on. The record is refused as X, Y are.
 %   A library error raises hyst:<status name>, e.g. hyst:ERR_SINGULAR.
   opts = hyst_options(varargin, struct('kind', '', 'degree', [], 'skip', 0, 'delay', [], ...
                                        'method', 'joint', 'domain', [], 'tdegree', [], ...
-                                       'creep', 'auto', 'rate', 'none'), ...
+                                       'creep', 'auto', 'rate', 'none', 'validate', []), ...
                       'hyst_fit');
   kinds = 7;  % the choice compares the three kinds unless 'kind' names one
   if isempty(opts.kind)
@@ -139,12 +148,31 @@ function f = hyst_fit(x, y, varargin)
   rec = check_record(x, y, opts);
   % f0 of a given degree on a drive with minor loops: warned of below
   minor_loops = ~isempty(opts.degree) && strcmp(opts.kind, 'poly') && rec.minor > 0;
+  vx = zeros(0, 1);  % the validation record (empty: the hold-out)
+  vy = zeros(0, 1);
+  if ~isempty(opts.validate)
+    if ~(isnumeric(opts.validate) && isreal(opts.validate) && ismatrix(opts.validate) && ...
+         size(opts.validate, 2) == 2)
+      error('hyst:usage', 'hyst_fit: validate is a record [X2 Y2] of two columns');
+    end
+    vx = double(opts.validate(:, 1));
+    vy = double(opts.validate(:, 2));
+    if numel(vx) < double(opts.skip) + 2
+      error('hyst:usage', ['hyst_fit: validate: %d samples after skip %d: a validation ' ...
+                           'record needs two or more'], max(numel(vx) - double(opts.skip), 0), ...
+            double(opts.skip));
+    end
+    vopts = opts;
+    vopts.delay = [];
+    check_record(vx, vy, vopts, {'validate''s X2', 'validate''s Y2'});
+  end
   cands = [];
   fraction = 0;  % a sub-sample delay chosen: the drive x interpolated by it
   rate = struct('with_rate', false);  % a rate term chosen with the model
   if isempty(opts.degree)
-    [opts, cands, creep_tau, domain, x, fraction, rate] = choose(opts, kinds, method, domain, ...
-                                                                 x, y, creep_tau, rate_tau);
+    [opts, cands, creep_tau, domain, x, fraction, rate, vx] = choose(opts, kinds, method, ...
+                                                                     domain, x, y, creep_tau, ...
+                                                                     rate_tau, vx, vy);
   elseif isempty(opts.delay)
     % the delay of the model given, as 'hyst fit --degree D' without --delay
     % chooses it (the gateway's given_delay: fit_given_delay())
@@ -155,9 +183,12 @@ function f = hyst_fit(x, y, varargin)
         tk = opts.tdegree;
       end
     end
-    [opts.delay, fraction, x] = hyst_mex('given_delay', x, y, kind_code(opts.kind), ...
-                                         double(opts.degree), double(tk), method, domain(1), ...
-                                         domain(2), double(opts.skip));
+    [opts.delay, fraction, x, vxf] = hyst_mex('given_delay', x, y, kind_code(opts.kind), ...
+                                              double(opts.degree), double(tk), method, ...
+                                              domain(1), domain(2), double(opts.skip), vx, vy);
+    if ~isempty(vx)
+      vx = vxf;  % interpolated by the fraction as x is
+    end
   end
   tdegree = opts.tdegree;
   if isempty(tdegree)
@@ -166,7 +197,8 @@ function f = hyst_fit(x, y, varargin)
   f = fit_part(opts, method, domain, tdegree, x, y);
   if ~isempty(cands)
     f.candidates = cands;
-    f.excitation = excitation(x, double(opts.skip), numel(x) - double(opts.delay));
+    f.excitation = excitation(x, double(opts.skip), numel(x) - double(opts.delay), vx, vy, ...
+                              double(opts.delay));
   end
   % the delay the model was fitted at: HYST_MODEL_SAVE writes it,
   % HYST_HEADER states it
@@ -213,15 +245,24 @@ function f = hyst_fit(x, y, varargin)
   % score: fit_score() of tools/cli/fit_select.c, the hold-out splits)
   c = [];
   without = NaN;
-  if creep_tau >= 0
+  if creep_tau >= 0 || ~isempty(vx)  % on a validation record, the model scored there too
     if strcmp(opts.kind, 'everett_grid')
       tdegree = 0;
     end
     [without, c] = hyst_mex('score', x, y, kind_code(opts.kind), double(opts.degree), ...
-                            double(tdegree), method, domain(1), domain(2), skip, delay, creep_tau);
-    if ~isfinite(without) || isempty(c) || ~(c.tau > 0) || ~isfinite(c.holdout_rms) || ...
-       (creep_tau == 0 && without <= c.holdout_rms * 1.01)
+                            double(tdegree), method, domain(1), domain(2), skip, delay, ...
+                            creep_tau, vx, vy);
+    if creep_tau < 0 || ~isfinite(without) || isempty(c) || ~(c.tau > 0) || ...
+       ~isfinite(c.holdout_rms) || (creep_tau == 0 && without <= c.holdout_rms * 1.01)
       c = [];
+    end
+    if ~isempty(vx)  % the model's error on it, with the terms it has
+      f.validation_rms = without;
+      if rate.with_rate
+        f.validation_rms = rate.holdout_rms;
+      elseif ~isempty(c)
+        f.validation_rms = c.holdout_rms;
+      end
     end
   end
   if isempty(c) && ~rate.with_rate
@@ -268,9 +309,10 @@ function f = hyst_fit(x, y, varargin)
   end
 end
 
-function [opts, cands, creep_tau, domain, x, fraction, rate] = choose(opts, kinds, method, ...
-                                                                     domain, x, y, creep_tau, ...
-                                                                     rate_tau)
+function [opts, cands, creep_tau, domain, x, fraction, rate, vx] = choose(opts, kinds, ...
+                                                                         method, domain, x, ...
+                                                                         y, creep_tau, ...
+                                                                         rate_tau, vx, vy)
 % The kind, degree, t-degree and delay (and whether with a creep term)
 % chosen by hold-out with the hyst tool's own code (the gateway's select:
 % fit_search() of tools/cli/fit_select.c), as 'hyst fit' without --degree
@@ -278,7 +320,9 @@ function [opts, cands, creep_tau, domain, x, fraction, rate] = choose(opts, kind
 % delays scaled to the drive and a fraction of a sample (x is then the
 % drive interpolated by it, which the model is fitted on). rate: the rate
 % term scored on the choice's hold-out as hyst fit --rate scores it
-% (rate_tau: -1 none, 0 auto, > 0 that time constant).
+% (rate_tau: -1 none, 0 auto, > 0 that time constant). vx, vy: a
+% validation record every candidate is scored on instead (empty: the
+% hold-out), vx returned interpolated as x is.
   delay = -1;  % chosen
   if ~isempty(opts.delay)
     delay = double(opts.delay);
@@ -287,15 +331,22 @@ function [opts, cands, creep_tau, domain, x, fraction, rate] = choose(opts, kind
   if ~isempty(opts.tdegree)
     tdegree = double(opts.tdegree);
   end
-  [cands, best, with_creep, widened, fraction, xf, rate] = ...
+  [cands, best, with_creep, widened, fraction, xf, rate, vxf] = ...
       hyst_mex('select', x, y, kinds, method, domain(1), domain(2), double(opts.skip), delay, ...
-               tdegree, creep_tau, rate_tau);
+               tdegree, creep_tau, rate_tau, vx, vy);
   if fraction > 0
     x = xf;
+    if ~isempty(vx)
+      vx = vxf;
+    end
   end
   if best == 0
+    what = 'the last third of the record';
+    if ~isempty(vx)
+      what = 'the validation record';
+    end
     error('hyst:no_candidate', ['hyst_fit: no candidate gave a model (an increasing f0, a ' ...
-                                'monotone E) that could predict the last third of the record']);
+                                'monotone E) that could predict %s'], what);
   end
   for k = 1:numel(cands)
     cands(k).chosen = k == best;
@@ -382,11 +433,15 @@ end
 % The record as 'hyst fit' takes a file: NaN marks a missing sample; an
 % infinite one, skip or delay not a whole number >= 0, a column that does
 % not vary or a response that falls as the drive rises is refused
-% (hyst:usage), naming it, by hyst fit's check (the gateway's record_check:
-% fit_record_check()); none left is the library's ERR_ARG, as x and y of
-% different lengths are (the gateway's). rec: the check (its minor: the
-% drive's reversals inside its range).
-function rec = check_record(x, y, opts)
+% (hyst:usage), naming it (names: the two columns' names, default x and
+% y), by hyst fit's check (the gateway's record_check: fit_record_check());
+% none left is the library's ERR_ARG, as x and y of different lengths are
+% (the gateway's). rec: the check (its minor: the drive's reversals inside
+% its range).
+function rec = check_record(x, y, opts, names)
+  if nargin < 4
+    names = {'x', 'y'};
+  end
   if ~(hyst_is_whole(opts.skip) && opts.skip >= 0)
     error('hyst:usage', 'hyst_fit: skip must be a whole number of samples >= 0');
   end
@@ -401,39 +456,47 @@ function rec = check_record(x, y, opts)
   rec = hyst_mex('record_check', x, y, skip, delay);
   switch rec.fault
     case {'infinite_input', 'infinite_output'}
-      names = 'xy';
       error('hyst:usage', ['hyst_fit: %s(%d) is %g: a record''s samples are finite numbers, ' ...
                            'or NaN where one is missing'], ...
-            names(1 + strcmp(rec.fault, 'infinite_output')), rec.at, rec.value);
+            names{1 + strcmp(rec.fault, 'infinite_output')}, rec.at, rec.value);
     case 'no_sample'
       error('hyst:ERR_ARG', 'hyst_fit: skip %d and delay %d leave no sample of the %d given', ...
             skip, delay, numel(x));
     case 'constant_input'
-      error('hyst:usage', 'hyst_fit: x is constant (NaN aside): a record''s drive must vary');
+      error('hyst:usage', 'hyst_fit: %s is constant (NaN aside): a record''s drive must vary', ...
+            names{1});
     case 'constant_output'
-      error('hyst:usage', 'hyst_fit: y is constant (NaN aside): a record''s response must vary');
+      error('hyst:usage', ['hyst_fit: %s is constant (NaN aside): a record''s response must ' ...
+                           'vary'], names{2});
     case 'falling'
       % every model of hyst rises with its input (a sensor of the opposite
       % sign, as hyst fit says)
-      error('hyst:usage', ['hyst_fit: y falls as x rises (correlation %.3g): every model of ' ...
-                           'hyst rises with its input; negate y'], rec.correlation);
+      error('hyst:usage', ['hyst_fit: %s falls as %s rises (correlation %.3g): every model ' ...
+                           'of hyst rises with its input; negate %s'], names{2}, names{1}, ...
+            rec.correlation, names{2});
   end
 end
 
 % What the hold-out's last third tested the automatic choice on (the
 % gateway's excitation: fit_holdout_excitation(), as 'hyst fit' prints it),
 % with hyst fit's warnings (hyst:excitation).
-function e = excitation(x, skip, finish)
-  e = hyst_mex('excitation', x, skip, finish);
+function e = excitation(x, skip, finish, vx, vy, delay)
+  if isempty(vx)
+    e = hyst_mex('excitation', x, skip, finish);
+    part = {'the last third''s', 'the record''s range', 'the last third', 'the inputs'' range'};
+  else  % what the validation record tests it on
+    e = hyst_mex('excitation', x, skip, finish, vx, vy, delay);
+    part = {'the validation record''s', 'the range of the record''s', 'the validation record', ...
+            'the record''s inputs'' range or beyond'};
+  end
   if e.span < e.min_span
-    warning('hyst:excitation', ['hyst_fit: the last third''s inputs span %.3g %% of the ' ...
-                                'record''s range: the choice was not tested over the rest ' ...
-                                'of it'], 100 * e.span);
+    warning('hyst:excitation', ['hyst_fit: %s inputs span %.3g %% of %s: the choice was not ' ...
+                                'tested over the rest of it'], part{1}, 100 * e.span, part{2});
   end
   if e.minor == 0
-    warning('hyst:excitation', ['hyst_fit: the last third holds no minor loop (every ' ...
-                                'reversal at an end of the inputs'' range): the choice was ' ...
-                                'not tested on minor loops']);
+    warning('hyst:excitation', ['hyst_fit: %s holds no minor loop (every reversal at an end ' ...
+                                'of %s): the choice was not tested on minor loops'], ...
+            part{3}, part{4});
   end
   e = rmfield(e, 'min_span');
 end

@@ -1096,21 +1096,51 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     }
 }
 
+/* A validation record (`hyst fit --validate`) from the arguments vx, vy
+ * (real double vectors of one length; empty: none, the hold-out), from row
+ * skip on: its drive copied into *vdrive (mxCalloc'd; NULL with none),
+ * which a search interpolates in place by a fraction chosen. v, or NULL. */
+static const fit_validation_t *validation_arg(const mxArray *vx, const mxArray *vy, size_t skip,
+                                              double **vdrive, fit_validation_t *v)
+{
+    size_t n;
+    *vdrive = NULL;
+    if (!is_real_double(vx) || !is_real_double(vy) ||
+        mxGetNumberOfElements(vx) != mxGetNumberOfElements(vy)) {
+        usage("the validation record is vx, vy: real double vectors of one length");
+    }
+    n = mxGetNumberOfElements(vx);
+    if (n == 0u) {
+        return NULL;
+    }
+    *vdrive = (double *)mxCalloc(n, sizeof **vdrive);
+    memcpy(*vdrive, mxGetData(vx), n * sizeof **vdrive);
+    v->x = *vdrive;
+    v->y = (const double *)mxGetData(vy);
+    v->n = n;
+    v->skip = skip;
+    return v;
+}
+
 /* score: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid: degree its
  * intervals), degree, t_degree, method,
- * lo, hi, skip, delay, creep_tau; one candidate scored as the automatic
- * choice scores it (fit_score(), tools/cli/fit_select.c: the hold-out
- * splits). plhs = its hold-out RMS (NaN: not scored) and its creep term (a
- * struct: tau (0: none), weight, holdout_rms). */
+ * lo, hi, skip, delay, creep_tau[, vx, vy]; one candidate scored as the
+ * automatic choice scores it (fit_score(), tools/cli/fit_select.c: the
+ * hold-out splits, or the validation record vx, vy). plhs = its hold-out
+ * RMS (NaN: not scored) and its creep term (a struct: tau (0: none),
+ * weight, holdout_rms). */
 static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"tau", "weight", "holdout_rms"};
     hyst_ident_config_t base;
     fit_candidate_t c;
-    if (nrhs != 11 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+    fit_validation_t v;
+    const fit_validation_t *val = NULL;
+    double *vdrive = NULL;
+    if ((nrhs != 11 && nrhs != 13) || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
         mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
         usage("score takes x, y (real double vectors of one length), kind, degree, t_degree, "
-              "method, lo, hi, skip, delay, creep_tau");
+              "method, lo, hi, skip, delay, creep_tau[, vx, vy]");
     }
     memset(&base, 0, sizeof base);
     memset(&c, 0, sizeof c);
@@ -1127,8 +1157,14 @@ static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     base.hi = scalar(prhs[7], "hi");
     base.skip = count(prhs[8], "skip", 0.0, 1e15);
     c.delay = count(prhs[9], "delay", 0.0, 1e15);
+    if (nrhs == 13) {
+        val = validation_arg(prhs[11], prhs[12], base.skip, &vdrive, &v);
+    }
     fit_score(&base, (const double *)mxGetData(prhs[0]), (const double *)mxGetData(prhs[1]),
-              mxGetNumberOfElements(prhs[0]), scalar(prhs[10], "creep_tau"), &c);
+              mxGetNumberOfElements(prhs[0]), val, scalar(prhs[10], "creep_tau"), &c);
+    if (vdrive != NULL) {
+        mxFree(vdrive);
+    }
     plhs[0] = mxCreateDoubleScalar(c.holdout_rms);
     if (nlhs > 1) {
         plhs[1] = mxCreateStructMatrix(1, 1, 3, fields);
@@ -1140,10 +1176,13 @@ static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     }
 }
 
-/* excitation: prhs = x, skip, end; plhs = what the hold-out's last third of
- * x(skip + 1 .. end) tests a choice on (fit_holdout_excitation(),
- * tools/cli/fit_select.c): a struct fitted_lo, fitted_hi, holdout_n, beyond,
- * span, minor, and min_span, the span below which hyst fit warns. */
+/* excitation: prhs = x, skip, end[, vx, vy, delay]; plhs = what the
+ * hold-out's last third of x(skip + 1 .. end) tests a choice on
+ * (fit_holdout_excitation(), tools/cli/fit_select.c), or the validation
+ * record vx, vy (the output delay samples later) against x(skip + 1 ..
+ * end) (fit_validation_excitation()): a struct fitted_lo, fitted_hi,
+ * holdout_n, beyond, span, minor, and min_span, the span below which hyst
+ * fit warns. */
 static void run_excitation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"fitted_lo", "fitted_hi", "holdout_n", "beyond",
@@ -1152,15 +1191,29 @@ static void run_excitation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *p
     size_t skip, end;
     mxArray *s;
     (void)nlhs;
-    if (nrhs != 3 || !is_real_double(prhs[0])) {
-        usage("excitation takes x (a real double vector), skip, end");
+    if ((nrhs != 3 && nrhs != 6) || !is_real_double(prhs[0])) {
+        usage("excitation takes x (a real double vector), skip, end[, vx, vy, delay]");
     }
     skip = count(prhs[1], "skip", 0.0, 1e15);
     end = count(prhs[2], "end", 0.0, 1e15);
     if (skip > end || end > mxGetNumberOfElements(prhs[0])) {
         usage("excitation: skip <= end <= numel(x) needed");
     }
-    fit_holdout_excitation((const double *)mxGetData(prhs[0]), skip, end, &e);
+    if (nrhs == 6) {
+        fit_validation_t v;
+        double *vdrive;
+        const fit_validation_t *val = validation_arg(prhs[3], prhs[4], skip, &vdrive, &v);
+        if (val == NULL) {
+            usage("excitation: the validation record is empty");
+        }
+        fit_validation_excitation((const double *)mxGetData(prhs[0]), skip, end, val,
+                                  count(prhs[5], "delay", 0.0, 1e15), &e);
+        if (vdrive != NULL) {
+            mxFree(vdrive);
+        }
+    } else {
+        fit_holdout_excitation((const double *)mxGetData(prhs[0]), skip, end, &e);
+    }
     s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
     set_field(s, "fitted_lo", mxCreateDoubleScalar(e.fitted_lo));
     set_field(s, "fitted_hi", mxCreateDoubleScalar(e.fitted_hi));
@@ -1203,11 +1256,12 @@ static void run_record_check(int nlhs, mxArray *plhs[], int nrhs, const mxArray 
 }
 
 /* given_delay: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid: degree its
- * intervals), degree, t_degree, method, lo, hi, skip; the delay of that one
- * model as `hyst fit --degree D` without --delay chooses it
- * (fit_given_delay(), tools/cli/fit_select.c). plhs = the whole delay, the
- * sub-sample fraction (0: none) and the drive interpolated by it (a column;
- * x as given without one). */
+ * intervals), degree, t_degree, method, lo, hi, skip[, vx, vy]; the delay
+ * of that one model as `hyst fit --degree D` without --delay chooses it
+ * (fit_given_delay(), tools/cli/fit_select.c; scored on the validation
+ * record vx, vy when given). plhs = the whole delay, the sub-sample
+ * fraction (0: none), the drive interpolated by it (a column; x as given
+ * without one) and the validation record's drive alike. */
 static void run_given_delay(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     hyst_ident_config_t base;
@@ -1215,12 +1269,14 @@ static void run_given_delay(int nlhs, mxArray *plhs[], int nrhs, const mxArray *
     size_t n, delay = 0u;
     int kind;
     unsigned t_degree;
-    double *drive;
+    double *drive, *vdrive = NULL;
+    fit_validation_t v;
+    const fit_validation_t *val = NULL;
     hyst_status_t st;
-    if (nrhs != 9 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+    if ((nrhs != 9 && nrhs != 11) || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
         mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
         usage("given_delay takes x, y (real double vectors of one length), kind, degree, "
-              "t_degree, method, lo, hi, skip");
+              "t_degree, method, lo, hi, skip[, vx, vy]");
     }
     n = mxGetNumberOfElements(prhs[0]);
     memset(&base, 0, sizeof base);
@@ -1235,13 +1291,19 @@ static void run_given_delay(int nlhs, mxArray *plhs[], int nrhs, const mxArray *
     base.lo = scalar(prhs[6], "lo");
     base.hi = scalar(prhs[7], "hi");
     base.skip = count(prhs[8], "skip", 0.0, 1e15);
+    if (nrhs == 11) {
+        val = validation_arg(prhs[9], prhs[10], base.skip, &vdrive, &v);
+    }
     plhs[0] = NULL;
     drive = (double *)mxCalloc(n > 0u ? n : 1u, sizeof *drive);
     memcpy(drive, mxGetData(prhs[0]), n * sizeof *drive);
     st = fit_given_delay(&base, kind, t_degree, drive, (const double *)mxGetData(prhs[1]), n,
-                         &delay, &found);
+                         val, &delay, &found);
     if (st != HYST_OK) {
         mxFree(drive);
+        if (vdrive != NULL) {
+            mxFree(vdrive);
+        }
         fail_status("given_delay", (int)st);
     }
     plhs[0] = mxCreateDoubleScalar((double)delay);
@@ -1252,18 +1314,31 @@ static void run_given_delay(int nlhs, mxArray *plhs[], int nrhs, const mxArray *
         plhs[2] = mxCreateDoubleMatrix((mwSize)n, 1, mxREAL);
         memcpy(mxGetPr(plhs[2]), drive, n * sizeof *drive);
     }
+    if (nlhs > 3) { /* the validation record's drive, interpolated alike ([] without one) */
+        plhs[3] = mxCreateDoubleMatrix(val != NULL ? (mwSize)val->n : 0, val != NULL ? 1 : 0,
+                                       mxREAL);
+        if (val != NULL) {
+            memcpy(mxGetPr(plhs[3]), vdrive, val->n * sizeof *vdrive);
+        }
+    }
     mxFree(drive);
+    if (vdrive != NULL) {
+        mxFree(vdrive);
+    }
 }
 
 /* select: prhs = x, y, kinds (a sum of 1 poly, 2 everett, 4 everett_grid), method, lo, hi,
- * skip, delay (-1: chosen), t_degree (-1: any), creep_tau; fit's
- * automatic choice by the `hyst` tool's own code (fit_search(),
- * tools/cli/fit_select.c). plhs = the candidates (a struct array: kind,
+ * skip, delay (-1: chosen), t_degree (-1: any), creep_tau[, rate_tau[, vx,
+ * vy]]; fit's automatic choice by the `hyst` tool's own code (fit_search(),
+ * tools/cli/fit_select.c; scored on the validation record vx, vy when given
+ * and not empty). plhs = the candidates (a struct array: kind,
  * degree, t_degree, delay, params, holdout_rms, fit_rms, status, creep_tau,
  * creep_weight, creep_holdout_rms), the index chosen (1-based; 0: none),
  * whether with its creep term, the chosen one's domain [lo hi] when
  * widened, else [] (fit_chosen_domain()), the sub-sample delay's fraction
- * (0: none) and the drive interpolated by it (x as given without one). */
+ * (0: none), the drive interpolated by it (x as given without one), the
+ * rate term's search and the validation record's drive interpolated alike
+ * ([] without one). */
 static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"kind",        "degree",  "t_degree", "delay",
@@ -1275,14 +1350,17 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     fit_found_t found;
     size_t n, scored, best = 0u, i;
     long t_degree;
-    double delay, *drive;
+    double delay, *drive, *vdrive = NULL;
     int kinds, with_creep = 0;
+    fit_validation_t v;
+    const fit_validation_t *val = NULL;
     hyst_status_t st;
     mxArray *s;
-    if ((nrhs != 10 && nrhs != 11) || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+    if ((nrhs != 10 && nrhs != 11 && nrhs != 13) || !is_real_double(prhs[0]) ||
+        !is_real_double(prhs[1]) ||
         mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
         usage("select takes x, y (real double vectors of one length), kinds, method, lo, hi, "
-              "skip, delay (-1: chosen), t_degree, creep_tau[, rate_tau]");
+              "skip, delay (-1: chosen), t_degree, creep_tau[, rate_tau[, vx, vy]]");
     }
     n = mxGetNumberOfElements(prhs[0]);
     memset(&base, 0, sizeof base);
@@ -1294,6 +1372,9 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     delay = scalar(prhs[7], "delay");
     base.delay = delay < 0 ? 0u : count(prhs[7], "delay", 0.0, 1e15);
     t_degree = (long)scalar(prhs[8], "t_degree");
+    if (nrhs == 13) {
+        val = validation_arg(prhs[11], prhs[12], base.skip, &vdrive, &v);
+    }
     cand = (fit_candidate_t *)mxCalloc(FIT_SEARCH_CANDIDATES, sizeof *cand);
     drive = (double *)mxCalloc(n > 0u ? n : 1u, sizeof *drive); /* interpolated by a fraction */
     memcpy(drive, mxGetData(prhs[0]), n * sizeof *drive);
@@ -1301,10 +1382,14 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
                     t_degree < 0 || t_degree >= HYST_EVERETT_MAX_DEGREE ? FIT_ANY_T_DEGREE
                                                                         : (unsigned)t_degree,
                     scalar(prhs[9], "creep_tau"), delay < 0, drive,
-                    (const double *)mxGetData(prhs[1]), n, cand, FIT_SEARCH_CANDIDATES, &found);
+                    (const double *)mxGetData(prhs[1]), n, val, cand, FIT_SEARCH_CANDIDATES,
+                    &found);
     if (st != HYST_OK) {
         mxFree(cand);
         mxFree(drive);
+        if (vdrive != NULL) {
+            mxFree(vdrive);
+        }
         fail_status("select", (int)st);
     }
     scored = found.count;
@@ -1356,13 +1441,13 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     }
     if (nlhs > 6) { /* a rate term scored on the choice's hold-out (fit_rate_search()) */
         static const char *rate_fields[] = {"with_rate", "rate_tau", "holdout_rms", "without"};
-        const double rate_tau = nrhs == 11 ? scalar(prhs[10], "rate_tau") : -1.0;
+        const double rate_tau = nrhs >= 11 ? scalar(prhs[10], "rate_tau") : -1.0;
         fit_candidate_t with_rate;
         int kept = 0;
         memset(&with_rate, 0, sizeof with_rate);
         with_rate.creep.holdout_rms = NAN;
         if (rate_tau >= 0 && best != (size_t)-1) {
-            kept = fit_rate_search(&base, drive, (const double *)mxGetData(prhs[1]), n,
+            kept = fit_rate_search(&base, drive, (const double *)mxGetData(prhs[1]), n, val,
                                    &cand[best], with_creep, rate_tau, &with_rate);
         }
         plhs[6] = mxCreateStructMatrix(1, 1, 4, rate_fields);
@@ -1373,8 +1458,18 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
                    mxCreateDoubleScalar(best != (size_t)-1 ? fit_option_rms(&cand[best], with_creep)
                                                            : NAN));
     }
+    if (nlhs > 7) { /* the validation record's drive, interpolated alike ([] without one) */
+        plhs[7] = mxCreateDoubleMatrix(val != NULL ? (mwSize)val->n : 0, val != NULL ? 1 : 0,
+                                       mxREAL);
+        if (val != NULL) {
+            memcpy(mxGetPr(plhs[7]), vdrive, val->n * sizeof *vdrive);
+        }
+    }
     mxFree(cand);
     mxFree(drive);
+    if (vdrive != NULL) {
+        mxFree(vdrive);
+    }
     plhs[0] = s;
     if (nlhs > 1) {
         plhs[1] = mxCreateDoubleScalar(best == (size_t)-1 ? 0.0 : (double)best + 1.0);

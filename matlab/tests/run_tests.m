@@ -20,7 +20,7 @@ function failed = run_tests(root, ref, cli)
            @t_creep_sim_inv_equal_cli, @t_creep_sum_of_lags, @t_creep_save_load, ...
            @t_creep_load_rejects, @t_creep_header_equals_cli, @t_creep_fit, @t_creep_errors, ...
            @t_readers_agree, @t_fit_delay_saved, @t_fit_chooses_as_cli, ...
-           @t_fit_searches_delays_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
+           @t_fit_searches_delays_as_cli, @t_fit_validated_as_cli, @t_rate_sim_inv_equal_cli, @t_rate_written_as_cli, ...
            @t_rate_refused, @t_rate_fit_as_cli, @t_grid_sim_inv_equal_cli, @t_grid_written_as_cli, ...
            @t_grid_header_equals_cli, @t_grid_refused, @t_grid_fit_as_cli, ...
            @t_grid_chosen_as_cli, @t_grid_fit_undetermined, @t_fit_missing_first_input, ...
@@ -1517,6 +1517,66 @@ function t_fit_chooses_as_cli(ctx)
   [msg, id] = lastwarn();
   check(strcmp(id, 'hyst:excitation') && ~isempty(strfind(msg, 'no minor loop')), ...
         'warning %s: %s', id, msg);
+end
+
+function t_fit_validated_as_cli(ctx)
+  % 'validate', [X2 Y2] makes the choice on a second record as 'hyst fit
+  % --validate OTHER' does (fit_search() scoring every candidate on it): the
+  % same model file, the validation RMS the tool prints; with a degree
+  % given, the delay chosen on it; a constant validation record refused
+  plant = fullfile(ctx.tmp, 'vplant.hyst');
+  fid = fopen(plant, 'w');
+  fprintf(fid, ['hyst-model-text 1\nkind everett\nlo 0\nhi 40\ny_lo 0\ndelay 12.5\n' ...
+                'degree 2\nterms 3 -0.5 1\n']);
+  fclose(fid);
+  recs = {};
+  for tops = {[40 30 40 20 40 35 40 25 40], [40 25 40 35 40 15 40]}
+    x = [];
+    for top = tops{1}
+      x = [x, 0:0.05:top - 0.05, top:-0.05:0.05];  %#ok<AGROW>
+    end
+    x = [x, 0]';
+    xf = fullfile(ctx.tmp, 'vx.txt');
+    fid = fopen(xf, 'w');
+    fprintf(fid, '%.17g\n', x);
+    fclose(fid);
+    y = str2double(strsplit(strtrim(run_cli(ctx, ['sim --model "' plant '" "' xf '"'])), "\n"))';
+    y = y + 1e-3 * sin(0.37 * (1:numel(y)))';  % not the plant exactly
+    rec = fullfile(ctx.tmp, sprintf('vrec%d.txt', numel(recs) + 1));
+    fid = fopen(rec, 'w');
+    fprintf(fid, '%.17g %.17g\n', [x, y]');
+    fclose(fid);
+    recs{end + 1} = struct('x', x, 'y', y, 'file', rec);  %#ok<AGROW>
+  end
+  a = recs{1};
+  b = recs{2};
+  cli_file = fullfile(ctx.tmp, 'validated_cli.hyst');
+  out = run_cli(ctx, ['fit --validate "' b.file '" --save "' cli_file '" "' a.file '"']);
+  said = regexp(out, '# chosen on \S*vrec2\.txt: [^\n]*: validation rms (\S+)\n', 'tokens', ...
+                'once');
+  check(~isempty(said), 'no validation line: %s', out);
+  f = hyst_fit(a.x, a.y, 'validate', [b.x b.y]);
+  oct_file = fullfile(ctx.tmp, 'validated_oct.hyst');
+  hyst_model_save(oct_file, f);
+  check(strcmp(fileread(oct_file), fileread(cli_file)), ...
+        'hyst_fit(..., ''validate'') differs from hyst fit --validate');
+  check(strcmp(sprintf('%.6g', f.validation_rms), said{1}), 'validation rms %.6g, hyst fit %s', ...
+        f.validation_rms, said{1});
+  beyond = str2double(regexp(out, '# validation: (\d+) of its (\d+) inputs', 'tokens', 'once'));
+  check(f.excitation.beyond == beyond(1) && f.excitation.holdout_n == beyond(2), ...
+        'excitation %d of %d, hyst fit %d of %d', f.excitation.beyond, f.excitation.holdout_n, ...
+        beyond(1), beyond(2));
+  % a degree given: its delay chosen on the validation record
+  run_cli(ctx, ['fit --kind everett --degree 2 --validate "' b.file '" --save "' cli_file ...
+                '" "' a.file '"']);
+  hyst_model_save(oct_file, hyst_fit(a.x, a.y, 'kind', 'everett', 'degree', 2, ...
+                                     'validate', [b.x b.y]));
+  check(strcmp(fileread(oct_file), fileread(cli_file)), ...
+        'hyst_fit(..., ''degree'', 2, ''validate'') differs from hyst fit --degree 2 --validate');
+  msg = error_message(@() hyst_fit(a.x, a.y, 'validate', [b.x, 0 * b.y + 2]));
+  check(~isempty(strfind(msg, 'Y2 is constant')), 'constant Y2: %s', msg);
+  msg = error_message(@() hyst_fit(a.x, a.y, 'validate', b.x));
+  check(~isempty(strfind(msg, 'two columns')), 'one column: %s', msg);
 end
 
 function t_fit_searches_delays_as_cli(ctx)

@@ -49,7 +49,7 @@ def _record(name, v):
     return v
 
 
-def _check_record(x, y, skip, delay):
+def _check_record(x, y, skip, delay, names=("x", "y")):
     """Refuses what hyst fit refuses in a record, by its check
     (fit_record_check()): an infinite sample, no sample left, a column whose
     samples used (NaN aside) are all one number (no model could be fitted
@@ -60,22 +60,23 @@ def _check_record(x, y, skip, delay):
     r = _hyst.record_check(x, y, skip, delay)
     fault = r["fault"]
     if fault in ("infinite_input", "infinite_output"):
-        name = "x" if fault == "infinite_input" else "y"
+        name = names[0] if fault == "infinite_input" else names[1]
         raise ValueError(f"{name}[{r['at']}] is {r['value']}: a record's samples are finite "
                          "numbers, or NaN where one is missing")
     if fault == "no_sample":
         raise HystError(_hyst.Status.ERR_ARG, f"fit: skip {skip} and delay {delay} "
                         f"leave no sample of the {len(x)} given")
     if fault in ("constant_input", "constant_output"):
-        name, what = ("x", "drive") if fault == "constant_input" else ("y", "response")
+        name, what = (names[0], "drive") if fault == "constant_input" else (names[1], "response")
         v = r["value"]
         raise ValueError(f"{name} is constant ("
                          + (f"{v:.9g} at every sample used" if not math.isnan(v)
                             else "NaN throughout")
                          + f"): a record's {what} must vary")
     if fault == "falling":
-        raise ValueError(f"y falls as x rises (correlation {r['correlation']:.3g}): every model "
-                         "of hyst rises with its input; negate y")
+        raise ValueError(f"{names[1]} falls as {names[0]} rises (correlation "
+                         f"{r['correlation']:.3g}): every model of hyst rises with its input; "
+                         f"negate {names[1]}")
     return r
 
 
@@ -349,6 +350,9 @@ class Fit:
     the hysteresis fit's own. A grid (``"everett_grid"``) has ``knots``,
     ``weights``, ``y_lo`` and ``determined``: False when the record's turning
     points leave some masses open (then :class:`FitWarning`).
+    ``validation_rms`` (:func:`fit`'s ``validate``, else None): the model's
+    RMS error run from rest over the validation record, what the choice was
+    scored on.
     """
 
     def __init__(self, result, dtype, capacity, delay=0, candidates=None, creep=None,
@@ -369,6 +373,7 @@ class Fit:
         self.rate_tau = rate["tau"] if rate else None
         self.rate_weight = rate["weight"] if rate else None
         self.excitation = None  # the automatic choice's: set by fit()
+        self.validation_rms = None  # fit(validate=...): the model's error on that record
         self.model = model_from(self.description(), dtype=dtype, capacity=capacity)
 
     def description(self):
@@ -488,13 +493,18 @@ def _refusal(res):
     return None if res["increasing"] else "f0 not increasing"
 
 
-def _score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau):
+_NO_RECORD = np.empty(0)
+
+
+def _score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau, validate=None):
     """One candidate (kind, degree deg, t_degree k, delay d) scored on the
-    hold-out splits; with creep_tau >= 0 also its creep term (hyst fit's
-    fit_score(), tools/cli/fit_select.c)."""
+    hold-out splits, or on the validation record validate = (vx, vy); with
+    creep_tau >= 0 also its creep term (hyst fit's fit_score(),
+    tools/cli/fit_select.c)."""
+    vx, vy = validate if validate is not None else (_NO_RECORD, _NO_RECORD)
     c = _hyst.score(x, y, _FIT_KINDS[kind], int(deg),
                     0 if k is None else int(k), _METHODS[method], lo, hi, skip, int(d),
-                    creep_tau)
+                    creep_tau, vx, vy)
     c["status"] = _status(c)
     return c
 
@@ -517,7 +527,7 @@ def _status(c):
 
 
 def _select(x, y, kinds, method, lo, hi, skip, delay, t_degree=None, creep_tau=-1.0,
-            rate_tau=-1.0):
+            rate_tau=-1.0, validate=None):
     """Every candidate (kind, degree, t_degree, delay) and the choice, made
     by the `hyst` tool's own code (fit_select(), tools/cli/fit_select.c):
     fitted on the first two thirds, scored by its prediction of the last
@@ -531,13 +541,16 @@ def _select(x, y, kinds, method, lo, hi, skip, delay, t_degree=None, creep_tau=-
     is then the drive interpolated, which the model is fitted on; with
     rate_tau >= 0 its "with_rate", "rate_tau", "rate_holdout_rms" and
     "rate_without" say whether a rate term is kept, as ``hyst fit --rate``
-    scores it: fit_rate_search())."""
+    scores it: fit_rate_search()). validate = (vx, vy): every score is the
+    prediction of that record instead (fitted on the whole of x, y; its
+    "vx" the validation drive interpolated by the fraction chosen)."""
     mask = 0
     for k in kinds:
         mask |= _FIT_KINDS[k]
+    vx, vy = validate if validate is not None else (_NO_RECORD, _NO_RECORD)
     cands, best, with_creep, domain, search = _hyst.select(
         x, y, mask, _METHODS[method], lo, hi, skip, -1 if delay is None else int(delay),
-        -1 if t_degree is None else int(t_degree), creep_tau, rate_tau)
+        -1 if t_degree is None else int(t_degree), creep_tau, rate_tau, vx, vy)
     for c in cands:
         c["status"] = _status(c)
     return cands, best, with_creep, domain, search
@@ -586,7 +599,8 @@ def _final_creep(res, x, y, kind, skip, delay, tau, rate_tau=0.0):
 
 
 def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=None, skip=0,
-        delay=None, creep="auto", rate="none", dtype=np.float64, capacity=DEFAULT_CAPACITY):
+        delay=None, creep="auto", rate="none", validate=None, dtype=np.float64,
+        capacity=DEFAULT_CAPACITY):
     """Identifies a model from a recorded drive ``x`` and response ``y``.
 
     Sample i (skip <= i < n - delay) pairs x[i] with y[i + delay]; the domain
@@ -639,7 +653,16 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     weight is fitted with the creep lag's and the constant on the whole
     record: the result's ``rate`` (tau, weight, holdout_rms,
     holdout_rms_without), ``rate_tau`` and ``rate_weight`` (None without
-    one). Returns a :class:`Fit`.
+    one).
+
+    ``validate=(x2, y2)``, a second record of the same actuator (validation
+    data, as ``hyst fit --validate``): every choice above (kind, degree,
+    delay, creep, rate) is made on it instead of the hold-out, each
+    candidate fitted on the whole of (x, y) from ``skip`` on and scored by
+    its RMS error run from rest over (x2, y2) from ``skip`` on (the
+    candidates' ``holdout_rms`` is that error; ``excitation`` then says
+    what x2 tests the choice on). The model is fitted on (x, y) as without
+    it. Returns a :class:`Fit`.
     """
     if method not in _METHODS:
         raise ValueError(f"method must be one of {sorted(_METHODS)}, not {method!r}")
@@ -662,21 +685,36 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
         delay = _samples("delay", delay)
     record = _check_record(x, y, skip, delay or 0)
     minor_loops = degree is not None and (kind or "poly") == "poly" and record["minor"] > 0
+    if validate is not None:  # refused as the record is (hyst fit --validate)
+        if not isinstance(validate, (tuple, list)) or len(validate) != 2:
+            raise ValueError("validate must be a record (x2, y2)")
+        vx, vy = _record("validate's x", validate[0]), _record("validate's y", validate[1])
+        if len(vx) != len(vy):
+            raise ValueError(f"validate's x and y differ in length ({len(vx)}, {len(vy)})")
+        if len(vx) < skip + 2:
+            raise ValueError(f"validate: {max(len(vx) - skip, 0)} samples after skip {skip}: a "
+                             "validation record needs two or more")
+        _check_record(vx, vy, skip, 0, ("validate's x", "validate's y"))
+        validate = (vx, vy)
     cands, chosen, with_creep, fraction, search = None, None, False, 0.0, {}
     if degree is None:
         kinds = KINDS if kind is None else (kind,)
         cands, best, with_creep, widened, search = _select(
             x, y, kinds, method, lo, hi, skip, delay,
-            None if t_degree is None else int(t_degree), creep_tau, rate_tau)
+            None if t_degree is None else int(t_degree), creep_tau, rate_tau, validate)
         if best is None:
             raise ValueError("no candidate gave a model (an increasing f0, a monotone E) "
-                             "that could predict the last third of the record"
+                             "that could predict "
+                             + ("the validation record" if validate is not None
+                                else "the last third of the record")
                              + (" with the creep term given" if creep_tau > 0 else ""))
         chosen = cands[best]
         kind, degree, delay = chosen["kind"], chosen["degree"], chosen["delay"]
         if search["x"] is not None:  # a sub-sample delay: the drive interpolated
             x = np.asarray(search["x"], dtype=np.float64)
             fraction = search["delay_fraction"]
+            if validate is not None:  # and the validation record's, as the tool's
+                validate = (np.asarray(search["vx"], dtype=np.float64), validate[1])
         t_degree = chosen["t_degree"]
         if widened is not None:
             # the domain the tool fits it on: the inputs' range widened, E
@@ -688,18 +726,23 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     elif delay is None:  # the delay of the model given, as hyst fit --degree D chooses it
         k = 0 if (kind or "poly") in ("poly", "everett_grid") else (
             int(degree) - 1 if t_degree is None else int(t_degree))
+        vx, vy = validate if validate is not None else (_NO_RECORD, _NO_RECORD)
         g = _hyst.given_delay(x, y, _FIT_KINDS[kind or "poly"], int(degree), k,
-                              _METHODS[method], lo, hi, skip)
+                              _METHODS[method], lo, hi, skip, vx, vy)
         delay = g["delay"]
         if g["x"] is not None:
             x = np.asarray(g["x"], dtype=np.float64)
             fraction = g["delay_fraction"]
-    if degree is not None and creep_tau >= 0 and len(x) > skip + int(delay):
-        # the model as given, its creep term scored by the same hold-out
+            if validate is not None:
+                validate = (np.asarray(g["vx"], dtype=np.float64), validate[1])
+    if degree is not None and (creep_tau >= 0 or validate is not None) and \
+            len(x) > skip + int(delay):
+        # the model as given, its creep term scored by the same hold-out (or
+        # on the validation record, which scores the model even without one)
         k = None if (kind or "poly") in ("poly", "everett_grid") else (
             int(degree) - 1 if t_degree is None else int(t_degree))
         chosen = _score(x, y, kind or "poly", int(degree), k, int(delay), method, lo, hi, skip,
-                        creep_tau)
+                        creep_tau, validate)
         with_creep = (chosen["creep_tau"] > 0 and math.isfinite(chosen["creep_holdout_rms"]) and
                       (creep_tau > 0 or not chosen["holdout_rms"] <=
                        chosen["creep_holdout_rms"] * (1 + PARSIMONY)))
@@ -731,10 +774,17 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
                          "holdout_rms_without": search["rate_without"]}
     f = Fit(res, dtype, capacity, delay=int(delay) + fraction if fraction else int(delay),
             candidates=cands, creep=creep_info, rate=rate_info)
-    if cands is not None:
+    if cands is not None and validate is not None:
+        f.excitation = _validation_excitation(x, skip, len(x) - int(delay), validate,
+                                              int(delay))
+    elif cands is not None:
         f.excitation = _excitation(x, skip, len(x) - int(delay))
     if minor_loops:
         _warn_minor_loops(record["minor"], int(degree))
+    if validate is not None and chosen is not None:
+        f.validation_rms = (search["rate_holdout_rms"] if with_rate
+                            else chosen["creep_holdout_rms"] if with_creep
+                            else chosen["holdout_rms"])
     return f
 
 
@@ -747,6 +797,21 @@ def _warn_minor_loops(minor, degree):
                   "for the major ascending branch and every falling one for the descending; "
                   "leave degree=None to let fit choose, or fit kind='everett'", FitWarning,
                   stacklevel=3)
+
+
+def _validation_excitation(x, skip, end, validate, delay):
+    """What the validation record tested the choice on (fit_validation_excitation(),
+    as hyst fit --validate prints it), with its warnings (FitWarning)."""
+    e = _hyst.validation_excitation(x, skip, end, validate[0], validate[1], delay)
+    if e["span"] < _hyst.FIT_HOLDOUT_MIN_SPAN:
+        warnings.warn(f"the validation record's inputs span {100 * e['span']:.3g} % of the "
+                      "range of the record's: the choice was not tested over the rest of it",
+                      FitWarning, stacklevel=3)
+    if e["minor"] == 0:
+        warnings.warn("the validation record holds no minor loop (every reversal at an end of "
+                      "the record's inputs' range or beyond): the choice was not tested on "
+                      "minor loops", FitWarning, stacklevel=3)
+    return e
 
 
 def _excitation(x, skip, end):

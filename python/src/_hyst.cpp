@@ -1179,43 +1179,74 @@ nb::dict candidate_dict(const fit_candidate_t &c)
     return d;
 }
 
+/* The validation record (vx, vy) as fit_select.h takes it, from row skip
+ * on (nullptr, the hold-out, when vx is empty): its drive copied into
+ * vdrive, which the search interpolates in place by a fraction chosen. */
+const fit_validation_t *validation(const In<double> &vx, const In<double> &vy, size_t skip,
+                                   std::vector<double> &vdrive, fit_validation_t &v)
+{
+    if (vx.shape(0) == 0) {
+        return nullptr;
+    }
+    if (vx.shape(0) != vy.shape(0)) {
+        raise_status(HYST_ERR_ARG, "the validation record's x and y differ in length");
+    }
+    vdrive.assign(vx.data(), vx.data() + vx.shape(0));
+    v.x = vdrive.data();
+    v.y = vy.data();
+    v.n = vx.shape(0);
+    v.skip = skip;
+    return &v;
+}
+
 /* One candidate (kind FIT_POLY, FIT_EVERETT or FIT_GRID (degree: its
  * intervals), degree, t_degree, delay)
  * scored as the automatic choice scores it (fit_score(): the hold-out
- * splits), with its creep term unless creep_tau < 0 (0: chosen). */
+ * splits, or the validation record vx, vy when not empty), with its creep
+ * term unless creep_tau < 0 (0: chosen). */
 nb::dict score_candidate(const In<double> &x, const In<double> &y, int kind, unsigned degree,
                          unsigned t_degree, int method, double lo, double hi, size_t skip,
-                         size_t delay, double creep_tau)
+                         size_t delay, double creep_tau, const In<double> &vx,
+                         const In<double> &vy)
 {
     const hyst_ident_config_t base = ident_config(x, y, 0u, method, lo, hi, skip, 0u);
+    std::vector<double> vdrive;
+    fit_validation_t v;
+    const fit_validation_t *val = validation(vx, vy, skip, vdrive, v);
     fit_candidate_t c;
     std::memset(&c, 0, sizeof c);
     c.kind = kind == FIT_EVERETT || kind == FIT_GRID ? kind : FIT_POLY;
     c.degree = degree;
     c.t_degree = t_degree;
     c.delay = delay;
-    fit_score(&base, x.data(), y.data(), x.shape(0), creep_tau, &c);
+    fit_score(&base, x.data(), y.data(), x.shape(0), val, creep_tau, &c);
     return candidate_dict(c);
 }
 
 /* Every candidate of the kinds (FIT_POLY | FIT_EVERETT | FIT_GRID) at the delay given
  * or, delay < 0, at the delays fit_search() chooses among, scored on the
- * hold-out splits: a list of dicts, the index chosen (None: none), whether
- * with its creep term, the chosen one's domain when widened
- * (fit_chosen_domain(), else None) and the search's figures. */
+ * hold-out splits (or the validation record vx, vy when not empty): a list
+ * of dicts, the index chosen (None: none), whether with its creep term, the
+ * chosen one's domain when widened (fit_chosen_domain(), else None) and the
+ * search's figures (with a validation record, "vx": its drive interpolated
+ * by the fraction chosen, or None). */
 nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds, int method, double lo,
                  double hi, size_t skip, long delay, long t_degree, double creep_tau,
-                 double rate_tau)
+                 double rate_tau, const In<double> &vx, const In<double> &vy)
 {
     const size_t n = x.shape(0);
     const hyst_ident_config_t base =
         ident_config(x, y, 0u, method, lo, hi, skip, delay < 0 ? 0u : static_cast<size_t>(delay));
     std::vector<fit_candidate_t> cand(FIT_SEARCH_CANDIDATES);
     std::vector<double> drive(x.data(), x.data() + n); /* interpolated by a fraction chosen */
+    std::vector<double> vdrive;
+    fit_validation_t v;
+    const fit_validation_t *val = validation(vx, vy, skip, vdrive, v);
     fit_found_t found;
     check(fit_search(&base, kinds,
                      t_degree < 0 ? FIT_ANY_T_DEGREE : static_cast<unsigned>(t_degree), creep_tau,
-                     delay < 0, drive.data(), y.data(), n, cand.data(), cand.size(), &found),
+                     delay < 0, drive.data(), y.data(), n, val, cand.data(), cand.size(),
+                     &found),
           "select");
     const size_t count = found.count, best = found.best;
     const int with_creep = found.with_creep;
@@ -1232,11 +1263,12 @@ nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds,
     search["integer_delay"] = found.integer_delay;
     search["integer_holdout"] = found.integer_holdout;
     search["x"] = found.delay_fraction > 0.0 ? nb::cast(drive) : nb::none();
+    search["vx"] = found.delay_fraction > 0.0 && val != nullptr ? nb::cast(vdrive) : nb::none();
     /* a rate term scored on the choice's hold-out, as hyst fit --rate scores it */
     search["with_rate"] = false;
     if (rate_tau >= 0 && best != (size_t)-1) {
         fit_candidate_t with_rate;
-        const int kept = fit_rate_search(&base, drive.data(), y.data(), n, &cand[best],
+        const int kept = fit_rate_search(&base, drive.data(), y.data(), n, val, &cand[best],
                                          with_creep, rate_tau, &with_rate);
         search["with_rate"] = kept != 0;
         search["rate_tau"] = with_rate.creep.rate_tau;
@@ -1252,17 +1284,23 @@ nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds,
 /* The delay of one model (kind FIT_POLY, FIT_EVERETT (t_degree) or FIT_GRID,
  * degree, no creep term) as `hyst fit --degree D` without --delay chooses it
  * (fit_given_delay()): delay (whole samples), delay_fraction, max_delay,
- * integer_holdout, and x: the drive interpolated by the fraction, or None. */
+ * integer_holdout, and x: the drive interpolated by the fraction, or None
+ * (scored on the validation record vx, vy when not empty; vx: its drive
+ * interpolated, or None). */
 nb::dict given_delay(const In<double> &x, const In<double> &y, int kind, unsigned degree,
-                     unsigned t_degree, int method, double lo, double hi, size_t skip)
+                     unsigned t_degree, int method, double lo, double hi, size_t skip,
+                     const In<double> &vx, const In<double> &vy)
 {
     const size_t n = x.shape(0);
     const hyst_ident_config_t base = ident_config(x, y, degree, method, lo, hi, skip, 0u);
     std::vector<double> drive(x.data(), x.data() + n);
+    std::vector<double> vdrive;
+    fit_validation_t v;
+    const fit_validation_t *val = validation(vx, vy, skip, vdrive, v);
     fit_found_t found;
     size_t delay = 0u;
     check(fit_given_delay(&base, kind == FIT_EVERETT || kind == FIT_GRID ? kind : FIT_POLY,
-                          t_degree, drive.data(), y.data(), n, &delay, &found),
+                          t_degree, drive.data(), y.data(), n, val, &delay, &found),
           "given_delay");
     nb::dict d;
     d["delay"] = delay;
@@ -1270,19 +1308,15 @@ nb::dict given_delay(const In<double> &x, const In<double> &y, int kind, unsigne
     d["max_delay"] = found.max_delay;
     d["integer_holdout"] = found.integer_holdout;
     d["x"] = found.delay_fraction > 0.0 ? nb::cast(drive) : nb::none();
+    d["vx"] = found.delay_fraction > 0.0 && val != nullptr ? nb::cast(vdrive) : nb::none();
     return d;
 }
 
 /* What the hold-out's last third of x[skip .. end) tests a choice on
  * (fit_holdout_excitation()): dict fitted_lo, fitted_hi, holdout_n, beyond, span,
  * minor. */
-nb::dict excitation(const In<double> &x, size_t skip, size_t end)
+nb::dict excitation_dict(const fit_excitation_t &e)
 {
-    fit_excitation_t e;
-    if (end > x.shape(0) || skip > end) {
-        throw nb::value_error("excitation: skip <= end <= len(x) needed");
-    }
-    fit_holdout_excitation(x.data(), skip, end, &e);
     nb::dict d;
     d["fitted_lo"] = e.fitted_lo;
     d["fitted_hi"] = e.fitted_hi;
@@ -1310,6 +1344,33 @@ nb::dict record_check(const In<double> &x, const In<double> &y, size_t skip, siz
     d["correlation"] = r.correlation;
     d["minor"] = r.minor;
     return d;
+}
+
+nb::dict excitation(const In<double> &x, size_t skip, size_t end)
+{
+    fit_excitation_t e;
+    if (end > x.shape(0) || skip > end) {
+        throw nb::value_error("excitation: skip <= end <= len(x) needed");
+    }
+    fit_holdout_excitation(x.data(), skip, end, &e);
+    return excitation_dict(e);
+}
+
+/* What a validation record (vx, vy from row skip, the output delay rows
+ * later) tests the choice on against x[skip .. end), the record fitted
+ * (fit_validation_excitation()): the same dict. */
+nb::dict validation_excitation(const In<double> &x, size_t skip, size_t end,
+                               const In<double> &vx, const In<double> &vy, size_t delay)
+{
+    std::vector<double> vdrive;
+    fit_validation_t v;
+    fit_excitation_t e;
+    if (end > x.shape(0) || skip > end || vx.shape(0) == 0) {
+        throw nb::value_error("validation_excitation: skip <= end <= len(x), a record needed");
+    }
+    fit_validation_excitation(x.data(), skip, end, validation(vx, vy, skip, vdrive, v), delay,
+                              &e);
+    return excitation_dict(e);
 }
 
 /* fit_choose() over candidates given as dicts (kind, degree, t_degree,
@@ -1621,21 +1682,28 @@ NB_MODULE(_hyst, m)
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "intervals"_a, "rows"_a,
           "A firmware header's compensator table, as `hyst header --compensator` writes it.");
     m.def("select", &select_candidates, "x"_a, "y"_a, "kinds"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
-          "delay"_a, "t_degree"_a, "creep_tau"_a, "rate_tau"_a = -1.0,
+          "delay"_a, "t_degree"_a, "creep_tau"_a, "rate_tau"_a, "vx"_a, "vy"_a,
           "hyst fit's automatic choice (fit_search(); delay < 0: chosen, scaled to the drive and "
           "to a fraction of a sample): (candidates, index chosen, with creep, the chosen one's "
           "domain (lo, hi) when widened, else None, and the search: max_delay, delay_fraction, "
-          "integer_delay, integer_holdout, x: the drive interpolated by the fraction, or None).");
+          "integer_delay, integer_holdout, x: the drive interpolated by the fraction, or None; "
+          "scored on the validation record vx, vy unless empty, vx its drive interpolated).");
     m.def("score", &score_candidate, "x"_a, "y"_a, "kind"_a, "degree"_a, "t_degree"_a, "method"_a,
-          "lo"_a, "hi"_a, "skip"_a, "delay"_a, "creep_tau"_a,
-          "One candidate scored as hyst fit scores it (fit_score()): its dict.");
+          "lo"_a, "hi"_a, "skip"_a, "delay"_a, "creep_tau"_a, "vx"_a, "vy"_a,
+          "One candidate scored as hyst fit scores it (fit_score(); on the validation record "
+          "vx, vy unless empty): its dict.");
     m.def("given_delay", &given_delay, "x"_a, "y"_a, "kind"_a, "degree"_a, "t_degree"_a,
-          "method"_a, "lo"_a, "hi"_a, "skip"_a,
+          "method"_a, "lo"_a, "hi"_a, "skip"_a, "vx"_a, "vy"_a,
           "The delay of one model as hyst fit --degree D without --delay chooses it "
-          "(fit_given_delay()): dict delay, delay_fraction, max_delay, integer_holdout, x.");
+          "(fit_given_delay(); on the validation record vx, vy unless empty): dict delay, "
+          "delay_fraction, max_delay, integer_holdout, x, vx.");
     m.def("excitation", &excitation, "x"_a, "skip"_a, "end"_a,
           "What hyst fit's hold-out tests the choice on (fit_holdout_excitation()): dict fitted_lo, "
           "fitted_hi, holdout_n, beyond, span, minor.");
+    m.def("validation_excitation", &validation_excitation, "x"_a, "skip"_a, "end"_a, "vx"_a,
+          "vy"_a, "delay"_a,
+          "What a validation record tests the choice on (fit_validation_excitation()): the "
+          "same dict.");
     m.attr("FIT_HOLDOUT_MIN_SPAN") = FIT_HOLDOUT_MIN_SPAN;
     m.def("record_check", &record_check, "x"_a, "y"_a, "skip"_a, "delay"_a,
           "hyst fit's check of a record before fitting (fit_record_check()): dict fault "

@@ -104,3 +104,56 @@ def test_fit_says_what_the_hold_out_tested_as_the_tool(c_build, tmp_path, minor_
     warned = [str(w.message) for w in caught if issubclass(w.category, hyst.FitWarning)]
     assert any("no minor loop" in m for m in warned) == ("no minor loop" in r.stderr) \
         == (not minor_loops)
+
+
+def write_record(path, x, y):
+    path.write_text("".join(f"{a:.17g} {b:.17g}\n" for a, b in zip(x, y)))
+    return path
+
+
+def test_fit_on_a_validation_record_chooses_as_the_tool(c_build, tmp_path):
+    """fit(x, y, validate=(x2, y2)) chooses as `hyst fit --validate OTHER`
+    (fit_search() scoring every candidate on the second record): the same
+    model file, the validation RMS and excitation the tool prints; with a
+    degree given, the delay chosen on it as `hyst fit --degree D
+    --validate` chooses it."""
+    x, y = record()
+    x2, y2 = record((40.0, 25.0, 40.0, 35.0, 40.0, 15.0, 40.0))
+    other = write_record(tmp_path / "other.txt", x2, y2)
+    r = cli_fit(c_build, tmp_path, x, y, "--validate", other)
+    said = re.search(r"^# chosen on \S*other\.txt: .*: validation rms (\S+)$", r.stdout, re.M)
+    assert said, r.stdout
+    f = hyst.fit(x, y, validate=(x2, y2))
+    f.save(tmp_path / "py.hyst")
+    assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
+    assert f"{f.validation_rms:.6g}" == said.group(1)
+    # the candidates' scores are the validation record's, not the hold-out's
+    held_out = hyst.fit(x, y)
+    assert [c["holdout_rms"] for c in f.candidates] != [c["holdout_rms"] for c in
+                                                         held_out.candidates]
+    e = f.excitation
+    beyond = re.search(r"^# validation: (\d+) of its (\d+) inputs outside", r.stdout, re.M)
+    assert (e["beyond"], e["holdout_n"]) == (int(beyond.group(1)), int(beyond.group(2)))
+    for kind, opts in (("poly", ["--degree", "3"]),
+                       ("everett", ["--kind", "everett", "--degree", "2"])):
+        r = cli_fit(c_build, tmp_path, x, y, *opts, "--validate", other)
+        g = hyst.fit(x, y, int(opts[-1]), kind=kind, validate=(x2, y2))
+        g.save(tmp_path / "py.hyst")
+        assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
+        said = re.search(r"^# validation on \S*other\.txt: rms (\S+) ", r.stdout, re.M)
+        assert f"{g.validation_rms:.6g}" == said.group(1)
+
+
+def test_fit_refuses_a_validation_record_as_the_record():
+    """A validation record is refused as the record is: constant, falling,
+    of two lengths, too short after skip, not a pair."""
+    x, y = record()
+    x2, y2 = record((40.0, 20.0, 40.0))
+    for validate, message in (((x2, np.full(len(x2), 2.0)), "validate's y is constant"),
+                              ((np.full(len(x2), 1.0), y2), "validate's x is constant"),
+                              ((x2, -y2), "validate's y falls as validate's x rises"),
+                              ((x2, y2[:-1]), "differ in length"),
+                              ((x2[:1], y2[:1]), "a validation record needs two or more"),
+                              (x2, "must be a record")):
+        with pytest.raises(ValueError, match=message):
+            hyst.fit(x, y, validate=validate)

@@ -23,7 +23,7 @@ static const char help[] =
     "                [--skip S] [--delay D] [--xcol I --ycol J] [--method joint|reflect]\n"
     "                [--domain LO,HI] [--creep none|auto|TAU] [--rate none|auto|TAU]\n"
     "                [--header NAME] [--header-dir DIR] [--save MODEL]\n"
-    "                [--compare-pi N] [--decimal-comma] FILE\n"
+    "                [--validate OTHER] [--compare-pi N] [--decimal-comma] FILE\n"
     "       hyst fit --kind pi [--operators N] [--skip S] [--delay D]\n"
     "                [--xcol I --ycol J] [--decimal-comma] FILE\n"
     "\n"
@@ -70,6 +70,13 @@ static const char help_more[] =
     "                 ..., 20000 samples on the hold-out and its weight one\n"
     "                 parameter more, by the same rule; none: no creep term;\n"
     "                 TAU: a lag of TAU samples (1..1e9), always\n"
+    "  --validate OTHER  a second record of the same actuator (validation data,\n"
+    "                 the same columns and --skip): every choice above (kind,\n"
+    "                 degree, delay, creep) is made on it instead of the hold-out:\n"
+    "                 each candidate fitted on the whole of FILE, run from rest\n"
+    "                 over OTHER and scored by its RMS error there. A record at\n"
+    "                 another drive rate tells the dead time from a lag that\n"
+    "                 imitates the loop's shape at FILE's rate\n"
     "  --rate R       a rate term (docs/rate.md), without --degree: the output\n"
     "                 plus a weight times a low-pass of the input's change per\n"
     "                 sample. none (default): no rate term; auto: the choice\n"
@@ -156,6 +163,9 @@ typedef struct fit_opts {
     size_t integer_delay;   /* that delay */
     size_t max_delay;     /* delays searched 0..max_delay (scaled to the drive's period) */
     size_t cheap_delay;   /* max_delay > FIT_MAX_DELAY: the cheap model's best delay */
+    const char *validate; /* --validate OTHER, or NULL */
+    char vname[256];      /* its name in messages */
+    const fit_validation_t *v; /* the record read from it, or NULL: the hold-out */
 } fit_opts_t;
 
 /* 0 on success, 1 after a message, -1 after --help. */
@@ -301,6 +311,8 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             } else {
                 o->creep_tau = tau;
             }
+        } else if (cli_is(&a, "--validate")) {
+            o->validate = v;
         } else if (cli_is(&a, "--header-dir")) {
             if (v[0] == '\0' || strlen(v) > CLI_HEADER_DIR_MAX) {
                 return cli_fail(a.cmd, "option --header-dir: %s is empty or longer than %u bytes",
@@ -321,6 +333,14 @@ static int parse(fit_opts_t *o, int argc, char **argv)
         return cli_fail(a.cmd, "options --xcol and --ycol both name column %lu: the output would "
                                "be the input",
                         o->cols[0]);
+    }
+    if (o->validate != NULL && o->compare_pi != 0u) {
+        return cli_fail(a.cmd, "option --compare-pi compares on the last third of FILE: it does "
+                               "not combine with --validate");
+    }
+    if (o->validate != NULL && strcmp(o->validate, "-") == 0 && strcmp(o->file, "-") == 0) {
+        return cli_fail(a.cmd, "option --validate: '-' and FILE '-' both name standard input "
+                               "(it holds one record)");
     }
     if (o->have_degree && o->rate_tau >= 0.0) {
         return cli_fail(a.cmd, "option --rate applies to the automatic choice (without --degree)");
@@ -401,7 +421,7 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
 {
     fit_found_t found;
     if (fit_search(&o->cfg, candidate_kinds(o), o->have_t_degree ? o->t_degree : FIT_ANY_T_DEGREE,
-                   o->creep_tau, !o->have_delay, t->col[0], t->col[1], t->n, candidates,
+                   o->creep_tau, !o->have_delay, t->col[0], t->col[1], t->n, o->v, candidates,
                    MAX_CANDIDATES, &found) != HYST_OK) {
         return cli_fail("fit", "%s: out of memory", name);
     }
@@ -416,9 +436,9 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
         o->integer_holdout = found.integer_holdout;
     }
     if (best_candidate == (size_t)-1) {
-        return cli_fail("fit", "%s: no candidate degree gave %s that could predict the last "
-                               "third of the record (give --degree)",
-                        name,
+        return cli_fail("fit", "%s: no candidate degree gave %s that could predict %s (give "
+                               "--degree)",
+                        name, o->v != NULL ? o->vname : "the last third of the record",
                         o->kind == FIT_KIND_EVERETT ? "an E the library accepts"
                         : o->kind == FIT_KIND_TCM   ? "an increasing f0"
                                                     : "an increasing f0 or an E the library "
@@ -426,7 +446,7 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
     }
     { /* a rate term, scored on the choice's hold-out (the drive and domain it was fitted on) */
         fit_candidate_t with_rate;
-        o->with_rate = fit_rate_search(&o->cfg, t->col[0], t->col[1], t->n,
+        o->with_rate = fit_rate_search(&o->cfg, t->col[0], t->col[1], t->n, o->v,
                                        &candidates[best_candidate], o->with_creep, o->rate_tau,
                                        &with_rate);
         o->rate = with_rate.creep;
@@ -448,7 +468,12 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
     /* at the chosen delay: the hold-out's inputs beyond the part fitted
      * (predicted by branches continued beyond it, or clamped), its range and
      * minor loops */
-    fit_holdout_excitation(t->col[0], o->cfg.skip, t->n - o->cfg.delay, &o->excitation);
+    if (o->v != NULL) { /* OTHER's inputs against the whole record's */
+        fit_validation_excitation(t->col[0], o->cfg.skip, t->n - o->cfg.delay, o->v,
+                                  o->cfg.delay, &o->excitation);
+    } else {
+        fit_holdout_excitation(t->col[0], o->cfg.skip, t->n - o->cfg.delay, &o->excitation);
+    }
     rank_others(o, t);
     o->holdout = candidates[best_candidate].holdout_rms;
     o->last_third = candidates[best_candidate].last_third_rms;
@@ -456,26 +481,23 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
 }
 
 /* --degree given: the creep term of the model as given, scored by the same
- * hold-out (with it only if the model without it errs by more than
- * FIT_PARSIMONY over it; always with --creep TAU). */
+ * hold-out, or on OTHER (with it only if the model without it errs by more
+ * than FIT_PARSIMONY over it; always with --creep TAU). */
 static void choose_creep(fit_opts_t *o, const cli_table_t *t)
 {
-    hyst_status_t st;
-    fit_creep_t *creep = o->creep_tau >= 0 ? &o->creep : NULL;
-    o->creep.tau = o->creep_tau > 0 ? o->creep_tau : 0.0;
-    if (o->final_kind == FIT_EVERETT || o->final_kind == FIT_GRID) {
-        fit_everett_result_t train;
-        o->holdout = o->final_kind == FIT_GRID
-                         ? fit_grid_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train,
-                                            creep, &o->last_third)
-                         : fit_everett_holdout(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n,
-                                               &st, &train, creep, &o->last_third);
-    } else {
-        hyst_ident_result_t train;
-        o->holdout = fit_tcm_holdout(&o->cfg, t->col[0], t->col[1], t->n, &st, &train, creep,
-                                     &o->last_third);
+    fit_candidate_t c;
+    memset(&c, 0, sizeof c);
+    c.kind = o->final_kind;
+    c.degree = o->cfg.degree;
+    c.t_degree = o->t_degree;
+    c.delay = o->cfg.delay;
+    fit_score(&o->cfg, t->col[0], t->col[1], t->n, o->v, o->creep_tau, &c);
+    o->holdout = c.holdout_rms;
+    o->last_third = c.last_third_rms;
+    if (o->creep_tau >= 0) {
+        o->creep = c.creep;
     }
-    o->with_creep = creep != NULL && o->creep.tau > 0 && isfinite(o->creep.holdout_rms) &&
+    o->with_creep = o->creep_tau >= 0 && o->creep.tau > 0 && isfinite(o->creep.holdout_rms) &&
                     (o->creep_tau > 0 ||
                      !(o->holdout <= o->creep.holdout_rms * (1.0 + FIT_PARSIMONY)));
 }
@@ -483,6 +505,20 @@ static void choose_creep(fit_opts_t *o, const cli_table_t *t)
 /* On stderr: what the hold-out part did not test the choice on. */
 static void warn_excitation(const fit_opts_t *o, const char *name)
 {
+    if (o->v != NULL) { /* the validation record against the record fitted */
+        if (o->excitation.span < FIT_HOLDOUT_MIN_SPAN) {
+            (void)fprintf(stderr, "hyst fit: warning: %s: its inputs span %.3g %% of the range "
+                                  "of %s's: the choice was not tested over the rest of it\n",
+                          o->vname, 100.0 * o->excitation.span, name);
+        }
+        if (o->excitation.minor == 0u) {
+            (void)fprintf(stderr, "hyst fit: warning: %s holds no minor loop (every reversal "
+                                  "at an end of %s's inputs' range or beyond): the choice was "
+                                  "not tested on minor loops\n",
+                          o->vname, name);
+        }
+        return;
+    }
     if (o->excitation.span < FIT_HOLDOUT_MIN_SPAN) {
         (void)fprintf(stderr, "hyst fit: warning: %s: the last third's inputs span %.3g %% of "
                               "the record's range: the choice was not tested over the rest of "
@@ -545,7 +581,8 @@ static void rank_others(fit_opts_t *o, const cli_table_t *t)
     cfg.operators = FIT_PI_DEFAULT_OPERATORS;
     cfg.skip = o->cfg.skip;
     cfg.delay = o->cfg.delay;
-    o->pi10 = fit_pi_holdout(&cfg, t->col[0], t->col[1], t->n, &st, &res, r, w);
+    /* PI's hold-out is the last third: against a choice made on OTHER, none */
+    o->pi10 = o->v != NULL ? NAN : fit_pi_holdout(&cfg, t->col[0], t->col[1], t->n, &st, &res, r, w);
 }
 
 /* A candidate's name in the printout into name[0..size). */
@@ -567,8 +604,8 @@ static int choose_delay(fit_opts_t *o, cli_table_t *t)
 {
     fit_found_t found;
     size_t delay;
-    if (fit_given_delay(&o->cfg, o->final_kind, o->t_degree, t->col[0], t->col[1], t->n, &delay,
-                        &found) != HYST_OK) {
+    if (fit_given_delay(&o->cfg, o->final_kind, o->t_degree, t->col[0], t->col[1], t->n, o->v,
+                        &delay, &found) != HYST_OK) {
         return 1;
     }
     o->cfg.delay = delay;
@@ -579,33 +616,18 @@ static int choose_delay(fit_opts_t *o, cli_table_t *t)
     return 0;
 }
 
-static void print_candidates(const fit_opts_t *o)
+/* The kinds the automatic choice compared, in words. */
+static const char *kinds_compared(const fit_opts_t *o)
 {
-    char t_deg[32] = "";
-    size_t i;
-    if (o->final_kind == FIT_EVERETT) {
-        (void)snprintf(t_deg, sizeof t_deg, "t-degree %u, ", o->t_degree);
-    }
-    (void)printf("# chosen by hold-out: degree %u, delay %lu (kind %s, %s%s%u parameters: the "
-                 "fewest within 1 %% of the lowest RMS prediction error on the last third of "
-                 "the record, fitted on the first two thirds, and on the middle third, fitted "
-                 "on the others, when each third holds %u samples or more; kinds compared: "
-                 "%s)\n",
-                 o->cfg.degree, (unsigned long)o->cfg.delay,
-                 o->final_kind == FIT_EVERETT ? "everett"
-                 : o->final_kind == FIT_GRID  ? "everett_grid"
-                                              : "poly",
-                 t_deg,
-                 o->with_creep ? (o->with_rate ? "creep, rate, " : "creep, ")
-                 : o->with_rate ? "rate, " : "",
-                 fit_option_parameters(&candidates[best_candidate], o->with_creep) +
-                     (o->with_rate ? FIT_RATE_PARAMETERS : 0u),
-                 (unsigned)FIT_SPLIT_MIN,
-                 candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID)
-                     ? "poly, everett, everett_grid"
-                 : candidate_kinds(o) == FIT_EVERETT ? "everett"
-                 : candidate_kinds(o) == FIT_GRID    ? "everett_grid"
-                                                     : "poly");
+    return candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID) ? "poly, everett, everett_grid"
+           : candidate_kinds(o) == FIT_EVERETT                       ? "everett"
+           : candidate_kinds(o) == FIT_GRID                          ? "everett_grid"
+                                                                     : "poly";
+}
+
+/* The delays the automatic choice searched, when scaled to the drive. */
+static void print_delays_searched(const fit_opts_t *o)
+{
     if (o->max_delay > FIT_MAX_DELAY) {
         (void)printf("# delays searched 0..%lu (1/%u of the drive's period): f0 of degree 3 "
                      "predicts best at %lu; every candidate at %lu..%lu\n",
@@ -616,26 +638,92 @@ static void print_candidates(const fit_opts_t *o)
                                          : 0u),
                      (unsigned long)(o->cheap_delay + FIT_DELAY_AROUND));
     }
-    (void)printf("# hold-out: %lu of its %lu inputs outside [%.9g, %.9g], the range of the "
-                 "part fitted%s\n",
-                 (unsigned long)o->excitation.beyond, (unsigned long)o->excitation.holdout_n,
-                 o->excitation.fitted_lo, o->excitation.fitted_hi,
-                 o->excitation.beyond > 0u ? " (predicted by the branches continued beyond it: everett "
-                                  "widened; the others clamp them)"
-                                : "");
-    (void)printf("# hold-out excitation: its inputs span %.3g %% of the record's range, %lu "
-                 "reversals inside it (minor loops)\n",
-                 100.0 * o->excitation.span, (unsigned long)o->excitation.minor);
+}
+
+/* The choice in words into buf: "degree N, delay D (kind K, [t-degree T, ]
+ * [creep, ][rate, ]P parameters". */
+static void chosen_words(const fit_opts_t *o, char *buf, size_t size)
+{
+    char t_deg[32] = "";
+    if (o->final_kind == FIT_EVERETT) {
+        (void)snprintf(t_deg, sizeof t_deg, "t-degree %u, ", o->t_degree);
+    }
+    (void)snprintf(buf, size, "degree %u, delay %lu (kind %s, %s%s%u parameters",
+                   o->cfg.degree, (unsigned long)o->cfg.delay,
+                   o->final_kind == FIT_EVERETT ? "everett"
+                   : o->final_kind == FIT_GRID  ? "everett_grid"
+                                                : "poly",
+                   t_deg,
+                   o->with_creep ? (o->with_rate ? "creep, rate, " : "creep, ")
+                   : o->with_rate ? "rate, " : "",
+                   fit_option_parameters(&candidates[best_candidate], o->with_creep) +
+                       (o->with_rate ? FIT_RATE_PARAMETERS : 0u));
+}
+
+/* The lines of what the choice was tested on (`what`: hold-out or
+ * validation) against the range of the `fitted` part or record. */
+static void print_excitation(const fit_opts_t *o, const char *what, const char *fitted)
+{
+    (void)printf("# %s: %lu of its %lu inputs outside [%.9g, %.9g], the range of the %s "
+                 "fitted%s\n",
+                 what, (unsigned long)o->excitation.beyond, (unsigned long)o->excitation.holdout_n,
+                 o->excitation.fitted_lo, o->excitation.fitted_hi, fitted,
+                 o->excitation.beyond > 0u ? " (predicted by the branches continued beyond it: "
+                                             "everett widened; the others clamp them)"
+                                           : "");
+    (void)printf("# %s excitation: its inputs span %.3g %% of the record's range, %lu reversals "
+                 "inside it (minor loops)\n",
+                 what, 100.0 * o->excitation.span, (unsigned long)o->excitation.minor);
+}
+
+/* --validate: what the choice was scored on, and the lines of its inputs. */
+static void print_validated(const fit_opts_t *o)
+{
+    char chosen[128];
+    chosen_words(o, chosen, sizeof chosen);
+    (void)printf("# chosen on %s: %s: the fewest within 1 %% of the lowest RMS error on its %lu "
+                 "samples, each candidate fitted on the whole record and run from rest over it; "
+                 "kinds compared: %s): validation rms %.6g\n",
+                 o->vname, chosen, (unsigned long)o->excitation.holdout_n, kinds_compared(o),
+                 o->with_rate ? o->rate.holdout_rms
+                              : fit_option_rms(&candidates[best_candidate], o->with_creep));
+    print_excitation(o, "validation", "record");
+    print_delays_searched(o);
+}
+
+/* Without --validate: what the choice was scored on, and the hold-out's inputs. */
+static void print_holdout(const fit_opts_t *o)
+{
+    char chosen[128];
+    chosen_words(o, chosen, sizeof chosen);
+    (void)printf("# chosen by hold-out: %s: the fewest within 1 %% of the lowest RMS prediction "
+                 "error on the last third of the record, fitted on the first two thirds, and on "
+                 "the middle third, fitted on the others, when each third holds %u samples or "
+                 "more; kinds compared: %s)\n",
+                 chosen, (unsigned)FIT_SPLIT_MIN, kinds_compared(o));
+    print_delays_searched(o);
+    print_excitation(o, "hold-out", "part");
+}
+
+static void print_candidates(const fit_opts_t *o)
+{
+    const char *score = o->v != NULL ? "validation rms" : "hold-out rms";
+    size_t i;
+    if (o->v != NULL) {
+        print_validated(o);
+    } else {
+        print_holdout(o);
+    }
     {
         const double chosen = fit_option_rms(&candidates[best_candidate], o->with_creep);
         char name[48];
         if (o->runner_up != (size_t)-1) {
             const fit_candidate_t *r = &candidates[o->runner_up];
             candidate_name(r, name, sizeof name);
-            (void)printf("# runner-up: %s delay %lu%s (%u parameters): hold-out rms %.6g, the "
-                         "chosen %.6g\n",
+            (void)printf("# runner-up: %s delay %lu%s (%u parameters): %s %.6g, the chosen "
+                         "%.6g\n",
                          name, (unsigned long)r->delay, o->runner_up_creep ? " with creep" : "",
-                         fit_option_parameters(r, o->runner_up_creep),
+                         fit_option_parameters(r, o->runner_up_creep), score,
                          fit_option_rms(r, o->runner_up_creep), chosen);
         }
         if (isfinite(o->pi10)) { /* PI's fit takes no outputs left out: the last third */
@@ -656,9 +744,9 @@ static void print_candidates(const fit_opts_t *o)
                                c->creep.holdout_rms);
             }
             /* the chosen one at its sub-sample delay, if one was chosen */
-            (void)printf("# candidate %s delay %.9g: hold-out rms %.6g, fit rms %.6g%s%s\n", name,
+            (void)printf("# candidate %s delay %.9g: %s %.6g, fit rms %.6g%s%s\n", name,
                          (double)c->delay + (i == best_candidate ? o->delay_fraction : 0.0),
-                         c->holdout_rms, c->fit_rms, creep,
+                         score, c->holdout_rms, c->fit_rms, creep,
                          i != best_candidate ? ""
                          : o->with_creep     ? " (chosen, with creep)"
                                              : " (chosen)");
@@ -1121,14 +1209,45 @@ static int record_refused(const fit_opts_t *o, const char *name, const cli_table
     }
 }
 
+/* --validate OTHER read into *tv and *v (the same columns and --skip as
+ * FILE), its rows checked as FILE's are: 0, or 1 after a message (nothing
+ * left to free). */
+static int read_validation(fit_opts_t *o, cli_table_t *tv, fit_validation_t *v)
+{
+    fit_record_t rec;
+    size_t pairs;
+    if (cli_read_columns("fit", o->validate, o->cols, 2u, o->decimal_comma, tv) != 0) {
+        return 1;
+    }
+    pairs = tv->n > o->cfg.skip ? tv->n - o->cfg.skip : 0u;
+    if (pairs < 2u) {
+        (void)cli_fail("fit", "option --validate: %s: %lu rows after --skip %lu (of the %lu "
+                              "read): a validation record needs two or more",
+                       o->vname, (unsigned long)pairs, (unsigned long)o->cfg.skip,
+                       (unsigned long)tv->n);
+        cli_table_free(tv);
+        return 1;
+    }
+    if (record_refused(o, o->vname, tv, &rec)) {
+        cli_table_free(tv);
+        return 1;
+    }
+    v->x = tv->col[0];
+    v->y = tv->col[1];
+    v->n = tv->n;
+    v->skip = o->cfg.skip;
+    return 0;
+}
+
 int cmd_fit(int argc, char **argv)
 {
     fit_opts_t o;
-    cli_table_t t;
+    cli_table_t t, tv;
+    fit_validation_t validation;
     fit_final_t f;
     cli_replace_t h, ms;
     fit_record_t rec;
-    const char *name;
+    const char *name, *score;
     size_t pairs;
     char compare[512] = "";
     int rc = parse(&o, argc, argv);
@@ -1141,8 +1260,13 @@ int cmd_fit(int argc, char **argv)
     if (o.save != NULL && cli_replace_check(&ms, "fit", "model file", o.save) != 0) {
         return 1;
     }
-    if (cli_outputs_distinct("fit", o.file, o.header != NULL ? h.path : NULL, o.save) != 0) {
+    if (cli_outputs_distinct("fit", o.file, o.header != NULL ? h.path : NULL, o.save) != 0 ||
+        (o.validate != NULL &&
+         cli_outputs_distinct("fit", o.validate, o.header != NULL ? h.path : NULL, o.save) != 0)) {
         return 1;
+    }
+    if (o.validate != NULL) { /* a copy: the name below may share its buffer */
+        (void)snprintf(o.vname, sizeof o.vname, "%s", cli_file_name(o.validate));
     }
     name = cli_file_name(o.file);
     if (cli_read_columns("fit", o.file, o.cols, 2u, o.decimal_comma, &t) != 0) {
@@ -1170,19 +1294,30 @@ int cmd_fit(int argc, char **argv)
         cli_table_free(&t);
         return rc;
     }
+    memset(&tv, 0, sizeof tv);
+    if (o.validate != NULL) {
+        if (read_validation(&o, &tv, &validation) != 0) {
+            cli_table_free(&t);
+            return 1;
+        }
+        o.v = &validation;
+    }
     if (pairs > 0u && !o.have_degree) {
         if (choose(&o, name, &t) != 0) {
             cli_table_free(&t);
+            cli_table_free(&tv);
             return 1;
         }
         pairs = t.n - o.cfg.skip - o.cfg.delay; /* at the chosen delay (fit_select() left samples) */
     } else if (pairs > 0u) {
         if (!o.have_delay && choose_delay(&o, &t) != 0) {
             cli_table_free(&t);
+            cli_table_free(&tv);
             return cli_fail("fit", "%s: out of memory", name);
         }
         pairs = t.n > o.cfg.skip + o.cfg.delay ? t.n - o.cfg.skip - o.cfg.delay : 0u;
-        if (pairs > 0u && (o.creep_tau >= 0 || o.compare_pi != 0u)) {
+        /* with --validate, the model given is scored on OTHER even without a creep term */
+        if (pairs > 0u && (o.creep_tau >= 0 || o.compare_pi != 0u || o.v != NULL)) {
             choose_creep(&o, &t);
         }
     }
@@ -1197,6 +1332,7 @@ int cmd_fit(int argc, char **argv)
         compare_line(&o, &t, compare, sizeof compare);
     }
     cli_table_free(&t);
+    cli_table_free(&tv);
     if (rc != 0) {
         return 1;
     }
@@ -1216,40 +1352,49 @@ int cmd_fit(int argc, char **argv)
         }
         (void)signal(SIGPIPE, SIG_IGN);
     }
+    score = o.v != NULL ? "validation rms" : "hold-out rms";
     print_result(&f, o.t_degree, pairs);
     if (!o.have_degree) {
         print_candidates(&o);
     }
     if (o.delay_fraction > 0.0) {
-        (void)printf("# delay %.9g samples (sub-sample: the drive interpolated; hold-out rms at "
-                     "delay %lu: %.6g)\n",
-                     (double)o.cfg.delay + o.delay_fraction,
+        (void)printf("# delay %.9g samples (sub-sample: the drive interpolated; %s at delay "
+                     "%lu: %.6g)\n",
+                     (double)o.cfg.delay + o.delay_fraction, score,
                      (unsigned long)o.integer_delay, o.integer_holdout);
     } else {
         (void)printf("# delay %lu samples\n", (unsigned long)o.cfg.delay);
     }
     if (o.have_degree && !o.have_delay && isfinite(o.integer_holdout)) {
-        (void)printf("# delay chosen by hold-out among 0..%lu samples (without --delay)\n",
+        (void)printf("# delay chosen %s among 0..%lu samples (without --delay)\n",
+                     o.v != NULL ? "on the validation record" : "by hold-out",
                      (unsigned long)o.max_delay);
     }
+    if (o.have_degree && o.v != NULL) {
+        (void)printf("# validation on %s: rms %.6g (the model fitted on the whole record, run "
+                     "from rest over its %lu samples)\n",
+                     o.vname, o.with_creep ? o.creep.holdout_rms : o.holdout,
+                     (unsigned long)(o.v->n > o.v->skip + o.cfg.delay
+                                         ? o.v->n - o.v->skip - o.cfg.delay
+                                         : 0u));
+    }
     if (o.with_creep && f.model.ncreep > 0u) {
-        (void)printf("# creep: tau %.6g samples, weight %.9g (hold-out rms %.6g; without it "
-                     "%.6g)\n",
-                     f.model.creep_tau[0], f.model.creep_weight[0], o.creep.holdout_rms,
+        (void)printf("# creep: tau %.6g samples, weight %.9g (%s %.6g; without it %.6g)\n",
+                     f.model.creep_tau[0], f.model.creep_weight[0], score, o.creep.holdout_rms,
                      o.holdout);
     } else if (o.creep_tau >= 0 && o.creep.tau > 0 && isfinite(o.creep.holdout_rms)) {
-        (void)printf("# creep: none (hold-out rms %.6g; with the best creep term, tau %.6g "
-                     "samples, %.6g)\n",
-                     o.holdout, o.creep.tau, o.creep.holdout_rms);
+        (void)printf("# creep: none (%s %.6g; with the best creep term, tau %.6g samples, "
+                     "%.6g)\n",
+                     score, o.holdout, o.creep.tau, o.creep.holdout_rms);
     }
     if (o.with_rate && f.model.has_rate) {
-        (void)printf("# rate: tau %.6g samples, weight %.9g (hold-out rms %.6g; without it "
-                     "%.6g)\n",
-                     f.model.rate_tau, f.model.rate_weight, o.rate.holdout_rms, o.rate_without);
+        (void)printf("# rate: tau %.6g samples, weight %.9g (%s %.6g; without it %.6g)\n",
+                     f.model.rate_tau, f.model.rate_weight, score, o.rate.holdout_rms,
+                     o.rate_without);
     } else if (!o.have_degree && o.rate.rate_tau > 0 && isfinite(o.rate.holdout_rms)) {
-        (void)printf("# rate: none (hold-out rms %.6g; with the best rate term, tau %.6g "
-                     "samples, %.6g)\n",
-                     o.rate_without, o.rate.rate_tau, o.rate.holdout_rms);
+        (void)printf("# rate: none (%s %.6g; with the best rate term, tau %.6g samples, "
+                     "%.6g)\n",
+                     score, o.rate_without, o.rate.rate_tau, o.rate.holdout_rms);
     }
     (void)printf("# parameters %u\n", fit_parameters(o.final_kind, o.cfg.degree, o.t_degree) +
                                           (o.with_creep && f.model.ncreep > 0u ? FIT_CREEP_PARAMETERS : 0u) +

@@ -142,26 +142,17 @@ static int terms_regressors(const double *u, size_t len, double x_rest, double c
     return 0;
 }
 
-void fit_terms_part(const double *u, const double *r, size_t len, size_t from, size_t to,
-                    size_t score_from, double x_rest, double creep_tau, double rate_tau,
-                    fit_creep_t *out)
+/* The weights of the creep lag's state s (when lag) and the rate term's
+ * low-pass v, and the offset, by least squares on the residual r outside
+ * [from, to): 0, or 1 when they are not determined (*fit_rms over the
+ * samples fitted). */
+static int terms_solve(const double *s, const double *v, const double *r, size_t len,
+                       size_t from, size_t to, int lag, double *ws_out, double *wv_out,
+                       double *offset_out, double *fit_rms)
 {
-    const int lag = creep_tau > 0;
-    double *s, *v, ms = 0.0, mv = 0.0, mr = 0.0, css = 0.0, csv = 0.0, cvv = 0.0, csr = 0.0;
-    double cvr = 0.0, crr = 0.0, ws = 0.0, wv, offset, det, ss = 0.0, fit_ss, worst = 0.0;
-    size_t k, used = 0u, scored = 0u;
-    memset(out, 0, sizeof *out);
-    out->holdout_rms = NAN;
-    out->fit_rms = NAN;
-    if (!(rate_tau >= 1.0) || len == 0u ||
-        (s = (double *)malloc(2u * len * sizeof(double))) == NULL) {
-        return;
-    }
-    v = s + len;
-    if (terms_regressors(u, len, x_rest, creep_tau, rate_tau, s, v) != 0) {
-        free(s);
-        return;
-    }
+    double ms = 0.0, mv = 0.0, mr = 0.0, css = 0.0, csv = 0.0, cvv = 0.0, csr = 0.0;
+    double cvr = 0.0, crr = 0.0, ws = 0.0, wv, det, fit_ss;
+    size_t k, used = 0u;
     for (k = 0u; k < len; ++k) { /* the equations: outside [from, to), residual known */
         if ((k < from || k >= to) && isfinite(r[k])) {
             ms += s[k];
@@ -171,8 +162,7 @@ void fit_terms_part(const double *u, const double *r, size_t len, size_t from, s
         }
     }
     if (used <= (lag ? 3u : 2u)) {
-        free(s);
-        return;
+        return 1;
     }
     ms /= (double)used;
     mv /= (double)used;
@@ -190,8 +180,7 @@ void fit_terms_part(const double *u, const double *r, size_t len, size_t from, s
     }
     det = css * cvv - csv * csv;
     if (!(cvv > 0) || (lag && !(det > 1e-12 * css * cvv))) {
-        free(s); /* a drive that never moved, or the two indistinguishable */
-        return;
+        return 1; /* a drive that never moved, or the two indistinguishable */
     }
     if (lag) {
         ws = (cvv * csr - csv * cvr) / det;
@@ -199,8 +188,34 @@ void fit_terms_part(const double *u, const double *r, size_t len, size_t from, s
     } else {
         wv = cvr / cvv;
     }
-    offset = mr - ws * ms - wv * mv;
+    *ws_out = ws;
+    *wv_out = wv;
+    *offset_out = mr - ws * ms - wv * mv;
     fit_ss = crr - ws * csr - wv * cvr;
+    *fit_rms = sqrt((fit_ss > 0 ? fit_ss : 0.0) / (double)used);
+    return 0;
+}
+
+void fit_terms_part(const double *u, const double *r, size_t len, size_t from, size_t to,
+                    size_t score_from, double x_rest, double creep_tau, double rate_tau,
+                    fit_creep_t *out)
+{
+    const int lag = creep_tau > 0;
+    double *s, *v, ws, wv, offset, fit_rms, ss = 0.0, worst = 0.0;
+    size_t k, scored = 0u;
+    memset(out, 0, sizeof *out);
+    out->holdout_rms = NAN;
+    out->fit_rms = NAN;
+    if (!(rate_tau >= 1.0) || len == 0u ||
+        (s = (double *)malloc(2u * len * sizeof(double))) == NULL) {
+        return;
+    }
+    v = s + len;
+    if (terms_regressors(u, len, x_rest, creep_tau, rate_tau, s, v) != 0 ||
+        terms_solve(s, v, r, len, from, to, lag, &ws, &wv, &offset, &fit_rms) != 0) {
+        free(s);
+        return;
+    }
     for (k = 0u; k < len; ++k) {
         const double e = r[k] - ws * s[k] - wv * v[k] - offset;
         if (isfinite(e)) {
@@ -217,9 +232,79 @@ void fit_terms_part(const double *u, const double *r, size_t len, size_t from, s
     out->rate_tau = rate_tau;
     out->rate_weight = wv;
     out->offset = offset;
-    out->fit_rms = sqrt((fit_ss > 0 ? fit_ss : 0.0) / (double)used);
+    out->fit_rms = fit_rms;
     out->max_abs = worst;
     out->holdout_rms = scored > 0u ? sqrt(ss / (double)scored) : NAN;
+}
+
+/* The RMS of r2 - ws s - wv v - offset over r2's finite entries, s and v
+ * the terms' regressors of u2 from rest (NaN if none or out of memory). */
+static double terms_other_rms(const double *u2, const double *r2, size_t len2, double x_rest,
+                              double creep_tau, double rate_tau, double ws, double wv,
+                              double offset)
+{
+    double *s, *v, ss = 0.0;
+    size_t k, used = 0u;
+    if (len2 == 0u || (s = (double *)malloc(2u * len2 * sizeof(double))) == NULL) {
+        return NAN;
+    }
+    v = s + len2;
+    if (terms_regressors(u2, len2, x_rest, creep_tau, rate_tau, s, v) != 0) {
+        free(s);
+        return NAN;
+    }
+    for (k = 0u; k < len2; ++k) {
+        const double e = r2[k] - ws * s[k] - wv * v[k] - offset;
+        if (isfinite(e)) {
+            ss += e * e;
+            ++used;
+        }
+    }
+    free(s);
+    return used > 0u ? sqrt(ss / (double)used) : NAN;
+}
+
+/* One creep time constant fitted on the whole of r (as the model file's
+ * term is: fit_creep_score() with no hold-out), scored on r2. */
+static void creep_other(const double *u, const double *r, size_t len, const double *u2,
+                        const double *r2, size_t len2, double x_rest, double tau,
+                        fit_creep_t *out)
+{
+    creep_one(u, r, len, len, x_rest, tau, out);
+    if (out->tau > 0) {
+        out->holdout_rms =
+            terms_other_rms(u2, r2, len2, x_rest, tau, 1.0, out->weight, 0.0, out->offset);
+    }
+}
+
+void fit_terms_other(const double *u, const double *r, size_t len, const double *u2,
+                     const double *r2, size_t len2, double x_rest, double creep_tau,
+                     double rate_tau, fit_creep_t *out)
+{
+    size_t i;
+    memset(out, 0, sizeof *out);
+    out->holdout_rms = NAN;
+    out->fit_rms = NAN;
+    if (rate_tau > 0) { /* fitted on every sample of r: [len, len) held out */
+        fit_terms_part(u, r, len, len, len, len, x_rest, creep_tau, rate_tau, out);
+        if (isfinite(out->fit_rms)) {
+            out->holdout_rms = terms_other_rms(u2, r2, len2, x_rest, creep_tau, rate_tau,
+                                               out->weight, out->rate_weight, out->offset);
+        }
+        return;
+    }
+    if (creep_tau > 0) {
+        creep_other(u, r, len, u2, r2, len2, x_rest, creep_tau, out);
+        return;
+    }
+    for (i = 0u; i < sizeof creep_taus / sizeof creep_taus[0] && creep_taus[i] <= (double)len;
+         ++i) {
+        fit_creep_t c;
+        creep_other(u, r, len, u2, r2, len2, x_rest, creep_taus[i], &c);
+        if (isfinite(c.holdout_rms) && !(out->holdout_rms <= c.holdout_rms)) {
+            *out = c;
+        }
+    }
 }
 
 size_t fit_rate_taus(const double *x, size_t from, size_t to, double *taus)
@@ -243,8 +328,8 @@ size_t fit_rate_taus(const double *x, size_t from, size_t to, double *taus)
 }
 
 int fit_rate_search(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                    const fit_candidate_t *chosen, int with_creep, double rate_tau,
-                    fit_candidate_t *out)
+                    const fit_validation_t *v, const fit_candidate_t *chosen, int with_creep,
+                    double rate_tau, fit_candidate_t *out)
 {
     const double without = fit_option_rms(chosen, with_creep);
     double taus[FIT_RATE_TAUS], lowest = NAN;
@@ -261,7 +346,7 @@ int fit_rate_search(const hyst_ident_config_t *base, const double *x, const doub
         fit_candidate_t trial = *chosen;
         memset(&trial.creep, 0, sizeof trial.creep);
         trial.creep.rate_tau = taus[i];
-        fit_score(base, x, y, n, with_creep ? chosen->creep.tau : 0.0, &trial);
+        fit_score(base, x, y, n, v, with_creep ? chosen->creep.tau : 0.0, &trial);
         if (isfinite(trial.creep.holdout_rms) && trial.creep.rate_tau > 0 &&
             !(lowest <= trial.creep.holdout_rms)) {
             lowest = trial.creep.holdout_rms;

@@ -130,6 +130,28 @@ void fit_holdout_excitation(const double *x, size_t skip, size_t end, fit_excita
     (void)fit_reversals(x, skip + train, end, lo, hi, &e->minor);
 }
 
+void fit_validation_excitation(const double *x, size_t skip, size_t end,
+                               const fit_validation_t *v, size_t delay, fit_excitation_t *e)
+{
+    const size_t v_end = v->n > v->skip + delay ? v->n - delay : v->skip;
+    double lo, hi;
+    size_t k;
+    memset(e, 0, sizeof *e);
+    if (end <= skip || v_end <= v->skip) {
+        return;
+    }
+    fit_input_range(x, skip, end, 0.0, &e->fitted_lo, &e->fitted_hi);
+    e->holdout_n = v_end - v->skip;
+    for (k = v->skip; k < v_end; ++k) {
+        e->beyond += v->x[k] < e->fitted_lo || v->x[k] > e->fitted_hi ? 1u : 0u;
+    }
+    fit_input_range(v->x, v->skip, v_end, 0.0, &lo, &hi);
+    e->span = e->fitted_hi > e->fitted_lo && hi >= lo
+                  ? (hi - lo) / (e->fitted_hi - e->fitted_lo)
+                  : 0.0;
+    (void)fit_reversals(v->x, v->skip, v_end, e->fitted_lo, e->fitted_hi, &e->minor);
+}
+
 size_t fit_max_delay(const double *x, size_t from, size_t to)
 {
     double lo, hi;
@@ -143,19 +165,25 @@ size_t fit_max_delay(const double *x, size_t from, size_t to)
     return d < FIT_MAX_DELAY ? FIT_MAX_DELAY : d > FIT_MAX_SCALED_DELAY ? FIT_MAX_SCALED_DELAY : d;
 }
 
+static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degree, int widened,
+                      const double *x, const double *y, size_t n, const fit_validation_t *v,
+                      hyst_status_t *status, hyst_ident_result_t *poly, fit_everett_result_t *ev,
+                      fit_creep_t *creep, double *last_third);
+
 size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
-                       size_t n, size_t max_delay)
+                       size_t n, const fit_validation_t *v, size_t max_delay)
 {
     size_t d, best = 0u;
     double lowest = NAN;
     for (d = 0u; d <= max_delay && n > base->skip + d; ++d) {
         hyst_ident_config_t cfg = *base;
         hyst_ident_result_t fit;
+        fit_everett_result_t unused;
         hyst_status_t st;
         double e;
         cfg.degree = 3u;
         cfg.delay = d;
-        e = fit_tcm_holdout(&cfg, x, y, n, &st, &fit, NULL, NULL);
+        e = holdout(&cfg, FIT_POLY, 0u, 0, x, y, n, v, &st, &fit, &unused, NULL, NULL);
         if (isfinite(e) && !(lowest <= e)) {
             lowest = e;
             best = d;
@@ -292,6 +320,51 @@ static size_t train_count(size_t n, size_t skip, size_t delay)
     return (2u * (n - skip - delay)) / 3u;
 }
 
+/* The model of kind `kind` fitted to x[k] with y[k + delay], part->skip <= k
+ * < count - delay (part: degree, delay, domain, method): f0 into *f0
+ * (FIT_POLY) or the curve into *curve (its grid's table static). 0, or 1
+ * when the fit failed, f0 is not increasing or the library refused E
+ * (*status says which). */
+static int model_fit(const hyst_ident_config_t *part, int kind, unsigned t_degree,
+                     const double *x, const double *y, size_t count, hyst_status_t *status,
+                     hyst_ident_result_t *poly, fit_everett_result_t *ev, hyst_poly_t *f0,
+                     hyst_curve_t *curve)
+{
+    unsigned i;
+    if (kind == FIT_GRID) {
+        static double table[HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)];
+        *status = fit_grid_record(part, part->degree, x, y, count, ev);
+        if (*status == HYST_OK) {
+            *status = ev->curve_status;
+        }
+        return *status != HYST_OK ||
+               hyst_f64_curve_from_everett_grid(curve, &ev->grid, table,
+                                                sizeof table / sizeof table[0]) != HYST_OK;
+    }
+    if (kind == FIT_EVERETT) {
+        *status = fit_everett_record(part, t_degree, x, y, count, ev);
+        if (*status == HYST_OK) {
+            *status = ev->curve_status;
+        }
+        return *status != HYST_OK || hyst_f64_curve_from_everett(curve, &ev->e) != HYST_OK;
+    }
+    {
+        hyst_ident_t work;
+        *status = hyst_ident_fit(part, x, y, count, &work, poly);
+        if (*status != HYST_OK || !poly->increasing) {
+            return 1;
+        }
+        memset(f0, 0, sizeof *f0);
+        f0->degree = poly->degree;
+        f0->lo = (double)poly->lo;
+        f0->hi = (double)poly->hi;
+        for (i = 0u; i <= poly->degree; ++i) {
+            f0->coeffs[i] = (double)poly->coeffs[i];
+        }
+    }
+    return 0;
+}
+
 /* One split of the hold-out (FIT_SPLITS) of the samples the model sees:
  * 0 fits the first two thirds and scores the last third; 1 and 2 score the
  * middle and the first third, fitted on the rest with the outputs of that
@@ -315,7 +388,6 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
     const double *yf = y;
     hyst_curve_t curve;
     hyst_poly_t f0;
-    unsigned i;
     size_t k;
     double before, e;
     if (len == 0u || from >= to || (split != 0 && settle >= to)) {
@@ -333,19 +405,7 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
         }
         yf = masked;
     }
-    if (kind == FIT_GRID) {
-        static double table[HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)];
-        *status = fit_grid_record(&part, cfg->degree, x, yf, count, ev);
-        if (*status == HYST_OK) {
-            *status = ev->curve_status;
-        }
-        if (*status != HYST_OK ||
-            hyst_f64_curve_from_everett_grid(&curve, &ev->grid, table,
-                                             sizeof table / sizeof table[0]) != HYST_OK) {
-            free(masked);
-            return NAN;
-        }
-    } else if (kind == FIT_EVERETT) {
+    if (kind == FIT_EVERETT) {
         memset(ev, 0, sizeof *ev);
         if (widened) { /* about the inputs whose outputs are fitted */
             double lo, hi, lo2, hi2;
@@ -363,28 +423,10 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
             part.lo = lo;
             part.hi = hi;
         }
-        *status = fit_everett_record(&part, t_degree, x, yf, count, ev);
-        if (*status == HYST_OK) {
-            *status = ev->curve_status;
-        }
-        if (*status != HYST_OK || hyst_f64_curve_from_everett(&curve, &ev->e) != HYST_OK) {
-            free(masked);
-            return NAN;
-        }
-    } else {
-        hyst_ident_t work;
-        *status = hyst_ident_fit(&part, x, yf, count, &work, poly);
-        if (*status != HYST_OK || !poly->increasing) {
-            free(masked);
-            return NAN;
-        }
-        memset(&f0, 0, sizeof f0);
-        f0.degree = poly->degree;
-        f0.lo = (double)poly->lo;
-        f0.hi = (double)poly->hi;
-        for (i = 0u; i <= poly->degree; ++i) {
-            f0.coeffs[i] = (double)poly->coeffs[i];
-        }
+    }
+    if (model_fit(&part, kind, t_degree, x, yf, count, status, poly, ev, &f0, &curve) != 0) {
+        free(masked);
+        return NAN;
     }
     free(masked);
     e = model_run(kind != FIT_POLY ? NULL : &f0, kind != FIT_POLY ? &curve : NULL, x, y, n,
@@ -393,13 +435,112 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
     return e;
 }
 
+/* The model's run from rest at skip over x[skip .. n - delay) against
+ * y[k + delay] (n > skip + delay): u[k - skip] the input as the model took
+ * it (clamped; the last one for NaN), r[k - skip] the output minus the
+ * model's (NaN where missing). 0, or 1 when out of memory. */
+static int model_residual(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
+                          const double *y, size_t n, size_t skip, size_t delay, double *u,
+                          double *r)
+{
+    hyst_tcm_t S;
+    const size_t cap = (n - delay - skip) / 2u + 2u;
+    double *mem = (double *)malloc(4u * cap * sizeof(double));
+    hyst_status_t st;
+    size_t k;
+    if (mem == NULL) {
+        return 1;
+    }
+    st = f0 != NULL ? hyst_f64_init(&S, f0, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap)
+                    : hyst_f64_init_curve(&S, curve, mem, mem + cap, mem + 2u * cap,
+                                          mem + 3u * cap, cap);
+    for (k = skip; st == HYST_OK && k + delay < n; ++k) {
+        const double ym = hyst_f64_step(&S, x[k]);
+        u[k - skip] = hyst_f64_input(&S);
+        r[k - skip] = isfinite(x[k]) && isfinite(y[k + delay]) ? y[k + delay] - ym : NAN;
+    }
+    free(mem);
+    return st != HYST_OK;
+}
+
+/* A candidate scored on the validation record v: fitted on the whole of x,
+ * y from cfg->skip on (kind FIT_EVERETT widened as fit_chosen_domain()
+ * widens the model chosen: the model the choice saves), then run from rest
+ * over v: the RMS error over every row of v it predicts (NaN if the fit
+ * failed, *status, or none could be scored); creep (may be NULL): its
+ * terms fitted on the model's residual over x, y, scored on v
+ * (fit_terms_other()). */
+static double validated(const hyst_ident_config_t *cfg, int kind, unsigned t_degree,
+                        int widened, const double *x, const double *y, size_t n,
+                        const fit_validation_t *v, hyst_status_t *status,
+                        hyst_ident_result_t *poly, fit_everett_result_t *ev, fit_creep_t *creep)
+{
+    const double creep_tau = creep != NULL ? creep->tau : 0.0;
+    const double rate_tau = creep != NULL ? creep->rate_tau : 0.0;
+    hyst_ident_config_t whole = *cfg;
+    hyst_curve_t curve;
+    hyst_poly_t f0;
+    const hyst_poly_t *fp;
+    const hyst_curve_t *cp;
+    double *u, *r, *u2, *r2, ss = 0.0;
+    size_t len, len2, k, used = 0u;
+    memset(ev, 0, sizeof *ev);
+    if (creep != NULL) {
+        memset(creep, 0, sizeof *creep);
+        creep->holdout_rms = NAN;
+        creep->fit_rms = NAN;
+    }
+    if (n <= cfg->skip + cfg->delay || v->n <= v->skip + cfg->delay) {
+        *status = HYST_ERR_ARG;
+        return NAN;
+    }
+    if (kind == FIT_EVERETT && widened) {
+        double lo, hi;
+        fit_input_range(x, cfg->skip, n - cfg->delay, 0.0, &lo, &hi);
+        fit_widened_domain(lo, hi, fit_first_input(x, cfg->skip, n - cfg->delay), &whole.lo,
+                           &whole.hi);
+    }
+    if (model_fit(&whole, kind, t_degree, x, y, n, status, poly, ev, &f0, &curve) != 0) {
+        return NAN;
+    }
+    fp = kind == FIT_POLY ? &f0 : NULL;
+    cp = kind == FIT_POLY ? NULL : &curve;
+    len = n - cfg->skip - cfg->delay;
+    len2 = v->n - v->skip - cfg->delay;
+    if ((u = (double *)malloc(2u * (len + len2) * sizeof(double))) == NULL) {
+        *status = HYST_ERR_NOSPACE;
+        return NAN;
+    }
+    r = u + len;
+    u2 = r + len;
+    r2 = u2 + len2;
+    if (model_residual(fp, cp, v->x, v->y, v->n, v->skip, cfg->delay, u2, r2) != 0 ||
+        (creep != NULL && model_residual(fp, cp, x, y, n, cfg->skip, cfg->delay, u, r) != 0)) {
+        free(u);
+        *status = HYST_ERR_NOSPACE;
+        return NAN;
+    }
+    for (k = 0u; k < len2; ++k) {
+        if (isfinite(r2[k])) {
+            ss += r2[k] * r2[k];
+            ++used;
+        }
+    }
+    if (creep != NULL && used > 0u) {
+        fit_terms_other(u, r, len, u2, r2, len2, fp != NULL ? (double)fp->lo : cp->lo.f64,
+                        creep_tau, rate_tau, creep);
+    }
+    free(u);
+    return used > 0u ? sqrt(ss / (double)used) : NAN;
+}
+
 /* The hold-out of every split (FIT_SPLITS): their mean square's root; the
  * training fit's results and the creep's time constant those of split 0,
  * the creep's hold-out over every split at that time constant. */
 static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degree, int widened,
-                      const double *x, const double *y, size_t n, hyst_status_t *status,
-                      hyst_ident_result_t *poly, fit_everett_result_t *ev, fit_creep_t *creep,
-                      double *last_third)
+                      const double *x, const double *y, size_t n, const fit_validation_t *v,
+                      hyst_status_t *status, hyst_ident_result_t *poly, fit_everett_result_t *ev,
+                      fit_creep_t *creep, double *last_third)
 {
     hyst_ident_result_t poly_other;
     fit_everett_result_t ev_other;
@@ -409,6 +550,16 @@ static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degre
     int split, splits = 1;
     const size_t settle =
         n > cfg->skip + cfg->delay ? fit_settled(x, cfg->skip, n - cfg->delay) : cfg->skip;
+    if (v != NULL) { /* instead of the splits: no third of the record held out */
+        if (last_third != NULL) {
+            *last_third = NAN;
+        }
+        e = validated(cfg, kind, t_degree, widened, x, y, n, v, status, poly, ev, creep);
+        if (creep != NULL) {
+            creep->last_third_rms = NAN;
+        }
+        return e;
+    }
     e = holdout_split(cfg, kind, t_degree, widened, x, y, n, 0, settle, status, poly, ev, creep);
     ss = e * e;
     if (last_third != NULL) {
@@ -449,7 +600,7 @@ double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const do
                        fit_creep_t *creep, double *last_third)
 {
     fit_everett_result_t unused;
-    return holdout(cfg, FIT_POLY, 0u, 0, x, y, n, status, fit, &unused, creep, last_third);
+    return holdout(cfg, FIT_POLY, 0u, 0, x, y, n, NULL, status, fit, &unused, creep, last_third);
 }
 
 double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
@@ -457,7 +608,7 @@ double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, co
                            fit_everett_result_t *fit, fit_creep_t *creep, double *last_third)
 {
     hyst_ident_result_t unused;
-    return holdout(cfg, FIT_EVERETT, t_degree, 0, x, y, n, status, &unused, fit, creep,
+    return holdout(cfg, FIT_EVERETT, t_degree, 0, x, y, n, NULL, status, &unused, fit, creep,
                    last_third);
 }
 
@@ -466,7 +617,8 @@ double fit_grid_holdout(const hyst_ident_config_t *cfg, const double *x, const d
                         fit_creep_t *creep, double *last_third)
 {
     hyst_ident_result_t unused;
-    return holdout(cfg, FIT_GRID, 0u, 0, x, y, n, status, &unused, fit, creep, last_third);
+    return holdout(cfg, FIT_GRID, 0u, 0, x, y, n, NULL, status, &unused, fit, creep,
+                   last_third);
 }
 
 double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const double *y,
@@ -504,7 +656,7 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
  * the caller; with a creep term too unless creep_tau < 0 (0: its time
  * constant chosen). */
 void fit_score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-               double creep_tau, fit_candidate_t *c)
+               const fit_validation_t *v, double creep_tau, fit_candidate_t *c)
 {
     hyst_ident_config_t cfg = *base;
     fit_creep_t *creep = creep_tau >= 0 ? &c->creep : NULL;
@@ -515,12 +667,13 @@ void fit_score(const hyst_ident_config_t *base, const double *x, const double *y
     if (c->kind == FIT_EVERETT || c->kind == FIT_GRID) {
         fit_everett_result_t ev;
         hyst_ident_result_t unused;
-        c->holdout_rms = holdout(&cfg, c->kind, c->t_degree, c->widened, x, y, n, &c->status,
-                                 &unused, &ev, creep, &c->last_third_rms);
+        c->holdout_rms = holdout(&cfg, c->kind, c->t_degree, c->widened, x, y, n, v,
+                                 &c->status, &unused, &ev, creep, &c->last_third_rms);
         c->fit_rms = ev.rms;
     } else {
-        c->holdout_rms =
-            fit_tcm_holdout(&cfg, x, y, n, &c->status, &c->fit, creep, &c->last_third_rms);
+        fit_everett_result_t unused;
+        c->holdout_rms = holdout(&cfg, FIT_POLY, 0u, 0, x, y, n, v, &c->status, &c->fit, &unused,
+                                 creep, &c->last_third_rms);
         c->fit_rms = (double)c->fit.rms;
     }
     if (!isfinite(c->holdout_rms)) {
@@ -558,7 +711,7 @@ unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
 /* Adds candidate (kind, degree, t_degree, delay), scored, at cand[*count]
  * unless cand is full; *best the lowest hold-out RMS so far. */
 static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                double creep_tau, int kind, unsigned degree, unsigned t_degree, size_t delay,
+                const fit_validation_t *v, double creep_tau, int kind, unsigned degree, unsigned t_degree, size_t delay,
                 int widened, fit_candidate_t *cand, size_t max_cand, size_t *count)
 {
     fit_candidate_t *c = &cand[*count];
@@ -571,14 +724,14 @@ static void add(const hyst_ident_config_t *base, const double *x, const double *
     c->t_degree = t_degree;
     c->delay = delay;
     c->widened = widened;
-    fit_score(base, x, y, n, creep_tau, c);
+    fit_score(base, x, y, n, v, creep_tau, c);
     ++*count;
 }
 
 size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
                   unsigned t_degree, double creep_tau, const double *x, const double *y,
-                  size_t n, size_t max_delay, fit_candidate_t *cand, size_t max_cand,
-                  size_t *best, int *with_creep)
+                  size_t n, const fit_validation_t *v, size_t max_delay,
+                  fit_candidate_t *cand, size_t max_cand, size_t *best, int *with_creep)
 {
     size_t count = 0u, d;
     unsigned deg, k;
@@ -586,7 +739,11 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
     size_t i;
     /* widened candidates only where they make a difference: the hold-out
      * part's inputs leave the range of the part fitted (and no --domain) */
-    if (!(base->lo < base->hi) && n > base->skip + base->delay) {
+    if (v != NULL && !(base->lo < base->hi) && n > base->skip + base->delay) {
+        fit_excitation_t e; /* the validation record's inputs leave the record's range */
+        fit_validation_excitation(x, base->skip, n - base->delay, v, base->delay, &e);
+        widen = e.beyond > 0u;
+    } else if (!(base->lo < base->hi) && n > base->skip + base->delay) {
         const size_t from = base->skip, end = n - base->delay;
         const size_t train = train_count(n, base->skip, base->delay);
         double lo, hi;
@@ -600,10 +757,10 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
             break;
         }
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
-            add(base, x, y, n, creep_tau, FIT_POLY, deg, 0u, d, 0, cand, max_cand, &count);
+            add(base, x, y, n, v, creep_tau, FIT_POLY, deg, 0u, d, 0, cand, max_cand, &count);
         }
         for (k = 0u; (kinds & FIT_GRID) != 0 && k < FIT_GRID_CANDIDATES; ++k) {
-            add(base, x, y, n, creep_tau, FIT_GRID, FIT_GRID_INTERVALS(k), 0u, d, 0, cand,
+            add(base, x, y, n, v, creep_tau, FIT_GRID, FIT_GRID_INTERVALS(k), 0u, d, 0, cand,
                 max_cand, &count);
         }
         for (deg = 1u; (kinds & FIT_EVERETT) != 0 && deg <= HYST_EVERETT_MAX_DEGREE; ++deg) {
@@ -611,8 +768,8 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
                 int w;
                 for (w = 0; w <= widen; ++w) {
                     if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
-                        add(base, x, y, n, creep_tau, FIT_EVERETT, deg, k, d, w, cand, max_cand,
-                            &count);
+                        add(base, x, y, n, v, creep_tau, FIT_EVERETT, deg, k, d, w, cand,
+                            max_cand, &count);
                     }
                 }
             }
@@ -668,20 +825,36 @@ void fit_choose(const fit_candidate_t *cand, size_t count, double creep_tau, siz
 
 /* One model's hold-out at delay d (its own kind's, no creep term). */
 static double kind_holdout(const hyst_ident_config_t *base, int kind, unsigned t_degree,
-                           const double *x, const double *y, size_t n, size_t d)
+                           const double *x, const double *y, size_t n,
+                           const fit_validation_t *v, size_t d)
 {
     hyst_ident_config_t cfg = *base;
     hyst_status_t st;
     fit_everett_result_t ev;
     hyst_ident_result_t poly;
     cfg.delay = d;
-    return holdout(&cfg, kind, t_degree, 0, x, y, n, &st, &poly, &ev, NULL, NULL);
+    return holdout(&cfg, kind, t_degree, 0, x, y, n, v, &st, &poly, &ev, NULL, NULL);
+}
+
+/* v with its drive a fraction f of a sample later, in vxf (v's rows) and
+ * *vf; NULL if v is. */
+static const fit_validation_t *validation_fraction(const fit_validation_t *v, double f,
+                                                   double *vxf, fit_validation_t *vf)
+{
+    if (v == NULL) {
+        return NULL;
+    }
+    *vf = *v;
+    fit_delay_fraction(v->x, v->n, f, vxf);
+    vf->x = vxf;
+    return vf;
 }
 
 hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigned t_degree,
-                              double *x, const double *y, size_t n, size_t *delay,
-                              fit_found_t *out)
+                              double *x, const double *y, size_t n, const fit_validation_t *v,
+                              size_t *delay, fit_found_t *out)
 {
+    fit_validation_t vf;
     const size_t end = n > base->skip ? n - base->skip : 0u;
     double lowest = NAN, f, best_f = 0.0, limit;
     double *xf;
@@ -691,7 +864,7 @@ hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigne
     out->best = (size_t)-1;
     out->max_delay = fit_max_delay(x, base->skip, n);
     for (d = 0u; d <= out->max_delay && d + 3u < end; ++d) {
-        const double e = kind_holdout(base, kind, t_degree, x, y, n, d);
+        const double e = kind_holdout(base, kind, t_degree, x, y, n, v, d);
         if (isfinite(e) && !(lowest <= e)) {
             lowest = e;
             best_d = d;
@@ -703,15 +876,17 @@ hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigne
     if (!isfinite(lowest)) {
         return HYST_OK;
     }
-    if ((xf = (double *)malloc(n * sizeof(double))) == NULL) {
+    if ((xf = (double *)malloc((n + (v != NULL ? v->n : 0u)) * sizeof(double))) == NULL) {
         return HYST_ERR_NOSPACE;
     }
     limit = lowest * (1.0 - FIT_FRACTION_GAIN);
     for (i = 1u; i < FIT_FRACTIONS; ++i) {
+        const fit_validation_t *vt;
         f = (double)i / (double)FIT_FRACTIONS;
         fit_delay_fraction(x, n, f, xf);
+        vt = validation_fraction(v, f, xf + n, &vf);
         for (k = 0u; k <= 1u && k <= best_d; ++k) { /* D + f and D - 1 + f */
-            const double e = kind_holdout(base, kind, t_degree, xf, y, n, best_d - k);
+            const double e = kind_holdout(base, kind, t_degree, xf, y, n, vt, best_d - k);
             if (isfinite(e) && e < limit) {
                 limit = e;
                 best_f = f;
@@ -722,6 +897,9 @@ hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigne
     if (best_f > 0.0) {
         out->delay_fraction = best_f;
         fit_delay_fraction(x, n, best_f, x);
+        if (v != NULL) {
+            fit_delay_fraction(v->x, v->n, best_f, v->x);
+        }
     }
     free(xf);
     return HYST_OK;
@@ -734,16 +912,17 @@ hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigne
  * cand[out->best] and x is interpolated in place. 0, or 1 when out of memory. */
 static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t_degree,
                            double creep_tau, double *x, const double *y, size_t n,
-                           fit_candidate_t *cand, fit_found_t *out)
+                           const fit_validation_t *v, fit_candidate_t *cand, fit_found_t *out)
 {
     const size_t n_tried_max = 2u * FIT_CANDIDATES_PER_DELAY;
     const fit_candidate_t *b = &cand[out->best];
     const double whole_rms = fit_option_rms(b, out->with_creep);
     const unsigned params = fit_option_parameters(b, out->with_creep);
     double lowest = whole_rms * (1.0 - FIT_FRACTION_GAIN), f, best_f = 0.0;
-    double *xf = (double *)malloc((n > 0u ? n : 1u) * sizeof(double));
+    double *xf = (double *)malloc((n + (v != NULL ? v->n : 0u) + 1u) * sizeof(double));
     fit_candidate_t *tried = (fit_candidate_t *)malloc(n_tried_max * sizeof(fit_candidate_t));
     hyst_ident_config_t base = *cfg;
+    fit_validation_t vf;
     fit_candidate_t keep;
     size_t n_tried, best, k;
     unsigned i;
@@ -761,7 +940,8 @@ static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t
     for (i = 1u; i < FIT_FRACTIONS && isfinite(whole_rms); ++i) {
         f = (double)i / (double)FIT_FRACTIONS;
         fit_delay_fraction(x, n, f, xf);
-        n_tried = fit_select(&base, kinds, 0u, t_degree, creep_tau, xf, y, n, b->delay, tried,
+        n_tried = fit_select(&base, kinds, 0u, t_degree, creep_tau, xf, y, n,
+                             validation_fraction(v, f, xf + n, &vf), b->delay, tried,
                              n_tried_max, &best, &wc);
         /* the lowest error of no more parameters than the whole-delay choice:
          * the fraction is not a way to more terms */
@@ -782,6 +962,9 @@ static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t
         out->with_creep = keep_wc;
         out->delay_fraction = best_f;
         fit_delay_fraction(x, n, best_f, x);
+        if (v != NULL) {
+            fit_delay_fraction(v->x, v->n, best_f, v->x);
+        }
     }
     free(xf);
     free(tried);
@@ -790,7 +973,8 @@ static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t
 
 hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_degree,
                          double creep_tau, int choose_delay, double *x, const double *y,
-                         size_t n, fit_candidate_t *cand, size_t max_cand, fit_found_t *out)
+                         size_t n, const fit_validation_t *v, fit_candidate_t *cand,
+                         size_t max_cand, fit_found_t *out)
 {
     hyst_ident_config_t cfg = *base;
     size_t max_delay = base->delay;
@@ -802,20 +986,20 @@ hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_
         out->max_delay = fit_max_delay(x, cfg.skip, n);
         max_delay = out->max_delay;
         if (max_delay > FIT_MAX_DELAY) { /* the cheap model's best delay, then around it */
-            out->cheap_delay = fit_cheap_delay(&cfg, x, y, n, max_delay);
+            out->cheap_delay = fit_cheap_delay(&cfg, x, y, n, v, max_delay);
             cfg.delay = out->cheap_delay > FIT_DELAY_AROUND ? out->cheap_delay - FIT_DELAY_AROUND
                                                              : 0u;
             max_delay = out->cheap_delay + FIT_DELAY_AROUND;
         }
     }
-    out->count = fit_select(&cfg, kinds, 0u, t_degree, creep_tau, x, y, n, max_delay, cand,
+    out->count = fit_select(&cfg, kinds, 0u, t_degree, creep_tau, x, y, n, v, max_delay, cand,
                             max_cand, &out->best, &out->with_creep);
     if (out->best != (size_t)-1) {
         out->integer_delay = cand[out->best].delay;
         out->integer_holdout = fit_option_rms(&cand[out->best], out->with_creep);
     }
     if (choose_delay && out->best != (size_t)-1 &&
-        search_fraction(&cfg, kinds, t_degree, creep_tau, x, y, n, cand, out) != 0) {
+        search_fraction(&cfg, kinds, t_degree, creep_tau, x, y, n, v, cand, out) != 0) {
         return HYST_ERR_NOSPACE;
     }
     return HYST_OK;

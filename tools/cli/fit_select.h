@@ -56,6 +56,20 @@
  * requires), so later inputs outside that range are predicted, not clamped. */
 #define FIT_WIDEN 1.0
 
+/* A second record of the same actuator the choice is scored on instead of
+ * the hold-out splits (validation data, `hyst fit --validate OTHER`): each
+ * candidate fitted on the whole record (after its skip), then run from rest
+ * at row skip of this one over every row after it, scored by its RMS error
+ * there. x is not const: fit_search() and fit_given_delay() interpolate it
+ * in place with the record's own drive when they choose a sub-sample delay.
+ * NULL everywhere a function takes one: the hold-out splits. */
+typedef struct fit_validation {
+    double *x;       /* its inputs */
+    const double *y; /* its outputs */
+    size_t n;        /* rows */
+    size_t skip;     /* rows before the model starts from rest */
+} fit_validation_t;
+
 /* The first finite entry of x[from .. to) (NaN if none): the record's first
  * input, a missing one (NaN) skipped. */
 double fit_first_input(const double *x, size_t from, size_t to);
@@ -124,6 +138,16 @@ void fit_creep_score_part(const double *u, const double *r, size_t len, size_t f
 void fit_terms_part(const double *u, const double *r, size_t len, size_t from, size_t to,
                     size_t score_from, double x_rest, double creep_tau, double rate_tau,
                     fit_creep_t *out);
+
+/* The creep lag (creep_tau > 0; 0: each of the series, the best on the
+ * other record) or the rate term with it or alone (rate_tau > 0, as
+ * fit_terms_part()), fitted on the whole residual r[0 .. len) of a model's
+ * run over the record fitted (u its inputs as the model took them), then
+ * run from rest over another record's run (u2, r2[0 .. len2)) and scored
+ * there (out->holdout_rms, NaN if nothing could be fitted or scored). */
+void fit_terms_other(const double *u, const double *r, size_t len, const double *u2,
+                     const double *r2, size_t len2, double x_rest, double creep_tau,
+                     double rate_tau, fit_creep_t *out);
 
 /* Parameters a rate term adds: its weight and its time constant. */
 #define FIT_RATE_PARAMETERS 2u
@@ -199,10 +223,17 @@ typedef struct fit_excitation {
  * them (the first two thirds fitted, the last third scored). */
 void fit_holdout_excitation(const double *x, size_t skip, size_t end, fit_excitation_t *e);
 
+/* The same for a validation record v (the output `delay` rows after the
+ * input): fitted_lo, fitted_hi the range of x[skip .. end), the record
+ * fitted; holdout_n v's rows scored, beyond those outside that range, span
+ * their range over it, minor v's reversals inside it. */
+void fit_validation_excitation(const double *x, size_t skip, size_t end,
+                               const fit_validation_t *v, size_t delay, fit_excitation_t *e);
+
 /* The delay in [0, max_delay] at which the cheap model (f0 of degree 3 on
- * base's skip and domain, no creep) predicts the hold-out best. */
+ * base's skip and domain, no creep) predicts the hold-out (or v) best. */
 size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
-                       size_t n, size_t max_delay);
+                       size_t n, const fit_validation_t *v, size_t max_delay);
 
 /* The range of the finite entries of x[from .. to) widened by `widen` times
  * it on each side (NaN if none is finite). */
@@ -287,10 +318,11 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
 
 /* Candidate c (kind, degree, t_degree, delay, widened set) fitted on the
  * first two thirds of x, y (base: method, domain, skip) and scored on the
- * last third; with a creep term too unless creep_tau < 0 (0: its time
- * constant chosen). */
+ * last third (the hold-out splits; v not NULL: fitted on the whole of x, y
+ * and scored on v, c->holdout_rms its RMS error there, last_third_rms NaN);
+ * with a creep term too unless creep_tau < 0 (0: its time constant chosen). */
 void fit_score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-               double creep_tau, fit_candidate_t *c);
+               const fit_validation_t *v, double creep_tau, fit_candidate_t *c);
 
 /* The drive a fraction f of a sample later, into xf: (1 - f) x[k] + f x[k - 1]
  * (xf[0] = x[0]); xf may be x (done in place). */
@@ -323,8 +355,8 @@ int fit_chosen_domain(const fit_candidate_t *c, const double *x, size_t skip, si
  * solves), then the lower RMS ((size_t)-1: none could be scored). */
 size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
                   unsigned t_degree, double creep_tau, const double *x, const double *y,
-                  size_t n, size_t max_delay, fit_candidate_t *cand, size_t max_cand,
-                  size_t *best, int *with_creep);
+                  size_t n, const fit_validation_t *v, size_t max_delay,
+                  fit_candidate_t *cand, size_t max_cand, size_t *best, int *with_creep);
 
 /* The choice among cand[0..count) (scored), as fit_select() makes it:
  * *best ((size_t)-1: none scored) and *with_creep its option; creep_tau < 0
@@ -356,23 +388,26 @@ typedef struct fit_found {
  * fraction of a sample (1/FIT_FRACTIONS steps, at the chosen delay and one
  * below; kept when more than FIT_FRACTION_GAIN better with no more
  * parameters, replacing the choice: x is then the drive interpolated, in
- * place, as the model file's delay makes sim interpolate it). HYST_OK, or
- * HYST_ERR_NOSPACE (out of memory). */
+ * place, as the model file's delay makes sim interpolate it, and v's x
+ * too). Every candidate scored on the hold-out splits, or (v not NULL) on
+ * v (fit_score()). HYST_OK, or HYST_ERR_NOSPACE (out of memory). */
 hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_degree,
                          double creep_tau, int choose_delay, double *x, const double *y,
-                         size_t n, fit_candidate_t *cand, size_t max_cand, fit_found_t *out);
+                         size_t n, const fit_validation_t *v, fit_candidate_t *cand,
+                         size_t max_cand, fit_found_t *out);
 
 /* A model of one kind and degree (base->degree; t_degree: everett's), no
  * creep term: its delay by the same hold-out, each whole delay up to
  * fit_max_delay() (a single model each), then a fraction of a sample at the
  * best and one below, kept when more than FIT_FRACTION_GAIN better (x then
- * the drive interpolated in place). *delay the whole delay chosen (0 when
- * nothing could be scored); out's max_delay, integer_delay, integer_holdout
- * and delay_fraction set, its best (size_t)-1. HYST_OK, or HYST_ERR_NOSPACE
+ * the drive interpolated in place, and v's x). *delay the whole delay
+ * chosen (0 when nothing could be scored); out's max_delay, integer_delay,
+ * integer_holdout and delay_fraction set, its best (size_t)-1. Scored on v
+ * instead of the hold-out when v is not NULL. HYST_OK, or HYST_ERR_NOSPACE
  * (out of memory). */
 hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigned t_degree,
-                              double *x, const double *y, size_t n, size_t *delay,
-                              fit_found_t *out);
+                              double *x, const double *y, size_t n, const fit_validation_t *v,
+                              size_t *delay, fit_found_t *out);
 
 /* The chosen candidate (kind, degree, delay, its creep option) scored again
  * with a rate term of each of fit_rate_taus() (rate_tau 0; > 0: that time
@@ -382,8 +417,8 @@ hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigne
  * candidate with it: out->creep holds the terms and their hold-out), else 0
  * (*out the best tried, its creep.rate_tau 0 if none could be scored). */
 int fit_rate_search(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                    const fit_candidate_t *chosen, int with_creep, double rate_tau,
-                    fit_candidate_t *out);
+                    const fit_validation_t *v, const fit_candidate_t *chosen, int with_creep,
+                    double rate_tau, fit_candidate_t *out);
 
 /* A response whose correlation with its drive is below this clearly falls
  * as the drive rises: every kind's branches rise with the input, so no
