@@ -7,7 +7,9 @@
 #  - a sub-sample delay: the same plant 20.5 samples late (a model file's
 #    fractional delay: sim runs the drive interpolated half a sample, checked
 #    here against sim of that drive at delay 20), driven by a sine: fit
-#    chooses 20.5 and writes it to the model file, also with --degree;
+#    chooses 20.5 and writes it to the model file, also with --degree; the
+#    model at the fraction chosen by the whole delays' rule (the plant's
+#    kind, the symmetric one, between models of as many parameters);
 #  - inputs beyond the range fitted: an asymmetric plant driven by triangles
 #    of growing amplitude, whose last third goes past the first two thirds'
 #    peaks: fit counts the hold-out inputs outside the range fitted, the
@@ -65,6 +67,10 @@ awk 'BEGIN { for (k = 0; k <= 32000; k++) printf "%.9g\n", 20 - 20 * cos(2 * 3.1
 "$tool" fit --creep none --save mh.hyst rech.txt > fith.txt || fail "fit: $(cat fith.txt)"
 grep -q '^# delay 20.5 samples (sub-sample' fith.txt || fail "sub-sample delay: $(grep '^# delay' fith.txt)"
 grep -qx 'delay 20.5' mh.hyst || fail "model file: $(grep delay mh.hyst)"
+# chosen at the fraction by the whole delays' rule: between as many
+# parameters (f0 of degree 3 and E of degree 3, t-degree 0, the same model in
+# two bases) the symmetric kind, whose compensator is a table
+grep -qx 'kind poly' mh.hyst || fail "the kind at 20.5: $(grep '(chosen)' fith.txt)"
 # with --degree too (no --delay): the delay chosen for that model
 "$tool" fit --degree 3 --creep none rech.txt > fitd.txt 2> fitd_err.txt || fail "fit --degree: $(cat fitd.txt)"
 grep -q '^# delay 20.5 samples (sub-sample' fitd.txt || fail "--degree 3: $(grep '^# delay' fitd.txt)"

@@ -905,69 +905,84 @@ hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigne
     return HYST_OK;
 }
 
-/* The sub-sample delay of fit_search(): the choice's model (kind, degree,
- * domain, creep option) scored again with the drive a fraction of a sample
- * later, at the chosen delay and one below; the best of no more parameters,
- * if it lowers the hold-out error by more than FIT_FRACTION_GAIN, replaces
- * cand[out->best] and x is interpolated in place. 0, or 1 when out of memory. */
+/* The sub-sample delay of fit_search(): every candidate scored again with
+ * the drive a fraction of a sample later, at the chosen delay and one
+ * below; among those of no more parameters that lower the hold-out error by
+ * more than FIT_FRACTION_GAIN, fit_choose()'s rule picks one, which replaces
+ * cand[out->best], and x is interpolated in place. 0, or 1 when out of
+ * memory. */
 static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t_degree,
                            double creep_tau, double *x, const double *y, size_t n,
                            const fit_validation_t *v, fit_candidate_t *cand, fit_found_t *out)
 {
-    const size_t n_tried_max = 2u * FIT_CANDIDATES_PER_DELAY;
+    const size_t per_fraction = 2u * FIT_CANDIDATES_PER_DELAY;
+    const size_t most = per_fraction * (FIT_FRACTIONS - 1u);
     const fit_candidate_t *b = &cand[out->best];
     const double whole_rms = fit_option_rms(b, out->with_creep);
+    const double limit = whole_rms * (1.0 - FIT_FRACTION_GAIN);
     const unsigned params = fit_option_parameters(b, out->with_creep);
-    double lowest = whole_rms * (1.0 - FIT_FRACTION_GAIN), f, best_f = 0.0;
     double *xf = (double *)malloc((n + (v != NULL ? v->n : 0u) + 1u) * sizeof(double));
-    fit_candidate_t *tried = (fit_candidate_t *)malloc(n_tried_max * sizeof(fit_candidate_t));
+    fit_candidate_t *tried = (fit_candidate_t *)malloc(most * sizeof(fit_candidate_t));
+    double *fraction = (double *)malloc(most * 3u * sizeof(double)), *rms = fraction + most;
     hyst_ident_config_t base = *cfg;
     fit_validation_t vf;
-    fit_candidate_t keep;
-    size_t n_tried, best, k;
+    size_t total = 0u, best = (size_t)-1, k;
     unsigned i;
-    int wc, keep_wc = 0;
+    int wc;
     out->integer_holdout = whole_rms;
     out->integer_delay = b->delay;
     out->delay_fraction = 0.0;
-    if (xf == NULL || tried == NULL) {
+    if (xf == NULL || tried == NULL || fraction == NULL) {
         free(xf);
         free(tried);
+        free(fraction);
         return 1;
     }
-    memset(&keep, 0, sizeof keep);
     base.delay = b->delay > 0u ? b->delay - 1u : 0u; /* D - 1 + f and D + f */
     for (i = 1u; i < FIT_FRACTIONS && isfinite(whole_rms); ++i) {
-        f = (double)i / (double)FIT_FRACTIONS;
+        const double f = (double)i / (double)FIT_FRACTIONS;
+        size_t n_tried;
         fit_delay_fraction(x, n, f, xf);
         n_tried = fit_select(&base, kinds, 0u, t_degree, creep_tau, xf, y, n,
-                             validation_fraction(v, f, xf + n, &vf), b->delay, tried,
-                             n_tried_max, &best, &wc);
-        /* the lowest error of no more parameters than the whole-delay choice:
-         * the fraction is not a way to more terms */
-        for (k = 0u; k < n_tried && best != (size_t)-1; ++k) {
-            for (wc = 0; wc <= 1; ++wc) {
-                const double e = fit_option_rms(&tried[k], wc);
-                if (isfinite(e) && e < lowest && fit_option_parameters(&tried[k], wc) <= params) {
-                    lowest = e;
-                    keep = tried[k];
-                    keep_wc = wc;
-                    best_f = f;
-                }
+                             validation_fraction(v, f, xf + n, &vf), b->delay, tried + total,
+                             per_fraction, &best, &wc);
+        for (k = total; k < total + n_tried; ++k) {
+            fraction[k] = f;
+        }
+        total += n_tried;
+    }
+    /* the options compared: those more than FIT_FRACTION_GAIN better than
+     * the whole-delay choice, of no more parameters (the fraction is not a
+     * way to more terms); the rest set aside (their errors kept in rms) */
+    for (k = 0u; k < total; ++k) {
+        rms[2u * k] = tried[k].holdout_rms;
+        rms[2u * k + 1u] = tried[k].creep.holdout_rms;
+        for (wc = 0; wc <= 1; ++wc) {
+            if (!(fit_option_rms(&tried[k], wc) < limit &&
+                  fit_option_parameters(&tried[k], wc) <= params)) {
+                *(wc ? &tried[k].creep.holdout_rms : &tried[k].holdout_rms) = NAN;
             }
         }
     }
-    if (best_f > 0.0) { /* the choice at that fraction replaces the whole-delay one */
-        cand[out->best] = keep;
-        out->with_creep = keep_wc;
-        out->delay_fraction = best_f;
-        fit_delay_fraction(x, n, best_f, x);
+    /* among them, the rule of the whole delays: the fewest parameters within
+     * FIT_PARSIMONY of the lowest error, the symmetric kind between equals */
+    fit_choose(tried, total, creep_tau, &best, &wc);
+    for (k = 0u; k < total; ++k) {
+        tried[k].holdout_rms = rms[2u * k];
+        tried[k].creep.holdout_rms = rms[2u * k + 1u];
+    }
+    if (best != (size_t)-1) { /* the choice at that fraction replaces the whole-delay one */
+        cand[out->best] = tried[best];
+        out->with_creep = wc;
+        out->delay_fraction = fraction[best];
+        fit_delay_fraction(x, n, fraction[best], x);
         if (v != NULL) {
-            fit_delay_fraction(v->x, v->n, best_f, v->x);
+            fit_delay_fraction(v->x, v->n, fraction[best], v->x);
         }
     }
     free(xf);
     free(tried);
+    free(fraction);
     return 0;
 }
 

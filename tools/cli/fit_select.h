@@ -386,8 +386,8 @@ typedef struct fit_found {
  * (0..fit_max_delay(); beyond FIT_MAX_DELAY, f0 of degree 3 at each, then
  * every candidate at FIT_DELAY_AROUND each side of its best), then at a
  * fraction of a sample (1/FIT_FRACTIONS steps, at the chosen delay and one
- * below; kept when more than FIT_FRACTION_GAIN better with no more
- * parameters, replacing the choice: x is then the drive interpolated, in
+ * below; among the options more than FIT_FRACTION_GAIN better with no more
+ * parameters, the one fit_choose()'s rule picks replaces the choice: x is then the drive interpolated, in
  * place, as the model file's delay makes sim interpolate it, and v's x
  * too). Every candidate scored on the hold-out splits, or (v not NULL) on
  * v (fit_score()). HYST_OK, or HYST_ERR_NOSPACE (out of memory). */
