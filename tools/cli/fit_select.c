@@ -214,6 +214,34 @@ double fit_model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const dou
     return fit_model_run_creep(f0, curve, x, y, n, skip, delay, from, before_rms, max_abs, NULL);
 }
 
+/* The model's run from rest at skip over x[skip .. n - delay) against
+ * y[k + delay]: u[k - skip] the input as the model took
+ * it (clamped; the last one for NaN), r[k - skip] the output minus the
+ * model's (NaN where missing). 0, or 1 when out of memory. */
+static int model_residual(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
+                          const double *y, size_t n, size_t skip, size_t delay, double *u,
+                          double *r)
+{
+    hyst_tcm_t S;
+    const size_t cap = n > delay + skip ? (n - delay - skip) / 2u + 2u : 2u;
+    double *mem = (double *)malloc(4u * cap * sizeof(double));
+    hyst_status_t st;
+    size_t k;
+    if (mem == NULL) {
+        return 1;
+    }
+    st = f0 != NULL ? hyst_f64_init(&S, f0, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap)
+                    : hyst_f64_init_curve(&S, curve, mem, mem + cap, mem + 2u * cap,
+                                          mem + 3u * cap, cap);
+    for (k = skip; st == HYST_OK && k + delay < n; ++k) {
+        const double ym = hyst_f64_step(&S, x[k]);
+        u[k - skip] = hyst_f64_input(&S);
+        r[k - skip] = isfinite(x[k]) && isfinite(y[k + delay]) ? y[k + delay] - ym : NAN;
+    }
+    free(mem);
+    return st != HYST_OK;
+}
+
 /* The model run from rest at skip over x[skip .. n - delay) against
  * y[k + delay]: the RMS error over [from, to) from score_from on (returned)
  * and before `from` (*before_rms); creep (may be NULL) fitted to its
@@ -224,12 +252,9 @@ static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const 
                         size_t to, int part, size_t score_from, double *before_rms,
                         double *max_abs, fit_creep_t *creep)
 {
-    hyst_tcm_t S;
-    const size_t cap = n > delay + skip ? (n - delay - skip) / 2u + 2u : 2u;
     const size_t len = n > delay + skip ? n - delay - skip : 0u;
-    double *mem, *u = NULL, *r = NULL, ss = 0.0, ss_before = 0.0, worst = 0.0;
+    double *u, *r, ss = 0.0, ss_before = 0.0, worst = 0.0;
     size_t k, used = 0u, before = 0u;
-    hyst_status_t st;
     const double tau = creep != NULL ? creep->tau : 0.0;
     const double rate_tau = creep != NULL ? creep->rate_tau : 0.0;
     if (before_rms != NULL) {
@@ -242,33 +267,22 @@ static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const 
         memset(creep, 0, sizeof *creep);
         creep->holdout_rms = NAN;
         creep->fit_rms = NAN;
-        /* the model's inputs and residuals, for the creep fitted to them */
-        if (len == 0u || (u = (double *)malloc(2u * len * sizeof(double))) == NULL) {
+        if (len == 0u) {
             return NAN;
         }
-        r = u + len;
     }
-    if ((mem = (double *)malloc(4u * cap * sizeof(double))) == NULL) {
-        free(u);
+    /* the model's inputs and residuals (for the creep fitted to them) */
+    if ((u = (double *)malloc((2u * len + 1u) * sizeof(double))) == NULL) {
         return NAN;
     }
-    st = f0 != NULL ? hyst_f64_init(&S, f0, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap)
-                    : hyst_f64_init_curve(&S, curve, mem, mem + cap, mem + 2u * cap,
-                                          mem + 3u * cap, cap);
-    if (st != HYST_OK) {
-        free(mem);
+    r = u + len;
+    if (model_residual(f0, curve, x, y, n, skip, delay, u, r) != 0) {
         free(u);
         return NAN;
     }
     for (k = skip; k + delay < n; ++k) {
-        const double ym = hyst_f64_step(&S, x[k]);
-        const int ok = isfinite(x[k]) && isfinite(y[k + delay]);
-        if (u != NULL) { /* the input as the model took it (clamped; the last one for NaN) */
-            u[k - skip] = hyst_f64_input(&S);
-            r[k - skip] = ok ? y[k + delay] - ym : NAN;
-        }
-        if (ok) {
-            const double e = ym - y[k + delay];
+        if (!isnan(r[k - skip])) {
+            const double e = -r[k - skip];
             if (k >= from && k < to) {
                 if (k >= score_from) {
                     ss += e * e;
@@ -281,8 +295,7 @@ static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const 
             worst = fabs(e) > worst ? fabs(e) : worst;
         }
     }
-    free(mem);
-    if (u != NULL) {
+    if (creep != NULL) {
         const double x_rest = f0 != NULL ? (double)f0->lo : curve->lo.f64;
         const size_t at = from > skip ? from - skip : 0u;
         if (rate_tau > 0) { /* with a rate term: tau the creep lag's, or none */
@@ -295,8 +308,8 @@ static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const 
         } else {
             fit_creep_score(u, r, len, at, x_rest, tau, creep);
         }
-        free(u);
     }
+    free(u);
     if (before_rms != NULL && before > 0u) {
         *before_rms = sqrt(ss_before / (double)before);
     }
@@ -433,34 +446,6 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
                   cfg->skip, cfg->delay, from, to, split != 0,
                   split != 0 && settle > from ? settle : from, &before, NULL, creep);
     return e;
-}
-
-/* The model's run from rest at skip over x[skip .. n - delay) against
- * y[k + delay] (n > skip + delay): u[k - skip] the input as the model took
- * it (clamped; the last one for NaN), r[k - skip] the output minus the
- * model's (NaN where missing). 0, or 1 when out of memory. */
-static int model_residual(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
-                          const double *y, size_t n, size_t skip, size_t delay, double *u,
-                          double *r)
-{
-    hyst_tcm_t S;
-    const size_t cap = (n - delay - skip) / 2u + 2u;
-    double *mem = (double *)malloc(4u * cap * sizeof(double));
-    hyst_status_t st;
-    size_t k;
-    if (mem == NULL) {
-        return 1;
-    }
-    st = f0 != NULL ? hyst_f64_init(&S, f0, mem, mem + cap, mem + 2u * cap, mem + 3u * cap, cap)
-                    : hyst_f64_init_curve(&S, curve, mem, mem + cap, mem + 2u * cap,
-                                          mem + 3u * cap, cap);
-    for (k = skip; st == HYST_OK && k + delay < n; ++k) {
-        const double ym = hyst_f64_step(&S, x[k]);
-        u[k - skip] = hyst_f64_input(&S);
-        r[k - skip] = isfinite(x[k]) && isfinite(y[k + delay]) ? y[k + delay] - ym : NAN;
-    }
-    free(mem);
-    return st != HYST_OK;
 }
 
 /* A candidate scored on the validation record v: fitted on the whole of x,
@@ -711,8 +696,8 @@ unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
 /* Adds candidate (kind, degree, t_degree, delay), scored, at cand[*count]
  * unless cand is full; *best the lowest hold-out RMS so far. */
 static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                const fit_validation_t *v, double creep_tau, int kind, unsigned degree, unsigned t_degree, size_t delay,
-                int widened, fit_candidate_t *cand, size_t max_cand, size_t *count)
+                const fit_validation_t *v, double creep_tau, int kind, unsigned degree,
+                unsigned t_degree, size_t delay, int widened, fit_candidate_t *cand, size_t max_cand, size_t *count)
 {
     fit_candidate_t *c = &cand[*count];
     if (*count >= max_cand) {
