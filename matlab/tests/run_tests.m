@@ -26,7 +26,7 @@ function failed = run_tests(root, ref, cli)
            @t_grid_chosen_as_cli, @t_grid_fit_undetermined, @t_fit_missing_first_input, ...
            @t_fit_refuses_record, @t_save_writes_regular_files_only, ...
            @t_header_refuses_what_init_refuses, @t_fit_checks_record_as_cli, ...
-           @t_fit_warns_degree_on_minor_loops};
+           @t_fit_recovers_a_simulated_plant, @t_fit_warns_degree_on_minor_loops};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -1992,6 +1992,26 @@ function x = loops_drive(minor)
     later = inner;
   end
   x = [up; down; up; down; up; down; later; later; later];
+end
+
+function t_fit_recovers_a_simulated_plant(~)
+  % a record the model computed, without noise: errors below the record's
+  % resolution count as it, so the plant's degree 3 and delay 3 win, with
+  % no creep term, not the candidate whose rounding is 1 % lower
+  f0 = paper_f0();
+  x = repmat([0:0.25:39.75, 40:-0.25:0.25]', 9, 1);
+  y = hyst_sim(f0, x);
+  x = x(4:end);
+  y = y(1:end - 3);
+  s = warning('off', 'hyst:excitation');
+  f = hyst_fit(x, y, 'degree', [], 'delay', []);
+  warning(s);
+  kind = 'poly';
+  if isfield(f, 'kind')
+    kind = f.kind;
+  end
+  check(strcmp(kind, 'poly') && f.degree == 3 && f.delay == 3 && ~isfield(f, 'creep_tau'), ...
+        'kind %s degree %d delay %g', kind, f.degree, f.delay);
 end
 
 function t_fit_warns_degree_on_minor_loops(ctx)

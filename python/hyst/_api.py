@@ -461,10 +461,13 @@ class Fit:
                 f"rms={self.rms:.6g}, max_abs={self.max_abs:.6g}, method={self.method!r}{creep})")
 
 
-#: Delays tried by fit() when none is given, and the parsimony margin of the
-#: choice: the same as ``hyst fit`` without --degree (docs/cli.md).
+#: Delays tried by fit() when none is given, the parsimony margin of the
+#: choice, and the resolution below which a hold-out error counts as that
+#: fraction of the output's magnitude (a simulated record fitted to its own
+#: rounding): the same as ``hyst fit`` without --degree (docs/cli.md).
 MAX_DELAY = _hyst.FIT_MAX_DELAY
 PARSIMONY = _hyst.FIT_PARSIMONY
+RESOLUTION = _hyst.FIT_RESOLUTION
 #: Parameters a creep term adds in the choice: its weight and its time
 #: constant (hyst fit's FIT_CREEP_PARAMETERS).
 CREEP_PARAMS = _hyst.FIT_CREEP_PARAMETERS

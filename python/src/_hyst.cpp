@@ -1717,6 +1717,7 @@ NB_MODULE(_hyst, m)
     m.attr("FIT_GRID") = static_cast<int>(FIT_GRID);
     m.attr("FIT_MAX_DELAY") = static_cast<unsigned long>(FIT_MAX_DELAY);
     m.attr("FIT_PARSIMONY") = FIT_PARSIMONY;
+    m.attr("FIT_RESOLUTION") = FIT_RESOLUTION;
     m.attr("FIT_CREEP_PARAMETERS") = static_cast<unsigned>(FIT_CREEP_PARAMETERS);
     m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a = -1);

@@ -157,3 +157,25 @@ def test_fit_refuses_a_validation_record_as_the_record():
                               (x2, "must be a record")):
         with pytest.raises(ValueError, match=message):
             hyst.fit(x, y, validate=validate)
+
+
+def test_a_simulated_plant_is_recovered_not_its_rounding():
+    """A record a model computed, without noise: every candidate of the
+    plant's class predicts it to its rounding. Those errors count as the
+    record's resolution (RESOLUTION of the output's magnitude), so the
+    plant's own degree and delay win, without a creep term, rather than
+    whichever candidate's rounding happens to be 1 % lower."""
+    from hyst._api import RESOLUTION
+    coeffs = [-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1]  # Eq. 20: degree 3 on [0, 40]
+    x = np.tile(np.concatenate([np.arange(0.0, 40.0, 0.25), np.arange(40.0, 0.0, -0.25)]), 9)
+    y = hyst.Model(coeffs, 0.0, 40.0).process(x)
+    x, y = x[3:], y[:-3]  # a sensor 3 samples late
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", hyst.FitWarning)  # major loops: no minor loop held out
+        f = hyst.fit(x, y)
+    assert (f.kind, f.degree, f.delay, list(f.creep_tau)) == ("poly", 3, 3, [])
+    resolution = RESOLUTION * max(np.ptp(y[3:]), np.abs(y[3:]).max())
+    at3 = [c for c in f.candidates if c["delay"] == 3 and np.isfinite(c["holdout_rms"])]
+    exact = {(c["kind"], c["degree"]) for c in at3 if c["holdout_rms"] == resolution}
+    assert exact >= {("poly", 3), ("poly", 9)}
+    assert all(c["holdout_rms"] >= resolution for c in at3)

@@ -55,4 +55,18 @@ grep -q 'follows its input$' f0_sel.h && grep -q '^ \* 3 samples later' f0_sel.h
 for c in $(sed -n 's/^coeffs //p' m.hyst); do grep -q "HYST_REAL_C($c)" f0_sel.h || fail "header: coefficient $c"; done
 "$tool" header --model m.hyst '9x' 2> err.txt && fail "header: a bad NAME accepted"
 grep -q "NAME '9x' is not a C identifier" err.txt || fail "header: message $(cat err.txt)"
+# The same record without noise (a simulated plant, fitted to its own nine
+# printed digits): every candidate of degree 3 and more is exact there, and
+# the plant's own degree, delay and no creep term must win, not the one whose
+# rounding happens to be 1 % lower.
+awk 'NR == FNR { x[NR] = $1; n = NR; next } { y[FNR] = $1 }
+     END { for (k = 4; k <= n; k++) printf "%s %.9g\n", x[k], y[k - 3] }' x.txt y.txt > exact.txt
+"$tool" fit exact.txt > fit_exact.txt || fail "fit of an exact record: $(cat fit_exact.txt)"
+grep -q '^# chosen by hold-out: degree 3, delay 3 (kind poly, 4 parameters' fit_exact.txt ||
+    fail "exact record: $(grep chosen fit_exact.txt)"
+grep -q '^# creep: none ' fit_exact.txt || fail "exact record: $(grep creep: fit_exact.txt)"
+grep -q '^# delay 3 samples$' fit_exact.txt || fail "exact record: $(grep '^# delay' fit_exact.txt)"
+grep -q '^# hold-out rms [0-9.e+-]* is the record.s resolution' fit_exact.txt ||
+    fail "exact record: no resolution line"
+grep -q 'resolution' fit.txt && fail "noisy record: a resolution line"
 echo "select: degree 3, delay 3 recovered; $(grep -c '^# candidate' fit.txt) candidates"

@@ -153,6 +153,7 @@ typedef struct fit_opts {
     double rate_without;  /* the choice's hold-out RMS without a rate term */
     double holdout;       /* the model's hold-out RMS without it (NaN: not scored) */
     double last_third;    /* the same on the last third alone (what PI-10 is compared on) */
+    double resolution;    /* hold-out errors below it count as it (fit_resolution()) */
     char tcm_only[64];    /* an option given that --kind pi does not take, or "" */
     fit_excitation_t excitation; /* what the hold-out tested the choice on */
     size_t runner_up;     /* the best option of another model than the chosen ((size_t)-1: none) */
@@ -456,6 +457,8 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
     o->cfg.degree = candidates[best_candidate].degree;
     o->t_degree = candidates[best_candidate].t_degree;
     o->cfg.delay = candidates[best_candidate].delay;
+    o->resolution = o->v != NULL ? fit_resolution(o->v->y, o->v->skip + o->cfg.delay, o->v->n)
+                                 : fit_resolution(t->col[1], o->cfg.skip + o->cfg.delay, t->n);
     { /* a widened one: the domain of the model fitted on it all */
         double lo, hi;
         if (fit_chosen_domain(&candidates[best_candidate], t->col[0], o->cfg.skip, t->n, &lo,
@@ -725,6 +728,12 @@ static void print_candidates(const fit_opts_t *o)
                          name, (unsigned long)r->delay, o->runner_up_creep ? " with creep" : "",
                          fit_option_parameters(r, o->runner_up_creep), score,
                          fit_option_rms(r, o->runner_up_creep), chosen);
+        }
+        if (chosen <= o->resolution) {
+            (void)printf("# %s %.6g is the record's resolution (a millionth of its output's "
+                         "magnitude): errors below it count as it, the candidates there fit "
+                         "the record to its rounding alike and the fewest parameters win\n",
+                         score, o->resolution);
         }
         if (isfinite(o->pi10)) { /* PI's fit takes no outputs left out: the last third */
             const double third = fit_option_last_third(&candidates[best_candidate], o->with_creep);

@@ -47,6 +47,23 @@ double fit_first_input(const double *x, size_t from, size_t to)
     return NAN;
 }
 
+double fit_resolution(const double *y, size_t from, size_t to)
+{
+    double lo, hi, magnitude;
+    fit_input_range(y, from, to, 0.0, &lo, &hi);
+    magnitude = hi - lo;
+    magnitude = fabs(lo) > magnitude ? fabs(lo) : magnitude;
+    magnitude = fabs(hi) > magnitude ? fabs(hi) : magnitude;
+    return isfinite(magnitude) ? FIT_RESOLUTION * magnitude : 0.0;
+}
+
+/* A hold-out error as the choice compares it: e, or the resolution where e
+ * is below it (NaN stays NaN). */
+static double resolved(double e, double resolution)
+{
+    return e < resolution ? resolution : e;
+}
+
 void fit_widened_domain(double lo, double hi, double first, double *wide_lo, double *wide_hi)
 {
     *wide_lo = first <= lo + 0.01 * (hi - lo) ? lo : lo - FIT_WIDEN * (hi - lo);
@@ -535,15 +552,19 @@ static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degre
     int split, splits = 1;
     const size_t settle =
         n > cfg->skip + cfg->delay ? fit_settled(x, cfg->skip, n - cfg->delay) : cfg->skip;
+    /* of the outputs scored */
+    const double resolution = v != NULL ? fit_resolution(v->y, v->skip + cfg->delay, v->n)
+                                        : fit_resolution(y, cfg->skip + cfg->delay, n);
     if (v != NULL) { /* instead of the splits: no third of the record held out */
         if (last_third != NULL) {
             *last_third = NAN;
         }
         e = validated(cfg, kind, t_degree, widened, x, y, n, v, status, poly, ev, creep);
         if (creep != NULL) {
+            creep->holdout_rms = resolved(creep->holdout_rms, resolution);
             creep->last_third_rms = NAN;
         }
-        return e;
+        return resolved(e, resolution);
     }
     e = holdout_split(cfg, kind, t_degree, widened, x, y, n, 0, settle, status, poly, ev, creep);
     ss = e * e;
@@ -575,9 +596,13 @@ static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degre
         }
     }
     if (creep != NULL) {
-        creep->holdout_rms = sqrt(ss_creep / (double)splits);
+        creep->holdout_rms = resolved(sqrt(ss_creep / (double)splits), resolution);
+        creep->last_third_rms = resolved(creep->last_third_rms, resolution);
     }
-    return sqrt(ss / (double)splits);
+    if (last_third != NULL) {
+        *last_third = resolved(*last_third, resolution);
+    }
+    return resolved(sqrt(ss / (double)splits), resolution);
 }
 
 double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const double *y,

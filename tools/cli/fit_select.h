@@ -50,6 +50,17 @@
  * as good: the fewest parameters among them win. */
 #define FIT_PARSIMONY 0.01
 
+/* Hold-out errors below this fraction of the output's magnitude (the larger
+ * of its range and its largest absolute value) are all as good as exact and
+ * count as that resolution: a record computed by a model is fitted down to
+ * its own rounding (float: 6e-8 of the magnitude; nine printed digits:
+ * 5e-10), where FIT_PARSIMONY would compare digits of rounding and keep
+ * terms the plant lacks. No sensor resolves a millionth. */
+#define FIT_RESOLUTION 1e-6
+
+/* FIT_RESOLUTION of the magnitude of the finite y[from .. to) (0 if none). */
+double fit_resolution(const double *y, size_t from, size_t to);
+
 /* The asymmetric kind is also fitted on a domain wider than the inputs' range
  * by this fraction of the range on each side: E continued beyond the inputs
  * it was identified on (monotone on the whole wider triangle, as the library
