@@ -463,7 +463,7 @@ class Fit:
 
 #: Delays tried by fit() when none is given, the parsimony margin of the
 #: choice, and the resolution below which a hold-out error counts as that
-#: fraction of the output's magnitude (a simulated record fitted to its own
+#: fraction of the output's range (a simulated record fitted to its own
 #: rounding): the same as ``hyst fit`` without --degree (docs/cli.md).
 MAX_DELAY = _hyst.FIT_MAX_DELAY
 PARSIMONY = _hyst.FIT_PARSIMONY

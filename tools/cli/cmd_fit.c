@@ -731,7 +731,7 @@ static void print_candidates(const fit_opts_t *o)
         }
         if (chosen <= o->resolution) {
             (void)printf("# %s %.6g is the record's resolution (a millionth of its output's "
-                         "magnitude): errors below it count as it, the candidates there fit "
+                         "range): errors below it count as it, the candidates there fit "
                          "the record to its rounding alike and the fewest parameters win\n",
                          score, o->resolution);
         }

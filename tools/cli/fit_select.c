@@ -49,12 +49,9 @@ double fit_first_input(const double *x, size_t from, size_t to)
 
 double fit_resolution(const double *y, size_t from, size_t to)
 {
-    double lo, hi, magnitude;
+    double lo, hi;
     fit_input_range(y, from, to, 0.0, &lo, &hi);
-    magnitude = hi - lo;
-    magnitude = fabs(lo) > magnitude ? fabs(lo) : magnitude;
-    magnitude = fabs(hi) > magnitude ? fabs(hi) : magnitude;
-    return isfinite(magnitude) ? FIT_RESOLUTION * magnitude : 0.0;
+    return isfinite(hi - lo) ? FIT_RESOLUTION * (hi - lo) : 0.0;
 }
 
 /* A hold-out error as the choice compares it: e, or the resolution where e

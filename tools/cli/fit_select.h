@@ -50,15 +50,15 @@
  * as good: the fewest parameters among them win. */
 #define FIT_PARSIMONY 0.01
 
-/* Hold-out errors below this fraction of the output's magnitude (the larger
- * of its range and its largest absolute value) are all as good as exact and
- * count as that resolution: a record computed by a model is fitted down to
- * its own rounding (float: 6e-8 of the magnitude; nine printed digits:
- * 5e-10), where FIT_PARSIMONY would compare digits of rounding and keep
- * terms the plant lacks. No sensor resolves a millionth. */
+/* Hold-out errors below this fraction of the output's range are all as good
+ * as exact and count as that resolution: a record computed by a model is
+ * fitted down to its own rounding (float: 4e-8 of the largest output;
+ * nine printed digits: 3e-10), where FIT_PARSIMONY would compare digits of
+ * rounding and keep terms the plant lacks. No sensor resolves a millionth
+ * of its range. */
 #define FIT_RESOLUTION 1e-6
 
-/* FIT_RESOLUTION of the magnitude of the finite y[from .. to) (0 if none). */
+/* FIT_RESOLUTION of the range of the finite y[from .. to) (0 if none). */
 double fit_resolution(const double *y, size_t from, size_t to);
 
 /* The asymmetric kind is also fitted on a domain wider than the inputs' range
