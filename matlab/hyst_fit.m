@@ -7,9 +7,9 @@ function f = hyst_fit(x, y, varargin)
 %   'degree', N) fits f0 of degree N to a full-range periodic excitation by
 %   hyst_ident_fit() (include/hyst/ident.h, docs/identification.md), its
 %   delay chosen as 'hyst fit --degree N' chooses it unless 'delay' is
-%   given; on a drive with minor loops such an f0 is biased (the estimator
-%   takes every sample for a major branch's): warning hyst:minor_loops, as
-%   hyst fit warns. F is a model for HYST_SIM, HYST_INV and
+%   given; on a drive with minor loops such an f0, or one chosen among f0
+%   alone ('kind', 'poly'), is biased (the estimator takes every sample
+%   for a major branch's): warning hyst:minor_loops, as hyst fit warns. F is a model for HYST_SIM, HYST_INV and
 %   HYST_MODEL_SAVE, with the fields
 %     coeffs      f0's coefficients, highest power first (as polyfit)
 %     lo, hi      the domain
@@ -146,8 +146,10 @@ function f = hyst_fit(x, y, varargin)
   x = double(x(:));
   y = double(y(:));
   rec = check_record(x, y, opts);
-  % f0 of a given degree on a drive with minor loops: warned of below
-  minor_loops = ~isempty(opts.degree) && strcmp(opts.kind, 'poly') && rec.minor > 0;
+  % f0 of a given degree, or chosen among f0 alone, on a drive with minor
+  % loops: warned of below
+  degree_given = ~isempty(opts.degree);
+  minor_loops = strcmp(opts.kind, 'poly') && (degree_given || kinds == 1) && rec.minor > 0;
   vx = zeros(0, 1);  % the validation record (empty: the hold-out)
   vy = zeros(0, 1);
   if ~isempty(opts.validate)
@@ -210,12 +212,19 @@ function f = hyst_fit(x, y, varargin)
     f.identified = [max(min(used), f.lo), min(max(used), f.hi)];
   end
   if minor_loops
+    if ~degree_given
+      what = 'of every degree';
+      leave = 'out ''kind'' to let hyst_fit compare E too';
+    else
+      what = sprintf('of degree %d', opts.degree);
+      leave = '''degree'' [] to let hyst_fit choose';
+    end
     warning('hyst:minor_loops', ['hyst_fit: x has %d reversal%s inside its range (minor ' ...
-                                 'loops): f0 of degree %d is biased, its fit taking every ' ...
-                                 'rising sample for the major ascending branch and every ' ...
-                                 'falling one for the descending; leave ''degree'' [] to let ' ...
-                                 'hyst_fit choose, or fit ''kind'', ''everett'''], ...
-            rec.minor, repmat('s', 1, rec.minor ~= 1), opts.degree);
+                                 'loops): f0 %s is biased, its fit taking every rising ' ...
+                                 'sample for the major ascending branch and every falling ' ...
+                                 'one for the descending; leave %s, or fit ''kind'', ' ...
+                                 '''everett'''], rec.minor, repmat('s', 1, rec.minor ~= 1), ...
+            what, leave);
   end
   if strcmp(opts.kind, 'poly') && ~f.increasing
     warning('hyst:not_increasing', ...

@@ -2045,5 +2045,25 @@ function t_fit_warns_degree_on_minor_loops(ctx)
     hyst_fit(x, y, 'kind', 'everett', 'degree', 2, 'delay', 0, 'creep', 'none');
     [msg, id] = lastwarn();
     check(~strcmp(id, 'hyst:minor_loops'), 'kind everett warned: %s', msg);
+    % the degree chosen among f0 alone ('kind', 'poly'; hyst fit --kind tcm)
+    [rc, out] = system(sprintf('"%s" fit --kind tcm --creep none "%s" 2>&1', ctx.cli, file));
+    said = regexp(out, ['the drive has (\d+) reversals inside its range \(minor loops\): f0 ' ...
+                        'of every degree is biased'], 'tokens', 'once');
+    lastwarn('');
+    s = warning('off', 'hyst:excitation');
+    hyst_fit(x, y, 'kind', 'poly', 'creep', 'none');
+    warning(s);
+    [msg, id] = lastwarn();
+    warned = strcmp(id, 'hyst:minor_loops');
+    check(rc == 0 && warned == ~isempty(said) && warned == minor && (~minor || ...
+          ~isempty(regexp(msg, ['^hyst_fit: x has 9 reversals inside its range \(minor loops\): ' ...
+                                'f0 of every degree is biased.*leave out ''kind'' to let ' ...
+                                'hyst_fit compare E too'], 'once'))), ...
+          'kind poly, minor loops %d: hyst_fit warned %s "%s", hyst fit (%d) "%s"', minor, id, ...
+          msg, rc, out);
+    lastwarn('');
+    hyst_fit(x, y, 'creep', 'none');
+    [msg, id] = lastwarn();
+    check(~strcmp(id, 'hyst:minor_loops'), 'the choice among every kind warned: %s', msg);
   end
 end

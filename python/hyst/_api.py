@@ -632,9 +632,11 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     fit_rms, status, chosen; with a creep term scored also creep_tau (0:
     none), creep_weight, creep_holdout_rms, with_creep: chosen with it).
     With a degree given, ``kind=None`` means poly and ``t_degree=None`` all
-    of E's terms (degree - 1); f0 of a given degree on a drive with minor
-    loops is biased (its estimator takes every sample for a major branch's):
-    a :class:`FitWarning` says so, as ``hyst fit --degree`` warns.
+    of E's terms (degree - 1); f0 of a given degree, or chosen among f0
+    alone (``kind="poly"``), on a drive with minor loops is biased (its
+    estimator takes every sample for a major branch's): a
+    :class:`FitWarning` says so, as ``hyst fit --degree`` and ``--kind tcm``
+    warn.
 
     ``creep`` chooses a creep term as ``hyst fit --creep`` does
     (docs/creep.md): ``"auto"`` (the default) scores each candidate alone
@@ -687,7 +689,9 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     if delay is not None:
         delay = _samples("delay", delay)
     record = _check_record(x, y, skip, delay or 0)
-    minor_loops = degree is not None and (kind or "poly") == "poly" and record["minor"] > 0
+    # f0 of a given degree, or chosen among f0 alone: warned of below (its degree, or None)
+    minor_loops = (kind == "poly" or (kind is None and degree is not None)) and record["minor"] > 0
+    degree_given = degree
     if validate is not None:  # refused as the record is (hyst fit --validate)
         if not isinstance(validate, (tuple, list)) or len(validate) != 2:
             raise ValueError("validate must be a record (x2, y2)")
@@ -783,7 +787,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     elif cands is not None:
         f.excitation = _excitation(x, skip, len(x) - int(delay))
     if minor_loops:
-        _warn_minor_loops(record["minor"], int(degree))
+        _warn_minor_loops(record["minor"], None if degree_given is None else int(degree_given))
     if validate is not None and chosen is not None:
         f.validation_rms = (search["rate_holdout_rms"] if with_rate
                             else chosen["creep_holdout_rms"] if with_creep
@@ -792,14 +796,16 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
 
 
 def _warn_minor_loops(minor, degree):
-    """hyst fit's warning of f0 of a given degree fitted on a drive with
-    minor loops (FitWarning): biased, the estimator taking every sample for
-    a major branch's."""
+    """hyst fit's warning of f0 of a given degree (None: of the degree
+    chosen among f0 alone, kind="poly") fitted on a drive with minor loops
+    (FitWarning): biased, the estimator taking every sample for a major
+    branch's."""
+    what, leave = ((f"of degree {degree}", "degree=None to let fit choose") if degree is not None
+                   else ("of every degree", "kind=None to let fit compare E too"))
     warnings.warn(f"x has {minor} reversal{'' if minor == 1 else 's'} inside its range (minor "
-                  f"loops): f0 of degree {degree} is biased, its fit taking every rising sample "
-                  "for the major ascending branch and every falling one for the descending; "
-                  "leave degree=None to let fit choose, or fit kind='everett'", FitWarning,
-                  stacklevel=3)
+                  f"loops): f0 {what} is biased, its fit taking every rising sample for the "
+                  f"major ascending branch and every falling one for the descending; leave "
+                  f"{leave}, or fit kind='everett'", FitWarning, stacklevel=3)
 
 
 def _validation_excitation(x, skip, end, validate, delay):

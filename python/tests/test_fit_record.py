@@ -114,3 +114,27 @@ def test_a_degree_on_minor_loops_is_warned_of_as_by_the_tool(c_build, tmp_path, 
     # another kind, or a poly fit on major loops only: no such warning
     assert not any("minor loops): f0" in m for m in py_fit(x, y, 2, kind="everett", delay=0,
                                                             creep="none")[1])
+
+
+@pytest.mark.parametrize("minor_loops", [False, True])
+def test_f0_chosen_alone_on_minor_loops_is_warned_of_as_by_the_tool(c_build, tmp_path,
+                                                                    minor_loops):
+    """kind="poly" without a degree chooses among f0 alone, each as biased
+    on minor loops: warned of as ``hyst fit --kind tcm`` warns; the choice
+    among every kind is not."""
+    x = drive(minor_loops)
+    y = hyst.Model([0.05, 1.0, 0.0], 0, 10).process(x)
+    cli = cli_fit(c_build, tmp_path, x, y, "--kind", "tcm", "--creep", "none")
+    said = re.search(r"^hyst fit: warning: \S*rec\.txt: the drive has (\d+) reversals inside its "
+                     r"range \(minor loops\): f0 of every degree is biased.*leave out --kind tcm "
+                     r"to let fit compare E too, or fit --kind everett$", cli.stderr, re.M)
+    refusal, warned = py_fit(x, y, kind="poly", creep="none")
+    assert refusal is None and cli.returncode == 0
+    ours = [re.match(r"x has (\d+) reversals inside its range \(minor loops\): f0 of every "
+                     r"degree is biased.*leave kind=None to let fit compare E too, or fit "
+                     r"kind='everett'$", m) for m in warned]
+    ours = [m for m in ours if m]
+    assert (said is not None) == (len(ours) == 1) == minor_loops, (cli.stderr, warned)
+    if minor_loops:
+        assert int(said.group(1)) == int(ours[0].group(1)) == 9
+    assert not any("minor loops): f0" in m for m in py_fit(x, y, creep="none")[1])

@@ -45,8 +45,9 @@ static const char help[] =
     "                 last thirds and predicts the middle one (the RMS of both);\n"
     "                 of the candidates within 1 % of the lowest RMS prediction\n"
     "                 error, the one with the fewest parameters wins (every\n"
-    "                 candidate is printed as a '# candidate' line). With N, f0 (kind\n"
-    "                 tcm) on a drive with minor loops is biased: a warning says so\n"
+    "                 candidate is printed as a '# candidate' line). With N or\n"
+    "                 --kind tcm, f0 on a drive with minor loops is biased: a\n"
+    "                 warning says so\n"
     "  --t-degree K   --kind everett: fit only E's terms w^i t^j with j <= K\n"
     "                 (0..N-1; the others 0). Default: with --degree, N-1 (all\n"
     "                 terms); without, every K is a candidate. Major loops alone\n"
@@ -536,17 +537,22 @@ static void warn_excitation(const fit_opts_t *o, const char *name)
     }
 }
 
-/* On stderr: f0 of a given degree fitted on a drive with minor loops
- * (reversals inside its range), whose samples lie on neither major branch
- * although the estimator takes each for one of them. */
+/* On stderr: f0 of a given degree, or of the degree chosen among f0 alone
+ * (--kind tcm), fitted on a drive with minor loops (reversals inside its
+ * range), whose samples lie on neither major branch although the estimator
+ * takes each for one of them. */
 static void warn_minor_loops(const fit_opts_t *o, const char *name, size_t minor)
 {
+    char what[32];
+    (void)snprintf(what, sizeof what, o->have_degree ? "of --degree %u" : "of every degree",
+                   o->cfg.degree);
     (void)fprintf(stderr, "hyst fit: warning: %s: the drive has %lu reversal%s inside its "
-                          "range (minor loops): f0 of --degree %u is biased, its fit taking "
-                          "every rising sample for the major ascending branch and every falling "
-                          "one for the descending; leave out --degree to let fit choose, or fit "
-                          "--kind everett\n",
-                  name, (unsigned long)minor, minor == 1u ? "" : "s", o->cfg.degree);
+                          "range (minor loops): f0 %s is biased, its fit taking every rising "
+                          "sample for the major ascending branch and every falling one for the "
+                          "descending; leave out %s, or fit --kind everett\n",
+                  name, (unsigned long)minor, minor == 1u ? "" : "s", what,
+                  o->have_degree ? "--degree to let fit choose"
+                                 : "--kind tcm to let fit compare E too");
 }
 
 /* The same model (kind, degree, t-degree, domain, creep option) at any delay. */
@@ -1435,7 +1441,7 @@ int cmd_fit(int argc, char **argv)
     if (!o.have_degree) {
         warn_excitation(&o, name);
     }
-    if (o.have_degree && o.final_kind == FIT_POLY && rec.minor > 0u) {
+    if ((o.have_degree || o.kind == FIT_KIND_TCM) && o.final_kind == FIT_POLY && rec.minor > 0u) {
         warn_minor_loops(&o, name, rec.minor);
     }
     if (!f.usable) {
