@@ -9,8 +9,8 @@ function f = hyst_fit(x, y, varargin)
 %   delay chosen as 'hyst fit --degree N' chooses it unless 'delay' is
 %   given; on a drive with minor loops such an f0, or one chosen among f0
 %   alone ('kind', 'poly'), is biased (the estimator takes every sample
-%   for a major branch's): warning hyst:minor_loops, as hyst fit warns. F is a model for HYST_SIM, HYST_INV and
-%   HYST_MODEL_SAVE, with the fields
+%   for a major branch's): warning hyst:minor_loops, as hyst fit warns. F
+%   is a model for HYST_SIM, HYST_INV and HYST_MODEL_SAVE, with the fields
 %     coeffs      f0's coefficients, highest power first (as polyfit)
 %     lo, hi      the domain
 %     rms, max_abs  residuals of the samples against the fitted major loop
