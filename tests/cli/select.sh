@@ -17,11 +17,14 @@ awk 'BEGIN { for (c = 0; c < 9; c++) { for (x = 0; x < 40; x += 0.25) print x;
              for (x = 40; x > 0; x -= 0.25) print x } print 0 }' > x.txt
 "$tool" sim --poly "$poly" --range 0,40 x.txt > y.txt
 # line k: x[k] and the output for x[k - 3] (a sensor 3 samples late), with
-# +-0.01 um of deterministic noise (an LCG)
-awk 'NR == FNR { x[NR] = $1; n = NR; next } { y[FNR] = $1 }
-     END { s = 12345; for (k = 4; k <= n; k++) {
-               s = (s * 1103515245 + 12345) % 2147483648; e = (s / 2147483648 - 0.5) * 0.02;
-               printf "%s %.9g\n", x[k], y[k - 3] + e } }' x.txt y.txt > rec.txt
+# +-A/2 um of deterministic noise (an LCG): late_record A
+late_record() {
+    awk -v amp="$1" 'NR == FNR { x[NR] = $1; n = NR; next } { y[FNR] = $1 }
+         END { s = 12345; for (k = 4; k <= n; k++) {
+                   s = (s * 1103515245 + 12345) % 2147483648; e = (s / 2147483648 - 0.5) * amp;
+                   printf "%s %.9g\n", x[k], y[k - 3] + e } }' x.txt y.txt
+}
+late_record 0.02 > rec.txt
 "$tool" fit rec.txt > fit.txt || fail "fit without --degree: $(cat fit.txt)"
 grep -q '^# chosen by hold-out: degree 3, delay 3 ' fit.txt || fail "choice: $(grep chosen fit.txt)"
 grep -q '^# parameters 4$' fit.txt || fail "parameter count: $(grep parameters fit.txt)"
@@ -59,8 +62,7 @@ grep -q "NAME '9x' is not a C identifier" err.txt || fail "header: message $(cat
 # printed digits): every candidate of degree 3 and more is exact there, and
 # the plant's own degree, delay and no creep term must win, not the one whose
 # rounding happens to be 1 % lower.
-awk 'NR == FNR { x[NR] = $1; n = NR; next } { y[FNR] = $1 }
-     END { for (k = 4; k <= n; k++) printf "%s %.9g\n", x[k], y[k - 3] }' x.txt y.txt > exact.txt
+late_record 0 > exact.txt
 "$tool" fit exact.txt > fit_exact.txt || fail "fit of an exact record: $(cat fit_exact.txt)"
 grep -q '^# chosen by hold-out: degree 3, delay 3 (kind poly, 4 parameters' fit_exact.txt ||
     fail "exact record: $(grep chosen fit_exact.txt)"

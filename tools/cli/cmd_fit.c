@@ -458,8 +458,7 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
     o->cfg.degree = candidates[best_candidate].degree;
     o->t_degree = candidates[best_candidate].t_degree;
     o->cfg.delay = candidates[best_candidate].delay;
-    o->resolution = o->v != NULL ? fit_resolution(o->v->y, o->v->skip + o->cfg.delay, o->v->n)
-                                 : fit_resolution(t->col[1], o->cfg.skip + o->cfg.delay, t->n);
+    o->resolution = fit_resolution(t->col[1], t->n, o->cfg.skip, o->cfg.delay, o->v);
     { /* a widened one: the domain of the model fitted on it all */
         double lo, hi;
         if (fit_chosen_domain(&candidates[best_candidate], t->col[0], o->cfg.skip, t->n, &lo,

@@ -47,10 +47,15 @@ double fit_first_input(const double *x, size_t from, size_t to)
     return NAN;
 }
 
-double fit_resolution(const double *y, size_t from, size_t to)
+double fit_resolution(const double *y, size_t n, size_t skip, size_t delay,
+                      const fit_validation_t *v)
 {
     double lo, hi;
-    fit_input_range(y, from, to, 0.0, &lo, &hi);
+    if (v != NULL) {
+        fit_input_range(v->y, v->skip + delay, v->n, 0.0, &lo, &hi);
+    } else {
+        fit_input_range(y, skip + delay, n, 0.0, &lo, &hi);
+    }
     return isfinite(hi - lo) ? FIT_RESOLUTION * (hi - lo) : 0.0;
 }
 
@@ -549,9 +554,7 @@ static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degre
     int split, splits = 1;
     const size_t settle =
         n > cfg->skip + cfg->delay ? fit_settled(x, cfg->skip, n - cfg->delay) : cfg->skip;
-    /* of the outputs scored */
-    const double resolution = v != NULL ? fit_resolution(v->y, v->skip + cfg->delay, v->n)
-                                        : fit_resolution(y, cfg->skip + cfg->delay, n);
+    const double resolution = fit_resolution(y, n, cfg->skip, cfg->delay, v);
     if (v != NULL) { /* instead of the splits: no third of the record held out */
         if (last_third != NULL) {
             *last_third = NAN;
@@ -719,7 +722,8 @@ unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
  * unless cand is full; *best the lowest hold-out RMS so far. */
 static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
                 const fit_validation_t *v, double creep_tau, int kind, unsigned degree,
-                unsigned t_degree, size_t delay, int widened, fit_candidate_t *cand, size_t max_cand, size_t *count)
+                unsigned t_degree, size_t delay, int widened, fit_candidate_t *cand,
+                size_t max_cand, size_t *count)
 {
     fit_candidate_t *c = &cand[*count];
     if (*count >= max_cand) {

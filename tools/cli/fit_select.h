@@ -58,9 +58,6 @@
  * of its range. */
 #define FIT_RESOLUTION 1e-6
 
-/* FIT_RESOLUTION of the range of the finite y[from .. to) (0 if none). */
-double fit_resolution(const double *y, size_t from, size_t to);
-
 /* The asymmetric kind is also fitted on a domain wider than the inputs' range
  * by this fraction of the range on each side: E continued beyond the inputs
  * it was identified on (monotone on the whole wider triangle, as the library
@@ -80,6 +77,12 @@ typedef struct fit_validation {
     size_t n;        /* rows */
     size_t skip;     /* rows before the model starts from rest */
 } fit_validation_t;
+
+/* FIT_RESOLUTION of the range of the finite outputs a candidate at `delay`
+ * is scored on (0 if none): v's from its skip + delay, or (v NULL) those of
+ * the record y[skip + delay .. n). */
+double fit_resolution(const double *y, size_t n, size_t skip, size_t delay,
+                      const fit_validation_t *v);
 
 /* The first finite entry of x[from .. to) (NaN if none): the record's first
  * input, a missing one (NaN) skipped. */
