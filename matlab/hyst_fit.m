@@ -67,7 +67,10 @@ function f = hyst_fit(x, y, varargin)
 %   struct array of every candidate (kind, degree, t_degree, delay, params,
 %   holdout_rms, fit_rms, status, creep_tau, creep_weight,
 %   creep_holdout_rms, chosen, with_creep). The creep term is then the one
-%   chosen with the model.
+%   chosen with the model. An E of t-degree 0 chosen with kind poly
+%   compared is the symmetric model: F is then its f0 as 'hyst fit' writes
+%   it (coeffs in powers of x, method 'branches', everett the E: degree,
+%   t_degree, y_lo, terms).
 %
 %   'creep' chooses a creep term as 'hyst fit --degree D --creep C' does
 %   (docs/matlab.md, "Creep"): 'auto' (the default) fits the model on the
@@ -245,6 +248,16 @@ function f = hyst_fit(x, y, varargin)
     end
     f = rmfield(f, 'undetermined_why');
   end
+  f = with_terms(f, opts, method, domain, tdegree, x, y, creep_tau, rate, vx, vy);
+  % E of t-degree 0 is the symmetric model: written as f0, as hyst fit writes it
+  if ~isempty(cands) && strcmp(opts.kind, 'everett') && tdegree == 0 && bitand(kinds, 1)
+    f = written_as_poly(f);
+  end
+end
+
+function f = with_terms(f, opts, method, domain, tdegree, x, y, creep_tau, rate, vx, vy)
+% The creep and rate terms chosen with the model f, fitted on the whole
+% record (none: f as it is).
   skip = double(opts.skip);
   delay = double(opts.delay);
   if numel(x) <= skip + delay || ~usable(f)
@@ -376,6 +389,26 @@ function [opts, cands, creep_tau, domain, x, fraction, rate, vx] = choose(opts, 
   if with_creep
     creep_tau = c.creep_tau;
   end
+end
+
+function f = written_as_poly(f)
+% The chosen E of t-degree 0 (its creep term's offset in y_lo) as the model
+% it is, the symmetric one, whose compensator is a table: f0 in powers of
+% x (hyst fit's fit_poly_from_everett()), method 'branches' and everett
+% the E it was fitted as; f itself where that refuses it.
+  if ~f.monotone
+    return;
+  end
+  coeffs = hyst_mex('poly_from_everett', f.degree, f.lo, f.hi, f.y_lo, f.terms);
+  if isempty(coeffs)
+    return;
+  end
+  e = struct('degree', f.degree, 't_degree', f.t_degree, 'y_lo', f.y_lo, 'terms', f.terms);
+  f = rmfield(f, {'kind', 't_degree', 'y_lo', 'terms', 'monotone'});
+  f.coeffs = coeffs;
+  f.method = 'branches';
+  f.increasing = true;
+  f.everett = e;
 end
 
 function f = fit_part(opts, method, domain, tdegree, x, y)

@@ -839,6 +839,29 @@ static void run_fit(mxArray *plhs[], int nrhs, const mxArray *prhs[])
 
 /* fit_everett: prhs = x, y, degree, lo, hi, skip, delay[, t_degree]: only
  * E's terms w^i t^j with j <= t_degree fitted (default degree - 1: all). */
+/* poly_from_everett(degree, lo, hi, y_lo, terms): E of t-degree 0 as the
+ * symmetric model's f0 in powers of x, highest first, as hyst fit writes
+ * the E of t-degree 0 it chooses (fit_poly_from_everett()); [] when E has a
+ * term of t, the powers of x cancel or f0 does not increase. */
+static void run_poly_from_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    hyst_everett_t e;
+    hyst_poly_t f0;
+    unsigned k;
+    if (nrhs != 5) {
+        usage("poly_from_everett takes degree, lo, hi, y_lo, terms");
+    }
+    e = everett_arg(prhs, "hyst_fit");
+    if (!fit_poly_from_everett(&e, &f0)) {
+        plhs[0] = mxCreateDoubleMatrix(0, 0, mxREAL);
+        return;
+    }
+    plhs[0] = mxCreateDoubleMatrix(1, f0.degree + 1u, mxREAL);
+    for (k = 0u; k <= f0.degree; ++k) {
+        mxGetPr(plhs[0])[k] = (double)f0.coeffs[k];
+    }
+}
+
 static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"kind", "degree", "t_degree", "lo", "hi", "y_lo",
@@ -1753,6 +1776,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_fit_grid(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "fit_everett") == 0) {
         run_fit_everett(plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "poly_from_everett") == 0) {
+        run_poly_from_everett(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "creep") == 0) {
         run_creep(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "holdout_grid") == 0) {

@@ -26,7 +26,8 @@ function failed = run_tests(root, ref, cli)
            @t_grid_chosen_as_cli, @t_grid_fit_undetermined, @t_fit_missing_first_input, ...
            @t_fit_refuses_record, @t_save_writes_regular_files_only, ...
            @t_header_refuses_what_init_refuses, @t_fit_checks_record_as_cli, ...
-           @t_fit_recovers_a_simulated_plant, @t_fit_warns_degree_on_minor_loops};
+           @t_fit_recovers_a_simulated_plant, @t_fit_warns_degree_on_minor_loops, ...
+           @t_fit_writes_e_of_the_width_as_f0};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -2066,4 +2067,34 @@ function t_fit_warns_degree_on_minor_loops(ctx)
     [msg, id] = lastwarn();
     check(~strcmp(id, 'hyst:minor_loops'), 'the choice among every kind warned: %s', msg);
   end
+end
+
+function t_fit_writes_e_of_the_width_as_f0(ctx)
+  % the paper's plant driven with minor loops: E of t-degree 0 is chosen (f0's
+  % estimator is biased there) and, being the symmetric model, written as
+  % f0 (method 'branches'), as hyst fit writes it: the same model file
+  legs = {0:0.25:39.75, 40:-0.25:0.25, 0:0.25:29.75, 30:-0.25:10.25, 10:0.25:24.75, ...
+          25:-0.25:15.25, 15:-0.25:0.25};
+  x = [repmat([legs{:}]', 4, 1); 0];
+  y = hyst_sim(paper_f0(), x) + 0.005 * (mod((1:numel(x))' * 0.6180339887, 1) - 0.5);
+  f = hyst_fit(x, y);
+  chosen = f.candidates([f.candidates.chosen]);
+  check(strcmp(chosen.kind, 'everett') && chosen.t_degree == 0 && ~isfield(f, 'kind') && ...
+        strcmp(f.method, 'branches') && f.everett.t_degree == 0 && f.degree == 3, ...
+        'chosen %s t-degree %d, written as method %s', chosen.kind, chosen.t_degree, f.method);
+  e = struct('kind', 'everett', 'degree', 3, 'lo', f.lo, 'hi', f.hi, 'y_lo', f.everett.y_lo, ...
+             'terms', f.everett.terms);
+  check(max(abs(hyst_sim(f, x) - hyst_sim(e, x))) < 1e-9, 'f0 and E predict differently');
+  file = fullfile(ctx.tmp, 'width.txt');
+  fid = fopen(file, 'w');
+  fprintf(fid, '%.17g %.17g\n', [x y]');
+  fclose(fid);
+  cli_file = fullfile(ctx.tmp, 'width_cli.hyst');
+  out = run_cli(ctx, ['fit --save "' cli_file '" "' file '"']);
+  check(~isempty(strfind(out, '# written as kind poly: E of t-degree 0 is the symmetric model')), ...
+        'hyst fit did not write f0: %s', out);
+  oct_file = fullfile(ctx.tmp, 'width_oct.hyst');
+  hyst_model_save(oct_file, f);
+  check(strcmp(fileread(oct_file), fileread(cli_file)), 'model files differ:\n%s\n%s', ...
+        fileread(oct_file), fileread(cli_file));
 end

@@ -347,7 +347,12 @@ class Fit:
     ``tau``, ``weight``, ``holdout_rms`` and ``holdout_rms_without``;
     ``rate_tau`` and ``rate_weight`` the model's (None without one), which
     the model, its file and its header include. ``rms`` and ``max_abs`` stay
-    the hysteresis fit's own. A grid (``"everett_grid"``) has ``knots``,
+    the hysteresis fit's own. The automatic choice's E of t-degree 0, the
+    symmetric model, is kind ``"poly"`` with kind poly compared, as ``hyst
+    fit`` writes it: its f0 ``y_lo + sum e[i-1][0] ((x - lo) / (hi - lo))^i``
+    in powers of x, ``method`` ``"branches"`` (E's least squares along
+    every branch, ``rms`` its residual) and ``everett`` the E (degree,
+    t_degree, y_lo, terms). A grid (``"everett_grid"``) has ``knots``,
     ``weights``, ``y_lo`` and ``determined``: False when the record's turning
     points leave some masses open (then :class:`FitWarning`).
     ``validation_rms`` (:func:`fit`'s ``validate``, else None): the model's
@@ -360,7 +365,7 @@ class Fit:
         self.__dict__.update(result)
         self.kind = result.get("kind", "poly")
         self.t_degree = result.get("t_degree")
-        if self.kind == "poly":
+        if self.kind == "poly" and result["method"] != "branches":
             self.method = {v: k for k, v in _METHODS.items()}[result["method"]]
         # an int, or a float with a sub-sample delay (the model file's 3.5)
         self.delay = delay if isinstance(delay, float) and not delay.is_integer() else int(delay)
@@ -457,8 +462,9 @@ class Fit:
             return (f"Fit(kind='everett_grid', intervals={self.degree}, knots=[{k}], "
                     f"y_lo={self.y_lo:.9g}, rms={self.rms:.6g}{creep})")
         c = ", ".join(f"{v:.9g}" for v in self.coeffs)
+        max_abs = f", max_abs={self.max_abs:.6g}" if "max_abs" in self.__dict__ else ""
         return (f"Fit(coeffs=[{c}], lo={self.lo:.9g}, hi={self.hi:.9g}, "
-                f"rms={self.rms:.6g}, max_abs={self.max_abs:.6g}, method={self.method!r}{creep})")
+                f"rms={self.rms:.6g}{max_abs}, method={self.method!r}{creep})")
 
 
 #: Delays tried by fit() when none is given, the parsimony margin of the
@@ -704,6 +710,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
         _check_record(vx, vy, skip, 0, ("validate's x", "validate's y"))
         validate = (vx, vy)
     cands, chosen, with_creep, fraction, search = None, None, False, 0.0, {}
+    as_poly = False
     if degree is None:
         kinds = KINDS if kind is None else (kind,)
         cands, best, with_creep, widened, search = _select(
@@ -723,6 +730,8 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
             if validate is not None:  # and the validation record's, as the tool's
                 validate = (np.asarray(search["vx"], dtype=np.float64), validate[1])
         t_degree = chosen["t_degree"]
+        # E of t-degree 0 is the symmetric model: written as f0, as hyst fit writes it
+        as_poly = kind == "everett" and t_degree == 0 and "poly" in kinds
         if widened is not None:
             # the domain the tool fits it on: the inputs' range widened, E
             # continued beyond the inputs (fit_chosen_domain())
@@ -779,6 +788,8 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
             rate_info = {"tau": c["rate_tau"], "weight": c["rate_weight"],
                          "holdout_rms": search["rate_holdout_rms"],
                          "holdout_rms_without": search["rate_without"]}
+    if as_poly and _refusal(res) is None:
+        res = _written_as_poly(res)
     f = Fit(res, dtype, capacity, delay=int(delay) + fraction if fraction else int(delay),
             candidates=cands, creep=creep_info, rate=rate_info)
     if cands is not None and validate is not None:
@@ -793,6 +804,25 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
                             else chosen["creep_holdout_rms"] if with_creep
                             else chosen["holdout_rms"])
     return f
+
+
+def _written_as_poly(res):
+    """The chosen E of t-degree 0 (res, its creep term's offset in y_lo) as
+    the model it is, the symmetric one, whose compensator is a table: f0 in
+    powers of x (hyst fit's fit_poly_from_everett()), ``method`` "branches"
+    and ``everett`` the E it was fitted as; res itself where that refuses it
+    (powers of x that cancel)."""
+    coeffs = _hyst.poly_from_everett(res["degree"], res["lo"], res["hi"], res["y_lo"],
+                                     res["terms"])
+    if coeffs is None:
+        return res
+    out = {"kind": "poly", "degree": res["degree"], "lo": res["lo"], "hi": res["hi"],
+           "coeffs": coeffs, "method": "branches", "rms": res["rms"], "used": res["used"],
+           "increasing": True,
+           "everett": {k: res[k] for k in ("degree", "t_degree", "y_lo", "terms")}}
+    if res.get("identified") is not None:
+        out["identified"] = res["identified"]
+    return out
 
 
 def _warn_minor_loops(minor, degree):

@@ -917,6 +917,24 @@ nb::dict fit_everett(const In<double> &x, const In<double> &y, unsigned degree, 
 }
 
 /*
+ * E of t-degree 0 written as the symmetric model's f0, in powers of x,
+ * highest first, as `hyst fit` writes the E of t-degree 0 it chooses
+ * (fit_poly_from_everett(), tools/cli/fit_everett.c); None when E has a
+ * term of t, the powers of x cancel or f0 does not increase.
+ */
+nb::object poly_from_everett(unsigned degree, double lo, double hi, double y_lo,
+                             const std::vector<double> &terms)
+{
+    const hyst_everett_t e = make_everett(degree, lo, hi, y_lo, terms);
+    hyst_poly_t f0;
+    if (!fit_poly_from_everett(&e, &f0)) {
+        return nb::none();
+    }
+    std::vector<double> coeffs(f0.coeffs, f0.coeffs + f0.degree + 1u);
+    return nb::cast(coeffs);
+}
+
+/*
  * The asymmetric kind on a grid of k knot intervals fitted to a record as
  * `hyst fit --kind everett_grid` fits it (fit_grid_record(),
  * tools/cli/fit_grid.c): the knots where the output steps, the cells'
@@ -1721,6 +1739,8 @@ NB_MODULE(_hyst, m)
     m.attr("FIT_CREEP_PARAMETERS") = static_cast<unsigned>(FIT_CREEP_PARAMETERS);
     m.def("fit_everett", &fit_everett, "x"_a, "y"_a, "degree"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a = -1);
+    m.def("poly_from_everett", &poly_from_everett, "degree"_a, "lo"_a, "hi"_a, "y_lo"_a,
+          "terms"_a);
     m.attr("FIT_GRID_UNDETERMINED") = nb::str(fit_grid_undetermined);
     m.def("fit_grid", &fit_grid, "x"_a, "y"_a, "intervals"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a);

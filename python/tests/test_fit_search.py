@@ -179,3 +179,59 @@ def test_a_simulated_plant_is_recovered_not_its_rounding():
     exact = {(c["kind"], c["degree"]) for c in at3 if c["holdout_rms"] == resolution}
     assert exact >= {("poly", 3), ("poly", 9)}
     assert all(c["holdout_rms"] >= resolution for c in at3)
+
+
+def minor_loop_record():
+    """Eq. 20's plant (degree 3 on [0, 40]) driven with minor loops, plus
+    +-0.0025 of noise: the record of tests/cli/select.sh's minor-loop case."""
+    coeffs = [-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1]
+    legs = [(0, 40), (40, 0), (0, 30), (30, 10), (10, 25), (25, 15), (15, 0)]
+    x = np.concatenate([np.arange(a, b, 0.25 if b > a else -0.25) for a, b in legs] * 4 + [[0.0]])
+    y = hyst.Model(coeffs, 0.0, 40.0).process(x)
+    return x, y + 0.005 * (np.random.default_rng(7).random(len(y)) - 0.5)
+
+
+@pytest.mark.parametrize("creep", ["auto", 100])
+def test_e_of_the_width_alone_chosen_is_written_as_f0_as_by_the_tool(c_build, tmp_path, creep):
+    """On minor loops f0's estimator is biased and E of t-degree 0 is
+    chosen: the symmetric model, written as kind poly (its compensator a
+    table) by fit() as by hyst fit, the same model file byte for byte,
+    predicting as that E does."""
+    x, y = minor_loop_record()
+    f = hyst.fit(x, y, creep=creep)
+    chosen = next(c for c in f.candidates if c["chosen"])
+    assert (chosen["kind"], chosen["t_degree"]) == ("everett", 0)
+    assert (f.kind, f.method, f.degree, f.everett["t_degree"]) == ("poly", "branches", 3, 0)
+    np.testing.assert_allclose(f.coeffs, [-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1],
+                               rtol=0.02)
+    e = hyst.model_from({"kind": "everett", "degree": 3, "lo": f.lo, "hi": f.hi,
+                         "y_lo": f.everett["y_lo"], "terms": f.everett["terms"],
+                         "creep_tau": f.creep_tau, "creep_weight": f.creep_weight})
+    assert np.max(np.abs(f.predict(x) - e.process(x))) < 1e-9
+    drive = f.make_compensator(intervals=256).process(f.predict(x))
+    assert np.max(np.abs(drive - x)) < 1e-3
+    opts = () if creep == "auto" else ("--creep", str(creep))
+    out = cli_fit(c_build, tmp_path, x, y, *opts)
+    assert "# written as kind poly: E of t-degree 0 is the symmetric model" in out.stdout
+    f.save(tmp_path / "py.hyst")
+    assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
+    # kind="everett" asks for E: kept as E
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", hyst.FitWarning)
+        assert hyst.fit(x, y, kind="everett", creep="none").kind == "everett"
+
+
+def test_e_is_written_as_f0_only_where_it_is_an_increasing_f0():
+    """poly_from_everett() (hyst fit's fit_poly_from_everett()) refuses an
+    E with a term of t, one whose powers of x cancel (a domain far from 0)
+    and one whose f0 falls; it expands the others exactly."""
+    from hyst import _hyst
+    assert _hyst.poly_from_everett(2, 0.0, 40.0, 0.0, [3.0, -0.5, 1.0]) is None
+    np.testing.assert_allclose(_hyst.poly_from_everett(2, 0.0, 40.0, 0.5, [3.0, 0.0, 1.0]),
+                               [1 / 1600, 3 / 40, 0.5], rtol=1e-15)
+    np.testing.assert_allclose(_hyst.poly_from_everett(1, 10.0, 20.0, 2.0, [5.0]),
+                               [0.5, -3.0], rtol=1e-15)
+    assert _hyst.poly_from_everett(2, 0.0, 40.0, 0.0, [1.0, 0.0, -2.0]) is None
+    far = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0]
+    assert _hyst.poly_from_everett(4, 1e6, 1e6 + 1.0, 0.0, far) is None
+    assert _hyst.poly_from_everett(4, 0.0, 1.0, 0.0, far) is not None

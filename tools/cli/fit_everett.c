@@ -106,3 +106,69 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
     }
     return HYST_OK;
 }
+
+/* y_lo + sum e[i-1][0] u^i at x, u = (x - lo) / (hi - lo): E of the width alone from lo. */
+static double everett_width_eval(const hyst_everett_t *e, double x)
+{
+    const double u = (x - (double)e->lo) / ((double)e->hi - (double)e->lo);
+    double s = 0.0;
+    unsigned i;
+    for (i = e->degree; i >= 1u; --i) {
+        s = (s + (double)e->e[i - 1u][0]) * u;
+    }
+    return (double)e->y_lo + s;
+}
+
+int fit_poly_from_everett(const hyst_everett_t *e, hyst_poly_t *f0)
+{
+    /* c[k]: the coefficient of x^k, lowest first while expanding */
+    double c[HYST_EVERETT_MAX_DEGREE + 1u];
+    const double a = 1.0 / ((double)e->hi - (double)e->lo), b = -(double)e->lo * a;
+    double span, worst = 0.0;
+    hyst_poly_t p;
+    unsigned i, j, k;
+    if (e->degree < 1u || e->degree > HYST_EVERETT_MAX_DEGREE ||
+        !((double)e->lo < (double)e->hi)) {
+        return 0;
+    }
+    for (i = 1u; i <= e->degree; ++i) {
+        for (j = 1u; i + j <= e->degree; ++j) {
+            if (e->e[i - 1u][j] != 0) {
+                return 0; /* a term of t: the branches depend on where they start */
+            }
+        }
+    }
+    /* Horner in u = a x + b, each step multiplying the polynomial in x by it */
+    memset(c, 0, sizeof c);
+    for (i = e->degree; i >= 1u; --i) {
+        c[0] += (double)e->e[i - 1u][0];
+        for (k = e->degree - i + 1u; k >= 1u; --k) {
+            c[k] = c[k] * b + c[k - 1u] * a;
+        }
+        c[0] *= b;
+    }
+    c[0] += (double)e->y_lo;
+    memset(&p, 0, sizeof p);
+    p.degree = e->degree;
+    p.lo = e->lo;
+    p.hi = e->hi;
+    for (k = 0u; k <= e->degree; ++k) {
+        p.coeffs[e->degree - k] = (hyst_wide_t)c[k];
+    }
+    /* the powers of x may cancel (a domain far from 0): kept only where they
+     * give E's values, and an increasing f0 */
+    span = fabs(everett_width_eval(e, (double)e->hi) - everett_width_eval(e, (double)e->lo));
+    for (k = 0u; k <= FIT_POLY_CHECK_POINTS; ++k) {
+        const double x = (double)e->lo + ((double)e->hi - (double)e->lo) * (double)k /
+                                             (double)FIT_POLY_CHECK_POINTS;
+        const double d =
+            fabs((double)hyst_poly_eval(&p, (hyst_wide_t)x) - everett_width_eval(e, x));
+        worst = d > worst || isnan(d) ? d : worst;
+    }
+    if (!(worst <= FIT_POLY_AGREEMENT * span) ||
+        !hyst_poly_is_increasing(p.coeffs, p.degree, p.lo, p.hi, NULL)) {
+        return 0;
+    }
+    *f0 = p;
+    return 1;
+}

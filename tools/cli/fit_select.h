@@ -291,6 +291,16 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
                                  const double *x, const double *y, size_t n,
                                  fit_everett_result_t *res);
 
+/* E of t-degree 0 (no term of t) is the symmetric model: its f0, in powers
+ * of x, is y_lo + sum e[i-1][0] ((x - lo) / (hi - lo))^i on [lo, hi]
+ * (docs/identification.md). Into *f0 and 1 when E has no term of t, the
+ * expansion agrees with that sum within FIT_POLY_AGREEMENT of f0's span at
+ * FIT_POLY_CHECK_POINTS + 1 points of the domain (powers of x far from 0
+ * cancel) and f0 increases; else 0 and *f0 untouched. */
+#define FIT_POLY_CHECK_POINTS 64u
+#define FIT_POLY_AGREEMENT 1e-9
+int fit_poly_from_everett(const hyst_everett_t *e, hyst_poly_t *f0);
+
 /* x[i] with y[i] (i < n) added to an everett fit started from rest at x[0],
  * as the front ends fit E (Python's fit(kind="everett"), Octave's
  * hyst_fit): each input clamped to [lo, hi] as the model clamps it, the
