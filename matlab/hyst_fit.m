@@ -56,7 +56,9 @@ function f = hyst_fit(x, y, varargin)
 %   lags the input (default []: chosen as hyst fit does, 0..8, or up to
 %   1/64 of the drive's period, then a fraction of a sample: f.delay 12.5,
 %   the model fitted on the drive interpolated), 'method' 'joint'
-%   (default) or 'reflect' (kind poly), 'domain' [LO HI] (default: the
+%   (default), 'reflect' or 'branches' (kind poly: E of t-degree 0, degree
+%   1..4, fitted along every branch, minor loops included, and written as
+%   f0, as 'hyst fit --method branches'), 'domain' [LO HI] (default: the
 %   range of the inputs), 'creep' (below).
 %
 %   'degree', [] chooses the kind (the three compared, grids of 4 and 6
@@ -122,13 +124,17 @@ function f = hyst_fit(x, y, varargin)
   if ~isempty(opts.tdegree) && ~strcmp(opts.kind, 'everett')
     error('hyst:usage', 'hyst_fit: tdegree needs kind ''everett''');
   end
+  branches = false;  % f0 fitted along every branch: E of t-degree 0, written as f0
   switch lower(opts.method)
     case 'joint'
       method = 1;
     case 'reflect'
       method = 2;
+    case 'branches'
+      method = 1;
+      branches = true;
     otherwise
-      error('hyst:usage', 'hyst_fit: method is ''joint'' or ''reflect''');
+      error('hyst:usage', 'hyst_fit: method is ''joint'', ''reflect'' or ''branches''');
   end
   if isempty(opts.domain)
     domain = [0 0];  % lo == hi: from the data
@@ -145,6 +151,19 @@ function f = hyst_fit(x, y, varargin)
   if rate_tau >= 0 && ~isempty(opts.degree)
     error('hyst:usage', ['hyst_fit: ''rate'' applies to the automatic choice (''degree'', []), ' ...
                          'as hyst fit --rate']);
+  end
+  if branches
+    if ~strcmp(opts.kind, 'poly')
+      error('hyst:usage', ['hyst_fit: method ''branches'' fits kind ''poly'' (f0 along every ' ...
+                           'branch), not kind ''%s'''], opts.kind);
+    end
+    if ~isempty(opts.degree) && opts.degree > 4
+      error('hyst:usage', ['hyst_fit: method ''branches'' fits f0 of degree 1..4 (E of ' ...
+                           't-degree 0), not %d'], opts.degree);
+    end
+    opts.kind = 'everett';
+    opts.tdegree = 0;
+    kinds = 2;
   end
   x = double(x(:));
   y = double(y(:));
@@ -225,8 +244,9 @@ function f = hyst_fit(x, y, varargin)
     warning('hyst:minor_loops', ['hyst_fit: x has %d reversal%s inside its range (minor ' ...
                                  'loops): f0 %s is biased, its fit taking every rising ' ...
                                  'sample for the major ascending branch and every falling ' ...
-                                 'one for the descending; leave %s, or fit ''kind'', ' ...
-                                 '''everett'''], rec.minor, repmat('s', 1, rec.minor ~= 1), ...
+                                 'one for the descending; leave %s, or fit ''method'', ' ...
+                                 '''branches'' (f0 along every branch)'], rec.minor, ...
+                                 repmat('s', 1, rec.minor ~= 1), ...
             what, leave);
   end
   if strcmp(opts.kind, 'poly') && ~f.increasing
@@ -250,8 +270,15 @@ function f = hyst_fit(x, y, varargin)
   end
   f = with_terms(f, opts, method, domain, tdegree, x, y, creep_tau, rate, vx, vy);
   % E of t-degree 0 is the symmetric model: written as f0, as hyst fit writes it
-  if ~isempty(cands) && strcmp(opts.kind, 'everett') && tdegree == 0 && bitand(kinds, 1)
+  if branches || (~isempty(cands) && strcmp(opts.kind, 'everett') && tdegree == 0 && ...
+                  bitand(kinds, 1))
     f = written_as_poly(f);
+    if branches && ~isfield(f, 'everett') && f.monotone
+      error('hyst:usage', ['hyst_fit: method ''branches'': E of degree %d fitted along the ' ...
+                           'branches gives no f0 in powers of x on [%.9g, %.9g] (they cancel ' ...
+                           'far from 0, or f0 falls): shift the inputs, or fit ''kind'', ' ...
+                           '''everett'', ''tdegree'', 0'], f.degree, f.lo, f.hi);
+    end
   end
 end
 
@@ -274,8 +301,10 @@ function f = with_terms(f, opts, method, domain, tdegree, x, y, creep_tau, rate,
     [without, c] = hyst_mex('score', x, y, kind_code(opts.kind), double(opts.degree), ...
                             double(tdegree), method, domain(1), domain(2), skip, delay, ...
                             creep_tau, vx, vy);
+    config = hyst_mex('config');  % fit_parsimony: hyst fit's margin
     if creep_tau < 0 || ~isfinite(without) || isempty(c) || ~(c.tau > 0) || ...
-       ~isfinite(c.holdout_rms) || (creep_tau == 0 && without <= c.holdout_rms * 1.01)
+       ~isfinite(c.holdout_rms) || ...
+       (creep_tau == 0 && without <= c.holdout_rms * (1 + config.fit_parsimony))
       c = [];
     end
     if ~isempty(vx)  % the model's error on it, with the terms it has

@@ -2097,4 +2097,24 @@ function t_fit_writes_e_of_the_width_as_f0(ctx)
   hyst_model_save(oct_file, f);
   check(strcmp(fileread(oct_file), fileread(cli_file)), 'model files differ:\n%s\n%s', ...
         fileread(oct_file), fileread(cli_file));
+  % 'method', 'branches': that fit of kind poly at a given degree, as hyst fit
+  % --method branches writes it, with no warning of minor loops
+  lastwarn('');
+  b = hyst_fit(x, y, 'degree', 3, 'method', 'branches');
+  [msg, id] = lastwarn();
+  check(~strcmp(id, 'hyst:minor_loops'), 'method branches warned: %s', msg);
+  run_cli(ctx, ['fit --degree 3 --method branches --save "' cli_file '" "' file '"']);
+  hyst_model_save(oct_file, b);
+  check(strcmp(b.method, 'branches') && strcmp(fileread(oct_file), fileread(cli_file)), ...
+        'method branches: model files differ:\n%s\n%s', fileread(oct_file), fileread(cli_file));
+  lastwarn('');
+  hyst_fit(x, y, 'degree', 3);
+  [msg, id] = lastwarn();
+  check(strcmp(id, 'hyst:minor_loops') && ~isempty(strfind(msg, 'or fit ''method'', ''branches''')), ...
+        'the joint estimator on minor loops: %s', msg);
+  far = @() hyst_fit(x + 1e6, y, 'degree', 3, 'method', 'branches');
+  expect_error('hyst:usage', far);
+  msg = error_message(far);
+  check(~isempty(strfind(msg, 'gives no f0 in powers of x')), 'far from 0: %s', msg);
+  expect_error('hyst:usage', @() hyst_fit(x, y, 'degree', 5, 'method', 'branches'));
 end

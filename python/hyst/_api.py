@@ -615,7 +615,11 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     Sample i (skip <= i < n - delay) pairs x[i] with y[i + delay]; the domain
     is ``domain=(lo, hi)`` or the range of those inputs. ``kind="poly"``
     fits f0 (hyst_ident_fit(); ``method`` ``"joint"``, both branches in one
-    least-squares problem, or ``"reflect"``, the paper's Eq. 14);
+    least-squares problem, or ``"reflect"``, the paper's Eq. 14; or
+    ``"branches"``, as ``hyst fit --method branches``: E of t-degree 0 of
+    degree 1..EVERETT_MAX_DEGREE fitted along every branch the record
+    takes, minor loops included, written as f0, ValueError where its powers
+    of x cancel);
     ``kind="everett"`` the asymmetric kind's E (hyst_everett_fit_*(), degree
     1..EVERETT_MAX_DEGREE; the record starts from rest at sample ``skip``, its
     outputs fitted from the first input within 1 % of an end of the range on,
@@ -675,8 +679,9 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     what x2 tests the choice on). The model is fitted on (x, y) as without
     it. Returns a :class:`Fit`.
     """
-    if method not in _METHODS:
-        raise ValueError(f"method must be one of {sorted(_METHODS)}, not {method!r}")
+    if method not in _METHODS and method != "branches":
+        raise ValueError(f"method must be one of {sorted(_METHODS) + ['branches']}, "
+                         f"not {method!r}")
     if kind is not None and kind not in KINDS:
         raise ValueError(f"kind must be one of {KINDS} or None, not {kind!r}")
     if t_degree is not None and kind != "everett":
@@ -696,6 +701,15 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
         delay = _samples("delay", delay)
     record = _check_record(x, y, skip, delay or 0)
     # f0 of a given degree, or chosen among f0 alone: warned of below (its degree, or None)
+    branches = method == "branches"
+    if branches:  # f0 fitted along every branch: E of t-degree 0, written as f0
+        if kind not in (None, "poly"):
+            raise ValueError(f"method='branches' fits kind poly (f0 along every branch), not "
+                             f"kind={kind!r}")
+        if degree is not None and int(degree) > EVERETT_MAX_DEGREE:
+            raise ValueError(f"method='branches' fits f0 of degree 1..{EVERETT_MAX_DEGREE} "
+                             f"(E of t-degree 0), not {degree!r}")
+        kind, t_degree, method = "everett", 0, "joint"
     minor_loops = (kind == "poly" or (kind is None and degree is not None)) and record["minor"] > 0
     degree_given = degree
     if validate is not None:  # refused as the record is (hyst fit --validate)
@@ -710,7 +724,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
         _check_record(vx, vy, skip, 0, ("validate's x", "validate's y"))
         validate = (vx, vy)
     cands, chosen, with_creep, fraction, search = None, None, False, 0.0, {}
-    as_poly = False
+    as_poly = branches
     if degree is None:
         kinds = KINDS if kind is None else (kind,)
         cands, best, with_creep, widened, search = _select(
@@ -731,7 +745,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
                 validate = (np.asarray(search["vx"], dtype=np.float64), validate[1])
         t_degree = chosen["t_degree"]
         # E of t-degree 0 is the symmetric model: written as f0, as hyst fit writes it
-        as_poly = kind == "everett" and t_degree == 0 and "poly" in kinds
+        as_poly = kind == "everett" and t_degree == 0 and ("poly" in kinds or branches)
         if widened is not None:
             # the domain the tool fits it on: the inputs' range widened, E
             # continued beyond the inputs (fit_chosen_domain())
@@ -790,6 +804,11 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
                          "holdout_rms_without": search["rate_without"]}
     if as_poly and _refusal(res) is None:
         res = _written_as_poly(res)
+        if branches and res["kind"] != "poly":
+            raise ValueError(f"method='branches': E of degree {res['degree']} fitted along the "
+                             f"branches gives no f0 in powers of x on [{res['lo']:.9g}, "
+                             f"{res['hi']:.9g}] (they cancel far from 0, or f0 falls): shift "
+                             "the inputs, or fit kind='everett', t_degree=0")
     f = Fit(res, dtype, capacity, delay=int(delay) + fraction if fraction else int(delay),
             candidates=cands, creep=creep_info, rate=rate_info)
     if cands is not None and validate is not None:
@@ -835,7 +854,8 @@ def _warn_minor_loops(minor, degree):
     warnings.warn(f"x has {minor} reversal{'' if minor == 1 else 's'} inside its range (minor "
                   f"loops): f0 {what} is biased, its fit taking every rising sample for the "
                   f"major ascending branch and every falling one for the descending; leave "
-                  f"{leave}, or fit kind='everett'", FitWarning, stacklevel=3)
+                  f"{leave}, or fit method='branches' (f0 along every branch)", FitWarning,
+                  stacklevel=3)
 
 
 def _validation_excitation(x, skip, end, validate, delay):

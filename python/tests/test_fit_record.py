@@ -105,7 +105,8 @@ def test_a_degree_on_minor_loops_is_warned_of_as_by_the_tool(c_build, tmp_path, 
     refusal, warned = py_fit(x, y, 2, delay=0, creep="none")
     assert refusal is None and cli.returncode == 0
     ours = [re.match(r"x has (\d+) reversals inside its range \(minor loops\): f0 of degree 2 "
-                     r"is biased.*leave degree=None to let fit choose, or fit kind='everett'$",
+                     r"is biased.*leave degree=None to let fit choose, or fit method='branches' "
+                     r"\(f0 along every branch\)$",
                      m) for m in warned]
     ours = [m for m in ours if m]
     assert (said is not None) == (len(ours) == 1) == minor_loops, (cli.stderr, warned)
@@ -127,12 +128,14 @@ def test_f0_chosen_alone_on_minor_loops_is_warned_of_as_by_the_tool(c_build, tmp
     cli = cli_fit(c_build, tmp_path, x, y, "--kind", "tcm", "--creep", "none")
     said = re.search(r"^hyst fit: warning: \S*rec\.txt: the drive has (\d+) reversals inside its "
                      r"range \(minor loops\): f0 of every degree is biased.*leave out --kind tcm "
-                     r"to let fit compare E too, or fit --kind everett$", cli.stderr, re.M)
+                     r"to let fit compare E too, or fit --method branches "
+                     r"\(f0 along every branch\)$",
+                     cli.stderr, re.M)
     refusal, warned = py_fit(x, y, kind="poly", creep="none")
     assert refusal is None and cli.returncode == 0
     ours = [re.match(r"x has (\d+) reversals inside its range \(minor loops\): f0 of every "
                      r"degree is biased.*leave kind=None to let fit compare E too, or fit "
-                     r"kind='everett'$", m) for m in warned]
+                     r"method='branches' \(f0 along every branch\)$", m) for m in warned]
     ours = [m for m in ours if m]
     assert (said is not None) == (len(ours) == 1) == minor_loops, (cli.stderr, warned)
     if minor_loops:

@@ -235,3 +235,29 @@ def test_e_is_written_as_f0_only_where_it_is_an_increasing_f0():
     far = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0]
     assert _hyst.poly_from_everett(4, 1e6, 1e6 + 1.0, 0.0, far) is None
     assert _hyst.poly_from_everett(4, 0.0, 1.0, 0.0, far) is not None
+
+
+def test_method_branches_fits_f0_along_every_branch_as_the_tool(c_build, tmp_path):
+    """method="branches" is hyst fit --method branches: f0 of kind poly
+    fitted as E of t-degree 0 along every branch, unbiased on minor loops
+    (no FitWarning, where the joint estimator warns), the same model file;
+    refused above degree 4, for another kind, and where its powers of x
+    cancel."""
+    x, y = minor_loop_record()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", hyst.FitWarning)
+        f = hyst.fit(x, y, 3, method="branches")
+    assert (f.kind, f.method, f.degree, f.everett["t_degree"]) == ("poly", "branches", 3, 0)
+    np.testing.assert_allclose(f.coeffs, [-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1],
+                               rtol=0.02)
+    cli_fit(c_build, tmp_path, x, y, "--degree", "3", "--method", "branches")
+    f.save(tmp_path / "py.hyst")
+    assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
+    with pytest.warns(hyst.FitWarning, match=r"or fit method='branches'"):
+        joint = hyst.fit(x, y, 3)
+    assert np.max(np.abs(joint.predict(x) - y)) > 10 * np.max(np.abs(f.predict(x) - y))
+    for bad in ({"degree": 5}, {"kind": "everett"}, {"kind": "everett_grid"}):
+        with pytest.raises(ValueError, match="method='branches'"):
+            hyst.fit(x, y, method="branches", **bad)
+    with pytest.raises(ValueError, match=r"no f0 in powers of x on \[1000000, 1000040\]"):
+        hyst.fit(x + 1e6, y, 3, method="branches")

@@ -107,12 +107,12 @@ grep -q 'warning: recc.txt: the last third.s inputs span 1[45][.0-9]* % of the r
 # recc.txt's drive reverses inside its range 59 times (30 peaks at 15.75 V, 29
 # valleys at 10 V); rech.txt's (a sine 0..40) never
 "$tool" fit --degree 2 --delay 0 --creep none recc.txt > /dev/null 2> minor_err.txt || fail "fit --degree 2 of the corner record"
-grep -q '^hyst fit: warning: recc.txt: the drive has 59 reversals inside its range (minor loops): f0 of --degree 2 is biased,.* leave out --degree to let fit choose, or fit --kind everett$' minor_err.txt ||
+grep -q '^hyst fit: warning: recc.txt: the drive has 59 reversals inside its range (minor loops): f0 of --degree 2 is biased,.* leave out --degree to let fit choose, or fit --method branches (f0 along every branch)$' minor_err.txt ||
     fail "no warning of f0 fitted on minor loops: $(cat minor_err.txt)"
 ! grep -q 'minor loops): f0' fitd_err.txt || fail "warned of minor loops on major loops only: $(cat fitd_err.txt)"
 # the degree chosen among f0 alone (--kind tcm) is as biased
 "$tool" fit --kind tcm --creep none recc.txt > /dev/null 2> minor_tcm_err.txt || fail "fit --kind tcm of the corner record"
-grep -q '^hyst fit: warning: recc.txt: the drive has 59 reversals inside its range (minor loops): f0 of every degree is biased,.* leave out --kind tcm to let fit compare E too, or fit --kind everett$' minor_tcm_err.txt ||
+grep -q '^hyst fit: warning: recc.txt: the drive has 59 reversals inside its range (minor loops): f0 of every degree is biased,.* leave out --kind tcm to let fit compare E too, or fit --method branches (f0 along every branch)$' minor_tcm_err.txt ||
     fail "no warning of f0 chosen on minor loops: $(cat minor_tcm_err.txt)"
 "$tool" fit --kind tcm --creep none rech.txt > /dev/null 2> major_tcm_err.txt || fail "fit --kind tcm of the sine record"
 ! grep -q 'minor loops): f0' major_tcm_err.txt || fail "warned of minor loops on major loops only: $(cat major_tcm_err.txt)"

@@ -34,7 +34,7 @@ escape_bytes) # terminal escape sequences and non-ASCII bytes are quoted as \xNN
     printf '0 1\n1 \033[31m\377A\033[0m\r\n' > esc.txt
     expect_fail "esc.txt:2: field 2: '\\x1b[31m\\xffA\\x1b[0m' is not a finite number" fit --degree 1 esc.txt
     no_raw_bytes
-    expect_fail "option --method: '\\x1b]0;title\\x07' is neither joint nor reflect" \
+    expect_fail "option --method: '\\x1b]0;title\\x07' is not joint, reflect or branches" \
         fit --degree 1 --method $'\033]0;title\007' esc.txt
     no_raw_bytes
     expect_fail "bad\\x1bname.txt: cannot open" sim --poly 1,0 --range 0,1 $'bad\033name.txt'

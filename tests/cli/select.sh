@@ -118,5 +118,33 @@ paste inv_minor.txt xm.txt | awk '{ d = $1 - $2; if (d < 0) d = -d; if (d > 1e-6
     fail "fit --kind everett"
 grep -qx 'kind everett' minor_k.hyst || fail "--kind everett: written as $(grep kind minor_k.hyst)"
 ! grep -q 'written as kind poly' fit_minor_k.txt || fail "--kind everett: said written as poly"
+# --method branches: that fit of kind poly at a given degree, its delay and creep option
+# chosen alike: the same model file, and no warning of minor loops; the joint estimator of
+# the same degree warns and points to it
+"$tool" fit --degree 3 --method branches --save minor_b.hyst minor.txt > fit_minor_b.txt \
+    2> minor_b_err.txt || fail "fit --method branches: $(cat minor_b_err.txt)"
+cmp minor_b.hyst minor.hyst || fail "--method branches: not the f0 the choice wrote"
+! grep -q 'minor loops' minor_b_err.txt || fail "--method branches warned: $(cat minor_b_err.txt)"
+grep -q 'f0 fitted as E of t-degree 0 along every branch' fit_minor_b.txt ||
+    fail "--method branches: the residual line: $(sed -n 4p fit_minor_b.txt)"
+"$tool" fit --degree 3 minor.txt > /dev/null 2> minor_j_err.txt || fail "fit --degree 3"
+grep -q 'f0 of --degree 3 is biased.*or fit --method branches (f0 along every branch)$' \
+    minor_j_err.txt || fail "--degree 3 on minor loops: $(cat minor_j_err.txt)"
+"$tool" fit --method branches --creep none minor.txt > fit_minor_bc.txt ||
+    fail "fit --method branches without --degree"
+grep -q 'kinds compared: poly, f0 fitted along every branch' fit_minor_bc.txt ||
+    fail "--method branches: $(grep chosen fit_minor_bc.txt)"
+! grep -q '^# candidate degree\|everett_grid\|t-degree [1-3] ' fit_minor_bc.txt ||
+    fail "--method branches compared another kind"
+"$tool" fit --degree 5 --method branches minor.txt 2> err.txt && fail "--method branches of degree 5"
+grep -q 'option --degree: 5 is above 4, the highest degree --method branches fits' err.txt ||
+    fail "degree 5: $(cat err.txt)"
+"$tool" fit --kind everett --method branches minor.txt 2> err.txt && fail "--kind everett --method branches"
+# inputs far from 0: the powers of x cancel; refused, nothing written
+awk '{ printf "%.17g %s\n", $1 + 1e6, $2 }' minor.txt > far.txt
+"$tool" fit --degree 3 --method branches --save far.hyst far.txt > /dev/null 2> err.txt &&
+    fail "--method branches far from 0"
+grep -q 'gives no f0 in powers of x on \[1000000, 1000040\]' err.txt || fail "far: $(cat err.txt)"
+[ ! -e far.hyst ] || fail "far: a model file written"
 echo "select: degree 3, delay 3 recovered; $(grep -c '^# candidate' fit.txt) candidates;" \
      "E of t-degree 0 on minor loops written as f0"

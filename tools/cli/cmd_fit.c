@@ -20,7 +20,8 @@
 
 static const char help[] =
     "usage: hyst fit [--kind tcm|everett|everett_grid] [--degree N] [--t-degree K]\n"
-    "                [--skip S] [--delay D] [--xcol I --ycol J] [--method joint|reflect]\n"
+    "                [--skip S] [--delay D] [--xcol I --ycol J]\n"
+    "                [--method joint|reflect|branches]\n"
     "                [--domain LO,HI] [--creep none|auto|TAU] [--rate none|auto|TAU]\n"
     "                [--header NAME] [--header-dir DIR] [--save MODEL]\n"
     "                [--validate OTHER] [--compare-pi N] [--decimal-comma] FILE\n"
@@ -58,7 +59,9 @@ static const char help[] =
     "  --xcol I       input column, 1-based (default 1)\n"
     "  --ycol J       output column, 1-based (default 2)\n"
     "  --method M     estimator of f0: joint (default): both branches in one\n"
-    "                 least-squares problem; reflect: the paper's Eq. 14\n"
+    "                 least-squares problem; reflect: the paper's Eq. 14; branches:\n"
+    "                 along every branch the record takes, minor loops included\n"
+    "                 (E of t-degree 0, written as f0; degree 1..4)\n"
     "  --domain LO,HI domain of the model (default: the range of the inputs used);\n"
     "                 samples outside it are ignored\n";
 
@@ -144,6 +147,7 @@ typedef struct fit_opts {
     int final_kind;       /* of the model fitted: FIT_POLY or FIT_EVERETT */
     int as_poly;          /* the choice E of t-degree 0 with kind poly compared: written as f0 */
     int have_method;      /* --method given */
+    int branches;         /* --method branches: f0 as E of t-degree 0, fitted along every branch */
     size_t operators;     /* --operators, 0 when not given */
     size_t compare_pi;    /* --compare-pi N, 0 when not given */
     double creep_tau;     /* --creep: -1 none, 0 auto (default), > 0 that time constant */
@@ -265,8 +269,10 @@ static int parse(fit_opts_t *o, int argc, char **argv)
                 o->cfg.method = HYST_IDENT_JOINT;
             } else if (strcmp(v, "reflect") == 0) {
                 o->cfg.method = HYST_IDENT_REFLECT;
+            } else if (strcmp(v, "branches") == 0) {
+                o->branches = 1;
             } else {
-                return cli_fail(a.cmd, "option --method: %s is neither joint nor reflect",
+                return cli_fail(a.cmd, "option --method: %s is not joint, reflect or branches",
                                 cli_quote(q, v));
             }
         } else if (cli_is(&a, "--domain")) {
@@ -381,9 +387,19 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     if (o->kind == FIT_KIND_GRID && o->have_method) {
         return cli_fail(a.cmd, "option --method does not apply to --kind everett_grid");
     }
-    o->final_kind = o->kind == FIT_KIND_EVERETT ? FIT_EVERETT
-                    : o->kind == FIT_KIND_GRID  ? FIT_GRID
-                                                : FIT_POLY;
+    if (o->branches && o->have_degree && o->cfg.degree > HYST_EVERETT_MAX_DEGREE) {
+        return cli_fail(a.cmd, "option --degree: %u is above %u, the highest degree --method "
+                               "branches fits (f0 as E of t-degree 0)",
+                        o->cfg.degree, (unsigned)HYST_EVERETT_MAX_DEGREE);
+    }
+    if (o->branches) { /* the symmetric kind fitted as E of the width alone, written as f0 */
+        o->t_degree = 0u;
+        o->have_t_degree = 1;
+        o->as_poly = 1;
+    }
+    o->final_kind = o->kind == FIT_KIND_EVERETT || o->branches ? FIT_EVERETT
+                    : o->kind == FIT_KIND_GRID                 ? FIT_GRID
+                                                               : FIT_POLY;
     if (o->kind != FIT_KIND_PI && o->operators != 0u) {
         return cli_fail(a.cmd, "option --operators needs --kind pi (or use --compare-pi N)");
     }
@@ -404,7 +420,8 @@ static size_t n_candidates, best_candidate;
 /* The kinds the automatic choice compares: both unless --kind names one. */
 static int candidate_kinds(const fit_opts_t *o)
 {
-    return o->kind == FIT_KIND_TCM       ? FIT_POLY
+    return o->branches                   ? FIT_EVERETT
+           : o->kind == FIT_KIND_TCM     ? FIT_POLY
            : o->kind == FIT_KIND_EVERETT ? FIT_EVERETT
            : o->kind == FIT_KIND_GRID    ? FIT_GRID
                                          : FIT_POLY | FIT_EVERETT | FIT_GRID;
@@ -442,8 +459,8 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
         return cli_fail("fit", "%s: no candidate degree gave %s that could predict %s (give "
                                "--degree)",
                         name, o->v != NULL ? o->vname : "the last third of the record",
-                        o->kind == FIT_KIND_EVERETT ? "an E the library accepts"
-                        : o->kind == FIT_KIND_TCM   ? "an increasing f0"
+                        o->kind == FIT_KIND_EVERETT                 ? "an E the library accepts"
+                        : o->kind == FIT_KIND_TCM || o->branches ? "an increasing f0"
                                                     : "an increasing f0 or an E the library "
                                                       "accepts");
     }
@@ -460,7 +477,7 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
     o->t_degree = candidates[best_candidate].t_degree;
     o->cfg.delay = candidates[best_candidate].delay;
     o->as_poly = o->final_kind == FIT_EVERETT && o->t_degree == 0u &&
-                 (candidate_kinds(o) & FIT_POLY) != 0;
+                 ((candidate_kinds(o) & FIT_POLY) != 0 || o->branches);
     o->resolution = fit_resolution(t->col[1], t->n, o->cfg.skip, o->cfg.delay, o->v);
     { /* a widened one: the domain of the model fitted on it all */
         double lo, hi;
@@ -551,7 +568,8 @@ static void warn_minor_loops(const fit_opts_t *o, const char *name, size_t minor
     (void)fprintf(stderr, "hyst fit: warning: %s: the drive has %lu reversal%s inside its "
                           "range (minor loops): f0 %s is biased, its fit taking every rising "
                           "sample for the major ascending branch and every falling one for the "
-                          "descending; leave out %s, or fit --kind everett\n",
+                          "descending; leave out %s, or fit --method branches (f0 along every "
+                          "branch)\n",
                   name, (unsigned long)minor, minor == 1u ? "" : "s", what,
                   o->have_degree ? "--degree to let fit choose"
                                  : "--kind tcm to let fit compare E too");
@@ -630,7 +648,8 @@ static int choose_delay(fit_opts_t *o, cli_table_t *t)
 /* The kinds the automatic choice compared, in words. */
 static const char *kinds_compared(const fit_opts_t *o)
 {
-    return candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID) ? "poly, everett, everett_grid"
+    return o->branches ? "poly, f0 fitted along every branch (E of t-degree 0)"
+           : candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID) ? "poly, everett, everett_grid"
            : candidate_kinds(o) == FIT_EVERETT                       ? "everett"
            : candidate_kinds(o) == FIT_GRID                          ? "everett_grid"
                                                                      : "poly";
@@ -1013,6 +1032,9 @@ static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, 
     if (o->final_kind == FIT_GRID) {
         (void)snprintf(tcm, sizeof tcm, "asymmetric TCM on a grid of %u intervals%s",
                        o->cfg.degree, terms);
+    } else if (o->as_poly) {
+        (void)snprintf(tcm, sizeof tcm, "TCM degree %u, f0 along every branch%s", o->cfg.degree,
+                       terms);
     } else if (o->final_kind == FIT_EVERETT) {
         (void)snprintf(tcm, sizeof tcm, "asymmetric (everett) TCM degree %u t-degree %u%s",
                        o->cfg.degree, o->t_degree, terms);
@@ -1394,6 +1416,13 @@ int cmd_fit(int argc, char **argv)
     }
     if (rc == 0 && o.as_poly && f.usable) {
         as_poly(&f);
+    }
+    if (rc == 0 && o.branches && f.usable && !f.from_everett) {
+        rc = cli_fail("fit", "%s: --method branches: E of degree %u fitted along the branches "
+                             "gives no f0 in powers of x on [%.9g, %.9g] (they cancel far from "
+                             "0, or f0 falls): shift the inputs, or fit --kind everett "
+                             "--t-degree 0",
+                      name, o.cfg.degree, f.model.lo, f.model.hi);
     }
     o.as_poly = f.from_everett;
     if (rc == 0 && o.compare_pi != 0u) {
