@@ -553,8 +553,9 @@ hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
  *        each diagonal cell and the others' sums by row and by column), or
  *        @p fit is NULL or holds fewer than two samples. Where it is 0,
  *        hyst_everett_grid_fit_solve() returns one non-negative solution of
- *        many, which fit the record alike and predict minor loops
- *        differently. Uses the solver's workspace; the solve may follow.
+ *        many, which fit the record alike and predict differently where
+ *        it did not go (minor loops, branches it did not take). Uses the
+ *        solver's workspace; the solve may follow.
  */
 int hyst_everett_grid_fit_determined(const hyst_everett_grid_fit_t *fit);
 

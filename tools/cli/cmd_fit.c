@@ -119,7 +119,8 @@ static const char help_output[] =
     "\n"
     "Output: line 1 the coefficients cN,...,c0 (highest power first; kind everett:\n"
     "E's terms), line 2 LO,HI, line 3 the RMS and max residual against the fitted\n"
-    "major loop (kind everett: of the model run over the record; output units),\n"
+    "major loop (kind everett, and f0 fitted along every branch: of the model run\n"
+    "over the record; output units),\n"
     "then '#' comment lines. --kind pi: line 1 the weights, line 2 the thresholds,\n"
     "line 3 the offset, line 4 the RMS and max residual, then '#' comment lines,\n"
     "one of them the 'hyst pi' options that run the model.\n"
@@ -145,7 +146,8 @@ typedef struct fit_opts {
     int decimal_comma;
     int kind;             /* --kind: FIT_KIND_AUTO (not given), _TCM, _EVERETT or _PI */
     int final_kind;       /* of the model fitted: FIT_POLY or FIT_EVERETT */
-    int as_poly;          /* the choice E of t-degree 0 with kind poly compared: written as f0 */
+    int as_poly;          /* E of t-degree 0 chosen with kind poly compared, or --method
+                             branches: written as f0 */
     int have_method;      /* --method given */
     int branches;         /* --method branches: f0 as E of t-degree 0, fitted along every branch */
     size_t operators;     /* --operators, 0 when not given */

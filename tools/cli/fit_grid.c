@@ -25,8 +25,9 @@
 const char fit_grid_undetermined[] =
     "the record's turning points do not determine every mass of this grid (major loops alone "
     "leave how the inner cells of 4 or more intervals share theirs open): these masses are one "
-    "solution of many that fit the record alike and predict minor loops differently; fewer "
-    "intervals, or a record whose reversals turn inside every interval";
+    "solution of many that fit the record alike and predict differently where it did not go "
+    "(minor loops, a branch it did not take); fewer intervals, or a record whose reversals "
+    "turn inside every interval";
 
 typedef struct {
     const double *x, *y;
