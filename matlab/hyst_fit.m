@@ -157,9 +157,10 @@ function f = hyst_fit(x, y, varargin)
       error('hyst:usage', ['hyst_fit: method ''branches'' fits kind ''poly'' (f0 along every ' ...
                            'branch), not kind ''%s'''], opts.kind);
     end
-    if ~isempty(opts.degree) && opts.degree > 4
-      error('hyst:usage', ['hyst_fit: method ''branches'' fits f0 of degree 1..4 (E of ' ...
-                           't-degree 0), not %d'], opts.degree);
+    config = hyst_mex('config');
+    if ~isempty(opts.degree) && opts.degree > config.everett_max_degree
+      error('hyst:usage', ['hyst_fit: method ''branches'' fits f0 of degree 1..%d (E of ' ...
+                           't-degree 0), not %d'], config.everett_max_degree, opts.degree);
     end
     opts.kind = 'everett';
     opts.tdegree = 0;

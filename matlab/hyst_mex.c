@@ -769,8 +769,10 @@ static void set_field(mxArray *s, const char *name, mxArray *v)
 /* config: the default table sizes of the compensators and f0's highest degree, as built. */
 static void run_config(mxArray *plhs[])
 {
-    static const char *fields[] = {"inv_table",     "everett_inv_rows", "everett_inv_intervals",
-                                   "inv_table_tol", "max_degree",       "fit_parsimony"};
+    static const char *fields[] = {"inv_table",          "everett_inv_rows",
+                                   "everett_inv_intervals", "inv_table_tol",
+                                   "max_degree",         "everett_max_degree",
+                                   "fit_parsimony"};
     mxArray *s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
     set_field(s, "inv_table", mxCreateDoubleScalar((double)HYST_INV_TABLE));
     set_field(s, "everett_inv_rows", mxCreateDoubleScalar((double)HYST_EVERETT_INV_ROWS));
@@ -778,6 +780,7 @@ static void run_config(mxArray *plhs[])
               mxCreateDoubleScalar((double)HYST_EVERETT_INV_INTERVALS));
     set_field(s, "inv_table_tol", mxCreateDoubleScalar((double)HYST_INV_TABLE_TOL));
     set_field(s, "max_degree", mxCreateDoubleScalar((double)HYST_MAX_DEGREE));
+    set_field(s, "everett_max_degree", mxCreateDoubleScalar((double)HYST_EVERETT_MAX_DEGREE));
     set_field(s, "fit_parsimony", mxCreateDoubleScalar(FIT_PARSIMONY));
     plhs[0] = s;
 }

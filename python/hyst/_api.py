@@ -700,7 +700,6 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     if delay is not None:
         delay = _samples("delay", delay)
     record = _check_record(x, y, skip, delay or 0)
-    # f0 of a given degree, or chosen among f0 alone: warned of below (its degree, or None)
     branches = method == "branches"
     if branches:  # f0 fitted along every branch: E of t-degree 0, written as f0
         if kind not in (None, "poly"):
@@ -710,6 +709,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
             raise ValueError(f"method='branches' fits f0 of degree 1..{EVERETT_MAX_DEGREE} "
                              f"(E of t-degree 0), not {degree!r}")
         kind, t_degree, method = "everett", 0, "joint"
+    # f0 of a given degree, or chosen among f0 alone: warned of below (its degree, or None)
     minor_loops = (kind == "poly" or (kind is None and degree is not None)) and record["minor"] > 0
     degree_given = degree
     if validate is not None:  # refused as the record is (hyst fit --validate)
