@@ -841,8 +841,6 @@ static void run_fit(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     plhs[0] = s;
 }
 
-/* fit_everett: prhs = x, y, degree, lo, hi, skip, delay[, t_degree]: only
- * E's terms w^i t^j with j <= t_degree fitted (default degree - 1: all). */
 /* poly_from_everett(degree, lo, hi, y_lo, terms): E of t-degree 0 as the
  * symmetric model's f0 in powers of x, highest first, as hyst fit writes
  * the E of t-degree 0 it chooses (fit_poly_from_everett()); [] when E has a
@@ -866,6 +864,8 @@ static void run_poly_from_everett(mxArray *plhs[], int nrhs, const mxArray *prhs
     }
 }
 
+/* fit_everett: prhs = x, y, degree, lo, hi, skip, delay[, t_degree]: only
+ * E's terms w^i t^j with j <= t_degree fitted (default degree - 1: all). */
 static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"kind", "degree", "t_degree", "lo", "hi", "y_lo",

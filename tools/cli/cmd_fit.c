@@ -147,7 +147,7 @@ typedef struct fit_opts {
     int kind;             /* --kind: FIT_KIND_AUTO (not given), _TCM, _EVERETT or _PI */
     int final_kind;       /* of the model fitted: FIT_POLY or FIT_EVERETT */
     int as_poly;          /* E of t-degree 0 chosen with kind poly compared, or --method
-                             branches: written as f0 */
+                             branches: to be written as f0; once fitted, whether it was */
     int have_method;      /* --method given */
     int branches;         /* --method branches: f0 as E of t-degree 0, fitted along every branch */
     size_t operators;     /* --operators, 0 when not given */
@@ -461,10 +461,10 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
         return cli_fail("fit", "%s: no candidate degree gave %s that could predict %s (give "
                                "--degree)",
                         name, o->v != NULL ? o->vname : "the last third of the record",
-                        o->kind == FIT_KIND_EVERETT                 ? "an E the library accepts"
+                        o->kind == FIT_KIND_EVERETT               ? "an E the library accepts"
                         : o->kind == FIT_KIND_TCM || o->branches ? "an increasing f0"
-                                                    : "an increasing f0 or an E the library "
-                                                      "accepts");
+                                                                 : "an increasing f0 or an E the "
+                                                                   "library accepts");
     }
     { /* a rate term, scored on the choice's hold-out (the drive and domain it was fitted on) */
         fit_candidate_t with_rate;
@@ -650,8 +650,10 @@ static int choose_delay(fit_opts_t *o, cli_table_t *t)
 /* The kinds the automatic choice compared, in words. */
 static const char *kinds_compared(const fit_opts_t *o)
 {
-    return o->branches ? "poly, f0 fitted along every branch (E of t-degree 0)"
-           : candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID) ? "poly, everett, everett_grid"
+    if (o->branches) {
+        return "poly, f0 fitted along every branch (E of t-degree 0)";
+    }
+    return candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID) ? "poly, everett, everett_grid"
            : candidate_kinds(o) == FIT_EVERETT                       ? "everett"
            : candidate_kinds(o) == FIT_GRID                          ? "everett_grid"
                                                                      : "poly";
@@ -997,19 +999,17 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
 }
 
 /* The chosen E of t-degree 0 written as the model it is, the symmetric one
- * (kind poly, whose compensator is a table), its f0 fit_poly_from_everett()'s
- * (the creep term's offset included); kept as E where that refuses it. */
+ * (kind poly, whose compensator is a table), its f0 fit_poly_from_everett()'s;
+ * kept as E where that refuses it. */
 static void as_poly(fit_final_t *f)
 {
     cli_model_t *m = &f->model;
-    hyst_everett_t e = f->ev.e;
     hyst_poly_t f0;
     unsigned k;
-    e.y_lo = m->y_lo;
-    if (!fit_poly_from_everett(&e, &f0)) {
+    f->ev.e.y_lo = m->y_lo; /* the E the model file holds: the creep term's offset included */
+    if (!fit_poly_from_everett(&f->ev.e, &f0)) {
         return;
     }
-    f->ev.e.y_lo = e.y_lo; /* the E the f0 written is */
     m->kind = CLI_MODEL_POLY;
     m->ncoef = f0.degree + 1u;
     for (k = 0u; k < m->ncoef; ++k) {
