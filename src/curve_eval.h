@@ -367,6 +367,61 @@ static NUM_T NUM_NAME(everett_from_lo)(const hyst_curve_t *curve, NUM_T w)
     return acc * w;
 }
 
+/* G^-1 of a spline at the output step e from lo: the lowest input step
+ * where G reaches e. The last knot below e (the knots' G never decrease),
+ * then the next knot if e is its G (a flat run starts there), else its
+ * piece's cubic bisected in t. G^-1(0) = 0 and G^-1(G(hi)) = hi - lo
+ * exactly; monotone in e: each decision is, and a piece's answers stay
+ * below the next knot. */
+static NUM_T NUM_NAME(spline_inv_g)(const hyst_curve_t *c, NUM_T e)
+{
+    const NUM_T *tab = c->u.spline.table.NUM_F;
+    const size_t n = c->u.spline.intervals;
+    const NUM_T h = c->u.spline.span.NUM_F / (NUM_T)n;
+    size_t k = 0u, top = n + 1u;
+    NUM_T a = 0, b = 1;
+    unsigned it;
+    if (!(e > 0)) {
+        return 0;
+    }
+    while (top - k > 1u) { /* tab[4 k] < e <= tab[4 top] (top n + 1: beyond hi) */
+        const size_t mid = k + (top - k) / 2u;
+        if (tab[4u * mid] < e) {
+            k = mid;
+        } else {
+            top = mid;
+        }
+    }
+    if (k == n) {
+        return c->u.spline.span.NUM_F;
+    }
+    if (tab[4u * (k + 1u)] <= e) {
+        return k + 1u == n ? c->u.spline.span.NUM_F : (NUM_T)(k + 1u) * h;
+    }
+    for (it = 0u; it < 2u * (unsigned)(sizeof(NUM_T) * CHAR_BIT); ++it) {
+        const NUM_T m = (a + b) * NUM_C(0.5);
+        if (!(m > a && m < b)) {
+            break;
+        }
+        if (NUM_CUBIC_(tab[4u * k], tab[4u * k + 1u], tab[4u * k + 2u], tab[4u * k + 3u], m) < e) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    return ((NUM_T)k + a) * h;
+}
+
+NUM_T NUM_NAME(spline_g_)(const hyst_curve_t *curve, NUM_T s)
+{
+    NUM_T v;
+    if (curve->kind == (unsigned)HYST_CURVE_SPLINE_INV) {
+        return NUM_NAME(spline_inv_g)(curve, s);
+    }
+    v = NUM_NAME(table_g)(curve->u.spline.table.NUM_F, s);
+    return v > 0 ? v : 0; /* G >= 0: a piece rounded below its knot's 0 */
+}
+
 NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
 {
     if (curve->kind == (unsigned)HYST_CURVE_POLY_INV) {
@@ -446,6 +501,10 @@ static NUM_T NUM_NAME(curve_g_impl)(const hyst_curve_t *curve, NUM_T d)
             }
         }
         return a;
+    }
+    if (curve->kind == (unsigned)HYST_CURVE_SPLINE ||
+        curve->kind == (unsigned)HYST_CURVE_SPLINE_INV) {
+        return NUM_NAME(spline_g_)(curve, d * curve->unit.NUM_F);
     }
     return curve->kind == (unsigned)HYST_CURVE_POLY
                ? NUM_NAME(horner)(curve->u.poly.a, curve->u.poly.degree, d * curve->unit.NUM_F)

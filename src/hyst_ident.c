@@ -838,8 +838,9 @@ int hyst_nnls_(const hyst_nnls_t *f, hyst_wide_t tol)
 }
 
 /* ---- The turning-point stack of E's identifications (hyst_util.h),
- * shared by the polynomial E's and the grid's (src/hyst_everett_fit.c,
- * src/hyst_everett_grid_fit.c) ---- */
+ * shared by the polynomial E's, the grid's and the spline's
+ * (src/hyst_everett_fit.c, src/hyst_everett_grid_fit.c,
+ * src/hyst_spline_fit.c) ---- */
 
 void hyst_tp_start_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t cols, hyst_wide_t *r_prev,
                     hyst_wide_t lo)
@@ -883,6 +884,198 @@ int hyst_tp_step_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t *n_tp, size_t cap
     *a = tp_x[n - 1u]; /* falling from a UTP: -E(UTP, x) */
     *b = x;
     return -1;
+}
+
+/* ---- Fits along the record's branches with y_lo free and weights >= 0
+ * (hyst_util.h, hyst_branch_fit_t), on that stack: the grid's and the
+ * spline's (src/hyst_everett_grid_fit.c, src/hyst_spline_fit.c). Normal
+ * equations in hyst_wide_t; the weights by hyst_nnls_ with y_lo
+ * eliminated. ---- */
+
+void hyst_branch_fit_start_(hyst_branch_fit_t *f, size_t cols, hyst_wide_t lo, hyst_wide_t hi,
+                            hyst_wide_t *work, size_t work_len)
+{
+    memset(f, 0, sizeof *f);
+    f->cols = cols;
+    f->lo = lo;
+    f->hi = hi;
+    /* fixed parts first, the TPs in the rest */
+    f->ata = work;
+    f->solver = f->ata + cols * cols;
+    f->aty = f->solver + 2u * cols * cols + 7u * cols;
+    f->r_prev = f->aty + cols;
+    f->capacity = (work_len - (size_t)(f->r_prev + cols - work)) / (cols + 1u);
+    f->tp_x = f->r_prev + cols;
+    f->tp_r = f->tp_x + f->capacity;
+    memset(work, 0, (size_t)(f->tp_x - work) * sizeof *work);
+    hyst_tp_start_(f->tp_x, f->tp_r, cols, f->r_prev, lo);
+    f->n_tp = 1u;
+    f->x_prev = lo;
+}
+
+hyst_status_t hyst_branch_fit_add_(hyst_branch_fit_t *f, hyst_wide_t x, hyst_wide_t y,
+                                   hyst_branch_terms_t terms, const void *ctx)
+{
+    const hyst_wide_t *r;
+    size_t i, j, cols;
+    if (!hyst_wide_is_finite(x)) {
+        return HYST_ERR_NONFINITE;
+    }
+    if (x < f->lo || x > f->hi) {
+        return HYST_ERR_DOMAIN;
+    }
+    if (x > f->x_prev || x < f->x_prev) {
+        hyst_wide_t a, b;
+        const int sign = hyst_tp_step_(f->tp_x, f->tp_r, &f->n_tp, f->capacity, f->cols,
+                                       f->r_prev, f->x_prev, x, &a, &b);
+        if (sign == 0) {
+            return HYST_ERR_NOSPACE;
+        }
+        terms(ctx, a, b, (hyst_wide_t)sign, f->r_prev);
+        f->x_prev = x;
+    }
+    if (!hyst_wide_is_finite(y)) {
+        return HYST_ERR_NONFINITE;
+    }
+    if (f->used == 0u) {
+        f->y_ref = y;
+    }
+    y -= f->y_ref;
+    r = f->r_prev;
+    cols = f->cols;
+    for (i = 0u; i < cols; ++i) {
+        if (r[i] != 0) { /* most grid cells are 0 on a branch: skip their rows */
+            for (j = 0u; j <= i; ++j) {
+                f->ata[i * cols + j] += r[i] * r[j];
+            }
+            f->aty[i] += r[i] * y;
+        }
+    }
+    f->yy += y * y;
+    ++f->used;
+    return HYST_OK;
+}
+
+/* The weights' normal equations with y_lo eliminated into h (m x m, m the
+ * weights) and c (m): H = A'A - s s' / n over the weights, s their sums;
+ * the largest diagonal entry returned. */
+static hyst_wide_t branch_centre(const hyst_branch_fit_t *f, hyst_wide_t *h, hyst_wide_t *c)
+{
+    const size_t cols = f->cols, m = cols - 1u;
+    const hyst_wide_t n = (hyst_wide_t)f->used;
+    hyst_wide_t big = 0;
+    size_t i, j;
+    for (i = 0u; i < m; ++i) {
+        const hyst_wide_t si = f->ata[(i + 1u) * cols];
+        for (j = 0u; j <= i; ++j) {
+            const hyst_wide_t v = f->ata[(i + 1u) * cols + j + 1u] - si * f->ata[(j + 1u) * cols] / n;
+            h[i * m + j] = v;
+            h[j * m + i] = v;
+        }
+        c[i] = f->aty[i + 1u] - si * f->aty[0] / n;
+        big = h[i * m + i] > big ? h[i * m + i] : big;
+    }
+    return big;
+}
+
+int hyst_branch_fit_determined_(const hyst_branch_fit_t *f)
+{
+    size_t m, i, j, k;
+    hyst_wide_t *h, *l;
+    if (f->used < 2u) {
+        return 0;
+    }
+    m = f->cols - 1u;
+    h = f->solver;
+    l = h + m * m + m; /* the factor where the solve keeps its weights and the rest */
+    (void)branch_centre(f, h, h + m * m);
+    for (i = 0u; i < m; ++i) { /* h = L L', each pivot above its diagonal's rounding */
+        for (j = 0u; j <= i; ++j) {
+            hyst_wide_t sum = h[i * m + j];
+            for (k = 0u; k < j; ++k) {
+                sum -= l[i * m + k] * l[j * m + k];
+            }
+            if (i > j) {
+                l[i * m + j] = sum / l[j * m + j];
+            } else if (sum > h[i * m + i] * HYST_WIDE_EPS * (hyst_wide_t)1e4) {
+                l[i * m + i] = HYST_WIDE_SQRT(sum);
+            } else {
+                return 0; /* a weight's column in the span of the others' */
+            }
+        }
+    }
+    return 1;
+}
+
+/* The centred Gram (the solver's first m^2 numbers) for the NNLS. */
+typedef struct {
+    const hyst_wide_t *h;
+    size_t m;
+} branch_centred_t;
+
+static hyst_wide_t branch_gram(const void *ctx, size_t i, size_t j)
+{
+    const branch_centred_t *c = (const branch_centred_t *)ctx;
+    return c->h[i * c->m + j];
+}
+
+hyst_status_t hyst_branch_fit_solve_(const hyst_branch_fit_t *f, const hyst_wide_t **w_out,
+                                     hyst_wide_t *y_lo, hyst_wide_t *rms)
+{
+    const size_t cols = f->cols, m = cols - 1u;
+    hyst_wide_t *h, *c, *w, n, big, syy, tol, rss, sum = 0, offset;
+    branch_centred_t ctx;
+    hyst_nnls_t p;
+    size_t i, j;
+    if (f->used < 2u) {
+        return HYST_ERR_SINGULAR;
+    }
+    n = (hyst_wide_t)f->used;
+    h = f->solver;
+    c = h + m * m;
+    w = c + m;
+    big = branch_centre(f, h, c);
+    syy = f->yy - f->aty[0] * f->aty[0] / n;
+    tol = HYST_WIDE_SQRT(big * (syy > 0 ? syy : 0)) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m);
+    ctx.h = h;
+    ctx.m = m;
+    p.n = m;
+    p.gram = branch_gram;
+    p.ctx = &ctx;
+    p.c = c;
+    p.w = w;
+    p.s = w + m;
+    p.g = w + 2u * m;
+    p.set = w + 3u * m;
+    p.b = w + 4u * m;
+    p.l = w + 5u * m; /* m x m: the rest of the solver's numbers */
+    p.most = m;
+    if (big > 0) {
+        (void)hyst_nnls_(&p, tol);
+    } else {
+        memset(w, 0, m * sizeof *w);
+    }
+    rss = syy;
+    offset = f->aty[0];
+    for (i = 0u; i < m; ++i) {
+        hyst_wide_t hw = 0;
+        for (j = 0u; j < m; ++j) {
+            hw += h[i * m + j] * w[j];
+        }
+        rss += w[i] * (hw - 2 * c[i]);
+        offset -= w[i] * f->ata[(i + 1u) * cols];
+        sum += w[i];
+    }
+    /* outputs so large that the normal equations overflow: no fit (a NaN
+     * residual would read as 0 below) */
+    if (!hyst_wide_is_finite(sum) || !hyst_wide_is_finite(rss) ||
+        !hyst_wide_is_finite(f->y_ref + offset / n)) {
+        return HYST_ERR_COEFF;
+    }
+    *w_out = w;
+    *y_lo = f->y_ref + offset / n;
+    *rms = HYST_WIDE_SQRT((rss > 0 ? rss : 0) / n);
+    return sum > 0 ? HYST_OK : HYST_ERR_NOT_MONOTONE;
 }
 
 static hyst_wide_t pi_gram_at(const void *ctx, size_t i, size_t j)

@@ -290,6 +290,31 @@ unsigned long hyst_crc_table_(unsigned long crc, hyst_cptr_t table, size_t n, un
     return crc_table(crc, table, n, num_type_of(variant));
 }
 
+/* The identity of a curve whose G is a table of cubic pieces (a tabulated
+ * inverse, a spline or its compensator): the forward polynomial's G (an
+ * inverse table's exact intervals), the span, then the pieces. */
+static unsigned long pieces_id(unsigned long crc, const hyst_curve_t *c, const format_t *f)
+{
+    const int spline = c->kind != (unsigned)HYST_CURVE_INV_TABLE;
+    const size_t n = spline ? c->u.spline.intervals : c->u.inv_table.intervals;
+    if (!spline) {
+        unsigned k;
+        crc = crc_word(crc, c->u.inv_table.fwd.degree);
+        for (k = 0u; k < c->u.inv_table.fwd.degree && k < HYST_MAX_DEGREE; ++k) {
+            crc = crc_num(crc, &c->u.inv_table.fwd.a[k], f->yt);
+        }
+    }
+    crc = crc_num(crc, spline ? &c->u.spline.span : &c->u.inv_table.span, f->yt);
+    crc = crc_word(crc, (unsigned long)n);
+    crc = crc_table(crc, spline ? c->u.spline.table : c->u.inv_table.table, HYST_INV_TABLE_LEN(n),
+                    f->yt);
+    if (f->yt == NUM_Q31) { /* the drive's format: its fraction bits and first code */
+        crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_bits);
+        crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_code_lo);
+    }
+    return crc;
+}
+
 /* Curve identity: everything that shapes the branches of this instance,
  * each kind's numbers here (not at attach): only a firmware that saves or
  * restores snapshots computes it. */
@@ -349,19 +374,9 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
         for (k = 0u; k <= HYST_INV_KNOTS; ++k) {
             crc = crc_num(crc, &c->u.poly_inv.knot_u[k], f->yt);
         }
-    } else if (c->kind == (unsigned)HYST_CURVE_INV_TABLE) {
-        crc = crc_word(crc, c->u.inv_table.fwd.degree);
-        for (k = 0u; k < c->u.inv_table.fwd.degree && k < HYST_MAX_DEGREE; ++k) {
-            crc = crc_num(crc, &c->u.inv_table.fwd.a[k], f->yt);
-        }
-        crc = crc_num(crc, &c->u.inv_table.span, f->yt);
-        crc = crc_word(crc, (unsigned long)c->u.inv_table.intervals);
-        crc = crc_table(crc, c->u.inv_table.table, HYST_INV_TABLE_LEN(c->u.inv_table.intervals),
-                        f->yt); /* the pieces */
-        if (f->yt == NUM_Q31) { /* the drive's format: its fraction bits and first code */
-            crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_bits);
-            crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_code_lo);
-        }
+    } else if (c->kind == (unsigned)HYST_CURVE_INV_TABLE || c->kind == (unsigned)HYST_CURVE_SPLINE ||
+               c->kind == (unsigned)HYST_CURVE_SPLINE_INV) {
+        crc = pieces_id(crc, c, f);
     } else if (c->kind == (unsigned)HYST_CURVE_PWL || c->kind == (unsigned)HYST_CURVE_PWL_INV) {
         size_t i;
         crc = crc_word(crc, (unsigned long)c->u.pwl.n);

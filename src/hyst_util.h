@@ -222,6 +222,9 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
  * HYST_OK or HYST_ERR_ARG. */
 hyst_status_t hyst_everett_grid_check_(const hyst_curve_t *curve);
 
+/* The same for a spline curve (HYST_CURVE_SPLINE, _INV; src/hyst_spline.c). */
+hyst_status_t hyst_spline_check_(const hyst_curve_t *curve);
+
 /* 1 if E increases in a and decreases in b on its whole triangle (the
  * check hyst_curve_everett_() makes, proved by Bernstein-Bezier
  * coefficients, subdivided where undecided). */
@@ -283,6 +286,31 @@ void hyst_tp_start_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t cols, hyst_wide
 int hyst_tp_step_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t *n_tp, size_t capacity,
                   size_t cols, hyst_wide_t *r_prev, hyst_wide_t x_prev, hyst_wide_t x,
                   hyst_wide_t *a, hyst_wide_t *b);
+
+/* The fits along the record's branches with y_lo free and weights >= 0
+ * (ident.h, hyst_branch_fit_t: the grid's masses, the spline's weights),
+ * on that stack. A kind's regressors of E(a, b), scaled by `sign`, added to
+ * r from its column 1 on. */
+typedef void (*hyst_branch_terms_t)(const void *ctx, hyst_wide_t a, hyst_wide_t b,
+                                    hyst_wide_t sign, hyst_wide_t *r);
+struct hyst_branch_fit;
+/* Lays out the caller's workspace (work_len checked against
+ * HYST_BRANCH_FIT_WORK(cols, 2) by the caller) for the domain [lo, hi],
+ * the record at lo. */
+void hyst_branch_fit_start_(struct hyst_branch_fit *f, size_t cols, hyst_wide_t lo, hyst_wide_t hi,
+                            hyst_wide_t *work, size_t work_len);
+/* One sample, the statuses of hyst_everett_grid_fit_add() (f not NULL). */
+hyst_status_t hyst_branch_fit_add_(struct hyst_branch_fit *f, hyst_wide_t x, hyst_wide_t y,
+                                   hyst_branch_terms_t terms, const void *ctx);
+/* The weights (cols - 1 of them, in the solver's workspace: *w) by NNLS
+ * with y_lo eliminated, y_lo and the residual RMS: HYST_ERR_SINGULAR
+ * (fewer than two samples), HYST_ERR_COEFF (a weight, y_lo or the
+ * residual not finite), HYST_ERR_NOT_MONOTONE (every weight 0) or HYST_OK
+ * (f not NULL). */
+hyst_status_t hyst_branch_fit_solve_(const struct hyst_branch_fit *f, const hyst_wide_t **w,
+                                     hyst_wide_t *y_lo, hyst_wide_t *rms);
+/* 1 if the samples determine every weight (hyst_everett_grid_fit_determined()). */
+int hyst_branch_fit_determined_(const struct hyst_branch_fit *f);
 
 /* f0 (coefficients c, highest power first, degree n) on [lo, hi] as a
  * polynomial in u = (x - lo) / (hi - lo): g[k] multiplies u^k. */
@@ -426,6 +454,12 @@ hyst_status_t hyst_q31_inverse_table_(hyst_q31_t *table, size_t intervals,
 float hyst_f32_curve_g_other_(const hyst_curve_t *curve, float d);
 #if HYST_ENABLE_F64
 double hyst_f64_curve_g_other_(const hyst_curve_t *curve, double d);
+#endif
+/* G of a spline at s (knot intervals from lo), or of its inverse at the
+ * output step (src/curve_eval.h; src/kind_spline.h's g). */
+float hyst_f32_spline_g_(const hyst_curve_t *curve, float s);
+#if HYST_ENABLE_F64
+double hyst_f64_spline_g_(const hyst_curve_t *curve, double s);
 #endif
 
 #endif /* HYST_UTIL_H */

@@ -51,6 +51,7 @@ static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
 #define TCM_REAL_INPUT 1
 #define TCM_ADMIT(S, x, out) NUM_NAME(admit)((S), (x), (out))
 #define TCM_CURVE_G(c, d) NUM_NAME(curve_g_other_)((c), (d))
+#define TCM_SPLINE_G(c, s) NUM_NAME(spline_g_)((c), (s))
 #ifdef NUM_KEY_T
 #define TCM_KEY_T NUM_KEY_T
 #define TCM_UKEY_T NUM_UKEY_T

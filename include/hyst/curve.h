@@ -64,7 +64,12 @@ typedef enum hyst_curve_kind {
      *  (hyst_everett_grid_t); branches piecewise quadratic */
     HYST_CURVE_EVERETT_GRID = 9,
     /** its compensator: each branch's quadratic pieces solved in closed form */
-    HYST_CURVE_EVERETT_GRID_INV = 10
+    HYST_CURVE_EVERETT_GRID_INV = 10,
+    /** f0 a monotone cubic spline on uniform knots (hyst_spline_t): cubic
+     *  pieces in a table (inline) */
+    HYST_CURVE_SPLINE = 11,
+    /** its compensator: each piece's cubic solved by bisection */
+    HYST_CURVE_SPLINE_INV = 12
 } hyst_curve_kind_t;
 
 /** Numbers of the table of an HYST_CURVE_INV_TABLE curve with @p intervals
@@ -134,6 +139,41 @@ typedef struct hyst_everett_grid {
     /** weight[i (i + 1) / 2 + j], j <= i < K: cell (i, j)'s mass, >= 0 */
     hyst_wide_t weight[HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS)];
 } hyst_everett_grid_t;
+
+/** Most knot intervals of a spline f0 (hyst_spline_t). */
+#define HYST_SPLINE_MAX_INTERVALS 32
+/** Numbers of the table of an HYST_CURVE_SPLINE curve of @p k knot
+ *  intervals (hyst_*_curve_from_spline()): four per interval, four for hi. */
+#define HYST_SPLINE_TABLE_LEN(k) (4u * ((k) + 1u))
+
+/**
+ * @brief A symmetric model whose f0 is a cubic spline on uniform knots:
+ *        near-steps and saturation that a polynomial of low degree cannot
+ *        follow, at the per-sample cost of one cubic.
+ *
+ * The knots are x_k = lo + k (hi - lo) / K, k = 0..K. Between two knots f0
+ * is the cubic (Hermite) that takes value[k] and slope[k] at x_k and
+ * value[k + 1], slope[k + 1] at x_(k + 1): continuous with its first
+ * derivative. Slopes are in output units per input unit; MATLAB's pchip()
+ * and SciPy's PchipInterpolator give monotone ones. The curve checks that
+ * every piece increases (hyst_*_curve_from_spline()). Example, f0 = x^3 + x
+ * on [0, 1] with two pieces:
+ * @code
+ * static const hyst_spline_t f0 = { 2, 0.0, 1.0,
+ *     { 0.0, 0.625, 2.0 }, { 1.0, 1.75, 4.0 } };
+ * @endcode
+ */
+typedef struct hyst_spline {
+    unsigned intervals; /**< K, 1..HYST_SPLINE_MAX_INTERVALS */
+    hyst_wide_t lo;     /**< lower end of the domain */
+    hyst_wide_t hi;     /**< upper end, hi > lo */
+    hyst_wide_t value[HYST_SPLINE_MAX_INTERVALS + 1]; /**< f0(x_k), k = 0..K */
+    hyst_wide_t slope[HYST_SPLINE_MAX_INTERVALS + 1]; /**< f0'(x_k), >= 0 */
+} hyst_spline_t;
+
+/** @brief f0(x) of a spline (x clamped to [lo, hi]), in hyst_wide_t: for
+ *         tools and tests. 0 for NULL. */
+hyst_wide_t hyst_spline_eval(const hyst_spline_t *f0, hyst_wide_t x);
 
 /**
  * @brief Polynomial branch shape on u in [0, 1]:
@@ -244,6 +284,15 @@ typedef struct hyst_curve {
             hyst_cptr_t table;
             unsigned intervals; /**< K */
         } everett_grid; /**< EVERETT_GRID and EVERETT_GRID_INV */
+        struct {
+            /** the caller's table, HYST_SPLINE_TABLE_LEN(intervals) numbers:
+             *  interval k holds c0..c3 of G(s) = c0 + t (c1 + t (c2 + t c3)),
+             *  s = (x - lo) intervals / (hi - lo) of the forward curve,
+             *  k = floor(s), t = s - k; the last four G(hi - lo), 0, 0, 0 */
+            hyst_cptr_t table;
+            size_t intervals;  /**< K */
+            hyst_num_t span;   /**< the forward curve's hi - lo */
+        } spline; /**< SPLINE and SPLINE_INV */
         struct {
             hyst_cptr_t x;  /**< the curve's breakpoints (caller's array) */
             hyst_cptr_t y;  /**< its values (caller's array) */
@@ -393,6 +442,60 @@ hyst_status_t hyst_f64_curve_from_everett_grid_(hyst_curve_t *curve, const hyst_
     hyst_f64_curve_from_everett_grid_((curve), (g), (table), (table_len), HYST_LAYOUT)
 #endif
 /**@}*/
+
+/**
+ * @name Spline curve
+ * @brief Validates a spline f0 (hyst_spline_t) and prepares its table of
+ *        cubic pieces.
+ *
+ * Checks, in this order: NULL pointers, the layout, intervals in
+ * 1..HYST_SPLINE_MAX_INTERVALS (HYST_ERR_DEGREE), finite lo < hi with a
+ * finite span, also in the variant's type (HYST_ERR_DOMAIN), finite values
+ * and slopes (HYST_ERR_COEFF), that f0 increases: every slope >= 0, every
+ * piece's slope >= 0 between its knots (exact for a cubic, within 64
+ * roundings of the piece's scale) and value[K] > value[0]
+ * (HYST_ERR_NOT_INCREASING), @p table_len >=
+ * HYST_SPLINE_TABLE_LEN(intervals) (HYST_ERR_NOSPACE), and every tabulated
+ * number finite in the variant's type (HYST_ERR_COEFF). The curve keeps a
+ * pointer to @p table, which must outlive it, unchanged; it runs on
+ * hyst_*_init_curve(): a sample on the fast path costs one cubic, its
+ * piece found by one multiplication. Its compensator:
+ * hyst_curve_spline_inverse(); hyst_curve_check(), hyst_curve_inverse()
+ * and the tables' builders answer HYST_ERR_ARG for the kind.
+ * @return HYST_OK or the first failed check; @p curve and @p table written
+ *         only on success (the table, then the curve).
+ */
+/**@{*/
+hyst_status_t hyst_f32_curve_from_spline_(hyst_curve_t *curve, const hyst_spline_t *f0,
+                                          float *table, size_t table_len, unsigned long layout);
+#define hyst_f32_curve_from_spline(curve, f0, table, table_len) \
+    hyst_f32_curve_from_spline_((curve), (f0), (table), (table_len), HYST_LAYOUT)
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_from_spline_(hyst_curve_t *curve, const hyst_spline_t *f0,
+                                          double *table, size_t table_len, unsigned long layout);
+#define hyst_f64_curve_from_spline(curve, f0, table, table_len) \
+    hyst_f64_curve_from_spline_((curve), (f0), (table), (table_len), HYST_LAYOUT)
+#endif
+/**@}*/
+
+/**
+ * @brief The compensator of a spline curve (hyst_*_curve_from_spline()):
+ *        its input the desired output on [f0(lo), f0(hi)], its output the
+ *        drive; of a compensator, the spline again.
+ *
+ * The same table: per sample, the last knot below the desired output
+ * (a binary search) and its piece's cubic solved by bisection, every
+ * sample out of line; monotone, exact at the knots. A flat piece has no
+ * inverse (HYST_ERR_NOT_INVERTIBLE). hyst_curve_inverse() answers
+ * HYST_ERR_ARG for this kind, so that a firmware inverting a polynomial
+ * links none of it.
+ * @param[out] inv prepared inverse curve (may be the same object as @p fwd).
+ * @param[in]  fwd a spline curve or its compensator.
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT, HYST_ERR_ARG (not a
+ *         prepared spline curve) or HYST_ERR_NOT_INVERTIBLE; @p inv
+ *         written only on success.
+ */
+hyst_status_t hyst_curve_spline_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
 
 /**
  * @name The compensator of an asymmetric curve on a grid
@@ -724,6 +827,7 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 #define hyst_curve_from_everett HYST_DEFAULT_NAME_(curve_from_everett)
 #define hyst_curve_from_everett_grid HYST_DEFAULT_NAME_(curve_from_everett_grid)
 #define hyst_curve_everett_grid_inverse HYST_DEFAULT_NAME_(curve_everett_grid_inverse)
+#define hyst_curve_from_spline HYST_DEFAULT_NAME_(curve_from_spline)
 #define hyst_curve_from_pwl HYST_DEFAULT_NAME_(curve_from_pwl)
 #define hyst_curve_eval HYST_DEFAULT_NAME_(curve_eval)
 #define hyst_curve_g HYST_DEFAULT_NAME_(curve_g)

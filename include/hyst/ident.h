@@ -471,32 +471,29 @@ hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett
 hyst_status_t hyst_everett_fit_solve_unconstrained(const hyst_everett_fit_t *fit,
                                                    hyst_everett_t *e, hyst_wide_t *rms);
 
-/** Columns of a grid fit of @p k knot intervals: y_lo and each cell's mass. */
-#define HYST_EVERETT_GRID_FIT_COLS(k) (HYST_EVERETT_GRID_CELLS(k) + 1u)
+/**
+ * hyst_wide_t entries of the workspace of a fit along the record's branches
+ * (the grid's, the spline's) of @p cols columns whose input record stacks at
+ * most @p capacity turning points: each one's input and regressors, the
+ * normal equations and the solver's (3 cols^2 + cols (capacity + 10) +
+ * capacity).
+ */
+#define HYST_BRANCH_FIT_WORK(cols, capacity)                                                  \
+    ((size_t)(capacity) * ((size_t)(cols) + 1u) + 3u * (size_t)(cols) * (size_t)(cols) +      \
+     9u * (size_t)(cols))
 
 /**
- * hyst_wide_t entries of the workspace of a grid fit (hyst_everett_grid_fit_init())
- * of @p k knot intervals whose input record stacks at most @p capacity
- * turning points: each one's input and regressors, the normal equations and
- * the solver's (3 cols^2 + cols (capacity + 10) + capacity).
+ * @brief What a fit along the record's branches keeps (inside
+ *        hyst_everett_grid_fit_t and hyst_spline_fit_t; private): the
+ *        turning-point stack in the caller's workspace and the normal
+ *        equations of y_lo (column 0, free) and weights >= 0. As for the
+ *        polynomial E (hyst_everett_fit_t), the model's output is y_lo plus
+ *        a signed sum of E over the stacked turning points, linear in the
+ *        weights: each turning point keeps the regressors of its output.
  */
-#define HYST_EVERETT_GRID_FIT_WORK(k, capacity)                                               \
-    ((size_t)(capacity) * (HYST_EVERETT_GRID_FIT_COLS(k) + 1u) +                              \
-     3u * (size_t)HYST_EVERETT_GRID_FIT_COLS(k) * HYST_EVERETT_GRID_FIT_COLS(k) +             \
-     9u * (size_t)HYST_EVERETT_GRID_FIT_COLS(k))
-
-/**
- * @brief A grid fit in progress (hyst_everett_grid_fit_init()): the cells'
- *        masses of an E on a grid (hyst_everett_grid_t) by least squares
- *        with every mass >= 0. Fields are private. As for the polynomial E
- *        (hyst_everett_fit_t), the model's output is y_lo plus a signed sum
- *        of E over the stacked turning points, linear in the masses: each
- *        turning point keeps the regressors of its output.
- */
-typedef struct hyst_everett_grid_fit {
-    unsigned intervals;  /**< K */
-    hyst_wide_t knots[HYST_EVERETT_GRID_MAX_INTERVALS + 1]; /**< the grid */
-    size_t cols;         /**< 1 + the cells */
+typedef struct hyst_branch_fit {
+    size_t cols;         /**< 1 + the weights */
+    hyst_wide_t lo, hi;  /**< the domain */
     hyst_wide_t *tp_x;   /**< caller's workspace: TP inputs (capacity) */
     hyst_wide_t *tp_r;   /**< and their regressors (capacity x cols) */
     hyst_wide_t *r_prev; /**< the last input's regressors (cols) */
@@ -509,6 +506,29 @@ typedef struct hyst_everett_grid_fit {
     hyst_wide_t y_ref;   /**< the first output: aty and yy take y - y_ref */
     hyst_wide_t yy;      /**< sum of (y - y_ref)^2 */
     size_t used;         /**< samples in the normal equations */
+} hyst_branch_fit_t;
+
+/** Columns of a grid fit of @p k knot intervals: y_lo and each cell's mass. */
+#define HYST_EVERETT_GRID_FIT_COLS(k) (HYST_EVERETT_GRID_CELLS(k) + 1u)
+
+/**
+ * hyst_wide_t entries of the workspace of a grid fit (hyst_everett_grid_fit_init())
+ * of @p k knot intervals whose input record stacks at most @p capacity
+ * turning points (HYST_BRANCH_FIT_WORK()).
+ */
+#define HYST_EVERETT_GRID_FIT_WORK(k, capacity)                                               \
+    HYST_BRANCH_FIT_WORK(HYST_EVERETT_GRID_FIT_COLS(k), capacity)
+
+/**
+ * @brief A grid fit in progress (hyst_everett_grid_fit_init()): the cells'
+ *        masses of an E on a grid (hyst_everett_grid_t) by least squares
+ *        with every mass >= 0, along the record's branches
+ *        (hyst_branch_fit_t). Fields are private.
+ */
+typedef struct hyst_everett_grid_fit {
+    unsigned intervals;  /**< K */
+    hyst_wide_t knots[HYST_EVERETT_GRID_MAX_INTERVALS + 1]; /**< the grid */
+    hyst_branch_fit_t branch; /**< the stack and the normal equations, cols 1 + the cells */
 } hyst_everett_grid_fit_t;
 
 /**
@@ -575,6 +595,77 @@ int hyst_everett_grid_fit_determined(const hyst_everett_grid_fit_t *fit);
 hyst_status_t hyst_everett_grid_knots(const hyst_wide_t *x, const hyst_wide_t *y, size_t n,
                                       hyst_wide_t lo, hyst_wide_t hi, unsigned intervals,
                                       hyst_wide_t *knots, hyst_wide_t *work, size_t work_len);
+
+/** Columns of a spline fit of @p k knot intervals: y_lo and K + 2 weights. */
+#define HYST_SPLINE_FIT_COLS(k) ((k) + 3u)
+
+/**
+ * hyst_wide_t entries of the workspace of a spline fit (hyst_spline_fit_init())
+ * of @p k knot intervals whose input record stacks at most @p capacity
+ * turning points (HYST_BRANCH_FIT_WORK()).
+ */
+#define HYST_SPLINE_FIT_WORK(k, capacity) HYST_BRANCH_FIT_WORK(HYST_SPLINE_FIT_COLS(k), capacity)
+
+/**
+ * @brief A spline fit in progress (hyst_spline_fit_init()): the spline f0
+ *        (hyst_spline_t) of the symmetric model along every branch of the
+ *        record, minor loops included. Fields are private.
+ *
+ * The branch from a turning point (b, y_b) rises as y_b + g(x - b) and
+ * from (a, y_a) falls as y_a - g(a - x), g(d) = f0(lo + d) - f0(lo): the
+ * output is y_lo plus a signed sum of g over the stacked turning points,
+ * as the grid fit's is of E(a, b) = g(a - b). f0 = y_lo + sum w_j I_j,
+ * j = 0..K+1, I_j the integral from lo of the j-th quadratic B-spline on
+ * the uniform knots (cubic I-splines): linear in the weights w, f0 a C2
+ * cubic spline, increasing where every w_j >= 0 (the constraint).
+ */
+typedef struct hyst_spline_fit {
+    unsigned intervals;       /**< K */
+    hyst_wide_t scale;        /**< K / (hi - lo): knot intervals per input unit */
+    hyst_branch_fit_t branch; /**< the stack and the normal equations (the domain) */
+} hyst_spline_fit_t;
+
+/**
+ * @brief Starts a spline fit of @p intervals uniform knot intervals on
+ *        [@p lo, @p hi], the input record starting at lo (as an instance
+ *        after reset).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_DEGREE (intervals outside
+ *         1..HYST_SPLINE_MAX_INTERVALS), HYST_ERR_DOMAIN (lo, hi not finite,
+ *         lo >= hi, or a span or knot spacing the type does not hold),
+ *         HYST_ERR_NOSPACE (work_len below HYST_SPLINE_FIT_WORK(intervals, 2)).
+ */
+hyst_status_t hyst_spline_fit_init(hyst_spline_fit_t *fit, unsigned intervals, hyst_wide_t lo,
+                                   hyst_wide_t hi, hyst_wide_t *work, size_t work_len);
+
+/**
+ * @brief Moves the record's input to @p x and adds the row (regressors at x,
+ *        y) to the normal equations.
+ * @return as hyst_everett_grid_fit_add(): HYST_OK; HYST_ERR_NONFINITE (y NaN
+ *         or infinite: the input still moves; x NaN: ignored);
+ *         HYST_ERR_DOMAIN (x outside [lo, hi]: ignored); HYST_ERR_NOSPACE
+ *         (more turning points than the workspace holds); HYST_ERR_NULL.
+ */
+hyst_status_t hyst_spline_fit_add(hyst_spline_fit_t *fit, hyst_wide_t x, hyst_wide_t y);
+
+/**
+ * @brief Solves for the weights (each >= 0: Lawson and Hanson's
+ *        non-negative least squares on the normal equations, y_lo free)
+ *        into @p f0 (the knots' values f0(x_k) and slopes f0'(x_k), in
+ *        output units per input unit: the Hermite pieces are the fitted
+ *        cubic spline itself) and the residual RMS over the samples used.
+ *        Every slope is >= 0 and every piece increases, but for the
+ *        values' rounding: an offset far above the range may still make
+ *        the curve refuse a flat piece.
+ * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_SINGULAR (fewer than two
+ *         samples); HYST_ERR_COEFF (a weight, value, slope or the residual
+ *         not finite: outputs so large that the normal equations
+ *         overflow); HYST_ERR_NOT_MONOTONE (f0 flat: every weight 0, or
+ *         value[K] not above value[0] in the type: outputs that never rise;
+ *         @p f0 and @p rms hold the fit all the same). @p f0 and @p rms not
+ *         written on another error.
+ */
+hyst_status_t hyst_spline_fit_solve(const hyst_spline_fit_t *fit, hyst_spline_t *f0,
+                                    hyst_wide_t *rms);
 
 #ifdef __cplusplus
 }

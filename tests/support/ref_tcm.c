@@ -8,6 +8,7 @@ void ref_init(ref_tcm_t *r, const double *c, unsigned degree, double lo, double 
         r->c[k] = c[k];
     }
     r->degree = degree;
+    r->knots = 0;
     r->lo = lo;
     r->hi = hi;
     r->n = 1;
@@ -30,10 +31,53 @@ void ref_init_inverse(ref_tcm_t *r, const double *c, unsigned degree, double lo,
     r->y[0] = r->yp = lo;
 }
 
+void ref_init_spline(ref_tcm_t *r, unsigned intervals, const double *value, const double *slope,
+                     double lo, double hi, int inverse)
+{
+    unsigned k;
+    for (k = 0; k <= intervals; ++k) {
+        r->sv[k] = value[k];
+        r->ss[k] = slope[k];
+    }
+    r->degree = 0;
+    r->c[0] = 0.0;
+    r->knots = intervals + 1u;
+    r->lo = r->flo = lo;
+    r->hi = r->fhi = hi;
+    r->inverse = inverse;
+    if (inverse) {
+        r->lo = ref_f0(r, lo);
+        r->hi = ref_f0(r, hi);
+    }
+    r->n = 1;
+    r->x[0] = r->xp = r->lo;
+    r->y[0] = r->yp = inverse ? lo : ref_f0(r, lo);
+}
+
+/* The Hermite basis on the interval holding x. */
+static double spline_f0(const ref_tcm_t *r, double x)
+{
+    const unsigned n = r->knots - 1u;
+    const double h = (r->fhi - r->flo) / n;
+    unsigned k = 0;
+    double t, t2, t3;
+    while (k + 1u < n && x >= r->flo + (k + 1u) * h) {
+        ++k;
+    }
+    t = (x - (r->flo + k * h)) / h;
+    t2 = t * t;
+    t3 = t2 * t;
+    return (2 * t3 - 3 * t2 + 1) * r->sv[k] + (t3 - 2 * t2 + t) * h * r->ss[k] +
+           (-2 * t3 + 3 * t2) * r->sv[k + 1u] + (t3 - t2) * h * r->ss[k + 1u];
+}
+
 double ref_f0(const ref_tcm_t *r, double x)
 {
     double acc = 0.0;
     unsigned k;
+    if (r->knots > 0u) {
+        return spline_f0(r, x);
+    }
     for (k = 0; k <= r->degree; ++k) {
         acc = acc * x + r->c[k];
     }

@@ -1,0 +1,227 @@
+/* SPDX-License-Identifier: MIT */
+/* The spline kind's set-up (curve.h, hyst_spline_t): a cubic Hermite f0 on
+ * uniform knots, proved increasing piece by piece and written as the table
+ * of cubic pieces the engine's fast path evaluates (G in s, s the input in
+ * knot intervals from lo), the same form as a tabulated inverse's. */
+#include <string.h>
+
+#include "hyst_util.h"
+
+/* Piece k's cubic in t in [0, 1] from the knots' values and slopes, h the
+ * knot spacing: c[0] + t (c[1] + t (c[2] + t c[3])) - value[k]. */
+static void piece(const hyst_spline_t *f0, unsigned k, hyst_wide_t h, hyst_wide_t *c)
+{
+    const hyst_wide_t rise = f0->value[k + 1u] - f0->value[k];
+    const hyst_wide_t m0 = h * f0->slope[k], m1 = h * f0->slope[k + 1u];
+    c[0] = 0;
+    c[1] = m0;
+    c[2] = 3 * rise - 2 * m0 - m1;
+    c[3] = m0 + m1 - 2 * rise;
+}
+
+hyst_wide_t hyst_spline_eval(const hyst_spline_t *f0, hyst_wide_t x)
+{
+    hyst_wide_t c[4], s, t;
+    unsigned k;
+    if (f0 == NULL || f0->intervals < 1u || f0->intervals > HYST_SPLINE_MAX_INTERVALS) {
+        return 0;
+    }
+    x = x < f0->lo ? f0->lo : (x > f0->hi ? f0->hi : x);
+    s = (x - f0->lo) / (f0->hi - f0->lo) * (hyst_wide_t)f0->intervals;
+    k = (unsigned)s;
+    if (k >= f0->intervals) {
+        return f0->value[f0->intervals];
+    }
+    t = s - (hyst_wide_t)k;
+    piece(f0, k, (f0->hi - f0->lo) / (hyst_wide_t)f0->intervals, c);
+    return f0->value[k] + t * (c[1] + t * (c[2] + t * c[3]));
+}
+
+/* Whether piece c (as piece() gives it) does not decrease on [0, 1]: its
+ * slope c1 + 2 c2 t + 3 c3 t^2 at both ends (the knots' slopes, checked
+ * >= 0 exactly by the caller) and, where the parabola opens upwards with
+ * its vertex inside, at the vertex, within `tol`. */
+static int piece_increasing(const hyst_wide_t *c, hyst_wide_t tol)
+{
+    if (c[3] > 0 && -c[2] > 0 && -c[2] < 3 * c[3]) { /* vertex t* = -c2 / (3 c3) in (0, 1) */
+        return c[1] - c[2] * c[2] / (3 * c[3]) >= -tol;
+    }
+    return 1;
+}
+
+static hyst_status_t spline_check(const hyst_spline_t *f0, unsigned variant)
+{
+    const unsigned n = f0->intervals;
+    hyst_wide_t h, c[4];
+    hyst_num_t lo, hi, probe;
+    unsigned k;
+    if (n < 1u || n > HYST_SPLINE_MAX_INTERVALS) {
+        return HYST_ERR_DEGREE;
+    }
+    if (!hyst_wide_is_finite(f0->lo) || !hyst_wide_is_finite(f0->hi) || !(f0->lo < f0->hi) ||
+        !hyst_wide_is_finite(f0->hi - f0->lo) || !hyst_num_set(&lo, variant, f0->lo) ||
+        !hyst_num_set(&hi, variant, f0->hi) || !hyst_num_set(&probe, variant, f0->hi - f0->lo) ||
+        !hyst_num_set(&probe, variant, (hyst_wide_t)n / (f0->hi - f0->lo)) ||
+        !(hyst_num_get(&lo, variant) < hyst_num_get(&hi, variant))) {
+        return HYST_ERR_DOMAIN; /* the span overflows, or lo and hi round together */
+    }
+    for (k = 0u; k <= n; ++k) {
+        if (!hyst_wide_is_finite(f0->value[k]) || !hyst_wide_is_finite(f0->slope[k])) {
+            return HYST_ERR_COEFF;
+        }
+    }
+    h = (f0->hi - f0->lo) / (hyst_wide_t)n;
+    for (k = 0u; k <= n; ++k) {
+        if (!(f0->slope[k] >= 0)) {
+            return HYST_ERR_NOT_INCREASING;
+        }
+    }
+    for (k = 0u; k < n; ++k) {
+        hyst_wide_t scale;
+        piece(f0, k, h, c);
+        if (!hyst_wide_is_finite(c[1]) || !hyst_wide_is_finite(c[2]) || !hyst_wide_is_finite(c[3])) {
+            return HYST_ERR_COEFF;
+        }
+        /* 64 roundings of the piece's scale, as the polynomial kind's proof */
+        scale = hyst_wide_abs(f0->value[k + 1u] - f0->value[k]) + c[1] + h * f0->slope[k + 1u];
+        if (!piece_increasing(c, scale * 64 * HYST_WIDE_EPS)) {
+            return HYST_ERR_NOT_INCREASING;
+        }
+    }
+    if (!(f0->value[n] > f0->value[0])) {
+        return HYST_ERR_NOT_INCREASING; /* constant */
+    }
+    return HYST_OK;
+}
+
+static hyst_status_t curve_spline(hyst_curve_t *curve, const hyst_spline_t *f0, hyst_ptr_t table,
+                                  size_t table_len, unsigned variant, unsigned long layout)
+{
+    hyst_curve_t out;
+    hyst_wide_t h, c[4];
+    hyst_status_t st;
+    unsigned n, k, pass;
+    int finite = 1;
+    if (curve == NULL || f0 == NULL || table.f32 == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (layout != HYST_LAYOUT) {
+        return HYST_ERR_LAYOUT;
+    }
+    st = spline_check(f0, variant);
+    if (st != HYST_OK) {
+        return st;
+    }
+    n = f0->intervals;
+    if (table_len < HYST_SPLINE_TABLE_LEN((size_t)n)) {
+        return HYST_ERR_NOSPACE;
+    }
+    h = (f0->hi - f0->lo) / (hyst_wide_t)n;
+    /* pass 0 checks every number in the variant's type, pass 1 writes them:
+     * the table is written only when the curve will be */
+    for (pass = 0u; pass < 2u; ++pass) {
+        for (k = 0u; k <= n; ++k) {
+            hyst_num_t v;
+            unsigned j;
+            if (k < n) {
+                piece(f0, k, h, c);
+            } else {
+                c[1] = c[2] = c[3] = 0;
+            }
+            c[0] = f0->value[k] - f0->value[0]; /* G at knot k */
+            for (j = 0u; j < 4u; ++j) {
+                if (pass == 0u) {
+                    finite &= hyst_num_set(&v, variant, c[j]);
+                } else {
+                    (void)hyst_table_put_(table, (size_t)4u * k + j, variant, c[j]);
+                }
+            }
+        }
+        if (!finite) {
+            return HYST_ERR_COEFF;
+        }
+    }
+    memset(&out, 0, sizeof out);
+    out.kind = HYST_CURVE_SPLINE;
+    out.variant = variant;
+    out.layout = HYST_LAYOUT;
+    (void)hyst_num_set(&out.lo, variant, f0->lo);
+    (void)hyst_num_set(&out.hi, variant, f0->hi);
+    finite &= hyst_num_set(&out.y_lo, variant, f0->value[0]);
+    finite &= hyst_num_set(&out.y_hi, variant, f0->value[n]);
+    (void)hyst_num_set(&out.unit, variant, (hyst_wide_t)n / (f0->hi - f0->lo));
+    (void)hyst_num_set(&out.u.spline.span, variant, f0->hi - f0->lo);
+    out.u.spline.table.f32 = table.f32;
+    out.u.spline.intervals = n;
+    if (!finite) {
+        return HYST_ERR_COEFF;
+    }
+    *curve = out;
+    return HYST_OK;
+}
+
+hyst_status_t hyst_f32_curve_from_spline_(hyst_curve_t *curve, const hyst_spline_t *f0,
+                                          float *table, size_t table_len, unsigned long layout)
+{
+    hyst_ptr_t t;
+    t.f32 = table;
+    return curve_spline(curve, f0, t, table_len, HYST_VARIANT_F32, layout);
+}
+
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_from_spline_(hyst_curve_t *curve, const hyst_spline_t *f0,
+                                          double *table, size_t table_len, unsigned long layout)
+{
+    hyst_ptr_t t;
+    t.f64 = table;
+    return curve_spline(curve, f0, t, table_len, HYST_VARIANT_F64, layout);
+}
+#endif
+
+hyst_status_t hyst_spline_check_(const hyst_curve_t *curve)
+{
+    return curve->u.spline.table.f32 != NULL && curve->u.spline.intervals >= 1u &&
+                   curve->u.spline.intervals <= HYST_SPLINE_MAX_INTERVALS
+               ? HYST_OK
+               : HYST_ERR_ARG;
+}
+
+hyst_status_t hyst_curve_spline_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
+{
+    hyst_curve_t out;
+    hyst_cptr_t tab;
+    hyst_status_t st;
+    size_t k;
+    int to_inverse;
+    if (inv == NULL || fwd == NULL) {
+        return HYST_ERR_NULL;
+    }
+    st = hyst_curve_check(fwd); /* the layout, variant and domain; ARG for this kind */
+    if (st != HYST_ERR_ARG) {
+        return st == HYST_OK ? HYST_ERR_ARG : st;
+    }
+    if ((fwd->kind != (unsigned)HYST_CURVE_SPLINE && fwd->kind != (unsigned)HYST_CURVE_SPLINE_INV) ||
+        hyst_spline_check_(fwd) != HYST_OK) {
+        return HYST_ERR_ARG;
+    }
+    tab = fwd->u.spline.table;
+    for (k = 0u; k < fwd->u.spline.intervals; ++k) { /* a flat piece has no inverse */
+        if (!(hyst_cptr_get(tab, 4u * (k + 1u), fwd->variant) >
+              hyst_cptr_get(tab, 4u * k, fwd->variant))) {
+            return HYST_ERR_NOT_INVERTIBLE;
+        }
+    }
+    to_inverse = fwd->kind == (unsigned)HYST_CURVE_SPLINE;
+    out = *fwd; /* the same table: G^-1 takes the output step itself, G knot intervals */
+    out.kind = to_inverse ? HYST_CURVE_SPLINE_INV : HYST_CURVE_SPLINE;
+    out.lo = fwd->y_lo;
+    out.hi = fwd->y_hi;
+    out.y_lo = fwd->lo;
+    out.y_hi = fwd->hi;
+    (void)hyst_num_set(&out.unit, out.variant,
+                       to_inverse ? 1
+                                  : (hyst_wide_t)fwd->u.spline.intervals /
+                                        hyst_num_get(&fwd->u.spline.span, fwd->variant));
+    *inv = out;
+    return HYST_OK;
+}

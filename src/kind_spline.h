@@ -1,0 +1,27 @@
+/* SPDX-License-Identifier: MIT */
+/* The spline kind (HYST_CURVE_SPLINE, hyst_spline_t) and its compensator
+ * (HYST_CURVE_SPLINE_INV), a curve kind of the engine (src/tcm_engine.h,
+ * TCM_NAME(kind_t)): the spline's pieces are a table of cubics that
+ * emit()'s case 0 evaluates on the fast path, G off it the variant's
+ * TCM_SPLINE_G (src/curve_eval.h); the compensator solves every sample out
+ * of line (no table: every sample slow). Included by src/kinds.h after the
+ * engine. */
+#ifndef HYST_KIND_SPLINE_H
+#define HYST_KIND_SPLINE_H
+
+static TCM_NOINLINE TCM_Y TCM_NAME(spline_kind_g)(const hyst_tcm_t *S, TCM_Y u)
+{
+    return TCM_SPLINE_G(S->curve, u);
+}
+
+static void TCM_NAME(spline_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
+{
+    if (curve->kind == (unsigned)HYST_CURVE_SPLINE) {
+        S->table.TCM_YF = curve->u.spline.table.TCM_YF;
+    }
+}
+
+static const TCM_NAME(kind_t) TCM_NAME(kind_spline) = {.g = TCM_NAME(spline_kind_g),
+                                                       .attach = TCM_NAME(spline_attach)};
+
+#endif /* HYST_KIND_SPLINE_H */
