@@ -105,6 +105,30 @@ hyst_status_t bench_grid_inverse_codes(hyst_curve_t *fwd, hyst_everett_grid_t *g
     return hyst_curve_from_everett_grid(fwd, g, table, len);
 }
 
+void bench_spline_codes(hyst_spline_t *f, double offset, double out_offset, double out_span)
+{
+    double v = 0.0;
+    unsigned k;
+    memset(f, 0, sizeof *f);
+    f->intervals = 16u;
+    f->lo = (hyst_wide_t)offset;
+    f->hi = (hyst_wide_t)(offset + (double)(BENCH_NU - 1u));
+    for (k = 0u; k <= 16u; ++k) { /* rises of 1, 1.1, ... and one of 10 (a near step) */
+        f->value[k] = (hyst_wide_t)v;
+        v += k == 9u ? 10.0 : 1.0 + 0.1 * (double)k;
+    }
+    v = (double)f->value[16];
+    for (k = 0u; k <= 16u; ++k) { /* onto out_offset .. out_offset + out_span */
+        f->value[k] = (hyst_wide_t)(out_offset + (double)f->value[k] * out_span / v);
+    }
+    for (k = 0u; k <= 16u; ++k) { /* the smaller neighbouring secant: every piece increases */
+        const double h = (double)(f->hi - f->lo) / 16.0;
+        const double left = k > 0u ? (double)(f->value[k] - f->value[k - 1u]) / h : 1e300;
+        const double right = k < 16u ? (double)(f->value[k + 1u] - f->value[k]) / h : 1e300;
+        f->slope[k] = (hyst_wide_t)(left < right ? left : right);
+    }
+}
+
 void bench_everett_inverse_codes(hyst_everett_t *e, double offset)
 {
     hyst_poly_t f0;

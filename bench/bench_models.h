@@ -32,6 +32,11 @@ void bench_grid_codes(hyst_everett_grid_t *g, double offset);
  * 5), built into fwd with table (len numbers). */
 hyst_status_t bench_grid_inverse_codes(hyst_curve_t *fwd, hyst_everett_grid_t *g, double offset,
                                        hyst_real_t *table, size_t len);
+/* A spline f0 (hyst_spline_t) on the same codes: 16 uniform intervals,
+ * rises growing by a tenth each, one ten times larger (a near step), the
+ * knots' slopes the smaller neighbouring secant; its outputs span
+ * out_offset .. out_offset + out_span (the codes, for its compensator). */
+void bench_spline_codes(hyst_spline_t *f, double offset, double out_offset, double out_span);
 /** The same asymmetry on bench_f0_inverse_codes()'s f0: the outputs span
  *  the codes, the asymmetric compensator's desired outputs. */
 void bench_everett_inverse_codes(hyst_everett_t *e, double offset);

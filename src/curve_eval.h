@@ -370,16 +370,19 @@ static NUM_T NUM_NAME(everett_from_lo)(const hyst_curve_t *curve, NUM_T w)
 /* G^-1 of a spline at the output step e from lo: the lowest input step
  * where G reaches e. The last knot below e (the knots' G never decrease),
  * then the next knot if e is its G (a flat run starts there), else its
- * piece's cubic bisected in t. G^-1(0) = 0 and G^-1(G(hi)) = hi - lo
- * exactly; monotone in e: each decision is, and a piece's answers stay
- * below the next knot. */
+ * piece's cubic solved by Newton's iteration from the secant's guess, kept
+ * inside the bracket that every evaluation narrows (its middle where a step
+ * would leave it), until the cubic is within its rounding of e: a few
+ * steps where the slope is not near 0, bisection's count at most. G^-1(0) = 0 and G^-1(G(hi)) = hi - lo exactly, and the
+ * knots are exact. */
 static NUM_T NUM_NAME(spline_inv_g)(const hyst_curve_t *c, NUM_T e)
 {
     const NUM_T *tab = c->u.spline.table.NUM_F;
     const size_t n = c->u.spline.intervals;
     const NUM_T h = c->u.spline.span.NUM_F / (NUM_T)n;
+    const NUM_T *p;
     size_t k = 0u, top = n + 1u;
-    NUM_T a = 0, b = 1;
+    NUM_T a = 0, b = 1, t, noise;
     unsigned it;
     if (!(e > 0)) {
         return 0;
@@ -395,21 +398,40 @@ static NUM_T NUM_NAME(spline_inv_g)(const hyst_curve_t *c, NUM_T e)
     if (k == n) {
         return c->u.spline.span.NUM_F;
     }
-    if (tab[4u * (k + 1u)] <= e) {
+    p = tab + 4u * k;
+    if (p[4] <= e) {
         return k + 1u == n ? c->u.spline.span.NUM_F : (NUM_T)(k + 1u) * h;
     }
+    /* the cubic's evaluation errs by a few roundings of its terms: within
+     * that of e, t is the answer (the iterates would wander about it) */
+    noise = 4 * NUM_EPS *
+            (p[4] + (p[1] < 0 ? -p[1] : p[1]) + (p[2] < 0 ? -p[2] : p[2]) + (p[3] < 0 ? -p[3] : p[3]));
+    t = (e - p[0]) / (p[4] - p[0]); /* in (0, 1]: p[0] < e < p[4] */
     for (it = 0u; it < 2u * (unsigned)(sizeof(NUM_T) * CHAR_BIT); ++it) {
-        const NUM_T m = (a + b) * NUM_C(0.5);
-        if (!(m > a && m < b)) {
+        const NUM_T f = NUM_CUBIC_(p[0], p[1], p[2], p[3], t) - e;
+        NUM_T next;
+        if (!(f > noise || f < -noise)) {
             break;
         }
-        if (NUM_CUBIC_(tab[4u * k], tab[4u * k + 1u], tab[4u * k + 2u], tab[4u * k + 3u], m) < e) {
-            a = m;
+        if (f < 0) {
+            a = t;
         } else {
-            b = m;
+            b = t;
         }
+        next = t - f / (p[1] + t * (2 * p[2] + 3 * p[3] * t)); /* NaN or off: bisect */
+        if (!(next > a && next < b)) {
+            next = (a + b) * NUM_C(0.5);
+            if (!(next > a && next < b)) {
+                t = a; /* the bracket is two neighbouring numbers */
+                break;
+            }
+        }
+        if (next == t) {
+            break;
+        }
+        t = next;
     }
-    return ((NUM_T)k + a) * h;
+    return ((NUM_T)k + t) * h;
 }
 
 NUM_T NUM_NAME(spline_g_)(const hyst_curve_t *curve, NUM_T s)

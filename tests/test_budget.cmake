@@ -33,6 +33,14 @@ set(HYST_BUDGET_EVERETT_GRID_TYPICAL_INSNS 55)
 set(HYST_BUDGET_EVERETT_GRID_WORST_INSNS 408)
 set(HYST_BUDGET_EVERETT_GRID_INV_TYPICAL_INSNS 81)
 set(HYST_BUDGET_EVERETT_GRID_INV_WORST_INSNS 737)
+# The spline kind (16 intervals, a near step inside: its pieces on the fast
+# path as the tabulated inverse's) and its compensator (each sample's piece
+# by binary search, its cubic by Newton's iteration): held at their figures
+# too (docs/results.md: spline_*, spline_inv_*).
+set(HYST_BUDGET_SPLINE_TYPICAL_INSNS 45)
+set(HYST_BUDGET_SPLINE_WORST_INSNS 154)
+set(HYST_BUDGET_SPLINE_INV_TYPICAL_INSNS 333)
+set(HYST_BUDGET_SPLINE_INV_WORST_INSNS 453)
 # The q31 variant on the Cortex-M3 without an FPU (hyst/q31.h): the same
 # trajectory at Nu = 4096 (docs/results.md: m3_q31_*_insns*).
 set(HYST_BUDGET_Q31_TYPICAL_INSNS 45)
@@ -92,7 +100,7 @@ if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
                          ${HYST_BUDGET_EVERETT_WORST_INSNS} --elf $<TARGET_FILE:bench_budget_everett4>
                          --elf $<TARGET_FILE:bench_budget_everett4_bipolar> --no-pi)
     endif()
-    foreach(image everett_inv everett_grid everett_grid_inv)
+    foreach(image everett_inv everett_grid everett_grid_inv spline spline_inv)
         if(TARGET bench_budget_${image})
             string(TOUPPER ${image} upper)
             hyst_budget_test(${image}_budget ${HYST_BUDGET_${upper}_TYPICAL_INSNS}
