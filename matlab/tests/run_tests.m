@@ -440,7 +440,7 @@ function t_load_rejects(ctx)
     [good {'gain 3'}], ':6: field 1: ''gain'' is not a key'
     [good {'lo 1'}], ':6: field 1: ''lo'' given twice'
     good([1 2 3 5]), 'the key hi is missing'
-    {'hyst-model-text 1', 'kind pwl', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':2: field 2: kind must be ''poly'', ''everett'' or ''everett_grid'''
+    {'hyst-model-text 1', 'kind pwl', 'lo 0', 'hi 40', 'coeffs 1 2'}, ':2: field 2: kind must be ''poly'', ''everett'', ''everett_grid'' or ''spline'''
     {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi Inf', 'coeffs 1 2'}, ':4: field 2: ''Inf'' is not a finite number'
     {'hyst-model-text 1', 'kind poly', 'lo 0', 'hi 40', 'coeffs 1 x'}, ':5: field 3: ''x'' is not a finite number'
     [good {'delay -2.5'}], ':6: field 2: ''-2.5'' is not a delay of 0 to 1000000000 samples'
@@ -722,7 +722,7 @@ function t_everett_load_rejects(ctx)
     [good(1:6) {'terms 1 2'}], ':7: field 4 is missing: terms needs 3 numbers for degree 2'
     [good(1:6) {'terms 1 NaN 2'}], ':7: field 3: ''NaN'' is not a finite number'
     [good(1:4) {'y_lo Inf'} good(6:7)], ':5: field 2: ''Inf'' is not a finite number'
-    [{'hyst-model-text 1', 'kind preisach'} good(3:7)], ':2: field 2: kind must be ''poly'', ''everett'' or ''everett_grid'''
+    [{'hyst-model-text 1', 'kind preisach'} good(3:7)], ':2: field 2: kind must be ''poly'', ''everett'', ''everett_grid'' or ''spline'''
   };
   expect_load_errors(file, bad);
 end

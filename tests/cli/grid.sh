@@ -17,6 +17,7 @@
 #   grid.sh <hyst> <C compiler> <include dir> <library sources dir> <work dir>
 set -euo pipefail
 tool=$1 cc=$2 inc=$3 src=$4 work=$5
+here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 cd "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -54,21 +55,11 @@ if "$tool" inv --model one.hyst --intervals 32 y.txt > /dev/null 2> err.txt; the
 fi
 grep -q "no tabulated compensator" err.txt || fail "inv --intervals: $(cat err.txt)"
 
+# the header as firmware uses it (header_run.c, in float and in double)
 "$tool" header --model one.hyst grid_model 2> /dev/null || fail "header"
-cat > use.c <<'EOF'
-#include "hyst/hyst.h"
-#include "grid_model.h"
-int main(void)
-{
-    static hyst_real_t table[HYST_EVERETT_GRID_TABLE_LEN(1u)];
-    hyst_curve_t c;
-    return hyst_curve_from_everett_grid(&c, &grid_model, table, HYST_EVERETT_GRID_TABLE_LEN(1u)) != HYST_OK;
-}
-EOF
+bash "$here/header_run.sh" "$cc" "$inc" "$src" grid_model 1 || fail "header"
 for d in "" -DHYST_USE_DOUBLE; do
-    "$cc" -std=c99 -Wall -Wextra -Wpedantic -Werror $d -I"$inc" -I. use.c "$src"/*.c -lm -o use \
-        || fail "header does not compile ($d)"
-    ./use || fail "the header's grid refused ($d)"
+    "./run$d" || fail "the header's grid refused ($d)"
 done
 # a rate term on a grid: sim --model adds it, so the header declares it as for
 # the other kinds (it was dropped, the header including hyst/rate.h for nothing)
@@ -81,39 +72,10 @@ grep -q 'static const hyst_wide_t grid_rate_rate_tau = HYST_REAL_C(4\.0);' grid_
 # inv --model's drives; no table of its own (--intervals, --sealed refused)
 "$tool" header --model one.hyst --compensator grid_comp 2> /dev/null || fail "header --compensator"
 grep -q "hyst_curve_everett_grid_inverse()" grid_comp.h || fail "header --compensator: no inverse named"
-cat > comp.c <<'EOF'
-#include <stdio.h>
-#include "hyst/hyst.h"
-#include "grid_comp.h"
-int main(void)
-{
-    static hyst_real_t table[HYST_EVERETT_GRID_TABLE_LEN(1u)];
-    static hyst_real_t xl[8], yl[8], xr[8], yr[8];
-    static const hyst_real_t want[] = {WANT};
-    hyst_curve_t fwd, inv;
-    hyst_tcm_t S;
-    hyst_real_t x;
-    unsigned i;
-    if (hyst_curve_from_everett_grid(&fwd, &grid_comp, table, HYST_EVERETT_GRID_TABLE_LEN(1u)) != HYST_OK ||
-        hyst_curve_everett_grid_inverse(&inv, &fwd) != HYST_OK ||
-        hyst_init_curve(&S, &inv, xl, yl, xr, yr, 8u) != HYST_OK) {
-        return 1;
-    }
-    for (i = 0u; i < sizeof want / sizeof want[0]; ++i) {
-        x = hyst_step(&S, want[i]);
-        if (hyst_status(&S) != HYST_OK) {
-            return 1;
-        }
-        printf("%.9g\n", (double)x);
-    }
-    return 0;
-}
-EOF
-want=$(paste -s -d, y.txt)
+bash "$here/header_run.sh" "$cc" "$inc" "$src" grid_comp 1 -DWANT="$(paste -s -d, y.txt)" ||
+    fail "header --compensator"
 for d in "" -DHYST_USE_DOUBLE; do
-    "$cc" -std=c99 -Wall -Wextra -Wpedantic -Werror $d -DWANT="$want" -I"$inc" -I. comp.c \
-        "$src"/*.c -lm -o comp || fail "header --compensator does not compile ($d)"
-    ./comp > xc.txt || fail "the header's compensator refused ($d)"
+    "./run$d" > xc.txt || fail "the header's compensator refused ($d)"
     [ "$(tr '\n' ' ' < xc.txt)" = "$(tr '\n' ' ' < xi.txt)" ] ||
         fail "header --compensator drives ($d): $(tr '\n' ' ' < xc.txt), inv: $(tr '\n' ' ' < xi.txt)"
 done

@@ -182,6 +182,11 @@ int cli_make_poly(const char *cmd, const char *model_path, const double *coeffs,
 #define CLI_GRID_TABLE_LEN HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)
 int cli_grid_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c,
                    double *table);
+/* The same for a model of kind spline, its table in table[0..CLI_SPLINE_TABLE_LEN). */
+#define CLI_MODEL_SPLINE MODEL_TEXT_SPLINE
+#define CLI_SPLINE_TABLE_LEN HYST_SPLINE_TABLE_LEN(HYST_SPLINE_MAX_INTERVALS)
+int cli_spline_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c,
+                     double *table);
 
 
 /* ---- data files (cli_read.c): columns separated by blanks, ',' or ';' ---- */

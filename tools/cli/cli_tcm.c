@@ -329,7 +329,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     int tp = 0, kind, rc;
     unsigned long digits = 9ul;
     hyst_poly_t f0;
-    hyst_curve_t everett; /* a model of kind everett or everett_grid */
+    hyst_curve_t everett; /* a model of kind everett, everett_grid or spline */
     /* inv --intervals / --rows: 0 when not given (the library's defaults with "default") */
     unsigned long intervals = 0ul, rows = 0ul;
     hyst_curve_t tab; /* the tabulated compensator's curve */
@@ -388,19 +388,27 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
             return cli_fail(cmd, "option --rows needs --intervals (the tabulated compensator)");
         }
     }
-    if (model_path != NULL && model.kind == CLI_MODEL_GRID) {
-        static double grid_table[CLI_GRID_TABLE_LEN];
+    if (model_path != NULL && (model.kind == CLI_MODEL_GRID || model.kind == CLI_MODEL_SPLINE)) {
+        static double grid_table[CLI_GRID_TABLE_LEN], spline_table[CLI_SPLINE_TABLE_LEN];
+        const int spline = model.kind == CLI_MODEL_SPLINE;
         if (intervals > 0ul) {
-            return cli_fail(cmd, "%s: kind everett_grid has no tabulated compensator (it solves "
-                                 "each branch in closed form: inv --model without --intervals)",
-                            model_path);
+            return cli_fail(cmd, "%s: kind %s has no tabulated compensator (it solves %s: inv "
+                                 "--model without --intervals)",
+                            model_path, spline ? "spline" : "everett_grid",
+                            spline ? "each drive on f0's cubic piece, per sample"
+                                   : "each branch in closed form");
         }
-        if (cli_grid_curve(cmd, cli_file_name(model_path), &model, &everett, grid_table) != 0) {
+        if ((spline ? cli_spline_curve(cmd, cli_file_name(model_path), &model, &everett,
+                                       spline_table)
+                    : cli_grid_curve(cmd, cli_file_name(model_path), &model, &everett,
+                                     grid_table)) != 0) {
             return 1;
         }
-        if (inverse && hyst_f64_curve_everett_grid_inverse(&everett, &everett) != HYST_OK) {
-            return cli_fail(cmd, "%s: the model has no compensator (its outputs never rise)",
-                            model_path);
+        if (inverse && (spline ? hyst_curve_spline_inverse(&everett, &everett)
+                               : hyst_f64_curve_everett_grid_inverse(&everett, &everett)) != HYST_OK) {
+            return cli_fail(cmd, "%s: the model has no compensator (%s)", model_path,
+                            spline ? "f0 is flat between two knots: no drive there is the inverse"
+                                   : "its outputs never rise");
         }
     }
     if (model_path != NULL) {
@@ -429,7 +437,8 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
                           cmd, model_path, model.delay);
         }
     }
-    if (model.kind == CLI_MODEL_EVERETT || model.kind == CLI_MODEL_GRID) {
+    if (model.kind == CLI_MODEL_EVERETT || model.kind == CLI_MODEL_GRID ||
+        model.kind == CLI_MODEL_SPLINE) {
         memset(&f0, 0, sizeof f0);
         r.curve = &everett;
     } else if (cli_make_poly(cmd, model_path, coeffs, ncoef, range, nrange, &f0) != 0) {
@@ -462,7 +471,7 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     m.col2 = tp ? tcm_tp : NULL;
     m.digits = (int)digits;
     m.has_identified = 0;
-    if (inverse && (model.kind == CLI_MODEL_EVERETT || model.kind == CLI_MODEL_GRID)) {
+    if (inverse && model.kind != CLI_MODEL_POLY) {
         /* the inverse's domain: the outputs */
         m.clamp_what = "desired outputs";
         m.lo = intervals > 0ul ? tab.lo.f64 : everett.lo.f64;

@@ -15,12 +15,19 @@
 /* Longest --header-dir accepted (the header's path is built in a fixed buffer). */
 #define CLI_HEADER_DIR_MAX 4096u
 
+/* The highest --degree of any kind (each kind's own bound checked once
+ * --kind is known): f0's degree, E's, the grid's or the spline's intervals. */
+#define FIT_MOST_DEGREE_(a, b) ((a) > (b) ? (a) : (b))
+#define FIT_MOST_DEGREE                                                                      \
+    FIT_MOST_DEGREE_(FIT_MOST_DEGREE_(HYST_MAX_DEGREE, HYST_EVERETT_GRID_MAX_INTERVALS),     \
+                     HYST_SPLINE_MAX_INTERVALS)
+
 /* --kind pi without --operators: the size of the paper's Table 1 model. */
 #define FIT_PI_DEFAULT_OPERATORS 10u
 
 static const char help[] =
-    "usage: hyst fit [--kind tcm|everett|everett_grid] [--degree N] [--t-degree K]\n"
-    "                [--skip S] [--delay D] [--xcol I --ycol J]\n"
+    "usage: hyst fit [--kind tcm|everett|everett_grid|spline] [--degree N]\n"
+    "                [--t-degree K] [--skip S] [--delay D] [--xcol I --ycol J]\n"
     "                [--method joint|reflect|branches]\n"
     "                [--domain LO,HI] [--creep none|auto|TAU] [--rate none|auto|TAU]\n"
     "                [--header NAME] [--header-dir DIR] [--save MODEL]\n"
@@ -35,7 +42,8 @@ static const char help[] =
     "lines and blank lines are skipped.\n"
     "\n"
     "  --degree N     polynomial degree, 1..9 (--kind everett: E's, 1..4;\n"
-    "                 --kind everett_grid: the grid's knot intervals, 1..12). Without\n"
+    "                 --kind everett_grid: the grid's knot intervals, 1..12;\n"
+    "                 --kind spline: the spline's knot intervals, 1..32). Without\n"
     "                 it, the kind (unless --kind is given), the degree and the\n"
     "                 delay (unless --delay is given) are chosen by hold-out: each\n"
     "                 f0 of degree 1..9 and each E of degree 1..4 in each t-degree\n"
@@ -93,7 +101,8 @@ static const char help_more[] =
     "                 separated by blanks or ';'\n"
     "  --header NAME  also write NAME.h holding\n"
     "                 'static const hyst_poly_t NAME = {...};' (kind everett:\n"
-    "                 'static const hyst_everett_t NAME = {...};') for firmware\n"
+    "                 'static const hyst_everett_t NAME = {...};', kind spline:\n"
+    "                 'static const hyst_spline_t NAME = {...};') for firmware\n"
     "                 (in the current directory, or in DIR with --header-dir)\n"
     "  --header-dir DIR  directory of NAME.h (an existing directory; needs --header)\n"
     "  --save MODEL   also write the model file MODEL (format hyst-model-text 1:\n"
@@ -105,6 +114,9 @@ static const char help_more[] =
     "                 third as a '# compare' line\n"
     "  --kind K       not given: tcm, everett and everett_grid compared as above;\n"
     "                 tcm: f0 only; everett_grid: E on a grid (docs/theory.md);\n"
+    "                 spline: f0 a monotone cubic spline on uniform knots, fitted\n"
+    "                 along every branch (minor loops included; 2..16 intervals\n"
+    "                 compared without --degree);\n"
     "                 everett: E only (least squares along the record, the model\n"
     "                 from rest at the first sample used); pi: the weights\n"
     "                 w1..wN >= 0 and an output offset of a\n"
@@ -118,7 +130,8 @@ static const char help_more[] =
 static const char help_output[] =
     "\n"
     "Output: line 1 the coefficients cN,...,c0 (highest power first; kind everett:\n"
-    "E's terms), line 2 LO,HI, line 3 the RMS and max residual against the fitted\n"
+    "E's terms; kind everett_grid: the cells' masses; kind spline: f0 at the\n"
+    "knots), line 2 LO,HI, line 3 the RMS and max residual against the fitted\n"
     "major loop (kind everett, and f0 fitted along every branch: of the model run\n"
     "over the record; output units),\n"
     "then '#' comment lines. --kind pi: line 1 the weights, line 2 the thresholds,\n"
@@ -130,7 +143,7 @@ static const char help_output[] =
 
 /* --kind: not given (the automatic choice compares both TCM kinds), tcm
  * (the symmetric f0), everett (the asymmetric E) or pi. */
-enum { FIT_KIND_AUTO, FIT_KIND_TCM, FIT_KIND_EVERETT, FIT_KIND_PI, FIT_KIND_GRID };
+enum { FIT_KIND_AUTO, FIT_KIND_TCM, FIT_KIND_EVERETT, FIT_KIND_PI, FIT_KIND_GRID, FIT_KIND_SPLINE };
 
 typedef struct fit_opts {
     hyst_ident_config_t cfg;
@@ -140,12 +153,14 @@ typedef struct fit_opts {
     const char *header_dir; /* NULL: the current directory */
     const char *save;       /* model file, or NULL */
     int have_degree;
+    const char *degree_text; /* --degree as given */
     int have_t_degree;    /* --t-degree given */
     unsigned t_degree;    /* kind everett: --t-degree, or that of the model fitted */
     int have_delay;
     int decimal_comma;
-    int kind;             /* --kind: FIT_KIND_AUTO (not given), _TCM, _EVERETT or _PI */
-    int final_kind;       /* of the model fitted: FIT_POLY or FIT_EVERETT */
+    int kind;             /* --kind: FIT_KIND_AUTO (not given), _TCM, _EVERETT, _PI, _GRID
+                             or _SPLINE */
+    int final_kind;       /* of the model fitted: FIT_POLY, FIT_EVERETT, FIT_GRID or FIT_SPLINE */
     int as_poly;          /* E of t-degree 0 chosen with kind poly compared, or --method
                              branches: to be written as f0; once fitted, whether it was */
     int have_method;      /* --method given */
@@ -224,13 +239,13 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             (void)snprintf(o->tcm_only, sizeof o->tcm_only, "%s", a.opt);
         }
         if (cli_is(&a, "--kind")) {
-            if (strcmp(v, "everett_grid") == 0) {
-                o->kind = FIT_KIND_GRID;
+            if (strcmp(v, "everett_grid") == 0 || strcmp(v, "spline") == 0) {
+                o->kind = v[0] == 's' ? FIT_KIND_SPLINE : FIT_KIND_GRID;
             } else if (strcmp(v, "tcm") == 0 || strcmp(v, "everett") == 0 || strcmp(v, "pi") == 0) {
                 o->kind = v[0] == 't' ? FIT_KIND_TCM : v[0] == 'e' ? FIT_KIND_EVERETT : FIT_KIND_PI;
             } else {
                 return cli_fail(a.cmd, "option --kind: %s is neither tcm nor pi nor everett nor "
-                                       "everett_grid",
+                                       "everett_grid nor spline",
                                 cli_quote(q, v));
             }
         } else if (cli_is(&a, "--operators") || cli_is(&a, "--compare-pi")) {
@@ -240,14 +255,12 @@ static int parse(fit_opts_t *o, int argc, char **argv)
             *(cli_is(&a, "--operators") ? &o->operators : &o->compare_pi) = (size_t)u;
         } else if (cli_is(&a, "--degree")) {
             /* each kind's own bound is checked below, once --kind is known */
-            if (!cli_opt_ulong(&a, v, 1ul, HYST_MAX_DEGREE > HYST_EVERETT_GRID_MAX_INTERVALS
-                                                ? HYST_MAX_DEGREE
-                                                : HYST_EVERETT_GRID_MAX_INTERVALS,
-                               &u)) {
+            if (!cli_opt_ulong(&a, v, 1ul, FIT_MOST_DEGREE, &u)) {
                 return 1;
             }
             o->cfg.degree = (unsigned)u;
             o->have_degree = 1;
+            o->degree_text = v;
         } else if (cli_is(&a, "--t-degree")) {
             if (!cli_opt_ulong(&a, v, 0ul, HYST_EVERETT_MAX_DEGREE - 1ul, &u)) {
                 return 1;
@@ -363,12 +376,22 @@ static int parse(fit_opts_t *o, int argc, char **argv)
         return cli_fail(a.cmd, "option --method does not apply to --kind everett (it chooses "
                                "the estimator of the symmetric f0)");
     }
-    if (o->kind != FIT_KIND_GRID && o->kind != FIT_KIND_EVERETT && o->have_degree &&
-        o->cfg.degree > HYST_MAX_DEGREE) {
+    if (o->kind != FIT_KIND_GRID && o->kind != FIT_KIND_SPLINE && o->kind != FIT_KIND_EVERETT &&
+        o->have_degree && o->cfg.degree > HYST_MAX_DEGREE) {
         return cli_fail(a.cmd, "option --degree: %u is above %u, the highest degree of f0 "
-                               "(--kind everett_grid: intervals up to %u)",
+                               "(--kind everett_grid: intervals up to %u; --kind spline: up to "
+                               "%u)",
                         o->cfg.degree, (unsigned)HYST_MAX_DEGREE,
-                        (unsigned)HYST_EVERETT_GRID_MAX_INTERVALS);
+                        (unsigned)HYST_EVERETT_GRID_MAX_INTERVALS,
+                        (unsigned)HYST_SPLINE_MAX_INTERVALS);
+    }
+    if ((o->kind == FIT_KIND_GRID || o->kind == FIT_KIND_SPLINE) && o->have_degree) {
+        const unsigned most = o->kind == FIT_KIND_GRID ? HYST_EVERETT_GRID_MAX_INTERVALS
+                                                       : HYST_SPLINE_MAX_INTERVALS;
+        if (o->cfg.degree > most) { /* as cli_opt_ulong() says it */
+            return cli_fail(a.cmd, "option --degree: %s is not an integer in 1..%u",
+                            cli_quote(q, o->degree_text), most);
+        }
     }
     if (o->kind == FIT_KIND_EVERETT && o->have_degree && o->cfg.degree > HYST_EVERETT_MAX_DEGREE) {
         return cli_fail(a.cmd, "option --degree: %u is above %u, the highest degree of --kind "
@@ -386,8 +409,10 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     if (o->kind == FIT_KIND_EVERETT && o->have_degree && !o->have_t_degree) {
         o->t_degree = o->cfg.degree - 1u; /* all of E's terms */
     }
-    if (o->kind == FIT_KIND_GRID && o->have_method) {
-        return cli_fail(a.cmd, "option --method does not apply to --kind everett_grid");
+    if ((o->kind == FIT_KIND_GRID || o->kind == FIT_KIND_SPLINE) && o->have_method) {
+        return cli_fail(a.cmd, "option --method does not apply to --kind %s",
+                        o->kind == FIT_KIND_GRID ? "everett_grid"
+                                                 : "spline (fitted along every branch)");
     }
     if (o->branches && o->have_degree && o->cfg.degree > HYST_EVERETT_MAX_DEGREE) {
         return cli_fail(a.cmd, "option --degree: %u is above %u, the highest degree --method "
@@ -401,6 +426,7 @@ static int parse(fit_opts_t *o, int argc, char **argv)
     }
     o->final_kind = o->kind == FIT_KIND_EVERETT || o->branches ? FIT_EVERETT
                     : o->kind == FIT_KIND_GRID                 ? FIT_GRID
+                    : o->kind == FIT_KIND_SPLINE               ? FIT_SPLINE
                                                                : FIT_POLY;
     if (o->kind != FIT_KIND_PI && o->operators != 0u) {
         return cli_fail(a.cmd, "option --operators needs --kind pi (or use --compare-pi N)");
@@ -426,6 +452,7 @@ static int candidate_kinds(const fit_opts_t *o)
            : o->kind == FIT_KIND_TCM     ? FIT_POLY
            : o->kind == FIT_KIND_EVERETT ? FIT_EVERETT
            : o->kind == FIT_KIND_GRID    ? FIT_GRID
+           : o->kind == FIT_KIND_SPLINE  ? FIT_SPLINE
                                          : FIT_POLY | FIT_EVERETT | FIT_GRID;
 }
 
@@ -463,6 +490,8 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
                         name, o->v != NULL ? o->vname : "the last third of the record",
                         o->kind == FIT_KIND_EVERETT               ? "an E the library accepts"
                         : o->kind == FIT_KIND_TCM || o->branches ? "an increasing f0"
+                        : o->kind == FIT_KIND_SPLINE             ? "a spline f0 the library "
+                                                                   "accepts"
                                                                  : "an increasing f0 or an E the "
                                                                    "library accepts");
     }
@@ -619,8 +648,8 @@ static void rank_others(fit_opts_t *o, const cli_table_t *t)
 /* A candidate's name in the printout into name[0..size). */
 static void candidate_name(const fit_candidate_t *c, char *name, size_t size)
 {
-    if (c->kind == FIT_GRID) {
-        (void)snprintf(name, size, "everett_grid intervals %u", c->degree);
+    if (c->kind == FIT_GRID || c->kind == FIT_SPLINE) {
+        (void)snprintf(name, size, "%s intervals %u", fit_kind_name(c->kind), c->degree);
     } else if (c->kind == FIT_EVERETT) {
         (void)snprintf(name, size, "everett degree %u t-degree %u%s", c->degree, c->t_degree,
                        c->widened ? " widened" : "");
@@ -654,9 +683,9 @@ static const char *kinds_compared(const fit_opts_t *o)
         return "poly, f0 fitted along every branch (E of t-degree 0)";
     }
     return candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID) ? "poly, everett, everett_grid"
-           : candidate_kinds(o) == FIT_EVERETT                       ? "everett"
-           : candidate_kinds(o) == FIT_GRID                          ? "everett_grid"
-                                                                     : "poly";
+           : candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID | FIT_SPLINE)
+               ? "poly, everett, everett_grid, spline"
+               : fit_kind_name(candidate_kinds(o));
 }
 
 /* The delays the automatic choice searched, when scaled to the drive. */
@@ -683,10 +712,7 @@ static void chosen_words(const fit_opts_t *o, char *buf, size_t size)
         (void)snprintf(t_deg, sizeof t_deg, "t-degree %u, ", o->t_degree);
     }
     (void)snprintf(buf, size, "degree %u, delay %lu (kind %s, %s%s%u parameters",
-                   o->cfg.degree, (unsigned long)o->cfg.delay,
-                   o->final_kind == FIT_EVERETT ? "everett"
-                   : o->final_kind == FIT_GRID  ? "everett_grid"
-                                                : "poly",
+                   o->cfg.degree, (unsigned long)o->cfg.delay, fit_kind_name(o->final_kind),
                    t_deg,
                    o->with_creep ? (o->with_rate ? "creep, rate, " : "creep, ")
                    : o->with_rate ? "rate, " : "",
@@ -810,9 +836,9 @@ static void print_candidates(const fit_opts_t *o)
 typedef struct fit_final {
     cli_model_t model;       /* what --save and --header write */
     hyst_ident_result_t r;   /* FIT_POLY */
-    fit_everett_result_t ev; /* FIT_EVERETT, FIT_GRID */
+    fit_everett_result_t ev; /* FIT_EVERETT, FIT_GRID, FIT_SPLINE */
     double rms, max_abs;     /* the residual printed on line 3 */
-    int usable;              /* f0 increasing, or E accepted by the library */
+    int usable;              /* f0 increasing, or E or the spline accepted by the library */
     int from_everett;        /* kind poly written from ev.e, E of t-degree 0 (as_poly()) */
 } fit_final_t;
 
@@ -844,6 +870,13 @@ static int not_finite(const char *name, const fit_final_t *f)
                             (unsigned long)k + 1ul, m->terms[k], advice);
         }
     }
+    for (k = 0u; k < m->nvalues; ++k) {
+        if (!isfinite(m->values[k]) || !isfinite(m->slopes[k])) {
+            return cli_fail("fit", "%s: the result is not finite (f0 at knot %lu %g, its slope "
+                                   "%g): %s",
+                            name, (unsigned long)k, m->values[k], m->slopes[k], advice);
+        }
+    }
     if (!isfinite(m->y_lo)) {
         return cli_fail("fit", "%s: the result is not finite (y_lo %g): %s", name, m->y_lo,
                         advice);
@@ -865,11 +898,14 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
     hyst_ident_t work;
     hyst_status_t st = HYST_ERR_ARG;
     const int everett = o->final_kind == FIT_EVERETT, grid = o->final_kind == FIT_GRID;
+    const int spline = o->final_kind == FIT_SPLINE;
     unsigned k;
     memset(f, 0, sizeof *f);
     if (pairs > 0u) {
         st = grid      ? fit_grid_record(&o->cfg, o->cfg.degree, t->col[0], t->col[1], t->n,
                                          &f->ev)
+             : spline  ? fit_spline_record(&o->cfg, o->cfg.degree, t->col[0], t->col[1], t->n,
+                                           &f->ev)
              : everett ? fit_everett_record(&o->cfg, o->t_degree, t->col[0], t->col[1], t->n,
                                             &f->ev)
                        : hyst_ident_fit(&o->cfg, t->col[0], t->col[1], t->n, &work, &f->r);
@@ -886,28 +922,33 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
             return cli_fail("fit", "%s: everett degree %u t-degree %u: %s", name,
                             o->cfg.degree, o->t_degree, everett_singular);
         }
+        if (spline) {
+            return cli_fail("fit", "%s: too few distinct inputs for a spline of %u intervals",
+                            name, o->cfg.degree);
+        }
         return cli_fail("fit", "%s: too few distinct inputs for degree %u", name, o->cfg.degree);
     case HYST_ERR_DOMAIN:
         return cli_fail("fit", "%s: the inputs do not span a range (all equal?)", name);
     default:
         return cli_fail("fit", "%s: %s", name, hyst_status_str(st));
     }
-    if (grid) {
-        model_text_from_grid(&f->model, &f->ev.grid, (unsigned long)o->cfg.delay);
+    if (grid || spline || everett) {
+        if (grid) {
+            model_text_from_grid(&f->model, &f->ev.grid, (unsigned long)o->cfg.delay);
+        } else if (spline) {
+            model_text_from_spline(&f->model, &f->ev.spline, (unsigned long)o->cfg.delay);
+        } else {
+            cli_model_from_everett(&f->model, &f->ev.e, (unsigned long)o->cfg.delay);
+        }
         f->model.delay_fraction = o->delay_fraction;
-        f->usable = f->ev.curve_status == HYST_OK;
-        f->rms = f->usable ? f->ev.rms : f->ev.ls_rms;
-        f->max_abs = f->ev.max_abs;
-    } else if (everett) {
-        double id_lo, id_hi;
-        cli_model_from_everett(&f->model, &f->ev.e, (unsigned long)o->cfg.delay);
-        f->model.delay_fraction = o->delay_fraction;
-        fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, 0.0, &id_lo, &id_hi);
-        /* a domain wider than the inputs: the range E was identified on is recorded */
-        if (f->model.lo < id_lo || id_hi < f->model.hi) {
-            f->model.has_identified = 1;
-            f->model.id_lo = id_lo > f->model.lo ? id_lo : f->model.lo;
-            f->model.id_hi = id_hi < f->model.hi ? id_hi : f->model.hi;
+        if (!grid) { /* a domain wider than the inputs: the range identified on is recorded */
+            double id_lo, id_hi;
+            fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, 0.0, &id_lo, &id_hi);
+            if (f->model.lo < id_lo || id_hi < f->model.hi) {
+                f->model.has_identified = 1;
+                f->model.id_lo = id_lo > f->model.lo ? id_lo : f->model.lo;
+                f->model.id_hi = id_hi < f->model.hi ? id_hi : f->model.hi;
+            }
         }
         f->usable = f->ev.curve_status == HYST_OK;
         f->rms = f->usable ? f->ev.rms : f->ev.ls_rms;
@@ -946,16 +987,8 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
     memset(&c, 0, sizeof c);
     c.tau = o->with_creep ? o->creep.tau : 0.0;
     c.rate_tau = o->with_rate ? o->rate.rate_tau : 0.0;
-    if (m->kind == CLI_MODEL_GRID) {
-        static double table[CLI_GRID_TABLE_LEN];
-        if (hyst_f64_curve_from_everett_grid(&curve, &f->ev.grid, table, CLI_GRID_TABLE_LEN) !=
-            HYST_OK) {
-            return 0; /* refused: reported as such, nothing written */
-        }
-        (void)fit_model_run_creep(NULL, &curve, t->col[0], t->col[1], t->n, o->cfg.skip,
-                                  o->cfg.delay, end, NULL, NULL, &c);
-    } else if (m->kind == CLI_MODEL_EVERETT) {
-        if (hyst_f64_curve_from_everett(&curve, &f->ev.e) != HYST_OK) {
+    if (m->kind != CLI_MODEL_POLY) {
+        if (fit_result_curve(o->final_kind, &f->ev, &curve) != HYST_OK) {
             return 0; /* refused: reported as such, nothing written */
         }
         (void)fit_model_run_creep(NULL, &curve, t->col[0], t->col[1], t->n, o->cfg.skip,
@@ -990,6 +1023,10 @@ static int fit_final_creep(const fit_opts_t *o, const char *name, const cli_tabl
     }
     if (m->kind == CLI_MODEL_EVERETT || m->kind == CLI_MODEL_GRID) {
         m->y_lo += c.offset;
+    } else if (m->kind == CLI_MODEL_SPLINE) { /* f0 moved as a whole */
+        for (k = 0u; k < m->nvalues; ++k) {
+            m->values[k] += c.offset;
+        }
     } else {
         m->coeffs[m->ncoef - 1u] += c.offset;
     }
@@ -1034,6 +1071,9 @@ static void compare_line(const fit_opts_t *o, const cli_table_t *t, char *line, 
     if (o->final_kind == FIT_GRID) {
         (void)snprintf(tcm, sizeof tcm, "asymmetric TCM on a grid of %u intervals%s",
                        o->cfg.degree, terms);
+    } else if (o->final_kind == FIT_SPLINE) {
+        (void)snprintf(tcm, sizeof tcm, "TCM, f0 a spline of %u intervals%s", o->cfg.degree,
+                       terms);
     } else if (o->as_poly) {
         (void)snprintf(tcm, sizeof tcm, "TCM degree %u, f0 along every branch%s", o->cfg.degree,
                        terms);
@@ -1055,9 +1095,11 @@ static void print_result(const fit_final_t *f, unsigned t_degree, size_t pairs)
 {
     const cli_model_t *m = &f->model;
     const double *v = m->kind == CLI_MODEL_GRID      ? m->weights
+                      : m->kind == CLI_MODEL_SPLINE  ? m->values
                       : m->kind == CLI_MODEL_EVERETT ? m->terms
                                                      : m->coeffs;
     const size_t n = m->kind == CLI_MODEL_GRID      ? m->nweights
+                     : m->kind == CLI_MODEL_SPLINE  ? m->nvalues
                      : m->kind == CLI_MODEL_EVERETT ? m->nterms
                                                     : m->ncoef;
     size_t k;
@@ -1080,6 +1122,19 @@ static void print_result(const fit_final_t *f, unsigned t_degree, size_t pairs)
         if (!f->ev.determined) {
             (void)printf("# %s\n", fit_grid_undetermined);
         }
+    } else if (m->kind == CLI_MODEL_SPLINE) {
+        (void)printf("# residual rms,max above: the symmetric model with f0 a monotone cubic "
+                     "spline (kind spline, %lu intervals%s) run over the record, %lu of %lu "
+                     "samples used%s, f0 fitted along every branch; line 1 f0 at the knots "
+                     "lo + k (hi - lo) / %lu, k = 0..%lu; slopes",
+                     (unsigned long)m->nvalues - 1ul, m->ncreep > 0u ? ", with its creep term" : "",
+                     (unsigned long)f->ev.used, (unsigned long)pairs,
+                     f->usable ? "" : " (least-squares residual: the model cannot run)",
+                     (unsigned long)m->nvalues - 1ul, (unsigned long)m->nvalues - 1ul);
+        for (k = 0u; k < m->nslopes; ++k) {
+            (void)printf(" %.15g", m->slopes[k]);
+        }
+        (void)printf("\n");
     } else if (m->kind == CLI_MODEL_EVERETT) {
         (void)printf("# residual rms,max above: the asymmetric model (kind everett, degree %u, "
                      "t-degree %u, y_lo %.15g%s) run over the record, %lu of %lu samples used%s; "
@@ -1110,24 +1165,18 @@ static void print_result(const fit_final_t *f, unsigned t_degree, size_t pairs)
 static void print_usable(const fit_final_t *f)
 {
     const cli_model_t *m = &f->model;
-    if (m->kind == CLI_MODEL_GRID) {
+    if (m->kind != CLI_MODEL_POLY) { /* the library's curve of E, the grid or the spline */
+        const int grid = m->kind == CLI_MODEL_GRID, spline = m->kind == CLI_MODEL_SPLINE;
         if (f->usable) {
-            (void)printf("# every cell's mass >= 0: E increases in a and decreases in b on "
-                         "[%.9g, %.9g]\n",
-                         m->lo, m->hi);
+            (void)printf("# %s [%.9g, %.9g]%s\n",
+                         grid     ? "every cell's mass >= 0: E increases in a and decreases in b on"
+                         : spline ? "f0 increases on"
+                                  : "E increases in a and decreases in b on lo <= b <= a <= hi,",
+                         m->lo, m->hi,
+                         spline ? " (every slope >= 0, every piece increasing)" : "");
         } else {
-            (void)printf("# the grid NOT accepted by the library: %s\n",
-                         hyst_status_str(f->ev.curve_status));
-        }
-        return;
-    }
-    if (m->kind == CLI_MODEL_EVERETT) {
-        if (f->usable) {
-            (void)printf("# E increases in a and decreases in b on lo <= b <= a <= hi, "
-                         "[%.9g, %.9g]\n",
-                         m->lo, m->hi);
-        } else {
-            (void)printf("# E NOT accepted by the library: %s\n",
+            (void)printf("# %s NOT accepted by the library: %s\n",
+                         grid ? "the grid" : spline ? "the spline" : "E",
                          hyst_status_str(f->ev.curve_status));
         }
         return;
@@ -1166,17 +1215,28 @@ static size_t header_text(const fit_opts_t *o, const fit_final_t *f, char *buf, 
         }
     }
     source[j] = '\0';
-    if (m->kind == CLI_MODEL_GRID) {
+    if (m->kind == CLI_MODEL_GRID || m->kind == CLI_MODEL_SPLINE) {
+        const int spline = m->kind == CLI_MODEL_SPLINE;
+        char y_lo[48] = "";
+        if (!spline) {
+            (void)snprintf(y_lo, sizeof y_lo, ", y_lo %.9g", m->y_lo);
+        }
         over = cli_append(buf, size, &len,
-                          "/* Generated by 'hyst fit': asymmetric model on a grid identified\n"
+                          "/* Generated by 'hyst fit': %s identified\n"
                           " * from %s (x column %lu, y column %lu, skip %lu, delay %lu),\n"
-                          " * %lu knot intervals, domain [%.9g, %.9g], y_lo %.9g; for\n"
-                          " * hyst_curve_from_everett_grid(), then hyst_init_curve().\n"
+                          " * %lu knot intervals, domain [%.9g, %.9g]%s; for\n"
+                          " * %s, then hyst_init_curve().\n"
                           " * Residual of the model over %lu samples:\n"
                           " * RMS %.4g, max %.4g (output units). */\n",
+                          spline ? "symmetric model with f0 a monotone cubic\n * spline, "
+                                   "along every branch,"
+                                 : "asymmetric model on a grid",
                           source, o->cols[0], o->cols[1], (unsigned long)o->cfg.skip,
-                          (unsigned long)o->cfg.delay, (unsigned long)m->nknots - 1ul, m->lo,
-                          m->hi, m->y_lo, (unsigned long)f->ev.used, f->rms, f->max_abs);
+                          (unsigned long)o->cfg.delay,
+                          (unsigned long)(spline ? m->nvalues : m->nknots) - 1ul, m->lo, m->hi,
+                          y_lo,
+                          spline ? "hyst_curve_from_spline()" : "hyst_curve_from_everett_grid()",
+                          (unsigned long)f->ev.used, f->rms, f->max_abs);
     } else if (m->kind == CLI_MODEL_EVERETT) {
         over = cli_append(buf, size, &len,
                           "/* Generated by 'hyst fit': asymmetric model (branch function E)\n"
@@ -1531,10 +1591,13 @@ int cmd_fit(int argc, char **argv)
     if (!f.usable) {
         const char *nothing =
             o.header != NULL || o.save != NULL ? "; no header or model file written" : "";
-        if (o.final_kind == FIT_EVERETT || o.final_kind == FIT_GRID) {
-            (void)fprintf(stderr, "hyst fit: %s: the fitted E is refused by the library: %s: "
-                                  "try another degree%s\n",
-                          name, hyst_status_str(f.ev.curve_status), nothing);
+        if (o.final_kind == FIT_EVERETT || o.final_kind == FIT_GRID ||
+            o.final_kind == FIT_SPLINE) {
+            (void)fprintf(stderr, "hyst fit: %s: the fitted %s is refused by the library: %s: "
+                                  "try another %s%s\n",
+                          name, o.final_kind == FIT_SPLINE ? "spline f0" : "E",
+                          hyst_status_str(f.ev.curve_status),
+                          o.final_kind == FIT_SPLINE ? "number of intervals" : "degree", nothing);
         } else {
             (void)fprintf(stderr,
                           "hyst fit: %s: the fitted f0 is not increasing on [%.9g, %.9g] (slope "

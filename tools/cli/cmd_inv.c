@@ -30,7 +30,9 @@ static const char help[] =
     "                    exact one: kind poly f0^-1 in N cubic pieces\n"
     "                    (hyst_init_inverse_table(), HYST_INIT_INVERSE), kind\n"
     "                    everett N pieces per row, a row per branch start\n"
-    "                    (hyst_curve_everett_inverse_table()); N in 1..1048576,\n"
+    "                    (hyst_curve_everett_inverse_table()); kinds\n"
+    "                    everett_grid and spline have none (their exact\n"
+    "                    compensator is the firmware's); N in 1..1048576,\n"
     "                    or 'default': the library's, " CLI_STR(HYST_INV_TABLE) " for poly\n"
     "                    (HYST_INV_TABLE), " CLI_STR(HYST_EVERETT_INV_INTERVALS)
     " for everett\n"

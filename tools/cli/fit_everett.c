@@ -77,34 +77,16 @@ hyst_status_t fit_everett_record(const hyst_ident_config_t *cfg, unsigned t_degr
                                  const double *x, const double *y, size_t n,
                                  fit_everett_result_t *res)
 {
-    const size_t skip = cfg->skip, delay = cfg->delay;
-    double lo = (double)cfg->lo, hi = (double)cfg->hi;
-    hyst_curve_t curve;
-    hyst_status_t st;
+    double lo = 0.0, hi = 0.0;
+    hyst_status_t st = fit_record_start(cfg, x, n, res, &lo, &hi);
     size_t end;
-    memset(res, 0, sizeof *res);
-    res->rms = NAN;
-    res->max_abs = NAN;
-    res->curve_status = HYST_ERR_ARG;
-    if (n <= skip + delay) {
-        return HYST_ERR_ARG;
-    }
-    end = n - delay;
-    if (!(lo < hi)) { /* the range of the inputs used, as hyst_ident_fit() takes it */
-        fit_input_range(x, skip, end, 0.0, &lo, &hi);
-    }
-    st = fit_samples(cfg->degree, t_degree, lo, hi, x, y, skip, fit_settled(x, skip, end), end,
-                     delay, &res->e, &res->used, &res->ls_rms);
-    /* HYST_ERR_NOT_MONOTONE: E is returned all the same; the curve's own
-     * refusal below says why (curve_status) */
-    if (st != HYST_OK && st != HYST_ERR_NOT_MONOTONE) {
+    if (st != HYST_OK) {
         return st;
     }
-    res->curve_status = hyst_f64_curve_from_everett(&curve, &res->e);
-    if (res->curve_status == HYST_OK) {
-        (void)fit_model_run(NULL, &curve, x, y, n, skip, delay, end, &res->rms, &res->max_abs);
-    }
-    return HYST_OK;
+    end = n - cfg->delay;
+    st = fit_samples(cfg->degree, t_degree, lo, hi, x, y, cfg->skip, fit_settled(x, cfg->skip, end),
+                     end, cfg->delay, &res->e, &res->used, &res->ls_rms);
+    return fit_record_finish(FIT_EVERETT, cfg, x, y, n, st, res);
 }
 
 /* y_lo + sum e[i-1][0] u^i at x, u = (x - lo) / (hi - lo): E of the width alone from lo. */

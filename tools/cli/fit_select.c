@@ -211,11 +211,22 @@ size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const d
     return best;
 }
 
+const char *fit_kind_name(int kind)
+{
+    return kind == FIT_EVERETT ? "everett"
+           : kind == FIT_GRID  ? "everett_grid"
+           : kind == FIT_SPLINE ? "spline"
+                               : "poly";
+}
+
 unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree)
 {
     unsigned i, count = 1u; /* y_lo */
     if (kind == FIT_GRID) { /* y_lo, the cells' masses, the inner knots */
         return count + degree * (degree + 1u) / 2u + degree - 1u;
+    }
+    if (kind == FIT_SPLINE) { /* y_lo and the K + 2 weights */
+        return count + degree + 2u;
     }
     if (kind != FIT_EVERETT) {
         return degree + 1u;
@@ -352,6 +363,57 @@ static size_t train_count(size_t n, size_t skip, size_t delay)
     return (2u * (n - skip - delay)) / 3u;
 }
 
+hyst_status_t fit_result_curve(int kind, const fit_everett_result_t *ev, hyst_curve_t *curve)
+{
+    static double grid_table[HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)];
+    static double spline_table[HYST_SPLINE_TABLE_LEN(HYST_SPLINE_MAX_INTERVALS)];
+    if (kind == FIT_GRID) {
+        return hyst_f64_curve_from_everett_grid(curve, &ev->grid, grid_table,
+                                                sizeof grid_table / sizeof grid_table[0]);
+    }
+    if (kind == FIT_SPLINE) {
+        return hyst_f64_curve_from_spline(curve, &ev->spline, spline_table,
+                                          sizeof spline_table / sizeof spline_table[0]);
+    }
+    return hyst_f64_curve_from_everett(curve, &ev->e);
+}
+
+hyst_status_t fit_record_start(const hyst_ident_config_t *cfg, const double *x, size_t n,
+                               fit_everett_result_t *res, double *lo, double *hi)
+{
+    memset(res, 0, sizeof *res);
+    res->rms = NAN;
+    res->max_abs = NAN;
+    res->curve_status = HYST_ERR_ARG;
+    if (n <= cfg->skip + cfg->delay) {
+        return HYST_ERR_ARG;
+    }
+    *lo = (double)cfg->lo;
+    *hi = (double)cfg->hi;
+    if (!(*lo < *hi)) { /* the range of the inputs used, as hyst_ident_fit() takes it */
+        fit_input_range(x, cfg->skip, n - cfg->delay, 0.0, lo, hi);
+    }
+    return HYST_OK;
+}
+
+hyst_status_t fit_record_finish(int kind, const hyst_ident_config_t *cfg, const double *x,
+                                const double *y, size_t n, hyst_status_t st,
+                                fit_everett_result_t *res)
+{
+    hyst_curve_t curve;
+    /* HYST_ERR_NOT_MONOTONE: the fit is returned all the same; the curve's
+     * own refusal says why (curve_status) */
+    if (st != HYST_OK && st != HYST_ERR_NOT_MONOTONE) {
+        return st;
+    }
+    res->curve_status = fit_result_curve(kind, res, &curve);
+    if (res->curve_status == HYST_OK) {
+        (void)fit_model_run(NULL, &curve, x, y, n, cfg->skip, cfg->delay, n - cfg->delay,
+                            &res->rms, &res->max_abs);
+    }
+    return HYST_OK;
+}
+
 /* The model of kind `kind` fitted to x[k] with y[k + delay], part->skip <= k
  * < count - delay (part: degree, delay, domain, method): f0 into *f0
  * (FIT_POLY) or the curve into *curve (its grid's table static). 0, or 1
@@ -363,22 +425,14 @@ static int model_fit(const hyst_ident_config_t *part, int kind, unsigned t_degre
                      hyst_curve_t *curve)
 {
     unsigned i;
-    if (kind == FIT_GRID) {
-        static double table[HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)];
-        *status = fit_grid_record(part, part->degree, x, y, count, ev);
+    if (kind != FIT_POLY) {
+        *status = kind == FIT_GRID     ? fit_grid_record(part, part->degree, x, y, count, ev)
+                  : kind == FIT_SPLINE ? fit_spline_record(part, part->degree, x, y, count, ev)
+                                       : fit_everett_record(part, t_degree, x, y, count, ev);
         if (*status == HYST_OK) {
             *status = ev->curve_status;
         }
-        return *status != HYST_OK ||
-               hyst_f64_curve_from_everett_grid(curve, &ev->grid, table,
-                                                sizeof table / sizeof table[0]) != HYST_OK;
-    }
-    if (kind == FIT_EVERETT) {
-        *status = fit_everett_record(part, t_degree, x, y, count, ev);
-        if (*status == HYST_OK) {
-            *status = ev->curve_status;
-        }
-        return *status != HYST_OK || hyst_f64_curve_from_everett(curve, &ev->e) != HYST_OK;
+        return *status != HYST_OK || fit_result_curve(kind, ev, curve) != HYST_OK;
     }
     {
         hyst_ident_t work;
@@ -674,7 +728,7 @@ void fit_score(const hyst_ident_config_t *base, const double *x, const double *y
     cfg.delay = c->delay;
     c->creep.tau = creep_tau >= 0 ? creep_tau : 0.0;
     c->creep.holdout_rms = NAN;
-    if (c->kind == FIT_EVERETT || c->kind == FIT_GRID) {
+    if (c->kind == FIT_EVERETT || c->kind == FIT_GRID || c->kind == FIT_SPLINE) {
         fit_everett_result_t ev;
         hyst_ident_result_t unused;
         c->holdout_rms = holdout(&cfg, c->kind, c->t_degree, c->widened, x, y, n, v,
@@ -772,6 +826,10 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
         }
         for (k = 0u; (kinds & FIT_GRID) != 0 && k < FIT_GRID_CANDIDATES; ++k) {
             add(base, x, y, n, v, creep_tau, FIT_GRID, FIT_GRID_INTERVALS(k), 0u, d, 0, cand,
+                max_cand, &count);
+        }
+        for (k = 0u; (kinds & FIT_SPLINE) != 0 && k < FIT_SPLINE_CANDIDATES; ++k) {
+            add(base, x, y, n, v, creep_tau, FIT_SPLINE, FIT_SPLINE_INTERVALS(k), 0u, d, 0, cand,
                 max_cand, &count);
         }
         for (deg = 1u; (kinds & FIT_EVERETT) != 0 && deg <= HYST_EVERETT_MAX_DEGREE; ++deg) {

@@ -97,17 +97,25 @@ void fit_widened_domain(double lo, double hi, double first, double *wide_lo, dou
 
 /* Kinds of model a candidate may be (see below); FIT_CANDIDATES_PER_DELAY:
  * the most fit_select() adds at one delay (everett ones also widened). */
-#define FIT_CANDIDATES_PER_DELAY (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES + FIT_GRID_CANDIDATES)
+#define FIT_CANDIDATES_PER_DELAY                                                             \
+    (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES + FIT_GRID_CANDIDATES + FIT_SPLINE_CANDIDATES)
 
 /* Kinds of model a candidate may be (a mask for fit_select()): the
- * symmetric TCM's polynomial f0 and the asymmetric kind's E. */
-enum { FIT_POLY = 1, FIT_EVERETT = 2, FIT_GRID = 4 };
+ * symmetric TCM's polynomial f0, the asymmetric kind's E, E on a grid and
+ * the symmetric TCM's f0 a cubic spline. */
+enum { FIT_POLY = 1, FIT_EVERETT = 2, FIT_GRID = 4, FIT_SPLINE = 8 };
 
 /* Grid candidates of each delay (FIT_GRID, the asymmetric kind on a grid):
  * FIT_GRID_INTERVALS(i) knot intervals, i < FIT_GRID_CANDIDATES (the
  * candidate's degree is its number of intervals). */
 #define FIT_GRID_CANDIDATES 2u
 #define FIT_GRID_INTERVALS(i) (4u + 2u * (i))
+
+/* Spline candidates of each delay (FIT_SPLINE, f0 a cubic spline on uniform
+ * knots): FIT_SPLINE_INTERVALS(i) knot intervals, i < FIT_SPLINE_CANDIDATES
+ * (the candidate's degree is its number of intervals): 2..16. */
+#define FIT_SPLINE_CANDIDATES 15u
+#define FIT_SPLINE_INTERVALS(i) (2u + (i))
 
 /* fit_select(): every t-degree of each everett degree. */
 #define FIT_ANY_T_DEGREE 99u
@@ -179,7 +187,7 @@ size_t fit_rate_taus(const double *x, size_t from, size_t to, double *taus);
 size_t fit_settled(const double *x, size_t from, size_t to);
 
 typedef struct fit_candidate {
-    int kind;                 /* FIT_POLY or FIT_EVERETT */
+    int kind;                 /* FIT_POLY, FIT_EVERETT, FIT_GRID or FIT_SPLINE */
     unsigned degree;
     unsigned t_degree;        /* everett: the highest power of t fitted (< degree) */
     size_t delay;
@@ -196,7 +204,8 @@ typedef struct fit_candidate {
 typedef struct fit_everett_result {
     hyst_everett_t e;
     hyst_everett_grid_t grid;   /* FIT_GRID: its grid (e unused) */
-    hyst_status_t curve_status; /* hyst_f64_curve_from_everett() of e */
+    hyst_spline_t spline;       /* FIT_SPLINE: its f0 (e unused) */
+    hyst_status_t curve_status; /* the library's curve of it (fit_result_curve()) */
     double rms, max_abs;        /* the model run over the samples fitted (NaN if refused) */
     double ls_rms;              /* the least-squares residual (hyst_everett_fit_solve()) */
     size_t used;                /* samples fitted */
@@ -204,9 +213,6 @@ typedef struct fit_everett_result {
                                    (hyst_everett_grid_fit_determined()) */
 } fit_everett_result_t;
 
-/* Real numbers a model of this kind and degree identifies: poly the
- * degree + 1 coefficients, everett E's terms w^i t^j with j <= t_degree
- * and y_lo (t_degree ignored for poly). */
 /* The longest delay worth searching for a drive x[from .. to): a fraction
  * of its period (from its reversals, moves below 1 % of its range ignored). */
 size_t fit_max_delay(const double *x, size_t from, size_t to);
@@ -254,7 +260,17 @@ size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const d
 void fit_input_range(const double *x, size_t from, size_t to, double widen, double *lo,
                      double *hi);
 
+/* Real numbers a model of this kind and degree identifies: poly the
+ * degree + 1 coefficients, everett E's terms w^i t^j with j <= t_degree
+ * and y_lo (t_degree ignored for the other kinds), everett_grid of degree K
+ * intervals y_lo, the cells' masses and the inner knots, spline of K
+ * intervals y_lo and its K + 2 weights (K + 3). */
 unsigned fit_parameters(int kind, unsigned degree, unsigned t_degree);
+
+/* The name of a candidate's kind (FIT_POLY, FIT_EVERETT, FIT_GRID or
+ * FIT_SPLINE) in a model file's key `kind`: "poly", "everett",
+ * "everett_grid" or "spline". */
+const char *fit_kind_name(int kind);
 
 /* The TCM (f0, or when f0 is NULL the prepared curve) run from rest over
  * x[skip .. n - delay) against y[k + delay]: the RMS error over the samples
@@ -316,6 +332,42 @@ hyst_status_t fit_everett_add_clamped(hyst_everett_fit_t *fit, const double *x, 
  * steps, refined; res->grid, its curve's status, the model's run. */
 hyst_status_t fit_grid_record(const hyst_ident_config_t *cfg, unsigned k, const double *x,
                               const double *y, size_t n, fit_everett_result_t *res);
+
+/* The symmetric TCM with f0 a monotone cubic spline of k uniform knot
+ * intervals (fit_spline.c): f0 fitted by hyst_spline_fit_*() to x[i] with
+ * y[i + delay], skip <= i < n - delay, along every branch of the record
+ * (minor loops included; outputs from fit_settled() on, the model from rest
+ * at sample skip, as 'hyst sim --model' runs it), on [cfg->lo, cfg->hi]
+ * (samples outside ignored) or the range of those inputs when lo == hi;
+ * res->spline, its curve's status (hyst_f64_curve_from_spline()), the
+ * model's run over the same samples (res->rms, max_abs), res->ls_rms and
+ * res->used. HYST_OK, or the fit's status (HYST_ERR_ARG: no sample or k
+ * outside 1..HYST_SPLINE_MAX_INTERVALS; HYST_ERR_DOMAIN: the inputs span
+ * no range). */
+hyst_status_t fit_spline_record(const hyst_ident_config_t *cfg, unsigned k, const double *x,
+                                const double *y, size_t n, fit_everett_result_t *res);
+
+/* The prepared curve of a fitted result of kind FIT_EVERETT (ev->e),
+ * FIT_GRID (ev->grid) or FIT_SPLINE (ev->spline), as the library's
+ * constructor answers; a grid's or a spline's table is static, one per
+ * kind: the curve holds until the next call for its kind. */
+hyst_status_t fit_result_curve(int kind, const fit_everett_result_t *ev, hyst_curve_t *curve);
+
+/* A fit of x[k] with y[k + delay], skip <= k < n - delay (cfg: skip, delay,
+ * domain), begun: *res cleared (rms and max_abs NaN, curve_status
+ * HYST_ERR_ARG) and [*lo, *hi] the domain, cfg's or the range of those
+ * inputs when it is empty. HYST_OK, or HYST_ERR_ARG (no sample). */
+hyst_status_t fit_record_start(const hyst_ident_config_t *cfg, const double *x, size_t n,
+                               fit_everett_result_t *res, double *lo, double *hi);
+
+/* The same fit ended, st the fit's status: st when it failed (but
+ * HYST_ERR_NOT_MONOTONE, a fit returned all the same), else HYST_OK with
+ * res->curve_status fit_result_curve()'s and, if the library accepts the
+ * curve, the model run from rest over the samples fitted (res->rms,
+ * res->max_abs). */
+hyst_status_t fit_record_finish(int kind, const hyst_ident_config_t *cfg, const double *x,
+                                const double *y, size_t n, hyst_status_t st,
+                                fit_everett_result_t *res);
 
 /* What the front ends say of a grid whose masses the record does not
  * determine (fit_everett_result_t's determined 0). */

@@ -50,23 +50,33 @@ int cli_model_read(const char *cmd, const char *path, cli_model_t *m)
     return rc;
 }
 
+/* A model's curve as the library made it: 0, or 1 after a message with its reason. */
+static int curve_made(const char *cmd, const char *path, hyst_status_t st)
+{
+    return st == HYST_OK ? 0 : cli_fail(cmd, "model file %s: %s", path, hyst_status_str(st));
+}
+
 int cli_everett_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c)
 {
     hyst_everett_t e;
-    hyst_status_t st;
     cli_model_to_everett(m, &e);
-    st = hyst_f64_curve_from_everett(c, &e);
-    return st == HYST_OK ? 0 : cli_fail(cmd, "model file %s: %s", path, hyst_status_str(st));
+    return curve_made(cmd, path, hyst_f64_curve_from_everett(c, &e));
 }
 
 int cli_grid_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c,
                    double *table)
 {
     hyst_everett_grid_t g;
-    hyst_status_t st;
     model_text_to_grid(m, &g);
-    st = hyst_f64_curve_from_everett_grid(c, &g, table, CLI_GRID_TABLE_LEN);
-    return st == HYST_OK ? 0 : cli_fail(cmd, "model file %s: %s", path, hyst_status_str(st));
+    return curve_made(cmd, path, hyst_f64_curve_from_everett_grid(c, &g, table, CLI_GRID_TABLE_LEN));
+}
+
+int cli_spline_curve(const char *cmd, const char *path, const cli_model_t *m, hyst_curve_t *c,
+                     double *table)
+{
+    hyst_spline_t f0;
+    model_text_to_spline(m, &f0);
+    return curve_made(cmd, path, hyst_f64_curve_from_spline(c, &f0, table, CLI_SPLINE_TABLE_LEN));
 }
 
 int cli_header_model(char *buf, size_t size, size_t *len, const char *name, const cli_model_t *m)

@@ -18,7 +18,9 @@
 #define MAX_FIELDS_ \
     (HYST_MAX_DEGREE + 2 > HYST_EVERETT_TERMS + 1 ? HYST_MAX_DEGREE + 2 : HYST_EVERETT_TERMS + 1)
 #define GRID_CELLS_ HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS)
-#define MAX_FIELDS (MAX_FIELDS_ > GRID_CELLS_ + 1 ? MAX_FIELDS_ : GRID_CELLS_ + 1)
+#define MAX_FIELDS__ (MAX_FIELDS_ > GRID_CELLS_ + 1 ? MAX_FIELDS_ : GRID_CELLS_ + 1)
+#define MAX_FIELDS \
+    (MAX_FIELDS__ > HYST_SPLINE_MAX_INTERVALS + 2 ? MAX_FIELDS__ : HYST_SPLINE_MAX_INTERVALS + 2)
 
 /* The longest number read without an allocation (a 17-digit number needs
  * 24 characters). */
@@ -40,12 +42,15 @@ enum {
     K_RATE_WEIGHT,
     K_KNOTS,
     K_WEIGHTS,
+    K_VALUES,
+    K_SLOPES,
     K_COUNT
 };
 static const char *const keys[K_COUNT] = {"kind",      "lo",           "hi",        "coeffs",
                                           "delay",     "y_lo",         "degree",    "terms",
                                           "creep_tau", "creep_weight", "identified",
-                                          "rate_tau",  "rate_weight",  "knots",     "weights"};
+                                          "rate_tau",  "rate_weight",  "knots",     "weights",
+                                          "values",    "slopes"};
 
 /* A field of a line: its start and length. */
 typedef struct field {
@@ -234,6 +239,14 @@ static int check_count(const reader_t *r, unsigned long no, int k, size_t n)
         (void)snprintf(text, sizeof text, "1 to %u numbers (the cells' masses)",
                        (unsigned)GRID_CELLS_);
         needs = text;
+    } else if (k == K_VALUES || k == K_SLOPES) {
+        least = k == K_VALUES ? 3u : 2u;
+        most = HYST_SPLINE_MAX_INTERVALS + 2u;
+        (void)snprintf(text, sizeof text, "%u to %u numbers (%s at the knots)",
+                       (unsigned)least - 1u,
+                       (unsigned)HYST_SPLINE_MAX_INTERVALS + 1u,
+                       k == K_VALUES ? "f0" : "its slope");
+        needs = text;
     }
     if (n < least) {
         return fail(r, "%s:%lu: field %lu is missing: %s needs %s", r->path, no,
@@ -269,6 +282,9 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
     } else if (ok && (k == K_CREEP_TAU || k == K_RATE_TAU)) {
         ok = v >= 1.0;
         what = "a time constant of at least 1 sample";
+    } else if (ok && k == K_SLOPES) {
+        ok = v >= 0.0;
+        what = "a slope >= 0 (f0 increases)";
     }
     if (!ok) {
         return fail(r, "%s:%lu: field %lu: %s is not %s%s", r->path, no, (unsigned long)(i + 1u),
@@ -299,6 +315,8 @@ static int read_value(reader_t *r, unsigned long no, int k, size_t i, const fiel
     case K_RATE_WEIGHT: m->rate_weight = v; break;
     case K_KNOTS: m->knots[i - 1u] = v; break;
     case K_WEIGHTS: m->weights[i - 1u] = v; break;
+    case K_VALUES: m->values[i - 1u] = v; break;
+    case K_SLOPES: m->slopes[i - 1u] = v; break;
     default: m->coeffs[i - 1u] = v; break;
     }
     return 0;
@@ -370,7 +388,7 @@ static int read_line(reader_t *r, unsigned long no, const char *s, size_t n, mod
                     k == K_COUNT ? "is not a key (kind, lo, hi, identified, delay, coeffs, "
                                    "creep_tau, creep_weight, rate_tau, rate_weight; kind "
                                    "everett: y_lo, degree, terms; kind everett_grid: y_lo, "
-                                   "knots, weights)"
+                                   "knots, weights; kind spline: values, slopes)"
                                  : "given twice");
     }
     r->seen[k] = no;
@@ -378,11 +396,16 @@ static int read_line(reader_t *r, unsigned long no, const char *s, size_t n, mod
         const int poly = count == 2u && f[1].n == 4u && memcmp(f[1].s, "poly", 4u) == 0;
         const int everett = count == 2u && f[1].n == 7u && memcmp(f[1].s, "everett", 7u) == 0;
         const int grid = count == 2u && f[1].n == 12u && memcmp(f[1].s, "everett_grid", 12u) == 0;
-        if (!poly && !everett && !grid) {
-            return fail(r, "%s:%lu: field 2: kind must be 'poly', 'everett' or 'everett_grid'",
+        const int spline = count == 2u && f[1].n == 6u && memcmp(f[1].s, "spline", 6u) == 0;
+        if (!poly && !everett && !grid && !spline) {
+            return fail(r, "%s:%lu: field 2: kind must be 'poly', 'everett', 'everett_grid' or "
+                           "'spline'",
                         r->path, no);
         }
-        m->kind = grid ? MODEL_TEXT_GRID : everett ? MODEL_TEXT_EVERETT : MODEL_TEXT_POLY;
+        m->kind = spline    ? MODEL_TEXT_SPLINE
+                  : grid    ? MODEL_TEXT_GRID
+                  : everett ? MODEL_TEXT_EVERETT
+                            : MODEL_TEXT_POLY;
         return 0;
     }
     if (check_count(r, no, k, count) != 0) {
@@ -409,6 +432,10 @@ static int read_line(reader_t *r, unsigned long no, const char *s, size_t n, mod
         m->nknots = count - 1u;
     } else if (k == K_WEIGHTS) {
         m->nweights = count - 1u;
+    } else if (k == K_VALUES) {
+        m->nvalues = count - 1u;
+    } else if (k == K_SLOPES) {
+        m->nslopes = count - 1u;
     }
     return 0;
 }
@@ -421,11 +448,14 @@ static int read_complete(const reader_t *r, const model_text_t *m)
     static const int poly_keys[] = {K_KIND, K_LO, K_HI, K_COEFFS};
     static const int everett_keys[] = {K_KIND, K_LO, K_HI, K_Y_LO, K_DEGREE, K_TERMS};
     static const int grid_keys[] = {K_KIND, K_LO, K_HI, K_Y_LO, K_KNOTS, K_WEIGHTS};
+    static const int spline_keys[] = {K_KIND, K_LO, K_HI, K_VALUES, K_SLOPES};
     const unsigned long *line = r->seen;
     const int everett = line[K_KIND] != 0ul && m->kind == MODEL_TEXT_EVERETT;
     const int grid = line[K_KIND] != 0ul && m->kind == MODEL_TEXT_GRID;
-    const int *need = grid ? grid_keys : everett ? everett_keys : poly_keys;
-    const size_t n_need = grid      ? sizeof grid_keys / sizeof grid_keys[0]
+    const int spline = line[K_KIND] != 0ul && m->kind == MODEL_TEXT_SPLINE;
+    const int *need = spline ? spline_keys : grid ? grid_keys : everett ? everett_keys : poly_keys;
+    const size_t n_need = spline    ? sizeof spline_keys / sizeof spline_keys[0]
+                          : grid    ? sizeof grid_keys / sizeof grid_keys[0]
                           : everett ? sizeof everett_keys / sizeof everett_keys[0]
                                     : sizeof poly_keys / sizeof poly_keys[0];
     size_t i;
@@ -434,16 +464,23 @@ static int read_complete(const reader_t *r, const model_text_t *m)
         for (k = 0; k < K_COUNT; ++k) {
             const int of_everett = k == K_DEGREE || k == K_TERMS;
             const int of_grid = k == K_KNOTS || k == K_WEIGHTS;
-            const int bad = grid      ? k == K_COEFFS || of_everett
-                            : everett ? k == K_COEFFS || of_grid
-                                      : k == K_Y_LO || of_everett || of_grid;
+            const int of_spline = k == K_VALUES || k == K_SLOPES;
+            const int bad = spline    ? k == K_COEFFS || k == K_Y_LO || of_everett || of_grid
+                            : grid    ? k == K_COEFFS || of_everett || of_spline
+                            : everett ? k == K_COEFFS || of_grid || of_spline
+                                      : k == K_Y_LO || of_everett || of_grid || of_spline;
             if (line[k] != 0ul && bad) {
                 return fail(r, "%s:%lu: field 1: %s is not a key of kind %s (%s)", r->path,
-                            line[k], keys[k], grid ? "everett_grid" : everett ? "everett" : "poly",
-                            grid      ? "E is given by knots and weights"
+                            line[k], keys[k],
+                            spline    ? "spline"
+                            : grid    ? "everett_grid"
+                            : everett ? "everett"
+                                      : "poly",
+                            spline    ? "f0 is given by values and slopes"
+                            : grid    ? "E is given by knots and weights"
                             : everett ? "E is given by degree and terms"
                                       : "y_lo, degree, terms, knots and weights are the "
-                                        "asymmetric kinds'");
+                                        "asymmetric kinds', values and slopes the spline's");
             }
         }
     }
@@ -485,6 +522,13 @@ static int read_complete(const reader_t *r, const model_text_t *m)
                     (unsigned long)(m->nweights < want ? m->nweights : want) + 2ul,
                     m->nweights < want ? " is missing" : ": one too many", (unsigned long)want,
                     (unsigned long)m->nknots);
+    }
+    if (spline && m->nslopes != m->nvalues) {
+        return fail(r, "%s:%lu: field %lu%s: slopes needs %lu numbers, one per value", r->path,
+                    line[K_SLOPES],
+                    (unsigned long)(m->nslopes < m->nvalues ? m->nslopes : m->nvalues) + 2ul,
+                    m->nslopes < m->nvalues ? " is missing" : ": one too many",
+                    (unsigned long)m->nvalues);
     }
     if (grid && (m->knots[0] != m->lo || m->knots[m->nknots - 1u] != m->hi)) {
         return fail(r, "%s:%lu: field %lu: knots must run from lo to hi (%.17g, %.17g)", r->path,
@@ -561,8 +605,15 @@ int model_text_check(const model_text_t *m, char *msg, size_t msg_size)
 {
     size_t i;
     const char *why = NULL;
-    if (m->kind != MODEL_TEXT_POLY && m->kind != MODEL_TEXT_EVERETT && m->kind != MODEL_TEXT_GRID) {
-        why = "kind must be 'poly', 'everett' or 'everett_grid'";
+    if (m->kind != MODEL_TEXT_POLY && m->kind != MODEL_TEXT_EVERETT && m->kind != MODEL_TEXT_GRID &&
+        m->kind != MODEL_TEXT_SPLINE) {
+        why = "kind must be 'poly', 'everett', 'everett_grid' or 'spline'";
+    } else if (m->kind == MODEL_TEXT_SPLINE &&
+               (m->nvalues < 2u || m->nvalues > HYST_SPLINE_MAX_INTERVALS + 1u ||
+                m->nslopes != m->nvalues || !all_finite(m->values, m->nvalues) ||
+                !all_finite(m->slopes, m->nslopes))) {
+        why = "values and slopes need as many finite numbers, 2 to " STR(
+            HYST_SPLINE_MAX_INTERVALS) " + 1 (one per knot)";
     } else if (m->kind == MODEL_TEXT_GRID &&
                (m->nknots < 2u || m->nknots > HYST_EVERETT_GRID_MAX_INTERVALS + 1u ||
                 !all_finite(m->knots, m->nknots) || m->knots[0] != m->lo ||
@@ -612,6 +663,11 @@ int model_text_check(const model_text_t *m, char *msg, size_t msg_size)
             why = "creep_tau: a time constant is not at least 1 sample";
         }
     }
+    for (i = 0u; why == NULL && m->kind == MODEL_TEXT_SPLINE && i < m->nslopes; ++i) {
+        if (!(m->slopes[i] >= 0.0)) {
+            why = "slopes: a slope is not >= 0 (f0 increases)";
+        }
+    }
     if (why != NULL) {
         (void)snprintf(msg, msg_size, "%s", why);
         return 1;
@@ -634,7 +690,19 @@ size_t model_text_write(const model_text_t *m, char *buf, size_t size)
 {
     size_t len = 0u;
     int over;
-    if (m->kind == MODEL_TEXT_GRID) {
+    if (m->kind == MODEL_TEXT_SPLINE) {
+        over = model_text_append(
+            buf, size, &len,
+            MODEL_TEXT_MAGIC "\n# hyst model: symmetric, f0 a monotone cubic spline on the uniform "
+                             "knots x_k = lo + k (hi - lo) / K, k = 0..K: values f0(x_k), slopes "
+                             "f0'(x_k) (output units per input unit), a cubic (Hermite) between "
+                             "two knots; the output %.17g samples after its input (docs/cli.md)\n"
+                             "kind spline\nlo %.17g\nhi %.17g\ndelay %.17g\nvalues",
+            model_text_delay(m), m->lo, m->hi, model_text_delay(m));
+        over |= append_numbers(buf, size, &len, m->values, m->nvalues);
+        over |= model_text_append(buf, size, &len, "\nslopes");
+        over |= append_numbers(buf, size, &len, m->slopes, m->nslopes);
+    } else if (m->kind == MODEL_TEXT_GRID) {
         over = model_text_append(
             buf, size, &len,
             MODEL_TEXT_MAGIC "\n# hyst model: asymmetric, E(a, b) the mass of b <= b' <= a' <= a "
@@ -728,6 +796,34 @@ void model_text_from_grid(model_text_t *m, const hyst_everett_grid_t *g, unsigne
     m->lo = m->knots[0];
     m->hi = m->knots[m->nknots - 1u];
     m->y_lo = (double)g->y_lo;
+    m->delay = delay;
+}
+
+void model_text_to_spline(const model_text_t *m, hyst_spline_t *f0)
+{
+    size_t i;
+    memset(f0, 0, sizeof *f0);
+    f0->intervals = m->nvalues >= 2u ? (unsigned)(m->nvalues - 1u) : 0u;
+    f0->lo = (hyst_wide_t)m->lo;
+    f0->hi = (hyst_wide_t)m->hi;
+    for (i = 0u; i < m->nvalues && i <= HYST_SPLINE_MAX_INTERVALS; ++i) {
+        f0->value[i] = (hyst_wide_t)m->values[i];
+        f0->slope[i] = i < m->nslopes ? (hyst_wide_t)m->slopes[i] : 0;
+    }
+}
+
+void model_text_from_spline(model_text_t *m, const hyst_spline_t *f0, unsigned long delay)
+{
+    size_t i;
+    memset(m, 0, sizeof *m);
+    m->kind = MODEL_TEXT_SPLINE;
+    m->nvalues = m->nslopes = (size_t)f0->intervals + 1u;
+    for (i = 0u; i < m->nvalues && i <= HYST_SPLINE_MAX_INTERVALS; ++i) {
+        m->values[i] = (double)f0->value[i];
+        m->slopes[i] = (double)f0->slope[i];
+    }
+    m->lo = (double)f0->lo;
+    m->hi = (double)f0->hi;
     m->delay = delay;
 }
 
@@ -829,6 +925,32 @@ static int header_grid(char *buf, size_t size, size_t *len, const char *name,
     return over | model_text_append(buf, size, len, "}};\n");
 }
 
+/* The spline kind's initializer: the knots' values and slopes (K + 1 of
+ * each; the arrays' other entries 0). */
+static int header_spline(char *buf, size_t size, size_t *len, const char *name,
+                         const model_text_t *m)
+{
+    const unsigned long k = (unsigned long)m->nvalues - 1ul;
+    size_t i, a;
+    int over = model_text_append(
+        buf, size, len,
+        "/* hyst_curve_from_spline(&curve, &%s, table, HYST_SPLINE_TABLE_LEN(%luu)) */\n"
+        "static const hyst_spline_t %s = {\n    %luu,",
+        name, k, name, k);
+    over |= append_real(buf, size, len, " ", m->lo);
+    over |= append_real(buf, size, len, ", ", m->hi);
+    for (a = 0u; a < 2u; ++a) { /* the values, then the slopes */
+        const double *v = a == 0u ? m->values : m->slopes;
+        over |= model_text_append(buf, size, len, ",\n    {");
+        for (i = 0u; i < m->nvalues; ++i) {
+            over |= append_real(buf, size, len, i == 0u ? "" : i % 4u == 0u ? ",\n     " : ", ",
+                                v[i]);
+        }
+        over |= model_text_append(buf, size, len, "}");
+    }
+    return over | model_text_append(buf, size, len, "};\n");
+}
+
 /* The creep term, if any: its count, time constants and weights, for
  * hyst_creep_init() with the domain's lo as the rest drive. */
 static int header_creep(char *buf, size_t size, size_t *len, const char *name,
@@ -888,11 +1010,26 @@ static void guard_of(const char *name, char *guard, size_t size)
     memcpy(guard + i, "_H", 3u);
 }
 
+/* The symmetric TCM's f0, a polynomial: its degree, domain and coefficients. */
+static int header_poly(char *buf, size_t size, size_t *len, const char *name,
+                       const model_text_t *m)
+{
+    size_t i;
+    int over = model_text_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,",
+                                 name, (unsigned)(m->ncoef - 1u));
+    over |= append_real(buf, size, len, " ", m->lo);
+    over |= append_real(buf, size, len, ", ", m->hi);
+    over |= model_text_append(buf, size, len, ",\n    {");
+    for (i = 0u; i < m->ncoef; ++i) {
+        over |= append_real(buf, size, len, i ? ",\n     " : "", m->coeffs[i]);
+    }
+    return over | model_text_append(buf, size, len, "}};\n");
+}
+
 int model_text_header_open(char *buf, size_t size, size_t *len, const char *name,
                            const model_text_t *m)
 {
     char guard[256];
-    size_t i;
     int over;
     guard_of(name, guard, sizeof guard);
     over = model_text_append(buf, size, len,
@@ -900,23 +1037,16 @@ int model_text_header_open(char *buf, size_t size, size_t *len, const char *name
                              guard, m->ncreep > 0u ? "#include \"hyst/creep.h\"\n" : "",
                              m->has_rate ? "#include \"hyst/rate.h\"\n" : "");
     if (m->kind == MODEL_TEXT_EVERETT) {
-        return over | header_everett(buf, size, len, name, m) |
-               header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
+        over |= header_everett(buf, size, len, name, m);
+    } else if (m->kind == MODEL_TEXT_GRID) {
+        over |= header_grid(buf, size, len, name, m);
+    } else if (m->kind == MODEL_TEXT_SPLINE) {
+        over |= header_spline(buf, size, len, name, m);
+    } else {
+        over |= header_poly(buf, size, len, name, m);
     }
-    if (m->kind == MODEL_TEXT_GRID) {
-        return over | header_grid(buf, size, len, name, m) |
-               header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
-    }
-    over |= model_text_append(buf, size, len, "static const hyst_poly_t %s = {\n    %uu,", name,
-                              (unsigned)(m->ncoef - 1u));
-    over |= append_real(buf, size, len, " ", m->lo);
-    over |= append_real(buf, size, len, ", ", m->hi);
-    over |= model_text_append(buf, size, len, ",\n    {");
-    for (i = 0u; i < m->ncoef; ++i) {
-        over |= append_real(buf, size, len, i ? ",\n     " : "", m->coeffs[i]);
-    }
-    return over | model_text_append(buf, size, len, "}};\n") |
-           header_creep(buf, size, len, name, m) | header_rate(buf, size, len, name, m);
+    over |= header_creep(buf, size, len, name, m);
+    return over | header_rate(buf, size, len, name, m);
 }
 
 int model_text_header_close(char *buf, size_t size, size_t *len, const char *name)

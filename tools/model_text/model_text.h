@@ -29,10 +29,10 @@
 #define MODEL_TEXT_MSG_SIZE 1024u
 
 /* The kinds a model file holds (its key `kind`). */
-enum { MODEL_TEXT_POLY = 0, MODEL_TEXT_EVERETT = 1, MODEL_TEXT_GRID = 2 };
+enum { MODEL_TEXT_POLY = 0, MODEL_TEXT_EVERETT = 1, MODEL_TEXT_GRID = 2, MODEL_TEXT_SPLINE = 3 };
 
 typedef struct model_text {
-    int kind;                               /* MODEL_TEXT_POLY, _EVERETT or _GRID */
+    int kind;                               /* MODEL_TEXT_POLY, _EVERETT, _GRID or _SPLINE */
     double coeffs[HYST_MAX_DEGREE + 1];     /* poly: c_n ... c_0, highest power first */
     size_t ncoef;                           /* poly: degree + 1 */
     double lo, hi;                          /* domain, lo < hi */
@@ -57,6 +57,12 @@ typedef struct model_text {
     size_t nknots;
     double weights[HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS)];
     size_t nweights;
+    /* spline (hyst_spline_t): f0 and its slope (output units per input
+     * unit, >= 0) at the K + 1 uniform knots lo + k (hi - lo) / K */
+    double values[HYST_SPLINE_MAX_INTERVALS + 1];
+    size_t nvalues;
+    double slopes[HYST_SPLINE_MAX_INTERVALS + 1];
+    size_t nslopes; /* as read (the reader checks it equals nvalues) */
     /* creep (hyst/creep.h), either kind: lags of the model's input with
      * these time constants (samples) and weights, added to its output; 0
      * terms: none */
@@ -80,7 +86,7 @@ int model_text_parse(const char *text, size_t len, const char *path, model_text_
                      size_t msg_size);
 
 /* Whether *m is a model the reader would accept (counts, finite numbers,
- * lo < hi, a delay in 0..1e9 whose fraction is in [0, 1), a whole degree,
+ * slopes >= 0, lo < hi, a delay in 0..1e9 whose fraction is in [0, 1), a whole degree,
  * time constants >= 1, an identified range within [lo, hi]): 0, or 1 with the
  * reason in msg (naming the key, no line). Writers check with it. */
 int model_text_check(const model_text_t *m, char *msg, size_t msg_size);
@@ -93,8 +99,10 @@ size_t model_text_write(const model_text_t *m, char *buf, size_t size);
 /* The firmware header of *m, declaring NAME (a C identifier): the include
  * guard, 'static const hyst_poly_t NAME = {...};' (kind poly), 'static
  * const hyst_everett_t NAME = {...};' (kind everett, every row of e written
- * out) or 'static const hyst_everett_grid_t NAME = {...};' (kind
- * everett_grid: hyst_*_curve_from_everett_grid() prepares it), and with a creep term NAME_CREEP_TERMS, NAME_creep_tau and
+ * out), 'static const hyst_everett_grid_t NAME = {...};' (kind
+ * everett_grid: hyst_*_curve_from_everett_grid() prepares it) or 'static
+ * const hyst_spline_t NAME = {...};' (kind spline:
+ * hyst_*_curve_from_spline()), and with a creep term NAME_CREEP_TERMS, NAME_creep_tau and
  * NAME_creep_weight; 17-digit literals in HYST_REAL_C(). Appended to
  * buf[*len..size); 1 when it did not fit. In two parts, the guard's opening
  * and the model, then the guard's end, so that a compensator's table may go
@@ -109,7 +117,8 @@ int model_text_header_close(char *buf, size_t size, size_t *len, const char *nam
  * the library in float and in double (the float one from the model's
  * numbers as a float build reads them), sealed, for
  * hyst_curve_inverse_table_const() (kind poly) or
- * hyst_curve_everett_inverse_table_const() (kind everett), with NAME_table,
+ * hyst_curve_everett_inverse_table_const() (kind everett; the other kinds
+ * have none: HYST_ERR_ARG), with NAME_table,
  * NAME_seal, NAME_INTERVALS (and NAME_ROWS, kind everett); with sealed
  * (kind poly) also the compensator's curve sealed with its table,
  * NAME_comp_sealed. rows and intervals as the library's table builders take
@@ -151,6 +160,10 @@ void model_text_from_everett(model_text_t *m, const hyst_everett_t *e, unsigned 
 /* A grid model's E <-> hyst_everett_grid_t (delay 0, no creep). */
 void model_text_to_grid(const model_text_t *m, hyst_everett_grid_t *g);
 void model_text_from_grid(model_text_t *m, const hyst_everett_grid_t *g, unsigned long delay);
+
+/* A spline model's f0 <-> hyst_spline_t (delay 0, no creep). */
+void model_text_to_spline(const model_text_t *m, hyst_spline_t *f0);
+void model_text_from_spline(model_text_t *m, const hyst_spline_t *f0, unsigned long delay);
 
 /* Appends printf output to buf[*len..size); 1 when it did not fit. */
 int model_text_append(char *buf, size_t size, size_t *len, const char *fmt, ...)

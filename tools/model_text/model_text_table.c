@@ -185,6 +185,10 @@ int model_text_header_table(char *buf, size_t size, size_t *len, const char *nam
     char len_macro[256];
     size_t macro_len = 0u;
     int over;
+    if (m->kind != MODEL_TEXT_POLY && !everett) { /* the grid's and the spline's: none */
+        *status = HYST_ERR_ARG;
+        return 1;
+    }
     memset(&b32, 0, sizeof b32);
     memset(&b64, 0, sizeof b64);
     *status = build(m, 1, rows, intervals, &b32);
