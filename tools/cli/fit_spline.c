@@ -52,41 +52,36 @@ static hyst_status_t fit_samples(unsigned k, double lo, double hi, const double 
     }
 }
 
-/* f0 fitted on [a, b] continued to cover [lo, hi] (lo <= a < b <= hi) by
- * whole knot intervals on either side, each a straight line at the slope
- * of f0's end there: monotone, and predicted beyond the inputs fitted
- * rather than held. HYST_ERR_DOMAIN when that needs more than
- * HYST_SPLINE_MAX_INTERVALS in all. */
-static hyst_status_t continue_linearly(hyst_spline_t *f, double lo, double hi)
+/* f0 fitted on [lo, b] continued to cover [lo, hi] (b < hi) by whole knot
+ * intervals above b, a straight line at f0's slope at b: every branch's
+ * shape g(d) = f0(lo + d) - f0(lo) is the fitted one up to the longest
+ * branch the record takes (b - lo), and continues monotone beyond it, so
+ * that inputs beyond the range identified on are predicted rather than
+ * held. Below the inputs nothing is added: the knots start at lo, where the
+ * model rests, as the fit's turning points do. HYST_ERR_DOMAIN when that
+ * needs more than HYST_SPLINE_MAX_INTERVALS in all. */
+static hyst_status_t continue_linearly(hyst_spline_t *f, double hi)
 {
     const unsigned k = f->intervals;
-    const double a = (double)f->lo, b = (double)f->hi, h = (b - a) / (double)k;
-    const double below = lo < a ? ceil((a - lo) / h) : 0.0, above = hi > b ? ceil((hi - b) / h) : 0.0;
-    hyst_spline_t out;
-    unsigned i, e_lo, e_hi;
-    if (!(below + above + (double)k <= (double)HYST_SPLINE_MAX_INTERVALS)) {
+    const double b = (double)f->hi, h = (b - (double)f->lo) / (double)k;
+    const double above = ceil((hi - b) / h);
+    unsigned i;
+    if (!(above + (double)k <= (double)HYST_SPLINE_MAX_INTERVALS)) {
         return HYST_ERR_DOMAIN;
     }
-    e_lo = (unsigned)below;
-    e_hi = (unsigned)above;
-    out = *f;
-    out.intervals = k + e_lo + e_hi;
-    out.lo = (hyst_wide_t)(a - (double)e_lo * h);
-    out.hi = (hyst_wide_t)(b + (double)e_hi * h);
-    for (i = 0u; i <= out.intervals; ++i) {
-        const unsigned at = i < e_lo ? 0u : i - e_lo > k ? k : i - e_lo;
-        const double steps = i < e_lo ? -(double)(e_lo - i) : i - e_lo > k ? (double)(i - e_lo - k) : 0.0;
-        out.slope[i] = f->slope[at];
-        out.value[i] = (hyst_wide_t)((double)f->value[at] + steps * h * (double)f->slope[at]);
+    f->intervals = k + (unsigned)above;
+    f->hi = (hyst_wide_t)(b + above * h);
+    for (i = k + 1u; i <= f->intervals; ++i) {
+        f->slope[i] = f->slope[k];
+        f->value[i] = (hyst_wide_t)((double)f->value[k] + (double)(i - k) * h * (double)f->slope[k]);
     }
-    *f = out;
     return HYST_OK;
 }
 
 hyst_status_t fit_spline_record(const hyst_ident_config_t *cfg, unsigned k, const double *x,
                                 const double *y, size_t n, fit_everett_result_t *res)
 {
-    double lo = 0.0, hi = 0.0, a, b;
+    double lo = 0.0, hi = 0.0, least, b;
     hyst_status_t st = fit_record_start(cfg, x, n, res, &lo, &hi);
     size_t end;
     res->determined = 1;
@@ -94,20 +89,18 @@ hyst_status_t fit_spline_record(const hyst_ident_config_t *cfg, unsigned k, cons
         return HYST_ERR_ARG;
     }
     end = n - cfg->delay;
-    /* the knots over the inputs fitted, within the domain; beyond them, to
-     * the domain's ends, f0 continues as a straight line */
-    fit_input_range(x, cfg->skip, end, 0.0, &a, &b);
-    a = a > lo ? a : lo;
+    /* the knots from lo to the largest input fitted (within the domain);
+     * above it, to hi, f0 continues as a straight line */
+    fit_input_range(x, cfg->skip, end, 0.0, &least, &b); /* least: lo's side stays lo */
     b = b < hi ? b : hi;
-    if (!(a < b)) {
-        a = lo;
+    if (!(lo < b)) {
         b = hi;
     }
     /* HYST_ERR_DOMAIN from the fit: inputs that span no range */
-    st = fit_samples(k, a, b, x, y, cfg->skip, fit_settled(x, cfg->skip, end), end, cfg->delay,
+    st = fit_samples(k, lo, b, x, y, cfg->skip, fit_settled(x, cfg->skip, end), end, cfg->delay,
                      res);
-    if ((st == HYST_OK || st == HYST_ERR_NOT_MONOTONE) && (lo < a || hi > b)) {
-        const hyst_status_t wide = continue_linearly(&res->spline, lo, hi);
+    if ((st == HYST_OK || st == HYST_ERR_NOT_MONOTONE) && hi > b) {
+        const hyst_status_t wide = continue_linearly(&res->spline, hi);
         st = wide != HYST_OK ? wide : st;
     }
     return fit_record_finish(FIT_SPLINE, cfg, x, y, n, st, res);
