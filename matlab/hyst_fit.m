@@ -19,9 +19,9 @@ function f = hyst_fit(x, y, varargin)
 %     degree, method
 %     delay       the 'delay' it was fitted at (samples), which
 %                 HYST_MODEL_SAVE writes to the model file
-%     identified  (kind everett, its domain wider than the inputs: a
-%                 widened candidate chosen, or 'domain') [LO HI], the
-%                 inputs' range it was identified on, saved with it
+%     identified  (kind everett or spline, its domain wider than the
+%                 inputs: a widened candidate chosen, or 'domain') [LO HI],
+%                 the inputs' range it was identified on, saved with it
 %
 %   F = HYST_FIT(X, Y, 'kind', 'everett') fits the asymmetric kind's branch
 %   function E of total degree 'degree' (1..4) by hyst_everett_fit_*: the
@@ -50,8 +50,21 @@ function f = hyst_fit(x, y, varargin)
 %   turning points leave some masses open: major loops alone, for 4
 %   intervals or more).
 %
+%   F = HYST_FIT(X, Y, 'kind', 'spline') fits the symmetric model whose f0
+%   is a monotone cubic spline on 'degree' uniform knot intervals (1..32;
+%   [] compares 2..16) as 'hyst fit --kind spline' does: f0 along every
+%   branch, minor loops included (unbiased where a polynomial f0 is not),
+%   continued over whole intervals to a 'domain' wider than the inputs as
+%   'hyst fit --domain' continues it (no 'method'):
+%   fields kind 'spline', lo, hi, values and slopes (f0 and its slope at
+%   the knots lo + k (hi - lo) / intervals; HYST_SIM takes it), degree (the
+%   intervals fitted), intervals (the model's), rms, max_abs, used,
+%   increasing (the library accepts f0; else a warning
+%   hyst:not_increasing). Not among the kinds compared without 'kind', as
+%   'hyst fit' without --kind.
+%
 %   Options (name/value): 'kind' 'poly' (default with a degree),
-%   'everett' or 'everett_grid', 'degree' (default []: chosen), 'skip'
+%   'everett', 'everett_grid' or 'spline', 'degree' (default []: chosen), 'skip'
 %   samples dropped at the start (default 0), 'delay' samples the output
 %   lags the input (default []: chosen as hyst fit does, 0..8, or up to
 %   1/64 of the drive's period, then a fraction of a sample: f.delay 12.5,
@@ -83,7 +96,7 @@ function f = hyst_fit(x, y, varargin)
 %   never; a number TAU (1..1e9): always a lag of TAU samples. The creep
 %   term chosen gets its weight and a constant from the residual of the
 %   model fitted on the whole record, the constant folded into the model
-%   (f0's constant, E's y_lo), and F the fields
+%   (f0's constant, E's y_lo, every one of a spline's values), and F the fields
 %     creep_tau, creep_weight  the creep term (HYST_SIM, HYST_INV,
 %                 HYST_MODEL_SAVE and HYST_HEADER take it)
 %     creep       a struct: tau, weight, offset (folded in), rms and max_abs
@@ -143,8 +156,8 @@ function f = hyst_fit(x, y, varargin)
   else
     error('hyst:usage', 'hyst_fit: domain is [LO HI] with LO < HI');
   end
-  if ~ischar(opts.kind) || ~any(strcmp(opts.kind, {'poly', 'everett', 'everett_grid'}))
-    error('hyst:usage', 'hyst_fit: kind is ''poly'', ''everett'' or ''everett_grid''');
+  if ~ischar(opts.kind) || ~any(strcmp(opts.kind, {'poly', 'everett', 'everett_grid', 'spline'}))
+    error('hyst:usage', 'hyst_fit: kind is ''poly'', ''everett'', ''everett_grid'' or ''spline''');
   end
   creep_tau = creep_option(opts.creep, 'creep');
   rate_tau = creep_option(opts.rate, 'rate');
@@ -228,10 +241,11 @@ function f = hyst_fit(x, y, varargin)
   % the delay the model was fitted at: HYST_MODEL_SAVE writes it,
   % HYST_HEADER states it
   f.delay = double(opts.delay) + fraction;
-  % a domain wider than the inputs: the range E was identified on, which
-  % HYST_MODEL_SAVE records (as 'hyst fit --save' does)
+  % a domain wider than the inputs: the range E (or the spline) was
+  % identified on, which HYST_MODEL_SAVE records (as 'hyst fit --save' does)
   used = x(double(opts.skip) + 1:max(numel(x) - double(opts.delay), double(opts.skip)));
-  if strcmp(opts.kind, 'everett') && ~isempty(used) && (f.lo < min(used) || max(used) < f.hi)
+  if any(strcmp(opts.kind, {'everett', 'spline'})) && ~isempty(used) && ...
+     (f.lo < min(used) || max(used) < f.hi)
     f.identified = [max(min(used), f.lo), min(max(used), f.hi)];
   end
   if minor_loops
@@ -261,6 +275,10 @@ function f = hyst_fit(x, y, varargin)
   elseif strcmp(opts.kind, 'everett_grid') && ~f.monotone
     warning('hyst:not_monotone', ...
             'hyst_fit: the library refuses the fitted grid on [%g, %g]: try another number of intervals', ...
+            f.lo, f.hi);
+  elseif strcmp(opts.kind, 'spline') && ~f.increasing
+    warning('hyst:not_increasing', ...
+            'hyst_fit: the library refuses the fitted spline f0 on [%g, %g]: try another number of intervals', ...
             f.lo, f.hi);
   end
   if strcmp(opts.kind, 'everett_grid')
@@ -296,7 +314,7 @@ function f = with_terms(f, opts, method, domain, tdegree, x, y, creep_tau, rate,
   c = [];
   without = NaN;
   if creep_tau >= 0 || ~isempty(vx)  % on a validation record, the model scored there too
-    if strcmp(opts.kind, 'everett_grid')
+    if any(strcmp(opts.kind, {'everett_grid', 'spline'}))  % degree: their intervals
       tdegree = 0;
     end
     [without, c] = hyst_mex('score', x, y, kind_code(opts.kind), double(opts.degree), ...
@@ -343,6 +361,8 @@ function f = with_terms(f, opts, method, domain, tdegree, x, y, creep_tau, rate,
   end
   if any(strcmp(opts.kind, {'everett', 'everett_grid'}))
     f.y_lo = f.y_lo + cf.offset;
+  elseif strcmp(opts.kind, 'spline')  % f0 moved as a whole, as hyst fit moves it
+    f.values = f.values + cf.offset;
   else
     f.coeffs(end) = f.coeffs(end) + cf.offset;
   end
@@ -398,7 +418,8 @@ function [opts, cands, creep_tau, domain, x, fraction, rate, vx] = choose(opts, 
       what = 'the validation record';
     end
     error('hyst:no_candidate', ['hyst_fit: no candidate gave a model (an increasing f0, a ' ...
-                                'monotone E) that could predict %s'], what);
+                                'monotone E, a spline f0 the library accepts) that could ' ...
+                                'predict %s'], what);
   end
   for k = 1:numel(cands)
     cands(k).chosen = k == best;
@@ -446,8 +467,9 @@ function f = fit_part(opts, method, domain, tdegree, x, y)
   if strcmp(opts.kind, 'poly')
     f = hyst_mex('fit', x, y, double(opts.degree), method, domain(1), domain(2), ...
                  double(opts.skip), double(opts.delay));
-  elseif strcmp(opts.kind, 'everett_grid')
-    f = hyst_mex('fit_grid', x, y, double(opts.degree), domain(1), domain(2), ...
+  elseif any(strcmp(opts.kind, {'everett_grid', 'spline'}))  % 'degree': the intervals
+    command = struct('everett_grid', 'fit_grid', 'spline', 'fit_spline');
+    f = hyst_mex(command.(opts.kind), x, y, double(opts.degree), domain(1), domain(2), ...
                  double(opts.skip), double(opts.delay));
   else
     f = hyst_mex('fit_everett', x, y, double(opts.degree), domain(1), domain(2), ...
@@ -473,21 +495,14 @@ function [rms, c] = holdout(f, x, y, skip, delay, from, tau, rate_tau)
   if nargin < 8
     rate_tau = 0;
   end
-  if isfield(f, 'kind') && strcmp(f.kind, 'everett_grid')
-    [rms, c] = hyst_mex('holdout_grid', f.knots, f.weights, f.y_lo, x, y, skip, delay, from, ...
-                        tau, rate_tau);
-  elseif isfield(f, 'kind') && strcmp(f.kind, 'everett')
-    [rms, c] = hyst_mex('holdout_everett', f.degree, f.lo, f.hi, f.y_lo, f.terms, x, y, ...
-                        skip, delay, from, tau, rate_tau);
-  else
-    [rms, c] = hyst_mex('holdout', f.coeffs, f.lo, f.hi, x, y, skip, delay, from, tau, rate_tau);
-  end
+  [suffix, args] = hyst_model_args(hyst_model_parts(f, 'hyst_fit'));
+  [rms, c] = hyst_mex(['holdout' suffix], args{:}, x, y, skip, delay, from, tau, rate_tau);
 end
 
 function code = kind_code(kind)
 % The kind as the gateway's select and score take it (fit_select.h's
-% FIT_POLY 1, FIT_EVERETT 2, FIT_GRID 4).
-  code = 1 + strcmp(kind, 'everett') + 3 * strcmp(kind, 'everett_grid');
+% FIT_POLY 1, FIT_EVERETT 2, FIT_GRID 4, FIT_SPLINE 8).
+  code = 1 + strcmp(kind, 'everett') + 3 * strcmp(kind, 'everett_grid') + 7 * strcmp(kind, 'spline');
 end
 
 function tau = creep_option(c, what)

@@ -6,7 +6,10 @@ function text = hyst_header(model, name, varargin)
 %   first line, which names the generator: for a polynomial f0
 %   'static const hyst_poly_t NAME = {...};' (firmware: hyst_init(&S, &NAME,
 %   ...)), for a model of kind 'everett' 'static const hyst_everett_t NAME =
-%   {...};' (hyst_curve_from_everett(), then hyst_init_curve()), the numbers
+%   {...};' (hyst_curve_from_everett(), then hyst_init_curve()), for kind
+%   'everett_grid' a hyst_everett_grid_t and for kind 'spline' a
+%   hyst_spline_t (hyst_curve_from_everett_grid(),
+%   hyst_curve_from_spline(): their tables' lengths in a comment), the numbers
 %   as 17-digit literals in HYST_REAL_C(), exact in a double build. MODEL is
 %   a struct as HYST_SIM and HYST_MODEL_SAVE take it (an E the library
 %   refuses, hyst_curve_from_everett(), is refused here); its delay, when it
@@ -22,9 +25,10 @@ function text = hyst_header(model, name, varargin)
 %   init. 'intervals', N (1..2^20; default HYST_INV_TABLE, 256, or for kind
 %   everett HYST_EVERETT_INV_INTERVALS, 32) and, for kind everett only,
 %   'rows', R (3..4096; default HYST_EVERETT_INV_ROWS, 16) size the table;
-%   they need 'compensator', true. Kind everett_grid has no table (its
-%   compensator, hyst_curve_everett_grid_inverse(), solves each branch in
-%   closed form): the header says so, 'intervals' and 'rows' are refused.
+%   they need 'compensator', true. Kinds everett_grid and spline have no
+%   table (their compensators, hyst_curve_everett_grid_inverse() and
+%   hyst_curve_spline_inverse(), solve each sample): the header says so,
+%   'intervals' and 'rows' are refused.
 %
 %   A model with a creep term (fields creep_tau, creep_weight) also gets
 %   '#include "hyst/creep.h"' and, after its declaration, NAME_CREEP_TERMS,
@@ -66,19 +70,22 @@ function text = hyst_header(model, name, varargin)
     error('hyst:usage', '%s: coeffs has 2 to %d numbers (degree 1..HYST_MAX_DEGREE)', caller, ...
           config.max_degree + 1);
   end
-  if strcmp(p.kind, 'everett_grid') && c && (~isempty(opts.intervals) || ~isempty(opts.rows))
-    error('hyst:usage', ['%s: kind everett_grid has no compensator table (its compensator ' ...
-                         'solves each branch in closed form)'], caller);
+  % a grid's or a spline's compensator is solved: it needs no table
+  solved = hyst_solved_compensator(p.kind);
+  if ~isempty(solved) && c && (~isempty(opts.intervals) || ~isempty(opts.rows))
+    error('hyst:usage', '%s: kind %s has no compensator table (its compensator %s)', caller, ...
+          p.kind, solved);
   end
   check_curve(p, caller);
+  % the guard, the declaration and the creep term (and the compensator's
+  % table: the library builds it in float and in double, sealed): the
+  % format's one implementation (tools/model_text), as 'hyst header' writes them
+  parts = hyst_text_parts(p);
   table = '';
-  if c && ~strcmp(p.kind, 'everett_grid')  % a grid's compensator needs no table
+  if c && isempty(solved)
     [intervals, rows] = hyst_table_sizes(opts.intervals, opts.rows, p.kind, caller, false);
-    table = compensator_text(p, name, intervals, rows);
+    table = hyst_mex('header_table', name, parts{:}, intervals, rows);
   end
-  % the guard, the declaration and the creep term: the format's one
-  % implementation (tools/model_text), as 'hyst header' writes them
-  parts = model_args(p);
   text = [model_comment(p, c), hyst_mex('header_open', name, parts{:}, p.rate_tau, p.rate_weight), ...
           table, ...
           hyst_mex('header_close', name)];
@@ -88,17 +95,12 @@ function text = hyst_header(model, name, varargin)
 end
 
 function check_curve(p, caller)
-% The curve as firmware's init would take it (f0, E or the grid: the
-% library's curve checks, then its init), as the host tool checks it: the
-% gateway inits it and runs no sample.
+% The curve as firmware's init would take it (f0, E, the grid or the
+% spline: the library's curve checks, then its init), as the host tool
+% checks it: the gateway inits it and runs no sample.
+  [suffix, args] = hyst_model_args(p);
   try
-    if strcmp(p.kind, 'everett')
-      hyst_mex('sim_everett', p.degree, p.lo, p.hi, p.y_lo, p.terms, zeros(0, 1), 2, 0);
-    elseif strcmp(p.kind, 'everett_grid')
-      hyst_mex('sim_grid', p.knots, p.weights, p.y_lo, zeros(0, 1), 2, 0);
-    else
-      hyst_mex('sim', p.coeffs, p.lo, p.hi, zeros(0, 1), 2, 0);
-    end
+    hyst_mex(['sim' suffix], args{:}, zeros(0, 1), 2, 0);
   catch err
     error(err.identifier, '%s: the model is refused: %s', caller, err.message);
   end
@@ -106,17 +108,23 @@ end
 
 function text = model_comment(p, compensator)
 % The first comment: the generator (its first line, the one that differs
-% from the host tool's), the model, the sensor's delay (a grid's compensator:
-% how firmware builds it).
+% from the host tool's), the model, the sensor's delay (a grid's or a
+% spline's compensator: how firmware builds it).
   first = ['/* Generated by the MATLAB/Octave package hyst (hyst_header), as ''hyst header'' ' ...
            'writes it:\n'];
-  if strcmp(p.kind, 'everett_grid')
+  if any(strcmp(p.kind, {'everett_grid', 'spline'}))
+    if strcmp(p.kind, 'spline')
+      what = {'symmetric model, f0 a monotone cubic spline\n *', numel(p.values) - 1, ...
+              'hyst_curve_from_spline()'};
+    else
+      what = {'asymmetric model on a grid', numel(p.knots) - 1, 'hyst_curve_from_everett_grid()'};
+    end
     text = sprintf([first ...
-                    ' * asymmetric model on a grid of %d knot intervals on [%.9g, %.9g]\n' ...
-                    ' * (hyst_curve_from_everett_grid(), then hyst_init_curve()); the\n' ...
+                    ' * ' what{1} ' of %d knot intervals on [%.9g, %.9g]\n' ...
+                    ' * (%s, then hyst_init_curve()); the\n' ...
                     ' * measured output follows its input %.17g samples later (a sensor\n' ...
-                    ' * delay: the model does not include it).%s */\n'], numel(p.knots) - 1, ...
-                   p.lo, p.hi, p.delay, grid_compensator(compensator));
+                    ' * delay: the model does not include it).%s */\n'], what{2}, ...
+                   p.lo, p.hi, what{3}, p.delay, solved_compensator(p.kind, compensator));
   elseif strcmp(p.kind, 'everett')
     text = sprintf([first ...
                     ' * asymmetric model, branch function E of degree %d on [%.9g, %.9g]\n' ...
@@ -131,30 +139,15 @@ function text = model_comment(p, compensator)
   end
 end
 
-function parts = model_args(p)
-% The model's parts as the gateway's header_open takes them.
-  if strcmp(p.kind, 'everett_grid')  % knots, weights in coeffs', terms' places
-    parts = {'everett_grid', p.lo, p.hi, 0, p.knots, 0, p.y_lo, p.weights, p.creep_tau, ...
-             p.creep_weight};
-  elseif strcmp(p.kind, 'everett')
-    parts = {'everett', p.lo, p.hi, 0, [], p.degree, p.y_lo, p.terms, p.creep_tau, p.creep_weight};
-  else
-    parts = {'poly', p.lo, p.hi, 0, p.coeffs, 0, 0, [], p.creep_tau, p.creep_weight};
-  end
-end
-
-function text = compensator_text(p, name, intervals, rows)
-% The compensator's table built by the library in float and in double,
-% sealed: the text hyst header --compensator writes, from the same C
-% (tools/model_text, the gateway's header_table).
-  parts = model_args(p);
-  text = hyst_mex('header_table', name, parts{:}, intervals, rows);
-end
-
-function text = grid_compensator(compensator)
-% A grid header's sentence on its compensator, as 'hyst header --compensator' writes it.
+function text = solved_compensator(kind, compensator)
+% A grid's or a spline's header's sentence on its compensator, as 'hyst
+% header --compensator' writes it.
   text = '';
-  if compensator
+  if compensator && strcmp(kind, 'spline')
+    text = sprintf(['\n * The compensator: hyst_curve_spline_inverse() of that curve,\n' ...
+                    ' * then hyst_init_curve(); each drive solved on its cubic piece per\n' ...
+                    ' * sample, no table of its own.']);
+  elseif compensator
     text = sprintf(['\n * The compensator: hyst_curve_everett_grid_inverse() of that curve,\n' ...
                     ' * then hyst_init_curve(); each branch solved in closed form, no\n' ...
                     ' * table of its own.']);

@@ -10,9 +10,11 @@ function [x, status, tp_count, inv_err] = hyst_inv(model, y, varargin)
 %   curve: desired outputs on [y_lo, y_lo + E(hi, lo)], each branch solved
 %   (Newton's iteration, bracketed), the drive within about 1e-12 (double)
 %   or 1e-6 (single) of hi - lo. For kind 'everett_grid' it is
-%   hyst_*_curve_everett_grid_inverse(), each branch solved in closed form
-%   (no table: 'intervals' and 'rows' are refused). Options and outputs as
-%   HYST_SIM.
+%   hyst_*_curve_everett_grid_inverse(), each branch solved in closed form,
+%   and for kind 'spline' hyst_curve_spline_inverse(), each drive solved on
+%   f0's cubic piece (exact at the knots; a flat piece has no inverse:
+%   hyst:ERR_NOT_INVERTIBLE): no table for either ('intervals' and 'rows'
+%   are refused). Options and outputs as HYST_SIM.
 %
 %   HYST_INV(MODEL, Y, 'intervals', N) runs the tabulated compensator
 %   firmware runs, bit for bit (the same C code; Y double: f64, single: f32):

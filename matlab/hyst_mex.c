@@ -19,11 +19,17 @@
  *                           [, ctau, cweight[, rtau, rweight]])
  *   [x, st, ntp] = hyst_mex('inv_grid', knots, weights, y_lo, y, capacity, deadband
  *                           [, ctau, cweight[, rtau, rweight]])
+ *   [y, st, ntp] = hyst_mex('sim_spline', lo, hi, values, slopes, x, capacity, deadband
+ *                           [, ctau, cweight[, rtau, rweight]])
+ *   [x, st, ntp] = hyst_mex('inv_spline', lo, hi, values, slopes, y, capacity, deadband
+ *                           [, ctau, cweight[, rtau, rweight]])
  *   [c, st] = hyst_mex('creep', tau, weight, x_rest, x)
  *   [rms, creep] = hyst_mex('holdout', coeffs, lo, hi, x, y, skip, delay, from, tau)
  *   [rms, creep] = hyst_mex('holdout_everett', degree, lo, hi, y_lo, terms, x, y, skip, delay,
  *                           from, tau)
  *   [rms, creep] = hyst_mex('holdout_grid', knots, weights, y_lo, x, y, skip, delay, from, tau)
+ *   [rms, creep] = hyst_mex('holdout_spline', lo, hi, values, slopes, x, y, skip, delay, from,
+ *                           tau)
  *   [t, crc, max_err, exact, err] = hyst_mex('inv_table', coeffs, lo, hi, intervals, class)
  *   [t, crc, max_err, exact, err] = hyst_mex('inv_table_everett', degree, lo, hi, y_lo, terms,
  *                                            intervals, rows, class)
@@ -31,6 +37,7 @@
  *   f = hyst_mex('fit', x, y, degree, method, lo, hi, skip, delay)
  *   f = hyst_mex('fit_everett', x, y, degree, lo, hi, skip, delay)
  *   f = hyst_mex('fit_grid', x, y, intervals, lo, hi, skip, delay)
+ *   f = hyst_mex('fit_spline', x, y, intervals, lo, hi, skip, delay)
  *   [delay, fraction, x] = hyst_mex('given_delay', x, y, kind, degree, t_degree, method, lo,
  *                                   hi, skip)
  *   e = hyst_mex('excitation', x, skip, end)   what the hold-out tests a choice on
@@ -54,6 +61,15 @@
  * 'everett_grid'; model_parse's struct names them knots and weights).
  * fit_grid: the grid of `intervals` knot intervals as `hyst fit --kind
  * everett_grid` fits it (fit_grid_record(), tools/cli/fit_grid.c).
+ * sim_spline runs the symmetric kind whose f0 is a monotone cubic spline on
+ * uniform knots (hyst_spline_t: lo, hi, f0's values and slopes at the K + 1
+ * knots), inv_spline its compensator (hyst_curve_spline_inverse(), each
+ * drive solved per sample), as `hyst sim --model` and `hyst inv --model`
+ * run a file of kind spline; model_write, header_open and model_parse take
+ * and give its values and slopes in the places of coeffs and terms (kind
+ * 'spline'; model_parse's struct names them values and slopes).
+ * fit_spline: the spline of `intervals` knot intervals as `hyst fit --kind
+ * spline` fits it (fit_spline_record(), tools/cli/fit_spline.c).
  * sim_everett runs the asymmetric kind (hyst_everett_t; terms are e[i-1][j]
  * of w^i t^j for i = 1..degree, then j = 0..degree-i), inv_everett its
  * compensator: intervals 0, hyst_curve_inverse() (HYST_CURVE_EVERETT_INV,
@@ -273,11 +289,13 @@ typedef struct model_arg {
     int inverse;        /* the compensator */
     int everett;        /* the asymmetric kind: e, not f0 */
     int grid;           /* the asymmetric kind on a grid: g (e, f0 unused) */
+    int spline;         /* the symmetric kind, f0 a cubic spline: s (e, f0 unused) */
     size_t intervals;   /* the compensator tabulated (firmware's); 0: exact (or solved) */
     size_t rows;        /* E's tabulated compensator: rows per direction */
     hyst_poly_t f0;
     hyst_everett_t e;
     hyst_everett_grid_t g;
+    hyst_spline_t s;
     size_t ncreep;      /* lags of its creep term; 0: none */
     hyst_wide_t creep_tau[HYST_CREEP_MAX_TERMS], creep_weight[HYST_CREEP_MAX_TERMS];
     int has_rate;       /* a rate term of time constant rate_tau, weight rate_weight */
@@ -332,13 +350,21 @@ static void terms_args(model_arg_t *m, const mxArray *const *prhs, int n)
     }
 }
 
+/* Numbers of the table of m's curve itself: a grid's or a spline's (0: the others). */
+static size_t own_table_len(const model_arg_t *m)
+{
+    return m->grid     ? HYST_EVERETT_GRID_TABLE_LEN(m->g.intervals)
+           : m->spline ? HYST_SPLINE_TABLE_LEN(m->s.intervals)
+                       : 0u;
+}
+
 /* Numbers of the table m's compensator needs (0: none), counted in double
  * where size_t could wrap (rows and intervals at their largest need 2^35). */
 static double table_numbers(const model_arg_t *m)
 {
     const double row = 4.0 * ((double)m->intervals + 1.0); /* HYST_INV_TABLE_LEN */
-    if (m->grid) {
-        return (double)HYST_EVERETT_GRID_TABLE_LEN(m->g.intervals);
+    if (m->grid || m->spline) {
+        return (double)own_table_len(m);
     }
     if (!m->inverse || m->intervals == 0u) {
         return 0.0;
@@ -349,8 +375,8 @@ static double table_numbers(const model_arg_t *m)
 /* The same as a size_t, once table_numbers() is known to fit. */
 static size_t table_len(const model_arg_t *m)
 {
-    if (m->grid) { /* the grid curve's own table */
-        return HYST_EVERETT_GRID_TABLE_LEN(m->g.intervals);
+    if (m->grid || m->spline) {
+        return own_table_len(m);
     }
     if (!m->inverse || m->intervals == 0u) {
         return 0u;
@@ -370,11 +396,13 @@ static size_t table_len(const model_arg_t *m)
         T *const xl = tp, *const yl = tp + cap, *const xr = tp + 2u * cap,                  \
                  *const yr = tp + 3u * cap;                                                 \
         int st;                                                                             \
-        if (m->grid) {                                                                      \
+        if (m->grid || m->spline) { /* a curve of its own table, solved inverse */         \
             hyst_curve_t fwd;                                                               \
-            st = hyst_##P##_curve_from_everett_grid(&fwd, &m->g, table, table_len(m));      \
+            st = m->grid ? hyst_##P##_curve_from_everett_grid(&fwd, &m->g, table, table_len(m)) \
+                         : hyst_##P##_curve_from_spline(&fwd, &m->s, table, table_len(m));  \
             if (st == HYST_OK && m->inverse) {                                              \
-                st = hyst_##P##_curve_everett_grid_inverse(curve, &fwd);                    \
+                st = m->grid ? hyst_##P##_curve_everett_grid_inverse(curve, &fwd)           \
+                             : hyst_curve_spline_inverse(curve, &fwd);                      \
             } else {                                                                        \
                 *curve = fwd;                                                               \
             }                                                                               \
@@ -472,11 +500,19 @@ DEFINE_RUN(f64, double)
 DEFINE_RUN(f32, float)
 #undef DEFINE_RUN
 
+/* The lo of m's domain: where its creep and rate terms rest. */
+static hyst_wide_t model_lo(const model_arg_t *m)
+{
+    return (hyst_wide_t)(m->grid     ? m->g.knots[0]
+                         : m->spline ? m->s.lo
+                         : m->everett ? m->e.lo
+                                      : m->f0.lo);
+}
+
 /* The creep term of m in variant f64 (or f32), every lag at the domain's lo. */
 static int creep_init(hyst_creep_t *C, const model_arg_t *m, int f32)
 {
-    const hyst_wide_t x_rest =
-        (hyst_wide_t)(m->grid ? m->g.knots[0] : m->everett ? m->e.lo : m->f0.lo);
+    const hyst_wide_t x_rest = model_lo(m);
     if (m->ncreep == 0u) {
         return HYST_OK;
     }
@@ -487,8 +523,7 @@ static int creep_init(hyst_creep_t *C, const model_arg_t *m, int f32)
 /* The rate term of m in variant f64 (or f32), at rest at the domain's lo. */
 static int rate_init(hyst_rate_t *R, const model_arg_t *m, int f32)
 {
-    const hyst_wide_t x_rest =
-        (hyst_wide_t)(m->grid ? m->g.knots[0] : m->everett ? m->e.lo : m->f0.lo);
+    const hyst_wide_t x_rest = model_lo(m);
     if (!m->has_rate) {
         return HYST_OK;
     }
@@ -645,23 +680,58 @@ static void grid_arg(hyst_everett_grid_t *g, const mxArray *const prhs[3])
     g->y_lo = (hyst_wide_t)scalar(prhs[2], "y_lo");
 }
 
-/* sim_grid or inv_grid: prhs = knots, weights, y_lo, x, capacity, deadband
- * [, ctau, cweight[, rtau, rweight]]. */
-static void run_grid(int inverse, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+/* A spline's lo, hi, values and slopes (prhs[0..3]) into *f0: real
+ * double vectors of 2..HYST_SPLINE_MAX_INTERVALS + 1 values and as many
+ * slopes for K intervals; their values are the library's to check. */
+static void spline_arg(hyst_spline_t *f0, const mxArray *const prhs[4])
 {
+    const size_t n = mxGetNumberOfElements(prhs[2]);
+    size_t i;
+    if (!is_real_double(prhs[2]) || !is_real_double(prhs[3]) || n < 2u ||
+        n > HYST_SPLINE_MAX_INTERVALS + 1u || mxGetNumberOfElements(prhs[3]) != n) {
+        usage("a spline takes 2 to HYST_SPLINE_MAX_INTERVALS + 1 values and as many slopes "
+              "(real double vectors)");
+    }
+    memset(f0, 0, sizeof *f0);
+    f0->intervals = (unsigned)(n - 1u);
+    f0->lo = (hyst_wide_t)scalar(prhs[0], "lo");
+    f0->hi = (hyst_wide_t)scalar(prhs[1], "hi");
+    for (i = 0u; i < n; ++i) {
+        f0->value[i] = (hyst_wide_t)((const double *)mxGetData(prhs[2]))[i];
+        f0->slope[i] = (hyst_wide_t)((const double *)mxGetData(prhs[3]))[i];
+    }
+}
+
+/* sim_grid or inv_grid (prhs = knots, weights, y_lo, x, capacity, deadband
+ * [, ctau, cweight[, rtau, rweight]]), or sim_spline or inv_spline (prhs =
+ * lo, hi, values, slopes, x, ...): the kinds whose curve has a table of its
+ * own and whose compensator is solved. */
+static void run_own(int spline, int inverse, int nlhs, mxArray *plhs[], int nrhs,
+                    const mxArray *prhs[])
+{
+    const int at = spline ? 4 : 3; /* x, then capacity, deadband[, the terms] */
     model_arg_t m;
-    if (nrhs != 6 && nrhs != 8 && nrhs != 10) {
-        usage(inverse ? "inv_grid takes knots, weights, y_lo, y, capacity, deadband[, ctau, "
-                        "cweight[, rtau, rweight]]"
-                      : "sim_grid takes knots, weights, y_lo, x, capacity, deadband[, ctau, "
-                        "cweight[, rtau, rweight]]");
+    if (nrhs != at + 3 && nrhs != at + 5 && nrhs != at + 7) {
+        usage(spline ? (inverse ? "inv_spline takes lo, hi, values, slopes, y, capacity, "
+                                  "deadband[, ctau, cweight[, rtau, rweight]]"
+                                : "sim_spline takes lo, hi, values, slopes, x, capacity, "
+                                  "deadband[, ctau, cweight[, rtau, rweight]]")
+               : inverse ? "inv_grid takes knots, weights, y_lo, y, capacity, deadband[, ctau, "
+                           "cweight[, rtau, rweight]]"
+                         : "sim_grid takes knots, weights, y_lo, x, capacity, deadband[, ctau, "
+                           "cweight[, rtau, rweight]]");
     }
     memset(&m, 0, sizeof m);
-    m.grid = 1;
+    m.grid = !spline;
+    m.spline = spline;
     m.inverse = inverse;
-    grid_arg(&m.g, prhs);
-    terms_args(&m, prhs + 6, nrhs - 6);
-    run_tcm(&m, nlhs, plhs, prhs + 3);
+    if (spline) {
+        spline_arg(&m.s, prhs);
+    } else {
+        grid_arg(&m.g, prhs);
+    }
+    terms_args(&m, prhs + at + 3, nrhs - at - 3);
+    run_tcm(&m, nlhs, plhs, prhs + at);
 }
 
 /* v as a float build reads the header's literal of it (17 digits; HYST_REAL_C(lit)
@@ -942,6 +1012,62 @@ static void run_fit_everett(mxArray *plhs[], int nrhs, const mxArray *prhs[])
 
 static mxArray *row_of(const double *v, size_t n);
 
+/* A host tool's fit of a record (fit_grid_record(), fit_spline_record()). */
+typedef hyst_status_t (*record_fit_t)(const hyst_ident_config_t *cfg, unsigned k, const double *x,
+                                      const double *y, size_t n, fit_everett_result_t *res);
+
+/* fit_grid and fit_spline: prhs = x, y, intervals (1..most), lo, hi, skip,
+ * delay; fit's result into *r and the struct of `fields` returned, its
+ * kind and degree (the intervals asked for) set; hyst:usage, hyst:ERR_ARG
+ * where skip and delay leave no sample, or the fit's refusal
+ * (hyst:<status name>). */
+static mxArray *fit_record(const char *cmd, const char *kind, double most, record_fit_t fit,
+                           const char **fields, int nfields, int nrhs,
+                           const mxArray *prhs[], fit_everett_result_t *r)
+{
+    char msg[128];
+    hyst_ident_config_t cfg;
+    size_t n;
+    hyst_status_t st;
+    mxArray *s;
+    if (nrhs != 7 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
+        mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
+        (void)snprintf(msg, sizeof msg, "%s takes x, y (real double vectors of one length), "
+                                        "intervals, lo, hi, skip, delay", cmd);
+        usage(msg);
+    }
+    n = mxGetNumberOfElements(prhs[0]);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.degree = (unsigned)count(prhs[2], "intervals", 1.0, most);
+    cfg.lo = scalar(prhs[3], "lo");
+    cfg.hi = scalar(prhs[4], "hi");
+    cfg.skip = count(prhs[5], "skip", 0.0, 1e15);
+    cfg.delay = count(prhs[6], "delay", 0.0, 1e15);
+    if (cfg.skip >= n || cfg.delay >= n - cfg.skip) {
+        fail_status("hyst_fit", HYST_ERR_ARG);
+    }
+    st = fit(&cfg, cfg.degree, (const double *)mxGetData(prhs[0]),
+             (const double *)mxGetData(prhs[1]), n, r);
+    if (st != HYST_OK) {
+        fail_status("hyst_fit", st);
+    }
+    s = mxCreateStructMatrix(1, 1, nfields, fields);
+    set_field(s, "kind", mxCreateString(kind));
+    set_field(s, "degree", mxCreateDoubleScalar((double)cfg.degree));
+    return s;
+}
+
+/* A record fit's figures into s: rms (the model's run; the least-squares
+ * residual when the library refuses the curve), max_abs, used, and whether
+ * the library accepts the curve, in the field named `accepted`. */
+static void set_fit_figures(mxArray *s, const fit_everett_result_t *r, const char *accepted)
+{
+    set_field(s, "rms", mxCreateDoubleScalar(r->curve_status == HYST_OK ? r->rms : r->ls_rms));
+    set_field(s, "max_abs", mxCreateDoubleScalar(r->max_abs));
+    set_field(s, "used", mxCreateDoubleScalar((double)r->used));
+    set_field(s, accepted, mxCreateLogicalScalar(r->curve_status == HYST_OK));
+}
+
 /* fit_grid: prhs = x, y, intervals, lo, hi, skip, delay; the grid as `hyst
  * fit --kind everett_grid` fits it (fit_grid_record()): a struct of kind
  * 'everett_grid', degree (its intervals), lo, hi, y_lo, knots, weights,
@@ -955,47 +1081,44 @@ static void run_fit_grid(mxArray *plhs[], int nrhs, const mxArray *prhs[])
                                    "y_lo",    "knots",  "weights",   "rms",
                                    "max_abs", "used",   "monotone",  "determined",
                                    "undetermined_why"};
-    hyst_ident_config_t cfg;
     fit_everett_result_t r;
-    hyst_status_t st;
-    size_t n;
-    unsigned k;
-    mxArray *s;
-    if (nrhs != 7 || !is_real_double(prhs[0]) || !is_real_double(prhs[1]) ||
-        mxGetNumberOfElements(prhs[0]) != mxGetNumberOfElements(prhs[1])) {
-        usage("fit_grid takes x, y (real double vectors of one length), intervals, lo, hi, "
-              "skip, delay");
-    }
-    n = mxGetNumberOfElements(prhs[0]);
-    memset(&cfg, 0, sizeof cfg);
-    k = (unsigned)count(prhs[2], "intervals", 1.0, (double)HYST_EVERETT_GRID_MAX_INTERVALS);
-    cfg.degree = k;
-    cfg.lo = scalar(prhs[3], "lo");
-    cfg.hi = scalar(prhs[4], "hi");
-    cfg.skip = count(prhs[5], "skip", 0.0, 1e15);
-    cfg.delay = count(prhs[6], "delay", 0.0, 1e15);
-    if (cfg.skip >= n || cfg.delay >= n - cfg.skip) {
-        fail_status("hyst_fit", HYST_ERR_ARG);
-    }
-    st = fit_grid_record(&cfg, k, (const double *)mxGetData(prhs[0]),
-                         (const double *)mxGetData(prhs[1]), n, &r);
-    if (st != HYST_OK) {
-        fail_status("hyst_fit", st);
-    }
-    s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
-    set_field(s, "kind", mxCreateString("everett_grid"));
-    set_field(s, "degree", mxCreateDoubleScalar((double)r.grid.intervals));
+    mxArray *s = fit_record("fit_grid", "everett_grid", (double)HYST_EVERETT_GRID_MAX_INTERVALS,
+                            fit_grid_record, fields, (int)(sizeof fields / sizeof fields[0]),
+                            nrhs, prhs, &r);
     set_field(s, "lo", mxCreateDoubleScalar(r.grid.knots[0]));
     set_field(s, "hi", mxCreateDoubleScalar(r.grid.knots[r.grid.intervals]));
     set_field(s, "y_lo", mxCreateDoubleScalar(r.grid.y_lo));
     set_field(s, "knots", row_of(r.grid.knots, r.grid.intervals + 1u));
     set_field(s, "weights", row_of(r.grid.weight, HYST_EVERETT_GRID_CELLS(r.grid.intervals)));
-    set_field(s, "rms", mxCreateDoubleScalar(r.curve_status == HYST_OK ? r.rms : r.ls_rms));
-    set_field(s, "max_abs", mxCreateDoubleScalar(r.max_abs));
-    set_field(s, "used", mxCreateDoubleScalar((double)r.used));
-    set_field(s, "monotone", mxCreateLogicalScalar(r.curve_status == HYST_OK));
+    set_fit_figures(s, &r, "monotone");
     set_field(s, "determined", mxCreateLogicalScalar(r.determined != 0));
     set_field(s, "undetermined_why", mxCreateString(r.determined ? "" : fit_grid_undetermined));
+    plhs[0] = s;
+}
+
+/* fit_spline: prhs = x, y, intervals, lo, hi, skip, delay; f0 the spline
+ * as `hyst fit --kind spline` fits it (fit_spline_record(), along every
+ * branch, continued over whole intervals to a domain wider than the
+ * inputs): a struct of kind 'spline', degree (the intervals fitted),
+ * intervals (the model's: more where continued),
+ * lo, hi, values, slopes, rms (the model's run; the least-squares residual
+ * when the library refuses the spline), max_abs, used and increasing (the
+ * library accepts it: f0 increases). */
+static void run_fit_spline(mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *fields[] = {"kind",   "degree", "intervals", "lo",   "hi",
+                                   "values", "slopes", "rms",       "max_abs", "used",
+                                   "increasing"};
+    fit_everett_result_t r;
+    mxArray *s = fit_record("fit_spline", "spline", (double)HYST_SPLINE_MAX_INTERVALS,
+                            fit_spline_record, fields, (int)(sizeof fields / sizeof fields[0]),
+                            nrhs, prhs, &r);
+    set_field(s, "intervals", mxCreateDoubleScalar((double)r.spline.intervals));
+    set_field(s, "lo", mxCreateDoubleScalar(r.spline.lo));
+    set_field(s, "hi", mxCreateDoubleScalar(r.spline.hi));
+    set_field(s, "values", row_of(r.spline.value, r.spline.intervals + 1u));
+    set_field(s, "slopes", row_of(r.spline.slope, r.spline.intervals + 1u));
+    set_fit_figures(s, &r, "increasing");
     plhs[0] = s;
 }
 
@@ -1043,20 +1166,23 @@ static void run_creep(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     }
 }
 
-/* holdout (prhs = coeffs, lo, hi, x, y, skip, delay, from, tau) or
- * holdout_everett (prhs = degree, lo, hi, y_lo, terms, x, y, skip, delay,
- * from, tau): the model run from rest over the record as `hyst fit` scores
- * it, by the tool's own code (fit_model_run_creep(), tools/cli/fit_select.c);
+/* holdout (kind 0; prhs = coeffs, lo, hi, x, y, skip, delay, from, tau),
+ * holdout_everett (kind 1; prhs = degree, lo, hi, y_lo, terms, x, y, skip,
+ * delay, from, tau), holdout_grid (kind 2; knots, weights, y_lo, x, ...) or
+ * holdout_spline (kind 3; lo, hi, values, slopes, x, ...): the model run
+ * from rest over the record as `hyst fit` scores it, by the tool's own code
+ * (fit_model_run_creep(), tools/cli/fit_select.c);
  * plhs = its RMS error from sample from on (0-based), and the creep term
  * fitted to its residual before `from` and scored after (tau > 0 that time
  * constant, 0 the best of the tool's series; tau < 0: none, []). */
-static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+static void run_holdout(int kind, int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"tau", "weight", "offset", "holdout_rms", "fit_rms",
                                    "max_abs", "rate_tau", "rate_weight"};
     static double grid_table[HYST_EVERETT_GRID_TABLE_LEN(HYST_EVERETT_GRID_MAX_INTERVALS)];
-    const int grid = everett == 2; /* holdout_grid: knots, weights, y_lo */
-    const int at = grid ? 3 : everett ? 5 : 3; /* x, then y, skip, delay, from, tau */
+    static double spline_table[HYST_SPLINE_TABLE_LEN(HYST_SPLINE_MAX_INTERVALS)];
+    const int everett = kind == 1, grid = kind == 2, spline = kind == 3;
+    const int at = everett ? 5 : spline ? 4 : 3; /* x, then y, skip, delay, from, tau */
     model_arg_t m;
     hyst_curve_t curve;
     fit_creep_t best;
@@ -1066,6 +1192,8 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     if (nrhs != at + 6 && nrhs != at + 7) {
         usage(grid      ? "holdout_grid takes knots, weights, y_lo, x, y, skip, delay, from, tau"
                           "[, rate_tau]"
+              : spline  ? "holdout_spline takes lo, hi, values, slopes, x, y, skip, delay, from, "
+                          "tau[, rate_tau]"
               : everett ? "holdout_everett takes degree, lo, hi, y_lo, terms, x, y, skip, delay, "
                           "from, tau[, rate_tau]"
                         : "holdout takes coeffs, lo, hi, x, y, skip, delay, from, tau[, rate_tau]");
@@ -1076,6 +1204,10 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
         grid_arg(&m.g, prhs);
         st = hyst_f64_curve_from_everett_grid(&curve, &m.g, grid_table,
                                               HYST_EVERETT_GRID_TABLE_LEN(m.g.intervals));
+    } else if (spline) {
+        spline_arg(&m.s, prhs);
+        st = hyst_f64_curve_from_spline(&curve, &m.s, spline_table,
+                                        HYST_SPLINE_TABLE_LEN((size_t)m.s.intervals));
     } else if (everett) {
         m.e = everett_arg(prhs, "hyst_fit");
         st = hyst_f64_curve_from_everett(&curve, &m.e);
@@ -1102,7 +1234,7 @@ static void run_holdout(int everett, int nlhs, mxArray *plhs[], int nrhs, const 
     best.rate_tau = best.rate_tau > 0 ? best.rate_tau : 0.0;
     terms = best.tau >= 0 || best.rate_tau > 0;
     best.tau = best.tau >= 0 ? best.tau : 0.0;
-    rms = fit_model_run_creep(everett ? NULL : &m.f0, everett ? &curve : NULL,
+    rms = fit_model_run_creep(kind != 0 ? NULL : &m.f0, kind != 0 ? &curve : NULL,
                               (const double *)mxGetData(prhs[at]),
                               (const double *)mxGetData(prhs[at + 1]), n, skip, delay, from, NULL,
                               NULL, terms ? &best : NULL);
@@ -1149,8 +1281,19 @@ static const fit_validation_t *validation_arg(const mxArray *vx, const mxArray *
     return v;
 }
 
-/* score: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid: degree its
- * intervals), degree, t_degree, method,
+/* A candidate's kind as fit_select.h numbers it: FIT_POLY 1, FIT_EVERETT 2,
+ * FIT_GRID 4 or FIT_SPLINE 8. */
+static int fit_kind_arg(const mxArray *a)
+{
+    const int kind = (int)count(a, "kind", 1.0, 8.0);
+    if (kind != FIT_POLY && kind != FIT_EVERETT && kind != FIT_GRID && kind != FIT_SPLINE) {
+        usage("kind is 1 (poly), 2 (everett), 4 (everett_grid) or 8 (spline)");
+    }
+    return kind;
+}
+
+/* score: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid, 8 spline: the
+ * last two's degree their intervals), degree, t_degree, method,
  * lo, hi, skip, delay, creep_tau[, vx, vy]; one candidate scored as the
  * automatic choice scores it (fit_score(), tools/cli/fit_select.c: the
  * hold-out splits, or the validation record vx, vy). plhs = its hold-out
@@ -1171,13 +1314,11 @@ static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     }
     memset(&base, 0, sizeof base);
     memset(&c, 0, sizeof c);
-    c.kind = (int)count(prhs[2], "kind", 1.0, 4.0);
-    if (c.kind != FIT_POLY && c.kind != FIT_EVERETT && c.kind != FIT_GRID) {
-        usage("kind is 1 (poly), 2 (everett) or 4 (everett_grid)");
-    }
+    c.kind = fit_kind_arg(prhs[2]);
     c.degree = (unsigned)count(prhs[3], "degree", 1.0,
-                               c.kind == FIT_GRID ? (double)HYST_EVERETT_GRID_MAX_INTERVALS
-                                                  : (double)HYST_MAX_DEGREE);
+                               c.kind == FIT_GRID     ? (double)HYST_EVERETT_GRID_MAX_INTERVALS
+                               : c.kind == FIT_SPLINE ? (double)HYST_SPLINE_MAX_INTERVALS
+                                                      : (double)HYST_MAX_DEGREE);
     c.t_degree = (unsigned)count(prhs[4], "t_degree", 0.0, (double)HYST_EVERETT_MAX_DEGREE);
     base.method = (int)count(prhs[5], "method", 1.0, 2.0);
     base.lo = scalar(prhs[6], "lo");
@@ -1282,8 +1423,8 @@ static void run_record_check(int nlhs, mxArray *plhs[], int nrhs, const mxArray 
     plhs[0] = s;
 }
 
-/* given_delay: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid: degree its
- * intervals), degree, t_degree, method, lo, hi, skip[, vx, vy]; the delay
+/* given_delay: prhs = x, y, kind (1 poly, 2 everett, 4 everett_grid, 8
+ * spline: the last two's degree their intervals), degree, t_degree, method, lo, hi, skip[, vx, vy]; the delay
  * of that one model as `hyst fit --degree D` without --delay chooses it
  * (fit_given_delay(), tools/cli/fit_select.c; scored on the validation
  * record vx, vy when given). plhs = the whole delay, the sub-sample
@@ -1307,10 +1448,7 @@ static void run_given_delay(int nlhs, mxArray *plhs[], int nrhs, const mxArray *
     }
     n = mxGetNumberOfElements(prhs[0]);
     memset(&base, 0, sizeof base);
-    kind = (int)count(prhs[2], "kind", 1.0, 4.0);
-    if (kind != FIT_POLY && kind != FIT_EVERETT && kind != FIT_GRID) {
-        usage("kind is 1 (poly), 2 (everett) or 4 (everett_grid)");
-    }
+    kind = fit_kind_arg(prhs[2]);
     /* a degree the fit refuses scores nothing here (delay 0): the fit says why */
     base.degree = (unsigned)count(prhs[3], "degree", 0.0, 64.0);
     t_degree = (unsigned)count(prhs[4], "t_degree", 0.0, (double)HYST_EVERETT_MAX_DEGREE);
@@ -1354,7 +1492,8 @@ static void run_given_delay(int nlhs, mxArray *plhs[], int nrhs, const mxArray *
     }
 }
 
-/* select: prhs = x, y, kinds (a sum of 1 poly, 2 everett, 4 everett_grid), method, lo, hi,
+/* select: prhs = x, y, kinds (a sum of 1 poly, 2 everett, 4 everett_grid, 8 spline), method,
+ * lo, hi,
  * skip, delay (-1: chosen), t_degree (-1: any), creep_tau[, rate_tau[, vx,
  * vy]]; fit's automatic choice by the `hyst` tool's own code (fit_search(),
  * tools/cli/fit_select.c; scored on the validation record vx, vy when given
@@ -1391,7 +1530,7 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     }
     n = mxGetNumberOfElements(prhs[0]);
     memset(&base, 0, sizeof base);
-    kinds = (int)count(prhs[2], "kinds", 1.0, 7.0);
+    kinds = (int)count(prhs[2], "kinds", 1.0, 15.0);
     base.method = (int)count(prhs[3], "method", 1.0, 2.0);
     base.lo = scalar(prhs[4], "lo");
     base.hi = scalar(prhs[5], "hi");
@@ -1425,13 +1564,12 @@ static void run_select(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[
     s = mxCreateStructMatrix(1, (mwSize)scored, (int)(sizeof fields / sizeof fields[0]), fields);
     for (i = 0u; i < scored; ++i) {
         const fit_candidate_t *c = &cand[i];
-        const int everett = c->kind == FIT_EVERETT, grid = c->kind == FIT_GRID;
-        const char *status = c->status == HYST_ERR_NOT_MONOTONE       ? "E not monotone"
-                             : c->status != HYST_OK                   ? status_name(c->status)
-                             : !everett && !grid && !c->fit.increasing ? "f0 not increasing"
-                                                                       : "OK";
-        mxSetField(s, (mwIndex)i, "kind",
-                   mxCreateString(grid ? "everett_grid" : everett ? "everett" : "poly"));
+        const int everett = c->kind == FIT_EVERETT;
+        const char *status = c->status == HYST_ERR_NOT_MONOTONE ? "E not monotone"
+                             : c->status != HYST_OK             ? status_name(c->status)
+                             : c->kind == FIT_POLY && !c->fit.increasing ? "f0 not increasing"
+                                                                         : "OK";
+        mxSetField(s, (mwIndex)i, "kind", mxCreateString(fit_kind_name(c->kind)));
         mxSetField(s, (mwIndex)i, "degree", mxCreateDoubleScalar((double)c->degree));
         mxSetField(s, (mwIndex)i, "t_degree",
                    everett ? mxCreateDoubleScalar((double)c->t_degree)
@@ -1537,10 +1675,11 @@ static void model_text_arg(model_text_t *m, const mxArray *const prhs[10],
     memset(m, 0, sizeof *m);
     if (!mxIsChar(prhs[0]) || mxGetString(prhs[0], kind, sizeof kind) != 0 ||
         (strcmp(kind, "poly") != 0 && strcmp(kind, "everett") != 0 &&
-         strcmp(kind, "everett_grid") != 0)) {
-        usage("kind must be 'poly', 'everett' or 'everett_grid'");
+         strcmp(kind, "everett_grid") != 0 && strcmp(kind, "spline") != 0)) {
+        usage("kind must be 'poly', 'everett', 'everett_grid' or 'spline'");
     }
     m->kind = strcmp(kind, "everett_grid") == 0 ? MODEL_TEXT_GRID
+              : strcmp(kind, "spline") == 0     ? MODEL_TEXT_SPLINE
               : strcmp(kind, "everett") == 0    ? MODEL_TEXT_EVERETT
                                                 : MODEL_TEXT_POLY;
     m->lo = scalar(prhs[1], "lo");
@@ -1562,6 +1701,9 @@ static void model_text_arg(model_text_t *m, const mxArray *const prhs[10],
                     &m->nknots);
         numbers_arg(prhs[7], "weights", m->weights,
                     HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS), &m->nweights);
+    } else if (m->kind == MODEL_TEXT_SPLINE) { /* values in coeffs' place, slopes in terms' */
+        numbers_arg(prhs[4], "values", m->values, HYST_SPLINE_MAX_INTERVALS + 1u, &m->nvalues);
+        numbers_arg(prhs[7], "slopes", m->slopes, HYST_SPLINE_MAX_INTERVALS + 1u, &m->nslopes);
     } else {
         numbers_arg(prhs[4], "coeffs", m->coeffs, HYST_MAX_DEGREE + 1u, &m->ncoef);
     }
@@ -1608,6 +1750,7 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     static const char *poly[] = {"coeffs", "lo", "hi", "delay"};
     static const char *everett[] = {"kind", "lo", "hi", "y_lo", "degree", "terms", "delay"};
     static const char *grid[] = {"kind", "lo", "hi", "y_lo", "knots", "weights", "delay"};
+    static const char *spline[] = {"kind", "lo", "hi", "values", "slopes", "delay"};
     model_text_t m;
     char msg[MODEL_TEXT_MSG_SIZE], *path, *text;
     size_t n, i;
@@ -1629,7 +1772,12 @@ static void run_model_parse(mxArray *plhs[], int nrhs, const mxArray *prhs[])
     if (rc != 0) {
         mexErrMsgIdAndTxt("hyst:model_file", "%s", msg);
     }
-    if (m.kind == MODEL_TEXT_GRID) {
+    if (m.kind == MODEL_TEXT_SPLINE) {
+        s = mxCreateStructMatrix(1, 1, 6, spline);
+        set_field(s, "kind", mxCreateString("spline"));
+        set_field(s, "values", row_of(m.values, m.nvalues));
+        set_field(s, "slopes", row_of(m.slopes, m.nslopes));
+    } else if (m.kind == MODEL_TEXT_GRID) {
         s = mxCreateStructMatrix(1, 1, 7, grid);
         set_field(s, "kind", mxCreateString("everett_grid"));
         set_field(s, "y_lo", mxCreateDoubleScalar(m.y_lo));
@@ -1747,13 +1895,33 @@ static void run_model_text(const char *cmd, mxArray *plhs[], int nrhs, const mxA
     mxFree(buf);
 }
 
+/* The kind of a holdout command's model from the command's suffix: "" f0 0,
+ * "_everett" 1, "_grid" 2, "_spline" 3 (run_holdout()); -1: none. */
+static int holdout_kind(const char *suffix)
+{
+    static const char *const suffixes[] = {"", "_everett", "_grid", "_spline"};
+    int i;
+    for (i = 0; i < (int)(sizeof suffixes / sizeof suffixes[0]); ++i) {
+        if (strcmp(suffix, suffixes[i]) == 0) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+/* The commands mexFunction() dispatches on (for its usage messages). */
+#define COMMANDS                                                                             \
+    "version, status_str, config, sim, inv, sim_everett, inv_everett, sim_grid, inv_grid, "  \
+    "sim_spline, inv_spline, inv_table, inv_table_everett, fit, fit_everett, fit_grid, "     \
+    "fit_spline, poly_from_everett, creep, holdout, holdout_everett, holdout_grid, "         \
+    "holdout_spline, given_delay, excitation, record_check, select, score, model_parse, "    \
+    "model_write, header_open, header_close, header_table"
+
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     char cmd[24];
     if (nrhs < 1 || !mxIsChar(prhs[0]) || mxGetString(prhs[0], cmd, sizeof cmd) != 0) {
-        usage("the first argument is a command: version, status_str, config, sim, inv, "
-              "sim_everett, inv_everett, inv_table, inv_table_everett, fit, fit_everett, creep, "
-              "holdout or holdout_everett");
+        usage("the first argument is a command: " COMMANDS);
     }
     if (strcmp(cmd, "version") == 0) {
         plhs[0] = mxCreateString(HYST_VERSION_STRING);
@@ -1766,8 +1934,9 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         }
     } else if (strcmp(cmd, "sim") == 0 || strcmp(cmd, "inv") == 0) {
         run_poly(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
-    } else if (strcmp(cmd, "sim_grid") == 0 || strcmp(cmd, "inv_grid") == 0) {
-        run_grid(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "sim_grid") == 0 || strcmp(cmd, "inv_grid") == 0 ||
+               strcmp(cmd, "sim_spline") == 0 || strcmp(cmd, "inv_spline") == 0) {
+        run_own(cmd[4] == 's', cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "sim_everett") == 0 || strcmp(cmd, "inv_everett") == 0) {
         run_everett(cmd[0] == 'i', nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "inv_table") == 0 || strcmp(cmd, "inv_table_everett") == 0) {
@@ -1778,16 +1947,16 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         run_fit(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "fit_grid") == 0) {
         run_fit_grid(plhs, nrhs - 1, prhs + 1);
+    } else if (strcmp(cmd, "fit_spline") == 0) {
+        run_fit_spline(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "fit_everett") == 0) {
         run_fit_everett(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "poly_from_everett") == 0) {
         run_poly_from_everett(plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "creep") == 0) {
         run_creep(nlhs, plhs, nrhs - 1, prhs + 1);
-    } else if (strcmp(cmd, "holdout_grid") == 0) {
-        run_holdout(2, nlhs, plhs, nrhs - 1, prhs + 1);
-    } else if (strcmp(cmd, "holdout") == 0 || strcmp(cmd, "holdout_everett") == 0) {
-        run_holdout(cmd[7] == '_', nlhs, plhs, nrhs - 1, prhs + 1);
+    } else if (strncmp(cmd, "holdout", 7u) == 0 && holdout_kind(cmd + 7) >= 0) {
+        run_holdout(holdout_kind(cmd + 7), nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "given_delay") == 0) {
         run_given_delay(nlhs, plhs, nrhs - 1, prhs + 1);
     } else if (strcmp(cmd, "excitation") == 0) {
@@ -1806,7 +1975,6 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
     } else if (strcmp(cmd, "header_table") == 0) {
         run_header_table(plhs, nrhs - 1, prhs + 1);
     } else {
-        usage("unknown command (version, status_str, config, sim, inv, sim_everett, inv_everett, "
-              "inv_table, inv_table_everett, fit, fit_everett, creep, holdout, holdout_everett)");
+        usage("unknown command (" COMMANDS ")");
     }
 }

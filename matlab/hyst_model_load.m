@@ -5,12 +5,16 @@ function model = hyst_model_load(file)
 %   highest power first), lo, hi and delay (samples; 0 when the file has
 %   none), for HYST_SIM and HYST_INV; for a file of kind everett (the
 %   asymmetric kind) the fields kind ('everett'), lo, hi, y_lo, degree,
-%   terms (a row) and delay, for HYST_SIM. FILE must be in
+%   terms (a row) and delay, for HYST_SIM; of kind everett_grid kind, lo,
+%   hi, y_lo, knots, weights and delay; of kind spline kind, lo, hi, values,
+%   slopes (rows) and delay. FILE must be in
 %   the format hyst-model-text 1 (docs/matlab.md): its first line is exactly
 %   that; then lines 'key value...', blank lines and '#' comment lines; the
-%   keys kind (poly or everett), lo, hi, each once, coeffs (kind poly) or
-%   y_lo, degree (1..4) and terms (degree (degree + 1) / 2 numbers; kind
-%   everett), and optionally delay (the output follows its input this many
+%   keys kind (poly, everett, everett_grid or spline), lo, hi, each once,
+%   coeffs (kind poly) or y_lo, degree (1..4) and terms (degree (degree +
+%   1) / 2 numbers; kind everett), y_lo, knots and weights (kind
+%   everett_grid) or values (2 to 33 numbers) and slopes (as many, each >=
+%   0; kind spline), and optionally delay (the output follows its input this many
 %   samples later; written by 'hyst fit --save') and a creep term, the keys
 %   creep_tau (1 to 4 time constants, samples, each at least 1) and
 %   creep_weight (as many weights), both or neither: then MODEL also has the

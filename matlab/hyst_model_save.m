@@ -17,7 +17,8 @@ function hyst_model_save(file, model)
 %   A model of kind 'everett' (HYST_SIM) is written with the keys kind
 %   everett, lo, hi, y_lo, delay, degree and terms; one of kind
 %   'everett_grid' with the keys kind everett_grid, lo, hi, y_lo, delay,
-%   knots and weights. A model
+%   knots and weights; one of kind 'spline' with the keys kind spline, lo,
+%   hi, delay, values and slopes. A model
 %   with a creep term (fields creep_tau and creep_weight, 1 to 4 numbers
 %   each) gets a comment line and the keys creep_tau and creep_weight after
 %   its own, as the host tool writes them ('hyst fit --save'); one with a
@@ -35,15 +36,7 @@ function hyst_model_save(file, model)
   hyst_model_check(p, 'hyst_model_save');
   % the text of the format's one implementation (tools/model_text), the
   % one 'hyst fit --save' and the Python package write
-  if strcmp(p.kind, 'everett_grid')  % the gateway takes knots, weights in coeffs', terms' places
-    text = hyst_mex('model_write', 'everett_grid', p.lo, p.hi, p.delay, p.knots, 0, p.y_lo, ...
-                    p.weights, p.creep_tau, p.creep_weight, p.identified, p.rate_tau, p.rate_weight);
-  elseif strcmp(p.kind, 'everett')
-    text = hyst_mex('model_write', 'everett', p.lo, p.hi, p.delay, [], p.degree, p.y_lo, ...
-                    p.terms, p.creep_tau, p.creep_weight, p.identified, p.rate_tau, p.rate_weight);
-  else
-    text = hyst_mex('model_write', 'poly', p.lo, p.hi, p.delay, p.coeffs, 0, 0, [], ...
-                    p.creep_tau, p.creep_weight, p.identified, p.rate_tau, p.rate_weight);
-  end
+  parts = hyst_text_parts(p);
+  text = hyst_mex('model_write', parts{:}, p.identified, p.rate_tau, p.rate_weight);
   hyst_write_whole(file, text, 'hyst_model_save');
 end

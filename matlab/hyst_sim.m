@@ -15,7 +15,11 @@ function [y, status, tp_count] = hyst_sim(model, x, varargin)
 %   asymmetric kind on a grid (hyst_everett_grid_t:
 %   hyst_*_curve_from_everett_grid), with fields kind 'everett_grid', y_lo,
 %   knots (lo first, hi last) and weights (the cells' masses), as
-%   HYST_MODEL_LOAD returns a model file of that kind.
+%   HYST_MODEL_LOAD returns a model file of that kind; or, for the
+%   symmetric kind whose f0 is a monotone cubic spline on uniform knots
+%   (hyst_spline_t: hyst_*_curve_from_spline), with fields kind 'spline',
+%   lo, hi, values and slopes (f0 and its slope at the K + 1 knots
+%   lo + k (hi - lo) / K, K 1..32).
 %
 %   A MODEL with a creep term (the fields creep_tau, 1 to 4 time constants
 %   in samples, and creep_weight, as many weights: what HYST_MODEL_LOAD and

@@ -2,7 +2,9 @@
 function hyst_model_check(p, caller)
 % HYST_MODEL_CHECK  The parts P of a model (HYST_MODEL_PARTS) as a model
 % file and a header hold them: finite numbers, lo and hi scalars, for the
-% asymmetric kind a degree 1..4 and degree (degree + 1) / 2 terms, a delay
+% asymmetric kind a degree 1..4 and degree (degree + 1) / 2 terms, for a
+% grid 2..13 knots and K (K + 1) / 2 weights, for a spline 2..33 values
+% and as many slopes, each >= 0 (f0 increases), a delay
 % of whole samples, a creep term as a model file holds it (creep_tau and
 % creep_weight both empty, or 1..4 numbers each, as many, the time
 % constants at least 1 sample, all finite) and a rate term as a model file
@@ -22,6 +24,16 @@ function hyst_model_check(p, caller)
     if k < 1 || k > 12 || numel(p.weights) ~= k * (k + 1) / 2
       error('hyst:usage', '%s: knots has 2 to 13 numbers and weights K (K + 1) / 2 for K + 1 knots', ...
             caller);
+    end
+  elseif strcmp(p.kind, 'spline')
+    numbers = [p.values p.slopes];
+    k = numel(p.values) - 1;  % HYST_SPLINE_MAX_INTERVALS: 32
+    if k < 1 || k > 32 || numel(p.slopes) ~= k + 1
+      error('hyst:usage', '%s: values has 2 to 33 numbers (f0 at the knots) and slopes as many', ...
+            caller);
+    end
+    if any(p.slopes < 0)  % as a model file's reader refuses it (NaN: below)
+      error('hyst:usage', '%s: slopes: a slope is not >= 0 (f0 increases)', caller);
     end
   else
     numbers = p.coeffs;

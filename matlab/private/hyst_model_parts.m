@@ -5,7 +5,9 @@ function p = hyst_model_parts(model, caller)
 % highest power first), P.lo, P.hi; or P.kind 'everett' (MODEL.kind is
 % 'everett') with P.degree, P.lo, P.hi, P.y_lo, P.terms (a row); or P.kind
 % 'everett_grid' with P.y_lo, P.knots, P.weights (rows), P.lo and P.hi the
-% first and the last knot. P.delay:
+% first and the last knot; or P.kind 'spline' (f0 a monotone cubic spline
+% on uniform knots) with P.lo, P.hi, P.values and P.slopes (rows: f0 and
+% its slope at the K + 1 knots lo + k (hi - lo) / K). P.delay:
 % MODEL.delay, 0 without one (the sensor's delay in samples: not part of the
 % model, kept in its file and stated in its header). P.creep_tau and
 % P.creep_weight: the creep term's time constants (samples) and weights,
@@ -22,6 +24,13 @@ function p = hyst_model_parts(model, caller)
                'knots', double(model.knots(:)'), 'weights', double(model.weights(:)'));
     p.lo = p.knots(1);
     p.hi = p.knots(end);
+  elseif isstruct(model) && isfield(model, 'kind') && strcmp(model.kind, 'spline')
+    if ~all(isfield(model, {'lo', 'hi', 'values', 'slopes'}))
+      error('hyst:usage', '%s: a spline model is a struct with fields kind, lo, hi, values, slopes', ...
+            caller);
+    end
+    p = struct('kind', 'spline', 'lo', double(model.lo), 'hi', double(model.hi), ...
+               'values', double(model.values(:)'), 'slopes', double(model.slopes(:)'));
   elseif isstruct(model) && isfield(model, 'kind') && strcmp(model.kind, 'everett')
     if ~all(isfield(model, {'degree', 'lo', 'hi', 'y_lo', 'terms'}))
       error('hyst:usage', '%s: an everett model is a struct with fields kind, degree, lo, hi, y_lo, terms', ...
@@ -32,8 +41,9 @@ function p = hyst_model_parts(model, caller)
   else
     if ~isstruct(model) || ~all(isfield(model, {'coeffs', 'lo', 'hi'})) || ...
        (isfield(model, 'kind') && ~strcmp(model.kind, 'poly'))
-      error('hyst:usage', '%s: the model is a struct with fields coeffs, lo, hi (or kind ''everett'', degree, lo, hi, y_lo, terms)', ...
-            caller);
+      error('hyst:usage', ['%s: the model is a struct with fields coeffs, lo, hi (or kind ' ...
+                           '''everett'', degree, lo, hi, y_lo, terms; kind ''everett_grid'', ' ...
+                           'y_lo, knots, weights; kind ''spline'', lo, hi, values, slopes)'], caller);
     end
     p = struct('kind', 'poly', 'coeffs', double(model.coeffs(:)'), 'lo', double(model.lo), ...
                'hi', double(model.hi));

@@ -7,10 +7,12 @@ import numpy as np
 
 from . import _hyst
 from ._errors import FitWarning, HystError
-from ._model_file import _creep_args, header_text, save_model
+from ._model_file import NO_TABLE, _creep_args, header_text, save_model
 
 MAX_DEGREE = _hyst.MAX_DEGREE
 EVERETT_MAX_DEGREE = _hyst.EVERETT_MAX_DEGREE
+#: Most knot intervals of a spline f0 (HYST_SPLINE_MAX_INTERVALS).
+SPLINE_MAX_INTERVALS = _hyst.SPLINE_MAX_INTERVALS
 
 #: Turning-point entries per array: never full for inputs taking 4096
 #: distinct values (a 12-bit DAC), HYST_CAPACITY(4096).
@@ -98,6 +100,13 @@ def _with_creep(m, creep_tau, creep_weight):
     return m
 
 
+def _with_deadband_creep(m, deadband, creep_tau, creep_weight):
+    """m with its deadband (hyst_*_set_deadband(); 0: none) and its creep term."""
+    if deadband:
+        m.deadband = deadband
+    return _with_creep(m, creep_tau, creep_weight)
+
+
 def Creep(tau, weight, x_rest, *, dtype=np.float64):
     """A creep term alone (hyst/creep.h): lags of a drive of time constants
     ``tau`` (samples, each >= 1) and weights ``weight`` (1 to 4 of each),
@@ -124,9 +133,7 @@ def Model(coeffs, lo, hi, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, deadba
     """
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
         list(map(float, coeffs)), float(lo), float(hi), _count(capacity, "capacity", 0), False)
-    if deadband:
-        m.deadband = deadband
-    return _with_creep(m, creep_tau, creep_weight)
+    return _with_deadband_creep(m, deadband, creep_tau, creep_weight)
 
 
 #: Intervals of the firmware's compensator table (HYST_INV_TABLE, the default
@@ -203,9 +210,7 @@ def ModelFromEverett(degree, lo, hi, y_lo, terms, *, dtype=np.float64,
         int(degree), float(lo), float(hi), float(y_lo), list(map(float, terms)),
         _count(capacity, "capacity", 0), bool(inverse), _count(intervals, "intervals"),
         None if rows is None else _count(rows, "rows"))
-    if deadband:
-        m.deadband = deadband
-    return _with_creep(m, creep_tau, creep_weight)
+    return _with_deadband_creep(m, deadband, creep_tau, creep_weight)
 
 
 def ModelFromEverettGrid(knots, weights, y_lo, *, dtype=np.float64, capacity=DEFAULT_CAPACITY,
@@ -222,9 +227,26 @@ def ModelFromEverettGrid(knots, weights, y_lo, *, dtype=np.float64, capacity=DEF
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
         list(map(float, knots)), list(map(float, weights)), float(y_lo),
         _count(capacity, "capacity", 0), bool(inverse))
-    if deadband:
-        m.deadband = deadband
-    return _with_creep(m, creep_tau, creep_weight)
+    return _with_deadband_creep(m, deadband, creep_tau, creep_weight)
+
+
+def ModelFromSpline(lo, hi, values, slopes, *, dtype=np.float64, capacity=DEFAULT_CAPACITY,
+                    deadband=0.0, inverse=False, creep_tau=None, creep_weight=None):
+    """The symmetric kind whose f0 is a monotone cubic spline on uniform
+    knots (hyst_spline_t): ``values`` and ``slopes`` are f0 and its slope
+    (output units per input unit, each >= 0) at the K + 1 knots
+    lo + k (hi - lo) / K, k = 0..K (K in 1..SPLINE_MAX_INTERVALS), f0 the
+    cubic (Hermite) of those between two knots
+    (hyst_*_curve_from_spline()). ``inverse=True`` gives its compensator,
+    each drive solved on f0's cubic piece per sample
+    (hyst_curve_spline_inverse(); a flat piece has none: ERR_NOT_INVERTIBLE).
+    What the library refuses raises ``HystError`` (a piece that falls:
+    ERR_NOT_INCREASING). ``creep_tau``, ``creep_weight``: a creep term, as
+    :func:`Model` and :func:`Compensator` take it."""
+    m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
+        float(lo), float(hi), list(map(float, values)), list(map(float, slopes)),
+        _count(capacity, "capacity", 0), bool(inverse))
+    return _with_deadband_creep(m, deadband, creep_tau, creep_weight)
 
 
 def _creep_of(desc):
@@ -241,6 +263,19 @@ def _with_rate(m, desc):
     return m
 
 
+def _untabulated(desc, **kw):
+    """The model, or (inverse=True) the compensator, of a description of a
+    kind whose compensator has no table (NO_TABLE: everett_grid, spline),
+    with its creep and rate terms."""
+    if desc["kind"] == "spline":
+        m = ModelFromSpline(desc["lo"], desc["hi"], desc["values"], desc["slopes"],
+                            **_creep_of(desc), **kw)
+    else:
+        m = ModelFromEverettGrid(desc["knots"], desc["weights"], desc["y_lo"], **_creep_of(desc),
+                                 **kw)
+    return _with_rate(m, desc)
+
+
 def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
     """The model a description gives: a :func:`hyst.load_model` dict (its
     delay is not the model's: apply it to the comparison) or
@@ -251,11 +286,11 @@ def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
     of the input's change) when it has ``rate_tau`` and ``rate_weight``.
     A model with a rate term has no snapshot (``save()`` raises). Kind
     everett_grid (``y_lo``, ``knots``, ``weights``) is E on a grid
-    (hyst_*_curve_from_everett_grid()), as ``hyst sim --model`` runs it."""
-    if desc.get("kind", "poly") == "everett_grid":
-        return _with_rate(ModelFromEverettGrid(desc["knots"], desc["weights"], desc["y_lo"],
-                                               dtype=dtype, capacity=capacity,
-                                               **_creep_of(desc)), desc)
+    (hyst_*_curve_from_everett_grid()), kind spline (``lo``, ``hi``,
+    ``values``, ``slopes``) f0 a monotone cubic spline
+    (hyst_*_curve_from_spline()), as ``hyst sim --model`` runs them."""
+    if desc.get("kind", "poly") in NO_TABLE:
+        return _untabulated(desc, dtype=dtype, capacity=capacity)
     if desc.get("kind", "poly") == "everett":
         return _with_rate(ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
                                            desc["terms"], dtype=dtype, capacity=capacity,
@@ -276,17 +311,17 @@ def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inter
     contribution from each desired output first (:func:`Compensator`); with
     its rate term, the rate term's too (known before the drive is chosen).
     Kind everett_grid's compensator solves each branch in closed form
-    (hyst_*_curve_everett_grid_inverse(), as ``hyst inv --model``): it has
-    no table (``intervals`` or ``rows`` given raise ``HystError``, ERR_ARG)."""
-    if desc.get("kind", "poly") == "everett_grid":
+    (hyst_*_curve_everett_grid_inverse()), kind spline's each drive on f0's
+    cubic piece per sample (hyst_curve_spline_inverse()), as ``hyst inv
+    --model``: they have no table (``intervals`` or ``rows`` given raise
+    ``HystError``, ERR_ARG)."""
+    kind = desc.get("kind", "poly")
+    if kind in NO_TABLE:
         if intervals or rows is not None:
             raise HystError(_hyst.Status.ERR_ARG,
-                            "kind everett_grid has no tabulated compensator (it solves each "
-                            "branch in closed form)")
-        return _with_rate(ModelFromEverettGrid(desc["knots"], desc["weights"], desc["y_lo"],
-                                               dtype=dtype, capacity=capacity, inverse=True,
-                                               **_creep_of(desc)), desc)
-    if desc.get("kind", "poly") == "everett":
+                            f"kind {kind} has no tabulated compensator ({NO_TABLE[kind]})")
+        return _untabulated(desc, dtype=dtype, capacity=capacity, inverse=True)
+    if kind == "everett":
         return _with_rate(ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
                                            desc["terms"], dtype=dtype, capacity=capacity,
                                            inverse=True, intervals=intervals, rows=rows,
@@ -354,7 +389,12 @@ class Fit:
     every branch, ``rms`` its residual) and ``everett`` the E (degree,
     t_degree, y_lo, terms). A grid (``"everett_grid"``) has ``knots``,
     ``weights``, ``y_lo`` and ``determined``: False when the record's turning
-    points leave some masses open (then :class:`FitWarning`).
+    points leave some masses open (then :class:`FitWarning`). A spline
+    (``"spline"``, the symmetric model whose f0 is a monotone cubic spline
+    fitted along every branch) has ``intervals`` (K, also its ``degree``),
+    ``values`` and ``slopes`` (f0 and its slope at the knots
+    lo + k (hi - lo) / K, k = 0..K), ``rms`` and ``max_abs`` of the model
+    run over the record and ``identified`` (as everett's).
     ``validation_rms`` (:func:`fit`'s ``validate``, else None): the model's
     RMS error run from rest over the validation record, what the choice was
     scored on.
@@ -391,6 +431,9 @@ class Fit:
         elif self.kind == "everett_grid":
             d = {"kind": "everett_grid", "lo": self.lo, "hi": self.hi, "y_lo": self.y_lo,
                  "knots": list(self.knots), "weights": list(self.weights)}
+        elif self.kind == "spline":
+            d = {"kind": "spline", "lo": self.lo, "hi": self.hi, "values": list(self.values),
+                 "slopes": list(self.slopes)}
         else:
             d = {"kind": "poly", "coeffs": list(self.coeffs), "lo": self.lo, "hi": self.hi}
         if self.creep_tau:
@@ -414,7 +457,8 @@ class Fit:
 
     def header(self, name, compensator=False, intervals=None, rows=None):
         """The firmware header (C source text) declaring ``hyst_poly_t name``
-        (kind poly) or ``hyst_everett_t name`` (kind everett); with
+        (kind poly), ``hyst_everett_t name`` (kind everett),
+        ``hyst_everett_grid_t name`` or ``hyst_spline_t name``; with
         ``compensator=True`` also its compensator's table, built and sealed
         (:func:`header_text`)."""
         return header_text(name, **self.description(), compensator=compensator,
@@ -461,6 +505,10 @@ class Fit:
             k = ", ".join(f"{v:.9g}" for v in self.knots)
             return (f"Fit(kind='everett_grid', intervals={self.degree}, knots=[{k}], "
                     f"y_lo={self.y_lo:.9g}, rms={self.rms:.6g}{creep})")
+        if self.kind == "spline":
+            v = ", ".join(f"{v:.9g}" for v in self.values)
+            return (f"Fit(kind='spline', intervals={self.intervals}, values=[{v}], "
+                    f"lo={self.lo:.9g}, hi={self.hi:.9g}, rms={self.rms:.6g}{creep})")
         c = ", ".join(f"{v:.9g}" for v in self.coeffs)
         max_abs = f", max_abs={self.max_abs:.6g}" if "max_abs" in self.__dict__ else ""
         return (f"Fit(coeffs=[{c}], lo={self.lo:.9g}, hi={self.hi:.9g}, "
@@ -480,12 +528,18 @@ CREEP_PARAMS = _hyst.FIT_CREEP_PARAMETERS
 
 
 #: The kinds fit() knows.
-KINDS = ("poly", "everett", "everett_grid")
+KINDS = ("poly", "everett", "everett_grid", "spline")
+#: Those it compares with kind=None (as ``hyst fit`` without --kind: not the spline).
+AUTO_KINDS = ("poly", "everett", "everett_grid")
+# The kinds without t_degree, their degree a polynomial's or their knot intervals.
+_NO_T_DEGREE = ("poly", "everett_grid", "spline")
 
 
 def _fit_one(x, y, kind, degree, method, lo, hi, skip, delay, t_degree=None):
     if kind == "everett_grid":  # degree: the grid's knot intervals
         return _hyst.fit_grid(x, y, degree, lo, hi, skip, delay)
+    if kind == "spline":  # degree: the spline's knot intervals
+        return _hyst.fit_spline(x, y, degree, lo, hi, skip, delay)
     if kind == "everett":
         return _hyst.fit_everett(x, y, degree, lo, hi, skip, delay,
                                  -1 if t_degree is None else int(t_degree))
@@ -494,11 +548,9 @@ def _fit_one(x, y, kind, degree, method, lo, hi, skip, delay, t_degree=None):
 
 def _refusal(res):
     """Why the fitted parameters give no model, or None when they do."""
-    if res.get("kind") in ("everett", "everett_grid"):
+    if res.get("kind") in ("everett", "everett_grid", "spline"):
         st = res["curve_status"]
-        if st == _hyst.Status.ERR_NOT_MONOTONE:
-            return "E not monotone"
-        return None if st == _hyst.Status.OK else _hyst.Status(st).name
+        return None if st == _hyst.Status.OK else _status_words(st)
     return None if res["increasing"] else "f0 not increasing"
 
 
@@ -519,7 +571,16 @@ def _score(x, y, kind, deg, k, d, method, lo, hi, skip, creep_tau, validate=None
 
 
 _FIT_KINDS = {"poly": _hyst.FIT_POLY, "everett": _hyst.FIT_EVERETT,
-              "everett_grid": _hyst.FIT_GRID}
+              "everett_grid": _hyst.FIT_GRID, "spline": _hyst.FIT_SPLINE}
+
+
+def _status_words(st):
+    """A fit's or its curve's refusal (a status other than OK) in words."""
+    if st == _hyst.Status.ERR_NOT_MONOTONE:
+        return "E not monotone"
+    if st == _hyst.Status.ERR_NOT_INCREASING:  # a spline's piece that falls
+        return "f0 not increasing"
+    return _hyst.Status(st).name
 
 
 def _status(c):
@@ -528,10 +589,8 @@ def _status(c):
     refuses."""
     st = c.pop("status_code")
     increasing = c.pop("increasing")
-    if st == _hyst.Status.ERR_NOT_MONOTONE:
-        return "E not monotone"
     if st != _hyst.Status.OK:
-        return _hyst.Status(st).name
+        return _status_words(st)
     return "OK" if increasing else "f0 not increasing"
 
 
@@ -602,6 +661,8 @@ def _final_creep(res, x, y, kind, skip, delay, tau, rate_tau=0.0):
                          "to the model's residual (a drive that never moves?)")
     if kind in ("everett", "everett_grid"):
         res["y_lo"] += c["offset"]
+    elif kind == "spline":  # f0 moved as a whole, as hyst fit moves it
+        res["values"] = [v + c["offset"] for v in res["values"]]
     else:
         res["coeffs"][-1] += c["offset"]
     return c
@@ -625,19 +686,24 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     outputs fitted from the first input within 1 % of an end of the range on,
     inputs outside the domain are clamped as the model clamps them;
     ``t_degree`` fits only E's terms w^i t^j with j <= t_degree, the others
-    0: major loops alone determine E of t_degree 1 at most, at any degree).
-    With no option, ``fit(x, y)`` chooses as ``hyst fit`` with no option
-    does: ``degree=None`` (the default) chooses the degree, and
+    0: major loops alone determine E of t_degree 1 at most, at any degree);
+    ``kind="everett_grid"`` E on a grid of ``degree`` knot intervals and
+    ``kind="spline"`` f0 a monotone cubic spline of ``degree`` uniform knot
+    intervals (1..SPLINE_MAX_INTERVALS; without a degree 2..16 compared),
+    fitted along every branch, minor loops included, as ``hyst fit --kind
+    spline [--degree K]`` fits it. With no option, ``fit(x, y)`` chooses as
+    ``hyst fit`` with no option does: ``degree=None`` (the default) chooses the degree, and
     ``delay=None`` (the default) the delay (0..MAX_DELAY, or up to 1/64 of
     the drive's period, then a fraction of a sample: the result's ``delay``
     is then a float, the model fitted on the drive interpolated), by
     hold-out exactly as ``hyst fit`` without --degree does; with a degree
     given, ``delay=None`` chooses the delay of that model as ``hyst fit
     --degree D`` without --delay does. The kind too when ``kind`` is None
-    (the three kinds compared; everett
-    of each degree with each t_degree 0..degree-1, or only the one given;
-    the parameter count is degree + 1 for poly, E's terms fitted + 1 for
-    everett): every candidate is in the result's ``candidates`` (dicts:
+    (AUTO_KINDS compared, as ``hyst fit`` without --kind: poly, everett and
+    everett_grid, not the spline; everett of each degree with each t_degree
+    0..degree-1, or only the one given; the parameter count is degree + 1
+    for poly, E's terms fitted + 1 for everett, K + 3 for a spline of K
+    intervals): every candidate is in the result's ``candidates`` (dicts:
     kind, degree, t_degree (None for poly), delay, params, holdout_rms,
     fit_rms, status, chosen; with a creep term scored also creep_tau (0:
     none), creep_weight, creep_holdout_rms, with_creep: chosen with it).
@@ -726,7 +792,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     cands, chosen, with_creep, fraction, search = None, None, False, 0.0, {}
     as_poly = branches
     if degree is None:
-        kinds = KINDS if kind is None else (kind,)
+        kinds = AUTO_KINDS if kind is None else (kind,)
         cands, best, with_creep, widened, search = _select(
             x, y, kinds, method, lo, hi, skip, delay,
             None if t_degree is None else int(t_degree), creep_tau, rate_tau, validate)
@@ -754,7 +820,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
             c["chosen"] = i == best
             c["with_creep"] = i == best and with_creep
     elif delay is None:  # the delay of the model given, as hyst fit --degree D chooses it
-        k = 0 if (kind or "poly") in ("poly", "everett_grid") else (
+        k = 0 if (kind or "poly") in _NO_T_DEGREE else (
             int(degree) - 1 if t_degree is None else int(t_degree))
         vx, vy = validate if validate is not None else (_NO_RECORD, _NO_RECORD)
         g = _hyst.given_delay(x, y, _FIT_KINDS[kind or "poly"], int(degree), k,
@@ -769,7 +835,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
             len(x) > skip + int(delay):
         # the model as given, its creep term scored by the same hold-out (or
         # on the validation record, which scores the model even without one)
-        k = None if (kind or "poly") in ("poly", "everett_grid") else (
+        k = None if (kind or "poly") in _NO_T_DEGREE else (
             int(degree) - 1 if t_degree is None else int(t_degree))
         chosen = _score(x, y, kind or "poly", int(degree), k, int(delay), method, lo, hi, skip,
                         creep_tau, validate)
@@ -780,9 +846,9 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
                    t_degree)
     if res.get("kind") == "everett_grid" and not res["determined"]:
         warnings.warn(_hyst.FIT_GRID_UNDETERMINED, FitWarning, stacklevel=2)
-    if res.get("kind") == "everett" and len(x) > skip + int(delay):
-        # a domain wider than the inputs: the range E was identified on is
-        # recorded, as hyst fit --save records it
+    if res.get("kind") in ("everett", "spline") and len(x) > skip + int(delay):
+        # a domain wider than the inputs: the range E (or f0) was identified
+        # on is recorded, as hyst fit --save records it
         used = x[skip:len(x) - int(delay)]
         a, b = float(np.nanmin(used)), float(np.nanmax(used))
         if res["lo"] < a or b < res["hi"]:

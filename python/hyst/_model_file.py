@@ -1,10 +1,11 @@
 # SPDX-License-Identifier: MIT
 """Model files in the format hyst-model-text 1, the one ``hyst fit --save``
 writes and ``hyst sim --model`` reads (docs/cli.md, "Model files"), also
-read and written by the MATLAB/Octave functions. Three kinds: ``poly`` (f0,
+read and written by the MATLAB/Octave functions. Four kinds: ``poly`` (f0,
 coefficients highest power first), ``everett`` (the asymmetric kind's
-branch function E) and ``everett_grid`` (E of a Preisach density constant
-on each cell of a grid: ``knots``, ``weights``)."""
+branch function E), ``everett_grid`` (E of a Preisach density constant
+on each cell of a grid: ``knots``, ``weights``) and ``spline`` (f0 a
+monotone cubic spline on uniform knots: ``values``, ``slopes``)."""
 import math
 import os
 import tempfile
@@ -15,6 +16,10 @@ _MAX_BYTES = 1 << 20  # MODEL_TEXT_MAX_BYTES: a larger file is refused unread
 _EVERETT_MAX_DEGREE = 4  # HYST_EVERETT_MAX_DEGREE
 _CREEP_MAX_TERMS = 4  # HYST_CREEP_MAX_TERMS
 _GRID_MAX_INTERVALS = 12  # HYST_EVERETT_GRID_MAX_INTERVALS
+#: The kinds whose compensator has no table (it solves each drive): why, as
+#: ``hyst inv`` and ``hyst header`` say it.
+NO_TABLE = {"everett_grid": "its compensator solves each branch in closed form",
+            "spline": "its compensator solves each drive on f0's cubic piece, per sample"}
 
 
 def everett_terms(degree):
@@ -58,7 +63,8 @@ def _rate_args(rate_tau, rate_weight):
 
 
 def _model_call(what, kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
-                creep_weight, *before, identified=None, rate=(), knots=(), weights=()):
+                creep_weight, *before, identified=None, rate=(), knots=(), weights=(), values=(),
+                slopes=()):
     """The extension's model_write or model_header (tools/model_text), the
     model given by its parts (checked there as the reader checks a file)."""
     from . import _hyst
@@ -70,12 +76,13 @@ def _model_call(what, kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_ta
     if what == "model_write":
         args.append([float(v) for v in identified] if identified is not None else [])
     return getattr(_hyst, what)(*before, *args, rate=list(rate), knots=list(knots or []),
-                                weights=list(weights or []))
+                                weights=list(weights or []), values=list(values or []),
+                                slopes=list(slopes or []))
 
 
 def load_model(path):
-    """Reads a model file. Returns a dict: ``kind`` ("poly", "everett" or
-    "everett_grid"),
+    """Reads a model file. Returns a dict: ``kind`` ("poly", "everett",
+    "everett_grid" or "spline"),
     ``lo``, ``hi``, ``delay`` (samples, 0 when absent; an int, or a float
     with a sub-sample delay such as 3.5: the model's input is then
     (1 - f) x[k] + f x[k - 1]), ``identified`` (only when the file records
@@ -84,7 +91,8 @@ def load_model(path):
     ``coeffs`` (highest power first); for everett ``y_lo``, ``degree`` and
     ``terms`` (e[i-1][j] of w^i t^j, i = 1..degree, then j = 0..degree-i);
     for everett_grid ``y_lo``, ``knots`` (lo first, hi last) and ``weights``
-    (the cells' masses, weight[i (i + 1) / 2 + j]);
+    (the cells' masses, weight[i (i + 1) / 2 + j]); for spline ``values``
+    and ``slopes`` (f0 and its slope at the K + 1 knots lo + k (hi - lo) / K);
     with a creep term also ``creep_tau`` (time constants, samples) and
     ``creep_weight`` (lists of 1 to 4 numbers, one per lag; the keys are
     absent when the file has none); with a rate term also ``rate_tau``
@@ -130,10 +138,28 @@ def _grid_args(y_lo, knots, weights):
     return float(y_lo), knots, weights
 
 
+def _spline_args(kind, values, slopes, **others):
+    """Checks a spline description (``others``: the other kinds' keys, None
+    here); returns (values, slopes) as numbers (their counts and values are
+    checked by the reader's checks in C). Another kind: refuses values and
+    slopes, returns them as given (None)."""
+    if kind != "spline":
+        if values is not None or slopes is not None:
+            raise ValueError("values and slopes belong to kind 'spline'")
+        return values, slopes
+    given = [k for k, v in others.items() if v is not None]
+    if given:
+        raise ValueError(f"kind 'spline' has values and slopes, not {', '.join(given)}")
+    if values is None or slopes is None:
+        raise ValueError("kind 'spline' needs values and slopes")
+    return [float(v) for v in values], [float(v) for v in slopes]
+
+
 def _poly_args(coeffs, kind, degree, y_lo, terms):
     """Checks a poly description; returns its coefficients as numbers."""
     if kind != "poly":
-        raise ValueError(f"kind must be 'poly', 'everett' or 'everett_grid', not {kind!r}")
+        raise ValueError("kind must be 'poly', 'everett', 'everett_grid' or 'spline', "
+                         f"not {kind!r}")
     if degree is not None or y_lo is not None or terms is not None:
         raise ValueError("degree, y_lo and terms belong to kind 'everett'")
     coeffs = [float(c) for c in coeffs] if coeffs is not None else []
@@ -144,12 +170,15 @@ def _poly_args(coeffs, kind, degree, y_lo, terms):
 
 def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", degree=None,
                y_lo=None, terms=None, creep_tau=None, creep_weight=None, identified=None,
-               rate_tau=None, rate_weight=None, knots=None, weights=None):
+               rate_tau=None, rate_weight=None, knots=None, weights=None, values=None,
+               slopes=None):
     """Writes a model file (17 significant digits: the same doubles read
     back), replacing ``path`` whole or not at all. ``kind="everett"`` writes
     the asymmetric kind from ``degree``, ``y_lo`` and ``terms`` (no
     ``coeffs``); ``kind="everett_grid"`` the kind on a grid from ``y_lo``,
-    ``knots`` and ``weights``, as ``hyst fit --save`` writes it. ``creep_tau`` and ``creep_weight`` (both or neither, 1 to 4
+    ``knots`` and ``weights``, ``kind="spline"`` f0 a monotone cubic spline
+    from ``values`` and ``slopes`` (2 to 33 of each, slopes >= 0), as ``hyst
+    fit --save`` writes them. ``creep_tau`` and ``creep_weight`` (both or neither, 1 to 4
     numbers each, time constants >= 1 sample) add a creep term, written after
     the model as ``hyst fit --save`` writes it; ``rate_tau`` and
     ``rate_weight`` (both or neither, one number each, the time constant >= 1
@@ -161,6 +190,8 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
     rate = _rate_args(rate_tau, rate_weight)
     if lo is None or hi is None:
         raise ValueError("a domain lo, hi is needed")
+    values, slopes = _spline_args(kind, values, slopes, coeffs=coeffs, degree=degree, y_lo=y_lo,
+                                  terms=terms, knots=knots, weights=weights)
     if kind == "everett":
         if coeffs is not None:
             raise ValueError("kind 'everett' has terms, not coeffs")
@@ -170,13 +201,13 @@ def save_model(path, coeffs=None, lo=None, hi=None, delay=0, *, kind="poly", deg
             raise ValueError("kind 'everett_grid' has y_lo, knots and weights, not coeffs, "
                              "degree or terms")
         y_lo, knots, weights = _grid_args(y_lo, knots, weights)
-    else:
+    elif kind != "spline":
         if knots is not None or weights is not None:
             raise ValueError("knots and weights belong to kind 'everett_grid'")
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
     text = _model_call("model_write", kind, lo, hi, delay, coeffs, degree, y_lo, terms,
                        creep_tau, creep_weight, identified=identified, rate=rate, knots=knots,
-                       weights=weights)
+                       weights=weights, values=values, slopes=slopes)
     path = _regular_target(path)
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=os.path.basename(path) + ".")
@@ -212,7 +243,7 @@ def _regular_target(path):
     return path
 
 
-def _check_curve(kind, coeffs, lo, hi, degree, y_lo, terms, knots, weights):
+def _check_curve(kind, coeffs, lo, hi, degree, y_lo, terms, knots, weights, values, slopes):
     """Raises the library's HystError (ERR_NOT_INCREASING, ERR_NOT_MONOTONE...)
     for a curve firmware's init would refuse, as hyst header refuses it: no
     header of a model that cannot run."""
@@ -221,6 +252,8 @@ def _check_curve(kind, coeffs, lo, hi, degree, y_lo, terms, knots, weights):
         _api.ModelFromEverett(degree, lo, hi, y_lo, terms, capacity=2)
     elif kind == "everett_grid":
         _api.ModelFromEverettGrid(knots, weights, y_lo, capacity=2)
+    elif kind == "spline":
+        _api.ModelFromSpline(lo, hi, values, slopes, capacity=2)
     else:
         _api.Model(coeffs, lo, hi, capacity=2)
 
@@ -248,14 +281,17 @@ def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals
 def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,
                 terms=None, delay=0, compensator=False, intervals=None, rows=None,
                 creep_tau=None, creep_weight=None, identified=None, rate_tau=None,
-                rate_weight=None, knots=None, weights=None):
+                rate_weight=None, knots=None, weights=None, values=None, slopes=None):
     """C header declaring the firmware's model as ``hyst fit --header``
     writes it: ``static const hyst_poly_t name`` (f0), or for
     ``kind="everett"`` ``static const hyst_everett_t name`` (degree, lo, hi,
     y_lo, e[i-1][j]), for ``kind="everett_grid"`` ``static const
-    hyst_everett_grid_t name`` (knots, y_lo, weights; no compensator's
-    table: its compensator needs none); 17-digit literals in HYST_REAL_C(), exact in a double
-    build (HYST_USE_DOUBLE). ``delay`` and ``identified`` are not part of a
+    hyst_everett_grid_t name`` (knots, y_lo, weights), for ``kind="spline"``
+    ``static const hyst_spline_t name`` (K, lo, hi, values, slopes; for
+    hyst_curve_from_spline() with a table of HYST_SPLINE_TABLE_LEN(K)); no
+    compensator's table for these two: their compensators need none;
+    17-digit literals in HYST_REAL_C(), exact in a double build
+    (HYST_USE_DOUBLE). ``delay`` and ``identified`` are not part of a
     header; they are accepted so that a :func:`load_model` dict can be
     passed whole.
     ``compensator=True`` adds the compensator's table, built here by the
@@ -266,7 +302,9 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
     ``hyst_curve_everett_inverse_table_const()`` (``intervals``, ``rows``:
     the table's size, the library's defaults when None); kind
     ``everett_grid`` has no table (``hyst_curve_everett_grid_inverse()``
-    solves each branch in closed form): the header says so. A creep term
+    solves each branch in closed form), nor kind ``spline``
+    (``hyst_curve_spline_inverse()`` solves each drive per sample): the
+    header says so. A creep term
     (``creep_tau``, ``creep_weight``, as :func:`save_model` takes them) adds
     ``#include "hyst/creep.h"``, ``name_CREEP_TERMS``, ``name_creep_tau`` and
     ``name_creep_weight`` after the model, as ``hyst header`` writes them,
@@ -283,29 +321,37 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
     if not compensator and (intervals is not None or rows is not None):
         raise ValueError("intervals and rows size the compensator's table (compensator=True)")
     del delay, identified
+    values, slopes = _spline_args(kind, values, slopes, coeffs=coeffs, degree=degree, y_lo=y_lo,
+                                  terms=terms, knots=knots, weights=weights)
+    if compensator and kind in NO_TABLE and (intervals is not None or rows is not None):
+        raise ValueError(f"kind {kind} has no compensator table ({NO_TABLE[kind]})")
     if kind == "everett":
         degree, y_lo, terms = _everett_args(degree, y_lo, terms)
         what = (f"asymmetric model (branch function E),\n * degree {degree}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
     elif kind == "everett_grid":
-        if compensator and (intervals is not None or rows is not None):
-            raise ValueError("kind everett_grid has no compensator table (its compensator solves "
-                             "each branch in closed form)")
         y_lo, knots, weights = _grid_args(y_lo, knots, weights)
         what = (f"asymmetric model on a grid of {len(knots) - 1} knot intervals,\n * "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]" +
                 (";\n * the compensator: hyst_curve_everett_grid_inverse() of that curve,\n"
                  " * then hyst_init_curve(); each branch solved in closed form, no\n"
                  " * table of its own" if compensator else ""))
+    elif kind == "spline":
+        what = (f"symmetric model, f0 a monotone cubic spline\n * of {len(values) - 1} knot "
+                f"intervals, domain [{float(lo):.9g}, {float(hi):.9g}]" +
+                (";\n * the compensator: hyst_curve_spline_inverse() of that curve,\n"
+                 " * then hyst_init_curve(); each drive solved on its cubic piece per\n"
+                 " * sample, no table of its own" if compensator else ""))
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
         what = (f"major ascending curve f0,\n * degree {len(coeffs) - 1}, "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]")
-    _check_curve(kind, coeffs, lo, hi, degree, y_lo, terms, knots, weights)
+    _check_curve(kind, coeffs, lo, hi, degree, y_lo, terms, knots, weights, values, slopes)
     head = _model_call("model_header", kind, lo, hi, 0, coeffs, degree, y_lo, terms, creep_tau,
-                       creep_weight, name, True, rate=rate, knots=knots, weights=weights)
+                       creep_weight, name, True, rate=rate, knots=knots, weights=weights,
+                       values=values, slopes=slopes)
     table = (_compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows)
-             if compensator and kind != "everett_grid" else "")  # a grid's needs no table
+             if compensator and kind not in NO_TABLE else "")  # a grid's, a spline's: none
     from . import _hyst
     return (f"/* Generated by the Python package hyst: {what}. */\n" + head + table +
             _hyst.model_header(name, False, kind, 0.0, 1.0, [], 0.0, 0.0, [], [], []))

@@ -161,6 +161,7 @@ template <class T> struct Ops;
         static constexpr auto curve_everett_inverse_table = hyst_##P##_curve_everett_inverse_table; \
         static constexpr auto curve_from_everett_grid = hyst_##P##_curve_from_everett_grid_; \
         static constexpr auto curve_everett_grid_inverse = hyst_##P##_curve_everett_grid_inverse; \
+        static constexpr auto curve_from_spline = hyst_##P##_curve_from_spline_; \
         static constexpr auto step = hyst_##P##_step;                       \
         static constexpr auto process = hyst_##P##_process;                 \
         static constexpr auto set_deadband = hyst_##P##_set_deadband;       \
@@ -231,12 +232,13 @@ template <class X, class Y, class Fn> nb::object block(const In<X> &x, nb::handl
 struct Tcm {
     hyst_tcm_t S{};
     int block_status = HYST_OK; /* returned by the last process() */
-    const char *kind = "poly";  /* the curve's kind: poly, pwl, everett or everett_grid */
+    const char *kind = "poly";  /* the curve's kind: poly, pwl, everett, everett_grid or spline */
     std::vector<double> coeffs; /* poly: f0, highest power first */
     std::vector<double> terms;  /* everett: E's coefficients, as make_everett() takes them */
     double lo = 0.0, hi = 0.0;
     double y_lo = 0.0;          /* everett, everett_grid: the output at lo */
     std::vector<double> knots, weights; /* everett_grid: its knots and cells' masses */
+    std::vector<double> values, slopes; /* spline: f0 and its slope at the uniform knots */
 
     Tcm() = default;
     Tcm(const Tcm &) = delete;
@@ -351,7 +353,7 @@ template <class T> struct Real : Owned<T, T> {
     hyst_curve_t fwd{}; /* a piecewise-linear f0 or an E (the model's curve; inv derives from it) */
     std::vector<T> bx, by; /* its breakpoints (fwd points at them) */
     std::vector<T> table;  /* the tabulated compensator's table (inv points at it) */
-    std::vector<T> grid_table; /* a grid E's table (fwd, and inv, point at it) */
+    std::vector<T> curve_table; /* a grid E's or a spline's table (fwd, and inv, point at it) */
     bool inverse;
     size_t intervals = 0u; /* the table's intervals (per row); 0: the exact compensator */
     size_t rows = 0u;      /* the asymmetric kind's table: rows per direction; 0: none */
@@ -368,13 +370,15 @@ template <class T> struct Real : Owned<T, T> {
     std::optional<double> rate_tau, rate_weight;
 
     /* The instance on fwd, or on its inverse (the compensator): the one
-     * hyst_curve_inverse() prepares, or the table inv already holds. */
-    void attach_curve(size_t capacity)
+     * invert() prepares (hyst_curve_inverse(), or the kind's own), or, invert
+     * nullptr, the table inv already holds. */
+    using Invert = hyst_status_t (*)(hyst_curve_t *, const hyst_curve_t *);
+    void attach_curve(size_t capacity, Invert invert = hyst_curve_inverse)
     {
         const hyst_curve_t *c = &fwd;
         if (inverse) {
-            if (intervals == 0u) {
-                check(hyst_curve_inverse(&inv, &fwd), "inverse curve");
+            if (invert != nullptr) {
+                check(invert(&inv, &fwd), "inverse curve");
             }
             c = &inv;
         }
@@ -420,7 +424,7 @@ template <class T> struct Real : Owned<T, T> {
             check(O::curve_everett_inverse_table(&inv, &fwd, table.data(), rows, intervals),
                   "compensator table");
         }
-        attach_curve(capacity);
+        attach_curve(capacity, intervals > 0u ? nullptr : hyst_curve_inverse);
         this->kind = "everett";
         this->terms = terms_;
         this->lo = lo_;
@@ -453,24 +457,53 @@ template <class T> struct Real : Owned<T, T> {
         for (size_t i = 0u; i < weights_.size(); ++i) {
             g.weight[i] = static_cast<hyst_wide_t>(weights_[i]);
         }
-        grid_table.resize(HYST_EVERETT_GRID_TABLE_LEN(k));
-        check(O::curve_from_everett_grid(&fwd, &g, grid_table.data(), grid_table.size(),
+        curve_table.resize(HYST_EVERETT_GRID_TABLE_LEN(k));
+        check(O::curve_from_everett_grid(&fwd, &g, curve_table.data(), curve_table.size(),
                                          HYST_LAYOUT),
               "curve");
-        const hyst_curve_t *c = &fwd;
-        if (inverse) {
-            check(O::curve_everett_grid_inverse(&inv, &fwd), "inverse curve");
-            c = &inv;
-        }
-        check(O::init_curve(&this->S, c, this->xl.data(), this->yl.data(), this->xr.data(),
-                            this->yr.data(), capacity, HYST_LAYOUT),
-              inverse ? "compensator init" : "model init");
+        attach_curve(capacity, O::curve_everett_grid_inverse);
         this->kind = "everett_grid";
         this->knots = knots_;
         this->weights = weights_;
         this->lo = knots_.front();
         this->hi = knots_.back();
         this->y_lo = y_lo_;
+    }
+
+    /* The symmetric kind whose f0 is a monotone cubic spline on uniform knots
+     * (hyst_spline_t: f0 and its slope at lo + k (hi - lo) / K, k = 0..K), or
+     * its compensator (HYST_CURVE_SPLINE_INV, solved per sample on f0's
+     * cubic piece: no table), as `hyst sim --model` and `hyst inv --model`
+     * build them. */
+    Real(double lo_, double hi_, const std::vector<double> &values_,
+         const std::vector<double> &slopes_, size_t capacity, bool inverse_)
+        : Owned<T, T>(capacity), inverse(inverse_)
+    {
+        if (values_.size() < 2u || values_.size() > HYST_SPLINE_MAX_INTERVALS + 1u) {
+            raise_status(HYST_ERR_DEGREE, "a spline needs 2 .. HYST_SPLINE_MAX_INTERVALS + 1 "
+                                          "values (one per knot)");
+        }
+        if (slopes_.size() != values_.size()) {
+            raise_status(HYST_ERR_ARG, "a spline needs as many slopes as values (one per knot)");
+        }
+        hyst_spline_t f0{};
+        f0.intervals = static_cast<unsigned>(values_.size() - 1u);
+        f0.lo = static_cast<hyst_wide_t>(lo_);
+        f0.hi = static_cast<hyst_wide_t>(hi_);
+        for (size_t i = 0u; i < values_.size(); ++i) {
+            f0.value[i] = static_cast<hyst_wide_t>(values_[i]);
+            f0.slope[i] = static_cast<hyst_wide_t>(slopes_[i]);
+        }
+        curve_table.resize(HYST_SPLINE_TABLE_LEN(f0.intervals));
+        check(O::curve_from_spline(&fwd, &f0, curve_table.data(), curve_table.size(),
+                                   HYST_LAYOUT),
+              "curve");
+        attach_curve(capacity, hyst_curve_spline_inverse);
+        this->kind = "spline";
+        this->values = values_;
+        this->slopes = slopes_;
+        this->lo = lo_;
+        this->hi = hi_;
     }
 
     /* f0 as a polynomial; its compensator exact (intervals 0) or tabulated
@@ -709,8 +742,8 @@ nb::dict holdout(Real<double> &m, const In<double> &x, const In<double> &y, size
         raise_status(HYST_ERR_ARG, "x and y differ in length");
     }
     if (m.has_creep || m.inverse || std::strcmp(m.kind, "pwl") == 0) {
-        raise_status(HYST_ERR_ARG, "holdout runs a model of kind poly, everett or everett_grid, "
-                                   "without a creep term");
+        raise_status(HYST_ERR_ARG, "holdout runs a model of kind poly, everett, everett_grid or "
+                                   "spline, without a creep term");
     }
     hyst_poly_t f0{};
     const bool poly = std::strcmp(m.kind, "poly") == 0;
@@ -934,18 +967,16 @@ nb::object poly_from_everett(unsigned degree, double lo, double hi, double y_lo,
     return nb::cast(coeffs);
 }
 
-/*
- * The asymmetric kind on a grid of k knot intervals fitted to a record as
- * `hyst fit --kind everett_grid` fits it (fit_grid_record(),
- * tools/cli/fit_grid.c): the knots where the output steps, the cells'
- * masses by least squares; on [lo, hi], or the inputs' range when lo == hi.
- * A dict as fit_everett() gives (knots, weights instead of terms; rms the
- * model's run over the samples fitted, or the least-squares residual when
- * the library refuses the grid: curve_status; determined: whether the
- * record determines every mass, hyst_everett_grid_fit_determined()).
- */
-nb::dict fit_grid(const In<double> &x, const In<double> &y, unsigned k, double lo, double hi,
-                  size_t skip, size_t delay)
+/* A kind of k knot intervals fitted to a record by the `hyst` tool's fit of
+ * it (fit_grid_record(), fit_spline_record()), on [lo, hi] or the inputs'
+ * range when lo == hi: its result, and into d what every such kind's dict
+ * has (rms the model's run over the samples fitted, or the least-squares
+ * residual when the library refuses the curve: curve_status). */
+using RecordFit = hyst_status_t (*)(const hyst_ident_config_t *, unsigned, const double *,
+                                    const double *, size_t, fit_everett_result_t *);
+fit_everett_result_t fit_intervals(RecordFit record_fit, const In<double> &x,
+                                   const In<double> &y, unsigned k, double lo, double hi,
+                                   size_t skip, size_t delay, nb::dict &d)
 {
     const size_t n = x.shape(0);
     if (y.shape(0) != n) {
@@ -956,9 +987,29 @@ nb::dict fit_grid(const In<double> &x, const In<double> &y, unsigned k, double l
     }
     const hyst_ident_config_t cfg = ident_config(x, y, k, 0, lo, hi, skip, delay);
     fit_everett_result_t r;
-    check(fit_grid_record(&cfg, k, x.data(), y.data(), n, &r), "fit");
-    const hyst_everett_grid_t &g = r.grid;
+    check(record_fit(&cfg, k, x.data(), y.data(), n, &r), "fit");
+    d["rms"] = r.curve_status == HYST_OK ? r.rms : r.ls_rms;
+    d["max_abs"] = r.max_abs;
+    d["used"] = r.used;
+    d["curve_status"] = static_cast<int>(r.curve_status);
+    return r;
+}
+
+/*
+ * The asymmetric kind on a grid of k knot intervals fitted to a record as
+ * `hyst fit --kind everett_grid` fits it (fit_grid_record(),
+ * tools/cli/fit_grid.c): the knots where the output steps, the cells'
+ * masses by least squares; on [lo, hi], or the inputs' range when lo == hi.
+ * A dict as fit_everett() gives (knots, weights instead of terms; rms as
+ * fit_intervals() says; determined: whether the record determines every
+ * mass, hyst_everett_grid_fit_determined()).
+ */
+nb::dict fit_grid(const In<double> &x, const In<double> &y, unsigned k, double lo, double hi,
+                  size_t skip, size_t delay)
+{
     nb::dict d;
+    const fit_everett_result_t r = fit_intervals(fit_grid_record, x, y, k, lo, hi, skip, delay, d);
+    const hyst_everett_grid_t &g = r.grid;
     d["kind"] = "everett_grid";
     d["degree"] = g.intervals;
     d["lo"] = static_cast<double>(g.knots[0]);
@@ -966,23 +1017,76 @@ nb::dict fit_grid(const In<double> &x, const In<double> &y, unsigned k, double l
     d["y_lo"] = static_cast<double>(g.y_lo);
     d["knots"] = std::vector<double>(g.knots, g.knots + g.intervals + 1u);
     d["weights"] = std::vector<double>(g.weight, g.weight + HYST_EVERETT_GRID_CELLS(g.intervals));
-    d["rms"] = r.curve_status == HYST_OK ? r.rms : r.ls_rms;
-    d["max_abs"] = r.max_abs;
-    d["used"] = r.used;
-    d["curve_status"] = static_cast<int>(r.curve_status);
     d["determined"] = r.determined != 0;
+    return d;
+}
+
+/*
+ * The symmetric kind whose f0 is a monotone cubic spline of k uniform knot
+ * intervals fitted to a record as `hyst fit --kind spline` fits it
+ * (fit_spline_record(), tools/cli/fit_spline.c): along every branch, minor
+ * loops included, on [lo, hi] or the inputs' range when lo == hi. A dict:
+ * kind, degree and intervals (k), lo, hi, values and slopes (f0 and its
+ * slope at the k + 1 knots), and what fit_intervals() says.
+ */
+nb::dict fit_spline(const In<double> &x, const In<double> &y, unsigned k, double lo, double hi,
+                    size_t skip, size_t delay)
+{
+    nb::dict d;
+    const fit_everett_result_t r =
+        fit_intervals(fit_spline_record, x, y, k, lo, hi, skip, delay, d);
+    const hyst_spline_t &f0 = r.spline;
+    d["kind"] = "spline";
+    d["degree"] = f0.intervals;
+    d["intervals"] = f0.intervals;
+    d["lo"] = static_cast<double>(f0.lo);
+    d["hi"] = static_cast<double>(f0.hi);
+    d["values"] = std::vector<double>(f0.value, f0.value + f0.intervals + 1u);
+    d["slopes"] = std::vector<double>(f0.slope, f0.slope + f0.intervals + 1u);
     return d;
 }
 
 /* ---- the model file format, one implementation (tools/model_text) ---- */
 
+/* The kinds by name (a model file's key `kind`, fit()'s kind): the model
+ * file's (MODEL_TEXT_*) and fit's (FIT_*). */
+struct KindName {
+    const char *name;
+    int model_text, fit;
+};
+constexpr KindName KIND_NAMES[] = {{"poly", MODEL_TEXT_POLY, FIT_POLY},
+                                   {"everett", MODEL_TEXT_EVERETT, FIT_EVERETT},
+                                   {"everett_grid", MODEL_TEXT_GRID, FIT_GRID},
+                                   {"spline", MODEL_TEXT_SPLINE, FIT_SPLINE}};
+
+/* The kind of that name, or nullptr. */
+const KindName *kind_named(const std::string &name)
+{
+    for (const KindName &k : KIND_NAMES) {
+        if (name == k.name) {
+            return &k;
+        }
+    }
+    return nullptr;
+}
+
+/* A fit kind as fit_select.h takes it: FIT_EVERETT, FIT_GRID or FIT_SPLINE,
+ * else FIT_POLY. */
+int fit_kind(int kind)
+{
+    return kind == FIT_EVERETT || kind == FIT_GRID || kind == FIT_SPLINE ? kind : FIT_POLY;
+}
+
 /* The load_model() dict of a model as the reader gives it. */
 nb::dict model_dict(const model_text_t &m)
 {
     nb::dict d;
-    d["kind"] = m.kind == MODEL_TEXT_GRID      ? "everett_grid"
-                : m.kind == MODEL_TEXT_EVERETT ? "everett"
-                                               : "poly";
+    d["kind"] = "poly";
+    for (const KindName &k : KIND_NAMES) {
+        if (m.kind == k.model_text) {
+            d["kind"] = k.name;
+        }
+    }
     d["lo"] = m.lo;
     d["hi"] = m.hi;
     if (m.delay_fraction > 0.0) { /* a sub-sample delay: a float, else an int */
@@ -1001,6 +1105,9 @@ nb::dict model_dict(const model_text_t &m)
         d["y_lo"] = m.y_lo;
         d["knots"] = std::vector<double>(m.knots, m.knots + m.nknots);
         d["weights"] = std::vector<double>(m.weights, m.weights + m.nweights);
+    } else if (m.kind == MODEL_TEXT_SPLINE) {
+        d["values"] = std::vector<double>(m.values, m.values + m.nvalues);
+        d["slopes"] = std::vector<double>(m.slopes, m.slopes + m.nslopes);
     } else {
         d["coeffs"] = std::vector<double>(m.coeffs, m.coeffs + m.ncoef);
     }
@@ -1044,13 +1151,16 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
                       const std::vector<double> &identified = {},
                       const std::vector<double> &rate = {},
                       const std::vector<double> &knots = {},
-                      const std::vector<double> &weights = {})
+                      const std::vector<double> &weights = {},
+                      const std::vector<double> &values = {},
+                      const std::vector<double> &slopes = {})
 {
     model_text_t m;
     char msg[MODEL_TEXT_MSG_SIZE];
     std::memset(&m, 0, sizeof m);
-    if (kind != "poly" && kind != "everett" && kind != "everett_grid") {
-        throw nb::value_error("kind must be 'poly', 'everett' or 'everett_grid'");
+    const KindName *named = kind_named(kind);
+    if (named == nullptr) {
+        throw nb::value_error("kind must be 'poly', 'everett', 'everett_grid' or 'spline'");
     }
     if (!(delay >= 0.0 && delay <= static_cast<double>(MODEL_TEXT_MAX_DELAY))) {
         throw nb::value_error("delay is not a delay of 0 to 1000000000 samples");
@@ -1066,9 +1176,7 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
         m.rate_tau = rate[0];
         m.rate_weight = rate[1];
     }
-    m.kind = kind == "everett_grid" ? MODEL_TEXT_GRID
-             : kind == "everett"    ? MODEL_TEXT_EVERETT
-                                    : MODEL_TEXT_POLY;
+    m.kind = named->model_text;
     m.lo = lo;
     m.hi = hi;
     m.delay = static_cast<unsigned long>(delay);
@@ -1090,6 +1198,9 @@ model_text_t model_of(const std::string &kind, double lo, double hi, double dela
         copy_numbers(knots, m.knots, HYST_EVERETT_GRID_MAX_INTERVALS + 1u, &m.nknots);
         copy_numbers(weights, m.weights,
                      HYST_EVERETT_GRID_CELLS(HYST_EVERETT_GRID_MAX_INTERVALS), &m.nweights);
+    } else if (m.kind == MODEL_TEXT_SPLINE) {
+        copy_numbers(values, m.values, HYST_SPLINE_MAX_INTERVALS + 1u, &m.nvalues);
+        copy_numbers(slopes, m.slopes, HYST_SPLINE_MAX_INTERVALS + 1u, &m.nslopes);
     } else {
         copy_numbers(coeffs, m.coeffs, HYST_MAX_DEGREE + 1u, &m.ncoef);
     }
@@ -1107,10 +1218,12 @@ std::string model_write(const std::string &kind, double lo, double hi, double de
                         const std::vector<double> &terms, const std::vector<double> &creep_tau,
                         const std::vector<double> &creep_weight,
                         const std::vector<double> &identified, const std::vector<double> &rate,
-                        const std::vector<double> &knots, const std::vector<double> &weights)
+                        const std::vector<double> &knots, const std::vector<double> &weights,
+                        const std::vector<double> &values, const std::vector<double> &slopes)
 {
     const model_text_t m = model_of(kind, lo, hi, delay, coeffs, degree, y_lo, terms, creep_tau,
-                                    creep_weight, identified, rate, knots, weights);
+                                    creep_weight, identified, rate, knots, weights, values,
+                                    slopes);
     std::vector<char> buf(16384u);
     const size_t len = model_text_write(&m, buf.data(), buf.size());
     if (len == 0u) {
@@ -1126,7 +1239,8 @@ std::string model_header(const std::string &name, bool open, const std::string &
                          double y_lo, const std::vector<double> &terms,
                          const std::vector<double> &creep_tau,
                          const std::vector<double> &creep_weight, const std::vector<double> &rate,
-                         const std::vector<double> &knots, const std::vector<double> &weights)
+                         const std::vector<double> &knots, const std::vector<double> &weights,
+                         const std::vector<double> &values, const std::vector<double> &slopes)
 {
     if (!model_text_identifier(name.c_str()) || name.size() != std::strlen(name.c_str())) {
         throw nb::value_error(("'" + name + "' is not a C identifier").c_str());
@@ -1137,7 +1251,7 @@ std::string model_header(const std::string &name, bool open, const std::string &
     if (open) {
         const model_text_t m =
             model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, creep_tau, creep_weight, {},
-                     rate, knots, weights);
+                     rate, knots, weights, values, slopes);
         over = model_text_header_open(buf.data(), buf.size(), &len, name.c_str(), &m);
     } else {
         over = model_text_header_close(buf.data(), buf.size(), &len, name.c_str());
@@ -1179,9 +1293,9 @@ std::string model_header_table(const std::string &name, const std::string &kind,
 /* A scored candidate as the dict fit() lists. */
 nb::dict candidate_dict(const fit_candidate_t &c)
 {
-    const bool everett = c.kind == FIT_EVERETT, grid = c.kind == FIT_GRID;
+    const bool everett = c.kind == FIT_EVERETT;
     nb::dict d;
-    d["kind"] = grid ? "everett_grid" : everett ? "everett" : "poly";
+    d["kind"] = fit_kind_name(c.kind);
     d["degree"] = c.degree;
     d["t_degree"] = everett ? nb::cast(c.t_degree) : nb::none();
     d["delay"] = c.delay;
@@ -1190,7 +1304,7 @@ nb::dict candidate_dict(const fit_candidate_t &c)
     d["holdout_rms"] = c.holdout_rms;
     d["fit_rms"] = c.fit_rms;
     d["status_code"] = static_cast<int>(c.status);
-    d["increasing"] = everett || grid || c.fit.increasing != 0;
+    d["increasing"] = c.kind != FIT_POLY || c.fit.increasing != 0;
     d["creep_tau"] = c.creep.tau;
     d["creep_weight"] = c.creep.tau > 0 ? c.creep.weight : NAN;
     d["creep_holdout_rms"] = c.creep.tau > 0 ? c.creep.holdout_rms : NAN;
@@ -1217,8 +1331,8 @@ const fit_validation_t *validation(const In<double> &vx, const In<double> &vy, s
     return &v;
 }
 
-/* One candidate (kind FIT_POLY, FIT_EVERETT or FIT_GRID (degree: its
- * intervals), degree, t_degree, delay)
+/* One candidate (kind FIT_POLY, FIT_EVERETT, FIT_GRID or FIT_SPLINE (degree:
+ * their intervals), degree, t_degree, delay)
  * scored as the automatic choice scores it (fit_score(): the hold-out
  * splits, or the validation record vx, vy when not empty), with its creep
  * term unless creep_tau < 0 (0: chosen). */
@@ -1233,7 +1347,7 @@ nb::dict score_candidate(const In<double> &x, const In<double> &y, int kind, uns
     const fit_validation_t *val = validation(vx, vy, skip, vdrive, v);
     fit_candidate_t c;
     std::memset(&c, 0, sizeof c);
-    c.kind = kind == FIT_EVERETT || kind == FIT_GRID ? kind : FIT_POLY;
+    c.kind = fit_kind(kind);
     c.degree = degree;
     c.t_degree = t_degree;
     c.delay = delay;
@@ -1241,7 +1355,7 @@ nb::dict score_candidate(const In<double> &x, const In<double> &y, int kind, uns
     return candidate_dict(c);
 }
 
-/* Every candidate of the kinds (FIT_POLY | FIT_EVERETT | FIT_GRID) at the delay given
+/* Every candidate of the kinds (FIT_POLY | FIT_EVERETT | FIT_GRID | FIT_SPLINE) at the delay given
  * or, delay < 0, at the delays fit_search() chooses among, scored on the
  * hold-out splits (or the validation record vx, vy when not empty): a list
  * of dicts, the index chosen (None: none), whether with its creep term, the
@@ -1299,7 +1413,7 @@ nb::tuple select_candidates(const In<double> &x, const In<double> &y, int kinds,
                           search);
 }
 
-/* The delay of one model (kind FIT_POLY, FIT_EVERETT (t_degree) or FIT_GRID,
+/* The delay of one model (kind FIT_POLY, FIT_EVERETT (t_degree), FIT_GRID or FIT_SPLINE,
  * degree, no creep term) as `hyst fit --degree D` without --delay chooses it
  * (fit_given_delay()): delay (whole samples), delay_fraction, max_delay,
  * integer_holdout, and x: the drive interpolated by the fraction, or None
@@ -1317,8 +1431,8 @@ nb::dict given_delay(const In<double> &x, const In<double> &y, int kind, unsigne
     const fit_validation_t *val = validation(vx, vy, skip, vdrive, v);
     fit_found_t found;
     size_t delay = 0u;
-    check(fit_given_delay(&base, kind == FIT_EVERETT || kind == FIT_GRID ? kind : FIT_POLY,
-                          t_degree, drive.data(), y.data(), n, val, &delay, &found),
+    check(fit_given_delay(&base, fit_kind(kind), t_degree, drive.data(), y.data(), n, val,
+                          &delay, &found),
           "given_delay");
     nb::dict d;
     d["delay"] = delay;
@@ -1401,8 +1515,8 @@ nb::tuple choose(const nb::list &cands, double creep_tau)
         const nb::dict d = nb::cast<nb::dict>(cands[i]);
         fit_candidate_t &c = cand[i];
         std::memset(&c, 0, sizeof c);
-        const std::string kind = nb::cast<std::string>(d["kind"]);
-        c.kind = kind == "everett_grid" ? FIT_GRID : kind == "everett" ? FIT_EVERETT : FIT_POLY;
+        const KindName *kind = kind_named(nb::cast<std::string>(d["kind"]));
+        c.kind = kind != nullptr ? kind->fit : FIT_POLY;
         c.degree = nb::cast<unsigned>(d["degree"]);
         c.t_degree = d.contains("t_degree") && !d["t_degree"].is_none()
                          ? nb::cast<unsigned>(d["t_degree"])
@@ -1483,6 +1597,9 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
         .def(nb::init<const std::vector<double> &, const std::vector<double> &, double, size_t,
                       bool>(),
              "knots"_a, "weights"_a, "y_lo"_a, "capacity"_a, "inverse"_a = false)
+        .def(nb::init<double, double, const std::vector<double> &, const std::vector<double> &,
+                      size_t, bool>(),
+             "lo"_a, "hi"_a, "values"_a, "slopes"_a, "capacity"_a, "inverse"_a = false)
         .def("step", &R::step, "x"_a, "One sample in, one output out.")
         .def_prop_rw("deadband", [](const R &s) { return s.deadband; }, &R::set_deadband)
         .def_prop_ro("output", [](const R &s) { return Ops<T>::output(&s.S); })
@@ -1589,6 +1706,7 @@ NB_MODULE(_hyst, m)
     m.attr("__version__") = HYST_VERSION_STRING;
     m.attr("MAX_DEGREE") = HYST_MAX_DEGREE;
     m.attr("EVERETT_MAX_DEGREE") = HYST_EVERETT_MAX_DEGREE;
+    m.attr("SPLINE_MAX_INTERVALS") = HYST_SPLINE_MAX_INTERVALS;
     m.attr("CODE_MAX") = static_cast<unsigned long>(HYST_CODE_MAX);
     m.attr("INV_TABLE") = static_cast<unsigned long>(HYST_INV_TABLE);
     m.attr("EVERETT_INV_ROWS") = static_cast<unsigned long>(HYST_EVERETT_INV_ROWS);
@@ -1648,6 +1766,8 @@ NB_MODULE(_hyst, m)
         .def_ro("terms", &Tcm::terms)
         .def_ro("knots", &Tcm::knots)
         .def_ro("weights", &Tcm::weights)
+        .def_ro("values", &Tcm::values)
+        .def_ro("slopes", &Tcm::slopes)
         .def_ro("lo", &Tcm::lo)
         .def_ro("hi", &Tcm::hi)
         .def_ro("y_lo", &Tcm::y_lo);
@@ -1689,12 +1809,15 @@ NB_MODULE(_hyst, m)
           "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
           "identified"_a = std::vector<double>(), "rate"_a = std::vector<double>(),
           "knots"_a = std::vector<double>(), "weights"_a = std::vector<double>(),
+          "values"_a = std::vector<double>(), "slopes"_a = std::vector<double>(),
           "A model file's text (ValueError for what the reader would refuse); rate: "
-          "(rate_tau, rate_weight), or empty; knots, weights: kind everett_grid's.");
+          "(rate_tau, rate_weight), or empty; knots, weights: kind everett_grid's; values, "
+          "slopes: kind spline's.");
     m.def("model_header", &model_header, "name"_a, "open"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "creep_tau"_a, "creep_weight"_a,
           "rate"_a = std::vector<double>(), "knots"_a = std::vector<double>(),
-          "weights"_a = std::vector<double>(),
+          "weights"_a = std::vector<double>(), "values"_a = std::vector<double>(),
+          "slopes"_a = std::vector<double>(),
           "A firmware header's opening (the model) or close, as `hyst header` writes them.");
     m.def("model_header_table", &model_header_table, "name"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "intervals"_a, "rows"_a,
@@ -1733,6 +1856,7 @@ NB_MODULE(_hyst, m)
     m.attr("FIT_POLY") = static_cast<int>(FIT_POLY);
     m.attr("FIT_EVERETT") = static_cast<int>(FIT_EVERETT);
     m.attr("FIT_GRID") = static_cast<int>(FIT_GRID);
+    m.attr("FIT_SPLINE") = static_cast<int>(FIT_SPLINE);
     m.attr("FIT_MAX_DELAY") = static_cast<unsigned long>(FIT_MAX_DELAY);
     m.attr("FIT_PARSIMONY") = FIT_PARSIMONY;
     m.attr("FIT_RESOLUTION") = FIT_RESOLUTION;
@@ -1743,5 +1867,7 @@ NB_MODULE(_hyst, m)
           "terms"_a);
     m.attr("FIT_GRID_UNDETERMINED") = nb::str(fit_grid_undetermined);
     m.def("fit_grid", &fit_grid, "x"_a, "y"_a, "intervals"_a, "lo"_a, "hi"_a, "skip"_a,
+          "delay"_a);
+    m.def("fit_spline", &fit_spline, "x"_a, "y"_a, "intervals"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a);
 }

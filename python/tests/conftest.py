@@ -101,6 +101,25 @@ def numbers(text):
     return np.array([float(v) for v in text.split()])
 
 
+def sim_matches_cli(c_build, tmp_path, path, x):
+    """hyst.model_from() of model file `path`'s description gives for the
+    inputs x bit for bit the outputs `hyst sim --model path` gives (the
+    file's delay applied), by block and by step: the description and the
+    outputs."""
+    import hyst
+
+    desc = hyst.load_model(path)
+    d = desc["delay"]
+    inp = tmp_path / "x.txt"
+    np.savetxt(inp, x, fmt="%.17g")
+    cli = numbers(run_cli(c_build, "sim", "--model", path, "--digits", 17, inp).stdout)
+    y = hyst.model_from(desc).process(x)
+    assert len(cli) == len(x) and np.array_equal(cli[d:], y[:len(y) - d])
+    m = hyst.model_from(desc)
+    assert np.array_equal([m.step(v) for v in x], y)
+    return desc, y
+
+
 def inv_matches_cli(c_build, tmp_path, path, desc, y):
     """hyst.compensator_from(desc), desc model file `path`'s description, gives
     bit for bit the drives `hyst inv --model path` gives for the desired

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import hyst
-from conftest import inv_matches_cli, numbers, run_cli, signal
+from conftest import inv_matches_cli, run_cli, signal, sim_matches_cli
 
 # tests/cli/grid.sh's plant: a near step between 1 and 1.4 of 0..3
 PLANT = """hyst-model-text 1
@@ -49,16 +49,8 @@ def test_load_model_gives_the_grid(tmp_path):
 def test_sim_and_inv_match_the_cli_bit_for_bit(c_build, tmp_path, text):
     path = tmp_path / "p.hyst"
     path.write_text(text)
-    desc = hyst.load_model(path)
-    d = desc["delay"]
     x = np.concatenate([signal(3000, 0.0, 3.0, seed=4), loops()])
-    inp = tmp_path / "x.txt"
-    np.savetxt(inp, x, fmt="%.17g")
-    cli = numbers(run_cli(c_build, "sim", "--model", path, "--digits", 17, inp).stdout)
-    y = hyst.model_from(desc).process(x)
-    assert len(cli) == len(x) and np.array_equal(cli[d:], y[:len(y) - d])
-    m = hyst.model_from(desc)
-    assert np.array_equal([m.step(v) for v in x], y)
+    desc, y = sim_matches_cli(c_build, tmp_path, path, x)
     # the compensator: sim's own outputs give the inputs back (clamped)
     comp, drive = inv_matches_cli(c_build, tmp_path, path, desc, y)
     # the model driven by it gives the desired outputs back; without a

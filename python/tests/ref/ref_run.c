@@ -11,6 +11,8 @@
  *         terms ordered i = 1..degree, then j = 0..degree - i; lo= hi= its domain)
  *         rows= (inv of E with intervals > 0: the table's rows, HYST_EVERETT_INV_ROWS
  *         by default)  err=PATH (inv: hyst_curve_inverse_error() of the curve, %.17g)
+ *         values=v0,...,vK slopes=s0,...,sK (sim, inv: f0 a spline of K uniform knot
+ *         intervals on lo= hi= instead of the polynomial)
  *         code_lo= code_hi=  r=r1,...  w=w1,...  in=PATH out=PATH
  *         snap=PATH (sim, inv, code: the snapshot after the block)
  *         repeat=N (bench: best of N block calls of the f64 model)
@@ -138,6 +140,22 @@ static hyst_everett_t everett(void)
     return e;
 }
 
+/* A spline f0 from lo=, hi=, values=, slopes= (as many). */
+static hyst_spline_t spline(void)
+{
+    hyst_spline_t f0;
+    size_t n;
+    memset(&f0, 0, sizeof f0);
+    f0.lo = num("lo", NULL);
+    f0.hi = num("hi", NULL);
+    n = list("values", f0.value, HYST_SPLINE_MAX_INTERVALS + 1u);
+    if (n < 2u || list("slopes", f0.slope, HYST_SPLINE_MAX_INTERVALS + 1u) != n) {
+        die("bad values or slopes", "");
+    }
+    f0.intervals = (unsigned)n - 1u;
+    return f0;
+}
+
 /* err=PATH: the measured error of a tabulated inverse, written as text. */
 static void save_error(const hyst_curve_t *inv)
 {
@@ -205,7 +223,8 @@ static double now_ns(void)
             hyst_tcm_t S;                                                                    \
             hyst_curve_t inv, fwd;                                                           \
             const int is_everett = *opt("terms", "") != '\0';                                \
-            const hyst_poly_t f0 = is_everett ? no_poly() : poly();                          \
+            const int is_spline = *opt("values", "") != '\0';                                \
+            const hyst_poly_t f0 = is_everett || is_spline ? no_poly() : poly();             \
             const size_t intervals = (size_t)num("intervals", "0");                          \
             const size_t rows_given = (size_t)num("rows", "0");                              \
             const size_t rows = rows_given > 0u ? rows_given : (size_t)HYST_EVERETT_INV_ROWS;\
@@ -215,13 +234,21 @@ static double now_ns(void)
             if (table == NULL) {                                                             \
                 die("out of memory", "");                                                    \
             }                                                                                \
-            if (is_everett) {                                                                \
-                const hyst_everett_t e = everett();                                          \
-                st = hyst_##P##_curve_from_everett(&fwd, &e);                                \
+            if (is_everett || is_spline) {                                                   \
+                static T spline_table[HYST_SPLINE_TABLE_LEN(HYST_SPLINE_MAX_INTERVALS)];     \
+                if (is_spline) {                                                             \
+                    const hyst_spline_t sp = spline();                                       \
+                    st = hyst_##P##_curve_from_spline(&fwd, &sp, spline_table,               \
+                                                      HYST_SPLINE_TABLE_LEN(sp.intervals));  \
+                } else {                                                                     \
+                    const hyst_everett_t e = everett();                                      \
+                    st = hyst_##P##_curve_from_everett(&fwd, &e);                            \
+                }                                                                            \
                 if (st == HYST_OK && strcmp(kind, "inv") == 0) {                             \
-                    st = intervals > 0u ? hyst_##P##_curve_everett_inverse_table(            \
-                                              &inv, &fwd, table, rows, intervals)            \
-                                        : hyst_curve_inverse(&inv, &fwd);                    \
+                    st = is_spline ? hyst_curve_spline_inverse(&inv, &fwd)                   \
+                         : intervals > 0u ? hyst_##P##_curve_everett_inverse_table(          \
+                                                &inv, &fwd, table, rows, intervals)          \
+                                          : hyst_curve_inverse(&inv, &fwd);                  \
                 }                                                                            \
                 if (st == HYST_OK) {                                                         \
                     st = hyst_##P##_init_curve(&S, strcmp(kind, "inv") == 0 ? &inv : &fwd,  \
