@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """Writes the seed corpora (small, committed): fuzz/corpus/ for fuzz_hyst.c,
-fuzz/corpus_models/ for fuzz_models.c, fuzz/corpus_code/ for fuzz_code.c, fuzz/corpus_q31/ for fuzz_q31.c, fuzz/corpus_grid/ for fuzz_grid.c
+fuzz/corpus_models/ for fuzz_models.c, fuzz/corpus_code/ for fuzz_code.c, fuzz/corpus_q31/ for fuzz_q31.c, fuzz/corpus_grid/ for fuzz_grid.c,
+fuzz/corpus_spline/ for fuzz_spline.c
 (layouts in their header comments) and fuzz/corpus_model_file/ for fuzz_model_file.c (model files: tests/cli/models/*.hyst, tests/model_files/*.hyst, a valid one
 in several spellings, and malformed variants of it).
 regress_* files are fuzzer finds, kept by hand, never written here."""
@@ -560,12 +561,101 @@ grid_seeds.update({
     "regress_grid_knots_narrow_domain": graw(G_FIT, [1.0, 1.0 + 2 ** -51, 1.0 + 2 ** -50], 0.0, [1.0, 0.5, 2.0],
                                              bytes([200, 0xF5] * 4)),
 })
+# fuzz_spline.c: flags, intervals, capacity, fit byte, fit intervals, probe byte, then lo, the
+# span, value[0], each piece's rise and each knot's slope (structured bytes; with flags bit5
+# the K + 2 I-spline weights instead), then opcodes (0xF0 snapshot + which change the other
+# spline makes, 0xF1 reset, 0xF2 + knot, 0xF3 + where: an excursion, 0xF4 + a raw double: the
+# fit's output, + the sample, 0xF5 hi, 0xF6 lo, else a sample b / 239).
+S_RAW, S_COMP, S_FIT, S_PROBE, S_F32, S_SPACE = 1, 2, 4, 8, 16, 32
+LARGER = 64  # a slope byte's bit6: the larger secant beside the knot
+
+def spline(flags, rises, slopes, ops, cap=30, fit=40, fit_k=None, probe=0, lo=0.0, span=4.0, v0_byte=16):
+    """rises in 1/16 (0: flat, above 12: 134.375); slopes as bytes: (b & 63) / 16 times a secant."""
+    k = len(rises)
+    assert len(slopes) == k + 1
+    b = bytes([flags, k, cap, fit, k if fit_k is None else fit_k, probe]) + sbyte(lo * 8)
+    b += bytes([int(span * 4) - 1]) + sbyte(v0_byte)
+    b += bytes([0 if r == 0 else (255 if r > 12 else int(r * 16) + 40) for r in rises])
+    return b + bytes(slopes) + ops
+
+def sspace(flags, weights, ops, cap=30, fit=40, lo=0.0, span=4.0, v0_byte=16):
+    """a spline of the fit's space (flags bit5): the K + 2 I-spline weights as bytes, (b - 64) / 16"""
+    k = len(weights) - 2
+    b = bytes([flags | S_SPACE, k, cap, fit, k, 0]) + sbyte(lo * 8) + bytes([int(span * 4) - 1]) + sbyte(v0_byte)
+    return b + bytes([0 if w == 0 else int(w * 16) + 64 for w in weights]) + ops
+
+def sraw(flags, lo, hi, values, slopes, ops=b"", cap=30, fit=40, fit_k=None):
+    k = len(values) - 1
+    return bytes([flags | S_RAW, k, cap, fit, k if fit_k is None else fit_k, 0]) + struct.pack("<dd", lo, hi) + \
+        struct.pack("<%dd" % len(values), *values) + struct.pack("<%dd" % len(slopes), *slopes) + ops
+
+five = [0.5, 2.0, 0.25, 4.0, 1.0]
+five_s = [16, 16, 32, 8, 48, 16]
+steps12 = [(0, 0.25, 3.0, 0.0625, 13, 1.0)[i % 6] for i in range(12)]
+spline_seeds = {
+    "spline_one_piece": spline(0, [2.0], [16, 16], gwalk(2, 2) + bytes([0xF2, 1, 0xF2, 0])),
+    "spline_five_all": spline(S_COMP | S_FIT | S_F32, five, five_s, gwalk(4, 3), lo=-1.0, span=2.5),
+    "spline_flat_piece": spline(S_COMP | S_FIT, [1.0, 0, 2.0], [16, 0, 0, 16], gwalk(3, 3)),
+    "spline_steep": spline(S_COMP | S_FIT | S_F32, [0.0625, 13, 0.0625], [48, 48, 48, 48], gwalk(4, 3) +
+                           bytes([0xF3, 100]) + gwalk(1, 4)),
+    "spline_twelve_flat_and_steep": spline(S_COMP | S_FIT | S_F32, steps12, [16 + 8 * (i % 5) for i in range(13)],
+                                           gwalk(5, 3) + bytes([0xF2, 6, 0xF5, 0xF6]), cap=39, fit=47, fit_k=9),
+    "spline_snapshot_reset": spline(0, five, five_s, gwalk(2, 3) + bytes([0xF0, 0]) + gwalk(1, 3) + bytes([0xF0, 4]) +
+                                    bytes([0xF3, 50, 0xF1]) + gwalk(2, 2) + bytes([0xF0, 2])),
+    "spline_thirty_two": spline(S_COMP | S_FIT | S_F32, [0.25 * (1 + i % 7) for i in range(32)],
+                                [16 + (i * 5) % 40 for i in range(33)], gwalk(6, 3), cap=39, fit=47, span=15.75),
+    "spline_small_capacity": spline(S_COMP | S_F32, five, five_s, gwalk(6, 2), cap=3),
+    "spline_fit_nospace": spline(S_FIT, five, five_s, gwalk(4, 2), fit=3),
+    "spline_fit_one_interval": spline(S_FIT, five, five_s, gwalk(3, 3), fit_k=1),
+    "spline_fit_raw_outputs": spline(S_FIT, five, five_s, gwalk(1, 2) + bytes([0xF4]) + struct.pack("<d", math.nan)
+                                     + bytes([100, 0xF4]) + struct.pack("<d", 1.5e308) + bytes([30, 0xF4])
+                                     + struct.pack("<d", -1.5e308) + bytes([101])),
+    "spline_fit_flat_record": spline(S_FIT, five, five_s, bytes([0, 0xF6, 0, 0xF6])),
+    "spline_24bit_offset": spline(S_COMP | S_FIT | S_F32, five, five_s, gwalk(3, 3), v0_byte=-128),
+    "spline_larger_secant_dips": spline(S_COMP, [0.25, 4.0, 0.25], [16, 48 | LARGER, 48 | LARGER, 16], gwalk(2, 2)),
+    "spline_touching_zero": spline(S_COMP | S_FIT, [1.0], [48, 48], gwalk(3, 3), span=1.0),
+    "spline_fit_space_five": sspace(S_FIT | S_COMP, [1.0, 0.5, 0, 2.0, 0.25, 1.5, 0.75],
+                                    gwalk(4, 3) + bytes([0xF1]) + gwalk(2, 2)),
+    "spline_fit_space_twenty": sspace(S_FIT | S_F32, [(i * 5 % 9) / 4.0 for i in range(22)], gwalk(6, 3), cap=39,
+                                      fit=47, lo=-2.0, span=10.0),
+    "spline_fit_space_offset": sspace(S_FIT, [0.5, 1.0, 0.25, 0, 3.0], gwalk(3, 3), v0_byte=-128),
+}
+for p_ in range(15):
+    spline_seeds["spline_probe_%d" % p_] = spline(S_PROBE, five, five_s, gwalk(1, 2), probe=p_)
+spline_seeds["spline_probe_11_nospace"] = spline(S_PROBE, five, five_s, gwalk(1, 2), probe=26)
+spline_seeds["spline_probe_12_nospace"] = spline(S_PROBE, five, five_s, gwalk(1, 2), probe=27)
+spline_seeds.update({
+    "spline_bad_intervals0": spline(0, [], [0], b""),
+    "spline_bad_intervals33": bytes([0, 33, 30, 40, 33, 0]),
+    "spline_bad_constant": spline(S_FIT, [0, 0], [0, 0, 0], gwalk(1, 2)),
+    "spline_bad_capacity": spline(0, [1.0, 2.0], [16, 16, 16], gwalk(1, 2), cap=1),
+    "spline_raw_valid": sraw(S_COMP | S_FIT | S_F32, -2.0, 3.0, [0.25, 1.0, 1.5, 4.0], [0.5, 0.25, 1.0, 2.0],
+                             gwalk(2, 3)),
+    "spline_raw_offset_domain": sraw(S_COMP | S_FIT, 1e6, 1e6 + 0.5, [-3.0, -2.0, 5.0], [1.0, 4.0, 0.0], gwalk(3, 3)),
+    "spline_raw_nan_lo": sraw(S_FIT, math.nan, 3.0, [0.0, 1.0], [1.0, 1.0], gwalk(1, 2)),
+    "spline_raw_tiny_span": sraw(S_FIT | S_F32, 1.0, 1.0 + 2 ** -52, [0.0, 1.0], [0.0, 0.0], gwalk(1, 2)),
+    # finds, fixed: values beyond float, their rises within it: the float variant wrote its table,
+    # then refused the ends' outputs (HYST_ERR_COEFF); the ends are checked first now
+    "regress_spline_f32_refusal_wrote_table": sraw(S_F32 | S_COMP, 0.0, 1.0, [1e39, 1e39 + 1e31], [0.0, 0.0],
+                                                   gwalk(2, 2)),
+    # slopes whose piece's numbers overflow: HYST_ERR_COEFF before the piece's shape (it dips:
+    # HYST_ERR_NOT_INCREASING) and before NOSPACE; the shape is checked scaled now
+    "regress_spline_overflow_dips": sraw(0, 0.0, 10.0, [0.0, 1.0], [1e308, 1e308], gwalk(1, 2)),
+    # the same shape scaled near the type's largest: a rise of 0.75 2^1024 overflows 3 rise, and
+    # that piece answered HYST_ERR_COEFF before NOSPACE (a table one number short)
+    "regress_spline_overflow_before_nospace": spline(S_PROBE, [0.25, 12.0, 0.25], [16, 16, 16, 16], gwalk(1, 2),
+                                                     probe=26),
+    # an increasing piece whose c2^2 overflows (values near 2e200): refused as not increasing
+    "regress_spline_vertex_square_overflow": sraw(S_COMP | S_FIT, 0.0, 1.0, [0.0, 2e200 - 1e190],
+                                                  [1e200, 4e200 - 2e190], gwalk(2, 2)),
+})
 for d, group in ((out, seeds), (os.path.join(here, "corpus_models"), models),
                  (os.path.join(here, "corpus_code"), code_seeds),
                  (os.path.join(here, "corpus_model_file"), model_files),
                  (os.path.join(here, "corpus_everett"), everett_seeds),
                  (os.path.join(here, "corpus_q31"), q31_seeds),
-                 (os.path.join(here, "corpus_grid"), grid_seeds)):
+                 (os.path.join(here, "corpus_grid"), grid_seeds),
+                 (os.path.join(here, "corpus_spline"), spline_seeds)):
     os.makedirs(d, exist_ok=True)
     for name, data in group.items():
         assert len(data) < (8192 if group is model_files else 300), name

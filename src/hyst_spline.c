@@ -40,13 +40,37 @@ hyst_wide_t hyst_spline_eval(const hyst_spline_t *f0, hyst_wide_t x)
 /* Whether piece c (as piece() gives it) does not decrease on [0, 1]: its
  * slope c1 + 2 c2 t + 3 c3 t^2 at both ends (the knots' slopes, checked
  * >= 0 exactly by the caller) and, where the parabola opens upwards with
- * its vertex inside, at the vertex, within `tol`. */
-static int piece_increasing(const hyst_wide_t *c, hyst_wide_t tol)
+ * its vertex inside, at the vertex, within 64 roundings of the piece's
+ * scale |rise| + both end slopes. Written so that nothing overflows: the
+ * allowance term by term, and c2^2 / (3 c3) as -c2 t*. */
+static int piece_increasing(const hyst_wide_t *c, hyst_wide_t rise, hyst_wide_t m1)
 {
+    const hyst_wide_t u = 64 * HYST_WIDE_EPS;
     if (c[3] > 0 && -c[2] > 0 && -c[2] < 3 * c[3]) { /* vertex t* = -c2 / (3 c3) in (0, 1) */
-        return c[1] - c[2] * c[2] / (3 * c[3]) >= -tol;
+        return c[1] + c[2] * (-c[2] / c[3] / 3) >= -(hyst_wide_abs(rise) * u + c[1] * u + m1 * u);
     }
     return 1;
+}
+
+/* Piece k's shape (piece_increasing()) from its knots' numbers scaled by
+ * 2^-8, for a piece whose own numbers overflow the type: scaling by a power
+ * of two changes no decision. If they overflow still, a slope is more than
+ * 41 times the rise (the rise is at most 2^-7 of the type's largest then):
+ * outside the region of increasing pieces (both slopes at most 4 times the
+ * rise). */
+static int piece_scaled_increasing(const hyst_spline_t *f0, unsigned k, hyst_wide_t h)
+{
+    const hyst_wide_t s = 1 / (hyst_wide_t)256, hs = h * s;
+    const hyst_wide_t rise = f0->value[k + 1u] * s - f0->value[k] * s;
+    const hyst_wide_t m0 = hs * f0->slope[k], m1 = hs * f0->slope[k + 1u];
+    hyst_wide_t c[4];
+    c[1] = m0;
+    c[2] = 3 * rise - 2 * m0 - m1;
+    c[3] = m0 + m1 - 2 * rise;
+    if (!hyst_wide_is_finite(c[1]) || !hyst_wide_is_finite(c[2]) || !hyst_wide_is_finite(c[3])) {
+        return 0;
+    }
+    return piece_increasing(c, rise, m1);
 }
 
 static hyst_status_t spline_check(const hyst_spline_t *f0, unsigned variant)
@@ -77,14 +101,17 @@ static hyst_status_t spline_check(const hyst_spline_t *f0, unsigned variant)
         }
     }
     for (k = 0u; k < n; ++k) {
-        hyst_wide_t scale;
+        int up;
         piece(f0, k, h, c);
-        if (!hyst_wide_is_finite(c[1]) || !hyst_wide_is_finite(c[2]) || !hyst_wide_is_finite(c[3])) {
-            return HYST_ERR_COEFF;
+        /* 64 roundings of the piece's scale, as the polynomial kind's proof;
+         * a piece whose numbers the table cannot hold is refused after
+         * NOSPACE (curve.h's order), its shape checked here all the same */
+        if (hyst_wide_is_finite(c[1]) && hyst_wide_is_finite(c[2]) && hyst_wide_is_finite(c[3])) {
+            up = piece_increasing(c, f0->value[k + 1u] - f0->value[k], h * f0->slope[k + 1u]);
+        } else {
+            up = piece_scaled_increasing(f0, k, h);
         }
-        /* 64 roundings of the piece's scale, as the polynomial kind's proof */
-        scale = hyst_wide_abs(f0->value[k + 1u] - f0->value[k]) + c[1] + h * f0->slope[k + 1u];
-        if (!piece_increasing(c, scale * 64 * HYST_WIDE_EPS)) {
+        if (!up) {
             return HYST_ERR_NOT_INCREASING;
         }
     }
@@ -137,6 +164,11 @@ static hyst_status_t curve_spline(hyst_curve_t *curve, const hyst_spline_t *f0, 
                 }
             }
         }
+        if (pass == 0u) { /* the ends' outputs too, before the table is written */
+            hyst_num_t v;
+            finite &= hyst_num_set(&v, variant, f0->value[0]);
+            finite &= hyst_num_set(&v, variant, f0->value[n]);
+        }
         if (!finite) {
             return HYST_ERR_COEFF;
         }
@@ -147,15 +179,12 @@ static hyst_status_t curve_spline(hyst_curve_t *curve, const hyst_spline_t *f0, 
     out.layout = HYST_LAYOUT;
     (void)hyst_num_set(&out.lo, variant, f0->lo);
     (void)hyst_num_set(&out.hi, variant, f0->hi);
-    finite &= hyst_num_set(&out.y_lo, variant, f0->value[0]);
-    finite &= hyst_num_set(&out.y_hi, variant, f0->value[n]);
+    (void)hyst_num_set(&out.y_lo, variant, f0->value[0]);
+    (void)hyst_num_set(&out.y_hi, variant, f0->value[n]);
     (void)hyst_num_set(&out.unit, variant, (hyst_wide_t)n / (f0->hi - f0->lo));
     (void)hyst_num_set(&out.u.spline.span, variant, f0->hi - f0->lo);
     out.u.spline.table.f32 = table.f32;
     out.u.spline.intervals = n;
-    if (!finite) {
-        return HYST_ERR_COEFF;
-    }
     *curve = out;
     return HYST_OK;
 }

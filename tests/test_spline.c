@@ -184,6 +184,34 @@ static void test_refusals_write_nothing(void)
 #endif
 }
 
+/* Numbers near the type's largest: the refusals keep curve.h's order (a
+ * piece's shape, then NOSPACE, then a table number that overflows), an
+ * increasing piece whose c2^2 overflows is accepted, and the float variant
+ * refusing ends beyond float writes no table. */
+static void test_extreme_numbers_keep_the_order_and_write_nothing(void)
+{
+    static const hyst_spline_t dips = {1, 0.0, 10.0, {0.0, 1.0}, {1e308, 1e308}};
+    static const hyst_spline_t line = {1, 0.0, 1.0, {0.0, 1.5e308}, {1.5e308, 1.5e308}};
+    static const hyst_spline_t beyond_float = {1, 0.0, 1.0, {1e39, 1e39 + 1e31}, {0.0, 0.0}};
+    static float t32[HYST_SPLINE_TABLE_LEN(1u)];
+    hyst_curve_t c;
+    refused(HYST_ERR_NOT_INCREASING, &dips, HYST_SPLINE_TABLE_LEN(1u) - 1u);
+    refused(HYST_ERR_NOSPACE, &line, HYST_SPLINE_TABLE_LEN(1u) - 1u);
+    refused(HYST_ERR_COEFF, &line, TABLE);
+#if HYST_ENABLE_F64
+    {
+        static const hyst_spline_t vertex = {1, 0.0, 1.0, {0.0, 2e200 - 1e190}, {1e200, 4e200 - 2e190}};
+        static double t64[HYST_SPLINE_TABLE_LEN(1u)];
+        TEST_ASSERT_EQUAL_INT(HYST_OK,
+                              hyst_f64_curve_from_spline(&c, &vertex, t64, HYST_SPLINE_TABLE_LEN(1u)));
+    }
+#endif
+    t32[0] = 123.0f;
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF,
+                          hyst_f32_curve_from_spline(&c, &beyond_float, t32, HYST_SPLINE_TABLE_LEN(1u)));
+    TEST_ASSERT_TRUE(t32[0] == 123.0f);
+}
+
 /* The boundary of the check: a piece whose slope touches 0 inside (the
  * middle Bernstein coefficient of its slope 0 and the ends' equal) passes. */
 static void test_a_slope_touching_zero_inside_a_piece_is_accepted(void)
@@ -287,6 +315,7 @@ int main(void)
     RUN_TEST(test_random_splines_agree_with_the_reference);
     RUN_TEST(test_a_cubic_as_a_spline_runs_as_the_polynomial);
     RUN_TEST(test_refusals_write_nothing);
+    RUN_TEST(test_extreme_numbers_keep_the_order_and_write_nothing);
     RUN_TEST(test_a_slope_touching_zero_inside_a_piece_is_accepted);
     RUN_TEST(test_the_compensator_undoes_the_model);
     RUN_TEST(test_the_compensator_refuses_what_has_no_inverse);
