@@ -8,10 +8,13 @@
 #include "hyst_util.h"
 
 /* Piece k's cubic in t in [0, 1] from the knots' values and slopes, h the
- * knot spacing: c[0] + t (c[1] + t (c[2] + t c[3])) - value[k]. */
-static void piece(const hyst_spline_t *f0, unsigned k, hyst_wide_t h, hyst_wide_t *c)
+ * knot spacing: c[0] + t (c[1] + t (c[2] + t c[3])) - value[k], every
+ * number times `scale` (a power of two; 1 but where they would overflow,
+ * and then h already scaled by it). */
+static void piece(const hyst_spline_t *f0, unsigned k, hyst_wide_t h, hyst_wide_t scale,
+                  hyst_wide_t *c)
 {
-    const hyst_wide_t rise = f0->value[k + 1u] - f0->value[k];
+    const hyst_wide_t rise = f0->value[k + 1u] * scale - f0->value[k] * scale;
     const hyst_wide_t m0 = h * f0->slope[k], m1 = h * f0->slope[k + 1u];
     c[0] = 0;
     c[1] = m0;
@@ -33,7 +36,7 @@ hyst_wide_t hyst_spline_eval(const hyst_spline_t *f0, hyst_wide_t x)
         return f0->value[f0->intervals];
     }
     t = s - (hyst_wide_t)k;
-    piece(f0, k, (f0->hi - f0->lo) / (hyst_wide_t)f0->intervals, c);
+    piece(f0, k, (f0->hi - f0->lo) / (hyst_wide_t)f0->intervals, 1, c);
     return f0->value[k] + t * (c[1] + t * (c[2] + t * c[3]));
 }
 
@@ -61,16 +64,12 @@ static int piece_increasing(const hyst_wide_t *c, hyst_wide_t rise, hyst_wide_t 
 static int piece_scaled_increasing(const hyst_spline_t *f0, unsigned k, hyst_wide_t h)
 {
     const hyst_wide_t s = 1 / (hyst_wide_t)256, hs = h * s;
-    const hyst_wide_t rise = f0->value[k + 1u] * s - f0->value[k] * s;
-    const hyst_wide_t m0 = hs * f0->slope[k], m1 = hs * f0->slope[k + 1u];
     hyst_wide_t c[4];
-    c[1] = m0;
-    c[2] = 3 * rise - 2 * m0 - m1;
-    c[3] = m0 + m1 - 2 * rise;
+    piece(f0, k, hs, s, c);
     if (!hyst_wide_is_finite(c[1]) || !hyst_wide_is_finite(c[2]) || !hyst_wide_is_finite(c[3])) {
         return 0;
     }
-    return piece_increasing(c, rise, m1);
+    return piece_increasing(c, f0->value[k + 1u] * s - f0->value[k] * s, hs * f0->slope[k + 1u]);
 }
 
 static hyst_status_t spline_check(const hyst_spline_t *f0, unsigned variant)
@@ -102,7 +101,7 @@ static hyst_status_t spline_check(const hyst_spline_t *f0, unsigned variant)
     }
     for (k = 0u; k < n; ++k) {
         int up;
-        piece(f0, k, h, c);
+        piece(f0, k, h, 1, c);
         /* 64 roundings of the piece's scale, as the polynomial kind's proof;
          * a piece whose numbers the table cannot hold is refused after
          * NOSPACE (curve.h's order), its shape checked here all the same */
@@ -151,7 +150,7 @@ static hyst_status_t curve_spline(hyst_curve_t *curve, const hyst_spline_t *f0, 
             hyst_num_t v;
             unsigned j;
             if (k < n) {
-                piece(f0, k, h, c);
+                piece(f0, k, h, 1, c);
             } else {
                 c[1] = c[2] = c[3] = 0;
             }

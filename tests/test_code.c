@@ -150,22 +150,16 @@ static void test_paper_signal_agrees_with_float_engine(void)
     TEST_ASSERT_EQUAL_UINT(0u, (unsigned)hyst_tp_count(&C));
 }
 
-/* Any curve kind: the code span is folded into the curve's argument scale.
- * A piecewise-linear f0 (as a PI loading curve) on codes = the float engine
- * on the volts those codes stand for. */
-static void test_piecewise_linear_curve_on_codes(void)
+/* Any curve kind: the code span is folded into the curve's argument scale,
+ * so an instance of `curve` on 16-bit codes runs as the float engine on the
+ * volts those codes stand for, loops stored and closed. */
+static void agree_on_codes(const hyst_curve_t *curve)
 {
-    static const hyst_real_t px[5] = {HYST_REAL_C(0.0), HYST_REAL_C(10.0), HYST_REAL_C(20.0),
-                                      HYST_REAL_C(30.0), HYST_REAL_C(40.0)};
-    static const hyst_real_t py[5] = {HYST_REAL_C(0.0), HYST_REAL_C(1.0), HYST_REAL_C(2.5),
-                                      HYST_REAL_C(4.5), HYST_REAL_C(7.0)};
-    hyst_curve_t pwl;
     long i, c = 30000, centre = 0;
     size_t peak = 0;
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&pwl, px, py, 5u));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init_curve(&C, &pwl, 0u, 65535u, cx[0], cy[0], cx[1],
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init_curve(&C, curve, 0u, 65535u, cx[0], cy[0], cx[1],
                                                         cy[1], CAP12));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&F, &pwl, fx[0], fy[0], fx[1], fy[1], CAP12));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&F, curve, fx[0], fy[0], fx[1], fy[1], CAP12));
     for (i = 0; i < 20000; ++i) {
         hyst_real_t yc, yf;
         c = next_code(i % 3 == 0 ? NESTED : WALK, c, 0, 65535, &centre, i);
@@ -178,31 +172,28 @@ static void test_piecewise_linear_curve_on_codes(void)
     TEST_ASSERT_TRUE(peak > 4u); /* loops were stored and closed */
 }
 
-/* A spline f0 (its pieces a table, as a tabulated inverse's) on codes = the
- * float engine on the volts those codes stand for. */
+/* A piecewise-linear f0 (as a PI loading curve) on codes. */
+static void test_piecewise_linear_curve_on_codes(void)
+{
+    static const hyst_real_t px[5] = {HYST_REAL_C(0.0), HYST_REAL_C(10.0), HYST_REAL_C(20.0),
+                                      HYST_REAL_C(30.0), HYST_REAL_C(40.0)};
+    static const hyst_real_t py[5] = {HYST_REAL_C(0.0), HYST_REAL_C(1.0), HYST_REAL_C(2.5),
+                                      HYST_REAL_C(4.5), HYST_REAL_C(7.0)};
+    hyst_curve_t pwl;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_pwl(&pwl, px, py, 5u));
+    agree_on_codes(&pwl);
+}
+
+/* A spline f0 (its pieces a table, as a tabulated inverse's) on codes. */
 static void test_spline_curve_on_codes(void)
 {
     static const hyst_spline_t f0 = {
         4, 0.0, 40.0, {0.0, 0.5, 2.5, 6.0, 7.0}, {0.04, 0.1, 0.3, 0.1, 0.05}};
     static float table[HYST_SPLINE_TABLE_LEN(4u)];
     hyst_curve_t curve;
-    long i, c = 30000, centre = 0;
-    size_t peak = 0;
     TEST_ASSERT_EQUAL_INT(HYST_OK,
                           hyst_curve_from_spline(&curve, &f0, table, HYST_SPLINE_TABLE_LEN(4u)));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_code_init_curve(&C, &curve, 0u, 65535u, cx[0], cy[0], cx[1],
-                                                        cy[1], CAP12));
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init_curve(&F, &curve, fx[0], fy[0], fx[1], fy[1], CAP12));
-    for (i = 0; i < 20000; ++i) {
-        hyst_real_t yc, yf;
-        c = next_code(i % 3 == 0 ? NESTED : WALK, c, 0, 65535, &centre, i);
-        yc = hyst_code_step(&C, (uint_least32_t)c);
-        yf = hyst_step(&F, (hyst_real_t)volts((unsigned long)c, 0ul, 65535ul));
-        TEST_ASSERT_EQUAL_UINT((unsigned)hyst_tp_count(&F), (unsigned)hyst_tp_count(&C));
-        TEST_ASSERT_DOUBLE_WITHIN(TOL_OF_RANGE * 7.0, (double)yf, (double)yc);
-        peak = hyst_tp_count(&C) > peak ? hyst_tp_count(&C) : peak;
-    }
-    TEST_ASSERT_TRUE(peak > 4u); /* loops were stored and closed */
+    agree_on_codes(&curve);
 }
 
 /* 12-bit codes, the paper's sizing: 4095, 1, 4094, 2, ... fills both arrays
