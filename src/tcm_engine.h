@@ -889,7 +889,7 @@ static TCM_NOINLINE void TCM_NAME(merge)(hyst_tcm_t *S, TCM_X x_prev, size_t *nr
 {
     const size_t l1 = S->capacity - 1u, r1 = *nr - 1u;
     TCM_NAME(merge_t) m;
-    TCM_Y resid, miss, yv;
+    TCM_Y resid, miss, yv, height;
     TCM_X v;
     m.xp = x_prev;
     m.yp = YV(S->y_prev);
@@ -902,12 +902,14 @@ static TCM_NOINLINE void TCM_NAME(merge)(hyst_tcm_t *S, TCM_X x_prev, size_t *nr
     YV(S->yltp)[l1] = yv;
     *nr = r1;
     TCM_ADD_BOUND(YV(S->forgot), NUM_NAME(abs)(miss) + resid);
-    if ((S->detour & TCM_PER_BRANCH) != 0u) {
-        /* asymmetric kind: branches from V and from the lost L1 differ in
-         * shape, not only in place, so the miss does not bound what
-         * follows; the full model and this one (clamped while a merge is
-         * alive, slow_only()) both stay in the major loop's range */
-        YV(S->forgot) = YV(S->y_hi) - YV(S->y_lo);
+    /* The full model and this one (clamped while a merge is alive,
+     * slow_only()) both stay in the major loop's range: its height bounds
+     * the error however many merges add up, and is the only bound of the
+     * asymmetric kind, whose branches from V and from the lost L1 differ in
+     * shape, not only in place. */
+    height = YV(S->y_hi) - YV(S->y_lo);
+    if ((S->detour & TCM_PER_BRANCH) != 0u || YV(S->forgot) > height) {
+        YV(S->forgot) = height;
     }
     if (2u * r1 - 1u < S->forgot_level) { /* stack position of R2 */
         S->forgot_level = 2u * r1 - 1u;

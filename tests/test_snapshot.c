@@ -348,6 +348,31 @@ static void test_live_merges_continue_bit_identically(void)
     }
 }
 
+/* Every state an instance reaches restores, however many merges its bound
+ * adds up: the bound is capped at the output range, which both the full
+ * model and the merged one stay in. */
+static void test_any_state_after_many_merges_restores(void)
+{
+    const double height = hyst_poly_eval(&paper_eq20, 40.0) - hyst_poly_eval(&paper_eq20, 0.0);
+    rng_t r;
+    int i, restored = 0;
+    init_inst(&A, &paper_eq20, 2u);
+    rng_seed(&r, 11u);
+    for (i = 1; i <= 6000; ++i) {
+        (void)hyst_step(&A.S, (hyst_real_t)rng_range(&r, 0.0, 40.0));
+        TEST_ASSERT_TRUE(hyst_error_bound(&A.S) <= height * (1.0 + 1e-6));
+        if (i % 50 == 0) {
+            TEST_ASSERT_EQUAL_INT(HYST_OK,
+                                  hyst_snapshot_save(&A.S, snap, sizeof(snap), &snap_len));
+            init_inst(&B, &paper_eq20, 2u);
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_snapshot_restore(&B.S, snap, snap_len));
+            TEST_ASSERT_TRUE(hyst_error_bound(&A.S) == hyst_error_bound(&B.S));
+            ++restored;
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(120, restored);
+}
+
 /* A deadband's open window (a skipped reversal, its reach saved) continues
  * in an instance that never set a deadband: the restore binds the skip. */
 static void test_deadband_window_continues_without_a_deadband_set(void)
@@ -806,6 +831,7 @@ int main(void)
     RUN_TEST(test_every_truncation_is_refused);
     RUN_TEST(test_other_version_or_real_width_is_refused);
     RUN_TEST(test_live_merges_continue_bit_identically);
+    RUN_TEST(test_any_state_after_many_merges_restores);
     RUN_TEST(test_deadband_window_continues_without_a_deadband_set);
     RUN_TEST(test_other_curve_is_refused);
     RUN_TEST(test_capacity_must_hold_the_saved_points);
