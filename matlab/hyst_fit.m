@@ -60,7 +60,7 @@ function f = hyst_fit(x, y, varargin)
 %   the knots lo + k (hi - lo) / intervals; HYST_SIM takes it), degree (the
 %   intervals fitted), intervals (the model's), rms, max_abs, used,
 %   increasing (the library accepts f0; else a warning
-%   hyst:not_increasing). Not among the kinds compared without 'kind', as
+%   hyst:not_increasing). Compared with the other kinds without 'kind', as
 %   'hyst fit' without --kind.
 %
 %   Options (name/value): 'kind' 'poly' (default with a degree),
@@ -128,7 +128,7 @@ function f = hyst_fit(x, y, varargin)
                                        'method', 'joint', 'domain', [], 'tdegree', [], ...
                                        'creep', 'auto', 'rate', 'none', 'validate', []), ...
                       'hyst_fit');
-  kinds = 7;  % the choice compares the three kinds unless 'kind' names one
+  kinds = 15;  % the choice compares the four kinds unless 'kind' names one
   if isempty(opts.kind)
     opts.kind = 'poly';
   elseif ischar(opts.kind)

@@ -529,8 +529,8 @@ CREEP_PARAMS = _hyst.FIT_CREEP_PARAMETERS
 
 #: The kinds fit() knows.
 KINDS = ("poly", "everett", "everett_grid", "spline")
-#: Those it compares with kind=None (as ``hyst fit`` without --kind: not the spline).
-AUTO_KINDS = ("poly", "everett", "everett_grid")
+#: Those it compares with kind=None (as ``hyst fit`` without --kind: every one).
+AUTO_KINDS = ("poly", "everett", "everett_grid", "spline")
 # The kinds without t_degree, their degree a polynomial's or their knot intervals.
 _NO_T_DEGREE = ("poly", "everett_grid", "spline")
 
@@ -699,8 +699,8 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     hold-out exactly as ``hyst fit`` without --degree does; with a degree
     given, ``delay=None`` chooses the delay of that model as ``hyst fit
     --degree D`` without --delay does. The kind too when ``kind`` is None
-    (AUTO_KINDS compared, as ``hyst fit`` without --kind: poly, everett and
-    everett_grid, not the spline; everett of each degree with each t_degree
+    (AUTO_KINDS compared, as ``hyst fit`` without --kind: poly, everett,
+    everett_grid and spline; everett of each degree with each t_degree
     0..degree-1, or only the one given; the parameter count is degree + 1
     for poly, E's terms fitted + 1 for everett, K + 3 for a spline of K
     intervals): every candidate is in the result's ``candidates`` (dicts:

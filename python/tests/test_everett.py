@@ -210,10 +210,13 @@ def test_auto_choice_prefers_the_asymmetric_kind_on_an_asymmetric_plant():
     assert (f.kind, f.degree, f.delay) == ("everett", 3, 2)
     # everett: each degree d with each t-degree 0..d - 1
     shapes = hyst.EVERETT_MAX_DEGREE * (hyst.EVERETT_MAX_DEGREE + 1) // 2
-    # and the grids of 4 and 6 intervals (fit_select.h's FIT_GRID_CANDIDATES), as hyst fit
+    # the grids of 4 and 6 intervals (fit_select.h's FIT_GRID_CANDIDATES) and the
+    # splines of 2..16 intervals (FIT_SPLINE_CANDIDATES), as hyst fit
     grids = [c for c in f.candidates if c["kind"] == "everett_grid"]
     assert sorted({c["degree"] for c in grids}) == [4, 6]
-    assert len(f.candidates) == (MAX_DELAY + 1) * (hyst.MAX_DEGREE + shapes + 2)
+    splines = [c for c in f.candidates if c["kind"] == "spline"]
+    assert sorted({c["degree"] for c in splines}) == list(range(2, 17))
+    assert len(f.candidates) == (MAX_DELAY + 1) * (hyst.MAX_DEGREE + shapes + 2 + 15)
     chosen = [c for c in f.candidates if c["chosen"]]
     assert len(chosen) == 1 and chosen[0]["params"] == 6 + 1 and chosen[0]["t_degree"] == 2
     assert f.t_degree == 2

@@ -180,7 +180,7 @@ def test_auto_choice_is_the_clis_with_the_grid_kind(c_build, tmp_path):
     assert f.kind == "everett_grid"
     assert f"# chosen by hold-out: degree {f.degree}, delay {f.delay} (kind everett_grid" in cli
     kinds = {c["kind"] for c in f.candidates}
-    assert kinds == {"poly", "everett", "everett_grid"}
+    assert kinds == {"poly", "everett", "everett_grid", "spline"}
     grid = [c for c in f.candidates if c["kind"] == "everett_grid"]
     assert all(c["t_degree"] is None for c in grid)
     f.save(tmp_path / "py.hyst")

@@ -344,14 +344,14 @@ def test_fit_chooses_as_the_cli(c_build, tmp_path):
     assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()
 
 
-def test_the_automatic_choice_leaves_the_spline_out_as_the_cli(c_build, tmp_path):
+def test_the_automatic_choice_compares_the_spline_as_the_cli(c_build, tmp_path):
     """fit() without a kind compares the kinds `hyst fit` without --kind
-    compares, the spline not among them, even on a spline plant's record:
-    the same choice, the same file."""
+    compares, the spline among them: on a spline plant's record it chooses
+    a spline; the same choice, the same file."""
     x, y, rec = record(tmp_path)
     f = hyst.fit(x, y, creep="none")
-    assert {c["kind"] for c in f.candidates} == {"poly", "everett", "everett_grid"}
-    assert f.kind != "spline"
+    assert {c["kind"] for c in f.candidates} == {"poly", "everett", "everett_grid", "spline"}
+    assert f.kind == "spline"
     run_cli(c_build, "fit", "--creep", "none", "--save", tmp_path / "cli.hyst", rec)
     f.save(tmp_path / "py.hyst")
     assert (tmp_path / "py.hyst").read_text() == (tmp_path / "cli.hyst").read_text()

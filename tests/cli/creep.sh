@@ -122,13 +122,14 @@ grep -q '^# chosen by hold-out: degree 4, delay 4 (kind everett, t-degree 1, cre
     fail "choice on the measured record: $(grep chosen meas.txt)"
 # the rule from the printed table: each candidate with p parameters (as in
 # everett.sh) and its creep option with p + 2 (weight and time constant); the fewest within 1 % of the
-# lowest, then the symmetric kind, then the lower error
+# lowest, then the polynomial f0, then the lower error
 awk '/^# candidate .*hold-out rms/ {
-         ev = $3 == "everett"; gr = $3 == "everett_grid"; d = ev || gr ? $5 : $4;
-         rms = ev ? $12 : gr ? $10 : $9; sub(/,$/, "", rms);
+         ev = $3 == "everett"; gr = $3 == "everett_grid"; sp = $3 == "spline";
+         d = ev || gr || sp ? $5 : $4; rms = ev ? $12 : gr || sp ? $10 : $9; sub(/,$/, "", rms);
          if (ev) { p = 1; for (i = 1; i <= d; i++) p += (d - i < $7 ? d - i : $7) + 1 }
-         else if (gr) p = 1 + d * (d + 1) / 2 + d - 1; else p = d + 1;
-         n++; P[n] = p; K[n] = ev || gr; R[n] = rms + 0; C[n] = / \(chosen\)$/;
+         else if (gr) p = 1 + d * (d + 1) / 2 + d - 1; else if (sp) p = d + 3; else p = d + 1;
+         if ((ev ? $9 : gr || sp ? $7 : $6) ~ /\./) p++;
+         n++; P[n] = p; K[n] = ev || gr || sp; R[n] = rms + 0; C[n] = / \(chosen\)$/;
          if (match($0, /with creep tau [0-9.e+]+: [0-9.e+-]+/)) {
              split(substr($0, RSTART, RLENGTH), f, " "); n++; P[n] = p + 2; K[n] = ev || gr; R[n] = f[5] + 0;
              C[n] = /\(chosen, with creep\)$/ }

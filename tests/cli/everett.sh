@@ -33,20 +33,22 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # everett: degree d = 1..4, t-degree 0..d - 1 (10), at each delay 0..8
 [ "$(grep -c '^# candidate everett degree [1-4] t-degree [0-3] delay' meas.txt)" -eq 90 ] || fail "everett candidates"
 [ "$(grep -c '(chosen)$' meas.txt)" -eq 1 ] || fail "one candidate chosen"
-grep -q '^# chosen by hold-out: degree 4, delay 4 (kind everett, t-degree 1, 8 parameters: .*kinds compared: poly, everett, everett_grid)$' meas.txt ||
+grep -q '^# chosen by hold-out: degree 4, delay 4 (kind everett, t-degree 1, 8 parameters: .*kinds compared: poly, everett, everett_grid, spline)$' meas.txt ||
     fail "choice on the measured record: $(grep chosen meas.txt)"
 grep -qx '# parameters 8' meas.txt || fail "parameter count: $(grep parameters meas.txt)"
 # the rule, recomputed from the printed table: params = degree + 1 (poly),
-# 1 + the sum over i = 1..d of min(d - i, k) + 1 (everett degree d, t-degree k)
+# 1 + the sum over i = 1..d of min(d - i, k) + 1 (everett degree d, t-degree k),
+# K + 3 (spline of K intervals), one more for a sub-sample delay
 awk '/^# candidate .*hold-out rms/ {
-         ev = $3 == "everett"; gr = $3 == "everett_grid"; d = ev || gr ? $5 : $4;
-         rms = ev ? $12 : gr ? $10 : $9; sub(/,$/, "", rms);
+         ev = $3 == "everett"; gr = $3 == "everett_grid"; sp = $3 == "spline";
+         d = ev || gr || sp ? $5 : $4; rms = ev ? $12 : gr || sp ? $10 : $9; sub(/,$/, "", rms);
          if (ev) { if ($6 != "t-degree" || $8 != "delay") { print "columns: " $0; exit 1 }
                    p = 1; for (i = 1; i <= d; i++) p += (d - i < $7 ? d - i : $7) + 1 }
-         else if (gr) { if ($4 != "intervals" || $6 != "delay") { print "columns: " $0; exit 1 }
-                        p = 1 + d * (d + 1) / 2 + d - 1 }
+         else if (gr || sp) { if ($4 != "intervals" || $6 != "delay") { print "columns: " $0; exit 1 }
+                              p = gr ? 1 + d * (d + 1) / 2 + d - 1 : d + 3 }
          else p = d + 1;
-         n++; P[n] = p; K[n] = ev || gr; R[n] = rms + 0; C[n] = /\(chosen\)$/;
+         if ((ev ? $9 : gr || sp ? $7 : $6) ~ /\./) p++;
+         n++; P[n] = p; K[n] = ev || gr || sp; R[n] = rms + 0; C[n] = /\(chosen\)$/;
          if (best == "" || rms + 0 < best) best = rms + 0 }
      END { for (i = 1; i <= n; i++) if (R[i] <= best * 1.01 && (w == "" || P[i] < P[w] ||
                (P[i] == P[w] && (K[i] < K[w] || (K[i] == K[w] && R[i] < R[w]))))) w = i;

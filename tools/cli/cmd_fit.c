@@ -112,7 +112,8 @@ static const char help_more[] =
     "                 --kind pi) on the same first two thirds, with the same skip\n"
     "                 and delay, and print both models' hold-out RMS on the last\n"
     "                 third as a '# compare' line\n"
-    "  --kind K       not given: tcm, everett and everett_grid compared as above;\n"
+    "  --kind K       not given: tcm, everett, everett_grid and spline compared as\n"
+    "                 above;\n"
     "                 tcm: f0 only; everett_grid: E on a grid (docs/theory.md);\n"
     "                 spline: f0 a monotone cubic spline on uniform knots, fitted\n"
     "                 along every branch (minor loops included; 2..16 intervals\n"
@@ -445,7 +446,7 @@ static const char *method_name(int m) { return m == HYST_IDENT_REFLECT ? "reflec
 static fit_candidate_t candidates[MAX_CANDIDATES];
 static size_t n_candidates, best_candidate;
 
-/* The kinds the automatic choice compares: both unless --kind names one. */
+/* The kinds the automatic choice compares: every one unless --kind names one. */
 static int candidate_kinds(const fit_opts_t *o)
 {
     return o->branches                   ? FIT_EVERETT
@@ -453,7 +454,7 @@ static int candidate_kinds(const fit_opts_t *o)
            : o->kind == FIT_KIND_EVERETT ? FIT_EVERETT
            : o->kind == FIT_KIND_GRID    ? FIT_GRID
            : o->kind == FIT_KIND_SPLINE  ? FIT_SPLINE
-                                         : FIT_POLY | FIT_EVERETT | FIT_GRID;
+                                         : FIT_POLY | FIT_EVERETT | FIT_GRID | FIT_SPLINE;
 }
 
 /* Why an E fit is singular: its terms are not determined by the turning
@@ -682,8 +683,7 @@ static const char *kinds_compared(const fit_opts_t *o)
     if (o->branches) {
         return "poly, f0 fitted along every branch (E of t-degree 0)";
     }
-    return candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID) ? "poly, everett, everett_grid"
-           : candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID | FIT_SPLINE)
+    return candidate_kinds(o) == (FIT_POLY | FIT_EVERETT | FIT_GRID | FIT_SPLINE)
                ? "poly, everett, everett_grid, spline"
                : fit_kind_name(candidate_kinds(o));
 }

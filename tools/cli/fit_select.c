@@ -769,7 +769,9 @@ double fit_option_last_third(const fit_candidate_t *c, int with_creep)
 
 unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
 {
-    return fit_parameters(c->kind, c->degree, c->t_degree) + (with_creep ? FIT_CREEP_PARAMETERS : 0u);
+    return fit_parameters(c->kind, c->degree, c->t_degree) +
+           (with_creep ? FIT_CREEP_PARAMETERS : 0u) +
+           (c->fraction > 0.0 ? FIT_FRACTION_PARAMETERS : 0u);
 }
 
 /* Adds candidate (kind, degree, t_degree, delay), scored, at cand[*count]
@@ -974,41 +976,77 @@ hyst_status_t fit_given_delay(const hyst_ident_config_t *base, int kind, unsigne
     return HYST_OK;
 }
 
+/* Do a and b differ only in their delay? */
+static int same_model(const fit_candidate_t *a, const fit_candidate_t *b)
+{
+    return a->kind == b->kind && a->degree == b->degree && a->t_degree == b->t_degree &&
+           a->widened == b->widened;
+}
+
+/* The lowest error of option wc of c's model among the whole delays'
+ * candidates cand[0..count), and in *at the index of that model at `delay`
+ * ((size_t)-1 if not scored there). */
+static double whole_delay_rms(const fit_candidate_t *cand, size_t count,
+                              const fit_candidate_t *c, int wc, size_t delay, size_t *at)
+{
+    double lowest = NAN;
+    size_t i;
+    *at = (size_t)-1;
+    for (i = 0u; i < count; ++i) {
+        if (same_model(&cand[i], c)) {
+            const double e = fit_option_rms(&cand[i], wc);
+            if (isfinite(e) && !(lowest <= e)) {
+                lowest = e;
+            }
+            if (cand[i].delay == delay) {
+                *at = i;
+            }
+        }
+    }
+    return lowest;
+}
+
 /* The sub-sample delay of fit_search(): every candidate scored again with
  * the drive a fraction of a sample later, at the chosen delay and one
- * below; among those of no more parameters that lower the hold-out error by
- * more than FIT_FRACTION_GAIN, fit_choose()'s rule picks one, which replaces
- * cand[out->best], and x is interpolated in place. 0, or 1 when out of
- * memory. */
+ * below, its fraction counted as FIT_FRACTION_PARAMETERS. An option there
+ * is compared with the whole delays' choice when it errs less than its own
+ * model at any whole delay by more than FIT_FRACTION_GAIN, and either has
+ * fewer parameters than that choice (a model that took a sub-sample
+ * misalignment in as loop shape gives way to the plant's own model at the
+ * plant's delay), or at most FIT_FRACTION_PARAMETERS more and errs less than
+ * the choice by more than FIT_FRACTION_GAIN too (the fraction is not a way to
+ * more terms); fit_choose()'s rule picks among them. A model chosen at a
+ * fraction replaces the same model at that whole delay in cand (or the
+ * whole delays' choice if that one was not scored), and x is interpolated
+ * in place. 0, or 1 when out of memory. */
 static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t_degree,
                            double creep_tau, double *x, const double *y, size_t n,
                            const fit_validation_t *v, fit_candidate_t *cand, fit_found_t *out)
 {
     const size_t per_fraction = 2u * FIT_CANDIDATES_PER_DELAY;
-    const size_t most = per_fraction * (FIT_FRACTIONS - 1u);
+    const size_t most = 1u + per_fraction * (FIT_FRACTIONS - 1u);
     const fit_candidate_t *b = &cand[out->best];
-    const double whole_rms = fit_option_rms(b, out->with_creep);
-    const double limit = whole_rms * (1.0 - FIT_FRACTION_GAIN);
     const unsigned params = fit_option_parameters(b, out->with_creep);
+    const double gain_limit = fit_option_rms(b, out->with_creep) * (1.0 - FIT_FRACTION_GAIN);
     double *xf = (double *)malloc((n + (v != NULL ? v->n : 0u) + 1u) * sizeof(double));
     fit_candidate_t *tried = (fit_candidate_t *)malloc(most * sizeof(fit_candidate_t));
-    double *fraction = (double *)malloc(most * 3u * sizeof(double)), *rms = fraction + most;
     hyst_ident_config_t base = *cfg;
     fit_validation_t vf;
-    size_t total = 0u, best = (size_t)-1, k;
+    size_t total = 1u, best = (size_t)-1, k, at;
     unsigned i;
     int wc;
-    out->integer_holdout = whole_rms;
+    out->integer_holdout = fit_option_rms(b, out->with_creep);
     out->integer_delay = b->delay;
     out->delay_fraction = 0.0;
-    if (xf == NULL || tried == NULL || fraction == NULL) {
+    if (xf == NULL || tried == NULL) {
         free(xf);
         free(tried);
-        free(fraction);
         return 1;
     }
+    tried[0] = *b; /* the whole delays' choice, its other option set aside */
+    *(out->with_creep ? &tried[0].holdout_rms : &tried[0].creep.holdout_rms) = NAN;
     base.delay = b->delay > 0u ? b->delay - 1u : 0u; /* D - 1 + f and D + f */
-    for (i = 1u; i < FIT_FRACTIONS && isfinite(whole_rms); ++i) {
+    for (i = 1u; i < FIT_FRACTIONS && isfinite(out->integer_holdout); ++i) {
         const double f = (double)i / (double)FIT_FRACTIONS;
         size_t n_tried;
         fit_delay_fraction(x, n, f, xf);
@@ -1016,42 +1054,39 @@ static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t
                              validation_fraction(v, f, xf + n, &vf), b->delay, tried + total,
                              per_fraction, &best, &wc);
         for (k = total; k < total + n_tried; ++k) {
-            fraction[k] = f;
+            tried[k].fraction = f;
+            for (wc = 0; wc <= 1; ++wc) {
+                const double whole = whole_delay_rms(cand, out->count, &tried[k], wc, 0u, &at);
+                const unsigned p = fit_option_parameters(&tried[k], wc);
+                const double e = fit_option_rms(&tried[k], wc);
+                if (!(e < whole * (1.0 - FIT_FRACTION_GAIN) &&
+                      (p < params || (p <= params + FIT_FRACTION_PARAMETERS && e < gain_limit)))) {
+                    *(wc ? &tried[k].creep.holdout_rms : &tried[k].holdout_rms) = NAN;
+                }
+            }
         }
         total += n_tried;
     }
-    /* the options compared: those more than FIT_FRACTION_GAIN better than
-     * the whole-delay choice, of no more parameters (the fraction is not a
-     * way to more terms); the rest set aside (their errors kept in rms) */
-    for (k = 0u; k < total; ++k) {
-        rms[2u * k] = tried[k].holdout_rms;
-        rms[2u * k + 1u] = tried[k].creep.holdout_rms;
-        for (wc = 0; wc <= 1; ++wc) {
-            if (!(fit_option_rms(&tried[k], wc) < limit &&
-                  fit_option_parameters(&tried[k], wc) <= params)) {
-                *(wc ? &tried[k].creep.holdout_rms : &tried[k].holdout_rms) = NAN;
-            }
-        }
-    }
-    /* among them, the rule of the whole delays: the fewest parameters within
-     * FIT_PARSIMONY of the lowest error, the symmetric kind between equals */
     fit_choose(tried, total, creep_tau, &best, &wc);
-    for (k = 0u; k < total; ++k) {
-        tried[k].holdout_rms = rms[2u * k];
-        tried[k].creep.holdout_rms = rms[2u * k + 1u];
-    }
-    if (best != (size_t)-1) { /* the choice at that fraction replaces the whole-delay one */
-        cand[out->best] = tried[best];
+    if (best != (size_t)-1 && best > 0u) { /* a model at a fraction */
+        const double f = tried[best].fraction;
+        (void)whole_delay_rms(cand, out->count, &tried[best], wc, tried[best].delay, &at);
+        if (at == (size_t)-1) {
+            at = out->best;
+        }
+        out->integer_delay = tried[best].delay;
+        out->integer_holdout = fit_option_rms(&cand[at], wc);
+        cand[at] = tried[best];
+        out->best = at;
         out->with_creep = wc;
-        out->delay_fraction = fraction[best];
-        fit_delay_fraction(x, n, fraction[best], x);
+        out->delay_fraction = f;
+        fit_delay_fraction(x, n, f, x);
         if (v != NULL) {
-            fit_delay_fraction(v->x, v->n, fraction[best], v->x);
+            fit_delay_fraction(v->x, v->n, f, v->x);
         }
     }
     free(xf);
     free(tried);
-    free(fraction);
     return 0;
 }
 

@@ -20,10 +20,16 @@
  * chosen delay and one below: 1/FIT_FRACTIONS steps. */
 #define FIT_FRACTIONS 4u
 
-/* A sub-sample delay is kept when it lowers the hold-out error by more than
- * this fraction: it adds many options to the comparison (each candidate at
- * each fraction), whose best is biased low by the hold-out's noise. */
+/* A model at a sub-sample delay enters the comparison when it lowers the
+ * hold-out error of the same model at its best whole delay by more than
+ * this fraction: the fractions add many options (each candidate at each),
+ * whose best is biased low by the hold-out's noise. It then counts one
+ * parameter more (the fraction is chosen on the data too): a model that
+ * takes a half-sample misalignment in as loop shape does not win over the
+ * plant's own model at the plant's delay by it. */
 #define FIT_FRACTION_GAIN 0.05
+/* Parameters a sub-sample delay adds: its fraction. */
+#define FIT_FRACTION_PARAMETERS 1u
 
 /* Hold-out splits every candidate is scored on: the last third predicted by
  * the model fitted on the first two thirds, then the middle third by the
@@ -191,6 +197,7 @@ typedef struct fit_candidate {
     unsigned degree;
     unsigned t_degree;        /* everett: the highest power of t fitted (< degree) */
     size_t delay;
+    double fraction;          /* a sub-sample delay's fraction of a sample (0: a whole delay) */
     int widened;              /* everett: its domain the inputs' range widened by FIT_WIDEN */
     hyst_status_t status;     /* of the training fit (everett: or of its curve) */
     hyst_ident_result_t fit;  /* poly: on the first two thirds */
@@ -449,8 +456,8 @@ typedef struct fit_found {
     size_t best;            /* the choice ((size_t)-1: none) */
     int with_creep;         /* chosen with its creep term */
     double delay_fraction;  /* the sub-sample delay's fraction (0: none) */
-    size_t integer_delay;   /* the choice's delay before the fraction */
-    double integer_holdout; /* and its hold-out error there */
+    size_t integer_delay;   /* the choice's whole delay (before its fraction) */
+    double integer_holdout; /* the chosen model's hold-out error there */
 } fit_found_t;
 
 /* Candidates fit_search() may score: every one of a delay, at the
@@ -462,10 +469,12 @@ typedef struct fit_found {
  * (0..fit_max_delay(); beyond FIT_MAX_DELAY, f0 of degree 3 at each, then
  * every candidate at FIT_DELAY_AROUND each side of its best), then at a
  * fraction of a sample (1/FIT_FRACTIONS steps, at the chosen delay and one
- * below; among the options more than FIT_FRACTION_GAIN better with no more
- * parameters, the one fit_choose()'s rule picks replaces the choice: x is then the drive interpolated, in
- * place, as the model file's delay makes sim interpolate it, and v's x
- * too). Every candidate scored on the hold-out splits, or (v not NULL) on
+ * below): each model there more than FIT_FRACTION_GAIN better than at its
+ * best whole delay joins the whole delays' candidates, with one parameter
+ * more, and fit_choose()'s rule picks among them all; a model at a fraction
+ * replaces the same model at its whole delay in cand (x then the drive
+ * interpolated, in place, as the model file's delay makes sim interpolate
+ * it, and v's x too). Every candidate scored on the hold-out splits, or (v not NULL) on
  * v (fit_score()). HYST_OK, or HYST_ERR_NOSPACE (out of memory). */
 hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_degree,
                          double creep_tau, int choose_delay, double *x, const double *y,
