@@ -455,6 +455,7 @@ def main():
                          ("bench_budget_everett_grid_inv", "everett_grid_inv"),
                          ("bench_budget_spline", "spline"),
                          ("bench_budget_spline_inv", "spline_inv"),
+                         ("bench_budget_spline_inv_table", "spline_inv_table"),
                          ("bench_budget_everett_inv", "everett_inv"),
                          ("bench_budget_everett_inv_table", "everett_inv_table")):
         run = qemu_count.measure(os.path.join(args.m4, "bench", name), qemu)

@@ -111,7 +111,8 @@ typedef hyst_real_t bench_y_t;
 #ifndef BENCH_EVERETT
 #define BENCH_EVERETT 0 /* 1: the asymmetric kind instead of the polynomial; 2: its compensator;
                          * 3: its tabulated compensator; 4: the asymmetric kind on a grid;
-                         * 5: its compensator; 6: a spline f0; 7: its compensator */
+                         * 5: its compensator; 6: a spline f0; 7: its compensator;
+                         * 8: its tabulated compensator */
 #endif
 #ifndef BENCH_EVERETT_DEGREE
 #define BENCH_EVERETT_DEGREE 3u /* the asymmetric kind's degree (BENCH_EVERETT 1): 3 or 4 */
@@ -475,18 +476,26 @@ static void bench_tcm(void)
         if (st == HYST_OK) {
             st = hyst_curve_everett_grid_inverse(&curve, &fwd);
         }
-#elif BENCH_EVERETT == 6 || BENCH_EVERETT == 7 /* a spline of 16 intervals; its compensator */
+#elif BENCH_EVERETT >= 6 && BENCH_EVERETT <= 8 /* a spline of 16 intervals; its compensators */
         static hyst_real_t spline_table[HYST_SPLINE_TABLE_LEN(16u)];
         hyst_spline_t f;
         (void)e;
 #if BENCH_EVERETT == 6
         bench_spline_codes(&f, (double)BENCH_OFFSET, 0.0, 1.0);
         st = hyst_curve_from_spline(&curve, &f, spline_table, HYST_SPLINE_TABLE_LEN(16u));
-#else /* the codes are desired outputs */
+#elif BENCH_EVERETT == 7 /* the codes are desired outputs */
         bench_spline_codes(&f, 0.0, (double)BENCH_OFFSET, (double)(BENCH_NU - 1u));
         st = hyst_curve_from_spline(&curve, &f, spline_table, HYST_SPLINE_TABLE_LEN(16u));
         if (st == HYST_OK) {
             st = hyst_curve_spline_inverse(&curve, &curve);
+        }
+#else /* tabulated in HYST_INV_TABLE intervals; the codes are desired outputs */
+        static hyst_real_t inv_table[HYST_INV_TABLE_LEN(HYST_INV_TABLE)];
+        hyst_curve_t fwd;
+        bench_spline_codes(&f, 0.0, (double)BENCH_OFFSET, (double)(BENCH_NU - 1u));
+        st = hyst_curve_from_spline(&fwd, &f, spline_table, HYST_SPLINE_TABLE_LEN(16u));
+        if (st == HYST_OK) {
+            st = hyst_curve_spline_inverse_table(&curve, &fwd, inv_table, HYST_INV_TABLE);
         }
 #endif
 #else

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* libFuzzer harness of the spline kind (curve.h, hyst_spline_t): its curve,
- * its compensator (hyst_curve_spline_inverse()) and its fit (ident.h,
+ * its compensators (hyst_curve_spline_inverse(), and tabulated:
+ * hyst_curve_spline_inverse_table()) and its fit (ident.h,
  * hyst_spline_fit_*), built with HYST_USE_DOUBLE and checked against the
  * plain double reference tests/support/ref_tcm.c (ref_init_spline(): f0 in
  * the Hermite basis); any failed CHECK aborts.
@@ -14,7 +15,8 @@
  *   [2]  capacity (byte % 40: 0 and 1 are refused)
  *   [3]  the fit's turning points (byte % 48: below 2 refused)
  *   [4]  the fit's intervals (byte % 34: 0 and 33 refused)
- *   [5]  probe: which refusal bit3 tries (probe())
+ *   [5]  probe: which refusal bit3 tries (probe()), and 1 + it % 8 the
+ *        tabulated compensator's intervals (bit1)
  *   then the spline: structured, lo (signed byte / 8), the span
  *   ((1 + byte % 64) / 4), value[0] (signed byte / 16; 0x80 is 2^23, a
  *   24-bit ADC's mid-scale), each piece's rise (byte < 40: 0, a flat piece,
@@ -56,7 +58,15 @@
  * again, it maps y_lo to lo, its round trip model(compensator(y)) over the
  * model's own outputs returns y within (d + 1) times (twice the evaluation
  * bound + 8 eps of the output scale), its drive on the domain and never
- * against the desired output, its block call equal to its steps; the float
+ * against the desired output, its block call equal to its steps; the
+ * tabulated compensator (hyst_curve_spline_inverse_table()) likewise:
+ * refused with it (and for 0 intervals, another kind, no table), nothing
+ * written, its error within HYST_INV_TABLE_TOL and the drive's rounding,
+ * its inverse the spline, y_lo to lo, its round trip within the solved
+ * one's bound plus (d + 1) times twice its error at f0's steepest slope
+ * (its error measured at probes: between them more), its drive on the
+ * domain and never against the desired output, its block call equal to
+ * its steps; the float
  * variant refuses no later a check than the double one, writes nothing
  * when it refuses, and agrees with the reference on float inputs within
  * the same bound in float's epsilon; the fit of any K on the record the
@@ -92,6 +102,7 @@ static double xl2[BIG_CAP], yl2[BIG_CAP], xr2[BIG_CAP], yr2[BIG_CAP];
 static double xl3[BIG_CAP], yl3[BIG_CAP], xr3[BIG_CAP], yr3[BIG_CAP];
 static float fxl[MAX_CAP], fyl[MAX_CAP], fxr[MAX_CAP], fyr[MAX_CAP];
 static double table[TABLE_MAX], table2[TABLE_MAX], keep_table[TABLE_MAX];
+static double inv_table[HYST_INV_TABLE_LEN(256u)];
 static float table32[TABLE_MAX], keep_table32[TABLE_MAX];
 static double xs[MAX_SAMPLES], ys[MAX_SAMPLES], ys2[MAX_SAMPLES], drive[MAX_SAMPLES];
 static double pend_x[MAX_SAMPLES], pend_y[MAX_SAMPLES], pend_out[MAX_SAMPLES];
@@ -106,7 +117,9 @@ static hyst_t S, T, U, keep_u;
  * (error / tolerance): FUZZ_SPLINE_STATS=1 prints these at exit. */
 static unsigned long n_accepted, n_refused, n_samples, n_merged, n_snaps, n_foreign, n_loops;
 static unsigned long n_comp, n_flat, n_trips, n_f32, n_fits, n_flat_fits, n_tipped;
+static unsigned long n_tables, n_table_exact, n_table_trips;
 static double worst_model, worst_merged, worst_f0, worst_trip, worst_f32, worst_rms, worst_own;
+static double worst_table_trip;
 
 static void print_stats(void)
 {
@@ -114,13 +127,14 @@ static void print_stats(void)
             "fuzz_spline: splines accepted %lu, refused %lu; samples against the reference %lu "
             "(worst %.3g of the tolerance; f0 %.3g), after merges with f0'' of one sign %lu "
             "(worst %.3g); snapshots %lu, refused by another spline %lu; loops closed %lu; "
-            "compensators %lu (flat pieces refused %lu), round trips %lu (worst %.3g); float "
+            "compensators %lu (flat pieces refused %lu), round trips %lu (worst %.3g); tabulated "
+            "%lu (intervals exact %lu), round trips %lu (worst %.3g); float "
             "samples %lu (worst %.3g); fits %lu (NOT_MONOTONE %lu, refused by the curve for the "
             "values' rounding %lu), RMS worst %.3g, a spline of the fit's space fitted back "
             "worst %.3g\n",
             n_accepted, n_refused, n_samples, worst_model, worst_f0, n_merged, worst_merged, n_snaps,
-            n_foreign, n_loops, n_comp, n_flat, n_trips, worst_trip, n_f32, worst_f32, n_fits,
-            n_flat_fits, n_tipped, worst_rms, worst_own);
+            n_foreign, n_loops, n_comp, n_flat, n_trips, worst_trip, n_tables, n_table_exact,
+            n_table_trips, worst_table_trip, n_f32, worst_f32, n_fits, n_flat_fits, n_tipped, worst_rms, worst_own);
 }
 
 /* Records error / tolerance in *worst. */
@@ -460,13 +474,95 @@ static int pushes(double x)
     return (x > ref.xp && !rising) || (x < ref.xp && rising);
 }
 
+/* Whether c is the spline curve of f, number for number (a compensator's
+ * inverse). */
+static int is_the_curve(const hyst_curve_t *c, const hyst_spline_t *f)
+{
+    return c->kind == (unsigned)HYST_CURVE_SPLINE && c->lo.f64 == curve.lo.f64 &&
+           c->hi.f64 == curve.hi.f64 && c->y_lo.f64 == curve.y_lo.f64 &&
+           c->y_hi.f64 == curve.y_hi.f64 && c->unit.f64 == curve.unit.f64 &&
+           c->u.spline.table.f64 == table && c->u.spline.intervals == f->intervals &&
+           c->u.spline.span.f64 == curve.u.spline.span.f64;
+}
+
+/* A compensator inv of the spline f over the desired outputs ys[0..n) (the
+ * model's own) into a model: its drive on the domain and never against the
+ * desired output, the model at it within (d + 1) tol of the desired output
+ * (d the stacked turning points; tol < 0: not checked), its block call its
+ * steps. */
+static void round_trip(const hyst_curve_t *inv, const hyst_spline_t *f, double tol, size_t n,
+                       double *worst, unsigned long *trips)
+{
+    const double lo = f->lo, hi = f->hi;
+    const double end = fmax(fabs(lo), fabs(hi)), ulp = nextafter(end, INFINITY) - end;
+    hyst_t C, M;
+    size_t k;
+    CHECK(hyst_init_curve(&C, inv, xl2, yl2, xr2, yr2, BIG_CAP) == HYST_OK);
+    CHECK(hyst_init_curve(&M, &curve, xl3, yl3, xr3, yr3, BIG_CAP) == HYST_OK);
+    for (k = 0u; k < n; ++k) {
+        const double x = hyst_step(&C, ys[k]);
+        const double y = hyst_step(&M, x);
+        const double d = (double)(hyst_tp_count(&C) > hyst_tp_count(&M) ? hyst_tp_count(&C)
+                                                                          : hyst_tp_count(&M));
+        drive[k] = x;
+        CHECK(hyst_status(&C) >= 0 && isfinite(x) && x >= lo - 8.0 * ulp && x <= hi + 8.0 * ulp);
+        if (k > 0u) { /* monotone: never against the desired output */
+            CHECK(ys[k] > ys[k - 1u] ? x >= drive[k - 1u] : ys[k] < ys[k - 1u] ? x <= drive[k - 1u] : 1);
+        }
+        if (tol >= 0) {
+            CHECK(fabs(y - ys[k]) <= (d + 1.0) * tol);
+            ratio(worst, fabs(y - ys[k]), (d + 1.0) * tol);
+            ++*trips;
+        }
+    }
+    CHECK(hyst_init_curve(&C, inv, xl2, yl2, xr2, yr2, BIG_CAP) == HYST_OK);
+    CHECK(hyst_process(&C, ys, ys2, n) >= 0);
+    CHECK(n == 0u || memcmp(drive, ys2, n * sizeof ys2[0]) == 0);
+}
+
+/* The tabulated compensator of an invertible spline over the desired
+ * outputs ys[0..n): see the header. */
+static void check_table_compensator(const hyst_spline_t *f, double e_g, double scale, int checked,
+                                    size_t n, size_t intervals)
+{
+    hyst_curve_t inv, back;
+    const double lo = f->lo, hi = f->hi, span = hi - lo, h = span / f->intervals;
+    const double end = fmax(fabs(lo), fabs(hi));
+    double steep = 0.0, err, c[5];
+    size_t k;
+    const hyst_status_t st = hyst_curve_spline_inverse_table(&inv, &curve, inv_table, intervals);
+    if (st == HYST_ERR_ILL_CONDITIONED) { /* intervals over the output range overflow */
+        CHECK(f->value[f->intervals] - f->value[0] < 0x1p-1000);
+        return;
+    }
+    CHECK(st == HYST_OK && inv.kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE);
+    ++n_tables;
+    n_table_exact += (unsigned long)inv.u.inv_table.exact;
+    /* the tolerance and the drive's last rounding, rounded up to a float */
+    err = hyst_curve_inverse_error(&inv);
+    CHECK(err >= 0 && (!checked || err <= (HYST_INV_TABLE_TOL + EPS * end / span) * (1.0 + 1e-6)));
+    /* its inverse is the spline again, number for number */
+    CHECK(hyst_curve_spline_inverse(&back, &inv) == HYST_OK);
+    CHECK(is_the_curve(&back, f));
+    CHECK(hyst_curve_eval(&inv, f->value[0]) == lo);
+    for (k = 0u; k < f->intervals; ++k) {
+        piece(f, (unsigned)k, h, c);
+        steep = fmax(steep, (fabs(c[1]) + 2.0 * fabs(c[2]) + 3.0 * fabs(c[3])) / h);
+    }
+    /* the solved compensator's round trip, and the table's error per
+     * stacked TP in the drive, at f0's steepest slope: twice the error
+     * measured at its probes, for between them */
+    round_trip(&inv, f, checked ? 2.0 * e_g + 8.0 * EPS * scale + steep * 2.0 * err * span : -1.0, n,
+               &worst_table_trip, &n_table_trips);
+}
+
 /* The compensator over the desired outputs ys[0..n) (the model's own): see
  * the header. */
-static void check_compensator(const hyst_spline_t *f, double e_g, double scale, int checked, size_t n)
+static void check_compensator(const hyst_spline_t *f, double e_g, double scale, int checked, size_t n,
+                              size_t intervals)
 {
     static const hyst_poly_t p = {3, 0.0, 1.0, {1.0, 0.0, 1.0, 0.0}};
     hyst_curve_t inv, other, back;
-    hyst_t C, M;
     const double lo = f->lo, hi = f->hi;
     const double end = fmax(fabs(lo), fabs(hi)), ulp = nextafter(end, INFINITY) - end;
     int flat = 0;
@@ -486,10 +582,17 @@ static void check_compensator(const hyst_spline_t *f, double e_g, double scale, 
     CHECK(hyst_curve_from_poly(&back, &p) == HYST_OK);
     CHECK(hyst_curve_spline_inverse(&inv, &back) == HYST_ERR_ARG); /* another kind */
     CHECK(memcmp(&inv, &other, sizeof inv) == 0);
+    inv_table[0] = 123.0;
+    CHECK(hyst_curve_spline_inverse_table(&inv, &curve, inv_table, 0u) == HYST_ERR_ARG);
+    CHECK(hyst_curve_spline_inverse_table(&inv, &back, inv_table, intervals) == HYST_ERR_ARG);
+    CHECK(hyst_curve_spline_inverse_table(&inv, &curve, NULL, intervals) == HYST_ERR_NULL);
+    CHECK(memcmp(&inv, &other, sizeof inv) == 0 && inv_table[0] == 123.0);
     if (flat) {
         CHECK(hyst_curve_spline_inverse(&inv, &curve) == HYST_ERR_NOT_INVERTIBLE);
+        CHECK(hyst_curve_spline_inverse_table(&inv, &curve, inv_table, intervals) ==
+              HYST_ERR_NOT_INVERTIBLE);
         ++n_flat;
-        CHECK(memcmp(&inv, &other, sizeof inv) == 0);
+        CHECK(memcmp(&inv, &other, sizeof inv) == 0 && inv_table[0] == 123.0);
         return;
     }
     CHECK(hyst_curve_spline_inverse(&inv, &curve) == HYST_OK);
@@ -498,11 +601,7 @@ static void check_compensator(const hyst_spline_t *f, double e_g, double scale, 
     CHECK(hyst_curve_inverse(&other, &inv) == HYST_ERR_ARG);
     /* its inverse is the spline again; in place too */
     CHECK(hyst_curve_spline_inverse(&back, &inv) == HYST_OK);
-    CHECK(back.kind == (unsigned)HYST_CURVE_SPLINE && back.lo.f64 == curve.lo.f64 &&
-          back.hi.f64 == curve.hi.f64 && back.y_lo.f64 == curve.y_lo.f64 &&
-          back.y_hi.f64 == curve.y_hi.f64 && back.unit.f64 == curve.unit.f64 &&
-          back.u.spline.table.f64 == table && back.u.spline.intervals == f->intervals &&
-          back.u.spline.span.f64 == curve.u.spline.span.f64);
+    CHECK(is_the_curve(&back, f));
     other = curve;
     CHECK(hyst_curve_spline_inverse(&other, &other) == HYST_OK && other.kind == inv.kind &&
           other.lo.f64 == inv.lo.f64 && other.hi.f64 == inv.hi.f64 && other.unit.f64 == inv.unit.f64);
@@ -517,31 +616,11 @@ static void check_compensator(const hyst_spline_t *f, double e_g, double scale, 
             CHECK(hyst_curve_eval(&inv, y) == lo + (double)k * ((hi - lo) / f->intervals));
         }
     }
-    CHECK(hyst_init_curve(&C, &inv, xl2, yl2, xr2, yr2, BIG_CAP) == HYST_OK);
-    CHECK(hyst_init_curve(&M, &curve, xl3, yl3, xr3, yr3, BIG_CAP) == HYST_OK);
-    for (k = 0u; k < n; ++k) {
-        const double x = hyst_step(&C, ys[k]);
-        const double y = hyst_step(&M, x);
-        const double d = (double)(hyst_tp_count(&C) > hyst_tp_count(&M) ? hyst_tp_count(&C)
-                                                                          : hyst_tp_count(&M));
-        drive[k] = x;
-        CHECK(hyst_status(&C) >= 0 && isfinite(x) && x >= lo - 8.0 * ulp && x <= hi + 8.0 * ulp);
-        if (k > 0u) { /* monotone: never against the desired output */
-            CHECK(ys[k] > ys[k - 1u] ? x >= drive[k - 1u] : ys[k] < ys[k - 1u] ? x <= drive[k - 1u] : 1);
-        }
-        /* G^-1 stops within its cubic's rounding of the output step (within
-         * e_g) or on neighbouring numbers, the drive adds its roundings
-         * (e_g's input terms), and the model evaluates once more (e_g) */
-        if (checked) {
-            const double tol = (d + 1.0) * (2.0 * e_g + 8.0 * EPS * scale);
-            CHECK(fabs(y - ys[k]) <= tol);
-            ratio(&worst_trip, fabs(y - ys[k]), tol);
-            ++n_trips;
-        }
-    }
-    CHECK(hyst_init_curve(&C, &inv, xl2, yl2, xr2, yr2, BIG_CAP) == HYST_OK);
-    CHECK(hyst_process(&C, ys, ys2, n) >= 0);
-    CHECK(n == 0u || memcmp(drive, ys2, n * sizeof ys2[0]) == 0);
+    /* G^-1 stops within its cubic's rounding of the output step (within
+     * e_g) or on neighbouring numbers, the drive adds its roundings (e_g's
+     * input terms), and the model evaluates once more (e_g) */
+    round_trip(&inv, f, checked ? 2.0 * e_g + 8.0 * EPS * scale : -1.0, n, &worst_trip, &n_trips);
+    check_table_compensator(f, e_g, scale, checked, n, intervals);
 }
 
 /* Whether the curve may refuse a fitted spline as not increasing: ident.h
@@ -996,7 +1075,7 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         }
     }
     if (flags & 2u) {
-        check_compensator(&f, e_g, scale, checked, n);
+        check_compensator(&f, e_g, scale, checked, n, 1u + probe_byte % 8u);
     }
     if (flags & 4u) {
         check_fit(lo, hi, fit_k, fit_cap, n, exact, nospace_at,

@@ -367,19 +367,20 @@ static NUM_T NUM_NAME(everett_from_lo)(const hyst_curve_t *curve, NUM_T w)
     return acc * w;
 }
 
-/* G^-1 of a spline at the output step e from lo: the lowest input step
- * where G reaches e. The last knot below e (the knots' G never decrease),
- * then the next knot if e is its G (a flat run starts there), else its
- * piece's cubic solved by Newton's iteration from the secant's guess, kept
- * inside the bracket that every evaluation narrows (its middle where a step
- * would leave it), until the cubic is within its rounding of e: a few
- * steps where the slope is not near 0, bisection's count at most. G^-1(0) = 0 and G^-1(G(hi)) = hi - lo exactly, and the
- * knots are exact. */
-static NUM_T NUM_NAME(spline_inv_g)(const hyst_curve_t *c, NUM_T e)
+/* G^-1 of a spline (its pieces sp: the curve's, or its tabulated
+ * compensator's forward spline) at the output step e from lo: the lowest
+ * input step where G reaches e. The last knot below e (the knots' G never
+ * decrease), then the next knot if e is its G (a flat run starts there),
+ * else its piece's cubic solved by Newton's iteration from the secant's
+ * guess, kept inside the bracket that every evaluation narrows (its middle
+ * where a step would leave it), until the cubic is within its rounding of
+ * e: a few steps where the slope is not near 0, bisection's count at most.
+ * G^-1(0) = 0 and G^-1(G(hi)) = hi - lo exactly, and the knots are exact. */
+HYST_INLINE NUM_T NUM_NAME(spline_inv_g)(const hyst_curve_spline_t *sp, NUM_T e)
 {
-    const NUM_T *tab = c->u.spline.table.NUM_F;
-    const size_t n = c->u.spline.intervals;
-    const NUM_T h = c->u.spline.span.NUM_F / (NUM_T)n;
+    const NUM_T *tab = sp->table.NUM_F;
+    const size_t n = sp->intervals;
+    const NUM_T h = sp->span.NUM_F / (NUM_T)n;
     const NUM_T *p;
     size_t k = 0u, top = n + 1u;
     NUM_T a = 0, b = 1, t, noise;
@@ -396,11 +397,11 @@ static NUM_T NUM_NAME(spline_inv_g)(const hyst_curve_t *c, NUM_T e)
         }
     }
     if (k == n) {
-        return c->u.spline.span.NUM_F;
+        return sp->span.NUM_F;
     }
     p = tab + 4u * k;
     if (p[4] <= e) {
-        return k + 1u == n ? c->u.spline.span.NUM_F : (NUM_T)(k + 1u) * h;
+        return k + 1u == n ? sp->span.NUM_F : (NUM_T)(k + 1u) * h;
     }
     /* the cubic's evaluation errs by a few roundings of its terms: within
      * that of e, t is the answer (the iterates would wander about it) */
@@ -434,11 +435,23 @@ static NUM_T NUM_NAME(spline_inv_g)(const hyst_curve_t *c, NUM_T e)
     return ((NUM_T)k + t) * h;
 }
 
+/* G of a spline's tabulated compensator at s (table intervals) off the
+ * fast path: the table's cubic, or in an interval marked exact (next to a
+ * knot of slope 0, or where the spline's change of curvature at a knot
+ * bends G^-1 beyond a cubic) the solved compensator's G^-1 (spline_inv_g())
+ * at the output step s / unit. */
+NUM_T NUM_NAME(spline_table_g_)(const hyst_curve_t *curve, NUM_T s)
+{
+    const NUM_T v = NUM_NAME(table_g)(curve->u.inv_table.table.NUM_F, s);
+    return v >= 0 ? v
+                  : NUM_NAME(spline_inv_g)(&curve->u.inv_table.fwd_spline, s / curve->unit.NUM_F);
+}
+
 NUM_T NUM_NAME(spline_g_)(const hyst_curve_t *curve, NUM_T s)
 {
     NUM_T v;
     if (curve->kind == (unsigned)HYST_CURVE_SPLINE_INV) {
-        return NUM_NAME(spline_inv_g)(curve, s);
+        return NUM_NAME(spline_inv_g)(&curve->u.spline, s);
     }
     v = NUM_NAME(table_g)(curve->u.spline.table.NUM_F, s);
     return v > 0 ? v : 0; /* G >= 0: a piece rounded below its knot's 0 */
@@ -527,6 +540,9 @@ static NUM_T NUM_NAME(curve_g_impl)(const hyst_curve_t *curve, NUM_T d)
     if (curve->kind == (unsigned)HYST_CURVE_SPLINE ||
         curve->kind == (unsigned)HYST_CURVE_SPLINE_INV) {
         return NUM_NAME(spline_g_)(curve, d * curve->unit.NUM_F);
+    }
+    if (curve->kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE) {
+        return NUM_NAME(spline_table_g_)(curve, d * curve->unit.NUM_F);
     }
     return curve->kind == (unsigned)HYST_CURVE_POLY
                ? NUM_NAME(horner)(curve->u.poly.a, curve->u.poly.degree, d * curve->unit.NUM_F)

@@ -291,23 +291,33 @@ unsigned long hyst_crc_table_(unsigned long crc, hyst_cptr_t table, size_t n, un
 }
 
 /* The identity of a curve whose G is a table of cubic pieces (a tabulated
- * inverse, a spline or its compensator): the forward polynomial's G (an
- * inverse table's exact intervals), the span, then the pieces. */
+ * inverse, a spline or its compensators): the forward polynomial's G (an
+ * inverse table's exact intervals), the span, the pieces; for a spline's
+ * tabulated compensator then its spline's (the exact intervals'), the same
+ * way. */
 static unsigned long pieces_id(unsigned long crc, const hyst_curve_t *c, const format_t *f)
 {
-    const int spline = c->kind != (unsigned)HYST_CURVE_INV_TABLE;
-    const size_t n = spline ? c->u.spline.intervals : c->u.inv_table.intervals;
-    if (!spline) {
+    const int spline = c->kind == (unsigned)HYST_CURVE_SPLINE ||
+                       c->kind == (unsigned)HYST_CURVE_SPLINE_INV;
+    unsigned tables = c->kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE ? 2u : 1u;
+    size_t n = spline ? c->u.spline.intervals : c->u.inv_table.intervals;
+    hyst_cptr_t table = spline ? c->u.spline.table : c->u.inv_table.table;
+    const hyst_num_t *span = spline ? &c->u.spline.span : &c->u.inv_table.span;
+    if (c->kind == (unsigned)HYST_CURVE_INV_TABLE) {
         unsigned k;
         crc = crc_word(crc, c->u.inv_table.fwd.degree);
         for (k = 0u; k < c->u.inv_table.fwd.degree && k < HYST_MAX_DEGREE; ++k) {
             crc = crc_num(crc, &c->u.inv_table.fwd.a[k], f->yt);
         }
     }
-    crc = crc_num(crc, spline ? &c->u.spline.span : &c->u.inv_table.span, f->yt);
-    crc = crc_word(crc, (unsigned long)n);
-    crc = crc_table(crc, spline ? c->u.spline.table : c->u.inv_table.table, HYST_INV_TABLE_LEN(n),
-                    f->yt);
+    for (; tables > 0u; --tables) {
+        crc = crc_num(crc, span, f->yt);
+        crc = crc_word(crc, (unsigned long)n);
+        crc = crc_table(crc, table, HYST_INV_TABLE_LEN(n), f->yt);
+        span = &c->u.inv_table.fwd_spline.span;
+        n = c->u.inv_table.fwd_spline.intervals;
+        table = c->u.inv_table.fwd_spline.table;
+    }
     if (f->yt == NUM_Q31) { /* the drive's format: its fraction bits and first code */
         crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_bits);
         crc = crc_word(crc, (unsigned long)c->u.inv_table.drive_code_lo);
@@ -375,7 +385,8 @@ static unsigned long curve_id(const hyst_tcm_t *S, const format_t *f)
             crc = crc_num(crc, &c->u.poly_inv.knot_u[k], f->yt);
         }
     } else if (c->kind == (unsigned)HYST_CURVE_INV_TABLE || c->kind == (unsigned)HYST_CURVE_SPLINE ||
-               c->kind == (unsigned)HYST_CURVE_SPLINE_INV) {
+               c->kind == (unsigned)HYST_CURVE_SPLINE_INV ||
+               c->kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE) {
         crc = pieces_id(crc, c, f);
     } else if (c->kind == (unsigned)HYST_CURVE_PWL || c->kind == (unsigned)HYST_CURVE_PWL_INV) {
         size_t i;

@@ -2,7 +2,8 @@
 /* The spline kind's set-up (curve.h, hyst_spline_t): a cubic Hermite f0 on
  * uniform knots, proved increasing piece by piece and written as the table
  * of cubic pieces the engine's fast path evaluates (G in s, s the input in
- * knot intervals from lo), the same form as a tabulated inverse's. */
+ * knot intervals from lo), the same form as a tabulated inverse's; its
+ * compensators, solved and tabulated. */
 #include <string.h>
 
 #include "hyst_util.h"
@@ -206,20 +207,169 @@ hyst_status_t hyst_f64_curve_from_spline_(hyst_curve_t *curve, const hyst_spline
 }
 #endif
 
+/* Whether every piece of a spline curve or its solved compensator rises
+ * (a flat piece has no inverse). */
+static int pieces_rise(const hyst_curve_t *fwd)
+{
+    const hyst_cptr_t tab = fwd->u.spline.table;
+    size_t k;
+    for (k = 0u; k < fwd->u.spline.intervals; ++k) {
+        if (!(hyst_cptr_get(tab, 4u * (k + 1u), fwd->variant) >
+              hyst_cptr_get(tab, 4u * k, fwd->variant))) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* ---- The tabulated compensator (HYST_CURVE_SPLINE_INV_TABLE): the
+ * builder of a polynomial's (src/inv_table_build.h) on the spline's G ---- */
+
+/* The forward spline's piece at u in [0, 1] of its domain, as the samples
+ * find it (knot interval floor(u K); the last one at u = 1, whose slope
+ * there is the end's), into p, and t in it. */
+static hyst_wide_t fwd_piece(const hyst_curve_t *c, unsigned variant, hyst_wide_t u,
+                             hyst_wide_t *p)
+{
+    const size_t n = c->u.inv_table.fwd_spline.intervals;
+    const hyst_wide_t s = u * (hyst_wide_t)n;
+    size_t k = (size_t)(unsigned long)s;
+    unsigned j;
+    if (k >= n) {
+        k = n - 1u;
+    }
+    for (j = 0u; j < 4u; ++j) {
+        p[j] = hyst_cptr_get(c->u.inv_table.fwd_spline.table, 4u * k + j, variant);
+    }
+    return s - (hyst_wide_t)k;
+}
+
+/* G(u) from the pieces as stored, in hyst_wide_t. */
+static hyst_wide_t pieces_g(const hyst_curve_t *c, unsigned variant, hyst_wide_t u)
+{
+    hyst_wide_t p[4];
+    const hyst_wide_t t = fwd_piece(c, variant, u, p);
+    return p[0] + t * (p[1] + t * (p[2] + t * p[3]));
+}
+
+/* G'(u): K times the piece's slope in t. */
+static hyst_wide_t pieces_dg(const hyst_curve_t *c, unsigned variant, hyst_wide_t u)
+{
+    hyst_wide_t p[4];
+    const hyst_wide_t t = fwd_piece(c, variant, u, p);
+    const hyst_wide_t k = (hyst_wide_t)c->u.inv_table.fwd_spline.intervals;
+    return k * (p[1] + t * (2 * p[2] + 3 * p[3] * t));
+}
+
+#define TB_NAME(n) spline_##n
+#define TB_FWD_T hyst_curve_t
+#define TB_FWD(c) (c)
+#define TB_G(p, variant, u) pieces_g((p), (variant), (u))
+#define TB_DG(p, variant, u) pieces_dg((p), (variant), (u))
+#define TB_REAL_ONLY 1
+#include "inv_table_build.h"
+
+/* The checks, in the polynomial's order (hyst_*_curve_inverse_table()),
+ * and the curve but its numbers: the axes swapped, the forward spline's
+ * pieces kept for the exact intervals, its unit their argument per drive
+ * step. */
+static hyst_status_t inv_table_prepare(hyst_curve_t *out, table_build_t *b, const hyst_curve_t *inv,
+                                       const hyst_curve_t *fwd, hyst_cptr_t table, size_t intervals,
+                                       unsigned variant)
+{
+    hyst_wide_t range, span;
+    const hyst_status_t st = hyst_curve_check(fwd); /* the layout; ARG for a spline */
+    if (inv == NULL || table.f32 == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (st != HYST_OK && st != HYST_ERR_ARG) {
+        return st;
+    }
+    if (fwd->variant != variant) {
+        return HYST_ERR_LAYOUT;
+    }
+    if (fwd->kind != (unsigned)HYST_CURVE_SPLINE || hyst_spline_check_(fwd) != HYST_OK ||
+        !spline_table_size_ok((unsigned long)intervals)) {
+        return HYST_ERR_ARG;
+    }
+    if (!pieces_rise(fwd)) {
+        return HYST_ERR_NOT_INVERTIBLE;
+    }
+    spline_table_axes(out, fwd, (unsigned)HYST_CURVE_SPLINE_INV_TABLE, variant);
+    memset(&out->u, 0, sizeof out->u); /* no polynomial: its degree 0 */
+    out->u.inv_table.fwd_spline = fwd->u.spline;
+    out->u.inv_table.span = fwd->u.spline.span;
+    out->u.inv_table.u_per_d = fwd->unit;
+    range = pieces_g(out, variant, 1);
+    span = hyst_num_get(&out->u.inv_table.span, variant);
+    if (!(range > 0) || !(span > 0)) {
+        return HYST_ERR_NOT_INVERTIBLE;
+    }
+    return spline_table_start(out, b, table, intervals, range, span, variant);
+}
+
+static hyst_status_t spline_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                          hyst_ptr_t table, size_t intervals, unsigned variant)
+{
+    hyst_curve_t out;
+    table_build_t b;
+    const hyst_status_t st =
+        inv_table_prepare(&out, &b, inv, fwd, hyst_cptr_of(table, variant), intervals, variant);
+    return st != HYST_OK ? st : spline_table_build(inv, &out, &b, table, intervals);
+}
+
+hyst_status_t hyst_f32_curve_spline_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                  float *table, size_t intervals)
+{
+    hyst_ptr_t t;
+    t.f32 = table;
+    return spline_inverse_table(inv, fwd, t, intervals, HYST_VARIANT_F32);
+}
+
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_spline_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                  double *table, size_t intervals)
+{
+    hyst_ptr_t t;
+    t.f64 = table;
+    return spline_inverse_table(inv, fwd, t, intervals, HYST_VARIANT_F64);
+}
+#endif
+
 hyst_status_t hyst_spline_check_(const hyst_curve_t *curve)
 {
+    if (curve->kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE) { /* both tables */
+        return curve->u.inv_table.table.f32 != NULL &&
+                       spline_table_size_ok((unsigned long)curve->u.inv_table.intervals) &&
+                       curve->u.inv_table.fwd_spline.table.f32 != NULL &&
+                       curve->u.inv_table.fwd_spline.intervals >= 1u &&
+                       curve->u.inv_table.fwd_spline.intervals <= HYST_SPLINE_MAX_INTERVALS
+                   ? HYST_OK
+                   : HYST_ERR_ARG;
+    }
     return curve->u.spline.table.f32 != NULL && curve->u.spline.intervals >= 1u &&
                    curve->u.spline.intervals <= HYST_SPLINE_MAX_INTERVALS
                ? HYST_OK
                : HYST_ERR_ARG;
 }
 
+/* The spline of its tabulated compensator: its pieces and unit kept, the
+ * axes swapped back. */
+static hyst_status_t table_forward(hyst_curve_t *inv, const hyst_curve_t *fwd)
+{
+    hyst_curve_t out;
+    spline_table_axes(&out, fwd, (unsigned)HYST_CURVE_SPLINE, fwd->variant);
+    memset(&out.u, 0, sizeof out.u);
+    out.unit = fwd->u.inv_table.u_per_d;
+    out.u.spline = fwd->u.inv_table.fwd_spline;
+    *inv = out;
+    return HYST_OK;
+}
+
 hyst_status_t hyst_curve_spline_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
 {
     hyst_curve_t out;
-    hyst_cptr_t tab;
     hyst_status_t st;
-    size_t k;
     int to_inverse;
     if (inv == NULL || fwd == NULL) {
         return HYST_ERR_NULL;
@@ -228,16 +378,16 @@ hyst_status_t hyst_curve_spline_inverse(hyst_curve_t *inv, const hyst_curve_t *f
     if (st != HYST_ERR_ARG) {
         return st == HYST_OK ? HYST_ERR_ARG : st;
     }
-    if ((fwd->kind != (unsigned)HYST_CURVE_SPLINE && fwd->kind != (unsigned)HYST_CURVE_SPLINE_INV) ||
+    if ((fwd->kind != (unsigned)HYST_CURVE_SPLINE && fwd->kind != (unsigned)HYST_CURVE_SPLINE_INV &&
+         fwd->kind != (unsigned)HYST_CURVE_SPLINE_INV_TABLE) ||
         hyst_spline_check_(fwd) != HYST_OK) {
         return HYST_ERR_ARG;
     }
-    tab = fwd->u.spline.table;
-    for (k = 0u; k < fwd->u.spline.intervals; ++k) { /* a flat piece has no inverse */
-        if (!(hyst_cptr_get(tab, 4u * (k + 1u), fwd->variant) >
-              hyst_cptr_get(tab, 4u * k, fwd->variant))) {
-            return HYST_ERR_NOT_INVERTIBLE;
-        }
+    if (fwd->kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE) {
+        return table_forward(inv, fwd);
+    }
+    if (!pieces_rise(fwd)) {
+        return HYST_ERR_NOT_INVERTIBLE;
     }
     to_inverse = fwd->kind == (unsigned)HYST_CURVE_SPLINE;
     out = *fwd; /* the same table: G^-1 takes the output step itself, G knot intervals */

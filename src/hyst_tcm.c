@@ -88,7 +88,8 @@ hyst_status_t hyst_check_init(const hyst_tcm_t *S, const hyst_curve_t *curve,
         st = hyst_everett_grid_check_(curve);
     }
     if (st == HYST_ERR_ARG && (curve->kind == (unsigned)HYST_CURVE_SPLINE ||
-                               curve->kind == (unsigned)HYST_CURVE_SPLINE_INV)) {
+                               curve->kind == (unsigned)HYST_CURVE_SPLINE_INV ||
+                               curve->kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE)) {
         st = hyst_spline_check_(curve);
     }
     if (st == HYST_OK && curve->variant != curve_variant) {

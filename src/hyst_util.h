@@ -222,7 +222,8 @@ hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, 
  * HYST_OK or HYST_ERR_ARG. */
 hyst_status_t hyst_everett_grid_check_(const hyst_curve_t *curve);
 
-/* The same for a spline curve (HYST_CURVE_SPLINE, _INV; src/hyst_spline.c). */
+/* The same for a spline curve (HYST_CURVE_SPLINE, _INV, _INV_TABLE;
+ * src/hyst_spline.c). */
 hyst_status_t hyst_spline_check_(const hyst_curve_t *curve);
 
 /* 1 if E increases in a and decreases in b on its whole triangle (the
@@ -460,6 +461,12 @@ double hyst_f64_curve_g_other_(const hyst_curve_t *curve, double d);
 float hyst_f32_spline_g_(const hyst_curve_t *curve, float s);
 #if HYST_ENABLE_F64
 double hyst_f64_spline_g_(const hyst_curve_t *curve, double s);
+#endif
+/* G of a spline's tabulated compensator at s (table intervals), its exact
+ * intervals solved (src/curve_eval.h; src/kind_spline.h's g). */
+float hyst_f32_spline_table_g_(const hyst_curve_t *curve, float s);
+#if HYST_ENABLE_F64
+double hyst_f64_spline_table_g_(const hyst_curve_t *curve, double s);
 #endif
 
 #endif /* HYST_UTIL_H */

@@ -52,6 +52,7 @@ static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
 #define TCM_ADMIT(S, x, out) NUM_NAME(admit)((S), (x), (out))
 #define TCM_CURVE_G(c, d) NUM_NAME(curve_g_other_)((c), (d))
 #define TCM_SPLINE_G(c, s) NUM_NAME(spline_g_)((c), (s))
+#define TCM_SPLINE_TABLE_G(c, s) NUM_NAME(spline_table_g_)((c), (s))
 #ifdef NUM_KEY_T
 #define TCM_KEY_T NUM_KEY_T
 #define TCM_UKEY_T NUM_UKEY_T

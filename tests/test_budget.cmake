@@ -41,6 +41,14 @@ set(HYST_BUDGET_SPLINE_TYPICAL_INSNS 45)
 set(HYST_BUDGET_SPLINE_WORST_INSNS 154)
 set(HYST_BUDGET_SPLINE_INV_TYPICAL_INSNS 333)
 set(HYST_BUDGET_SPLINE_INV_WORST_INSNS 453)
+# Its tabulated compensator (HYST_CURVE_SPLINE_INV_TABLE, the default 256
+# intervals: cubic pieces of f0^-1 on the fast path, as the polynomial's
+# compensator); its worst sample lands in one of the 5 intervals evaluated
+# exactly (the spline's change of curvature at a knot bends f0^-1 beyond a
+# cubic there), solved as the solved compensator solves every sample. Held at
+# its figures too.
+set(HYST_BUDGET_SPLINE_INV_TABLE_TYPICAL_INSNS 45)
+set(HYST_BUDGET_SPLINE_INV_TABLE_WORST_INSNS 449)
 # The q31 variant on the Cortex-M3 without an FPU (hyst/q31.h): the same
 # trajectory at Nu = 4096 (docs/results.md: m3_q31_*_insns*).
 set(HYST_BUDGET_Q31_TYPICAL_INSNS 45)
@@ -100,7 +108,7 @@ if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
                          ${HYST_BUDGET_EVERETT_WORST_INSNS} --elf $<TARGET_FILE:bench_budget_everett4>
                          --elf $<TARGET_FILE:bench_budget_everett4_bipolar> --no-pi)
     endif()
-    foreach(image everett_inv everett_grid everett_grid_inv spline spline_inv)
+    foreach(image everett_inv everett_grid everett_grid_inv spline spline_inv spline_inv_table)
         if(TARGET bench_budget_${image})
             string(TOUPPER ${image} upper)
             hyst_budget_test(${image}_budget ${HYST_BUDGET_${upper}_TYPICAL_INSNS}
@@ -108,6 +116,9 @@ if(HYST_BUDGET_TEST AND HYST_PORT STREQUAL "mps2-an386" AND TARGET bench_budget
                              --elf $<TARGET_FILE:bench_budget_${image}> --no-pi)
         endif()
     endforeach()
+    if(TEST spline_inv_table_budget) # its init builds 256 intervals in soft double
+        set_tests_properties(spline_inv_table_budget PROPERTIES TIMEOUT 900)
+    endif()
     # Its tabulated compensator (the default table). The typical budget is asserted; the
     # worst is not met (everett_inv_table_worst_insns_nu4096: a slow sample derives the
     # branch's four rows and blends an interval on top of the forward kind's path,

@@ -35,35 +35,11 @@ static ref_tcm_t ref; /* 128 KB: off the stack */
 void setUp(void) { rng_seed(&rng, 1618u); }
 void tearDown(void) {}
 
-/* A random increasing spline: values rising by random steps (some flat),
- * slopes limited so that every piece increases (Fritsch-Carlson's box). */
+/* A random increasing spline, some pieces flat with `flat`
+ * (support.h). */
 static hyst_spline_t random_spline(unsigned intervals, int flat)
 {
-    hyst_spline_t f;
-    const double lo = rng_range(&rng, -50.0, 50.0), span = rng_range(&rng, 0.5, 200.0);
-    const double h = span / intervals;
-    double step[HYST_SPLINE_MAX_INTERVALS];
-    unsigned k;
-    memset(&f, 0, sizeof f);
-    f.intervals = intervals;
-    f.lo = lo;
-    f.hi = lo + span;
-    f.value[0] = rng_range(&rng, -10.0, 10.0);
-    for (k = 0u; k < intervals; ++k) {
-        step[k] = flat && rng_below(&rng, 5u) == 0u ? 0.0 : rng_range(&rng, 0.01, 3.0);
-        f.value[k + 1u] = f.value[k] + step[k];
-    }
-    if (!(f.value[intervals] > f.value[0])) {
-        f.value[intervals] += 1.0;
-        step[intervals - 1u] += 1.0;
-    }
-    for (k = 0u; k <= intervals; ++k) {
-        const double left = k > 0u ? step[k - 1u] / h : step[k] / h;
-        const double right = k < intervals ? step[k] / h : step[k - 1u] / h;
-        const double m = left < right ? left : right;
-        f.slope[k] = m * rng_range(&rng, 0.0, 3.0); /* within 3 times the smaller secant */
-    }
-    return f;
+    return spline_random(&rng, intervals, flat, 0, 0);
 }
 
 static hyst_status_t init_spline(hyst_t *I, hyst_curve_t *c, const hyst_spline_t *f)

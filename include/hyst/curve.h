@@ -68,12 +68,17 @@ typedef enum hyst_curve_kind {
     /** f0 a monotone cubic spline on uniform knots (hyst_spline_t): cubic
      *  pieces in a table (inline) */
     HYST_CURVE_SPLINE = 11,
-    /** its compensator: each piece's cubic solved by bisection */
-    HYST_CURVE_SPLINE_INV = 12
+    /** its compensator: each sample's piece found by binary search, its
+     *  cubic solved by Newton's iteration in its bracket */
+    HYST_CURVE_SPLINE_INV = 12,
+    /** its compensator tabulated: cubic pieces of f0^-1 on a uniform grid
+     *  of the output, as HYST_CURVE_INV_TABLE's (inline) */
+    HYST_CURVE_SPLINE_INV_TABLE = 13
 } hyst_curve_kind_t;
 
-/** Numbers of the table of an HYST_CURVE_INV_TABLE curve with @p intervals
- *  intervals: four per interval, and four for the end of the range. */
+/** Numbers of the table of an HYST_CURVE_INV_TABLE or
+ *  HYST_CURVE_SPLINE_INV_TABLE curve with @p intervals intervals: four per
+ *  interval, and four for the end of the range. */
 #define HYST_INV_TABLE_LEN(intervals) (4u * ((intervals) + 1u))
 
 /** Numbers of the table of an HYST_CURVE_EVERETT_INV_TABLE curve: both
@@ -185,6 +190,20 @@ typedef struct hyst_curve_poly {
 } hyst_curve_poly_t;
 
 /**
+ * @brief A spline's pieces as a prepared curve keeps them (HYST_CURVE_SPLINE,
+ *        its compensators).
+ */
+typedef struct hyst_curve_spline {
+    /** the caller's table, HYST_SPLINE_TABLE_LEN(intervals) numbers:
+     *  interval k holds c0..c3 of G(s) = c0 + t (c1 + t (c2 + t c3)),
+     *  s = (x - lo) intervals / (hi - lo) of the forward curve,
+     *  k = floor(s), t = s - k; the last four G(hi - lo), 0, 0, 0 */
+    hyst_cptr_t table;
+    size_t intervals;  /**< K */
+    hyst_num_t span;   /**< the forward curve's hi - lo */
+} hyst_curve_spline_t;
+
+/**
  * @brief A prepared curve: its kind, its variant and the data of the kind.
  *
  * Filled by a constructor below; treat as read-only. The first three
@@ -256,9 +275,14 @@ typedef struct hyst_curve {
             hyst_num_t v_end[2][HYST_EVERETT_MAX_DEGREE + 1];
         } everett; /**< EVERETT, EVERETT_INV and EVERETT_INV_TABLE */
         struct {
-            hyst_curve_poly_t fwd;  /**< the forward polynomial's G (the exact intervals) */
+            /** INV_TABLE: the forward polynomial's G (the exact intervals);
+             *  degree 0 for SPLINE_INV_TABLE */
+            hyst_curve_poly_t fwd;
             hyst_num_t span;        /**< input span of f0 (the drive range) */
-            hyst_num_t u_per_d;     /**< 1 / span: G's argument per drive step */
+            /** G's argument per drive step: 1 / span (INV_TABLE: G of u in
+             *  [0, 1]); the forward spline's unit, intervals / span
+             *  (SPLINE_INV_TABLE: G of s in knot intervals) */
+            hyst_num_t u_per_d;
             /** the caller's table, HYST_INV_TABLE_LEN(intervals) numbers:
              *  interval k holds c0..c3 of d(s) = c0 + t (c1 + t (c2 + t c3)),
              *  s = e intervals / (f0(hi) - f0(lo)), k = floor(s), t = s - k;
@@ -273,7 +297,11 @@ typedef struct hyst_curve {
              *  2^drive_bits; 0 for the real variants */
             unsigned drive_bits;
             uint_least32_t drive_code_lo;
-        } inv_table; /**< INV_TABLE */
+            /** SPLINE_INV_TABLE: the forward spline's pieces (the exact
+             *  intervals), whose table must outlive this curve; unused for
+             *  INV_TABLE */
+            hyst_curve_spline_t fwd_spline;
+        } inv_table; /**< INV_TABLE and SPLINE_INV_TABLE */
         struct {
             /** the caller's table, HYST_EVERETT_GRID_TABLE_LEN(intervals)
              *  numbers: the knots (K + 1), half of each diagonal cell's
@@ -284,15 +312,7 @@ typedef struct hyst_curve {
             hyst_cptr_t table;
             unsigned intervals; /**< K */
         } everett_grid; /**< EVERETT_GRID and EVERETT_GRID_INV */
-        struct {
-            /** the caller's table, HYST_SPLINE_TABLE_LEN(intervals) numbers:
-             *  interval k holds c0..c3 of G(s) = c0 + t (c1 + t (c2 + t c3)),
-             *  s = (x - lo) intervals / (hi - lo) of the forward curve,
-             *  k = floor(s), t = s - k; the last four G(hi - lo), 0, 0, 0 */
-            hyst_cptr_t table;
-            size_t intervals;  /**< K */
-            hyst_num_t span;   /**< the forward curve's hi - lo */
-        } spline; /**< SPLINE and SPLINE_INV */
+        hyst_curve_spline_t spline; /**< SPLINE and SPLINE_INV */
         struct {
             hyst_cptr_t x;  /**< the curve's breakpoints (caller's array) */
             hyst_cptr_t y;  /**< its values (caller's array) */
@@ -459,9 +479,11 @@ hyst_status_t hyst_f64_curve_from_everett_grid_(hyst_curve_t *curve, const hyst_
  * number finite in the variant's type (HYST_ERR_COEFF). The curve keeps a
  * pointer to @p table, which must outlive it, unchanged; it runs on
  * hyst_*_init_curve(): a sample on the fast path costs one cubic, its
- * piece found by one multiplication. Its compensator:
- * hyst_curve_spline_inverse(); hyst_curve_check(), hyst_curve_inverse()
- * and the tables' builders answer HYST_ERR_ARG for the kind.
+ * piece found by one multiplication. Its compensators:
+ * hyst_curve_spline_inverse() and, tabulated,
+ * hyst_*_curve_spline_inverse_table(); hyst_curve_check(),
+ * hyst_curve_inverse() and the polynomial's and asymmetric kind's table
+ * builders answer HYST_ERR_ARG for the kind.
  * @return HYST_OK or the first failed check; @p curve and @p table written
  *         only on success (the table, then the curve).
  */
@@ -481,21 +503,67 @@ hyst_status_t hyst_f64_curve_from_spline_(hyst_curve_t *curve, const hyst_spline
 /**
  * @brief The compensator of a spline curve (hyst_*_curve_from_spline()):
  *        its input the desired output on [f0(lo), f0(hi)], its output the
- *        drive; of a compensator, the spline again.
+ *        drive; of a compensator, solved or tabulated, the spline again.
  *
  * The same table: per sample, the last knot below the desired output
  * (a binary search) and its piece's cubic solved by bisection, every
  * sample out of line; monotone, exact at the knots. A flat piece has no
  * inverse (HYST_ERR_NOT_INVERTIBLE). hyst_curve_inverse() answers
  * HYST_ERR_ARG for this kind, so that a firmware inverting a polynomial
- * links none of it.
+ * links none of it. The tabulated compensator, an index and one cubic
+ * per sample: hyst_*_curve_spline_inverse_table().
  * @param[out] inv prepared inverse curve (may be the same object as @p fwd).
- * @param[in]  fwd a spline curve or its compensator.
+ * @param[in]  fwd a spline curve or one of its compensators.
  * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT, HYST_ERR_ARG (not a
  *         prepared spline curve) or HYST_ERR_NOT_INVERTIBLE; @p inv
  *         written only on success.
  */
 hyst_status_t hyst_curve_spline_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd);
+
+/**
+ * @name Tabulated compensator of a spline curve
+ * @brief Prepares the compensator of a spline curve
+ *        (hyst_*_curve_from_spline()) with f0^-1 tabulated as
+ *        hyst_*_curve_inverse_table() tabulates a polynomial's: a sample
+ *        costs an index and one cubic, inline, where
+ *        hyst_curve_spline_inverse()'s solves every sample out of line.
+ *
+ * The drive step d(e) for an output step e is tabulated on @p intervals
+ * intervals uniform in e: the exact inverse of the spline's pieces at the
+ * knots (solved in hyst_wide_t on the pieces as stored), its slope there
+ * limited as Fritsch and Carlson do, cubic Hermite pieces between. Init
+ * measures every interval against the exact inverse (15 points each); an
+ * interval that misses HYST_INV_TABLE_TOL of the drive range (around a
+ * knot, whose change of curvature bends d beyond a cubic, and next to a
+ * knot of slope 0, where d has an infinite slope) is solved per sample
+ * instead, out of line, as hyst_curve_spline_inverse()'s compensator
+ * solves every sample: a spline needs more intervals than a polynomial for
+ * as few of those. hyst_curve_inverse_error() reports the worst
+ * measured error plus the drive's last rounding. The curve keeps pointers
+ * to @p table and to the forward curve's table, both of which must outlive
+ * it, unchanged (the forward curve itself need not). Its inverse,
+ * hyst_curve_spline_inverse(), is the spline again; hyst_curve_inverse(),
+ * hyst_curve_check() and the seals answer HYST_ERR_ARG for the kind.
+ * @param[out] inv prepared inverse curve.
+ * @param[in]  fwd a spline curve (hyst_*_curve_from_spline()) of the same variant.
+ * @param[out] table HYST_INV_TABLE_LEN(intervals) numbers.
+ * @param[in]  intervals 1 .. 2^20, as for a polynomial (HYST_INV_TABLE by default).
+ * @return HYST_OK, HYST_ERR_NULL, HYST_ERR_LAYOUT (a curve of another
+ *         variant), HYST_ERR_ARG (not a spline curve, or intervals out of
+ *         range), HYST_ERR_NOT_INVERTIBLE (a flat piece, as
+ *         hyst_curve_spline_inverse() refuses it) or
+ *         HYST_ERR_ILL_CONDITIONED (the output range so small, subnormal,
+ *         that intervals over it overflows the variant's type); @p inv and
+ *         @p table written only on success.
+ */
+/**@{*/
+hyst_status_t hyst_f32_curve_spline_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                  float *table, size_t intervals);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_curve_spline_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,
+                                                  double *table, size_t intervals);
+#endif
+/**@}*/
 
 /**
  * @name The compensator of an asymmetric curve on a grid
@@ -750,8 +818,9 @@ hyst_status_t hyst_f64_curve_everett_inverse_table_const(hyst_curve_t *inv,
 
 /**
  * @brief Worst error of a tabulated inverse (HYST_CURVE_INV_TABLE,
- *        HYST_CURVE_EVERETT_INV_TABLE) measured at init, as a fraction of the
- *        drive range; 0 for the other kinds (exact) and for NULL.
+ *        HYST_CURVE_EVERETT_INV_TABLE, HYST_CURVE_SPLINE_INV_TABLE) measured
+ *        at init, as a fraction of the drive range; 0 for the other kinds
+ *        (exact) and for NULL.
  */
 hyst_wide_t hyst_curve_inverse_error(const hyst_curve_t *curve);
 
@@ -828,6 +897,7 @@ hyst_wide_t hyst_poly_eval(const hyst_poly_t *f0, hyst_wide_t x);
 #define hyst_curve_from_everett_grid HYST_DEFAULT_NAME_(curve_from_everett_grid)
 #define hyst_curve_everett_grid_inverse HYST_DEFAULT_NAME_(curve_everett_grid_inverse)
 #define hyst_curve_from_spline HYST_DEFAULT_NAME_(curve_from_spline)
+#define hyst_curve_spline_inverse_table HYST_DEFAULT_NAME_(curve_spline_inverse_table)
 #define hyst_curve_from_pwl HYST_DEFAULT_NAME_(curve_from_pwl)
 #define hyst_curve_eval HYST_DEFAULT_NAME_(curve_eval)
 #define hyst_curve_g HYST_DEFAULT_NAME_(curve_g)

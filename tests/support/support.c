@@ -2,6 +2,7 @@
 #include "support.h"
 
 #include <math.h>
+#include <string.h>
 
 const double paper_eq20_coeffs[4] = {-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1};
 
@@ -121,6 +122,41 @@ hyst_poly_t poly_random_increasing(rng_t *r, unsigned degree)
     for (j = 0u; j <= degree; ++j) {
         f.coeffs[degree - j] = (hyst_real_t)(rng_range(r, 0.1, 2.0) / scale);
         scale *= (double)f.hi;
+    }
+    return f;
+}
+
+hyst_spline_t spline_random(rng_t *r, unsigned intervals, int flat, int steep, int zeros)
+{
+    hyst_spline_t f;
+    const double lo = rng_range(r, -50.0, 50.0), span = rng_range(r, 0.5, 200.0);
+    const double h = span / intervals;
+    double step[HYST_SPLINE_MAX_INTERVALS];
+    unsigned k;
+    memset(&f, 0, sizeof f);
+    f.intervals = intervals;
+    f.lo = lo;
+    f.hi = lo + span;
+    f.value[0] = rng_range(r, -10.0, 10.0);
+    for (k = 0u; k < intervals; ++k) {
+        if (flat && rng_below(r, 5u) == 0u) {
+            step[k] = 0.0;
+        } else if (steep && rng_below(r, 6u) == 0u) {
+            step[k] = rng_range(r, 3.0, 30.0);
+        } else {
+            step[k] = rng_range(r, 0.01, 3.0);
+        }
+        f.value[k + 1u] = f.value[k] + step[k];
+    }
+    if (!(f.value[intervals] > f.value[0])) {
+        f.value[intervals] += 1.0;
+        step[intervals - 1u] += 1.0;
+    }
+    for (k = 0u; k <= intervals; ++k) {
+        const double left = k > 0u ? step[k - 1u] / h : step[k] / h;
+        const double right = k < intervals ? step[k] / h : step[k - 1u] / h;
+        const double m = left < right ? left : right;
+        f.slope[k] = zeros && rng_below(r, 4u) == 0u ? 0.0 : m * rng_range(r, 0.0, 3.0);
     }
     return f;
 }

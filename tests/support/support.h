@@ -79,6 +79,13 @@ hyst_poly_t poly_monomial(unsigned degree, double lo, double hi);
  * lo in [0, 5], hi - lo in [1, 4000], terms of comparable size at hi. */
 hyst_poly_t poly_random_increasing(rng_t *r, unsigned degree);
 
+/* A random increasing spline on a random domain: values rising by random
+ * steps, one in five flat with `flat` (value[K] kept above value[0]), one
+ * in six a near step (3..30) with `steep`; slopes within three times the
+ * smaller secant beside them (Fritsch-Carlson's box: every piece
+ * increases), one in four 0 with `zeros`. */
+hyst_spline_t spline_random(rng_t *r, unsigned intervals, int flat, int steep, int zeros);
+
 /* f0 with coefficients c (highest power first) at x, in double-double: the
  * exact value of those coefficients' polynomial to about 2^-100 of the
  * largest term, a reference where Horner's rule in double cancels. */
