@@ -25,10 +25,13 @@ function text = hyst_header(model, name, varargin)
 %   init. 'intervals', N (1..2^20; default HYST_INV_TABLE, 256, or for kind
 %   everett HYST_EVERETT_INV_INTERVALS, 32) and, for kind everett only,
 %   'rows', R (3..4096; default HYST_EVERETT_INV_ROWS, 16) size the table;
-%   they need 'compensator', true. Kinds everett_grid and spline have no
-%   table (their compensators, hyst_curve_everett_grid_inverse() and
-%   hyst_curve_spline_inverse(), solve each sample): the header says so,
-%   'intervals' and 'rows' are refused.
+%   they need 'compensator', true. Kind everett_grid has no table (its
+%   compensator, hyst_curve_everett_grid_inverse(), solves each branch):
+%   the header says so, 'intervals' and 'rows' are refused. Kind spline has
+%   none without 'intervals' (hyst_curve_spline_inverse() solves each
+%   sample: the header says so); with 'intervals', N the table firmware
+%   builds at init (hyst_curve_spline_inverse_table(), no table from
+%   flash), measured here: NAME_INTERVALS and the calls.
 %
 %   A model with a creep term (fields creep_tau, creep_weight) also gets
 %   '#include "hyst/creep.h"' and, after its declaration, NAME_CREEP_TERMS,
@@ -70,23 +73,26 @@ function text = hyst_header(model, name, varargin)
     error('hyst:usage', '%s: coeffs has 2 to %d numbers (degree 1..HYST_MAX_DEGREE)', caller, ...
           config.max_degree + 1);
   end
-  % a grid's or a spline's compensator is solved: it needs no table
+  % a grid's compensator is solved: it needs no table; a spline's is solved
+  % unless 'intervals' tabulates it
   solved = hyst_solved_compensator(p.kind);
   if ~isempty(solved) && c && (~isempty(opts.intervals) || ~isempty(opts.rows))
     error('hyst:usage', '%s: kind %s has no compensator table (its compensator %s)', caller, ...
           p.kind, solved);
   end
+  tabled = c && isempty(solved) && ...
+           (~strcmp(p.kind, 'spline') || ~isempty(opts.intervals) || ~isempty(opts.rows));
   check_curve(p, caller);
   % the guard, the declaration and the creep term (and the compensator's
   % table: the library builds it in float and in double, sealed): the
   % format's one implementation (tools/model_text), as 'hyst header' writes them
   parts = hyst_text_parts(p);
   table = '';
-  if c && isempty(solved)
+  if tabled
     [intervals, rows] = hyst_table_sizes(opts.intervals, opts.rows, p.kind, caller, false);
     table = hyst_mex('header_table', name, parts{:}, intervals, rows);
   end
-  text = [model_comment(p, c), hyst_mex('header_open', name, parts{:}, p.rate_tau, p.rate_weight), ...
+  text = [model_comment(p, c && ~tabled), hyst_mex('header_open', name, parts{:}, p.rate_tau, p.rate_weight), ...
           table, ...
           hyst_mex('header_close', name)];
   if ~isempty(opts.file)

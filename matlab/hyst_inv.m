@@ -13,13 +13,15 @@ function [x, status, tp_count, inv_err] = hyst_inv(model, y, varargin)
 %   hyst_*_curve_everett_grid_inverse(), each branch solved in closed form,
 %   and for kind 'spline' hyst_curve_spline_inverse(), each drive solved on
 %   f0's cubic piece (exact at the knots; a flat piece has no inverse:
-%   hyst:ERR_NOT_INVERTIBLE): no table for either ('intervals' and 'rows'
-%   are refused). Options and outputs as HYST_SIM.
+%   hyst:ERR_NOT_INVERTIBLE). Kind everett_grid has no table ('intervals'
+%   and 'rows' are refused). Options and outputs as HYST_SIM.
 %
 %   HYST_INV(MODEL, Y, 'intervals', N) runs the tabulated compensator
 %   firmware runs, bit for bit (the same C code; Y double: f64, single: f32):
 %    - a polynomial f0: hyst_*_init_inverse_table with an N-interval table
 %      (HYST_INIT_INVERSE uses HYST_INV_TABLE = 256);
+%    - kind 'spline': hyst_*_curve_spline_inverse_table with an N-interval
+%      table (intervals that miss its tolerance solved per sample instead);
 %    - the asymmetric kind: hyst_*_curve_everett_inverse_table with R rows of
 %      N intervals per direction, HYST_INV(MODEL, Y, 'intervals', N, 'rows', R),
 %      R 3..4096, by default the library's HYST_EVERETT_INV_ROWS (16; firmware's

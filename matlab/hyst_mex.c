@@ -21,8 +21,8 @@
  *                           [, ctau, cweight[, rtau, rweight]])
  *   [y, st, ntp] = hyst_mex('sim_spline', lo, hi, values, slopes, x, capacity, deadband
  *                           [, ctau, cweight[, rtau, rweight]])
- *   [x, st, ntp] = hyst_mex('inv_spline', lo, hi, values, slopes, y, capacity, deadband
- *                           [, ctau, cweight[, rtau, rweight]])
+ *   [x, st, ntp, err] = hyst_mex('inv_spline', lo, hi, values, slopes, y, capacity, deadband,
+ *                                intervals[, ctau, cweight[, rtau, rweight]])
  *   [c, st] = hyst_mex('creep', tau, weight, x_rest, x)
  *   [rms, creep] = hyst_mex('holdout', coeffs, lo, hi, x, y, skip, delay, from, tau)
  *   [rms, creep] = hyst_mex('holdout_everett', degree, lo, hi, y_lo, terms, x, y, skip, delay,
@@ -64,8 +64,9 @@
  * sim_spline runs the symmetric kind whose f0 is a monotone cubic spline on
  * uniform knots (hyst_spline_t: lo, hi, f0's values and slopes at the K + 1
  * knots), inv_spline its compensator (hyst_curve_spline_inverse(), each
- * drive solved per sample), as `hyst sim --model` and `hyst inv --model`
- * run a file of kind spline; model_write, header_open and model_parse take
+ * drive solved per sample; intervals > 0: hyst_*_curve_spline_inverse_table(),
+ * err its measured error), as `hyst sim --model` and `hyst inv --model
+ * [--intervals N]` run a file of kind spline; model_write, header_open and model_parse take
  * and give its values and slopes in the places of coeffs and terms (kind
  * 'spline'; model_parse's struct names them values and slopes).
  * fit_spline: the spline of `intervals` knot intervals as `hyst fit --kind
@@ -358,37 +359,35 @@ static size_t own_table_len(const model_arg_t *m)
                        : 0u;
 }
 
-/* Numbers of the table m's compensator needs (0: none), counted in double
- * where size_t could wrap (rows and intervals at their largest need 2^35). */
+/* Numbers of the tables m and its compensator need (0: none), counted in
+ * double where size_t could wrap (rows and intervals at their largest need
+ * 2^35): the curve's own, then the compensator's. */
 static double table_numbers(const model_arg_t *m)
 {
     const double row = 4.0 * ((double)m->intervals + 1.0); /* HYST_INV_TABLE_LEN */
-    if (m->grid || m->spline) {
-        return (double)own_table_len(m);
-    }
+    const double own = (double)own_table_len(m);
     if (!m->inverse || m->intervals == 0u) {
-        return 0.0;
+        return own;
     }
-    return m->everett ? 2.0 * ((double)m->rows + 1.0) * row : row;
+    return own + (m->everett ? 2.0 * ((double)m->rows + 1.0) * row : row);
 }
 
 /* The same as a size_t, once table_numbers() is known to fit. */
 static size_t table_len(const model_arg_t *m)
 {
-    if (m->grid || m->spline) {
-        return own_table_len(m);
-    }
+    const size_t own = own_table_len(m);
     if (!m->inverse || m->intervals == 0u) {
-        return 0u;
+        return own;
     }
-    return m->everett ? HYST_EVERETT_INV_TABLE_LEN(m->rows, m->intervals)
-                      : HYST_INV_TABLE_LEN(m->intervals);
+    return own + (m->everett ? HYST_EVERETT_INV_TABLE_LEN(m->rows, m->intervals)
+                             : HYST_INV_TABLE_LEN(m->intervals));
 }
 
 /* init_f64, init_f32: init S (and curve, which S may point at) for m in
  * variant P of number type T, tp holding the four turning-point arrays of
- * cap entries, table table_len(m) numbers. An E's solved inverse replaces
- * its forward curve (a copy of it); its tabulated one is built from it. */
+ * cap entries, table table_len(m) numbers (a grid's or a spline's own
+ * first). An E's solved inverse replaces its forward curve (a copy of it);
+ * its tabulated one, and a spline's, is built from it. */
 #define DEFINE_INIT(P, T)                                                                   \
     static int init_##P(hyst_tcm_t *S, hyst_curve_t *curve, const model_arg_t *m, T *tp,    \
                         size_t cap, T *table)                                               \
@@ -396,11 +395,15 @@ static size_t table_len(const model_arg_t *m)
         T *const xl = tp, *const yl = tp + cap, *const xr = tp + 2u * cap,                  \
                  *const yr = tp + 3u * cap;                                                 \
         int st;                                                                             \
-        if (m->grid || m->spline) { /* a curve of its own table, solved inverse */         \
+        if (m->grid || m->spline) { /* a curve of its own table */                         \
+            const size_t own = own_table_len(m);                                            \
             hyst_curve_t fwd;                                                               \
-            st = m->grid ? hyst_##P##_curve_from_everett_grid(&fwd, &m->g, table, table_len(m)) \
-                         : hyst_##P##_curve_from_spline(&fwd, &m->s, table, table_len(m));  \
-            if (st == HYST_OK && m->inverse) {                                              \
+            st = m->grid ? hyst_##P##_curve_from_everett_grid(&fwd, &m->g, table, own)      \
+                         : hyst_##P##_curve_from_spline(&fwd, &m->s, table, own);           \
+            if (st == HYST_OK && m->inverse && m->intervals > 0u) { /* a spline's table */  \
+                st = hyst_##P##_curve_spline_inverse_table(curve, &fwd, table + own,        \
+                                                           m->intervals);                   \
+            } else if (st == HYST_OK && m->inverse) {                                       \
                 st = m->grid ? hyst_##P##_curve_everett_grid_inverse(curve, &fwd)           \
                              : hyst_curve_spline_inverse(curve, &fwd);                      \
             } else {                                                                        \
@@ -704,16 +707,18 @@ static void spline_arg(hyst_spline_t *f0, const mxArray *const prhs[4])
 
 /* sim_grid or inv_grid (prhs = knots, weights, y_lo, x, capacity, deadband
  * [, ctau, cweight[, rtau, rweight]]), or sim_spline or inv_spline (prhs =
- * lo, hi, values, slopes, x, ...): the kinds whose curve has a table of its
- * own and whose compensator is solved. */
+ * lo, hi, values, slopes, x, capacity, deadband, inv_spline also intervals
+ * (0: the solved compensator), ...): the kinds whose curve has a table of
+ * its own; the grid's compensator is solved. */
 static void run_own(int spline, int inverse, int nlhs, mxArray *plhs[], int nrhs,
                     const mxArray *prhs[])
 {
-    const int at = spline ? 4 : 3; /* x, then capacity, deadband[, the terms] */
+    const int at = spline ? 4 : 3; /* x, then capacity, deadband[, intervals][, the terms] */
+    const int args = at + 3 + (spline && inverse);
     model_arg_t m;
-    if (nrhs != at + 3 && nrhs != at + 5 && nrhs != at + 7) {
+    if (nrhs != args && nrhs != args + 2 && nrhs != args + 4) {
         usage(spline ? (inverse ? "inv_spline takes lo, hi, values, slopes, y, capacity, "
-                                  "deadband[, ctau, cweight[, rtau, rweight]]"
+                                  "deadband, intervals[, ctau, cweight[, rtau, rweight]]"
                                 : "sim_spline takes lo, hi, values, slopes, x, capacity, "
                                   "deadband[, ctau, cweight[, rtau, rweight]]")
                : inverse ? "inv_grid takes knots, weights, y_lo, y, capacity, deadband[, ctau, "
@@ -725,12 +730,15 @@ static void run_own(int spline, int inverse, int nlhs, mxArray *plhs[], int nrhs
     m.grid = !spline;
     m.spline = spline;
     m.inverse = inverse;
+    if (spline && inverse) { /* checked before anything is allocated */
+        m.intervals = count(prhs[at + 3], "intervals", 0.0, INTERVALS_MAX);
+    }
     if (spline) {
         spline_arg(&m.s, prhs);
     } else {
         grid_arg(&m.g, prhs);
     }
-    terms_args(&m, prhs + at + 3, nrhs - at - 3);
+    terms_args(&m, prhs + args, nrhs - args);
     run_tcm(&m, nlhs, plhs, prhs + at);
 }
 

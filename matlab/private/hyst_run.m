@@ -6,8 +6,8 @@ function [out, status, tp_count, inv_err] = hyst_run(command, model, in, args)
 %   HYST_MODEL_ARGS). HYST_INV also takes 'intervals' (the compensator
 %   tabulated as firmware runs it; 0: exact, or solved for the asymmetric
 %   kind) and, for the asymmetric kind with 'intervals', 'rows' (default:
-%   the library's HYST_EVERETT_INV_ROWS); kinds everett_grid and spline have
-%   no table (HYST_SOLVED_COMPENSATOR): either refused.
+%   the library's HYST_EVERETT_INV_ROWS); kind everett_grid has no table
+%   (HYST_SOLVED_COMPENSATOR): either refused.
 %   Table sizes out of the library's range are refused here
 %   (HYST_TABLE_SIZES), before the gateway allocates anything. A model with
 %   a creep term (fields creep_tau, creep_weight) runs it too, as 'hyst sim
@@ -32,7 +32,7 @@ function [out, status, tp_count, inv_err] = hyst_run(command, model, in, args)
     end
     if strcmp(p.kind, 'everett')
       run = [run, {intervals, rows}];
-    elseif strcmp(p.kind, 'poly')
+    elseif any(strcmp(p.kind, {'poly', 'spline'}))
       run = [run, {intervals}];
     end
   end

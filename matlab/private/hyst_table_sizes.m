@@ -30,7 +30,8 @@ function [intervals, rows] = hyst_table_sizes(intervals, rows, kind, caller, sol
   end
   if ~strcmp(kind, 'everett')
     error('hyst:usage', ['%s: ''rows'' belongs to the asymmetric kind''s tabulated ' ...
-                         'compensator; a polynomial f0''s table has intervals only'], caller);
+                         'compensator; a polynomial''s or a spline''s f0^-1 has intervals ' ...
+                         'only'], caller);
   end
   if intervals == 0
     error('hyst:usage', ['%s: ''rows'' needs ''intervals'' (1..%d): without it the ' ...

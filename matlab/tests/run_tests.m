@@ -24,7 +24,7 @@ function failed = run_tests(root, ref, cli)
            @t_rate_refused, @t_rate_fit_as_cli, @t_grid_sim_inv_equal_cli, @t_grid_written_as_cli, ...
            @t_grid_header_equals_cli, @t_grid_refused, @t_grid_fit_as_cli, ...
            @t_grid_chosen_as_cli, @t_grid_fit_undetermined, @t_spline_runs_as_its_polynomial, ...
-           @t_spline_inv_undoes_sim, @t_spline_save_load, @t_spline_header_equals_cli, ...
+           @t_spline_inv_undoes_sim, @t_spline_inv_table_equals_cli, @t_spline_save_load, @t_spline_header_equals_cli, ...
            @t_spline_refused, @t_spline_fit_recovers_the_plant, @t_fit_missing_first_input, ...
            @t_fit_refuses_record, @t_save_writes_regular_files_only, ...
            @t_header_refuses_what_init_refuses, @t_fit_checks_record_as_cli, ...
@@ -1998,6 +1998,48 @@ function t_spline_inv_undoes_sim(ctx)
   expect_error('hyst:ERR_NOT_INVERTIBLE', @() hyst_inv(flat, 0.5));
 end
 
+function t_spline_inv_table_equals_cli(ctx)
+  % hyst_inv(s, y, 'intervals', N): the tabulated compensator
+  % (hyst_*_curve_spline_inverse_table()), bit for bit hyst inv --model
+  % --intervals N (with a creep term too), INV_ERR the error it prints, not
+  % the solved compensator's drives; single: hyst_f32_*; with
+  % 'compensator', true, 'intervals', N hyst_header is hyst header
+  % --compensator --intervals N
+  [plant, x] = spline_plant();
+  file = fullfile(ctx.tmp, 'spline_plant.hyst');
+  hyst_model_save(file, plant);
+  y = hyst_sim(plant, x);
+  exact = hyst_inv(plant, y);
+  fin = fullfile(ctx.tmp, 'spline_tab_in.txt');
+  write_numbers(fin, y);
+  for n = [8 64 256]
+    [xt, st, ~, err] = hyst_inv(plant, y, 'intervals', n);
+    check(st == 0 && err > 0 && max(abs(xt - exact)) > 0, ...
+          'intervals %d: status %d, error %g: the table was not used', n, st, err);
+    check(cli_model_equal(ctx, sprintf('inv --intervals %d', n), file, y, xt, 0), ...
+          'intervals %d: differs from hyst inv --model --intervals', n);
+    said = run_cli(ctx, sprintf('inv --model "%s" --intervals %d "%s" 2>&1 >/dev/null', ...
+                                file, n, fin));
+    cli_err = sscanf(said(strfind(said, 'measured error') + numel('measured error'):end), '%g', 1);
+    check(abs(err - cli_err) <= 1e-8 * cli_err, 'intervals %d: error %.9g, hyst inv: %s', n, ...
+          err, said);
+  end
+  xs = hyst_inv(plant, single(y), 'intervals', 64);
+  check(isa(xs, 'single') && max(abs(double(xs) - exact)) < 1e-4, 'single: %g from the solved', ...
+        max(abs(double(xs) - exact)));
+  hyst_model_save(file, setfield(setfield(plant, 'creep_tau', 300), 'creep_weight', 0.05));
+  m = hyst_model_load(file);
+  ym = hyst_sim(m, x);
+  check(cli_model_equal(ctx, 'inv --intervals 64', file, ym, hyst_inv(m, ym, 'intervals', 64), 0), ...
+        'creep: differs from hyst inv --model --intervals');
+  run_cli(ctx, sprintf('header --model "%s" --dir "%s" --compensator --intervals 64 spc 2>&1', ...
+                       file, ctx.tmp));
+  text = hyst_header(m, 'spc', 'compensator', true, 'intervals', 64);
+  check(~isempty(strfind(text, 'spline_inverse_table(&comp, &fwd, comp_table, spc_INTERVALS)')) && ...
+        strcmp(after_first_line(text), after_first_line(fileread(fullfile(ctx.tmp, 'spc.h')))), ...
+        'intervals 64: hyst_header differs from hyst header --compensator --intervals');
+end
+
 function t_spline_save_load(ctx)
   % a spline struct saved and loaded: the same struct, the file the
   % format's text (every key the tool writes); its file with every term
@@ -2046,16 +2088,20 @@ function t_spline_header_equals_cli(ctx)
 end
 
 function t_spline_refused(ctx)
-  % what the tool refuses of a spline is refused here: a table for its
-  % compensator (hyst inv --intervals, hyst header --intervals), a piece that
-  % falls (the library), counts and slopes the model file's reader refuses
-  % (nothing written), a spline file the reader refuses (in its words)
+  % what the tool refuses of a spline is refused here: rows for its
+  % tabulated compensator (hyst inv --rows, hyst header --rows), intervals
+  % out of range, a flat piece (no compensator, tabulated or not), a piece
+  % that falls (the library), counts and slopes the model file's reader
+  % refuses (nothing written), a spline file the reader refuses (in its
+  % words)
   s = spline_cubic();
-  expect_error('hyst:usage', @() hyst_inv(s, 1, 'intervals', 32));
-  msg = error_message(@() hyst_inv(s, 1, 'intervals', 32));
-  check(~isempty(strfind(msg, 'kind spline has no tabulated compensator')), 'inv: %s', msg);
-  expect_error('hyst:usage', @() hyst_header(s, 'sp', 'compensator', true, 'intervals', 32));
   expect_error('hyst:usage', @() hyst_inv(s, 1, 'rows', 8));
+  expect_error('hyst:usage', @() hyst_inv(s, 1, 'intervals', 32, 'rows', 8));
+  expect_error('hyst:usage', @() hyst_inv(s, 1, 'intervals', 0.5));
+  expect_error('hyst:usage', @() hyst_inv(s, 1, 'intervals', 2^20 + 1));
+  expect_error('hyst:usage', @() hyst_header(s, 'sp', 'compensator', true, 'rows', 8));
+  flat = struct('kind', 'spline', 'lo', 0, 'hi', 2, 'values', [0 0 1], 'slopes', [0 0 2]);
+  expect_error('hyst:ERR_NOT_INVERTIBLE', @() hyst_inv(flat, 0.5, 'intervals', 32));
   falls = s;
   falls.values = [0 1.9 2];  % the reader takes it, the library refuses it
   expect_error('hyst:ERR_NOT_INCREASING', @() hyst_sim(falls, 0.5));

@@ -231,21 +231,27 @@ def ModelFromEverettGrid(knots, weights, y_lo, *, dtype=np.float64, capacity=DEF
 
 
 def ModelFromSpline(lo, hi, values, slopes, *, dtype=np.float64, capacity=DEFAULT_CAPACITY,
-                    deadband=0.0, inverse=False, creep_tau=None, creep_weight=None):
+                    deadband=0.0, inverse=False, intervals=0, creep_tau=None, creep_weight=None):
     """The symmetric kind whose f0 is a monotone cubic spline on uniform
     knots (hyst_spline_t): ``values`` and ``slopes`` are f0 and its slope
     (output units per input unit, each >= 0) at the K + 1 knots
     lo + k (hi - lo) / K, k = 0..K (K in 1..SPLINE_MAX_INTERVALS), f0 the
     cubic (Hermite) of those between two knots
-    (hyst_*_curve_from_spline()). ``inverse=True`` gives its compensator,
-    each drive solved on f0's cubic piece per sample
-    (hyst_curve_spline_inverse(); a flat piece has none: ERR_NOT_INVERTIBLE).
-    What the library refuses raises ``HystError`` (a piece that falls:
-    ERR_NOT_INCREASING). ``creep_tau``, ``creep_weight``: a creep term, as
-    :func:`Model` and :func:`Compensator` take it."""
+    (hyst_*_curve_from_spline()). ``inverse=True`` gives its compensator:
+    with ``intervals=0`` (the default) each drive solved on f0's cubic piece
+    per sample (hyst_curve_spline_inverse(); a flat piece has none:
+    ERR_NOT_INVERTIBLE); ``intervals=N`` (1 .. 2^20; ``INV_TABLE`` is the
+    library's default) runs the tabulated compensator firmware runs
+    (hyst_*_curve_spline_inverse_table(), kind HYST_CURVE_SPLINE_INV_TABLE),
+    bit for bit, its ``inverse_error`` the worst error init measured, as a
+    fraction of the drive range. ``intervals`` out of range, or without
+    ``inverse=True``, raises ``HystError`` (ERR_ARG) before the table is
+    allocated. What the library refuses raises ``HystError`` (a piece that
+    falls: ERR_NOT_INCREASING). ``creep_tau``, ``creep_weight``: a creep
+    term, as :func:`Model` and :func:`Compensator` take it."""
     m = _variant(dtype, _hyst.ModelF32, _hyst.ModelF64)(
         float(lo), float(hi), list(map(float, values)), list(map(float, slopes)),
-        _count(capacity, "capacity", 0), bool(inverse))
+        _count(capacity, "capacity", 0), bool(inverse), _count(intervals, "intervals"))
     return _with_deadband_creep(m, deadband, creep_tau, creep_weight)
 
 
@@ -263,10 +269,11 @@ def _with_rate(m, desc):
     return m
 
 
-def _untabulated(desc, **kw):
-    """The model, or (inverse=True) the compensator, of a description of a
-    kind whose compensator has no table (NO_TABLE: everett_grid, spline),
-    with its creep and rate terms."""
+def _curve_kind(desc, **kw):
+    """The model, or (inverse=True) the compensator, of a description of
+    kind everett_grid or spline (a curve made from a table of its own), with
+    its creep and rate terms; ``intervals`` is the spline's alone (its
+    tabulated compensator)."""
     if desc["kind"] == "spline":
         m = ModelFromSpline(desc["lo"], desc["hi"], desc["values"], desc["slopes"],
                             **_creep_of(desc), **kw)
@@ -289,8 +296,8 @@ def model_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY):
     (hyst_*_curve_from_everett_grid()), kind spline (``lo``, ``hi``,
     ``values``, ``slopes``) f0 a monotone cubic spline
     (hyst_*_curve_from_spline()), as ``hyst sim --model`` runs them."""
-    if desc.get("kind", "poly") in NO_TABLE:
-        return _untabulated(desc, dtype=dtype, capacity=capacity)
+    if desc.get("kind", "poly") in ("everett_grid", "spline"):
+        return _curve_kind(desc, dtype=dtype, capacity=capacity)
     if desc.get("kind", "poly") == "everett":
         return _with_rate(ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
                                            desc["terms"], dtype=dtype, capacity=capacity,
@@ -304,31 +311,34 @@ def compensator_from(desc, *, dtype=np.float64, capacity=DEFAULT_CAPACITY, inter
     """The compensator (inverse model) of the model :func:`model_from` gives:
     desired output in, drive out, for either kind. ``intervals=0`` (the
     default) gives the exact one; ``intervals=N`` the tabulated one firmware
-    runs: kind poly as in :func:`Compensator`, kind everett as in
-    :func:`ModelFromEverett` (with its ``rows``). ``rows`` is the asymmetric
-    kind's: given for kind poly, it raises ``HystError`` (ERR_ARG). With
+    runs: kind poly as in :func:`Compensator`, kind spline as in
+    :func:`ModelFromSpline`, kind everett as in :func:`ModelFromEverett`
+    (with its ``rows``). ``rows`` is the asymmetric kind's: given for kind
+    poly or spline, it raises ``HystError`` (ERR_ARG). With
     the description's creep term, the compensator subtracts the creep's
     contribution from each desired output first (:func:`Compensator`); with
     its rate term, the rate term's too (known before the drive is chosen).
     Kind everett_grid's compensator solves each branch in closed form
-    (hyst_*_curve_everett_grid_inverse()), kind spline's each drive on f0's
-    cubic piece per sample (hyst_curve_spline_inverse()), as ``hyst inv
-    --model``: they have no table (``intervals`` or ``rows`` given raise
-    ``HystError``, ERR_ARG)."""
+    (hyst_*_curve_everett_grid_inverse()), as ``hyst inv --model``: it has
+    no table (``intervals`` or ``rows`` given raise ``HystError``,
+    ERR_ARG)."""
     kind = desc.get("kind", "poly")
     if kind in NO_TABLE:
         if intervals or rows is not None:
             raise HystError(_hyst.Status.ERR_ARG,
                             f"kind {kind} has no tabulated compensator ({NO_TABLE[kind]})")
-        return _untabulated(desc, dtype=dtype, capacity=capacity, inverse=True)
+        return _curve_kind(desc, dtype=dtype, capacity=capacity, inverse=True)
+    if kind != "everett" and rows is not None:
+        raise HystError(_hyst.Status.ERR_ARG,
+                        f"rows is the asymmetric kind's table (kind everett), not kind {kind}'s")
+    if kind == "spline":
+        return _curve_kind(desc, dtype=dtype, capacity=capacity, inverse=True,
+                           intervals=intervals)
     if kind == "everett":
         return _with_rate(ModelFromEverett(desc["degree"], desc["lo"], desc["hi"], desc["y_lo"],
                                            desc["terms"], dtype=dtype, capacity=capacity,
                                            inverse=True, intervals=intervals, rows=rows,
                                            **_creep_of(desc)), desc)
-    if rows is not None:
-        raise HystError(_hyst.Status.ERR_ARG,
-                        "rows is the asymmetric kind's table (kind everett), not kind poly's")
     return _with_rate(Compensator(desc["coeffs"], desc["lo"], desc["hi"], dtype=dtype,
                                   capacity=capacity, intervals=intervals, **_creep_of(desc)),
                       desc)

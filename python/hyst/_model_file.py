@@ -18,8 +18,7 @@ _CREEP_MAX_TERMS = 4  # HYST_CREEP_MAX_TERMS
 _GRID_MAX_INTERVALS = 12  # HYST_EVERETT_GRID_MAX_INTERVALS
 #: The kinds whose compensator has no table (it solves each drive): why, as
 #: ``hyst inv`` and ``hyst header`` say it.
-NO_TABLE = {"everett_grid": "its compensator solves each branch in closed form",
-            "spline": "its compensator solves each drive on f0's cubic piece, per sample"}
+NO_TABLE = {"everett_grid": "its compensator solves each branch in closed form"}
 
 
 def everett_terms(degree):
@@ -258,14 +257,16 @@ def _check_curve(kind, coeffs, lo, hi, degree, y_lo, terms, knots, weights, valu
         _api.Model(coeffs, lo, hi, capacity=2)
 
 
-def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows):
+def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows,
+                      values=None, slopes=None):
     """The compensator's table in float and in double, sealed: the text
-    ``hyst header --compensator`` writes, from the same C (tools/model_text)."""
+    ``hyst header --compensator`` writes, from the same C (tools/model_text);
+    kind spline's says how firmware builds it, and its size."""
     from . import _hyst  # the extension: this module stays importable without it
     everett = kind == "everett"
     if rows is not None and not everett:
-        raise ValueError("rows applies to kind everett only: the compensator of kind poly "
-                         "tabulates f0^-1 in one row (intervals alone)")
+        raise ValueError("rows applies to kind everett only: the compensators of kinds poly "
+                         "and spline tabulate f0^-1 in one row (intervals alone)")
     if intervals is None:
         intervals = _hyst.EVERETT_INV_INTERVALS if everett else _hyst.INV_TABLE
     if rows is None:
@@ -275,7 +276,8 @@ def _compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals
         raise ValueError("intervals and rows are whole numbers")
     return _hyst.model_header_table(name, kind, float(lo), float(hi), list(coeffs or []),
                                     float(degree or 0), float(y_lo or 0.0), list(terms or []),
-                                    int(intervals), int(rows))
+                                    int(intervals), int(rows), list(values or []),
+                                    list(slopes or []))
 
 
 def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None, y_lo=None,
@@ -302,9 +304,11 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
     ``hyst_curve_everett_inverse_table_const()`` (``intervals``, ``rows``:
     the table's size, the library's defaults when None); kind
     ``everett_grid`` has no table (``hyst_curve_everett_grid_inverse()``
-    solves each branch in closed form), nor kind ``spline``
-    (``hyst_curve_spline_inverse()`` solves each drive per sample): the
-    header says so. A creep term
+    solves each branch in closed form), nor kind ``spline`` without
+    ``intervals`` (``hyst_curve_spline_inverse()`` solves each drive per
+    sample): the header says so; with ``intervals`` the spline's is the
+    table firmware builds at init (``hyst_curve_spline_inverse_table()``),
+    measured here: ``name_INTERVALS`` and the calls. A creep term
     (``creep_tau``, ``creep_weight``, as :func:`save_model` takes them) adds
     ``#include "hyst/creep.h"``, ``name_CREEP_TERMS``, ``name_creep_tau`` and
     ``name_creep_weight`` after the model, as ``hyst header`` writes them,
@@ -325,6 +329,9 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
                                   terms=terms, knots=knots, weights=weights)
     if compensator and kind in NO_TABLE and (intervals is not None or rows is not None):
         raise ValueError(f"kind {kind} has no compensator table ({NO_TABLE[kind]})")
+    # a spline's compensator is solved per sample unless intervals tabulates it
+    solved = compensator and (kind in NO_TABLE or
+                              (kind == "spline" and intervals is None and rows is None))
     if kind == "everett":
         degree, y_lo, terms = _everett_args(degree, y_lo, terms)
         what = (f"asymmetric model (branch function E),\n * degree {degree}, "
@@ -341,7 +348,7 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
                 f"intervals, domain [{float(lo):.9g}, {float(hi):.9g}]" +
                 (";\n * the compensator: hyst_curve_spline_inverse() of that curve,\n"
                  " * then hyst_init_curve(); each drive solved on its cubic piece per\n"
-                 " * sample, no table of its own" if compensator else ""))
+                 " * sample, no table of its own" if solved else ""))
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
         what = (f"major ascending curve f0,\n * degree {len(coeffs) - 1}, "
@@ -350,8 +357,9 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
     head = _model_call("model_header", kind, lo, hi, 0, coeffs, degree, y_lo, terms, creep_tau,
                        creep_weight, name, True, rate=rate, knots=knots, weights=weights,
                        values=values, slopes=slopes)
-    table = (_compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows)
-             if compensator and kind not in NO_TABLE else "")  # a grid's, a spline's: none
+    table = (_compensator_text(name, kind, coeffs, lo, hi, degree, y_lo, terms, intervals, rows,
+                               values, slopes)
+             if compensator and not solved else "")
     from . import _hyst
     return (f"/* Generated by the Python package hyst: {what}. */\n" + head + table +
             _hyst.model_header(name, False, kind, 0.0, 1.0, [], 0.0, 0.0, [], [], []))

@@ -162,6 +162,7 @@ template <class T> struct Ops;
         static constexpr auto curve_from_everett_grid = hyst_##P##_curve_from_everett_grid_; \
         static constexpr auto curve_everett_grid_inverse = hyst_##P##_curve_everett_grid_inverse; \
         static constexpr auto curve_from_spline = hyst_##P##_curve_from_spline_; \
+        static constexpr auto curve_spline_inverse_table = hyst_##P##_curve_spline_inverse_table; \
         static constexpr auto step = hyst_##P##_step;                       \
         static constexpr auto process = hyst_##P##_process;                 \
         static constexpr auto set_deadband = hyst_##P##_set_deadband;       \
@@ -472,13 +473,19 @@ template <class T> struct Real : Owned<T, T> {
 
     /* The symmetric kind whose f0 is a monotone cubic spline on uniform knots
      * (hyst_spline_t: f0 and its slope at lo + k (hi - lo) / K, k = 0..K), or
-     * its compensator (HYST_CURVE_SPLINE_INV, solved per sample on f0's
-     * cubic piece: no table), as `hyst sim --model` and `hyst inv --model`
-     * build them. */
+     * its compensator: solved per sample on f0's cubic piece (intervals 0:
+     * HYST_CURVE_SPLINE_INV) or tabulated as firmware runs it
+     * (HYST_CURVE_SPLINE_INV_TABLE), as `hyst sim --model` and `hyst inv
+     * --model [--intervals N]` build them. The arguments are checked before
+     * the table is allocated. */
     Real(double lo_, double hi_, const std::vector<double> &values_,
-         const std::vector<double> &slopes_, size_t capacity, bool inverse_)
+         const std::vector<double> &slopes_, size_t capacity, bool inverse_, long long intervals_)
         : Owned<T, T>(capacity), inverse(inverse_)
     {
+        if (!inverse && intervals_ != 0) {
+            raise_status(HYST_ERR_ARG, "intervals is the compensator's (inverse=True)");
+        }
+        intervals = table_intervals(intervals_);
         if (values_.size() < 2u || values_.size() > HYST_SPLINE_MAX_INTERVALS + 1u) {
             raise_status(HYST_ERR_DEGREE, "a spline needs 2 .. HYST_SPLINE_MAX_INTERVALS + 1 "
                                           "values (one per knot)");
@@ -498,7 +505,12 @@ template <class T> struct Real : Owned<T, T> {
         check(O::curve_from_spline(&fwd, &f0, curve_table.data(), curve_table.size(),
                                    HYST_LAYOUT),
               "curve");
-        attach_curve(capacity, hyst_curve_spline_inverse);
+        if (intervals > 0u) {
+            table.resize(HYST_INV_TABLE_LEN(intervals));
+            check(O::curve_spline_inverse_table(&inv, &fwd, table.data(), intervals),
+                  "compensator table");
+        }
+        attach_curve(capacity, intervals > 0u ? nullptr : hyst_curve_spline_inverse);
         this->kind = "spline";
         this->values = values_;
         this->slopes = slopes_;
@@ -1269,7 +1281,8 @@ std::string model_header(const std::string &name, bool open, const std::string &
 std::string model_header_table(const std::string &name, const std::string &kind, double lo,
                                double hi, const std::vector<double> &coeffs, double degree,
                                double y_lo, const std::vector<double> &terms, size_t intervals,
-                               size_t rows)
+                               size_t rows, const std::vector<double> &values,
+                               const std::vector<double> &slopes)
 {
     if (!model_text_identifier(name.c_str()) || name.size() != std::strlen(name.c_str())) {
         throw nb::value_error(("'" + name + "' is not a C identifier").c_str());
@@ -1277,7 +1290,9 @@ std::string model_header_table(const std::string &name, const std::string &kind,
     if (intervals > (1u << 20) || rows > 4096u) {
         throw nb::value_error("intervals: at most 1048576 (per row); rows: at most 4096");
     }
-    const model_text_t m = model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, {}, {});
+    const model_text_t m =
+        model_of(kind, lo, hi, 0.0, coeffs, degree, y_lo, terms, {}, {}, {}, {}, {}, {}, values,
+                 slopes);
     std::vector<char> buf(model_text_header_table_size(&m, rows, intervals));
     size_t len = 0u;
     hyst_status_t st = HYST_OK;
@@ -1598,8 +1613,9 @@ template <class T> void bind_real(nb::module_ &m, const char *model, const char 
                       bool>(),
              "knots"_a, "weights"_a, "y_lo"_a, "capacity"_a, "inverse"_a = false)
         .def(nb::init<double, double, const std::vector<double> &, const std::vector<double> &,
-                      size_t, bool>(),
-             "lo"_a, "hi"_a, "values"_a, "slopes"_a, "capacity"_a, "inverse"_a = false)
+                      size_t, bool, long long>(),
+             "lo"_a, "hi"_a, "values"_a, "slopes"_a, "capacity"_a, "inverse"_a = false,
+             "intervals"_a = 0)
         .def("step", &R::step, "x"_a, "One sample in, one output out.")
         .def_prop_rw("deadband", [](const R &s) { return s.deadband; }, &R::set_deadband)
         .def_prop_ro("output", [](const R &s) { return Ops<T>::output(&s.S); })
@@ -1821,7 +1837,9 @@ NB_MODULE(_hyst, m)
           "A firmware header's opening (the model) or close, as `hyst header` writes them.");
     m.def("model_header_table", &model_header_table, "name"_a, "kind"_a, "lo"_a, "hi"_a,
           "coeffs"_a, "degree"_a, "y_lo"_a, "terms"_a, "intervals"_a, "rows"_a,
-          "A firmware header's compensator table, as `hyst header --compensator` writes it.");
+          "values"_a = std::vector<double>(), "slopes"_a = std::vector<double>(),
+          "A firmware header's compensator table, as `hyst header --compensator` writes it "
+          "(kind spline: values, slopes; how firmware builds it, its size).");
     m.def("select", &select_candidates, "x"_a, "y"_a, "kinds"_a, "method"_a, "lo"_a, "hi"_a, "skip"_a,
           "delay"_a, "t_degree"_a, "creep_tau"_a, "rate_tau"_a, "vx"_a, "vy"_a,
           "hyst fit's automatic choice (fit_search(); delay < 0: chosen, scaled to the drive and "

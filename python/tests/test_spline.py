@@ -3,16 +3,20 @@
 cubic spline on uniform knots, model files of kind spline) in the package:
 ModelFromSpline and its compensator are the library's block calls bit for
 bit; a file is read by the one reader in C and runs as `hyst sim --model`
-and `hyst inv --model` run it; save_model and header_text write what the
+and `hyst inv --model [--intervals N]` run it (the tabulated compensator,
+hyst_curve_spline_inverse_table(), too); save_model and header_text write what the
 tool writes; fit(kind="spline") is `hyst fit --kind spline`'s fit and
 choice, its model file the tool's byte for byte (tests/cli/spline.sh's
 cases)."""
+
+import re
 
 import numpy as np
 import pytest
 
 import hyst
-from conftest import inv_matches_cli, run_cli, same_bits, signal, sim_matches_cli
+from conftest import (inv_matches_cli, numbers, run_cli, same_bits, signal,
+                      sim_matches_cli)
 
 # f0 = x^3 + x on [0, 1] in two pieces: a cubic is its own Hermite spline
 CUBIC = {"kind": "spline", "lo": 0.0, "hi": 1.0, "values": [0.0, 0.625, 2.0],
@@ -171,6 +175,38 @@ def test_sim_and_inv_match_the_cli_bit_for_bit(c_build, tmp_path, extra):
         assert np.max(np.abs(drive - np.clip(x, LO, HI))) < 1e-9 * (HI - LO)
 
 
+@pytest.mark.parametrize("intervals", [8, 64, hyst.INV_TABLE])
+@pytest.mark.parametrize("extra", ["", PLANT_CREEP_EXTRA], ids=["plain", "creep"])
+def test_the_tabulated_compensator_is_the_clis(c_build, tmp_path, intervals, extra):
+    """intervals=N: hyst_curve_spline_inverse_table()'s compensator, as
+    `hyst inv --model --intervals N` runs it, bit for bit (ModelFromSpline
+    and compensator_from alike); its inverse_error the error the tool
+    prints; not the solved compensator's drives, within that error of them
+    times the turning points each branch stands on."""
+    path = plant_file(tmp_path, extra=extra)
+    desc = hyst.load_model(path)
+    x = np.concatenate([signal(3000, LO, HI, seed=4), loops()])
+    y = hyst.model_from(desc).process(x)
+    out = tmp_path / "y.txt"
+    np.savetxt(out, y, fmt="%.17g")
+    cli = run_cli(c_build, "inv", "--model", path, "--digits", 17, "--intervals", intervals, out)
+    comp = hyst.compensator_from(desc, intervals=intervals)
+    assert comp.kind == "spline" and comp.inverse and comp.intervals == intervals
+    drive = comp.process(y)
+    assert np.array_equal(numbers(cli.stdout), drive)
+    err = float(re.search(r"init's worst measured error (\S+) of", cli.stderr).group(1))
+    assert comp.inverse_error == pytest.approx(err, rel=1e-8)
+    if not extra:
+        direct = hyst.ModelFromSpline(LO, HI, desc["values"], desc["slopes"], inverse=True,
+                                      intervals=intervals)
+        assert np.array_equal(direct.process(y), drive)
+        exact = hyst.compensator_from(desc).process(y)
+        tp = numbers(run_cli(c_build, "inv", "--model", path, "--digits", 17, "--tp",
+                             "--intervals", intervals, out).stdout.replace(",", " "))
+        assert 0 < np.max(np.abs(drive - exact))
+        assert np.all(np.abs(drive - exact) <= (tp[1::2] + 1) * 1.01 * err * (HI - LO) + 1e-12)
+
+
 def test_files_are_written_as_the_tool_writes_them(c_build, tmp_path):
     """A spline fitted and saved by `hyst fit --kind spline --save`, read and
     written back by the package: the same text, byte for byte; the
@@ -207,9 +243,15 @@ def test_header_is_the_clis(c_build, tmp_path):
     text = hyst.header_text("s", **hyst.load_model(path), compensator=True)
     assert "hyst_curve_spline_inverse()" in text and "hyst_curve_spline_inverse()" in cli_text
     assert text[text.index(guard):] == cli_text[cli_text.index(guard):]
-    for extra in ({"intervals": 32}, {"rows": 8}):
-        with pytest.raises(ValueError, match="kind spline has no compensator table"):
-            hyst.header_text("s", **hyst.load_model(path), compensator=True, **extra)
+    # with intervals: the table firmware builds at init, measured here, its size
+    run_cli(c_build, "header", "--model", path, "--dir", tmp_path, "--compensator",
+            "--intervals", 32, "s")
+    cli_text = (tmp_path / "s.h").read_text()
+    text = hyst.header_text("s", **hyst.load_model(path), compensator=True, intervals=32)
+    assert "hyst_curve_spline_inverse_table(&comp, &fwd, comp_table, s_INTERVALS)" in text
+    assert text[text.index(guard):] == cli_text[cli_text.index(guard):]
+    with pytest.raises(ValueError, match="rows applies to kind everett only"):
+        hyst.header_text("s", **hyst.load_model(path), compensator=True, rows=8)
 
 
 # the edits of tests/cli/spline.sh's one.hyst the reader refuses, in the tool's words
@@ -276,10 +318,19 @@ def test_refusals(tmp_path):
         with pytest.raises(hyst.HystError) as err:
             hyst.ModelFromSpline(0, 1, values, slopes)
         assert err.value.status == status
-    # no tabulated compensator
-    for opts in ({"intervals": 32}, {"rows": 8}):
-        with pytest.raises(hyst.HystError, match="kind spline has no tabulated compensator"):
+    # the tabulated compensator's arguments: rows (kind everett's), intervals out of range or
+    # without inverse=True; a flat piece
+    for opts in ({"rows": 8}, {"intervals": 32, "rows": 8}, {"intervals": 2 ** 20 + 1},
+                 {"intervals": -1}):
+        with pytest.raises(hyst.HystError) as err:
             hyst.compensator_from(CUBIC, **opts)
+        assert err.value.status == hyst.Status.ERR_ARG
+    with pytest.raises(hyst.HystError) as err:
+        hyst.ModelFromSpline(0, 1, CUBIC["values"], CUBIC["slopes"], intervals=32)
+    assert err.value.status == hyst.Status.ERR_ARG
+    with pytest.raises(hyst.HystError) as err:
+        hyst.compensator_from(flat, intervals=32)
+    assert err.value.status == hyst.Status.ERR_NOT_INVERTIBLE
     # the writer refuses what the reader would, writing nothing
     bad = tmp_path / "bad.hyst"
     for desc, words in ((dict(CUBIC, slopes=[1.0, -1.75, 4.0]), "slopes: a slope is not >= 0"),

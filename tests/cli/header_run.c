@@ -7,8 +7,10 @@
  *  - alone: the curve made by the library's constructor, exit status 1 if
  *    it refuses it;
  *  - -DWANT=y1,y2,...: also its compensator (hyst_curve_everett_grid_inverse()
- *    or hyst_curve_spline_inverse()) from rest over those desired outputs,
- *    each drive printed with DIGITS significant digits (default 9);
+ *    or hyst_curve_spline_inverse(); with -DTABLED the spline's tabulated
+ *    one, hyst_curve_spline_inverse_table() on NAME_INTERVALS) from rest over
+ *    those desired outputs, each drive printed with DIGITS significant
+ *    digits (default 9);
  *  - -DSIM: also the model from rest over the inputs on standard input, each
  *    output printed with 17 significant digits (what 'hyst sim --model
  *    --digits 17' must print). */
@@ -26,7 +28,15 @@
 #ifdef KIND_SPLINE
 #define TABLE_LEN HYST_SPLINE_TABLE_LEN(INTERVALS)
 #define FORWARD(curve, table) hyst_curve_from_spline((curve), &MODEL, (table), TABLE_LEN)
+#ifdef TABLED
+#define PASTE_(a, b) a##b
+#define PASTE(a, b) PASTE_(a, b)
+#define COMP_INTERVALS PASTE(MODEL, _INTERVALS)
+static hyst_real_t comp_table[HYST_INV_TABLE_LEN(COMP_INTERVALS)];
+#define INVERSE(inv, fwd) hyst_curve_spline_inverse_table((inv), (fwd), comp_table, COMP_INTERVALS)
+#else
 #define INVERSE hyst_curve_spline_inverse
+#endif
 #else
 #define TABLE_LEN HYST_EVERETT_GRID_TABLE_LEN(INTERVALS)
 #define FORWARD(curve, table) hyst_curve_from_everett_grid((curve), &MODEL, (table), TABLE_LEN)

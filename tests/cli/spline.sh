@@ -6,9 +6,8 @@
 #    its own Hermite spline), exact at these inputs, rising and falling;
 #  - malformed files are refused, naming line and field (the reader), or
 #    with the library's reason (a piece that falls); inv --model gives the
-#    drives of sim's outputs back; inv --intervals refuses the kind (no
-#    tabulated compensator); header --compensator says how firmware builds
-#    it (compiled and run: inv's drives), --sealed, --intervals refused;
+#    drives of sim's outputs back; header --compensator says how firmware
+#    builds it (compiled and run: inv's drives), --sealed, --rows refused;
 #  - header --model writes its hyst_spline_t, which compiles (float and
 #    double) and which the library's constructor accepts;
 #  - a plant whose f0 is a C2 spline of 5 intervals (written from its
@@ -20,7 +19,14 @@
 #    bit; fit's line 1 is the model file's values; inv --model undoes sim
 #    --model on the minor loops; a creep term and the identified range are
 #    saved and read back; a domain above the inputs fitted continues f0 as a
-#    straight line at its slope there, by whole knot intervals.
+#    straight line at its slope there, by whole knot intervals;
+#  - inv --intervals N (the tabulated compensator, hyst_curve_spline_inverse_table())
+#    on the plant's minor loops: within the error init measured (printed on
+#    stderr, 1.01 times it) of inv --model's drives, times the turning points
+#    each drive's branch stands on (each carries the table's error); header
+#    --compensator --intervals N, compiled and run as firmware builds it,
+#    prints those drives bit for bit (double build); --rows, --sealed and
+#    a bad N refused, nothing on standard output.
 #   spline.sh <hyst> <C compiler> <include dir> <library sources dir> <work dir>
 set -euo pipefail
 tool=$1 cc=$2 inc=$3 src=$4 work=$5
@@ -70,10 +76,6 @@ EOF
 # inv --model: the compensator (hyst_curve_spline_inverse()): the drives of sim's outputs back
 "$tool" inv --model one.hyst y.txt > xi.txt || fail "inv of a spline model"
 [ "$(tr '\n' ' ' < xi.txt)" = "$(tr '\n' ' ' < x.txt)" ] || fail "inv: $(tr '\n' ' ' < xi.txt)"
-if "$tool" inv --model one.hyst --intervals 32 y.txt > /dev/null 2> err.txt; then
-    fail "inv --intervals accepted a spline"
-fi
-grep -q "kind spline has no tabulated compensator" err.txt || fail "inv --intervals: $(cat err.txt)"
 
 # header --model: the hyst_spline_t, accepted by the library's constructor (header_run.c, in
 # float and in double)
@@ -85,7 +87,7 @@ for d in "" -DHYST_USE_DOUBLE; do
     "./run$d" || fail "the header's spline refused ($d)"
 done
 # header --compensator: the curve's compensator built in firmware gives inv --model's
-# drives; no table of its own (--intervals, --rows, --sealed refused)
+# drives; no table of its own without --intervals
 "$tool" header --model one.hyst --compensator spline_comp 2> /dev/null || fail "header --compensator"
 grep -q "hyst_curve_spline_inverse()" spline_comp.h || fail "header --compensator: no inverse named"
 # (6 digits: the float build's bisection ends within its rounding of the drive)
@@ -96,14 +98,7 @@ for d in "" -DHYST_USE_DOUBLE; do
     [ "$(tr '\n' ' ' < xc.txt)" = "$(tr '\n' ' ' < xi.txt)" ] ||
         fail "header --compensator drives ($d): $(tr '\n' ' ' < xc.txt), inv: $(tr '\n' ' ' < xi.txt)"
 done
-for opt in --sealed "--intervals 32" "--rows 8"; do
-    # shellcheck disable=SC2086
-    if "$tool" header --model one.hyst --compensator $opt s2 2> err.txt; then
-        fail "header --compensator $opt accepted a spline"
-    fi
-    grep -q "kind spline has no .*hyst_curve_spline_inverse()" err.txt ||
-        fail "header --compensator $opt: $(cat err.txt)"
-done
+! grep -q "_INTERVALS" spline_comp.h || fail "header --compensator: a table without --intervals"
 
 # ---- a plant of the fit's class: f0' = (K / (hi - lo)) sum w_j B_j (quadratic B-splines on
 # the uniform knots), K = 5 on [0, 3]: f0(x_k) = the sum over intervals i < k of
@@ -203,4 +198,47 @@ awk 'NR == 1 { a = $1 } NR == 2 { b = $1 } END { exit !(b > a) }' wy.txt ||
 "$tool" sim --model wide.hyst --digits 17 px.txt > wfy.txt 2> /dev/null || fail "sim of wide.hyst"
 paste -d ' ' py.txt wfy.txt | awk '{ d = $1 - $2; s += d * d; n++ } END { exit !(sqrt(s / n) < 0.001) }' ||
     fail "the wider domain's model misses the plant"
+# ---- inv --intervals N: the tabulated compensator, on the plant's minor loops ----
+"$tool" sim --model plant0.hyst --digits 17 px.txt > p17.txt || fail "sim of the plant (17 digits)"
+"$tool" inv --model plant0.hyst --digits 17 p17.txt > exact.txt || fail "inv of the plant (17 digits)"
+note_re="^hyst inv: tabulated compensator, ([0-9]+) intervals \(([0-9]+) of them evaluated exactly\): init's worst measured error ([0-9.e+-]+) of the drive range \[0, 3\], ([0-9.e+-]+)$"
+for n in 8 64 default; do
+    "$tool" inv --model plant0.hyst --digits 17 --tp --intervals $n p17.txt > tab.txt 2> err.txt ||
+        fail "inv --intervals $n: $(cat err.txt)"
+    [[ "$(cat err.txt)" =~ $note_re ]] || fail "inv --intervals $n: the note: $(cat err.txt)"
+    [ "$n" != default ] || [ "${BASH_REMATCH[1]}" -eq 256 ] || fail "default: ${BASH_REMATCH[1]} intervals"
+    [ "$(wc -l < tab.txt)" -eq "$(wc -l < px.txt)" ] || fail "inv --intervals $n: $(wc -l < tab.txt) lines"
+    paste -d, exact.txt tab.txt | awk -F, -v e="${BASH_REMATCH[3]}" '
+        { d = $2 - $1; d = d < 0 ? -d : d; allowed = ($3 + 1) * (1.01 * e + 1e-15) * 3
+          if (d > allowed) { printf "line %d: |%s - %s| above %.3g (tp %d)", NR, $2, $1, allowed, $3; exit 1 }
+          if (d / 3 > w) w = d / 3 }
+        END { if (!(w > 0)) { print "the table was not used"; exit 1 } }' > cmp.txt ||
+        fail "inv --intervals $n against the exact compensator: $(cat cmp.txt)"
+done
+# header --compensator --intervals N: what firmware builds at init, its drives those of inv
+"$tool" header --model plant0.hyst --compensator --intervals 64 plant_comp 2> /dev/null ||
+    fail "header --compensator --intervals"
+grep -q "^#define plant_comp_INTERVALS 64u$" plant_comp.h &&
+    grep -q "hyst_curve_spline_inverse_table(&comp, &fwd, comp_table, plant_comp_INTERVALS)" plant_comp.h ||
+    fail "header --compensator --intervals: $(cat plant_comp.h)"
+"$tool" inv --model plant0.hyst --digits 17 --intervals 64 p17.txt > tab.txt 2> /dev/null || fail "inv --intervals 64"
+head -400 p17.txt > want.txt
+bash "$here/header_run.sh" "$cc" "$inc" "$src" plant_comp 5 -DKIND_SPLINE -DTABLED -DDIGITS=17 \
+    -DWANT="$(paste -s -d, want.txt)" || fail "header --compensator --intervals"
+./run-DHYST_USE_DOUBLE > hc.txt || fail "the header's tabulated compensator refused (double)"
+cmp -s hc.txt <(head -400 tab.txt) || fail "the header's drives differ from inv --intervals 64"
+./run > /dev/null || fail "the header's tabulated compensator refused (float)"
+# refusals: exit 1, nothing on standard output
+for cmd in "inv --model plant0.hyst --intervals 64 --rows 8 p17.txt" \
+           "inv --model plant0.hyst --intervals 0 p17.txt" \
+           "inv --model plant0.hyst --intervals 1048577 p17.txt" \
+           "header --model plant0.hyst --compensator --sealed --intervals 64 s2" \
+           "header --model plant0.hyst --compensator --rows 8 --intervals 64 s2" \
+           "header --model plant0.hyst --compensator --intervals 0 s2"; do
+    rc=0
+    # shellcheck disable=SC2086
+    "$tool" $cmd > out.txt 2> err.txt || rc=$?
+    [ "$rc" -eq 1 ] && [ ! -s out.txt ] && [ -s err.txt ] && [ ! -e s2.h ] ||
+        fail "$cmd: exit $rc, $(head -c 200 out.txt) $(cat err.txt)"
+done
 echo "spline.sh: OK"

@@ -224,8 +224,9 @@ int cli_opt_table_size(const cli_args_t *a, const char *v, int rows, unsigned lo
 int cli_table_sizes(const char *cmd, int everett, unsigned long *intervals, unsigned long *rows)
 {
     if (*rows > 0ul && !everett) {
-        return cli_fail(cmd, "option --rows applies to kind everett only: the compensator of "
-                             "kind poly tabulates f0^-1 in one row (--intervals alone)");
+        return cli_fail(cmd, "option --rows applies to kind everett only: the compensators of "
+                             "kinds poly and spline tabulate f0^-1 in one row (--intervals "
+                             "alone)");
     }
     if (*intervals == CLI_TABLE_DEFAULT) {
         *intervals = everett ? HYST_EVERETT_INV_INTERVALS : HYST_INV_TABLE;

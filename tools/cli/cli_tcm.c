@@ -248,12 +248,14 @@ static unsigned long tcm_tp(void *ctx)
  * table allocated here (firmware gives a static array of the same length):
  * kind poly hyst_curve_inverse_table() of f0's curve (what
  * hyst_init_inverse_table() does before attaching the instance), kind
- * everett hyst_curve_everett_inverse_table() of E's curve @p fwd. The
+ * everett hyst_curve_everett_inverse_table() of E's curve @p fwd, kind
+ * spline hyst_curve_spline_inverse_table() of f0's curve @p fwd. The
  * curve into *tab, its table into *table (the caller frees it). */
-static int tabulate(const char *cmd, const char *model_path, int everett, const hyst_poly_t *f0,
+static int tabulate(const char *cmd, const char *model_path, int kind, const hyst_poly_t *f0,
                     const hyst_curve_t *fwd, unsigned long intervals, unsigned long rows,
                     double **table, hyst_curve_t *tab)
 {
+    const int everett = kind == CLI_MODEL_EVERETT;
     const char *opts = everett ? "options --rows/--intervals" : "option --intervals";
     const double n = everett ? 2.0 * ((double)rows + 1.0) * 4.0 * ((double)intervals + 1.0)
                              : 4.0 * ((double)intervals + 1.0);
@@ -267,6 +269,8 @@ static int tabulate(const char *cmd, const char *model_path, int everett, const 
     }
     if (everett) {
         st = hyst_curve_everett_inverse_table(tab, fwd, *table, (size_t)rows, (size_t)intervals);
+    } else if (kind == CLI_MODEL_SPLINE) {
+        st = hyst_curve_spline_inverse_table(tab, fwd, *table, (size_t)intervals);
     } else {
         st = hyst_curve_from_poly(&poly, f0);
         if (st == HYST_OK) {
@@ -391,12 +395,10 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
     if (model_path != NULL && (model.kind == CLI_MODEL_GRID || model.kind == CLI_MODEL_SPLINE)) {
         static double grid_table[CLI_GRID_TABLE_LEN], spline_table[CLI_SPLINE_TABLE_LEN];
         const int spline = model.kind == CLI_MODEL_SPLINE;
-        if (intervals > 0ul) {
-            return cli_fail(cmd, "%s: kind %s has no tabulated compensator (it solves %s: inv "
-                                 "--model without --intervals)",
-                            model_path, spline ? "spline" : "everett_grid",
-                            spline ? "each drive on f0's cubic piece, per sample"
-                                   : "each branch in closed form");
+        if (intervals > 0ul && !spline) {
+            return cli_fail(cmd, "%s: kind everett_grid has no tabulated compensator (it solves "
+                                 "each branch in closed form: inv --model without --intervals)",
+                            model_path);
         }
         if ((spline ? cli_spline_curve(cmd, cli_file_name(model_path), &model, &everett,
                                        spline_table)
@@ -404,8 +406,10 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
                                      grid_table)) != 0) {
             return 1;
         }
-        if (inverse && (spline ? hyst_curve_spline_inverse(&everett, &everett)
-                               : hyst_f64_curve_everett_grid_inverse(&everett, &everett)) != HYST_OK) {
+        /* with --intervals the spline's compensator is tabulated from its curve below */
+        if (inverse && intervals == 0ul &&
+            (spline ? hyst_curve_spline_inverse(&everett, &everett)
+                    : hyst_f64_curve_everett_grid_inverse(&everett, &everett)) != HYST_OK) {
             return cli_fail(cmd, "%s: the model has no compensator (%s)", model_path,
                             spline ? "f0 is flat between two knots: no drive there is the inverse"
                                    : "its outputs never rise");
@@ -447,9 +451,8 @@ int cli_tcm_command(int argc, char **argv, const char *cmd, const char *help, in
         r.curve = NULL;
     }
     if (intervals > 0ul) { /* the tabulated compensator, on the engine as a curve */
-        if (tabulate(cmd, model_path != NULL ? cli_file_name(model_path) : NULL,
-                     model.kind == CLI_MODEL_EVERETT, &f0, &everett, intervals, rows, &table,
-                     &tab) != 0) {
+        if (tabulate(cmd, model_path != NULL ? cli_file_name(model_path) : NULL, model.kind,
+                     &f0, &everett, intervals, rows, &table, &tab) != 0) {
             return 1;
         }
         r.curve = &tab;

@@ -117,9 +117,11 @@ int model_text_header_close(char *buf, size_t size, size_t *len, const char *nam
  * the library in float and in double (the float one from the model's
  * numbers as a float build reads them), sealed, for
  * hyst_curve_inverse_table_const() (kind poly) or
- * hyst_curve_everett_inverse_table_const() (kind everett; the other kinds
- * have none: HYST_ERR_ARG), with NAME_table,
- * NAME_seal, NAME_INTERVALS (and NAME_ROWS, kind everett); with sealed
+ * hyst_curve_everett_inverse_table_const() (kind everett), with NAME_table,
+ * NAME_seal, NAME_INTERVALS (and NAME_ROWS, kind everett); kind spline
+ * NAME_INTERVALS alone and how firmware builds the table at init
+ * (hyst_*_curve_spline_inverse_table(); sealed ignored); kind everett_grid
+ * has none (HYST_ERR_ARG); with sealed
  * (kind poly) also the compensator's curve sealed with its table,
  * NAME_comp_sealed. rows and intervals as the library's table builders take
  * them (rows: kind everett only). Appended to buf[*len..size): 0, or 1 with

@@ -5,7 +5,8 @@
  * in double (a firmware build's real type picks one, HYST_USE_DOUBLE) and
  * sealed (hyst_curve_table_seal()), so firmware takes it from flash with
  * hyst_curve_inverse_table_const() or hyst_curve_everett_inverse_table_const()
- * instead of building it at boot. */
+ * instead of building it at boot; a spline's, which firmware builds, is
+ * measured here and its size written. */
 #include "model_text.h"
 
 #include <stdlib.h>
@@ -90,6 +91,30 @@ static hyst_status_t build(const model_text_t *m, int f32, size_t rows, size_t i
                 st = hyst_f64_curve_everett_inverse_table(&inv, &fwd, out->num, rows, intervals);
             }
         }
+    } else if (m->kind == MODEL_TEXT_SPLINE) {
+        float fwd32[HYST_SPLINE_TABLE_LEN(HYST_SPLINE_MAX_INTERVALS)];
+        double fwd64[HYST_SPLINE_TABLE_LEN(HYST_SPLINE_MAX_INTERVALS)];
+        hyst_spline_t f0;
+        model_text_to_spline(m, &f0);
+        if (f32) {
+            f0.lo = model_text_as_float(f0.lo);
+            f0.hi = model_text_as_float(f0.hi);
+            for (i = 0u; i <= f0.intervals; ++i) {
+                f0.value[i] = model_text_as_float(f0.value[i]);
+                f0.slope[i] = model_text_as_float(f0.slope[i]);
+            }
+            st = hyst_f32_curve_from_spline(&fwd, &f0, fwd32, HYST_SPLINE_TABLE_LEN(f0.intervals));
+            if (st == HYST_OK) {
+                st = hyst_f32_curve_spline_inverse_table(&inv, &fwd, t32, intervals);
+            }
+        } else {
+            st = hyst_f64_curve_from_spline(&fwd, &f0, fwd64, HYST_SPLINE_TABLE_LEN(f0.intervals));
+            if (st == HYST_OK) {
+                st = hyst_f64_curve_spline_inverse_table(&inv, &fwd, out->num, intervals);
+            }
+        }
+        /* no seal for the kind: firmware builds its table; the error as init measured it */
+        out->seal.max_err = st == HYST_OK ? hyst_curve_inverse_error(&inv) : 0;
     } else {
         hyst_poly_t p;
         model_text_poly_as_read(m, f32, &p);
@@ -99,10 +124,10 @@ static hyst_status_t build(const model_text_t *m, int f32, size_t rows, size_t i
                      : hyst_f64_curve_inverse_table(&inv, &fwd, out->num, intervals);
         }
     }
-    if (st == HYST_OK) {
+    if (st == HYST_OK && m->kind != MODEL_TEXT_SPLINE) {
         st = hyst_curve_table_seal(&inv, &out->seal);
     }
-    if (st == HYST_OK && !everett) { /* before the float table is freed */
+    if (st == HYST_OK && m->kind == MODEL_TEXT_POLY) { /* before the float table is freed */
         st = f32 ? hyst_f32_seal_inverse_table(&out->s32, &inv)
                  : hyst_f64_seal_inverse_table(&out->s64, &inv);
     }
@@ -169,10 +194,36 @@ static int emit_sealed_inverse(char *buf, size_t size, size_t *len, const char *
     return over | model_text_append(buf, size, len, "};\n");
 }
 
+/* The spline's compensator, built and measured here in float and in double:
+ * no table from flash for the kind (no seal), so the header says how
+ * firmware builds it at init and sizes it, NAME_INTERVALS. */
+static int spline_table_text(char *buf, size_t size, size_t *len, const char *name,
+                             const model_text_t *m, size_t intervals, const built_t *b32,
+                             const built_t *b64)
+{
+    const unsigned long k = (unsigned long)m->nvalues - 1ul;
+    return model_text_append(
+        buf, size, len,
+        "\n/* The compensator's table: f0^-1 in %lu intervals, which firmware builds at\n"
+        " * init (hyst_curve_spline_inverse_table(); the kind takes no table from\n"
+        " * flash). Built here in float and in double: %lu of them solved per sample\n"
+        " * instead; worst error measured %.3g (float) / %.3g (double) of the drive\n"
+        " * range:\n"
+        " *   static hyst_real_t fwd_table[HYST_SPLINE_TABLE_LEN(%luu)];\n"
+        " *   static hyst_real_t comp_table[HYST_INV_TABLE_LEN(%s_INTERVALS)];\n"
+        " *   hyst_curve_from_spline(&fwd, &%s, fwd_table, HYST_SPLINE_TABLE_LEN(%luu));\n"
+        " *   hyst_curve_spline_inverse_table(&comp, &fwd, comp_table, %s_INTERVALS);\n"
+        " *   hyst_init_curve(&S, &comp, ...);  // both tables outlive S */\n"
+        "#define %s_INTERVALS %luu\n",
+        (unsigned long)intervals, (unsigned long)b32->exact, (double)b32->seal.max_err,
+        (double)b64->seal.max_err, k, name, name, k, name, name, (unsigned long)intervals);
+}
+
 size_t model_text_header_table_size(const model_text_t *m, size_t rows, size_t intervals)
 {
     const size_t n = m->kind == MODEL_TEXT_EVERETT ? HYST_EVERETT_INV_TABLE_LEN(rows, intervals)
-                                                   : HYST_INV_TABLE_LEN(intervals);
+                     : m->kind == MODEL_TEXT_SPLINE ? 0u /* built by firmware: not written */
+                                                    : HYST_INV_TABLE_LEN(intervals);
     return 4096u + 2u * n * 28u; /* comment and seals; each number with its separator */
 }
 
@@ -185,7 +236,7 @@ int model_text_header_table(char *buf, size_t size, size_t *len, const char *nam
     char len_macro[256];
     size_t macro_len = 0u;
     int over;
-    if (m->kind != MODEL_TEXT_POLY && !everett) { /* the grid's and the spline's: none */
+    if (m->kind == MODEL_TEXT_GRID) { /* the grid's compensator has none */
         *status = HYST_ERR_ARG;
         return 1;
     }
@@ -199,6 +250,12 @@ int model_text_header_table(char *buf, size_t size, size_t *len, const char *nam
         free(b32.num);
         free(b64.num);
         return 1;
+    }
+    if (m->kind == MODEL_TEXT_SPLINE) {
+        over = spline_table_text(buf, size, len, name, m, intervals, &b32, &b64);
+        free(b32.num);
+        free(b64.num);
+        return over != 0;
     }
     sealed = sealed && !everett;
     len_macro[0] = '\0';
