@@ -984,26 +984,32 @@ static int same_model(const fit_candidate_t *a, const fit_candidate_t *b)
 }
 
 /* The lowest error of option wc of c's model among the whole delays'
- * candidates cand[0..count), and in *at the index of that model at `delay`
- * ((size_t)-1 if not scored there). */
+ * candidates cand[0..count) (NaN if none was scored). */
 static double whole_delay_rms(const fit_candidate_t *cand, size_t count,
-                              const fit_candidate_t *c, int wc, size_t delay, size_t *at)
+                              const fit_candidate_t *c, int wc)
 {
     double lowest = NAN;
     size_t i;
-    *at = (size_t)-1;
     for (i = 0u; i < count; ++i) {
-        if (same_model(&cand[i], c)) {
-            const double e = fit_option_rms(&cand[i], wc);
-            if (isfinite(e) && !(lowest <= e)) {
-                lowest = e;
-            }
-            if (cand[i].delay == delay) {
-                *at = i;
-            }
+        const double e = fit_option_rms(&cand[i], wc);
+        if (same_model(&cand[i], c) && isfinite(e) && !(lowest <= e)) {
+            lowest = e;
         }
     }
     return lowest;
+}
+
+/* The index of c's model at c's whole delay in cand[0..count), or
+ * (size_t)-1 if it was not scored there. */
+static size_t whole_delay_index(const fit_candidate_t *cand, size_t count, const fit_candidate_t *c)
+{
+    size_t i;
+    for (i = 0u; i < count; ++i) {
+        if (same_model(&cand[i], c) && cand[i].delay == c->delay) {
+            return i;
+        }
+    }
+    return (size_t)-1;
 }
 
 /* The sub-sample delay of fit_search(): every candidate scored again with
@@ -1032,7 +1038,7 @@ static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t
     fit_candidate_t *tried = (fit_candidate_t *)malloc(most * sizeof(fit_candidate_t));
     hyst_ident_config_t base = *cfg;
     fit_validation_t vf;
-    size_t total = 1u, best = (size_t)-1, k, at;
+    size_t total = 1u, best = (size_t)-1, k;
     unsigned i;
     int wc;
     out->integer_holdout = fit_option_rms(b, out->with_creep);
@@ -1056,7 +1062,7 @@ static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t
         for (k = total; k < total + n_tried; ++k) {
             tried[k].fraction = f;
             for (wc = 0; wc <= 1; ++wc) {
-                const double whole = whole_delay_rms(cand, out->count, &tried[k], wc, 0u, &at);
+                const double whole = whole_delay_rms(cand, out->count, &tried[k], wc);
                 const unsigned p = fit_option_parameters(&tried[k], wc);
                 const double e = fit_option_rms(&tried[k], wc);
                 if (!(e < whole * (1.0 - FIT_FRACTION_GAIN) &&
@@ -1070,7 +1076,7 @@ static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t
     fit_choose(tried, total, creep_tau, &best, &wc);
     if (best != (size_t)-1 && best > 0u) { /* a model at a fraction */
         const double f = tried[best].fraction;
-        (void)whole_delay_rms(cand, out->count, &tried[best], wc, tried[best].delay, &at);
+        size_t at = whole_delay_index(cand, out->count, &tried[best]);
         if (at == (size_t)-1) {
             at = out->best;
         }
