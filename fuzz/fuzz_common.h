@@ -44,6 +44,29 @@ static double rd_f64(reader_t *r)
     return v;
 }
 
+/* The input of a sample op of the harnesses that fit raw outputs too
+ * (fuzz_grid, fuzz_spline): 0xF4 a point of [lo, hi] from the next byte, and
+ * the f64 before it as the fit's raw output (*y_fit, *raw_y set); 0xF5 hi,
+ * 0xF6 lo; any other op a point op / 239 of [lo, hi]. The caller clamps at
+ * hi (lo + (hi - lo) rounds past it). */
+FUZZ_MAYBE_UNUSED static double fuzz_sample_input(reader_t *rd, unsigned op, double lo, double hi,
+                                                  double *y_fit, int *raw_y)
+{
+    const double span = hi - lo;
+    if (op == 0xF4u) {
+        *y_fit = rd_f64(rd);
+        *raw_y = 1;
+        return lo + span * (double)rd_u8(rd) / 239.0;
+    }
+    if (op == 0xF5u) {
+        return hi;
+    }
+    if (op == 0xF6u) {
+        return lo;
+    }
+    return lo + span * (double)op / 239.0;
+}
+
 #define CHECK(cond)                                                               \
     do {                                                                          \
         if (!(cond)) {                                                            \

@@ -1000,16 +1000,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         if (op == 0xF2u) {
             const unsigned q = rd_u8(&rd) % (f.intervals + 1u);
             x = lo + span * q / f.intervals;
-        } else if (op == 0xF4u) {
-            y_fit = rd_f64(&rd);
-            raw_y = 1;
-            x = lo + span * (double)rd_u8(&rd) / 239.0;
-        } else if (op == 0xF5u) {
-            x = hi;
-        } else if (op == 0xF6u) {
-            x = lo;
         } else {
-            x = lo + span * (double)op / 239.0;
+            x = fuzz_sample_input(&rd, op, lo, hi, &y_fit, &raw_y);
         }
         x = x < hi ? x : hi; /* lo + (hi - lo) rounds past hi */
         {
