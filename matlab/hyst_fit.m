@@ -19,7 +19,7 @@ function f = hyst_fit(x, y, varargin)
 %     degree, method
 %     delay       the 'delay' it was fitted at (samples), which
 %                 HYST_MODEL_SAVE writes to the model file
-%     identified  (kind everett or spline, its domain wider than the
+%     identified  (any kind but everett_grid, its domain wider than the
 %                 inputs: a widened candidate chosen, or 'domain') [LO HI],
 %                 the inputs' range it was identified on, saved with it
 %
@@ -241,10 +241,10 @@ function f = hyst_fit(x, y, varargin)
   % the delay the model was fitted at: HYST_MODEL_SAVE writes it,
   % HYST_HEADER states it
   f.delay = double(opts.delay) + fraction;
-  % a domain wider than the inputs: the range E (or the spline) was
-  % identified on, which HYST_MODEL_SAVE records (as 'hyst fit --save' does)
+  % a domain wider than the inputs: the range f0 (or E) was identified
+  % on, which HYST_MODEL_SAVE records (as 'hyst fit --save' does)
   used = x(double(opts.skip) + 1:max(numel(x) - double(opts.delay), double(opts.skip)));
-  if any(strcmp(opts.kind, {'everett', 'spline'})) && ~isempty(used) && ...
+  if ~strcmp(opts.kind, 'everett_grid') && ~isempty(used) && ...
      (f.lo < min(used) || max(used) < f.hi)
     f.identified = [max(min(used), f.lo), min(max(used), f.hi)];
   end
@@ -431,8 +431,8 @@ function [opts, cands, creep_tau, domain, x, fraction, rate, vx] = choose(opts, 
   opts.delay = c.delay;
   opts.tdegree = c.t_degree;
   if ~isempty(widened)
-    % the domain the tool fits it on: the inputs' range widened, E
-    % continued beyond the inputs (fit_chosen_domain())
+    % the domain the tool fits it on: the inputs' range widened, f0
+    % or E continued beyond the inputs (fit_chosen_domain())
     domain = widened;
   end
   % the creep term chosen with it, or none: fitted below as 'creep', TAU does

@@ -29,7 +29,7 @@ function failed = run_tests(root, ref, cli)
            @t_fit_refuses_record, @t_save_writes_regular_files_only, ...
            @t_header_refuses_what_init_refuses, @t_fit_checks_record_as_cli, ...
            @t_fit_recovers_a_simulated_plant, @t_fit_warns_degree_on_minor_loops, ...
-           @t_fit_writes_e_of_the_width_as_f0};
+           @t_fit_writes_e_of_the_width_as_f0, @t_fit_widens_symmetric_kinds_as_cli};
   passed = 0;
   failed = 0;
   for k = 1:numel(tests)
@@ -2386,4 +2386,36 @@ function t_fit_writes_e_of_the_width_as_f0(ctx)
   msg = error_message(far);
   check(~isempty(strfind(msg, 'gives no f0 in powers of x')), 'far from 0: %s', msg);
   expect_error('hyst:usage', @() hyst_fit(x, y, 'degree', 5, 'method', 'branches'));
+end
+
+function t_fit_widens_symmetric_kinds_as_cli(ctx)
+  % f0 a polynomial and a spline, on a record whose last third goes past the
+  % first two thirds' peaks (triangles of growing amplitude on Eq. 20): the
+  % widened candidate the tool chooses, fitted on its domain, the range it
+  % was identified on saved; the model file the tool's, byte for byte
+  x = [];
+  for p = 8:4:40
+    x = [x, 0:0.1:p - 0.05, p:-0.1:0.05];
+  end
+  x = [x(:); 0];
+  y = hyst_sim(paper_f0(), x);
+  n = floor(2 * numel(x) / 3);
+  rec = fullfile(ctx.tmp, 'widen_rec.txt');
+  fid = fopen(rec, 'w');
+  fprintf(fid, '%.17g %.17g\n', [x(1:n) y(1:n)]');
+  fclose(fid);
+  cli_file = fullfile(ctx.tmp, 'widen_cli.hyst');
+  oct_file = fullfile(ctx.tmp, 'widen_oct.hyst');
+  kinds = {'tcm', 'poly'; 'spline', 'spline'};
+  for k = 1:size(kinds, 1)
+    run_cli(ctx, sprintf('fit --kind %s --creep none --delay 0 --save "%s" "%s" 2>&1', ...
+                         kinds{k, 1}, cli_file, rec));
+    f = hyst_fit(x(1:n), y(1:n), 'kind', kinds{k, 2}, 'degree', [], 'delay', 0, 'creep', 'none');
+    hyst_model_save(oct_file, f);
+    check(strcmp(fileread(oct_file), fileread(cli_file)), ...
+          '%s: hyst_fit differs from hyst fit:\n%s\n%s', kinds{k, 2}, fileread(oct_file), ...
+          fileread(cli_file));
+    check(isfield(f, 'identified') && isequal(f.identified, [min(x(1:n)) max(x(1:n))]) && ...
+          f.hi > max(x(1:n)), '%s: not widened: hi %g', kinds{k, 2}, f.hi);
+  end
 end

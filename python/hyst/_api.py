@@ -375,7 +375,7 @@ class Fit:
     of t fitted, the terms above it 0). Both have ``degree``, ``lo``,
     ``hi``, ``delay``, ``candidates`` and ``model``, the model at A0 (poly:
     ``t_degree`` None), and ``identified``: None, or (LO, HI), the range of
-    the inputs E was identified on when its domain is wider (a widened
+    the inputs f0 or E was identified on when its domain is wider (a widened
     candidate chosen, or ``domain``), counted by :meth:`outside_identified`. Model
     calls (``process``, ``step``, ``reset``...) go to ``model``, so a Fit is
     used as the model itself.
@@ -823,8 +823,8 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
         # E of t-degree 0 is the symmetric model: written as f0, as hyst fit writes it
         as_poly = kind == "everett" and t_degree == 0 and ("poly" in kinds or branches)
         if widened is not None:
-            # the domain the tool fits it on: the inputs' range widened, E
-            # continued beyond the inputs (fit_chosen_domain())
+            # the domain the tool fits it on: the inputs' range widened, f0
+            # or E continued beyond the inputs (fit_chosen_domain())
             lo, hi = widened
         for i, c in enumerate(cands):
             c["chosen"] = i == best
@@ -856,8 +856,8 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
                    t_degree)
     if res.get("kind") == "everett_grid" and not res["determined"]:
         warnings.warn(_hyst.FIT_GRID_UNDETERMINED, FitWarning, stacklevel=2)
-    if res.get("kind") in ("everett", "spline") and len(x) > skip + int(delay):
-        # a domain wider than the inputs: the range E (or f0) was identified
+    if res.get("kind", "poly") != "everett_grid" and len(x) > skip + int(delay):
+        # a domain wider than the inputs: the range f0 (or E) was identified
         # on is recorded, as hyst fit --save records it
         used = x[skip:len(x) - int(delay)]
         a, b = float(np.nanmin(used)), float(np.nanmax(used))

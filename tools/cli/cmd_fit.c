@@ -729,7 +729,8 @@ static void print_excitation(const fit_opts_t *o, const char *what, const char *
                  what, (unsigned long)o->excitation.beyond, (unsigned long)o->excitation.holdout_n,
                  o->excitation.fitted_lo, o->excitation.fitted_hi, fitted,
                  o->excitation.beyond > 0u ? " (predicted by the branches continued beyond it: "
-                                             "everett widened; the others clamp them)"
+                                             "poly, everett and spline widened; the grid and "
+                                             "the others clamp them)"
                                            : "");
     (void)printf("# %s excitation: its inputs span %.3g %% of the record's range, %lu reversals "
                  "inside it (minor loops)\n",
@@ -891,6 +892,19 @@ static int not_finite(const char *name, const fit_final_t *f)
     return 0;
 }
 
+/* A domain wider than the inputs fitted (a widened candidate, or --domain):
+ * the range the model was identified on, recorded in its file. */
+static void record_identified(const fit_opts_t *o, const cli_table_t *t, cli_model_t *m)
+{
+    double id_lo, id_hi;
+    fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, 0.0, &id_lo, &id_hi);
+    if (m->lo < id_lo || id_hi < m->hi) {
+        m->has_identified = 1;
+        m->id_lo = id_lo > m->lo ? id_lo : m->lo;
+        m->id_hi = id_hi < m->hi ? id_hi : m->hi;
+    }
+}
+
 /* The chosen kind fitted on the whole record into f: 0, or 1 after a message. */
 static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t, size_t pairs,
                      fit_final_t *f)
@@ -941,14 +955,8 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
             cli_model_from_everett(&f->model, &f->ev.e, (unsigned long)o->cfg.delay);
         }
         f->model.delay_fraction = o->delay_fraction;
-        if (!grid) { /* a domain wider than the inputs: the range identified on is recorded */
-            double id_lo, id_hi;
-            fit_input_range(t->col[0], o->cfg.skip, t->n - o->cfg.delay, 0.0, &id_lo, &id_hi);
-            if (f->model.lo < id_lo || id_hi < f->model.hi) {
-                f->model.has_identified = 1;
-                f->model.id_lo = id_lo > f->model.lo ? id_lo : f->model.lo;
-                f->model.id_hi = id_hi < f->model.hi ? id_hi : f->model.hi;
-            }
+        if (!grid) {
+            record_identified(o, t, &f->model);
         }
         f->usable = f->ev.curve_status == HYST_OK;
         f->rms = f->usable ? f->ev.rms : f->ev.ls_rms;
@@ -963,6 +971,7 @@ static int fit_final(const fit_opts_t *o, const char *name, const cli_table_t *t
         f->model.hi = (double)f->r.hi;
         f->model.delay = (unsigned long)o->cfg.delay;
         f->model.delay_fraction = o->delay_fraction;
+        record_identified(o, t, &f->model);
         f->usable = f->r.increasing;
         f->rms = (double)f->r.rms;
         f->max_abs = (double)f->r.max_abs;

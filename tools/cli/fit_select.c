@@ -455,9 +455,9 @@ static int model_fit(const hyst_ident_config_t *part, int kind, unsigned t_degre
  * 0 fits the first two thirds and scores the last third; 1 and 2 score the
  * middle and the first third, fitted on the rest with the outputs of that
  * third left out (the fit takes its inputs in: the turning points are the
- * record's), from `settle` on (fit_settled()). The model runs from rest at cfg->skip over the whole record
- * each time; kind FIT_EVERETT with t_degree, its domain widened by FIT_WIDEN
- * about the inputs fitted when `widened`; creep (may be NULL) as
+ * record's), from `settle` on (fit_settled()). The model runs from rest at
+ * cfg->skip over the whole record each time; kind FIT_EVERETT with t_degree;
+ * its domain widened by FIT_WIDEN about the inputs fitted when `widened`; creep (may be NULL) as
  * fit_model_run_creep(), fitted and scored on the same parts. */
 static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t_degree,
                             int widened, const double *x, const double *y, size_t n, int split,
@@ -493,22 +493,22 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
     }
     if (kind == FIT_EVERETT) {
         memset(ev, 0, sizeof *ev);
-        if (widened) { /* about the inputs whose outputs are fitted */
-            double lo, hi, lo2, hi2;
-            if (split == 0) {
-                fit_input_range(x, cfg->skip, from, 0.0, &lo, &hi);
-            } else {
-                fit_input_range(x, to < n - cfg->delay ? to : from, n - cfg->delay, 0.0, &lo, &hi);
-                if (from > cfg->skip) {
-                    fit_input_range(x, cfg->skip, from, 0.0, &lo2, &hi2);
-                    lo = lo2 < lo ? lo2 : lo;
-                    hi = hi2 > hi ? hi2 : hi;
-                }
+    }
+    if (widened) { /* about the inputs whose outputs are fitted */
+        double lo, hi, lo2, hi2;
+        if (split == 0) {
+            fit_input_range(x, cfg->skip, from, 0.0, &lo, &hi);
+        } else {
+            fit_input_range(x, to < n - cfg->delay ? to : from, n - cfg->delay, 0.0, &lo, &hi);
+            if (from > cfg->skip) {
+                fit_input_range(x, cfg->skip, from, 0.0, &lo2, &hi2);
+                lo = lo2 < lo ? lo2 : lo;
+                hi = hi2 > hi ? hi2 : hi;
             }
-            fit_widened_domain(lo, hi, fit_first_input(x, cfg->skip, n - cfg->delay), &lo, &hi);
-            part.lo = lo;
-            part.hi = hi;
         }
+        fit_widened_domain(lo, hi, fit_first_input(x, cfg->skip, n - cfg->delay), &lo, &hi);
+        part.lo = lo;
+        part.hi = hi;
     }
     if (model_fit(&part, kind, t_degree, x, yf, count, status, poly, ev, &f0, &curve) != 0) {
         free(masked);
@@ -522,9 +522,8 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
 }
 
 /* A candidate scored on the validation record v: fitted on the whole of x,
- * y from cfg->skip on (kind FIT_EVERETT widened as fit_chosen_domain()
- * widens the model chosen: the model the choice saves), then run from rest
- * over v: the RMS error over every row of v it predicts (NaN if the fit
+ * y from cfg->skip on (widened as fit_chosen_domain() widens the model
+ * chosen: the model the choice saves), then run from rest over v: the RMS error over every row of v it predicts (NaN if the fit
  * failed, *status, or none could be scored); creep (may be NULL): its
  * terms fitted on the model's residual over x, y, scored on v
  * (fit_terms_other()). */
@@ -552,7 +551,7 @@ static double validated(const hyst_ident_config_t *cfg, int kind, unsigned t_deg
         *status = HYST_ERR_ARG;
         return NAN;
     }
-    if (kind == FIT_EVERETT && widened) {
+    if (widened) {
         double lo, hi;
         fit_input_range(x, cfg->skip, n - cfg->delay, 0.0, &lo, &hi);
         fit_widened_domain(lo, hi, fit_first_input(x, cfg->skip, n - cfg->delay), &whole.lo,
@@ -736,8 +735,8 @@ void fit_score(const hyst_ident_config_t *base, const double *x, const double *y
         c->fit_rms = ev.rms;
     } else {
         fit_everett_result_t unused;
-        c->holdout_rms = holdout(&cfg, FIT_POLY, 0u, 0, x, y, n, v, &c->status, &c->fit, &unused,
-                                 creep, &c->last_third_rms);
+        c->holdout_rms = holdout(&cfg, FIT_POLY, 0u, c->widened, x, y, n, v, &c->status, &c->fit,
+                                 &unused, creep, &c->last_third_rms);
         c->fit_rms = (double)c->fit.rms;
     }
     if (!isfinite(c->holdout_rms)) {
@@ -805,7 +804,13 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
     int widen = 0;
     size_t i;
     /* widened candidates only where they make a difference: the hold-out
-     * part's inputs leave the range of the part fitted (and no --domain) */
+     * part's inputs leave the range of the part fitted (and no --domain).
+     * Each kind whose branches continue beyond the inputs on a wider domain:
+     * f0 a polynomial (where it stays increasing: else the fit refuses it),
+     * E (monotone on the whole wider triangle), f0 a spline (a straight line
+     * at its last slope above its inputs). Not the grid: its cells beyond
+     * the inputs see no data, and their masses 0 hold the output as
+     * clamping does. */
     if (v != NULL && !(base->lo < base->hi) && n > base->skip + base->delay) {
         fit_excitation_t e; /* the validation record's inputs leave the record's range */
         fit_validation_excitation(x, base->skip, n - base->delay, v, base->delay, &e);
@@ -823,20 +828,25 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
         if (n <= base->skip + d) {
             break;
         }
+        int w;
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
-            add(base, x, y, n, v, creep_tau, FIT_POLY, deg, 0u, d, 0, cand, max_cand, &count);
+            for (w = 0; w <= widen; ++w) {
+                add(base, x, y, n, v, creep_tau, FIT_POLY, deg, 0u, d, w, cand, max_cand,
+                    &count);
+            }
         }
         for (k = 0u; (kinds & FIT_GRID) != 0 && k < FIT_GRID_CANDIDATES; ++k) {
             add(base, x, y, n, v, creep_tau, FIT_GRID, FIT_GRID_INTERVALS(k), 0u, d, 0, cand,
                 max_cand, &count);
         }
         for (k = 0u; (kinds & FIT_SPLINE) != 0 && k < FIT_SPLINE_CANDIDATES; ++k) {
-            add(base, x, y, n, v, creep_tau, FIT_SPLINE, FIT_SPLINE_INTERVALS(k), 0u, d, 0, cand,
-                max_cand, &count);
+            for (w = 0; w <= widen; ++w) {
+                add(base, x, y, n, v, creep_tau, FIT_SPLINE, FIT_SPLINE_INTERVALS(k), 0u, d, w,
+                    cand, max_cand, &count);
+            }
         }
         for (deg = 1u; (kinds & FIT_EVERETT) != 0 && deg <= HYST_EVERETT_MAX_DEGREE; ++deg) {
             for (k = 0u; k < deg && (everett_degree == 0u || deg == everett_degree); ++k) {
-                int w;
                 for (w = 0; w <= widen; ++w) {
                     if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
                         add(base, x, y, n, v, creep_tau, FIT_EVERETT, deg, k, d, w, cand,

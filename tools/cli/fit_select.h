@@ -101,10 +101,12 @@ double fit_first_input(const double *x, size_t from, size_t to);
  * there, not lower). */
 void fit_widened_domain(double lo, double hi, double first, double *wide_lo, double *wide_hi);
 
+
 /* Kinds of model a candidate may be (see below); FIT_CANDIDATES_PER_DELAY:
- * the most fit_select() adds at one delay (everett ones also widened). */
+ * the most fit_select() adds at one delay (poly, everett and spline ones also
+ * widened). */
 #define FIT_CANDIDATES_PER_DELAY                                                             \
-    (HYST_MAX_DEGREE + 2u * FIT_EVERETT_CANDIDATES + FIT_GRID_CANDIDATES + FIT_SPLINE_CANDIDATES)
+    (2u * (HYST_MAX_DEGREE + FIT_EVERETT_CANDIDATES + FIT_SPLINE_CANDIDATES) + FIT_GRID_CANDIDATES)
 
 /* Kinds of model a candidate may be (a mask for fit_select()): the
  * symmetric TCM's polynomial f0, the asymmetric kind's E, E on a grid and
@@ -198,7 +200,8 @@ typedef struct fit_candidate {
     unsigned t_degree;        /* everett: the highest power of t fitted (< degree) */
     size_t delay;
     double fraction;          /* a sub-sample delay's fraction of a sample (0: a whole delay) */
-    int widened;              /* everett: its domain the inputs' range widened by FIT_WIDEN */
+    int widened;              /* poly, everett, spline: its domain the inputs' range widened
+                               * by FIT_WIDEN (fit_select()) */
     hyst_status_t status;     /* of the training fit (everett: or of its curve) */
     hyst_ident_result_t fit;  /* poly: on the first two thirds */
     double fit_rms;           /* residual of the training fit (poly: fit.rms) */
