@@ -892,6 +892,69 @@ int hyst_tp_step_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t *n_tp, size_t cap
  * equations in hyst_wide_t; the weights by hyst_nnls_ with y_lo
  * eliminated. ---- */
 
+/* Samples per block of the normal equations. The residual is a difference
+ * of sums that a near-exact record makes almost equal (syy + w'Hw - 2 w'c):
+ * summed a sample at a time into sums of the record's size, their rounding
+ * read a 12-interval grid's RMS 2 % low at noise 1e-6 of the range over 1e5
+ * samples, and 0 at 1e-7. A block's sums stay a block's size and go into
+ * compensated totals, one addition a block: 1e-4 at 1e-6 (its rounding in
+ * double leaves about 1 % at 1e-7). The per-sample loop stays as it was. */
+#define BRANCH_BLOCK 128u
+
+/* *hi + *lo += v, *lo gathering *hi's rounding errors (Knuth's TwoSum) */
+static void add_compensated(hyst_wide_t *hi, hyst_wide_t *lo, hyst_wide_t v)
+{
+    const hyst_wide_t sum = *hi + v, v_part = sum - *hi;
+    *lo += (*hi - (sum - v_part)) + (v - v_part);
+    *hi = sum;
+}
+
+/* The block's sums into the totals (their zeros skipped: the grid's rows
+ * of cells no sample of the block reached), the block emptied. */
+static void branch_flush(hyst_branch_fit_t *f)
+{
+    const size_t cols = f->cols, half = cols * (cols + 3u) / 2u;
+    hyst_wide_t *hi = f->total, *lo = f->total + half, *block;
+    size_t i, j, k = 0u;
+    for (i = 0u; i < cols; ++i) {
+        for (j = 0u; j <= i; ++j, ++k) {
+            block = f->ata + i * cols + j;
+            if (*block != 0) {
+                add_compensated(hi + k, lo + k, *block);
+                *block = 0;
+            }
+        }
+    }
+    for (i = 0u; i < cols; ++i, ++k) {
+        if (f->aty[i] != 0) {
+            add_compensated(hi + k, lo + k, f->aty[i]);
+            f->aty[i] = 0;
+        }
+    }
+    add_compensated(&f->yy_total[0], &f->yy_total[1], f->yy);
+    f->yy = 0;
+    f->in_block = 0u;
+}
+
+/* A'A's (i, j), j <= i, A'y's i and y'y over every sample: the blocks'
+ * sums, their rounding errors and the block's. */
+static hyst_wide_t branch_ata(const hyst_branch_fit_t *f, size_t i, size_t j)
+{
+    const size_t k = i * (i + 1u) / 2u + j, half = f->cols * (f->cols + 3u) / 2u;
+    return f->total[k] + (f->total[half + k] + f->ata[i * f->cols + j]);
+}
+
+static hyst_wide_t branch_aty(const hyst_branch_fit_t *f, size_t i)
+{
+    const size_t k = f->cols * (f->cols + 1u) / 2u + i, half = f->cols * (f->cols + 3u) / 2u;
+    return f->total[k] + (f->total[half + k] + f->aty[i]);
+}
+
+static hyst_wide_t branch_yy(const hyst_branch_fit_t *f)
+{
+    return f->yy_total[0] + (f->yy_total[1] + f->yy);
+}
+
 void hyst_branch_fit_start_(hyst_branch_fit_t *f, size_t cols, hyst_wide_t lo, hyst_wide_t hi,
                             hyst_wide_t *work, size_t work_len)
 {
@@ -903,7 +966,8 @@ void hyst_branch_fit_start_(hyst_branch_fit_t *f, size_t cols, hyst_wide_t lo, h
     f->ata = work;
     f->solver = f->ata + cols * cols;
     f->aty = f->solver + 2u * cols * cols + 7u * cols;
-    f->r_prev = f->aty + cols;
+    f->total = f->aty + cols;
+    f->r_prev = f->total + cols * (cols + 3u);
     f->capacity = (work_len - (size_t)(f->r_prev + cols - work)) / (cols + 1u);
     f->tp_x = f->r_prev + cols;
     f->tp_r = f->tp_x + f->capacity;
@@ -953,6 +1017,9 @@ hyst_status_t hyst_branch_fit_add_(hyst_branch_fit_t *f, hyst_wide_t x, hyst_wid
     }
     f->yy += y * y;
     ++f->used;
+    if (++f->in_block == BRANCH_BLOCK) {
+        branch_flush(f);
+    }
     return HYST_OK;
 }
 
@@ -966,13 +1033,13 @@ static hyst_wide_t branch_centre(const hyst_branch_fit_t *f, hyst_wide_t *h, hys
     hyst_wide_t big = 0;
     size_t i, j;
     for (i = 0u; i < m; ++i) {
-        const hyst_wide_t si = f->ata[(i + 1u) * cols];
+        const hyst_wide_t si = branch_ata(f, i + 1u, 0u);
         for (j = 0u; j <= i; ++j) {
-            const hyst_wide_t v = f->ata[(i + 1u) * cols + j + 1u] - si * f->ata[(j + 1u) * cols] / n;
+            const hyst_wide_t v = branch_ata(f, i + 1u, j + 1u) - si * branch_ata(f, j + 1u, 0u) / n;
             h[i * m + j] = v;
             h[j * m + i] = v;
         }
-        c[i] = f->aty[i + 1u] - si * f->aty[0] / n;
+        c[i] = branch_aty(f, i + 1u) - si * branch_aty(f, 0u) / n;
         big = h[i * m + i] > big ? h[i * m + i] : big;
     }
     return big;
@@ -1023,7 +1090,7 @@ hyst_status_t hyst_branch_fit_solve_(const hyst_branch_fit_t *f, const hyst_wide
                                      hyst_wide_t *y_lo, hyst_wide_t *rms)
 {
     const size_t cols = f->cols, m = cols - 1u;
-    hyst_wide_t *h, *c, *w, n, big, syy, tol, rss, sum = 0, offset;
+    hyst_wide_t *h, *c, *w, n, big, sum_y, syy, tol, rss, sum = 0, offset;
     branch_centred_t ctx;
     hyst_nnls_t p;
     size_t i, j;
@@ -1035,7 +1102,8 @@ hyst_status_t hyst_branch_fit_solve_(const hyst_branch_fit_t *f, const hyst_wide
     c = h + m * m;
     w = c + m;
     big = branch_centre(f, h, c);
-    syy = f->yy - f->aty[0] * f->aty[0] / n;
+    sum_y = branch_aty(f, 0u);
+    syy = branch_yy(f) - sum_y * sum_y / n;
     tol = HYST_WIDE_SQRT(big * (syy > 0 ? syy : 0)) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m);
     ctx.h = h;
     ctx.m = m;
@@ -1056,14 +1124,14 @@ hyst_status_t hyst_branch_fit_solve_(const hyst_branch_fit_t *f, const hyst_wide
         memset(w, 0, m * sizeof *w);
     }
     rss = syy;
-    offset = f->aty[0];
+    offset = sum_y;
     for (i = 0u; i < m; ++i) {
         hyst_wide_t hw = 0;
         for (j = 0u; j < m; ++j) {
             hw += h[i * m + j] * w[j];
         }
         rss += w[i] * (hw - 2 * c[i]);
-        offset -= w[i] * f->ata[(i + 1u) * cols];
+        offset -= w[i] * branch_ata(f, i + 1u, 0u);
         sum += w[i];
     }
     /* outputs so large that the normal equations overflow: no fit (a NaN

@@ -475,12 +475,12 @@ hyst_status_t hyst_everett_fit_solve_unconstrained(const hyst_everett_fit_t *fit
  * hyst_wide_t entries of the workspace of a fit along the record's branches
  * (the grid's, the spline's) of @p cols columns whose input record stacks at
  * most @p capacity turning points: each one's input and regressors, the
- * normal equations and the solver's (3 cols^2 + cols (capacity + 10) +
- * capacity).
+ * normal equations (a block of samples and the compensated sums of the
+ * blocks) and the solver's (4 cols^2 + cols (capacity + 12) + capacity).
  */
 #define HYST_BRANCH_FIT_WORK(cols, capacity)                                                  \
-    ((size_t)(capacity) * ((size_t)(cols) + 1u) + 3u * (size_t)(cols) * (size_t)(cols) +      \
-     9u * (size_t)(cols))
+    ((size_t)(capacity) * ((size_t)(cols) + 1u) + 4u * (size_t)(cols) * (size_t)(cols) +      \
+     12u * (size_t)(cols))
 
 /**
  * @brief What a fit along the record's branches keeps (inside
@@ -497,15 +497,19 @@ typedef struct hyst_branch_fit {
     hyst_wide_t *tp_x;   /**< caller's workspace: TP inputs (capacity) */
     hyst_wide_t *tp_r;   /**< and their regressors (capacity x cols) */
     hyst_wide_t *r_prev; /**< the last input's regressors (cols) */
-    hyst_wide_t *ata;    /**< normal equations (cols x cols, lower half) */
+    hyst_wide_t *ata;    /**< normal equations of the block (cols x cols, lower half) */
     hyst_wide_t *aty;    /**< (cols) */
+    hyst_wide_t *total;  /**< the blocks' sums: A'A's lower half packed then A'y, high
+                              parts (cols (cols + 3) / 2) then their rounding errors */
     hyst_wide_t *solver; /**< the solver's (2 cols^2 + 7 cols) */
     size_t capacity;     /**< TPs the workspace holds (A0 included) */
     size_t n_tp;         /**< stacked, A0 included */
     hyst_wide_t x_prev;  /**< last input */
     hyst_wide_t y_ref;   /**< the first output: aty and yy take y - y_ref */
-    hyst_wide_t yy;      /**< sum of (y - y_ref)^2 */
+    hyst_wide_t yy;      /**< sum of (y - y_ref)^2 over the block */
+    hyst_wide_t yy_total[2]; /**< over the blocks before: high part, its rounding error */
     size_t used;         /**< samples in the normal equations */
+    size_t in_block;     /**< of them in the block */
 } hyst_branch_fit_t;
 
 /** Columns of a grid fit of @p k knot intervals: y_lo and each cell's mass. */
