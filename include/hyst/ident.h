@@ -560,7 +560,10 @@ hyst_status_t hyst_everett_grid_fit_add(hyst_everett_grid_fit_t *fit, hyst_wide_
 /**
  * @brief Solves for the masses (each >= 0: Lawson and Hanson's non-negative
  *        least squares on the normal equations, y_lo free) into @p g (the
- *        knots, y_lo, the masses) and the residual RMS over the samples used.
+ *        knots, y_lo, the masses) and the residual RMS over the samples used;
+ *        where the record does not determine them, the solution of least
+ *        squared masses among those that fit it alike
+ *        (hyst_everett_grid_fit_determined()).
  * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_SINGULAR (fewer than two samples);
  *         HYST_ERR_COEFF (a mass, y_lo or the residual not finite: outputs
  *         so large that the normal equations overflow); HYST_ERR_NOT_MONOTONE
@@ -576,10 +579,12 @@ hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
  *        open (major loops alone, for 4 intervals or more: they determine
  *        each diagonal cell and the others' sums by row and by column), or
  *        @p fit is NULL or holds fewer than two samples. Where it is 0,
- *        hyst_everett_grid_fit_solve() returns one non-negative solution of
- *        many, which fit the record alike and predict differently where
- *        it did not go (minor loops, branches it did not take). Uses the
- *        solver's workspace; the solve may follow.
+ *        many non-negative solutions fit the record alike and predict
+ *        differently where it did not go (minor loops, branches it did not
+ *        take): hyst_everett_grid_fit_solve() then returns the one of least
+ *        squared masses (a ridge of 1e-9 of the normal equations' largest
+ *        diagonal entry), the same whatever the rounding of the outputs.
+ *        Uses the solver's workspace; the solve may follow.
  */
 int hyst_everett_grid_fit_determined(const hyst_everett_grid_fit_t *fit);
 

@@ -24,10 +24,10 @@
 
 const char fit_grid_undetermined[] =
     "the record's turning points do not determine every mass of this grid (major loops alone "
-    "leave how the inner cells of 4 or more intervals share theirs open): these masses are one "
-    "solution of many that fit the record alike and predict differently where it did not go "
-    "(minor loops, a branch it did not take); fewer intervals, or a record whose reversals "
-    "turn inside every interval";
+    "leave how the inner cells of 4 or more intervals share theirs open): of the many masses "
+    "that fit the record alike and predict differently where it did not go (minor loops, a "
+    "branch it did not take), these are the least squared ones; fewer intervals, or a record "
+    "whose reversals turn inside every interval";
 
 typedef struct {
     const double *x, *y;
