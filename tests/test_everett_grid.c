@@ -436,6 +436,36 @@ static void fit_plant(hyst_everett_grid_fit_t *fit, const hyst_everett_grid_t *g
     }
 }
 
+/* A grid of `intervals` on the knots 0, 1, ..., its masses 0. */
+static hyst_everett_grid_t integer_grid(unsigned intervals)
+{
+    hyst_everett_grid_t g;
+    unsigned i;
+    memset(&g, 0, sizeof g);
+    g.intervals = intervals;
+    for (i = 0u; i <= intervals; ++i) {
+        g.knots[i] = (hyst_wide_t)i;
+    }
+    return g;
+}
+
+/* Three major loops 0 -> top -> 0 by 0.1 into fx; returns their samples. */
+static long major_loops(unsigned top)
+{
+    const long steps = 10L * (long)top;
+    long n = 0, k;
+    int c;
+    for (c = 0; c < 3; ++c) {
+        for (k = 0; k <= steps; ++k) {
+            fx[n++] = (hyst_wide_t)(0.1 * (double)k);
+        }
+        for (k = steps - 1; k >= 0; --k) {
+            fx[n++] = (hyst_wide_t)(0.1 * (double)k);
+        }
+    }
+    return n;
+}
+
 /* Where the record does not determine the masses (major loops alone, 6
  * intervals), the fit returns the same masses whatever the rounding: the
  * outputs moved by 1e-12 of themselves, each of 8 ways, give the masses
@@ -445,28 +475,15 @@ static void fit_plant(hyst_everett_grid_fit_t *fit, const hyst_everett_grid_t *g
  * by 1.02 times the largest. */
 static void test_undetermined_fit_is_the_same_whatever_the_rounding(void)
 {
-    hyst_everett_grid_t g, first, got;
+    hyst_everett_grid_t g = integer_grid(6u), first, got;
     hyst_everett_grid_fit_t fit;
     hyst_wide_t rms = -1;
     double largest = 0.0, worst = 0.0, y_lo = HUGE_VAL, y_hi = -HUGE_VAL;
-    long n = 0, k;
+    const long n = major_loops(6u);
+    long k;
     unsigned i, trial;
-    int c;
-    memset(&g, 0, sizeof g);
-    g.intervals = 6u;
-    for (i = 0u; i <= 6u; ++i) {
-        g.knots[i] = (hyst_wide_t)i;
-    }
     for (i = 0u; i < HYST_EVERETT_GRID_CELLS(6u); ++i) {
         g.weight[i] = (hyst_wide_t)(0.5 + rng_unit(&rng));
-    }
-    for (c = 0; c < 3; ++c) { /* major loops: 0 -> 6 -> 0 */
-        for (k = 0; k <= 60; ++k) {
-            fx[n++] = (hyst_wide_t)(0.1 * (double)k);
-        }
-        for (k = 59; k >= 0; --k) {
-            fx[n++] = (hyst_wide_t)(0.1 * (double)k);
-        }
     }
     for (trial = 0u; trial <= 8u; ++trial) {
         ref_egrid_init(&ref, &dom, &g);
@@ -558,29 +575,16 @@ static void test_fit_rms_is_the_models_residual(void)
  * determine them, and are fitted exactly. */
 static void test_fit_says_whether_the_record_determines_the_masses(void)
 {
-    static const hyst_wide_t knots[5] = {0.0, 1.0, 2.0, 3.0, 4.0};
-    hyst_everett_grid_t g, got;
+    hyst_everett_grid_t g = integer_grid(4u), got;
     hyst_everett_grid_fit_t fit;
     hyst_wide_t rms = -1;
-    long n = 0, k;
+    long n;
     int c, d;
     unsigned i;
-    memset(&g, 0, sizeof g);
-    g.intervals = 4u;
-    for (i = 0u; i <= 4u; ++i) {
-        g.knots[i] = knots[i];
-    }
     for (i = 0u; i < HYST_EVERETT_GRID_CELLS(4u); ++i) {
         g.weight[i] = 1.0 + (hyst_wide_t)i;
     }
-    for (c = 0; c < 3; ++c) { /* major loops: 0 -> 4 -> 0 */
-        for (k = 0; k <= 40; ++k) {
-            fx[n++] = (hyst_wide_t)(0.1 * (double)k);
-        }
-        for (k = 39; k >= 0; --k) {
-            fx[n++] = (hyst_wide_t)(0.1 * (double)k);
-        }
-    }
+    n = major_loops(4u);
     fit_plant(&fit, &g, n);
     TEST_ASSERT_EQUAL_INT(0, hyst_everett_grid_fit_determined(&fit));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_grid_fit_solve(&fit, &got, &rms));
