@@ -649,13 +649,15 @@ static void rank_others(fit_opts_t *o, const cli_table_t *t)
 /* A candidate's name in the printout into name[0..size). */
 static void candidate_name(const fit_candidate_t *c, char *name, size_t size)
 {
+    const char *widened = c->widened ? " widened" : "";
     if (c->kind == FIT_GRID || c->kind == FIT_SPLINE) {
-        (void)snprintf(name, size, "%s intervals %u", fit_kind_name(c->kind), c->degree);
+        (void)snprintf(name, size, "%s intervals %u%s", fit_kind_name(c->kind), c->degree,
+                       widened);
     } else if (c->kind == FIT_EVERETT) {
         (void)snprintf(name, size, "everett degree %u t-degree %u%s", c->degree, c->t_degree,
-                       c->widened ? " widened" : "");
+                       widened);
     } else {
-        (void)snprintf(name, size, "degree %u", c->degree);
+        (void)snprintf(name, size, "degree %u%s", c->degree, widened);
     }
 }
 
