@@ -136,7 +136,7 @@ static hyst_status_t NUM_NAME(pi_inverse_params_impl)(const NUM_T *r, const NUM_
      * and the rounded inverse weights pass NUM_NAME(pi_check)() (same sums): 1/w_1
      * can overflow, and the partial sums 1/W_i can cancel to 0 once W_i/W_1
      * exceeds 1/eps. */
-    slope = w[0];
+    slope = (hyst_wide_t)w[0];
     thr = 0;
     sum = (hyst_wide_t)(NUM_T)(1 / slope);
     if (!hyst_wide_is_finite(sum) || !(sum > 0)) {
@@ -158,7 +158,7 @@ static hyst_status_t NUM_NAME(pi_inverse_params_impl)(const NUM_T *r, const NUM_
         }
     }
     /* Pass 2: write. */
-    slope = w[0];
+    slope = (hyst_wide_t)w[0];
     thr = 0;
     r_inv[0] = 0;
     w_inv[0] = (NUM_T)(1 / slope);

@@ -6,8 +6,9 @@
  * Override an option with a compiler definition (-DHYST_MAX_DEGREE=5), or
  * collect them in a file of your own and build with
  * -DHYST_CONFIG_FILE="my_hyst_config.h"; never edit the library sources.
- * With CMake, set the cache variable of the same name: the hyst target then
- * exports the definition to everything that links it.
+ * With CMake, the layout options (below) and HYST_USE_DOUBLE are cache
+ * variables of the same name: the hyst target then exports the definition
+ * to everything that links it; the others are compiler definitions.
  *
  * | option              | default | meaning                                                    | layout |
  * |---------------------|---------|------------------------------------------------------------|--------|
