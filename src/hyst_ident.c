@@ -901,6 +901,13 @@ int hyst_tp_step_(hyst_wide_t *tp_x, hyst_wide_t *tp_r, size_t *n_tp, size_t cap
  * double leaves about 1 % at 1e-7). The per-sample loop stays as it was. */
 #define BRANCH_BLOCK 128u
 
+/* A pivot of the centred Gram below this fraction of its diagonal entry (1e4
+ * roundings) leaves a weight undetermined (hyst_branch_fit_determined_());
+ * where one does, the solve adds a ridge of this fraction of the largest
+ * diagonal entry: directions so weak get a ridge of their size, the others
+ * shrink by far less than the fits' tolerances. */
+#define BRANCH_RIDGE (HYST_WIDE_EPS * (hyst_wide_t)1e4)
+
 /* *hi + *lo += v, *lo gathering *hi's rounding errors (Knuth's TwoSum) */
 static void add_compensated(hyst_wide_t *hi, hyst_wide_t *lo, hyst_wide_t v)
 {
@@ -1064,7 +1071,7 @@ int hyst_branch_fit_determined_(const hyst_branch_fit_t *f)
             }
             if (i > j) {
                 l[i * m + j] = sum / l[j * m + j];
-            } else if (sum > h[i * m + i] * HYST_WIDE_EPS * (hyst_wide_t)1e4) {
+            } else if (sum > h[i * m + i] * BRANCH_RIDGE) {
                 l[i * m + i] = HYST_WIDE_SQRT(sum);
             } else {
                 return 0; /* a weight's column in the span of the others' */
@@ -1073,12 +1080,6 @@ int hyst_branch_fit_determined_(const hyst_branch_fit_t *f)
     }
     return 1;
 }
-
-/* The ridge added to the centred Gram's diagonal, of its largest entry,
- * where the record does not determine every weight: small enough to leave
- * the fit's residual unchanged at any accuracy that matters, large enough to
- * outweigh the Gram's rounding (the same solution at 1e-9 and 1e-6). */
-#define BRANCH_RIDGE 1e-9
 
 /* The centred Gram (the solver's first m^2 numbers) for the NNLS, with a
  * ridge on its diagonal. */
@@ -1124,7 +1125,7 @@ hyst_status_t hyst_branch_fit_solve_(const hyst_branch_fit_t *f, const hyst_wide
     tol = HYST_WIDE_SQRT(big * (syy > 0 ? syy : 0)) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m);
     ctx.h = h;
     ctx.m = m;
-    ctx.ridge = undetermined ? big * (hyst_wide_t)BRANCH_RIDGE : 0;
+    ctx.ridge = undetermined ? big * BRANCH_RIDGE : 0;
     p.n = m;
     p.gram = branch_gram;
     p.ctx = &ctx;

@@ -582,8 +582,9 @@ hyst_status_t hyst_everett_grid_fit_solve(const hyst_everett_grid_fit_t *fit,
  *        many non-negative solutions fit the record alike and predict
  *        differently where it did not go (minor loops, branches it did not
  *        take): hyst_everett_grid_fit_solve() then returns the one of least
- *        squared masses (a ridge of 1e-9 of the normal equations' largest
- *        diagonal entry), the same whatever the rounding of the outputs.
+ *        squared masses (a ridge of 1e4 roundings, 2.2e-12 in double, of
+ *        the normal equations' largest diagonal entry), the same whatever
+ *        the rounding of the outputs.
  *        Uses the solver's workspace; the solve may follow.
  */
 int hyst_everett_grid_fit_determined(const hyst_everett_grid_fit_t *fit);
