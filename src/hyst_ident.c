@@ -1042,7 +1042,8 @@ static hyst_wide_t branch_centre(const hyst_branch_fit_t *f, hyst_wide_t *h, hys
     for (i = 0u; i < m; ++i) {
         const hyst_wide_t si = branch_ata(f, i + 1u, 0u);
         for (j = 0u; j <= i; ++j) {
-            const hyst_wide_t v = branch_ata(f, i + 1u, j + 1u) - si * branch_ata(f, j + 1u, 0u) / n;
+            const hyst_wide_t v =
+                branch_ata(f, i + 1u, j + 1u) - si * branch_ata(f, j + 1u, 0u) / n;
             h[i * m + j] = v;
             h[j * m + i] = v;
         }

@@ -457,8 +457,9 @@ static int model_fit(const hyst_ident_config_t *part, int kind, unsigned t_degre
  * third left out (the fit takes its inputs in: the turning points are the
  * record's), from `settle` on (fit_settled()). The model runs from rest at
  * cfg->skip over the whole record each time; kind FIT_EVERETT with t_degree;
- * its domain widened by FIT_WIDEN about the inputs fitted when `widened`; creep (may be NULL) as
- * fit_model_run_creep(), fitted and scored on the same parts. */
+ * its domain widened by FIT_WIDEN about the inputs fitted when `widened`;
+ * creep (may be NULL) as fit_model_run_creep(), fitted and scored on the
+ * same parts. */
 static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t_degree,
                             int widened, const double *x, const double *y, size_t n, int split,
                             size_t settle, hyst_status_t *status, hyst_ident_result_t *poly,
@@ -523,8 +524,9 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
 
 /* A candidate scored on the validation record v: fitted on the whole of x,
  * y from cfg->skip on (widened as fit_chosen_domain() widens the model
- * chosen: the model the choice saves), then run from rest over v: the RMS error over every row of v it predicts (NaN if the fit
- * failed, *status, or none could be scored); creep (may be NULL): its
+ * chosen: the model the choice saves), then run from rest over v: the RMS
+ * error over every row of v it predicts (NaN if the fit failed, *status, or
+ * none could be scored); creep (may be NULL): its
  * terms fitted on the model's residual over x, y, scored on v
  * (fit_terms_other()). */
 static double validated(const hyst_ident_config_t *cfg, int kind, unsigned t_degree,
@@ -801,7 +803,7 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
 {
     size_t count = 0u, d;
     unsigned deg, k;
-    int widen = 0;
+    int widen = 0, w;
     size_t i;
     /* widened candidates only where they make a difference: the hold-out
      * part's inputs leave the range of the part fitted (and no --domain).
@@ -828,7 +830,6 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
         if (n <= base->skip + d) {
             break;
         }
-        int w;
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
             for (w = 0; w <= widen; ++w) {
                 add(base, x, y, n, v, creep_tau, FIT_POLY, deg, 0u, d, w, cand, max_cand,
