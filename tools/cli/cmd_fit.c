@@ -731,8 +731,8 @@ static void print_excitation(const fit_opts_t *o, const char *what, const char *
                  what, (unsigned long)o->excitation.beyond, (unsigned long)o->excitation.holdout_n,
                  o->excitation.fitted_lo, o->excitation.fitted_hi, fitted,
                  o->excitation.beyond > 0u ? " (predicted by the branches continued beyond it: "
-                                             "poly, everett and spline widened; the grid and "
-                                             "the others clamp them)"
+                                             "poly, everett and spline widened; the grid "
+                                             "clamps them)"
                                            : "");
     (void)printf("# %s excitation: its inputs span %.3g %% of the record's range, %lu reversals "
                  "inside it (minor loops)\n",
