@@ -151,4 +151,37 @@ FUZZ_MAYBE_UNUSED static double horner_bound(const hyst_poly_t *f)
     return 8.0 * (double)(f->degree + 1u) * DBL_EPSILON * acc;
 }
 
+/* A compensator C driving its model M (both initialised) over the desired
+ * outputs ys[0..n) (the model's own): each drive, into drive[k], finite, on
+ * [lo, hi] up to 8 units in the last place of the larger end, and never
+ * against the desired output; with tol >= 0 the model within (d + 1) tol of
+ * each desired output, d the larger count of stacked turning points. Returns
+ * the largest error over its allowance (0 with tol < 0 or tol 0). */
+FUZZ_MAYBE_UNUSED static double fuzz_round_trip(hyst_t *C, hyst_t *M, const double *ys, size_t n,
+                                                double lo, double hi, double tol, double *drive)
+{
+    const double end = fmax(fabs(lo), fabs(hi)), ulp = nextafter(end, INFINITY) - end;
+    double worst = 0.0;
+    size_t k;
+    for (k = 0u; k < n; ++k) {
+        const double x = hyst_step(C, ys[k]);
+        const double y = hyst_step(M, x);
+        const double d = (double)(hyst_tp_count(C) > hyst_tp_count(M) ? hyst_tp_count(C)
+                                                                        : hyst_tp_count(M));
+        drive[k] = x;
+        CHECK(hyst_status(C) >= 0 && isfinite(x) && x >= lo - 8.0 * ulp && x <= hi + 8.0 * ulp);
+        if (k > 0u) { /* monotone: never against the desired output */
+            CHECK(ys[k] > ys[k - 1u] ? x >= drive[k - 1u] : ys[k] < ys[k - 1u] ? x <= drive[k - 1u] : 1);
+        }
+        if (tol >= 0) {
+            const double allowed = (d + 1.0) * tol;
+            CHECK(fabs(y - ys[k]) <= allowed);
+            if (allowed > 0 && fabs(y - ys[k]) / allowed > worst) {
+                worst = fabs(y - ys[k]) / allowed;
+            }
+        }
+    }
+    return worst;
+}
+
 #endif

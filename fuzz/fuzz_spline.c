@@ -493,27 +493,14 @@ static int is_the_curve(const hyst_curve_t *c, const hyst_spline_t *f)
 static void round_trip(const hyst_curve_t *inv, const hyst_spline_t *f, double tol, size_t n,
                        double *worst, unsigned long *trips)
 {
-    const double lo = f->lo, hi = f->hi;
-    const double end = fmax(fabs(lo), fabs(hi)), ulp = nextafter(end, INFINITY) - end;
     hyst_t C, M;
-    size_t k;
+    double most;
     CHECK(hyst_init_curve(&C, inv, xl2, yl2, xr2, yr2, BIG_CAP) == HYST_OK);
     CHECK(hyst_init_curve(&M, &curve, xl3, yl3, xr3, yr3, BIG_CAP) == HYST_OK);
-    for (k = 0u; k < n; ++k) {
-        const double x = hyst_step(&C, ys[k]);
-        const double y = hyst_step(&M, x);
-        const double d = (double)(hyst_tp_count(&C) > hyst_tp_count(&M) ? hyst_tp_count(&C)
-                                                                          : hyst_tp_count(&M));
-        drive[k] = x;
-        CHECK(hyst_status(&C) >= 0 && isfinite(x) && x >= lo - 8.0 * ulp && x <= hi + 8.0 * ulp);
-        if (k > 0u) { /* monotone: never against the desired output */
-            CHECK(ys[k] > ys[k - 1u] ? x >= drive[k - 1u] : ys[k] < ys[k - 1u] ? x <= drive[k - 1u] : 1);
-        }
-        if (tol >= 0) {
-            CHECK(fabs(y - ys[k]) <= (d + 1.0) * tol);
-            ratio(worst, fabs(y - ys[k]), (d + 1.0) * tol);
-            ++*trips;
-        }
+    most = fuzz_round_trip(&C, &M, ys, n, f->lo, f->hi, tol, drive);
+    if (tol >= 0) {
+        *worst = fmax(*worst, most);
+        *trips += (unsigned long)n;
     }
     CHECK(hyst_init_curve(&C, inv, xl2, yl2, xr2, yr2, BIG_CAP) == HYST_OK);
     CHECK(hyst_process(&C, ys, ys2, n) >= 0);
