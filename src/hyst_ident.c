@@ -1053,18 +1053,12 @@ static hyst_wide_t branch_centre(const hyst_branch_fit_t *f, hyst_wide_t *h, hys
     return big;
 }
 
-int hyst_branch_fit_determined_(const hyst_branch_fit_t *f)
+/* Whether the centred Gram h (m x m) determines every weight: h = L L' into
+ * l (m x m), each pivot above BRANCH_RIDGE of its diagonal entry. */
+static int branch_factors(const hyst_wide_t *h, size_t m, hyst_wide_t *l)
 {
-    size_t m, i, j, k;
-    hyst_wide_t *h, *l;
-    if (f->used < 2u) {
-        return 0;
-    }
-    m = f->cols - 1u;
-    h = f->solver;
-    l = h + m * m + m; /* the factor where the solve keeps its weights and the rest */
-    (void)branch_centre(f, h, h + m * m);
-    for (i = 0u; i < m; ++i) { /* h = L L', each pivot above its diagonal's rounding */
+    size_t i, j, k;
+    for (i = 0u; i < m; ++i) {
         for (j = 0u; j <= i; ++j) {
             hyst_wide_t sum = h[i * m + j];
             for (k = 0u; k < j; ++k) {
@@ -1080,6 +1074,19 @@ int hyst_branch_fit_determined_(const hyst_branch_fit_t *f)
         }
     }
     return 1;
+}
+
+int hyst_branch_fit_determined_(const hyst_branch_fit_t *f)
+{
+    size_t m;
+    hyst_wide_t *h;
+    if (f->used < 2u) {
+        return 0;
+    }
+    m = f->cols - 1u;
+    h = f->solver;
+    (void)branch_centre(f, h, h + m * m);
+    return branch_factors(h, m, h + m * m + m); /* the factor where the solve keeps its weights */
 }
 
 /* The centred Gram (the solver's first m^2 numbers) for the NNLS, with a
@@ -1108,19 +1115,19 @@ hyst_status_t hyst_branch_fit_solve_(const hyst_branch_fit_t *f, const hyst_wide
     if (f->used < 2u) {
         return HYST_ERR_SINGULAR;
     }
-    /* A record that does not determine every weight leaves solutions that
-     * fit it alike, and the NNLS's order of entry would pick one by rounding
-     * (1e-12 of the outputs moved a grid's prediction of a measured record's
-     * last third between 1.17 % and 1.00 % of its range): a ridge makes the
-     * one returned that of least squared weights among them, whatever the
-     * rounding. A determined fit is left as it is. (Before the Gram below:
-     * the test factors it in the same numbers.) */
-    undetermined = !hyst_branch_fit_determined_(f);
     n = (hyst_wide_t)f->used;
     h = f->solver;
     c = h + m * m;
     w = c + m;
     big = branch_centre(f, h, c);
+    /* A record that does not determine every weight leaves solutions that
+     * fit it alike, and the NNLS's order of entry would pick one by rounding
+     * (1e-12 of the outputs moved a grid's prediction of a measured record's
+     * last third between 1.17 % and 1.00 % of its range): a ridge makes the
+     * one returned that of least squared weights among them, whatever the
+     * rounding. A determined fit is left as it is. The factor goes where the
+     * NNLS then works. */
+    undetermined = !branch_factors(h, m, w);
     sum_y = branch_aty(f, 0u);
     syy = branch_yy(f) - sum_y * sum_y / n;
     tol = HYST_WIDE_SQRT(big * (syy > 0 ? syy : 0)) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m);
