@@ -457,6 +457,12 @@ NUM_T NUM_NAME(spline_g_)(const hyst_curve_t *curve, NUM_T s)
     return v > 0 ? v : 0; /* G >= 0: a piece rounded below its knot's 0 */
 }
 
+NUM_T NUM_NAME(inv_table_g_)(const hyst_curve_t *curve, NUM_T s)
+{
+    const NUM_T v = NUM_NAME(table_g)(curve->u.inv_table.table.NUM_F, s);
+    return v >= 0 ? v : NUM_NAME(table_exact)(curve, s);
+}
+
 NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
 {
     if (curve->kind == (unsigned)HYST_CURVE_POLY_INV) {
@@ -483,8 +489,7 @@ NUM_T NUM_NAME(curve_g_other_)(const hyst_curve_t *curve, NUM_T d)
         return a * curve->u.everett.span.NUM_F;
     }
     if (curve->kind == (unsigned)HYST_CURVE_INV_TABLE) { /* d is s here */
-        const NUM_T v = NUM_NAME(table_g)(curve->u.inv_table.table.NUM_F, d);
-        return v >= 0 ? v : NUM_NAME(table_exact)(curve, d);
+        return NUM_NAME(inv_table_g_)(curve, d);
     }
     /* PWL, PWL_INV: the difference of two interpolations; exactly 0 at d = 0 */
     return NUM_NAME(pwl_eval)(curve, curve->lo.NUM_F + d) - curve->y_lo.NUM_F;

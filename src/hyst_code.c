@@ -38,6 +38,7 @@ static int hyst_code_admit(hyst_tcm_t *S, uint_least32_t code, hyst_code_word_t 
 #define TCM_NORM(a) (a)
 #define TCM_ADMIT(S, x, out) hyst_code_admit((S), (x), (out))
 #define TCM_CURVE_G(c, d) hyst_f32_curve_g_other_((c), (d))
+#define TCM_INV_TABLE_G(c, s) hyst_f32_inv_table_g_((c), (s))
 #define TCM_SPLINE_G(c, s) hyst_f32_spline_g_((c), (s))
 #define TCM_SPLINE_TABLE_G(c, s) hyst_f32_spline_table_g_((c), (s))
 #include "tcm_engine.h"

@@ -93,8 +93,8 @@ static hyst_q31_t hyst_q31_inv_other(const hyst_curve_t *c, hyst_q31_t u)
 #define TCM_ADD_BOUND(a, e) ((a) = hyst_q31_inv_add_bound((a), (e)))
 #include "tcm_engine.h"
 /* its kind: the tabulated inverse's (its exact intervals by TCM_G_OTHER) */
-#define TCM_CURVE_G(c, d) hyst_q31_inv_other((c), (d))
-#include "kind_curve.h"
+#define TCM_INV_TABLE_G(c, s) hyst_q31_inv_other((c), (s))
+#include "kind_inv_table.h"
 
 #define Q31_INV_SPAN ((uint_least32_t)1 << HYST_Q31_SPAN_BITS)
 
@@ -170,7 +170,7 @@ hyst_status_t hyst_q31_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
     inv->u.inv_table.max_err = max_err;
     inv->u.inv_table.drive_bits = bits;
     inv->u.inv_table.drive_code_lo = code_lo;
-    hyst_q31_inv_attach(S, inv, &hyst_q31_inv_kind_curve, inv->lo.q31, inv->hi.q31, inv->unit.q31, xltp, yltp, xrtp, yrtp,
+    hyst_q31_inv_attach(S, inv, &hyst_q31_inv_kind_inv_table, inv->lo.q31, inv->hi.q31, inv->unit.q31, xltp, yltp, xrtp, yrtp,
                         capacity);
     return HYST_OK;
 }

@@ -456,6 +456,13 @@ float hyst_f32_curve_g_other_(const hyst_curve_t *curve, float d);
 #if HYST_ENABLE_F64
 double hyst_f64_curve_g_other_(const hyst_curve_t *curve, double d);
 #endif
+/* G of a tabulated inverse at s (table intervals): its cubic, or in an
+ * interval marked exact the bisection on f0's G (src/curve_eval.h;
+ * src/kind_inv_table.h's g). */
+float hyst_f32_inv_table_g_(const hyst_curve_t *curve, float s);
+#if HYST_ENABLE_F64
+double hyst_f64_inv_table_g_(const hyst_curve_t *curve, double s);
+#endif
 /* G of a spline at s (knot intervals from lo), or of its inverse at the
  * output step (src/curve_eval.h; src/kind_spline.h's g). */
 float hyst_f32_spline_g_(const hyst_curve_t *curve, float s);

@@ -3,19 +3,21 @@
  * a prepared curve to its kind (kind_of()). Included after src/tcm_engine.h
  * by a variant with real outputs (src/variant_real.h, src/hyst_code.c),
  * which defines TCM_CURVE_G(c, u): g of the kinds evaluated out of line,
- * TCM_SPLINE_G(c, s): a spline's or its solved compensator's, and
+ * TCM_INV_TABLE_G(c, s): a tabulated inverse's, TCM_SPLINE_G(c, s): a spline's or its solved compensator's, and
  * TCM_SPLINE_TABLE_G(c, s): its tabulated compensator's.
  * An init that binds one kind alone (hyst_*_init_: the polynomial) links
  * no other kind's code. */
 #ifndef HYST_KINDS_H
 #define HYST_KINDS_H
 
-#if !defined(TCM_CURVE_G) || !defined(TCM_SPLINE_G) || !defined(TCM_SPLINE_TABLE_G)
-#error "kinds.h: the variant must define TCM_CURVE_G, TCM_SPLINE_G and TCM_SPLINE_TABLE_G"
+#if !defined(TCM_CURVE_G) || !defined(TCM_INV_TABLE_G) || !defined(TCM_SPLINE_G) || \
+    !defined(TCM_SPLINE_TABLE_G)
+#error "kinds.h: the variant must define TCM_CURVE_G, TCM_INV_TABLE_G, TCM_SPLINE_G and TCM_SPLINE_TABLE_G"
 #endif
 
 #include "kind_poly.h"
 #include "kind_curve.h"
+#include "kind_inv_table.h"
 #include "kind_everett.h"
 #include "kind_everett_inv.h"
 #include "kind_everett_inv_table.h"
@@ -37,7 +39,8 @@ static const TCM_NAME(kind_t) *TCM_NAME(kind_of)(const hyst_curve_t *curve)
     case HYST_CURVE_SPLINE:
     case HYST_CURVE_SPLINE_INV: return &TCM_NAME(kind_spline);
     case HYST_CURVE_SPLINE_INV_TABLE: return &TCM_NAME(kind_spline_inv_table);
-    default: return &TCM_NAME(kind_curve); /* PWL, PWL_INV, POLY_INV, INV_TABLE */
+    case HYST_CURVE_INV_TABLE: return &TCM_NAME(kind_inv_table);
+    default: return &TCM_NAME(kind_curve); /* PWL, PWL_INV, POLY_INV */
     }
 }
 

@@ -139,7 +139,8 @@ typedef struct TCM_NAME(kind) {
      * engine's (skip(): a polynomial branch's bound by its coefficients,
      * else |g(a - b) - 2 g((a - b) / 2)|) */
     TCM_Y (*loop_error)(const hyst_tcm_t *S, TCM_X b, TCM_X a);
-    /* the kind's numbers of the instance, set once at init; NULL if none */
+    /* the kind's numbers of the instance, set once at init (every kind has
+     * one: init calls it unconditionally) */
     void (*attach)(hyst_tcm_t *S, const hyst_curve_t *curve);
     /* S->horner - S->degree with no request pending: 0, or the bank of
      * Horner's cases the kind's branches use (TCM_HORNER_BANK_) */

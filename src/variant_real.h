@@ -51,6 +51,7 @@ static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
 #define TCM_REAL_INPUT 1
 #define TCM_ADMIT(S, x, out) NUM_NAME(admit)((S), (x), (out))
 #define TCM_CURVE_G(c, d) NUM_NAME(curve_g_other_)((c), (d))
+#define TCM_INV_TABLE_G(c, s) NUM_NAME(inv_table_g_)((c), (s))
 #define TCM_SPLINE_G(c, s) NUM_NAME(spline_g_)((c), (s))
 #define TCM_SPLINE_TABLE_G(c, s) NUM_NAME(spline_table_g_)((c), (s))
 #ifdef NUM_KEY_T
@@ -209,8 +210,8 @@ static hyst_status_t NUM_NAME(seal_inverse_table_impl)(NUM_SEALED_INVERSE_T *out
 
 /* The sealed compensator: checks what the seal cannot vouch for (the
  * memory, the layout, the degree and intervals that bound the reads) and
- * the seal over the struct and the table; binds the out-of-line kind (the
- * exact intervals) as the build's init does. */
+ * the seal over the struct and the table; binds the tabulated inverse's
+ * kind as the build's init does. */
 static hyst_status_t NUM_NAME(init_inverse_sealed_impl)(hyst_tcm_t *S, hyst_curve_t *inv,
                                                         const NUM_SEALED_INVERSE_T *c,
                                                         const NUM_T *table, NUM_T *xltp,
@@ -255,26 +256,20 @@ static hyst_status_t NUM_NAME(init_inverse_sealed_impl)(hyst_tcm_t *S, hyst_curv
     }
     curve.u.inv_table.max_err = hyst_wide_of_float_(c->max_err);
     *inv = curve;
-    NUM_NAME(attach)(S, inv, &NUM_NAME(kind_curve), inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F,
+    NUM_NAME(attach)(S, inv, &NUM_NAME(kind_inv_table), inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F,
                      xltp, yltp, xrtp, yrtp, capacity);
     return HYST_OK;
 }
 
-/* A compensator of f0: its inverse curve into *inv (exact by bisection, or
- * tabulated into table if `tabulate`), then the instance. */
-static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,
-                                               const hyst_poly_t *f0, int tabulate, NUM_T *table,
-                                               size_t intervals, NUM_T *xltp, NUM_T *yltp,
-                                               NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
-                                               unsigned long layout)
+/* A compensator of f0 once its inverse curve is built (st: the build's
+ * status; curve errors first, then the instance's: inverse.h): the curve
+ * into *inv, then the instance on it, of kind `kind`. */
+static hyst_status_t NUM_NAME(bind_inverse)(hyst_tcm_t *S, hyst_curve_t *inv, hyst_status_t st,
+                                            const hyst_curve_t *curve,
+                                            const NUM_NAME(kind_t) *kind, NUM_T *xltp,
+                                            NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp,
+                                            size_t capacity, unsigned long layout)
 {
-    hyst_curve_t fwd, curve;
-    /* curve errors first, then the instance's (inverse.h) */
-    hyst_status_t st = inv == NULL ? HYST_ERR_NULL : hyst_curve_poly_(&fwd, f0, NUM_VARIANT, layout);
-    if (st == HYST_OK) {
-        st = tabulate ? NUM_NAME(curve_inverse_table_impl)(&curve, &fwd, table, intervals)
-                      : hyst_curve_inverse(&curve, &fwd);
-    }
     if (st == HYST_OK) {
         st = hyst_check_memory(S, xltp, yltp, xrtp, yrtp, capacity, sizeof(NUM_T), sizeof(NUM_T),
                                layout);
@@ -282,20 +277,26 @@ static hyst_status_t NUM_NAME(init_inverse_of)(hyst_tcm_t *S, hyst_curve_t *inv,
     if (st != HYST_OK) {
         return st;
     }
-    *inv = curve; /* checked above: attach without checking again */
-    /* the inverted polynomial or its table: both the out-of-line kind */
-    NUM_NAME(attach)(S, inv, &NUM_NAME(kind_curve), inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F,
-                     xltp, yltp, xrtp, yrtp, capacity);
+    *inv = *curve; /* checked above: attach without checking again */
+    NUM_NAME(attach)(S, inv, kind, inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F, xltp, yltp, xrtp,
+                     yrtp, capacity);
     return HYST_OK;
 }
 
+/* The compensators' builds are separate calls, so that a firmware that
+ * tabulates links no bisection set-up, and one that bisects no table. */
 static hyst_status_t NUM_NAME(init_inverse_exact_impl)(hyst_tcm_t *S, hyst_curve_t *inv,
                                             const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
                                             NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                             unsigned long layout)
 {
-    return NUM_NAME(init_inverse_of)(S, inv, f0, 0, NULL, 0u, xltp, yltp, xrtp, yrtp, capacity,
-                                     layout);
+    hyst_curve_t fwd, curve;
+    hyst_status_t st = inv == NULL ? HYST_ERR_NULL : hyst_curve_poly_(&fwd, f0, NUM_VARIANT, layout);
+    if (st == HYST_OK) {
+        st = hyst_curve_inverse(&curve, &fwd);
+    }
+    return NUM_NAME(bind_inverse)(S, inv, st, &curve, &NUM_NAME(kind_curve), xltp, yltp, xrtp,
+                                  yrtp, capacity, layout);
 }
 
 static hyst_status_t NUM_NAME(init_inverse_table_impl)(hyst_tcm_t *S, hyst_curve_t *inv,
@@ -304,8 +305,13 @@ static hyst_status_t NUM_NAME(init_inverse_table_impl)(hyst_tcm_t *S, hyst_curve
                                             NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                             unsigned long layout)
 {
-    return NUM_NAME(init_inverse_of)(S, inv, f0, 1, table, intervals, xltp, yltp, xrtp, yrtp,
-                                     capacity, layout);
+    hyst_curve_t fwd, curve;
+    hyst_status_t st = inv == NULL ? HYST_ERR_NULL : hyst_curve_poly_(&fwd, f0, NUM_VARIANT, layout);
+    if (st == HYST_OK) {
+        st = NUM_NAME(curve_inverse_table_impl)(&curve, &fwd, table, intervals);
+    }
+    return NUM_NAME(bind_inverse)(S, inv, st, &curve, &NUM_NAME(kind_inv_table), xltp, yltp, xrtp,
+                                  yrtp, capacity, layout);
 }
 
 /* The deadband checks shared by the immediate call and the request. */
