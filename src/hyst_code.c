@@ -78,6 +78,76 @@ hyst_status_t hyst_code_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve,
                                                   code_hi, xltp, yltp, xrtp, yrtp, capacity);
 }
 
+hyst_status_t hyst_code_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hyst_kind_t kind,
+                                   uint_least32_t code_lo, uint_least32_t code_hi,
+                                   hyst_code_word_t *xltp, float *yltp, hyst_code_word_t *xrtp,
+                                   float *yrtp, size_t capacity, unsigned long layout)
+{
+    const hyst_code_kind_t *ops = NULL;
+    hyst_status_t st = hyst_check_init(S, curve, HYST_VARIANT_F32, xltp, yltp, xrtp, yrtp,
+                                       capacity, sizeof(hyst_code_word_t), sizeof(float), layout);
+    if (st == HYST_OK && kind == NULL) {
+        st = HYST_ERR_NULL;
+    }
+    if (st == HYST_OK) {
+        ops = (const hyst_code_kind_t *)kind(curve, (unsigned)HYST_VARIANT_CODE);
+        st = ops != NULL ? HYST_OK : HYST_ERR_CURVE;
+    }
+    return st != HYST_OK ? st
+                         : hyst_code_attach_range(S, curve, ops, code_lo, code_hi, xltp, yltp,
+                                                  xrtp, yrtp, capacity);
+}
+
+const void *hyst_code_kind_poly(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_poly(curve, variant);
+}
+
+const void *hyst_code_kind_curve(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_curve(curve, variant);
+}
+
+const void *hyst_code_kind_inverse_table(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_inverse_table(curve, variant);
+}
+
+const void *hyst_code_kind_everett(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_everett(curve, variant);
+}
+
+const void *hyst_code_kind_everett_inverse(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_everett_inverse(curve, variant);
+}
+
+const void *hyst_code_kind_everett_inverse_table(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_everett_inverse_table(curve, variant);
+}
+
+const void *hyst_code_kind_everett_grid(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_everett_grid(curve, variant);
+}
+
+const void *hyst_code_kind_everett_grid_inverse(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_everett_grid_inverse(curve, variant);
+}
+
+const void *hyst_code_kind_spline(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_spline(curve, variant);
+}
+
+const void *hyst_code_kind_spline_inverse_table(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_spline_inverse_table(curve, variant);
+}
+
 hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_t code_lo,
                               uint_least32_t code_hi, hyst_code_word_t *xltp, float *yltp,
                               hyst_code_word_t *xrtp, float *yrtp, size_t capacity,
@@ -90,7 +160,7 @@ hyst_status_t hyst_code_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32
         st = hyst_curve_poly_(&curve, f0, HYST_VARIANT_F32, layout);
     }
     if (st == HYST_OK) {
-        st = hyst_code_attach_range(S, &curve, &hyst_code_kind_poly, code_lo, code_hi, xltp, yltp, xrtp, yrtp,
+        st = hyst_code_attach_range(S, &curve, &hyst_code_ops_poly, code_lo, code_hi, xltp, yltp, xrtp, yrtp,
                                     capacity);
     }
     if (st == HYST_OK) {

@@ -67,6 +67,63 @@ hyst_status_t hyst_f32_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve, flo
     return hyst_f32_init_curve_impl(S, curve, xltp, yltp, xrtp, yrtp, capacity, layout);
 }
 
+hyst_status_t hyst_f32_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hyst_kind_t kind,
+                                  float *xltp, float *yltp, float *xrtp, float *yrtp, size_t capacity,
+                                  unsigned long layout)
+{
+    return hyst_f32_init_kind_impl(S, curve, kind, xltp, yltp, xrtp, yrtp, capacity, layout);
+}
+
+const void *hyst_f32_kind_poly(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_poly(curve, variant);
+}
+
+const void *hyst_f32_kind_curve(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_curve(curve, variant);
+}
+
+const void *hyst_f32_kind_inverse_table(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_inverse_table(curve, variant);
+}
+
+const void *hyst_f32_kind_everett(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_everett(curve, variant);
+}
+
+const void *hyst_f32_kind_everett_inverse(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_everett_inverse(curve, variant);
+}
+
+const void *hyst_f32_kind_everett_inverse_table(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_everett_inverse_table(curve, variant);
+}
+
+const void *hyst_f32_kind_everett_grid(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_everett_grid(curve, variant);
+}
+
+const void *hyst_f32_kind_everett_grid_inverse(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_everett_grid_inverse(curve, variant);
+}
+
+const void *hyst_f32_kind_spline(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_spline(curve, variant);
+}
+
+const void *hyst_f32_kind_spline_inverse_table(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f32_bind_spline_inverse_table(curve, variant);
+}
+
 hyst_status_t hyst_f32_init_sealed_(hyst_tcm_t *S, const hyst_f32_sealed_poly_t *sealed,
                                     float *xltp, float *yltp, float *xrtp, float *yrtp,
                                     size_t capacity, unsigned long layout)

@@ -66,6 +66,63 @@ hyst_status_t hyst_f64_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve, dou
     return hyst_f64_init_curve_impl(S, curve, xltp, yltp, xrtp, yrtp, capacity, layout);
 }
 
+hyst_status_t hyst_f64_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hyst_kind_t kind,
+                                  double *xltp, double *yltp, double *xrtp, double *yrtp, size_t capacity,
+                                  unsigned long layout)
+{
+    return hyst_f64_init_kind_impl(S, curve, kind, xltp, yltp, xrtp, yrtp, capacity, layout);
+}
+
+const void *hyst_f64_kind_poly(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_poly(curve, variant);
+}
+
+const void *hyst_f64_kind_curve(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_curve(curve, variant);
+}
+
+const void *hyst_f64_kind_inverse_table(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_inverse_table(curve, variant);
+}
+
+const void *hyst_f64_kind_everett(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_everett(curve, variant);
+}
+
+const void *hyst_f64_kind_everett_inverse(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_everett_inverse(curve, variant);
+}
+
+const void *hyst_f64_kind_everett_inverse_table(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_everett_inverse_table(curve, variant);
+}
+
+const void *hyst_f64_kind_everett_grid(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_everett_grid(curve, variant);
+}
+
+const void *hyst_f64_kind_everett_grid_inverse(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_everett_grid_inverse(curve, variant);
+}
+
+const void *hyst_f64_kind_spline(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_spline(curve, variant);
+}
+
+const void *hyst_f64_kind_spline_inverse_table(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_f64_bind_spline_inverse_table(curve, variant);
+}
+
 hyst_status_t hyst_f64_init_sealed_(hyst_tcm_t *S, const hyst_f64_sealed_poly_t *sealed,
                                     double *xltp, double *yltp, double *xrtp, double *yrtp,
                                     size_t capacity, unsigned long layout)

@@ -174,7 +174,7 @@ hyst_status_t hyst_q31_init_(hyst_tcm_t *S, const hyst_poly_t *f0, uint_least32_
     if (st != HYST_OK) {
         return st;
     }
-    hyst_q31_attach(S, &q, &hyst_q31_kind_poly, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit,
+    hyst_q31_attach(S, &q, &hyst_q31_ops_poly, (hyst_code_word_t)code_lo, (hyst_code_word_t)code_hi, unit,
                     xltp, yltp, xrtp, yrtp, capacity);
     S->curve = NULL; /* the polynomial is copied whole into the instance */
     return HYST_OK;
@@ -247,7 +247,7 @@ hyst_status_t hyst_q31_init_sealed_(hyst_tcm_t *S, const hyst_q31_sealed_poly_t 
     if (hyst_poly_seal_crc_(&q) != (sealed->seal & 0xFFFFFFFFul)) {
         return HYST_ERR_CRC;
     }
-    hyst_q31_attach(S, &q, &hyst_q31_kind_poly, q.lo.code, q.hi.code, q.unit.q31, xltp, yltp, xrtp, yrtp,
+    hyst_q31_attach(S, &q, &hyst_q31_ops_poly, q.lo.code, q.hi.code, q.unit.q31, xltp, yltp, xrtp, yrtp,
                     capacity);
     S->curve = NULL;
     return HYST_OK;

@@ -170,7 +170,7 @@ hyst_status_t hyst_q31_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
     inv->u.inv_table.max_err = max_err;
     inv->u.inv_table.drive_bits = bits;
     inv->u.inv_table.drive_code_lo = code_lo;
-    hyst_q31_inv_attach(S, inv, &hyst_q31_inv_kind_inv_table, inv->lo.q31, inv->hi.q31, inv->unit.q31, xltp, yltp, xrtp, yrtp,
+    hyst_q31_inv_attach(S, inv, &hyst_q31_inv_ops_inv_table, inv->lo.q31, inv->hi.q31, inv->unit.q31, xltp, yltp, xrtp, yrtp,
                         capacity);
     return HYST_OK;
 }

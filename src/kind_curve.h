@@ -18,7 +18,7 @@ static void TCM_NAME(curve_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
     (void)curve;
 }
 
-static const TCM_NAME(kind_t) TCM_NAME(kind_curve) = {.g = TCM_NAME(curve_kind_g),
+static const TCM_NAME(kind_t) TCM_NAME(ops_curve) = {.g = TCM_NAME(curve_kind_g),
                                                       .attach = TCM_NAME(curve_attach)};
 
 #endif /* HYST_KIND_CURVE_H */

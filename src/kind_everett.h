@@ -189,14 +189,14 @@ static void TCM_NAME(everett_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 
 /* Its two tables: rows as polynomials in the anchor (bank 1), or at most
  * linear in it (bank 2; kind_of() chooses). */
-static const TCM_NAME(kind_t) TCM_NAME(kind_everett) = {
+static const TCM_NAME(kind_t) TCM_NAME(ops_everett) = {
     .derive = TCM_NAME(everett_derive),
     .slow = TCM_NAME(everett_step_slow),
     .loop_error = TCM_NAME(everett_loop_error),
     .attach = TCM_NAME(everett_attach),
     .bank = HYST_HORNER_BANK1_};
 
-static const TCM_NAME(kind_t) TCM_NAME(kind_everett_lines) = {
+static const TCM_NAME(kind_t) TCM_NAME(ops_everett_lines) = {
     .derive = TCM_NAME(everett_derive),
     .slow = TCM_NAME(everett_step_slow),
     .loop_error = TCM_NAME(everett_loop_error),

@@ -258,7 +258,7 @@ static void TCM_NAME(eg_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 #define TCM_SLOW_PER_BRANCH 1
 #include "tcm_slow.h"
 
-static const TCM_NAME(kind_t) TCM_NAME(kind_everett_grid) = {
+static const TCM_NAME(kind_t) TCM_NAME(ops_everett_grid) = {
     .g = TCM_NAME(eg_g),
     .emit = TCM_NAME(eg_emit),
     .derive = TCM_NAME(eg_derive),

@@ -156,7 +156,7 @@ HYST_INLINE TCM_Y TCM_NAME(egi_slow_emit)(hyst_tcm_t *S, TCM_X x, const int how,
 #include "tcm_slow.h"
 
 /* Its numbers at init: the forward kind's (the table's checksum). */
-static const TCM_NAME(kind_t) TCM_NAME(kind_everett_grid_inv) = {
+static const TCM_NAME(kind_t) TCM_NAME(ops_everett_grid_inv) = {
     .g = TCM_NAME(egi_g),
     .emit = TCM_NAME(egi_emit),
     .derive = TCM_NAME(egi_derive),

@@ -215,7 +215,7 @@ static void TCM_NAME(solved_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 #define TCM_SLOW_PER_BRANCH 1
 #include "tcm_slow.h"
 
-static const TCM_NAME(kind_t) TCM_NAME(kind_everett_inv) = {
+static const TCM_NAME(kind_t) TCM_NAME(ops_everett_inv) = {
     .g = TCM_NAME(solve),
     .emit = TCM_NAME(solved_emit),
     .derive = TCM_NAME(solved_derive),

@@ -297,7 +297,7 @@ HYST_INLINE TCM_Y TCM_NAME(blended_slow_emit)(hyst_tcm_t *S, TCM_X x, const int 
 #define TCM_SLOW_PER_BRANCH 1
 #include "tcm_slow.h"
 
-static const TCM_NAME(kind_t) TCM_NAME(kind_everett_inv_table) = {
+static const TCM_NAME(kind_t) TCM_NAME(ops_everett_inv_table) = {
     .g = TCM_NAME(blend_g),
     .emit = TCM_NAME(blended_emit),
     .derive = TCM_NAME(blended_derive),

@@ -19,7 +19,7 @@ static void TCM_NAME(inv_table_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
     S->table.TCM_YF = curve->u.inv_table.table.TCM_YF;
 }
 
-static const TCM_NAME(kind_t) TCM_NAME(kind_inv_table) = {.g = TCM_NAME(inv_table_kind_g),
+static const TCM_NAME(kind_t) TCM_NAME(ops_inv_table) = {.g = TCM_NAME(inv_table_kind_g),
                                                           .attach = TCM_NAME(inv_table_attach)};
 
 #endif /* HYST_KIND_INV_TABLE_H */

@@ -25,23 +25,84 @@
 #include "kind_everett_grid_inv.h"
 #include "kind_spline.h"
 
-/* The kind of a prepared curve (checked: hyst_curve_check()). */
+/* The kinds a firmware names (hyst_*_init_kind()): each binds the curves
+ * of its own kind, for an instance of this variant, and NULL any other
+ * curve; each references its own kind alone, so a firmware links the kinds
+ * it names and no other. */
+static const void *TCM_NAME(bound)(unsigned variant, int of_kind, const void *ops)
+{
+    return variant == (unsigned)TCM_VARIANT && of_kind ? ops : NULL;
+}
+
+static const void *TCM_NAME(bind_poly)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_POLY, &TCM_NAME(ops_poly));
+}
+
+static const void *TCM_NAME(bind_curve)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_PWL || c->kind == (unsigned)HYST_CURVE_PWL_INV ||
+                                       c->kind == (unsigned)HYST_CURVE_POLY_INV, &TCM_NAME(ops_curve));
+}
+
+static const void *TCM_NAME(bind_inverse_table)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_INV_TABLE, &TCM_NAME(ops_inv_table));
+}
+
+static const void *TCM_NAME(bind_everett)(const hyst_curve_t *c, unsigned variant)
+{
+    const void *lines = TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT,
+                                        &TCM_NAME(ops_everett_lines));
+    return lines != NULL && !c->u.everett.linear_x ? &TCM_NAME(ops_everett) : lines;
+}
+
+static const void *TCM_NAME(bind_everett_inverse)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_INV, &TCM_NAME(ops_everett_inv));
+}
+
+static const void *TCM_NAME(bind_everett_inverse_table)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE, &TCM_NAME(ops_everett_inv_table));
+}
+
+static const void *TCM_NAME(bind_everett_grid)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_GRID, &TCM_NAME(ops_everett_grid));
+}
+
+static const void *TCM_NAME(bind_everett_grid_inverse)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_GRID_INV, &TCM_NAME(ops_everett_grid_inv));
+}
+
+static const void *TCM_NAME(bind_spline)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_SPLINE || c->kind == (unsigned)HYST_CURVE_SPLINE_INV, &TCM_NAME(ops_spline));
+}
+
+static const void *TCM_NAME(bind_spline_inverse_table)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE, &TCM_NAME(ops_spline_inv_table));
+}
+
+/* The kind of a prepared curve (checked: hyst_curve_check()), whichever it
+ * is: hyst_*_init_curve(), which links every kind. */
 static const TCM_NAME(kind_t) *TCM_NAME(kind_of)(const hyst_curve_t *curve)
 {
-    switch (curve->kind) {
-    case HYST_CURVE_POLY: return &TCM_NAME(kind_poly);
-    case HYST_CURVE_EVERETT:
-        return curve->u.everett.linear_x ? &TCM_NAME(kind_everett_lines) : &TCM_NAME(kind_everett);
-    case HYST_CURVE_EVERETT_INV: return &TCM_NAME(kind_everett_inv);
-    case HYST_CURVE_EVERETT_INV_TABLE: return &TCM_NAME(kind_everett_inv_table);
-    case HYST_CURVE_EVERETT_GRID: return &TCM_NAME(kind_everett_grid);
-    case HYST_CURVE_EVERETT_GRID_INV: return &TCM_NAME(kind_everett_grid_inv);
-    case HYST_CURVE_SPLINE:
-    case HYST_CURVE_SPLINE_INV: return &TCM_NAME(kind_spline);
-    case HYST_CURVE_SPLINE_INV_TABLE: return &TCM_NAME(kind_spline_inv_table);
-    case HYST_CURVE_INV_TABLE: return &TCM_NAME(kind_inv_table);
-    default: return &TCM_NAME(kind_curve); /* PWL, PWL_INV, POLY_INV */
+    static const hyst_kind_t every[] = {
+        TCM_NAME(bind_poly),           TCM_NAME(bind_curve),
+        TCM_NAME(bind_inverse_table),  TCM_NAME(bind_everett),
+        TCM_NAME(bind_everett_inverse), TCM_NAME(bind_everett_inverse_table),
+        TCM_NAME(bind_everett_grid),   TCM_NAME(bind_everett_grid_inverse),
+        TCM_NAME(bind_spline),         TCM_NAME(bind_spline_inverse_table)};
+    const void *kind = NULL;
+    size_t i;
+    for (i = 0u; kind == NULL && i < sizeof every / sizeof every[0]; ++i) {
+        kind = every[i](curve, (unsigned)TCM_VARIANT);
     }
+    return (const TCM_NAME(kind_t) *)kind; /* a checked curve has a kind */
 }
 
 #endif /* HYST_KINDS_H */

@@ -61,18 +61,47 @@ static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
 #include "tcm_engine.h"
 #include "kinds.h"
 
+/* A curve checked by hyst_check_init(), on the kind bound to it (NULL:
+ * the kind named is not the curve's, HYST_ERR_CURVE). */
+static hyst_status_t NUM_NAME(init_bound)(hyst_tcm_t *S, const hyst_curve_t *curve,
+                                          const NUM_NAME(kind_t) *kind, NUM_T *xltp, NUM_T *yltp,
+                                          NUM_T *xrtp, NUM_T *yrtp, size_t capacity)
+{
+    if (kind == NULL) {
+        return HYST_ERR_CURVE;
+    }
+    NUM_NAME(attach)(S, curve, kind, curve->lo.NUM_F, curve->hi.NUM_F, curve->unit.NUM_F, xltp,
+                     yltp, xrtp, yrtp, capacity);
+    return HYST_OK;
+}
+
 static hyst_status_t NUM_NAME(init_curve_impl)(hyst_tcm_t *S, const hyst_curve_t *curve, NUM_T *xltp,
                                     NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                     unsigned long layout)
 {
     const hyst_status_t st = hyst_check_init(S, curve, NUM_VARIANT, xltp, yltp, xrtp, yrtp,
                                              capacity, sizeof(NUM_T), sizeof(NUM_T), layout);
-    if (st != HYST_OK) {
-        return st;
+    return st != HYST_OK ? st
+                         : NUM_NAME(init_bound)(S, curve, NUM_NAME(kind_of)(curve), xltp, yltp,
+                                                xrtp, yrtp, capacity);
+}
+
+/* The kind named by the caller (src/kinds.h's binders): only its code is
+ * referenced. */
+static hyst_status_t NUM_NAME(init_kind_impl)(hyst_tcm_t *S, const hyst_curve_t *curve,
+                                              hyst_kind_t kind, NUM_T *xltp, NUM_T *yltp,
+                                              NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
+                                              unsigned long layout)
+{
+    hyst_status_t st = hyst_check_init(S, curve, NUM_VARIANT, xltp, yltp, xrtp, yrtp, capacity,
+                                       sizeof(NUM_T), sizeof(NUM_T), layout);
+    if (st == HYST_OK && kind == NULL) {
+        st = HYST_ERR_NULL;
     }
-    NUM_NAME(attach)(S, curve, NUM_NAME(kind_of)(curve), curve->lo.NUM_F, curve->hi.NUM_F,
-                     curve->unit.NUM_F, xltp, yltp, xrtp, yrtp, capacity);
-    return HYST_OK;
+    return st != HYST_OK ? st
+                         : NUM_NAME(init_bound)(S, curve,
+                                                (const NUM_NAME(kind_t) *)kind(curve, NUM_VARIANT),
+                                                xltp, yltp, xrtp, yrtp, capacity);
 }
 
 static hyst_status_t NUM_NAME(init_impl)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
@@ -88,7 +117,7 @@ static hyst_status_t NUM_NAME(init_impl)(hyst_tcm_t *S, const hyst_poly_t *f0, N
         return st;
     }
     /* A polynomial is copied whole into the instance: no curve to keep. */
-    NUM_NAME(attach)(S, &curve, &NUM_NAME(kind_poly), curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
+    NUM_NAME(attach)(S, &curve, &NUM_NAME(ops_poly), curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
                      yltp, xrtp, yrtp, capacity);
     S->curve = NULL;
     return HYST_OK;
@@ -164,7 +193,7 @@ static hyst_status_t NUM_NAME(init_sealed_impl)(hyst_tcm_t *S, const NUM_SEALED_
         return HYST_ERR_CRC;
     }
     /* as init_impl(): the polynomial is copied whole into the instance */
-    NUM_NAME(attach)(S, &curve, &NUM_NAME(kind_poly), curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
+    NUM_NAME(attach)(S, &curve, &NUM_NAME(ops_poly), curve.lo.NUM_F, curve.hi.NUM_F, curve.unit.NUM_F, xltp,
                      yltp, xrtp, yrtp, capacity);
     S->curve = NULL;
     return HYST_OK;
@@ -256,7 +285,7 @@ static hyst_status_t NUM_NAME(init_inverse_sealed_impl)(hyst_tcm_t *S, hyst_curv
     }
     curve.u.inv_table.max_err = hyst_wide_of_float_(c->max_err);
     *inv = curve;
-    NUM_NAME(attach)(S, inv, &NUM_NAME(kind_inv_table), inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F,
+    NUM_NAME(attach)(S, inv, &NUM_NAME(ops_inv_table), inv->lo.NUM_F, inv->hi.NUM_F, inv->unit.NUM_F,
                      xltp, yltp, xrtp, yrtp, capacity);
     return HYST_OK;
 }
@@ -295,7 +324,7 @@ static hyst_status_t NUM_NAME(init_inverse_exact_impl)(hyst_tcm_t *S, hyst_curve
     if (st == HYST_OK) {
         st = hyst_curve_inverse(&curve, &fwd);
     }
-    return NUM_NAME(bind_inverse)(S, inv, st, &curve, &NUM_NAME(kind_curve), xltp, yltp, xrtp,
+    return NUM_NAME(bind_inverse)(S, inv, st, &curve, &NUM_NAME(ops_curve), xltp, yltp, xrtp,
                                   yrtp, capacity, layout);
 }
 
@@ -310,7 +339,7 @@ static hyst_status_t NUM_NAME(init_inverse_table_impl)(hyst_tcm_t *S, hyst_curve
     if (st == HYST_OK) {
         st = NUM_NAME(curve_inverse_table_impl)(&curve, &fwd, table, intervals);
     }
-    return NUM_NAME(bind_inverse)(S, inv, st, &curve, &NUM_NAME(kind_inv_table), xltp, yltp, xrtp,
+    return NUM_NAME(bind_inverse)(S, inv, st, &curve, &NUM_NAME(ops_inv_table), xltp, yltp, xrtp,
                                   yrtp, capacity, layout);
 }
 

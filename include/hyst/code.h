@@ -89,6 +89,33 @@ hyst_status_t hyst_code_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve,
                           (yrtp), (capacity), HYST_LAYOUT)
 
 /**
+ * @brief As hyst_code_init_curve(), with the curve's kind named by the
+ *        caller (hyst_f32_init_kind(); the code variant's kinds,
+ *        hyst_code_kind_poly, ...): a firmware that names its kinds links
+ *        no other.
+ * @return as hyst_code_init_curve(), or HYST_ERR_NULL (@p kind NULL) or
+ *         HYST_ERR_CURVE (a curve of another kind, or a kind of another
+ *         variant).
+ */
+hyst_status_t hyst_code_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hyst_kind_t kind,
+                                   uint_least32_t code_lo, uint_least32_t code_hi,
+                                   hyst_code_word_t *xltp, float *yltp, hyst_code_word_t *xrtp,
+                                   float *yrtp, size_t capacity, unsigned long layout);
+#define hyst_code_init_kind(S, curve, kind, code_lo, code_hi, xltp, yltp, xrtp, yrtp, capacity) \
+    hyst_code_init_kind_((S), (curve), (kind), (code_lo), (code_hi), (xltp), (yltp), (xrtp),    \
+                         (yrtp), (capacity), HYST_LAYOUT)
+const void *hyst_code_kind_poly(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_curve(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_inverse_table(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_everett(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_everett_inverse(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_everett_inverse_table(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_everett_grid(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_everett_grid_inverse(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_spline(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_spline_inverse_table(const hyst_curve_t *curve, unsigned variant);
+
+/**
  * @brief Noise deadband in codes (see hyst_f32_set_deadband()); 0 disables it.
  * @return HYST_OK, HYST_ERR_NULL or HYST_ERR_ARG (wider than the domain, or
  *         an instance of another variant).

@@ -32,7 +32,7 @@ typedef enum hyst_status {
     HYST_ERR_FORMAT = -11,       /**< not a snapshot: bad magic, truncated, bad length or impossible state */
     HYST_ERR_CRC = -12,          /**< checksum mismatch: a snapshot, a prebuilt table or a sealed curve (curve.h) is corrupted */
     HYST_ERR_VERSION = -13,      /**< snapshot format version or real type differs */
-    HYST_ERR_CURVE = -14,        /**< a snapshot or a prebuilt table of a different curve */
+    HYST_ERR_CURVE = -14,        /**< a snapshot or a prebuilt table of a different curve, or a curve of another kind than the one named (hyst_*_init_kind()) */
     HYST_ERR_BREAKPOINTS = -15,  /**< PWL breakpoints or PI thresholds not finite,
                                       not strictly increasing (PI: r1 != 0) */
     HYST_ERR_WEIGHTS = -16,      /**< PI weights not finite, or a partial sum

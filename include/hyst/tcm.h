@@ -246,6 +246,9 @@ typedef struct hyst_tcm {
 /** hyst_*_init_curve() on an instance declared by a DEFINE macro. */
 #define HYST_INIT_CURVE(name, curve) \
     HYST_DEFAULT_NAME_(init_curve_)(&(name), (curve), HYST_ARRAYS_(name), HYST_LAYOUT)
+/** hyst_*_init_kind() on an instance declared by a DEFINE macro. */
+#define HYST_INIT_KIND(name, curve, kind) \
+    HYST_DEFAULT_NAME_(init_kind_)(&(name), (curve), (kind), HYST_ARRAYS_(name), HYST_LAYOUT)
 
 /**
  * @name Initialisation with a polynomial f0
@@ -324,6 +327,75 @@ hyst_status_t hyst_f64_init_curve_(hyst_tcm_t *S, const hyst_curve_t *curve, dou
                                    unsigned long layout);
 #define hyst_f64_init_curve(S, curve, xltp, yltp, xrtp, yrtp, capacity) \
     hyst_f64_init_curve_((S), (curve), (xltp), (yltp), (xrtp), (yrtp), (capacity), HYST_LAYOUT)
+#endif
+/**@}*/
+
+/**
+ * @brief A curve kind of the engine in one variant, as hyst_*_init_kind()
+ *        takes it (hyst_f32_kind_everett, ...). The init calls it: it
+ *        returns the kind's operations for a curve of its kind and an
+ *        instance of its variant, NULL for any other curve or variant.
+ */
+typedef const void *(*hyst_kind_t)(const hyst_curve_t *curve, unsigned variant);
+
+/**
+ * @name Initialisation with a prepared curve of a kind the firmware names
+ * @brief As hyst_*_init_curve(), with the curve's kind named by the caller:
+ *        the instance runs that kind's code, and a firmware that names its
+ *        kinds links no other (hyst_*_init_curve() binds whatever kind the
+ *        curve has, so it links them all). The kinds and their curves:
+ *
+ * | kind | curves (constructor) |
+ * |---|---|
+ * | hyst_*_kind_poly | f0 (hyst_*_curve_from_poly(), hyst_curve_inverse() of an inverted f0) |
+ * | hyst_*_kind_curve | piecewise linear and its inverse (hyst_*_curve_from_pwl(), hyst_curve_inverse()), inverted f0 (hyst_curve_inverse()) |
+ * | hyst_*_kind_inverse_table | tabulated inverse of f0 (hyst_*_curve_inverse_table(), _const()) |
+ * | hyst_*_kind_everett | E (hyst_*_curve_from_everett(), hyst_curve_inverse() of its inverse) |
+ * | hyst_*_kind_everett_inverse | E's solved inverse (hyst_curve_inverse()) |
+ * | hyst_*_kind_everett_inverse_table | E's tabulated inverse (hyst_*_curve_everett_inverse_table(), _const()) |
+ * | hyst_*_kind_everett_grid | E on a grid (hyst_*_curve_from_everett_grid()) |
+ * | hyst_*_kind_everett_grid_inverse | its inverse (hyst_*_curve_everett_grid_inverse()) |
+ * | hyst_*_kind_spline | a spline f0 and its solved inverse (hyst_*_curve_from_spline(), hyst_curve_spline_inverse()) |
+ * | hyst_*_kind_spline_inverse_table | its tabulated inverse (hyst_*_curve_spline_inverse_table()) |
+ *
+ * @return as hyst_*_init_curve(), or HYST_ERR_NULL (@p kind NULL) or
+ *         HYST_ERR_CURVE (a curve of another kind, or a kind of another
+ *         variant); on error nothing is written.
+ */
+/**@{*/
+hyst_status_t hyst_f32_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hyst_kind_t kind,
+                                  float *xltp, float *yltp, float *xrtp, float *yrtp,
+                                  size_t capacity, unsigned long layout);
+#define hyst_f32_init_kind(S, curve, kind, xltp, yltp, xrtp, yrtp, capacity)                   \
+    hyst_f32_init_kind_((S), (curve), (kind), (xltp), (yltp), (xrtp), (yrtp), (capacity),      \
+                        HYST_LAYOUT)
+const void *hyst_f32_kind_poly(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_curve(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_inverse_table(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_everett(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_everett_inverse(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_everett_inverse_table(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_everett_grid(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_everett_grid_inverse(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_spline(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_spline_inverse_table(const hyst_curve_t *curve, unsigned variant);
+#if HYST_ENABLE_F64
+hyst_status_t hyst_f64_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hyst_kind_t kind,
+                                  double *xltp, double *yltp, double *xrtp, double *yrtp,
+                                  size_t capacity, unsigned long layout);
+#define hyst_f64_init_kind(S, curve, kind, xltp, yltp, xrtp, yrtp, capacity)                   \
+    hyst_f64_init_kind_((S), (curve), (kind), (xltp), (yltp), (xrtp), (yrtp), (capacity),      \
+                        HYST_LAYOUT)
+const void *hyst_f64_kind_poly(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_curve(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_inverse_table(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_everett(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_everett_inverse(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_everett_inverse_table(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_everett_grid(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_everett_grid_inverse(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_spline(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_spline_inverse_table(const hyst_curve_t *curve, unsigned variant);
 #endif
 /**@}*/
 
@@ -480,6 +552,17 @@ size_t hyst_capacity(const hyst_tcm_t *S);
 typedef hyst_tcm_t hyst_t; /**< an instance (the struct is the same for every variant) */
 #define hyst_init HYST_DEFAULT_NAME_(init)
 #define hyst_init_curve HYST_DEFAULT_NAME_(init_curve)
+#define hyst_init_kind HYST_DEFAULT_NAME_(init_kind)
+#define hyst_kind_poly HYST_DEFAULT_NAME_(kind_poly)
+#define hyst_kind_curve HYST_DEFAULT_NAME_(kind_curve)
+#define hyst_kind_inverse_table HYST_DEFAULT_NAME_(kind_inverse_table)
+#define hyst_kind_everett HYST_DEFAULT_NAME_(kind_everett)
+#define hyst_kind_everett_inverse HYST_DEFAULT_NAME_(kind_everett_inverse)
+#define hyst_kind_everett_inverse_table HYST_DEFAULT_NAME_(kind_everett_inverse_table)
+#define hyst_kind_everett_grid HYST_DEFAULT_NAME_(kind_everett_grid)
+#define hyst_kind_everett_grid_inverse HYST_DEFAULT_NAME_(kind_everett_grid_inverse)
+#define hyst_kind_spline HYST_DEFAULT_NAME_(kind_spline)
+#define hyst_kind_spline_inverse_table HYST_DEFAULT_NAME_(kind_spline_inverse_table)
 #define hyst_init_sealed HYST_DEFAULT_NAME_(init_sealed)
 #define hyst_step HYST_DEFAULT_NAME_(step)
 #define hyst_process HYST_DEFAULT_NAME_(process)
