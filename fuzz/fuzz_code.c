@@ -35,7 +35,8 @@
  * also allows the previous output's own float allowance.
  *
  * Input layout (reads past the end yield zeros):
- *   [0] flags: bit0 raw config, bit1 init through hyst_code_init_curve (f32 curve),
+ *   [0] flags: bit0 raw config, bit1 init through hyst_code_init_curve (f32 curve;
+ *       with an odd capacity hyst_code_init_kind, its kind named),
  *       bit2 NULL probes, bit3 corrupted curve kind, bit4 raw code range
  *       (24-bit numbers: DOMAIN errors), bit5 deadband on, bit6 invalid
  *       deadband probes, bit7 with [1] >= 240: capacity 4100 (deep stacks)
@@ -253,7 +254,11 @@ static hyst_status_t init_code(cinst_t *I, const hyst_poly_t *f, size_t cap, int
         CHECK(I == &C);
         st = hyst_f32_curve_from_poly(&code_curve, f); /* codes run on f32 curves */
         if (st != HYST_OK) return st;
-        return hyst_code_init_curve(&I->S, &code_curve, clo, chi, I->xl, I->yl, I->xr, I->yr, cap);
+        fuzz_check_kinds(&code_curve);
+        return cap % 2u != 0u ? hyst_code_init_kind(&I->S, &code_curve, hyst_code_kind_poly, clo, chi,
+                                                    I->xl, I->yl, I->xr, I->yr, cap)
+                              : hyst_code_init_curve(&I->S, &code_curve, clo, chi, I->xl, I->yl,
+                                                     I->xr, I->yr, cap);
     }
     return hyst_code_init(&I->S, f, clo, chi, I->xl, I->yl, I->xr, I->yr, cap);
 }

@@ -307,7 +307,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         CHECK(cap < 2u);
         return 0;
     }
-    CHECK(hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, cap) == HYST_OK);
+    /* the twin with its kind named: the same outputs (process() below) */
+    fuzz_check_kinds(&curve);
+    CHECK(hyst_init_kind(&T, &curve, hyst_kind_everett, xl2, yl2, xr2, yr2, cap) == HYST_OK);
     while (rd.at < rd.n && n < MAX_SAMPLES) { /* on the domain: lo + (hi - lo) rounds past hi */
         const double x = e.lo + (e.hi - e.lo) * (double)rd_u8(&rd) / 255.0;
         xs[n++] = x < e.hi ? x : e.hi;

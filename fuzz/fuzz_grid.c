@@ -449,7 +449,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         CHECK(cap < 2u && st == HYST_ERR_CAPACITY);
         return 0;
     }
-    CHECK(hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, cap) == HYST_OK);
+    fuzz_check_kinds(&curve); /* the twin with its kind named */
+    CHECK(hyst_init_kind(&T, &curve, hyst_kind_everett_grid, xl2, yl2, xr2, yr2, cap) == HYST_OK);
     ref_egrid_init(&ref, &dom, &g);
     while (rd.at < rd.n && n < MAX_SAMPLES) {
         const unsigned op = rd_u8(&rd);
@@ -548,7 +549,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         hyst_curve_t c32;
         hyst_tcm_t F;
         if (hyst_f32_curve_from_everett_grid(&c32, &g, table32, TABLE_MAX) == HYST_OK &&
-            hyst_f32_init_curve(&F, &c32, fxl, fyl, fxr, fyr, cap) == HYST_OK) {
+            (cap % 2u != 0u /* the kind named, or bound by the curve */
+                 ? hyst_f32_init_kind(&F, &c32, hyst_f32_kind_everett_grid, fxl, fyl, fxr, fyr, cap)
+                 : hyst_f32_init_curve(&F, &c32, fxl, fyl, fxr, fyr, cap)) == HYST_OK) {
             ref_egrid_init(&ref32, &dom32, &g);
             for (k = 0u; k < n; ++k) {
                 const float x = (float)xs[k];

@@ -656,6 +656,8 @@ static void fuzz_pwl(reader_t *rd, unsigned flags)
     CHECK(inv.lo.HYST_R == c.y_lo.HYST_R && inv.hi.HYST_R == c.y_hi.HYST_R &&
           inv.y_lo.HYST_R == c.lo.HYST_R && inv.y_hi.HYST_R == c.hi.HYST_R);
     CHECK(hyst_curve_inverse(&back, &inv) == HYST_OK && back.kind == HYST_CURVE_PWL);
+    fuzz_check_kinds(&c);
+    fuzz_check_kinds(&inv);
     CHECK(back.u.pwl.x.HYST_R == qx && back.u.pwl.y.HYST_R == qy && back.lo.HYST_R == c.lo.HYST_R &&
           back.hi.HYST_R == c.hi.HYST_R);
     for (i = 0; i < n; ++i) CHECK(at_breakpoint(&inv, qy, qx, n, i)); /* swapped axes: exact */
@@ -844,6 +846,8 @@ static void fuzz_inverse(reader_t *rd, unsigned flags)
         CHECK(memcmp(Ti.S.curve, &ci, sizeof(ci)) == 0); /* same as the two calls */
     }
     CHECK(hyst_curve_inverse(&back, &ci) == HYST_OK && back.kind == HYST_CURVE_POLY);
+    fuzz_check_kinds(&cf);
+    fuzz_check_kinds(&ci);
     R = cf.y_hi.HYST_R - cf.y_lo.HYST_R;
     M = fmax(fabs(f.lo), fabs(f.hi));
     /* g(g^-1(e)) = e: the product's 1e-9 of the range, plus the drive's

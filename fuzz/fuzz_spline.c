@@ -913,7 +913,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         CHECK(cap < 2u && st == HYST_ERR_CAPACITY);
         return 0;
     }
-    CHECK(hyst_init_curve(&T, &curve, xl2, yl2, xr2, yr2, cap) == HYST_OK);
+    fuzz_check_kinds(&curve); /* the twin with its kind named */
+    CHECK(hyst_init_kind(&T, &curve, hyst_kind_spline, xl2, yl2, xr2, yr2, cap) == HYST_OK);
     CHECK(hyst_output(&S) == f.value[0]);
     while (rd.at < rd.n && n < MAX_SAMPLES) {
         const unsigned op = rd_u8(&rd);
