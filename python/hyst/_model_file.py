@@ -341,14 +341,14 @@ def header_text(name, coeffs=None, lo=None, hi=None, *, kind="poly", degree=None
         what = (f"asymmetric model on a grid of {len(knots) - 1} knot intervals,\n * "
                 f"domain [{float(lo):.9g}, {float(hi):.9g}]" +
                 (";\n * the compensator: hyst_curve_everett_grid_inverse() of that curve,\n"
-                 " * then hyst_init_curve(); each branch solved in closed form, no\n"
-                 " * table of its own" if compensator else ""))
+                 " * then hyst_init_kind() with hyst_kind_everett_grid_inverse; each\n"
+                 " * branch solved in closed form, no table of its own" if compensator else ""))
     elif kind == "spline":
         what = (f"symmetric model, f0 a monotone cubic spline\n * of {len(values) - 1} knot "
                 f"intervals, domain [{float(lo):.9g}, {float(hi):.9g}]" +
                 (";\n * the compensator: hyst_curve_spline_inverse() of that curve,\n"
-                 " * then hyst_init_curve(); each drive solved on its cubic piece per\n"
-                 " * sample, no table of its own" if solved else ""))
+                 " * then hyst_init_kind() with hyst_kind_spline; each drive solved on\n"
+                 " * its cubic piece per sample, no table of its own" if solved else ""))
     else:
         coeffs = _poly_args(coeffs, kind, degree, y_lo, terms)
         what = (f"major ascending curve f0,\n * degree {len(coeffs) - 1}, "
