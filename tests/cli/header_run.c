@@ -13,7 +13,9 @@
  *    digits (default 9);
  *  - -DSIM: also the model from rest over the inputs on standard input, each
  *    output printed with 17 significant digits (what 'hyst sim --model
- *    --digits 17' must print). */
+ *    --digits 17' must print).
+ * Each instance is initialised as the header says, its kind named
+ * (hyst_init_kind()). */
 #include "hyst/hyst.h"
 
 #include <stdio.h>
@@ -34,25 +36,31 @@
 #define COMP_INTERVALS PASTE(MODEL, _INTERVALS)
 static hyst_real_t comp_table[HYST_INV_TABLE_LEN(COMP_INTERVALS)];
 #define INVERSE(inv, fwd) hyst_curve_spline_inverse_table((inv), (fwd), comp_table, COMP_INTERVALS)
+#define INVERSE_KIND hyst_kind_spline_inverse_table
 #else
 #define INVERSE hyst_curve_spline_inverse
+#define INVERSE_KIND hyst_kind_spline
 #endif
+#define FORWARD_KIND hyst_kind_spline
 #else
 #define TABLE_LEN HYST_EVERETT_GRID_TABLE_LEN(INTERVALS)
 #define FORWARD(curve, table) hyst_curve_from_everett_grid((curve), &MODEL, (table), TABLE_LEN)
 #define INVERSE hyst_curve_everett_grid_inverse
+#define INVERSE_KIND hyst_kind_everett_grid_inverse
+#define FORWARD_KIND hyst_kind_everett_grid
 #endif
 
-/* The instance on the curve from rest, then each input of in[0..n) (or, n
+/* The instance on the curve (of that kind) from rest, then each input of in[0..n) (or, n
  * 0, of standard input) stepped and its output printed: 0, or 1 if the
  * library refused something. */
-static int run(const hyst_curve_t *curve, const hyst_real_t *in, unsigned n, int digits)
+static int run(const hyst_curve_t *curve, hyst_kind_t kind, const hyst_real_t *in, unsigned n,
+               int digits)
 {
     static hyst_real_t xl[CAPACITY], yl[CAPACITY], xr[CAPACITY], yr[CAPACITY];
     hyst_tcm_t S;
     double x;
     unsigned i;
-    if (hyst_init_curve(&S, curve, xl, yl, xr, yr, CAPACITY) != HYST_OK) {
+    if (hyst_init_kind(&S, curve, kind, xl, yl, xr, yr, CAPACITY) != HYST_OK) {
         return 1;
     }
     for (i = 0u; n > 0u ? i < n : scanf("%lf", &x) == 1; ++i) {
@@ -77,11 +85,11 @@ int main(void)
         static const hyst_real_t want[] = {WANT};
         hyst_curve_t inv;
         failed = failed || INVERSE(&inv, &fwd) != HYST_OK ||
-                 run(&inv, want, (unsigned)(sizeof want / sizeof want[0]), DIGITS) != 0;
+                 run(&inv, INVERSE_KIND, want, (unsigned)(sizeof want / sizeof want[0]), DIGITS) != 0;
     }
 #endif
 #ifdef SIM
-    failed = failed || run(&fwd, NULL, 0u, 17) != 0;
+    failed = failed || run(&fwd, FORWARD_KIND, NULL, 0u, 17) != 0;
 #endif
     return failed;
 }
