@@ -185,9 +185,10 @@ FUZZ_MAYBE_UNUSED static double fuzz_round_trip(hyst_t *C, hyst_t *M, const doub
 }
 
 /* Every kind a firmware can name (tcm.h, code.h), per variant. */
-FUZZ_MAYBE_UNUSED static const hyst_kind_t fuzz_kinds[3][10] = {
+FUZZ_MAYBE_UNUSED static const hyst_kind_t fuzz_kinds[3][11] = {
     {hyst_f32_kind_poly,
-    hyst_f32_kind_curve,
+    hyst_f32_kind_pwl,
+    hyst_f32_kind_inverse,
     hyst_f32_kind_inverse_table,
     hyst_f32_kind_everett,
     hyst_f32_kind_everett_inverse,
@@ -197,7 +198,8 @@ FUZZ_MAYBE_UNUSED static const hyst_kind_t fuzz_kinds[3][10] = {
     hyst_f32_kind_spline,
     hyst_f32_kind_spline_inverse_table},
     {hyst_f64_kind_poly,
-    hyst_f64_kind_curve,
+    hyst_f64_kind_pwl,
+    hyst_f64_kind_inverse,
     hyst_f64_kind_inverse_table,
     hyst_f64_kind_everett,
     hyst_f64_kind_everett_inverse,
@@ -207,7 +209,8 @@ FUZZ_MAYBE_UNUSED static const hyst_kind_t fuzz_kinds[3][10] = {
     hyst_f64_kind_spline,
     hyst_f64_kind_spline_inverse_table},
     {hyst_code_kind_poly,
-    hyst_code_kind_curve,
+    hyst_code_kind_pwl,
+    hyst_code_kind_inverse,
     hyst_code_kind_inverse_table,
     hyst_code_kind_everett,
     hyst_code_kind_everett_inverse,
@@ -220,14 +223,14 @@ FUZZ_MAYBE_UNUSED static const unsigned fuzz_kind_variants[3] = {
     (unsigned)HYST_VARIANT_F32, (unsigned)HYST_VARIANT_F64, (unsigned)HYST_VARIANT_CODE};
 
 /* A curve of one kind is bound, for an instance of each variant, by one
- * kind of the 30, the variant's own: hyst_*_init_kind() then runs it. */
+ * kind of the 33, the variant's own: hyst_*_init_kind() then runs it. */
 FUZZ_MAYBE_UNUSED static void fuzz_check_kinds(const hyst_curve_t *c)
 {
     size_t v, w, k;
     for (v = 0u; v < 3u; ++v) {
         unsigned bound = 0u;
         for (w = 0u; w < 3u; ++w) {
-            for (k = 0u; k < 10u; ++k) {
+            for (k = 0u; k < 11u; ++k) {
                 const void *ops = fuzz_kinds[w][k](c, fuzz_kind_variants[v]);
                 CHECK(ops == NULL || w == v);
                 bound += ops != NULL;

@@ -103,9 +103,14 @@ const void *hyst_code_kind_poly(const hyst_curve_t *curve, unsigned variant)
     return hyst_code_bind_poly(curve, variant);
 }
 
-const void *hyst_code_kind_curve(const hyst_curve_t *curve, unsigned variant)
+const void *hyst_code_kind_pwl(const hyst_curve_t *curve, unsigned variant)
 {
-    return hyst_code_bind_curve(curve, variant);
+    return hyst_code_bind_pwl(curve, variant);
+}
+
+const void *hyst_code_kind_inverse(const hyst_curve_t *curve, unsigned variant)
+{
+    return hyst_code_bind_inverse(curve, variant);
 }
 
 const void *hyst_code_kind_inverse_table(const hyst_curve_t *curve, unsigned variant)

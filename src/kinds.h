@@ -39,10 +39,16 @@ static const void *TCM_NAME(bind_poly)(const hyst_curve_t *c, unsigned variant)
     return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_POLY, &TCM_NAME(ops_poly));
 }
 
-static const void *TCM_NAME(bind_curve)(const hyst_curve_t *c, unsigned variant)
+static const void *TCM_NAME(bind_pwl)(const hyst_curve_t *c, unsigned variant)
 {
-    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_PWL || c->kind == (unsigned)HYST_CURVE_PWL_INV ||
-                                       c->kind == (unsigned)HYST_CURVE_POLY_INV, &TCM_NAME(ops_curve));
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_PWL ||
+                                        c->kind == (unsigned)HYST_CURVE_PWL_INV,
+                           &TCM_NAME(ops_curve));
+}
+
+static const void *TCM_NAME(bind_inverse)(const hyst_curve_t *c, unsigned variant)
+{
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_POLY_INV, &TCM_NAME(ops_curve));
 }
 
 static const void *TCM_NAME(bind_inverse_table)(const hyst_curve_t *c, unsigned variant)
@@ -92,7 +98,7 @@ static const void *TCM_NAME(bind_spline_inverse_table)(const hyst_curve_t *c, un
 static const TCM_NAME(kind_t) *TCM_NAME(kind_of)(const hyst_curve_t *curve)
 {
     static const hyst_kind_t every[] = {
-        TCM_NAME(bind_poly),           TCM_NAME(bind_curve),
+        TCM_NAME(bind_poly),           TCM_NAME(bind_pwl),            TCM_NAME(bind_inverse),
         TCM_NAME(bind_inverse_table),  TCM_NAME(bind_everett),
         TCM_NAME(bind_everett_inverse), TCM_NAME(bind_everett_inverse_table),
         TCM_NAME(bind_everett_grid),   TCM_NAME(bind_everett_grid_inverse),

@@ -293,7 +293,7 @@ static hyst_status_t NUM_NAME(init_inverse_sealed_impl)(hyst_tcm_t *S, hyst_curv
 /* A compensator of f0 once its inverse curve is built (st: the build's
  * status; curve errors first, then the instance's: inverse.h): the curve
  * into *inv, then the instance on it, of kind `kind`. */
-static hyst_status_t NUM_NAME(bind_inverse)(hyst_tcm_t *S, hyst_curve_t *inv, hyst_status_t st,
+static hyst_status_t NUM_NAME(attach_inverse)(hyst_tcm_t *S, hyst_curve_t *inv, hyst_status_t st,
                                             const hyst_curve_t *curve,
                                             const NUM_NAME(kind_t) *kind, NUM_T *xltp,
                                             NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp,
@@ -324,7 +324,7 @@ static hyst_status_t NUM_NAME(init_inverse_exact_impl)(hyst_tcm_t *S, hyst_curve
     if (st == HYST_OK) {
         st = hyst_curve_inverse(&curve, &fwd);
     }
-    return NUM_NAME(bind_inverse)(S, inv, st, &curve, &NUM_NAME(ops_curve), xltp, yltp, xrtp,
+    return NUM_NAME(attach_inverse)(S, inv, st, &curve, &NUM_NAME(ops_curve), xltp, yltp, xrtp,
                                   yrtp, capacity, layout);
 }
 
@@ -339,7 +339,7 @@ static hyst_status_t NUM_NAME(init_inverse_table_impl)(hyst_tcm_t *S, hyst_curve
     if (st == HYST_OK) {
         st = NUM_NAME(curve_inverse_table_impl)(&curve, &fwd, table, intervals);
     }
-    return NUM_NAME(bind_inverse)(S, inv, st, &curve, &NUM_NAME(ops_inv_table), xltp, yltp, xrtp,
+    return NUM_NAME(attach_inverse)(S, inv, st, &curve, &NUM_NAME(ops_inv_table), xltp, yltp, xrtp,
                                   yrtp, capacity, layout);
 }
 

@@ -105,7 +105,8 @@ hyst_status_t hyst_code_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hys
     hyst_code_init_kind_((S), (curve), (kind), (code_lo), (code_hi), (xltp), (yltp), (xrtp),    \
                          (yrtp), (capacity), HYST_LAYOUT)
 const void *hyst_code_kind_poly(const hyst_curve_t *curve, unsigned variant);
-const void *hyst_code_kind_curve(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_pwl(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_code_kind_inverse(const hyst_curve_t *curve, unsigned variant);
 const void *hyst_code_kind_inverse_table(const hyst_curve_t *curve, unsigned variant);
 const void *hyst_code_kind_everett(const hyst_curve_t *curve, unsigned variant);
 const void *hyst_code_kind_everett_inverse(const hyst_curve_t *curve, unsigned variant);

@@ -348,7 +348,8 @@ typedef const void *(*hyst_kind_t)(const hyst_curve_t *curve, unsigned variant);
  * | kind | curves (constructor) |
  * |---|---|
  * | hyst_*_kind_poly | f0 (hyst_*_curve_from_poly(), hyst_curve_inverse() of an inverted f0) |
- * | hyst_*_kind_curve | piecewise linear and its inverse (hyst_*_curve_from_pwl(), hyst_curve_inverse()), inverted f0 (hyst_curve_inverse()) |
+ * | hyst_*_kind_pwl | piecewise linear and its inverse (hyst_*_curve_from_pwl(), hyst_curve_inverse()) |
+ * | hyst_*_kind_inverse | f0 inverted, the exact compensator (hyst_curve_inverse() of f0) |
  * | hyst_*_kind_inverse_table | tabulated inverse of f0 (hyst_*_curve_inverse_table(), _const()) |
  * | hyst_*_kind_everett | E (hyst_*_curve_from_everett(), hyst_curve_inverse() of its inverse) |
  * | hyst_*_kind_everett_inverse | E's solved inverse (hyst_curve_inverse()) |
@@ -370,7 +371,8 @@ hyst_status_t hyst_f32_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hyst
     hyst_f32_init_kind_((S), (curve), (kind), (xltp), (yltp), (xrtp), (yrtp), (capacity),      \
                         HYST_LAYOUT)
 const void *hyst_f32_kind_poly(const hyst_curve_t *curve, unsigned variant);
-const void *hyst_f32_kind_curve(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_pwl(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f32_kind_inverse(const hyst_curve_t *curve, unsigned variant);
 const void *hyst_f32_kind_inverse_table(const hyst_curve_t *curve, unsigned variant);
 const void *hyst_f32_kind_everett(const hyst_curve_t *curve, unsigned variant);
 const void *hyst_f32_kind_everett_inverse(const hyst_curve_t *curve, unsigned variant);
@@ -387,7 +389,8 @@ hyst_status_t hyst_f64_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hyst
     hyst_f64_init_kind_((S), (curve), (kind), (xltp), (yltp), (xrtp), (yrtp), (capacity),      \
                         HYST_LAYOUT)
 const void *hyst_f64_kind_poly(const hyst_curve_t *curve, unsigned variant);
-const void *hyst_f64_kind_curve(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_pwl(const hyst_curve_t *curve, unsigned variant);
+const void *hyst_f64_kind_inverse(const hyst_curve_t *curve, unsigned variant);
 const void *hyst_f64_kind_inverse_table(const hyst_curve_t *curve, unsigned variant);
 const void *hyst_f64_kind_everett(const hyst_curve_t *curve, unsigned variant);
 const void *hyst_f64_kind_everett_inverse(const hyst_curve_t *curve, unsigned variant);
@@ -554,7 +557,8 @@ typedef hyst_tcm_t hyst_t; /**< an instance (the struct is the same for every va
 #define hyst_init_curve HYST_DEFAULT_NAME_(init_curve)
 #define hyst_init_kind HYST_DEFAULT_NAME_(init_kind)
 #define hyst_kind_poly HYST_DEFAULT_NAME_(kind_poly)
-#define hyst_kind_curve HYST_DEFAULT_NAME_(kind_curve)
+#define hyst_kind_pwl HYST_DEFAULT_NAME_(kind_pwl)
+#define hyst_kind_inverse HYST_DEFAULT_NAME_(kind_inverse)
 #define hyst_kind_inverse_table HYST_DEFAULT_NAME_(kind_inverse_table)
 #define hyst_kind_everett HYST_DEFAULT_NAME_(kind_everett)
 #define hyst_kind_everett_inverse HYST_DEFAULT_NAME_(kind_everett_inverse)
