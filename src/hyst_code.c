@@ -86,12 +86,8 @@ hyst_status_t hyst_code_init_kind_(hyst_tcm_t *S, const hyst_curve_t *curve, hys
     const hyst_code_kind_t *ops = NULL;
     hyst_status_t st = hyst_check_init(S, curve, HYST_VARIANT_F32, xltp, yltp, xrtp, yrtp,
                                        capacity, sizeof(hyst_code_word_t), sizeof(float), layout);
-    if (st == HYST_OK && kind == NULL) {
-        st = HYST_ERR_NULL;
-    }
     if (st == HYST_OK) {
-        ops = (const hyst_code_kind_t *)kind(curve, (unsigned)HYST_VARIANT_CODE);
-        st = ops != NULL ? HYST_OK : HYST_ERR_CURVE;
+        st = hyst_code_named_kind(kind, curve, &ops);
     }
     return st != HYST_OK ? st
                          : hyst_code_attach_range(S, curve, ops, code_lo, code_hi, xltp, yltp,

@@ -3,7 +3,8 @@
  * a prepared curve to its kind (kind_of()). Included after src/tcm_engine.h
  * by a variant with real outputs (src/variant_real.h, src/hyst_code.c),
  * which defines TCM_CURVE_G(c, u): g of the kinds evaluated out of line,
- * TCM_INV_TABLE_G(c, s): a tabulated inverse's, TCM_SPLINE_G(c, s): a spline's or its solved compensator's, and
+ * TCM_INV_TABLE_G(c, s): a tabulated inverse's, TCM_SPLINE_G(c, s): a
+ * spline's or its solved compensator's, and
  * TCM_SPLINE_TABLE_G(c, s): its tabulated compensator's.
  * An init that binds one kind alone (hyst_*_init_: the polynomial) links
  * no other kind's code. */
@@ -48,49 +49,73 @@ static const void *TCM_NAME(bind_pwl)(const hyst_curve_t *c, unsigned variant)
 
 static const void *TCM_NAME(bind_inverse)(const hyst_curve_t *c, unsigned variant)
 {
-    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_POLY_INV, &TCM_NAME(ops_curve));
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_POLY_INV,
+                           &TCM_NAME(ops_curve));
 }
 
 static const void *TCM_NAME(bind_inverse_table)(const hyst_curve_t *c, unsigned variant)
 {
-    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_INV_TABLE, &TCM_NAME(ops_inv_table));
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_INV_TABLE,
+                           &TCM_NAME(ops_inv_table));
 }
 
+/* Its two tables: rows polynomial in the anchor, or at most linear in it. */
 static const void *TCM_NAME(bind_everett)(const hyst_curve_t *c, unsigned variant)
 {
-    const void *lines = TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT,
-                                        &TCM_NAME(ops_everett_lines));
-    return lines != NULL && !c->u.everett.linear_x ? &TCM_NAME(ops_everett) : lines;
+    const int everett = c->kind == (unsigned)HYST_CURVE_EVERETT;
+    return TCM_NAME(bound)(variant, everett,
+                           everett && c->u.everett.linear_x ? &TCM_NAME(ops_everett_lines)
+                                                            : &TCM_NAME(ops_everett));
 }
 
 static const void *TCM_NAME(bind_everett_inverse)(const hyst_curve_t *c, unsigned variant)
 {
-    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_INV, &TCM_NAME(ops_everett_inv));
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_INV,
+                           &TCM_NAME(ops_everett_inv));
 }
 
 static const void *TCM_NAME(bind_everett_inverse_table)(const hyst_curve_t *c, unsigned variant)
 {
-    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE, &TCM_NAME(ops_everett_inv_table));
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE,
+                           &TCM_NAME(ops_everett_inv_table));
 }
 
 static const void *TCM_NAME(bind_everett_grid)(const hyst_curve_t *c, unsigned variant)
 {
-    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_GRID, &TCM_NAME(ops_everett_grid));
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_GRID,
+                           &TCM_NAME(ops_everett_grid));
 }
 
 static const void *TCM_NAME(bind_everett_grid_inverse)(const hyst_curve_t *c, unsigned variant)
 {
-    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_GRID_INV, &TCM_NAME(ops_everett_grid_inv));
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_EVERETT_GRID_INV,
+                           &TCM_NAME(ops_everett_grid_inv));
 }
 
 static const void *TCM_NAME(bind_spline)(const hyst_curve_t *c, unsigned variant)
 {
-    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_SPLINE || c->kind == (unsigned)HYST_CURVE_SPLINE_INV, &TCM_NAME(ops_spline));
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_SPLINE ||
+                                        c->kind == (unsigned)HYST_CURVE_SPLINE_INV,
+                           &TCM_NAME(ops_spline));
 }
 
 static const void *TCM_NAME(bind_spline_inverse_table)(const hyst_curve_t *c, unsigned variant)
 {
-    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE, &TCM_NAME(ops_spline_inv_table));
+    return TCM_NAME(bound)(variant, c->kind == (unsigned)HYST_CURVE_SPLINE_INV_TABLE,
+                           &TCM_NAME(ops_spline_inv_table));
+}
+
+/* The operations of the kind a caller named (hyst_*_init_kind()) for a
+ * checked curve: HYST_ERR_NULL without a kind, HYST_ERR_CURVE for a kind
+ * that is not the curve's or not this variant's. */
+static hyst_status_t TCM_NAME(named_kind)(hyst_kind_t kind, const hyst_curve_t *curve,
+                                          const TCM_NAME(kind_t) **ops)
+{
+    if (kind == NULL) {
+        return HYST_ERR_NULL;
+    }
+    *ops = (const TCM_NAME(kind_t) *)kind(curve, (unsigned)TCM_VARIANT);
+    return *ops != NULL ? HYST_OK : HYST_ERR_CURVE;
 }
 
 /* The kind of a prepared curve (checked: hyst_curve_check()), whichever it

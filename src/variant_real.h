@@ -61,29 +61,18 @@ static int NUM_NAME(admit)(hyst_tcm_t *S, NUM_T x, NUM_T *out)
 #include "tcm_engine.h"
 #include "kinds.h"
 
-/* A curve checked by hyst_check_init(), on the kind bound to it (NULL:
- * the kind named is not the curve's, HYST_ERR_CURVE). */
-static hyst_status_t NUM_NAME(init_bound)(hyst_tcm_t *S, const hyst_curve_t *curve,
-                                          const NUM_NAME(kind_t) *kind, NUM_T *xltp, NUM_T *yltp,
-                                          NUM_T *xrtp, NUM_T *yrtp, size_t capacity)
-{
-    if (kind == NULL) {
-        return HYST_ERR_CURVE;
-    }
-    NUM_NAME(attach)(S, curve, kind, curve->lo.NUM_F, curve->hi.NUM_F, curve->unit.NUM_F, xltp,
-                     yltp, xrtp, yrtp, capacity);
-    return HYST_OK;
-}
-
 static hyst_status_t NUM_NAME(init_curve_impl)(hyst_tcm_t *S, const hyst_curve_t *curve, NUM_T *xltp,
                                     NUM_T *yltp, NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                     unsigned long layout)
 {
     const hyst_status_t st = hyst_check_init(S, curve, NUM_VARIANT, xltp, yltp, xrtp, yrtp,
                                              capacity, sizeof(NUM_T), sizeof(NUM_T), layout);
-    return st != HYST_OK ? st
-                         : NUM_NAME(init_bound)(S, curve, NUM_NAME(kind_of)(curve), xltp, yltp,
-                                                xrtp, yrtp, capacity);
+    if (st != HYST_OK) {
+        return st;
+    }
+    NUM_NAME(attach)(S, curve, NUM_NAME(kind_of)(curve), curve->lo.NUM_F, curve->hi.NUM_F,
+                     curve->unit.NUM_F, xltp, yltp, xrtp, yrtp, capacity);
+    return HYST_OK;
 }
 
 /* The kind named by the caller (src/kinds.h's binders): only its code is
@@ -93,15 +82,18 @@ static hyst_status_t NUM_NAME(init_kind_impl)(hyst_tcm_t *S, const hyst_curve_t 
                                               NUM_T *xrtp, NUM_T *yrtp, size_t capacity,
                                               unsigned long layout)
 {
+    const NUM_NAME(kind_t) *ops = NULL;
     hyst_status_t st = hyst_check_init(S, curve, NUM_VARIANT, xltp, yltp, xrtp, yrtp, capacity,
                                        sizeof(NUM_T), sizeof(NUM_T), layout);
-    if (st == HYST_OK && kind == NULL) {
-        st = HYST_ERR_NULL;
+    if (st == HYST_OK) {
+        st = NUM_NAME(named_kind)(kind, curve, &ops);
     }
-    return st != HYST_OK ? st
-                         : NUM_NAME(init_bound)(S, curve,
-                                                (const NUM_NAME(kind_t) *)kind(curve, NUM_VARIANT),
-                                                xltp, yltp, xrtp, yrtp, capacity);
+    if (st != HYST_OK) {
+        return st;
+    }
+    NUM_NAME(attach)(S, curve, ops, curve->lo.NUM_F, curve->hi.NUM_F, curve->unit.NUM_F, xltp,
+                     yltp, xrtp, yrtp, capacity);
+    return HYST_OK;
 }
 
 static hyst_status_t NUM_NAME(init_impl)(hyst_tcm_t *S, const hyst_poly_t *f0, NUM_T *xltp, NUM_T *yltp,
