@@ -99,6 +99,16 @@ hyst_wide_t hyst_table_put_(hyst_ptr_t table, size_t i, unsigned variant, hyst_w
 #define TB_G(p, variant, u) unit_g((p), (variant), (u))
 #define TB_DG(p, variant, u) unit_dg((p), (variant), (u))
 #include "inv_table_build.h"
+/* A table given ready-made, its pieces measured: given_table_pieces(). */
+#define TP_NAME(n) given_##n
+#define TP_Q31 0
+#define TP_GIVEN 1
+#include "inv_table_pieces.h"
+/* The q31 compensator's pieces: q31_table_pieces(). */
+#define TP_NAME(n) q31_##n
+#define TP_Q31 1
+#define TP_GIVEN 0
+#include "inv_table_pieces.h"
 
 /* Everything of the table's curve but its numbers, and the build's state:
  * the checks both constructors make, the axes swapped, the index scale. */
@@ -225,7 +235,8 @@ hyst_status_t hyst_curve_inverse_table_const_(hyst_curve_t *inv, const hyst_curv
      * within HYST_INV_TABLE_TOL and the error sealed (a table whose pieces
      * were changed and sealed again passed the knots' check) */
     b.given = table;
-    err = hyst_table_err_((table_pieces(&b, intervals) + hyst_drive_rounding_(&out)) / b.span);
+    err = hyst_table_err_((given_table_pieces(&b, intervals) + hyst_drive_rounding_(&out)) /
+                          b.span);
     if (b.beyond || !(err <= seal->max_err)) {
         return HYST_ERR_CURVE;
     }
@@ -271,7 +282,7 @@ hyst_status_t hyst_inverse_table_measure_(const hyst_curve_t *inv)
     }
     /* every piece measured as the table from flash is (its const init) */
     b.given = inv->u.inv_table.table;
-    err = hyst_table_err_((table_pieces(&b, n) + hyst_drive_rounding_(&out)) / b.span);
+    err = hyst_table_err_((given_table_pieces(&b, n) + hyst_drive_rounding_(&out)) / b.span);
     return b.beyond || !(err <= hyst_table_err_(inv->u.inv_table.max_err)) ? HYST_ERR_CURVE
                                                                           : HYST_OK;
 }
@@ -299,7 +310,7 @@ hyst_status_t hyst_q31_inverse_table_(hyst_q31_t *table, size_t intervals,
      * real output step j range / N */
     b.e_per_s = range / (hyst_wide_t)intervals;
     table[0] = (hyst_q31_t)(16u * (unsigned long)intervals); /* <= 2^24 */
-    *max_err = table_pieces(&b, intervals) / b.span;
+    *max_err = q31_table_pieces(&b, intervals) / b.span;
     *exact = out.u.inv_table.exact;
     return HYST_OK;
 }
@@ -318,7 +329,7 @@ hyst_wide_t hyst_curve_inverse_error(const hyst_curve_t *curve)
 /* Inverse of a PWL or PWL_INV curve: the same points, axes swapped (exact). */
 static hyst_status_t pwl_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
 {
-    hyst_curve_t out = *fwd;
+    hyst_curve_t out;
     size_t i;
     for (i = 1u; i < fwd->u.pwl.n; ++i) { /* strictly increasing values */
         if (!(hyst_cptr_get(fwd->u.pwl.y, i, fwd->variant) >
@@ -326,44 +337,11 @@ static hyst_status_t pwl_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
             return HYST_ERR_NOT_INVERTIBLE;
         }
     }
+    hyst_curve_swap_axes_(&out, fwd);
     out.kind = fwd->kind == (unsigned)HYST_CURVE_PWL ? HYST_CURVE_PWL_INV : HYST_CURVE_PWL;
-    out.lo = fwd->y_lo;
-    out.hi = fwd->y_hi;
-    out.y_lo = fwd->lo;
-    out.y_hi = fwd->hi;
     out.u.pwl.x = fwd->u.pwl.y;
     out.u.pwl.y = fwd->u.pwl.x;
     *inv = out;
-    return HYST_OK;
-}
-
-/* The asymmetric kind and its inverse, into each other: out has the axes
- * swapped already; the tables stay (the compensator solves the forward
- * branches). Newton's tolerance: 2^-20 of the drive span in float, 2^-40 in
- * double, well above the rounding of a branch evaluation divided by a
- * moderate slope, so that steps reach it. */
-static hyst_status_t everett_inverse(hyst_curve_t *inv, hyst_curve_t *out, int to_inverse)
-{
-    const hyst_wide_t lo = hyst_num_get(&out->lo, out->variant);
-    const hyst_wide_t hi = hyst_num_get(&out->hi, out->variant);
-    const hyst_wide_t tol = out->variant == (unsigned)HYST_VARIANT_F32
-                                ? (hyst_wide_t)9.5367431640625e-7
-                                : (hyst_wide_t)9.094947017729282379150390625e-13;
-    if (!(hi > lo)) {
-        return HYST_ERR_NOT_INVERTIBLE;
-    }
-    out->kind = to_inverse ? HYST_CURVE_EVERETT_INV : HYST_CURVE_EVERETT;
-    /* the inverse takes the desired output step itself; the forward w */
-    (void)hyst_num_set(&out->unit, out->variant,
-                       to_inverse ? 1 : hyst_num_get(&out->u.everett.inv_span, out->variant));
-    (void)hyst_num_set(&out->u.everett.tol, out->variant, to_inverse ? tol : 0);
-    /* one solve's error, in the drive: about tol of its span */
-    out->rounding = out->u.everett.branch_rounding;
-    if (to_inverse) {
-        (void)hyst_num_set(&out->rounding, out->variant,
-                           2 * tol * hyst_num_get(&out->u.everett.span, out->variant));
-    }
-    *inv = *out;
     return HYST_OK;
 }
 
@@ -381,18 +359,13 @@ hyst_status_t hyst_curve_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd)
     if (fwd->kind == (unsigned)HYST_CURVE_PWL || fwd->kind == (unsigned)HYST_CURVE_PWL_INV) {
         return pwl_inverse(inv, fwd);
     }
-    out = *fwd; /* swap the axes; the polynomial stays the forward one */
-    out.lo = fwd->y_lo;
-    out.hi = fwd->y_hi;
-    out.y_lo = fwd->lo;
-    out.y_hi = fwd->hi;
-    lo = hyst_num_get(&out.lo, out.variant);
-    hi = hyst_num_get(&out.hi, out.variant);
     if (fwd->kind == (unsigned)HYST_CURVE_EVERETT || fwd->kind == (unsigned)HYST_CURVE_EVERETT_INV ||
         fwd->kind == (unsigned)HYST_CURVE_EVERETT_INV_TABLE) {
-        out.u.everett.table.f32 = NULL; /* the forward curve and the solved inverse have none */
-        return everett_inverse(inv, &out, fwd->kind == (unsigned)HYST_CURVE_EVERETT);
+        return hyst_everett_inverse_(inv, fwd);
     }
+    hyst_curve_swap_axes_(&out, fwd); /* the polynomial stays the forward one */
+    lo = hyst_num_get(&out.lo, out.variant);
+    hi = hyst_num_get(&out.hi, out.variant);
     if (fwd->kind == (unsigned)HYST_CURVE_POLY_INV ||
         fwd->kind == (unsigned)HYST_CURVE_INV_TABLE) { /* as hyst_curve_poly_() set it */
         const hyst_curve_poly_t p = fwd->kind == (unsigned)HYST_CURVE_POLY_INV

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The asymmetric kind's tabulated compensator (curve.h,
+/* The asymmetric kind's compensators: the solved one's curve (the forward
+ * curve's axes swapped, hyst_curve_inverse()) and the tabulated one (curve.h,
  * hyst_*_curve_everett_inverse_table()): rows of cubic pieces of the drive
  * step over the branch's output step, one row per anchor (the start of the
  * branch), for both directions; init measures the blend a branch makes of
@@ -433,6 +434,37 @@ static int index_scale_ok(const hyst_curve_t *inv, size_t intervals)
     return least >= 2 * min && n / least <= max / 2;
 }
 
+/* The asymmetric kind and its solved compensator, into each other: the
+ * axes swapped, the tables stay (the compensator solves the forward
+ * branches). Newton's tolerance: 2^-20 of the drive span in float, 2^-40 in
+ * double, well above the rounding of a branch evaluation divided by a
+ * moderate slope, so that steps reach it. */
+hyst_status_t hyst_everett_inverse_(hyst_curve_t *inv, const hyst_curve_t *fwd)
+{
+    const int to_inverse = fwd->kind == (unsigned)HYST_CURVE_EVERETT;
+    const unsigned v = fwd->variant;
+    const hyst_wide_t tol = v == (unsigned)HYST_VARIANT_F32
+                                ? (hyst_wide_t)9.5367431640625e-7
+                                : (hyst_wide_t)9.094947017729282379150390625e-13;
+    hyst_curve_t out;
+    hyst_curve_swap_axes_(&out, fwd);
+    out.u.everett.table.f32 = NULL; /* the forward curve and the solved inverse have none */
+    if (!(hyst_num_get(&out.hi, v) > hyst_num_get(&out.lo, v))) {
+        return HYST_ERR_NOT_INVERTIBLE;
+    }
+    out.kind = to_inverse ? HYST_CURVE_EVERETT_INV : HYST_CURVE_EVERETT;
+    /* the inverse takes the desired output step itself; the forward w */
+    (void)hyst_num_set(&out.unit, v, to_inverse ? 1 : hyst_num_get(&out.u.everett.inv_span, v));
+    (void)hyst_num_set(&out.u.everett.tol, v, to_inverse ? tol : 0);
+    /* one solve's error, in the drive: about tol of its span */
+    out.rounding = out.u.everett.branch_rounding;
+    if (to_inverse) {
+        (void)hyst_num_set(&out.rounding, v, 2 * tol * hyst_num_get(&out.u.everett.span, v));
+    }
+    *inv = out;
+    return HYST_OK;
+}
+
 /* Everything of the table's curve but its numbers, and the build's state:
  * the checks both constructors make, then the solved compensator's curve
  * (the solved intervals' numbers) with the table's kind, shape and V(a). */
@@ -456,7 +488,7 @@ static hyst_status_t prepare(hyst_curve_t *out, build_t *b, const hyst_curve_t *
         !intervals_ok((unsigned long)intervals)) {
         return HYST_ERR_ARG;
     }
-    st = hyst_curve_inverse(out, fwd); /* HYST_CURVE_EVERETT_INV: the solved intervals' */
+    st = hyst_everett_inverse_(out, fwd); /* HYST_CURVE_EVERETT_INV: the solved intervals' */
     if (st != HYST_OK) {
         return st;
     }

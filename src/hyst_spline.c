@@ -266,7 +266,6 @@ static hyst_wide_t pieces_dg(const hyst_curve_t *c, unsigned variant, hyst_wide_
 #define TB_FWD(c) (c)
 #define TB_G(p, variant, u) pieces_g((p), (variant), (u))
 #define TB_DG(p, variant, u) pieces_dg((p), (variant), (u))
-#define TB_REAL_ONLY 1
 #include "inv_table_build.h"
 
 /* The checks, in the polynomial's order (hyst_*_curve_inverse_table()),

@@ -354,6 +354,22 @@ void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
                       const hyst_tcm_book_t *book);
 #endif
 
+/* fwd with its axes swapped: its domain the output range and its output
+ * range the domain (where each kind's inverse starts). */
+HYST_INLINE void hyst_curve_swap_axes_(hyst_curve_t *out, const hyst_curve_t *fwd)
+{
+    *out = *fwd;
+    out->lo = fwd->y_lo;
+    out->hi = fwd->y_hi;
+    out->y_lo = fwd->lo;
+    out->y_hi = fwd->hi;
+}
+
+/* The asymmetric kind's solved compensator of a checked forward curve, or
+ * the forward curve of a compensator (src/hyst_everett_inv.c; the work of
+ * hyst_curve_inverse() for that kind). */
+hyst_status_t hyst_everett_inverse_(hyst_curve_t *inv, const hyst_curve_t *fwd);
+
 /* The tabulated inverse of a polynomial curve of a real variant (the work
  * of the hyst_f32/f64_curve_inverse_table constructors, written once). */
 hyst_status_t hyst_curve_inverse_table_(hyst_curve_t *inv, const hyst_curve_t *fwd,

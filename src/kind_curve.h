@@ -19,6 +19,7 @@ static void TCM_NAME(curve_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 }
 
 static const TCM_NAME(kind_t) TCM_NAME(ops_curve) = {.g = TCM_NAME(curve_kind_g),
+                                                      .slow = TCM_NAME(step_slow),
                                                       .attach = TCM_NAME(curve_attach)};
 
 #endif /* HYST_KIND_CURVE_H */

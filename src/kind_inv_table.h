@@ -20,6 +20,7 @@ static void TCM_NAME(inv_table_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 }
 
 static const TCM_NAME(kind_t) TCM_NAME(ops_inv_table) = {.g = TCM_NAME(inv_table_kind_g),
+                                                          .slow = TCM_NAME(step_slow),
                                                           .attach = TCM_NAME(inv_table_attach)};
 
 #endif /* HYST_KIND_INV_TABLE_H */

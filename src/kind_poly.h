@@ -22,6 +22,7 @@ static void TCM_NAME(poly_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 
 /* Its deadband bound is the engine's for a polynomial branch (skip()):
  * no loop_error. */
-static const TCM_NAME(kind_t) TCM_NAME(ops_poly) = {.attach = TCM_NAME(poly_attach)};
+static const TCM_NAME(kind_t) TCM_NAME(ops_poly) = {.slow = TCM_NAME(step_slow),
+                                                     .attach = TCM_NAME(poly_attach)};
 
 #endif /* HYST_KIND_POLY_H */

@@ -26,6 +26,7 @@ static void TCM_NAME(spline_attach)(hyst_tcm_t *S, const hyst_curve_t *curve)
 }
 
 static const TCM_NAME(kind_t) TCM_NAME(ops_spline) = {.g = TCM_NAME(spline_kind_g),
+                                                       .slow = TCM_NAME(step_slow),
                                                        .attach = TCM_NAME(spline_attach)};
 
 /* The tabulated compensator's G: a kind of its own, so that the solved
@@ -36,6 +37,8 @@ static TCM_NOINLINE TCM_Y TCM_NAME(spline_table_kind_g)(const hyst_tcm_t *S, TCM
 }
 
 static const TCM_NAME(kind_t) TCM_NAME(ops_spline_inv_table) = {
-    .g = TCM_NAME(spline_table_kind_g), .attach = TCM_NAME(spline_attach)};
+    .g = TCM_NAME(spline_table_kind_g),
+    .slow = TCM_NAME(step_slow),
+    .attach = TCM_NAME(spline_attach)};
 
 #endif /* HYST_KIND_SPLINE_H */

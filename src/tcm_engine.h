@@ -133,7 +133,9 @@ typedef struct TCM_NAME(kind) {
     /* the current branch's numbers, once it is settled (per-branch kinds:
      * TCM_PER_BRANCH); NULL if none */
     void (*derive)(hyst_tcm_t *S);
-    /* the kind's slow sample (src/tcm_slow.h); NULL: the engine's */
+    /* the kind's slow sample: the engine's (step_slow()) or its own
+     * (src/tcm_slow.h); named by every kind, so that a firmware links the
+     * engine's only with a kind that runs it */
     TCM_Y (*slow)(hyst_tcm_t *S, TCM_ARG x);
     /* the deadband's error bound of a skipped loop [b, a]; NULL: the
      * engine's (skip(): a polynomial branch's bound by its coefficients,
@@ -635,7 +637,7 @@ static void TCM_NAME(attach)(hyst_tcm_t *S, const hyst_curve_t *curve,
     S->layout = HYST_LAYOUT;
     S->curve = curve;
     S->kind = kind;
-    S->slow = (void (*)(void))(kind->slow != NULL ? kind->slow : TCM_NAME(step_slow));
+    S->slow = (void (*)(void))kind->slow;
     S->skip = NULL; /* no deadband yet (bind_skip()) */
     /* -0 made +0: the anchor A0 = lo is a stored TP, and a restore
      * normalises every stored TP (resume_): one bit pattern either way */
