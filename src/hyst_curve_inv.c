@@ -253,12 +253,8 @@ hyst_status_t hyst_inverse_table_measure_(const hyst_curve_t *inv)
     const unsigned v = inv->variant;
     const size_t n = inv->u.inv_table.intervals;
     hyst_status_t st;
-    fwd = *inv; /* the forward curve the table was built from, axes swapped back */
+    hyst_curve_swap_axes_(&fwd, inv); /* the forward curve the table was built from */
     fwd.kind = HYST_CURVE_POLY;
-    fwd.lo = inv->y_lo;
-    fwd.hi = inv->y_hi;
-    fwd.y_lo = inv->lo;
-    fwd.y_hi = inv->hi;
     fwd.u.poly = inv->u.inv_table.fwd;
     st = table_prepare(&out, &b, inv, &fwd, inv->u.inv_table.table, n, v);
     if (st != HYST_OK) {

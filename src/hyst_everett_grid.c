@@ -256,12 +256,8 @@ static hyst_status_t grid_inverse(hyst_curve_t *inv, const hyst_curve_t *fwd, un
         !(hyst_num_get(&fwd->y_lo, variant) < hyst_num_get(&fwd->y_hi, variant))) {
         return HYST_ERR_ARG;
     }
-    out = *fwd;
+    hyst_curve_swap_axes_(&out, fwd);
     out.kind = HYST_CURVE_EVERETT_GRID_INV;
-    out.lo = fwd->y_lo;
-    out.hi = fwd->y_hi;
-    out.y_lo = fwd->lo;
-    out.y_hi = fwd->hi;
     (void)hyst_num_set(&out.unit, variant, 1); /* G^-1 takes the output step itself */
     span = hyst_num_get(&fwd->hi, variant) - hyst_num_get(&fwd->lo, variant);
     eps = variant == (unsigned)HYST_VARIANT_F64 ? (hyst_wide_t)DBL_EPSILON / 2

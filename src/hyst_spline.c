@@ -389,12 +389,9 @@ hyst_status_t hyst_curve_spline_inverse(hyst_curve_t *inv, const hyst_curve_t *f
         return HYST_ERR_NOT_INVERTIBLE;
     }
     to_inverse = fwd->kind == (unsigned)HYST_CURVE_SPLINE;
-    out = *fwd; /* the same table: G^-1 takes the output step itself, G knot intervals */
+    /* the same table: G^-1 takes the output step itself, G knot intervals */
+    hyst_curve_swap_axes_(&out, fwd);
     out.kind = to_inverse ? HYST_CURVE_SPLINE_INV : HYST_CURVE_SPLINE;
-    out.lo = fwd->y_lo;
-    out.hi = fwd->y_hi;
-    out.y_lo = fwd->lo;
-    out.y_hi = fwd->hi;
     (void)hyst_num_set(&out.unit, out.variant,
                        to_inverse ? 1
                                   : (hyst_wide_t)fwd->u.spline.intervals /

@@ -147,12 +147,8 @@ static int TB_NAME(table_size_ok)(unsigned long n) { return n >= 1ul && n <= TAB
 HYST_INLINE void TB_NAME(table_axes)(hyst_curve_t *out, const hyst_curve_t *fwd, unsigned kind,
                                      unsigned variant)
 {
-    *out = *fwd;
+    hyst_curve_swap_axes_(out, fwd);
     out->kind = kind;
-    out->lo = fwd->y_lo;
-    out->hi = fwd->y_hi;
-    out->y_lo = fwd->lo;
-    out->y_hi = fwd->hi;
     (void)hyst_num_set(&out->rounding, variant, 0);
 }
 
