@@ -211,14 +211,10 @@ int hyst_poly_is_increasing(const hyst_wide_t *coeffs, unsigned degree,
  * Storing g in the variant's type rounds each coefficient once more (one
  * more eps in Horner's term). @p shift is the error of g itself
  * (hyst_unit_poly_error_()): the curve that runs is f0 up to it.
- * Stores the bound, 1 % above, in curve->rounding; returns 0 if it exceeds
- * HYST_MAX_ROUNDING of the output range. */
-static int rounding_bound(hyst_curve_t *curve, const hyst_wide_t *g, unsigned n,
-                          unsigned variant, hyst_wide_t shift)
+ * The bound, 1 % above; its output range G(1) into *range. */
+HYST_INLINE hyst_wide_t rounding_of(const hyst_wide_t *g, unsigned n, hyst_wide_t eps,
+                                    hyst_wide_t shift, hyst_wide_t *range_out)
 {
-    const hyst_wide_t eps = variant == (unsigned)HYST_VARIANT_F64
-                                ? (hyst_wide_t)DBL_EPSILON / 2
-                                : (hyst_wide_t)FLT_EPSILON / 2;
     hyst_wide_t ug[HYST_MAX_DEGREE + 1], beta[HYST_MAX_DEGREE + 1];
     hyst_wide_t sum = 0, range = 0, slope = 0, bound, y_max, y_hi;
     unsigned k;
@@ -238,22 +234,36 @@ static int rounding_bound(hyst_curve_t *curve, const hyst_wide_t *g, unsigned n,
     bound = (2 * eps / (1 - 2 * eps)) * slope +
             ((hyst_wide_t)(2u * n + 2u) * eps / (1 - (hyst_wide_t)(2u * n + 2u) * eps)) * sum +
             eps * y_max + shift;
-    bound *= (hyst_wide_t)1.01; /* the bound's own rounding, in hyst_wide_t */
+    *range_out = range;
+    return bound * (hyst_wide_t)1.01; /* the bound's own rounding, in hyst_wide_t */
+}
+
+/* The unit roundoff of the variant whose rounding a curve's bound counts. */
+HYST_INLINE hyst_wide_t variant_eps(unsigned variant)
+{
+    return variant == (unsigned)HYST_VARIANT_F64 ? (hyst_wide_t)DBL_EPSILON / 2
+                                                 : (hyst_wide_t)FLT_EPSILON / 2;
+}
+
+/* rounding_of() for the variant, stored in curve->rounding; 0 if it exceeds
+ * HYST_MAX_ROUNDING of the output range. */
+static int rounding_bound(hyst_curve_t *curve, const hyst_wide_t *g, unsigned n,
+                          unsigned variant, hyst_wide_t shift)
+{
+    hyst_wide_t range;
+    const hyst_wide_t bound = rounding_of(g, n, variant_eps(variant), shift, &range);
     (void)hyst_num_set(&curve->rounding, variant, bound);
     return bound <= (hyst_wide_t)HYST_MAX_ROUNDING * range; /* NaN: refused */
 }
 
-hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsigned variant,
-                               unsigned long layout)
+/* The checks of f0's fields every polynomial curve starts with; its
+ * coefficients into c. Inline: each caller's copy as it was before it was
+ * shared. */
+HYST_INLINE hyst_status_t poly_args(const hyst_poly_t *f0, unsigned long layout, hyst_wide_t *c)
 {
-    hyst_wide_t c[HYST_MAX_DEGREE + 1];
-    hyst_wide_t g[HYST_MAX_DEGREE + 1];
-    hyst_curve_t out;
-    hyst_wide_t lo, hi, y_hi;
+    hyst_wide_t lo, hi;
     unsigned n, k;
-    int finite = 1;
-
-    if (curve == NULL || f0 == NULL) {
+    if (f0 == NULL) {
         return HYST_ERR_NULL;
     }
     if (layout != HYST_LAYOUT) {
@@ -275,6 +285,72 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
             return HYST_ERR_COEFF;
         }
     }
+    return HYST_OK;
+}
+
+/* The sum of |g_k|, k >= 1: Horner's partial sums on [0, 1] stay below it. */
+HYST_INLINE hyst_wide_t horner_bound(const hyst_wide_t *g, unsigned n)
+{
+    hyst_wide_t bound = 0;
+    unsigned k;
+    for (k = 1u; k <= n; ++k) {
+        bound += hyst_wide_abs(g[k]);
+    }
+    return bound;
+}
+
+hyst_status_t hyst_poly_check_(const hyst_poly_t *f0, hyst_wide_t *g, unsigned long layout)
+{
+    hyst_wide_t c[HYST_MAX_DEGREE + 1];
+    hyst_wide_t y_hi = 0, ymax, bound, range;
+    unsigned n, k;
+    int finite;
+    const hyst_status_t st = poly_args(f0, layout, c);
+    if (st != HYST_OK) {
+        return st;
+    }
+    n = f0->degree;
+    hyst_unit_poly_(g, c, n, f0->lo, f0->hi);
+    finite = hyst_wide_is_finite(1 / (f0->hi - f0->lo));
+    for (k = 0u; k <= n; ++k) {
+        y_hi += g[k];
+        finite &= hyst_wide_is_finite(g[k]);
+    }
+    ymax = hyst_wide_abs(g[0]) > hyst_wide_abs(y_hi) ? hyst_wide_abs(g[0]) : hyst_wide_abs(y_hi);
+    bound = horner_bound(g, n);
+    if (!finite || !hyst_wide_is_finite(y_hi) || !hyst_wide_is_finite(bound) ||
+        !hyst_wide_is_finite(2 * ymax + bound)) {
+        return HYST_ERR_COEFF;
+    }
+    if (!hyst_poly_is_increasing(c, n, f0->lo, f0->hi, NULL)) {
+        return HYST_ERR_NOT_INCREASING;
+    }
+    bound = rounding_of(g, n, variant_eps((unsigned)HYST_VARIANT_F64),
+                        hyst_unit_poly_error_(c, n, f0->lo, f0->hi), &range);
+    return bound <= (hyst_wide_t)HYST_MAX_ROUNDING * range ? HYST_OK : HYST_ERR_ILL_CONDITIONED;
+}
+
+hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsigned variant,
+                               unsigned long layout)
+{
+    hyst_wide_t c[HYST_MAX_DEGREE + 1];
+    hyst_wide_t g[HYST_MAX_DEGREE + 1];
+    hyst_curve_t out;
+    hyst_wide_t lo, hi, y_hi;
+    unsigned n, k;
+    int finite = 1;
+    hyst_status_t st;
+
+    if (curve == NULL) {
+        return HYST_ERR_NULL;
+    }
+    st = poly_args(f0, layout, c);
+    if (st != HYST_OK) {
+        return st;
+    }
+    n = f0->degree;
+    lo = f0->lo;
+    hi = f0->hi;
     hyst_unit_poly_(g, c, n, lo, hi);
     y_hi = 0;
     for (k = 0u; k <= n; ++k) {
@@ -301,12 +377,9 @@ hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsig
      * sum |a_k| on [0, 1]) and an output (|y| + the output span). */
     {
         hyst_num_t probe;
-        hyst_wide_t bound = 0, ymax = hyst_wide_abs(g[0]) > hyst_wide_abs(y_hi)
-                                         ? hyst_wide_abs(g[0])
-                                         : hyst_wide_abs(y_hi);
-        for (k = 1u; k <= n; ++k) {
-            bound += hyst_wide_abs(g[k]);
-        }
+        const hyst_wide_t bound = horner_bound(g, n);
+        const hyst_wide_t ymax =
+            hyst_wide_abs(g[0]) > hyst_wide_abs(y_hi) ? hyst_wide_abs(g[0]) : hyst_wide_abs(y_hi);
         if (!hyst_num_set(&probe, variant, hi - lo) ||
             !(hyst_num_get(&out.lo, variant) < hyst_num_get(&out.hi, variant))) {
             return HYST_ERR_DOMAIN; /* the span overflows, or lo and hi round together */

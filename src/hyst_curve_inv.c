@@ -95,7 +95,6 @@ hyst_wide_t hyst_table_put_(hyst_ptr_t table, size_t i, unsigned variant, hyst_w
 /* The builder (src/inv_table_build.h) on a polynomial's G. */
 #define TB_NAME(n) n
 #define TB_FWD_T hyst_curve_poly_t
-#define TB_FWD(c) (&(c)->u.inv_table.fwd)
 #define TB_G(p, variant, u) unit_g((p), (variant), (u))
 #define TB_DG(p, variant, u) unit_dg((p), (variant), (u))
 #include "inv_table_build.h"
@@ -103,11 +102,6 @@ hyst_wide_t hyst_table_put_(hyst_ptr_t table, size_t i, unsigned variant, hyst_w
 #define TP_NAME(n) given_##n
 #define TP_Q31 0
 #define TP_GIVEN 1
-#include "inv_table_pieces.h"
-/* The q31 compensator's pieces: q31_table_pieces(). */
-#define TP_NAME(n) q31_##n
-#define TP_Q31 1
-#define TP_GIVEN 0
 #include "inv_table_pieces.h"
 
 /* Everything of the table's curve but its numbers, and the build's state:
@@ -139,7 +133,7 @@ static hyst_status_t table_prepare(hyst_curve_t *out, table_build_t *b, const hy
     }
     (void)hyst_num_set(&out->u.inv_table.span, variant, span);
     (void)hyst_num_set(&out->u.inv_table.u_per_d, variant, 1 / span);
-    return table_start(out, b, table, intervals, range, span, variant);
+    return table_start(out, b, &out->u.inv_table.fwd, table, intervals, range, span, variant);
 }
 
 /* The drive's last rounding: the sample adds the table's drive step to its
@@ -281,34 +275,6 @@ hyst_status_t hyst_inverse_table_measure_(const hyst_curve_t *inv)
     err = hyst_table_err_((given_table_pieces(&b, n) + hyst_drive_rounding_(&out)) / b.span);
     return b.beyond || !(err <= hyst_table_err_(inv->u.inv_table.max_err)) ? HYST_ERR_CURVE
                                                                           : HYST_OK;
-}
-
-hyst_status_t hyst_q31_inverse_table_(hyst_q31_t *table, size_t intervals,
-                                      const hyst_curve_t *fwd, hyst_q31_t drive_span,
-                                      size_t *exact, hyst_wide_t *max_err)
-{
-    hyst_curve_t out = *fwd; /* the knots' solver reads its polynomial and variant */
-    table_build_t b;
-    const hyst_wide_t range = unit_g(&fwd->u.poly, fwd->variant, 1);
-    if (!table_size_ok((unsigned long)intervals)) {
-        return HYST_ERR_ARG;
-    }
-    if (!(range > 0)) {
-        return HYST_ERR_NOT_INVERTIBLE;
-    }
-    out.u.inv_table.fwd = fwd->u.poly;
-    out.u.inv_table.exact = 0u;
-    memset(&b, 0, sizeof b);
-    b.c = &out;
-    b.q31 = table + 1;
-    b.span = (hyst_wide_t)drive_span;
-    /* the samples' s = u N / 2^28 for an output step u in q: knot j at the
-     * real output step j range / N */
-    b.e_per_s = range / (hyst_wide_t)intervals;
-    table[0] = (hyst_q31_t)(16u * (unsigned long)intervals); /* <= 2^24 */
-    *max_err = q31_table_pieces(&b, intervals) / b.span;
-    *exact = out.u.inv_table.exact;
-    return HYST_OK;
 }
 
 hyst_wide_t hyst_curve_inverse_error(const hyst_curve_t *curve)

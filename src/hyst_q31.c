@@ -130,14 +130,11 @@ HYST_INLINE hyst_status_t q31_prepare(hyst_curve_t *q, hyst_q31_t *unit, const h
                                       unsigned long layout)
 {
     /* The curve's checks (domain, coefficients, monotonicity) in
-     * hyst_wide_t; its rounding bound for double (hyst_q31_curve_() states this
-     * variant's). Without the f64 variant the numbers it stores are floats,
-     * unused here. */
-    const unsigned checks = (unsigned)HYST_VARIANT_F64;
-    hyst_curve_t real;
+     * hyst_wide_t, its rounding bound for double (hyst_q31_curve_() states this
+     * variant's), and G not rounded to a real variant's numbers. */
     hyst_wide_t g[HYST_MAX_DEGREE + 1], range = 0, c;
     unsigned n, k;
-    const hyst_status_t st = hyst_curve_poly_(&real, f0, checks, layout);
+    const hyst_status_t st = hyst_poly_check_(f0, g, layout);
     if (st != HYST_OK) {
         return st;
     }
@@ -145,7 +142,6 @@ HYST_INLINE hyst_status_t q31_prepare(hyst_curve_t *q, hyst_q31_t *unit, const h
         return HYST_ERR_DOMAIN;
     }
     n = f0->degree;
-    hyst_unit_poly_(g, f0->coeffs, n, f0->lo, f0->hi); /* in hyst_wide_t, not rounded */
     for (k = 1u; k <= n; ++k) {
         range += g[k];
     }

@@ -98,6 +98,90 @@ static hyst_q31_t hyst_q31_inv_other(const hyst_curve_t *c, hyst_q31_t u)
 
 #define Q31_INV_SPAN ((uint_least32_t)1 << HYST_Q31_SPAN_BITS)
 
+/* The table's forward curve: G's coefficients in hyst_wide_t, a[0]
+ * multiplying u^n as in hyst_curve_poly_t, exact (hyst_poly_check_()), not
+ * rounded to a real variant's numbers: the table is the same whether or not
+ * the f64 variant exists. */
+typedef struct {
+    unsigned degree;
+    hyst_wide_t a[HYST_MAX_DEGREE];
+} wide_poly_t;
+
+/* G(u) and G'(u) in the order of the real curves' unit_g() and unit_dg()
+ * (src/hyst_curve_inv.c). */
+static hyst_wide_t wide_g(const wide_poly_t *p, hyst_wide_t u)
+{
+    hyst_wide_t acc = p->a[0];
+    unsigned i;
+    for (i = 1u; i < p->degree; ++i) {
+        acc = acc * u + p->a[i];
+    }
+    return acc * u;
+}
+
+static hyst_wide_t wide_dg(const wide_poly_t *p, hyst_wide_t u)
+{
+    hyst_wide_t acc = 0;
+    unsigned i;
+    for (i = 0u; i < p->degree; ++i) {
+        acc = acc * u + (hyst_wide_t)(p->degree - i) * p->a[i];
+    }
+    return acc;
+}
+
+/* The builder (src/inv_table_build.h) on that G, and its pieces pass for
+ * the q31 pieces: q31_table_pieces(). */
+#define TB_NAME(n) wide_##n
+#define TB_FWD_T wide_poly_t
+#define TB_G(p, variant, u) ((void)(variant), wide_g((p), (u)))
+#define TB_DG(p, variant, u) ((void)(variant), wide_dg((p), (u)))
+#include "inv_table_build.h"
+#define TP_NAME(n) q31_##n
+#define TP_Q31 1
+#define TP_GIVEN 0
+#include "inv_table_pieces.h"
+
+/* The table (q31.h): the inverse of G, f0's normalised coefficients g
+ * (lowest power first, degree n), in `intervals` pieces uniform in the
+ * output, drive span `drive_span` units, into table (its scale, then the
+ * pieces); the count of exactly evaluated intervals into *exact and the
+ * worst measured error / drive span into *max_err. */
+static hyst_status_t q31_table(hyst_q31_t *table, size_t intervals, const hyst_wide_t *g,
+                               unsigned n, hyst_q31_t drive_span, size_t *exact,
+                               hyst_wide_t *max_err)
+{
+    hyst_curve_t out; /* the count of intervals marked exact */
+    table_build_t b;
+    wide_poly_t w;
+    hyst_wide_t range;
+    unsigned k;
+    memset(&w, 0, sizeof w);
+    w.degree = n;
+    for (k = 0u; k < n; ++k) {
+        w.a[k] = g[n - k]; /* a[0] multiplies u^n */
+    }
+    range = wide_g(&w, 1);
+    if (!wide_table_size_ok((unsigned long)intervals)) {
+        return HYST_ERR_ARG;
+    }
+    if (!(range > 0)) {
+        return HYST_ERR_NOT_INVERTIBLE;
+    }
+    memset(&out, 0, sizeof out);
+    memset(&b, 0, sizeof b);
+    b.c = &out;
+    b.fwd = &w;
+    b.q31 = table + 1;
+    b.span = (hyst_wide_t)drive_span;
+    /* the samples' s = u N / 2^28 for an output step u in q: knot j at the
+     * real output step j range / N */
+    b.e_per_s = range / (hyst_wide_t)intervals;
+    table[0] = (hyst_q31_t)(16u * (unsigned long)intervals); /* <= 2^24 */
+    *max_err = q31_table_pieces(&b, intervals) / b.span;
+    *exact = out.u.inv_table.exact;
+    return HYST_OK;
+}
+
 hyst_status_t hyst_q31_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
                                            const hyst_poly_t *f0, uint_least32_t code_lo,
                                            uint_least32_t code_hi, hyst_q31_t *table,
@@ -106,22 +190,22 @@ hyst_status_t hyst_q31_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
                                            hyst_q31_t *yrtp, size_t capacity,
                                            unsigned long layout)
 {
-    /* the curve's checks as the model's (hyst_q31_init_()) */
-    const unsigned checks = (unsigned)HYST_VARIANT_F64;
-    hyst_curve_t real, q;
+    /* the curve's checks as the model's (hyst_q31_init_()), and its G in
+     * hyst_wide_t, the table's forward curve */
+    hyst_wide_t g[HYST_MAX_DEGREE + 1];
+    hyst_curve_t q;
     hyst_wide_t max_err = 0;
     uint_least32_t codes = 0u;
     unsigned bits = 0u;
     size_t exact = 0u;
-    hyst_status_t st = inv == NULL || table == NULL ? HYST_ERR_NULL
-                                                    : hyst_curve_poly_(&real, f0, checks, layout);
+    hyst_status_t st =
+        inv == NULL || table == NULL ? HYST_ERR_NULL : hyst_poly_check_(f0, g, layout);
     if (st == HYST_OK && (!(code_lo < code_hi) || code_hi > (uint_least32_t)HYST_CODE_MAX)) {
         st = HYST_ERR_DOMAIN;
     }
     if (st == HYST_OK) { /* the model's G in fixed point, for the marked intervals */
-        hyst_wide_t g[HYST_MAX_DEGREE + 1], range = 0;
+        hyst_wide_t range = 0;
         unsigned k;
-        hyst_unit_poly_(g, f0->coeffs, f0->degree, f0->lo, f0->hi);
         for (k = 1u; k <= f0->degree; ++k) {
             range += g[k];
         }
@@ -145,8 +229,8 @@ hyst_status_t hyst_q31_init_inverse_table_(hyst_tcm_t *S, hyst_curve_t *inv,
         while ((codes << (bits + 1u)) <= Q31_INV_SPAN) {
             ++bits;
         }
-        st = hyst_q31_inverse_table_(table, intervals, &real, (hyst_q31_t)(codes << bits), &exact,
-                                     &max_err);
+        st = q31_table(table, intervals, g, f0->degree, (hyst_q31_t)(codes << bits), &exact,
+                       &max_err);
     }
     if (st != HYST_OK) {
         return st;

@@ -263,7 +263,6 @@ static hyst_wide_t pieces_dg(const hyst_curve_t *c, unsigned variant, hyst_wide_
 
 #define TB_NAME(n) spline_##n
 #define TB_FWD_T hyst_curve_t
-#define TB_FWD(c) (c)
 #define TB_G(p, variant, u) pieces_g((p), (variant), (u))
 #define TB_DG(p, variant, u) pieces_dg((p), (variant), (u))
 #include "inv_table_build.h"
@@ -304,7 +303,7 @@ static hyst_status_t inv_table_prepare(hyst_curve_t *out, table_build_t *b, cons
     if (!(range > 0) || !(span > 0)) {
         return HYST_ERR_NOT_INVERTIBLE;
     }
-    return spline_table_start(out, b, table, intervals, range, span, variant);
+    return spline_table_start(out, b, out, table, intervals, range, span, variant);
 }
 
 static hyst_status_t spline_inverse_table(hyst_curve_t *inv, const hyst_curve_t *fwd,

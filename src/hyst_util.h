@@ -210,6 +210,13 @@ hyst_status_t hyst_check_init(const hyst_tcm_t *S, const hyst_curve_t *curve,
 hyst_status_t hyst_curve_poly_(hyst_curve_t *curve, const hyst_poly_t *f0, unsigned variant,
                                unsigned long layout);
 
+/* The checks hyst_curve_poly_() makes for the f64 variant on a target with
+ * a double type, made in hyst_wide_t whether or not the f64 variant exists:
+ * what the q31 model and compensator, whose numbers are their own, check f0
+ * with (src/hyst_curve.c). f0's normalised coefficients into g (lowest
+ * power first, hyst_unit_poly_()). */
+hyst_status_t hyst_poly_check_(const hyst_poly_t *f0, hyst_wide_t *g, unsigned long layout);
+
 /* The asymmetric curve of a branch function E in the variant's type
  * (src/hyst_everett.c; curve.h, hyst_*_curve_from_everett()). */
 hyst_status_t hyst_curve_everett_(hyst_curve_t *curve, const hyst_everett_t *e, unsigned variant,
@@ -455,15 +462,6 @@ HYST_INLINE hyst_q31_t hyst_q31_cubic_(const hyst_q31_t *b, hyst_q31_t t)
  * into q->rounding; 0 if a Horner partial sum could overflow. */
 int hyst_q31_curve_(hyst_curve_t *q, const hyst_wide_t *g, unsigned n, hyst_wide_t range,
                     hyst_wide_t c);
-
-/* The q31 compensator's table (src/hyst_curve_inv.c; q31.h): the inverse
- * of the real curve fwd (a polynomial) in `intervals` pieces uniform in the
- * output, drive span `drive_span` units, into table (its scale, then the
- * pieces); the count of exactly evaluated intervals into *exact and the
- * worst measured error / drive span into *max_err. */
-hyst_status_t hyst_q31_inverse_table_(hyst_q31_t *table, size_t intervals,
-                                      const hyst_curve_t *fwd, hyst_q31_t drive_span,
-                                      size_t *exact, hyst_wide_t *max_err);
 
 /* The kinds of g evaluated out of line (src/curve_eval.h), per real type:
  * g at its argument, already scaled by the curve's unit (1 for the kinds

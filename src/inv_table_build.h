@@ -5,15 +5,17 @@
  * HYST_INV_TABLE_TOL. Written once, instantiated per forward kind by the
  * file that prepares its tabulated inverse, so that each links the
  * forward kind's G alone and evaluates it inline:
- *   src/hyst_curve_inv.c: a polynomial's (HYST_CURVE_INV_TABLE), with two
- *     more instances of the pieces pass (src/inv_table_pieces.h): the q31
- *     compensator's pieces and a table given ready-made, measured;
+ *   src/hyst_curve_inv.c: a polynomial's (HYST_CURVE_INV_TABLE), with one
+ *     more instance of the pieces pass (src/inv_table_pieces.h): a table
+ *     given ready-made, measured;
+ *   src/hyst_q31_inv.c: the q31 compensator's, on G's exact coefficients,
+ *     with the q31 pieces pass;
  *   src/hyst_spline.c: a spline's (HYST_CURVE_SPLINE_INV_TABLE).
  * The instance defines, before including it:
  *   TB_NAME(n)    its functions' names (one static name per object: the
  *                 symbols ctest);
- *   TB_FWD_T      what the forward kind's G is read from, and TB_FWD(c)
- *                 that of the curve c being built;
+ *   TB_FWD_T      what the forward kind's G is read from (the build's
+ *                 b->fwd, given to table_start());
  *   TB_G(p, variant, u), TB_DG(p, variant, u)  G(u) and G'(u) in
  *                 hyst_wide_t, u in [0, 1] of the drive span, from the
  *                 numbers the samples use.
@@ -22,8 +24,8 @@
 #ifndef HYST_INV_TABLE_BUILD_H
 #define HYST_INV_TABLE_BUILD_H
 
-#if !defined(TB_NAME) || !defined(TB_FWD_T) || !defined(TB_FWD) || !defined(TB_G) || !defined(TB_DG)
-#error "inv_table_build.h: define TB_NAME, TB_FWD_T, TB_FWD, TB_G and TB_DG first"
+#if !defined(TB_NAME) || !defined(TB_FWD_T) || !defined(TB_G) || !defined(TB_DG)
+#error "inv_table_build.h: define TB_NAME, TB_FWD_T, TB_G and TB_DG first"
 #endif
 
 #include <string.h>
@@ -66,6 +68,7 @@ static hyst_wide_t TB_NAME(solve_g_near)(const TB_FWD_T *p, unsigned variant, hy
  * knots k-1 .. k+2 (the drive d at s = k, and its raw slope dd/ds). */
 typedef struct {
     hyst_curve_t *c;
+    const TB_FWD_T *fwd; /* the forward kind's G, as TB_G() reads it */
     hyst_ptr_t table;
     hyst_q31_t *q31; /* the q31 compensator's pieces (q31.h), else NULL */
     /* a table given ready-made: its pieces measured, not built (NULL: build) */
@@ -79,7 +82,7 @@ typedef struct {
  * knot's, its drive and slope (infinite at a flat point of f0). */
 static void TB_NAME(table_knot)(table_build_t *b, size_t j, unsigned w)
 {
-    const TB_FWD_T *p = TB_FWD(b->c);
+    const TB_FWD_T *p = b->fwd;
     const hyst_wide_t from = j > 0u ? b->u[w - 1u] : 0;
     hyst_wide_t u =
         TB_NAME(solve_g_near)(p, b->c->variant, (hyst_wide_t)j * b->e_per_s, from, 1, from);
@@ -153,13 +156,13 @@ HYST_INLINE void TB_NAME(table_axes)(hyst_curve_t *out, const hyst_curve_t *fwd,
 }
 
 /* The end of a constructor's checks, once the curve has its axes swapped,
- * its forward G and the table's drive span and G's argument per drive
+ * its forward G (fwd) and the table's drive span and G's argument per drive
  * step: the index scale, the build's state, the table's fields.
  * HYST_ERR_ILL_CONDITIONED where the scale overflows the variant's type. */
 HYST_INLINE hyst_status_t TB_NAME(table_start)(hyst_curve_t *out, table_build_t *b,
-                                               hyst_cptr_t table, size_t intervals,
-                                               hyst_wide_t range, hyst_wide_t span,
-                                               unsigned variant)
+                                               const TB_FWD_T *fwd, hyst_cptr_t table,
+                                               size_t intervals, hyst_wide_t range,
+                                               hyst_wide_t span, unsigned variant)
 {
     /* s = e unit, as the samples compute it: the knots sit where they see them;
      * an output range so small (subnormal) that the scale overflows the
@@ -177,6 +180,7 @@ HYST_INLINE hyst_status_t TB_NAME(table_start)(hyst_curve_t *out, table_build_t 
     out->u.inv_table.drive_bits = 0u;
     out->u.inv_table.drive_code_lo = 0u;
     b->c = out;
+    b->fwd = fwd;
     return HYST_OK;
 }
 

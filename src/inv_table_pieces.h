@@ -84,7 +84,7 @@ static hyst_wide_t TP_NAME(table_piece)(table_build_t *b, size_t k, int has_left
     const hyst_wide_t m0 = TB_NAME(table_slope)(b, 1u, has_left, 1);
     const hyst_wide_t m1 = TB_NAME(table_slope)(b, 2u, 1, has_right);
     const hyst_wide_t dd = b->d[2] - b->d[1];
-    const TB_FWD_T *p = TB_FWD(b->c);
+    const TB_FWD_T *p = b->fwd;
     hyst_wide_t c[4], worst = 0;
     unsigned i;
     c[0] = b->d[1];
