@@ -257,8 +257,8 @@ static int rounding_bound(hyst_curve_t *curve, const hyst_wide_t *g, unsigned n,
 }
 
 /* The checks of f0's fields every polynomial curve starts with; its
- * coefficients into c. Inline: each caller's copy as it was before it was
- * shared. */
+ * coefficients into c. Inline, as rounding_of(): a firmware usually links one of
+ * their two callers, and a copy in it is smaller than a shared call. */
 HYST_INLINE hyst_status_t poly_args(const hyst_poly_t *f0, unsigned long layout, hyst_wide_t *c)
 {
     hyst_wide_t lo, hi;
