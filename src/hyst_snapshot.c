@@ -170,7 +170,8 @@ static int get_num(const unsigned char *p, hyst_num_t *v, num_type_t t)
     return 1;
 }
 
-/* A number as hyst_wide_t (exact for every type). */
+/* A number as hyst_wide_t, for the checks of magnitudes; exact but for a
+ * q31 number of more than 24 bits with HYST_NO_DOUBLE (orders: below()). */
 static hyst_wide_t wide_of(const hyst_num_t *v, num_type_t t)
 {
 #if HYST_ENABLE_F64
@@ -181,6 +182,18 @@ static hyst_wide_t wide_of(const hyst_num_t *v, num_type_t t)
     return t == NUM_F32   ? (hyst_wide_t)v->f32
            : t == NUM_Q31 ? (hyst_wide_t)v->q31
                           : (hyst_wide_t)v->code;
+}
+
+/* a < b, exactly in the type (not as hyst_wide_t: distinct q31 numbers can
+ * round to one float); NaN is below nothing and nothing is below it. */
+static int below(const hyst_num_t *a, const hyst_num_t *b, num_type_t t)
+{
+#if HYST_ENABLE_F64
+    if (t == NUM_F64) {
+        return a->f64 < b->f64;
+    }
+#endif
+    return t == NUM_F32 ? a->f32 < b->f32 : t == NUM_Q31 ? a->q31 < b->q31 : a->code < b->code;
 }
 
 /* Entry i of a caller array, as a number. */
@@ -560,7 +573,6 @@ hyst_status_t hyst_snapshot_save(const hyst_tcm_t *S, unsigned char *buf, size_t
 static int read_point(const hyst_tcm_t *S, const format_t *f, const unsigned char *p,
                       hyst_num_t *x, hyst_num_t *y)
 {
-    const hyst_wide_t lo = wide_of(&S->lo, f->xt), hi = wide_of(&S->hi, f->xt);
     const hyst_wide_t ylo = wide_of(&S->y_lo, f->yt), yhi = wide_of(&S->y_hi, f->yt);
     hyst_wide_t wx, wy;
     if (!get_num(p, x, f->xt) || !get_num(p + f->x, y, f->yt)) {
@@ -568,8 +580,8 @@ static int read_point(const hyst_tcm_t *S, const format_t *f, const unsigned cha
     }
     wx = wide_of(x, f->xt);
     wy = wide_of(y, f->yt);
-    return hyst_wide_is_finite(wx) && hyst_wide_is_finite(wy) && wx >= lo && wx <= hi &&
-           wy >= ylo - (yhi - ylo) && wy <= yhi + (yhi - ylo);
+    return hyst_wide_is_finite(wx) && hyst_wide_is_finite(wy) && !below(x, &S->lo, f->xt) &&
+           !below(&S->hi, x, f->xt) && wy >= ylo - (yhi - ylo) && wy <= yhi + (yhi - ylo);
 }
 
 /* Is the saved state one the engine can reach? Turning points alternate and
@@ -580,39 +592,35 @@ static int state_is_valid(const hyst_tcm_t *S, const format_t *f, const unsigned
                           size_t nl, size_t nr)
 {
     const unsigned char *tp = body + f->x + f->r;
-    hyst_num_t x, y;
-    hyst_wide_t top_ltp = wide_of(&S->lo, f->xt), top_rtp = wide_of(&S->hi, f->xt), xp;
+    hyst_num_t x, y, top_ltp = S->lo, top_rtp = S->hi;
     size_t i;
     if (!read_point(S, f, tp, &x, &y) || !same_num(&x, &S->lo, f->xt) ||
         !same_num(&y, &S->y_lo, f->yt)) {
         return 0;
     }
     for (i = 1u; i < nl + nr; ++i) {
-        hyst_wide_t w;
         if (!read_point(S, f, tp + (f->x + f->r) * i, &x, &y)) {
             return 0;
         }
-        w = wide_of(&x, f->xt);
         if (i < nl) { /* LTPs ascend strictly */
-            if (!(w > top_ltp)) {
+            if (!below(&top_ltp, &x, f->xt)) {
                 return 0;
             }
-            top_ltp = w;
+            top_ltp = x;
         } else { /* RTPs descend strictly, above every LTP */
-            if (!(w > top_ltp) || (i > nl && !(w < top_rtp))) {
+            if (!below(&top_ltp, &x, f->xt) || (i > nl && !below(&x, &top_rtp, f->xt))) {
                 return 0;
             }
-            top_rtp = w;
+            top_rtp = x;
         }
     }
     if (!read_point(S, f, body, &x, &y)) {
         return 0;
     }
-    xp = wide_of(&x, f->xt);
     if (nl > nr) { /* rising from LTP nl-1, below RTP nr-1 (or hi) */
-        return xp >= top_ltp && (nr > 0u ? xp < top_rtp : 1);
+        return !below(&x, &top_ltp, f->xt) && (nr > 0u ? below(&x, &top_rtp, f->xt) : 1);
     }
-    return xp > top_ltp && xp <= top_rtp; /* falling from RTP nr-1 */
+    return below(&top_ltp, &x, f->xt) && !below(&top_rtp, &x, f->xt); /* falling from RTP nr-1 */
 }
 
 /* The bounded-memory bookkeeping: a merge level within the stack (or none),
@@ -626,23 +634,22 @@ static int book_is_valid(const hyst_tcm_t *S, const format_t *f, const unsigned 
     const hyst_wide_t height =
         wide_of(&S->y_hi, f->yt) - wide_of(&S->y_lo, f->yt);
     const hyst_wide_t width = wide_of(&S->hi, f->xt) - wide_of(&S->lo, f->xt);
-    hyst_num_t v;
+    hyst_wide_t forgot, db_reach, db_err;
     int ok = 1;
     book->forgot_level = level == NO_LEVEL ? (size_t)-1 : (size_t)level;
-    ok &= get_num(p + 4u, &v, f->yt);
-    book->forgot = wide_of(&v, f->yt);
-    ok &= get_num(p + 4u + f->r, &v, f->xt);
-    book->db_reach = wide_of(&v, f->xt);
-    ok &= get_num(p + 4u + f->r + f->x, &v, f->yt);
-    book->db_err = wide_of(&v, f->yt);
+    ok &= get_num(p + 4u, &book->forgot, f->yt);
+    ok &= get_num(p + 4u + f->r, &book->db_reach, f->xt);
+    ok &= get_num(p + 4u + f->r + f->x, &book->db_err, f->yt);
+    forgot = wide_of(&book->forgot, f->yt);
+    db_reach = wide_of(&book->db_reach, f->xt);
+    db_err = wide_of(&book->db_err, f->yt);
     /* a bound with no merge alive: the output still held after the input
      * left the merged loops (tcm_engine.h, TCM_SETTLING) */
     return ok && (level == NO_LEVEL || level <= (unsigned long)depth) &&
-           hyst_wide_is_finite(book->forgot) &&
-           book->forgot >= 0 && book->forgot <= height * (hyst_wide_t)(depth + 1u) &&
-           hyst_wide_is_finite(book->db_reach) && book->db_reach >= 0 &&
-           book->db_reach <= width && hyst_wide_is_finite(book->db_err) && book->db_err >= 0 &&
-           book->db_err <= height;
+           hyst_wide_is_finite(forgot) && forgot >= 0 &&
+           forgot <= height * (hyst_wide_t)(depth + 1u) && hyst_wide_is_finite(db_reach) &&
+           db_reach >= 0 && db_reach <= width && hyst_wide_is_finite(db_err) && db_err >= 0 &&
+           db_err <= height;
 }
 
 /* A status a sample can leave. */
@@ -719,21 +726,13 @@ hyst_status_t hyst_snapshot_restore(hyst_tcm_t *S, const unsigned char *buf, siz
     (void)get_num(buf + HEADER_OCTETS, &x, f.xt);
     (void)get_num(buf + HEADER_OCTETS + f.x, &y, f.yt);
     switch (S->variant) {
-    case HYST_VARIANT_F32:
-        hyst_f32_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book);
-        break;
+    case HYST_VARIANT_F32: hyst_f32_resume_(S, &x, &y, status, &book); break;
 #if HYST_ENABLE_F64
-    case HYST_VARIANT_F64:
-        hyst_f64_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book);
-        break;
+    case HYST_VARIANT_F64: hyst_f64_resume_(S, &x, &y, status, &book); break;
 #endif
-    case HYST_VARIANT_Q31:
-        hyst_q31_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book);
-        break;
-    case HYST_VARIANT_Q31_INV:
-        hyst_q31_inv_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book);
-        break;
-    default: hyst_code_resume_(S, wide_of(&x, f.xt), wide_of(&y, f.yt), status, &book); break;
+    case HYST_VARIANT_Q31: hyst_q31_resume_(S, &x, &y, status, &book); break;
+    case HYST_VARIANT_Q31_INV: hyst_q31_inv_resume_(S, &x, &y, status, &book); break;
+    default: hyst_code_resume_(S, &x, &y, status, &book); break;
     }
     S->events = (unsigned)events;
     return HYST_OK;

@@ -328,36 +328,38 @@ void hyst_unit_poly_(hyst_wide_t *g, const hyst_wide_t *c, unsigned n, hyst_wide
 hyst_wide_t hyst_unit_poly_error_(const hyst_wide_t *c, unsigned n, hyst_wide_t lo,
                                   hyst_wide_t hi);
 
-/* What bounded memory keeps besides the TPs, in wide numbers (snapshots):
- * the stack level of the shallowest live merge ((size_t)-1: none), its
- * error bound, and the deadband window (widest skipped reversal and its
- * bound). */
+/* What bounded memory keeps besides the TPs, as the instance holds it
+ * (snapshots): the stack level of the shallowest live merge ((size_t)-1:
+ * none), its error bound, and the deadband window (widest skipped reversal
+ * and its bound). Numbers, not hyst_wide_t: a q31 output does not fit a
+ * float's mantissa (HYST_NO_DOUBLE). */
 typedef struct {
     size_t forgot_level;
-    hyst_wide_t forgot;
-    hyst_wide_t db_reach;
-    hyst_wide_t db_err;
+    hyst_num_t forgot;
+    hyst_num_t db_reach;
+    hyst_num_t db_err;
 } hyst_tcm_book_t;
 
 /* Per-variant entry points the modules written once dispatch to (generated
  * by src/tcm_engine.h): reset, and resume after a snapshot restore
  * (re-derives the per-sample cache from the arrays and counts, with x, y as
- * the last valid sample, its status and the saved bookkeeping). */
+ * the last valid sample, its status and the saved bookkeeping, each read
+ * through the variant's member). */
 void hyst_f32_reset_(hyst_tcm_t *S);
-void hyst_f32_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+void hyst_f32_resume_(hyst_tcm_t *S, const hyst_num_t *x, const hyst_num_t *y, int status,
                       const hyst_tcm_book_t *book);
 void hyst_code_reset_(hyst_tcm_t *S);
-void hyst_code_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
-                      const hyst_tcm_book_t *book);
+void hyst_code_resume_(hyst_tcm_t *S, const hyst_num_t *x, const hyst_num_t *y, int status,
+                       const hyst_tcm_book_t *book);
 void hyst_q31_reset_(hyst_tcm_t *S);
-void hyst_q31_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+void hyst_q31_resume_(hyst_tcm_t *S, const hyst_num_t *x, const hyst_num_t *y, int status,
                       const hyst_tcm_book_t *book);
 void hyst_q31_inv_reset_(hyst_tcm_t *S);
-void hyst_q31_inv_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+void hyst_q31_inv_resume_(hyst_tcm_t *S, const hyst_num_t *x, const hyst_num_t *y, int status,
                           const hyst_tcm_book_t *book);
 #if HYST_ENABLE_F64
 void hyst_f64_reset_(hyst_tcm_t *S);
-void hyst_f64_resume_(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+void hyst_f64_resume_(hyst_tcm_t *S, const hyst_num_t *x, const hyst_num_t *y, int status,
                       const hyst_tcm_book_t *book);
 #endif
 

@@ -593,7 +593,7 @@ void TCM_NAME(reset_)(hyst_tcm_t *S)
     YV(S->g_prev) = 0; /* G(0) */
 }
 
-void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
+void TCM_NAME(resume_)(hyst_tcm_t *S, const hyst_num_t *x, const hyst_num_t *y, int status,
                        const hyst_tcm_book_t *book)
 {
     size_t i;
@@ -606,15 +606,15 @@ void TCM_NAME(resume_)(hyst_tcm_t *S, hyst_wide_t x, hyst_wide_t y, int status,
         XV(S->xrtp)[i] = TCM_NORM(XV(S->xrtp)[i]);
     }
     TCM_NAME(bind_skip)(S); /* the run saved may have skipped a reversal (db_reach) */
-    YV(S->forgot) = (TCM_Y)book->forgot;
+    YV(S->forgot) = YV(book->forgot);
     S->forgot_level = book->forgot_level;
-    XV(S->db_reach) = (TCM_X)book->db_reach;
-    YV(S->db_err) = (TCM_Y)book->db_err;
+    XV(S->db_reach) = XV(book->db_reach);
+    YV(S->db_err) = YV(book->db_err);
     S->status = status;
     S->tps_derived = S->n_ltp + S->n_rtp; /* stored as the run saved left them */
     TCM_NAME(set_detour)(S);
-    TCM_NAME(settle)(S, TCM_NORM((TCM_X)x));
-    YV(S->y_prev) = (TCM_Y)y;
+    TCM_NAME(settle)(S, TCM_NORM(XV(*x)));
+    YV(S->y_prev) = YV(*y);
     YV(S->g_prev) = TCM_NAME(branch_g)(S, XV(S->window[S->moving_end]));
     /* as after the sample that left it; and where y is not the branch's
      * value at x (a guarded sample), the next one checks it again (not the

@@ -178,11 +178,11 @@ static void test_width_only_is_the_symmetric_kind(void)
     e.degree = 3u;
     e.lo = 0.0;
     e.hi = 40.0;
-    e.y_lo = 0.58517;
+    e.y_lo = HYST_WIDE_C(0.58517);
     /* Eq. 20 as a function of w = x / 40 (lo = 0): c1 w + c2 w^2 + c3 w^3 */
-    e.e[0][0] = 8.6444e-2 * 40.0;
-    e.e[1][0] = 1.1949e-3 * 1600.0;
-    e.e[2][0] = -6.1876e-6 * 64000.0;
+    e.e[0][0] = HYST_WIDE_C(8.6444e-2) * 40;
+    e.e[1][0] = HYST_WIDE_C(1.1949e-3) * 1600;
+    e.e[2][0] = HYST_WIDE_C(-6.1876e-6) * 64000;
     TEST_ASSERT_EQUAL_INT(HYST_OK, init_e(&S, &curve, &e, xl, yl, xr, yr, CAP));
     f0 = paper_eq20;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_init(&T, &f0, xl2, yl2, xr2, yr2, CAP));
@@ -197,7 +197,7 @@ static void test_width_only_is_the_symmetric_kind(void)
     /* rule 4 on the loop 10..30: the rising branch at 15 reflected onto the falling at 25 */
     {
         TEST_ASSERT_TRUE(loop_asymmetry(&e) <= 1e-9 * range);
-        e.e[0][1] = 0.3; /* loops grow with their place: asymmetric */
+        e.e[0][1] = HYST_WIDE_C(0.3); /* loops grow with their place: asymmetric */
         asym = loop_asymmetry(&e);
         TEST_ASSERT_TRUE(asym > 1e-3 * range);
         TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&curve2, &e));
@@ -215,12 +215,12 @@ static void test_bad_e_are_refused(void)
     e.e[1][0] = 0.5;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&curve, &e));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_curve_from_everett(NULL, &e));
-    e.e[1][0] = -0.6; /* dE/da = 1 - 1.2 w < 0 near w = 1 */
+    e.e[1][0] = HYST_WIDE_C(-0.6); /* dE/da = 1 - 1.2 w < 0 near w = 1 */
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_MONOTONE, hyst_curve_from_everett(&curve, &e));
     e.e[1][0] = 0.0;
     e.e[0][1] = 2.5; /* dE/db = t-slope 2.5 w - 1: positive for w > 0.4 */
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_MONOTONE, hyst_curve_from_everett(&curve, &e));
-    e.e[0][1] = 0.9; /* below 1: still monotone */
+    e.e[0][1] = HYST_WIDE_C(0.9); /* below 1: still monotone */
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_everett(&curve, &e));
     e.e[2][0] = 1.0; /* above the degree */
     TEST_ASSERT_EQUAL_INT(HYST_ERR_COEFF, hyst_curve_from_everett(&curve, &e));
@@ -262,7 +262,7 @@ static void test_block_and_snapshots(void)
         const hyst_real_t y1 = hyst_step(&S, xs[k]), y2 = hyst_step(&T, xs[k]);
         TEST_ASSERT_EQUAL_MEMORY(&y1, &y2, sizeof y1);
     }
-    e.e[0][0] *= 1.5; /* another E: the snapshot is not its */
+    e.e[0][0] *= HYST_WIDE_C(1.5); /* another E: the snapshot is not its */
     TEST_ASSERT_EQUAL_INT(HYST_OK, init_e(&T, &curve2, &e, xl2, yl2, xr2, yr2, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_snapshot_restore(&T, snap, len));
 }
@@ -306,6 +306,9 @@ static void test_identification_recovers_e(void)
     static hyst_wide_t work[HYST_EVERETT_FIT_WORK(CAP)];
     int trial, fitted = 0;
     double worst = 0.0;
+    if (SETUP_IN_FLOAT) { /* a fit in float rounds 20 000 samples' sums to its noise */
+        TEST_IGNORE_MESSAGE("E identified in float (HYST_NO_DOUBLE): not held to these bounds");
+    }
     for (trial = 0; trial < 20; ++trial) {
         const hyst_everett_t e = random_e();
         hyst_everett_fit_t fit;
@@ -367,9 +370,10 @@ static void test_linear_e_within_the_rounding_bound(void)
                 e.e[i][j] = 0.0;
             }
         }
-        e.lo = (double)(float)(x_form ? span * rng_range(&rng, -1.0, 1.0)
-                                      : span * rng_range(&rng, 1.5, 20.0) * (trial % 4 == 1 ? -1 : 1));
-        e.hi = (double)(float)(e.lo + span);
+        e.lo = (hyst_wide_t)(float)(x_form ? span * rng_range(&rng, -1.0, 1.0)
+                                           : span * rng_range(&rng, 1.5, 20.0) *
+                                                 (trial % 4 == 1 ? -1 : 1));
+        e.hi = (hyst_wide_t)(float)((double)e.lo + span);
         if (init_e(&S, &curve, &e, xl, yl, xr, yr, CAP) != HYST_OK) {
             continue;
         }

@@ -780,7 +780,7 @@ static void test_rate_other_term_and_bad_calls_are_refused(void)
     hyst_rate_t blank;
     unsigned char small[HYST_RATE_SNAPSHOT_SIZE];
     size_t got = 99u;
-    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&QB, 5.0, -0.7501, 0.0));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_rate_init(&QB, 5.0, HYST_WIDE_C(-0.7501), 0.0));
     Qkeep = QB;
     TEST_ASSERT_EQUAL_INT(HYST_ERR_CURVE, hyst_rate_snapshot_restore(&QB, snap, len));
     assert_rate_untouched();

@@ -38,9 +38,15 @@ extern "C" {
  */
 #ifdef HYST_NO_DOUBLE
 typedef float hyst_wide_t;
+#define HYST_WIDE_C(v) (v##f)
 #else
 typedef double hyst_wide_t;
+#define HYST_WIDE_C(v) (v)
 #endif
+/** @def HYST_WIDE_C
+ *  @brief A constant of hyst_wide_t (HYST_WIDE_C(0.585)): a hyst_poly_t
+ *         written once for either setting of HYST_NO_DOUBLE, without a
+ *         conversion warning in either. */
 
 /** Stored DAC code of the code variant: HYST_CODE_BITS fit. */
 #if HYST_CODE_BITS <= 16

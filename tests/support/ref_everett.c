@@ -76,18 +76,18 @@ hyst_everett_t ref_everett_random(rng_t *rng)
     memset(&e, 0, sizeof e);
     e.degree = 1u + rng_below(rng, (unsigned)HYST_EVERETT_MAX_DEGREE);
     /* ends exact in float: the reference's domain is the instance's */
-    e.lo = (double)(float)rng_range(rng, -50.0, 50.0);
-    e.hi = (double)(float)(e.lo + rng_range(rng, 1.0, 100.0));
-    e.y_lo = rng_range(rng, -10.0, 10.0);
+    e.lo = (hyst_wide_t)(float)rng_range(rng, -50.0, 50.0);
+    e.hi = (hyst_wide_t)(float)((double)e.lo + rng_range(rng, 1.0, 100.0));
+    e.y_lo = (hyst_wide_t)rng_range(rng, -10.0, 10.0);
     /* half of them at most linear in t, the identification's usual E (the
      * engine derives their branches by a shorter path) */
     t_max = rng_below(rng, 2u) == 0u ? 1u : e.degree;
     for (i = 1u; i <= e.degree; ++i) {
         for (j = 0u; i + j <= e.degree && j <= t_max; ++j) {
-            e.e[i - 1u][j] = scale * rng_range(rng, -1.5, 1.0) / (double)(i + j);
+            e.e[i - 1u][j] = (hyst_wide_t)(scale * rng_range(rng, -1.5, 1.0) / (double)(i + j));
         }
     }
-    e.e[0][0] = scale * rng_range(rng, 1.0, 3.0);
+    e.e[0][0] = (hyst_wide_t)(scale * rng_range(rng, 1.0, 3.0));
     return e;
 }
 

@@ -135,9 +135,9 @@ hyst_spline_t spline_random(rng_t *r, unsigned intervals, int flat, int steep, i
     unsigned k;
     memset(&f, 0, sizeof f);
     f.intervals = intervals;
-    f.lo = lo;
-    f.hi = lo + span;
-    f.value[0] = rng_range(r, -10.0, 10.0);
+    f.lo = (hyst_wide_t)lo;
+    f.hi = (hyst_wide_t)(lo + span);
+    f.value[0] = (hyst_wide_t)rng_range(r, -10.0, 10.0);
     for (k = 0u; k < intervals; ++k) {
         if (flat && rng_below(r, 5u) == 0u) {
             step[k] = 0.0;
@@ -146,17 +146,17 @@ hyst_spline_t spline_random(rng_t *r, unsigned intervals, int flat, int steep, i
         } else {
             step[k] = rng_range(r, 0.01, 3.0);
         }
-        f.value[k + 1u] = f.value[k] + step[k];
+        f.value[k + 1u] = (hyst_wide_t)((double)f.value[k] + step[k]);
     }
     if (!(f.value[intervals] > f.value[0])) {
-        f.value[intervals] += 1.0;
+        f.value[intervals] += 1;
         step[intervals - 1u] += 1.0;
     }
     for (k = 0u; k <= intervals; ++k) {
         const double left = k > 0u ? step[k - 1u] / h : step[k] / h;
         const double right = k < intervals ? step[k] / h : step[k - 1u] / h;
         const double m = left < right ? left : right;
-        f.slope[k] = zeros && rng_below(r, 4u) == 0u ? 0.0 : m * rng_range(r, 0.0, 3.0);
+        f.slope[k] = (hyst_wide_t)(zeros && rng_below(r, 4u) == 0u ? 0.0 : m * rng_range(r, 0.0, 3.0));
     }
     return f;
 }

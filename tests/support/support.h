@@ -24,6 +24,12 @@
 #define CURVE_NUM(n) ((n).f32)
 #endif
 
+/* Curves set up in float (HYST_NO_DOUBLE): init refuses with
+ * HYST_ERR_ILL_CONDITIONED some that double sets up, such as x^5 on [-1, 1]
+ * or a domain far from 0 relative to its span, because their expansion's
+ * bound in float exceeds HYST_MAX_ROUNDING. */
+#define SETUP_IN_FLOAT (sizeof(hyst_wide_t) < 8u)
+
 /* The build's real type's infinity. */
 #ifdef HYST_USE_DOUBLE
 #define REAL_INF ((hyst_real_t)HUGE_VAL)
