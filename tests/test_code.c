@@ -188,7 +188,8 @@ static void test_piecewise_linear_curve_on_codes(void)
 static void test_spline_curve_on_codes(void)
 {
     static const hyst_spline_t f0 = {
-        4, 0.0, 40.0, {0.0, 0.5, 2.5, 6.0, 7.0}, {0.04, 0.1, 0.3, 0.1, 0.05}};
+        4, 0.0, 40.0, {0.0, 0.5, 2.5, 6.0, 7.0},
+        {HYST_WIDE_C(0.04), HYST_WIDE_C(0.1), HYST_WIDE_C(0.3), HYST_WIDE_C(0.1), HYST_WIDE_C(0.05)}};
     static float table[HYST_SPLINE_TABLE_LEN(4u)];
     hyst_curve_t curve;
     TEST_ASSERT_EQUAL_INT(HYST_OK,

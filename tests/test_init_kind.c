@@ -43,12 +43,16 @@ typedef struct {
 
 static void prepare(void)
 {
-    static const hyst_poly_t f0 = {3, 0.0, 40.0, {-6.1876e-6, 1.1949e-3, 8.6444e-2, 5.8517e-1}};
+    static const hyst_poly_t f0 = {3, 0.0, 40.0,
+                                   {HYST_WIDE_C(-6.1876e-6), HYST_WIDE_C(1.1949e-3),
+                                    HYST_WIDE_C(8.6444e-2), HYST_WIDE_C(5.8517e-1)}};
     static const hyst_real_t px[4] = {0, 10, 25, 40}, py[4] = {0, 2, 3, 7};
     static const hyst_everett_t e = {
         3, 0.0, 40.0, 1.0, {{10.0, 1.0, 0.5, 0}, {2.0, 0.5, 0, 0}, {1.0, 0, 0, 0}, {0, 0, 0, 0}}};
     static const hyst_everett_grid_t g = {3, {0.0, 10.0, 25.0, 40.0}, 0.5, {1, 2, 1, 0.5, 3, 1}};
-    static const hyst_spline_t sp = {3, 0.0, 40.0, {0.0, 1.0, 4.0, 5.0}, {0.05, 0.2, 0.1, 0.02}};
+    static const hyst_spline_t sp = {
+        3, 0.0, 40.0, {0.0, 1.0, 4.0, 5.0},
+        {HYST_WIDE_C(0.05), HYST_WIDE_C(0.2), HYST_WIDE_C(0.1), HYST_WIDE_C(0.02)}};
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_from_poly(&poly, &f0));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse(&poly_inv, &poly));
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_curve_inverse_table(&poly_table, &poly, inv_table, INTERVALS));
