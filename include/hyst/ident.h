@@ -457,7 +457,11 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
  *         rounding bound exceeds HYST_MAX_ROUNDING of its range (an
  *         output offset far above the range); @p e and @p rms hold it
  *         then too. The RMS is computed about the first output, so an
- *         offset does not cancel it.
+ *         offset does not cancel it. With HYST_NO_DOUBLE the normal
+ *         equations are float: E of degree 3 or 4 is then refused as
+ *         HYST_ERR_SINGULAR by records double fits, and @p rms is not
+ *         resolved (the sums it is formed from cancel: a good fit can read
+ *         0); the E of degree 1 or 2 fitted is as good as double's.
  */
 hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
                                      hyst_wide_t *rms);
