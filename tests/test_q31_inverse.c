@@ -459,7 +459,7 @@ static void test_snapshot_round_trips_bit_identically(void)
 }
 
 /* Turning points 2 q apart near the top of the range, where a float holds
- * only multiples of 16 q: restored exactly, and the two instances go on
+ * only multiples of 8 q: restored exactly, and the two instances go on
  * alike (set-up in float, HYST_NO_DOUBLE, once refused such a snapshot). */
 static void test_close_turning_points_restore(void)
 {
