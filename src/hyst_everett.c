@@ -207,7 +207,7 @@ hyst_wide_t hyst_everett_range_(const hyst_everett_t *e)
 int hyst_everett_monotone_(const hyst_everett_t *e)
 {
     bipoly_t rw, diff;
-    const hyst_wide_t tol = 64 * (hyst_wide_t)DBL_EPSILON * derivatives(e, &rw, &diff);
+    const hyst_wide_t tol = 64 * HYST_WIDE_EPS * derivatives(e, &rw, &diff);
     return nonneg_on_triangle(&rw, e->degree - 1u, tol) &&
            nonneg_on_triangle(&diff, e->degree - 1u, tol);
 }
@@ -269,7 +269,7 @@ static hyst_wide_t fill_table(hyst_num_t *out, const bipoly_t *p, unsigned n, un
         }
         weight += (hyst_wide_t)i * row;
     }
-    return weight > 0 ? weight : (hyst_wide_t)DBL_MIN;
+    return weight > 0 ? weight : HYST_WIDE_MIN;
 }
 
 /* Whether every row of a table is at most linear in the anchor. */

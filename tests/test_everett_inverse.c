@@ -58,9 +58,13 @@ static hyst_everett_t accepted_e(void)
 /* Desired outputs: a random walk with jumps over the major loop's range. */
 static void desired(const hyst_everett_t *e, long n)
 {
-    const double lo = e->y_lo, hi = e->y_lo + ref_everett_e(e, e->hi, e->lo);
-    double v = 0.5 * (lo + hi);
+    double lo = e->y_lo, hi = e->y_lo + ref_everett_e(e, e->hi, e->lo), v;
     long k;
+    if (SETUP_IN_FLOAT) { /* set up in float, the curve's ends may be a unit inside these */
+        lo = (double)CURVE_NUM(fwd.y_lo);
+        hi = (double)CURVE_NUM(fwd.y_hi);
+    }
+    v = 0.5 * (lo + hi);
     for (k = 0; k < n; ++k) {
         yd[k] = (hyst_real_t)ref_everett_walk(&rng, &v, lo, hi);
     }

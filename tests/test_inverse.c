@@ -105,6 +105,19 @@ static void test_poly_inverse_residual_on_increasing_curves(void)
     TEST_ASSERT_TRUE(worst <= POLY_INV_TOL);
 }
 
+/* Set up in float (SETUP_IN_FLOAT), x^5 on [-1, 1] is refused: its bound in
+ * float exceeds HYST_MAX_ROUNDING (support.h). True, having checked that,
+ * for that curve, which the flat-point tests then skip. */
+static int refused_in_float(const hyst_poly_t *f)
+{
+    hyst_curve_t c;
+    if (!SETUP_IN_FLOAT || f->degree != 5u) {
+        return 0;
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_ILL_CONDITIONED, hyst_curve_from_poly(&c, f));
+    return 1;
+}
+
 /* Flat points (f0' = 0): x^2 and x^9 at the lower end, x^3 inside at a
  * table knot ([-1, 1]) and between knots ([-0.7, 1]), x^5 on [-1, 1]: g^-1
  * is steep there, x^5's normalised coefficients alternate: its own bound. */
@@ -116,7 +129,11 @@ static void test_poly_inverse_residual_at_flat_points(void)
     int k;
     for (k = 0; k < 5; ++k) {
         const hyst_poly_t f = poly_monomial((unsigned)spec[k][0], spec[k][1], spec[k][2]);
-        const double res = inverse_residual(&f, spec[k][3]);
+        double res;
+        if (refused_in_float(&f)) {
+            continue;
+        }
+        res = inverse_residual(&f, spec[k][3]);
         TEST_PRINTF("x^%d on [%g, %g]: %g", (int)spec[k][0], spec[k][1], spec[k][2], res);
         worst = res > worst ? res : worst;
     }
@@ -233,6 +250,9 @@ static void test_poly_inverse_is_monotone(void)
     for (k = 0; k < 5; ++k) {
         const hyst_poly_t f = poly_monomial((unsigned)spec[k][0], spec[k][1], spec[k][2]);
         char name[40];
+        if (refused_in_float(&f)) {
+            continue;
+        }
         (void)snprintf(name, sizeof name, "x^%d on [%g, %g]", (int)spec[k][0], spec[k][1],
                        spec[k][2]);
         reversals += sweep_monotone(&f, spec[k][3], FLAT_TOL, name);
@@ -391,11 +411,12 @@ static void test_init_inverse_checks(void)
     TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_init_inverse_exact(&Hinv, &Cinv, &f, il, jl, NULL, jr, CAP));
     TEST_ASSERT_EQUAL_INT(HYST_ERR_CAPACITY, hyst_init_inverse_exact(&Hinv, &Cinv, &f, il, jl, ir, jr, 1u));
     {   /* a curve error is reported before an instance error: this f0's slope
-         * underflows in float, so its inverse does not exist there */
-        static const hyst_poly_t flat32 = {1u, 0.0, 1.0, {1e-300, 0.0}};
+         * underflows in float, so its inverse does not exist there (set up in
+         * float, the slope is 0 already in f0: constant, not increasing) */
+        static const hyst_poly_t flat32 = {1u, 0.0, 1.0, {(hyst_wide_t)1e-300, 0.0}};
         static float fl[4][CAP];
         hyst_curve_t keep;
-        TEST_ASSERT_EQUAL_INT(HYST_ERR_NOT_INVERTIBLE,
+        TEST_ASSERT_EQUAL_INT(SETUP_IN_FLOAT ? HYST_ERR_NOT_INCREASING : HYST_ERR_NOT_INVERTIBLE,
                               hyst_f32_init_inverse_exact(&Hinv, &keep, &flat32, fl[0], fl[1], fl[2], fl[3], 1u));
     }
     f.coeffs[0] = HYST_REAL_C(-1.0); /* -x^3 + ...: falls on [0, 40] */
@@ -587,6 +608,9 @@ static void test_compensator_has_no_false_reversal_at_flat_points(void)
     int k;
     for (k = 0; k < 4; ++k) {
         const hyst_poly_t f = poly_monomial((unsigned)spec[k][0], spec[k][1], spec[k][2]);
+        if (refused_in_float(&f)) {
+            continue;
+        }
         flat_pass(&f, spec[k][3], 1, &worst);
         flat_pass(&f, spec[k][3], 0, &worst);
     }

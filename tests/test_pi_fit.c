@@ -68,7 +68,8 @@ static hyst_status_t fit_all(size_t n, size_t ops, hyst_wide_t *r, hyst_wide_t *
 
 static void test_known_weights_are_recovered_exactly(void)
 {
-    static const hyst_wide_t w_true[OPS] = {0.5, 0.0, 0.3, 0.2, 0.0, 0.1};
+    static const hyst_wide_t w_true[OPS] = {0.5, 0.0, HYST_WIDE_C(0.3), HYST_WIDE_C(0.2), 0.0,
+                                               HYST_WIDE_C(0.1)};
     const size_t n = excite();
     hyst_wide_t r[OPS], w[OPS], r_true[OPS];
     hyst_pi_fit_result_t res;
@@ -78,13 +79,15 @@ static void test_known_weights_are_recovered_exactly(void)
     TEST_ASSERT_EQUAL_INT(HYST_OK, fit_all(n, OPS, r, w, &res));
     printf("exact: %u samples, offset %.12f, rms %.3g\n", (unsigned)n, (double)res.offset,
            (double)res.rms);
+    /* normal equations in float (ident.h): 1.3e-5 measured */
+    const double tol = SETUP_IN_FLOAT ? 1e-4 : 1e-9;
     for (i = 0u; i < OPS; ++i) {
         TEST_ASSERT_EQUAL_DOUBLE((double)r_true[i], (double)r[i]); /* uniform over [0, 1] */
         TEST_ASSERT_TRUE(w[i] >= 0);
-        TEST_ASSERT_DOUBLE_WITHIN(1e-9, (double)w_true[i], (double)w[i]);
+        TEST_ASSERT_DOUBLE_WITHIN(tol, (double)w_true[i], (double)w[i]);
     }
-    TEST_ASSERT_DOUBLE_WITHIN(1e-9, -2.5, (double)res.offset);
-    TEST_ASSERT_TRUE(res.rms < 1e-9 && res.max_abs >= 0 && res.max_abs < 1e-9);
+    TEST_ASSERT_DOUBLE_WITHIN(tol, -2.5, (double)res.offset);
+    TEST_ASSERT_TRUE(res.rms < tol && res.max_abs >= 0 && res.max_abs < tol);
     TEST_ASSERT_EQUAL_UINT(n, (unsigned)res.used);
     TEST_ASSERT_EQUAL_UINT(OPS, (unsigned)res.operators);
     TEST_ASSERT_TRUE(res.invertible);
@@ -92,7 +95,8 @@ static void test_known_weights_are_recovered_exactly(void)
 
 static void test_noisy_weights_are_close_and_residual_is_the_noise(void)
 {
-    static const hyst_wide_t w_true[OPS] = {0.8, 0.4, 0.0, 0.3, 0.2, 0.1};
+    static const hyst_wide_t w_true[OPS] = {HYST_WIDE_C(0.8), HYST_WIDE_C(0.4), 0.0,
+                                               HYST_WIDE_C(0.3), HYST_WIDE_C(0.2), HYST_WIDE_C(0.1)};
     const double sigma = 0.002;
     const size_t n = excite();
     hyst_wide_t r[OPS], w[OPS];
@@ -122,11 +126,14 @@ static void test_noisy_weights_are_close_and_residual_is_the_noise(void)
  * positive weights and >= 0 on the zero ones (and sum e = 0: the offset). */
 static void test_negative_weight_gives_kkt_point(void)
 {
-    static const hyst_wide_t w_true[OPS] = {1.0, 0.5, -0.3, 0.4, 0.3, -0.2};
+    static const hyst_wide_t w_true[OPS] = {1.0, 0.5, HYST_WIDE_C(-0.3), HYST_WIDE_C(0.4),
+                                               HYST_WIDE_C(0.3), HYST_WIDE_C(-0.2)};
     const size_t n = excite();
     hyst_wide_t r[OPS], w[OPS], e[MAXN];
     hyst_pi_fit_result_t res;
     double scale_z = 0.0, scale_e = 0.0, sum_e = 0.0;
+    /* rounding's share; in float e's and the NNLS's (ident.h): 1.5e-5 measured */
+    const double share = SETUP_IN_FLOAT ? 1e-3 : 1e-9;
     size_t i, k, zeros = 0u;
     TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_pi_fit_thresholds(0, 1, OPS, r));
     simulate(n, r, w_true, OPS, 0.0, 0.0);
@@ -155,14 +162,14 @@ static void test_negative_weight_gives_kkt_point(void)
         printf(" %.6f (gradient %.3g)", (double)w[i], grad);
         TEST_ASSERT_TRUE(w[i] >= 0);
         if (w[i] > 0) {
-            TEST_ASSERT_TRUE(fabs(grad) <= 1e-9 * scale_e);
+            TEST_ASSERT_TRUE(fabs(grad) <= share * scale_e);
         } else {
-            TEST_ASSERT_TRUE(grad >= -1e-9 * scale_e);
+            TEST_ASSERT_TRUE(grad >= -share * scale_e);
             ++zeros;
         }
     }
     printf("\n");
-    TEST_ASSERT_TRUE(fabs(sum_e) <= 1e-9 * sqrt(scale_e) * (double)n);
+    TEST_ASSERT_TRUE(fabs(sum_e) <= share * sqrt(scale_e) * (double)n);
     TEST_ASSERT_TRUE(zeros >= 1u);
     TEST_ASSERT_TRUE(res.rms > 1e-4); /* the true model is out of reach */
     TEST_ASSERT_EQUAL_UINT(OPS - zeros, (unsigned)res.positive);
@@ -193,7 +200,9 @@ static void test_streaming_matches_record_and_pi_model(void)
     }
     TEST_ASSERT_EQUAL_DOUBLE((double)res.offset, (double)res2.offset);
     TEST_ASSERT_TRUE(res2.max_abs < 0); /* no second pass in the streaming API */
-    TEST_ASSERT_DOUBLE_WITHIN(1e-6 * (double)res.rms, (double)res.rms, (double)res2.rms);
+    /* float: the streaming rms from the normal equations is not resolved (ident.h): 1.1e-3 */
+    TEST_ASSERT_DOUBLE_WITHIN((SETUP_IN_FLOAT ? 1e-2 : 1e-6) * (double)res.rms, (double)res.rms,
+                              (double)res2.rms);
     {
         hyst_real_t rr[OPS], ww[OPS], zz[OPS];
         hyst_pi_t P;

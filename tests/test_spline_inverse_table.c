@@ -57,7 +57,7 @@ static hyst_spline_t random_spline(unsigned intervals, int zeros)
  * at an end or at its vertex). */
 static double steepest(const hyst_spline_t *f)
 {
-    const double h = (f->hi - f->lo) / f->intervals;
+    const double h = (double)(f->hi - f->lo) / f->intervals;
     double worst = 0.0;
     unsigned k;
     for (k = 0u; k < f->intervals; ++k) {
@@ -331,7 +331,8 @@ static void test_refusals_write_nothing(void)
 #ifdef HYST_USE_DOUBLE
     static const hyst_spline_t tiny = {1, 0.0, 1.0, {0.0, 1e-320}, {1e-320, 1e-320}};
 #else
-    static const hyst_spline_t tiny = {1, 0.0, 1.0, {0.0, 1e-42}, {1e-42, 1e-42}};
+    static const hyst_spline_t tiny = {
+        1, 0.0, 1.0, {0.0, HYST_WIDE_C(1e-42)}, {HYST_WIDE_C(1e-42), HYST_WIDE_C(1e-42)}};
 #endif
     hyst_curve_t c, out;
     prepare(&good, 8u);

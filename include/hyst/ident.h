@@ -28,7 +28,9 @@
  * Each sample updates a triangular factor by Givens rotations (an orthogonal
  * factorisation, never the normal equations), in hyst_wide_t, on the input
  * scaled to t in [-1, 1] over the domain and a Chebyshev basis in t, so raw
- * units (volts 0..40, DAC codes 0..65535) are fine up to HYST_MAX_DEGREE.
+ * units (volts 0..40, DAC codes 0..65535) are fine up to HYST_MAX_DEGREE; with
+ * HYST_NO_DOUBLE while the powers of the domain's ends stay within float's
+ * range (65535^9 does not: the curve then refuses the f0 fitted).
  * Coefficients come back in the user's units, highest power first.
  *
  * Firmware (domain known, samples streamed, no buffer):

@@ -54,16 +54,16 @@ hyst_everett_grid_t ref_egrid_random(rng_t *rng, unsigned max_k)
     memset(&g, 0, sizeof g);
     g.intervals = 1u + rng_below(rng, max_k);
     x = (double)(float)rng_range(rng, -50.0, 50.0);
-    g.knots[0] = x;
+    g.knots[0] = (hyst_wide_t)x;
     for (i = 1u; i <= g.intervals; ++i) {
         x += rng_range(rng, 0.3, 20.0);
-        g.knots[i] = (double)(float)x;
+        g.knots[i] = (hyst_wide_t)(float)x;
     }
-    g.y_lo = rng_range(rng, -10.0, 10.0);
+    g.y_lo = (hyst_wide_t)rng_range(rng, -10.0, 10.0);
     for (i = 0u; i < HYST_EVERETT_GRID_CELLS(g.intervals); ++i) {
         const unsigned kind = rng_below(rng, 40u);
-        g.weight[i] = kind < 8u ? 0.0 : scale * rng_unit(rng) * (kind < 13u ? 10.0 : 1.0);
+        g.weight[i] = (hyst_wide_t)(kind < 8u ? 0.0 : scale * rng_unit(rng) * (kind < 13u ? 10.0 : 1.0));
     }
-    g.weight[0] += scale * 0.1; /* a positive sum */
+    g.weight[0] += (hyst_wide_t)(scale * 0.1); /* a positive sum */
     return g;
 }
