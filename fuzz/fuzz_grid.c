@@ -316,6 +316,8 @@ static void check_fit(const hyst_everett_grid_t *g, size_t n, unsigned fit_cap, 
     CHECK(hyst_everett_grid_fit_solve(&fit, &got, &rms) == HYST_ERR_SINGULAR); /* nothing yet */
     CHECK(memcmp(&got, &keep_g, sizeof got) == 0 && memcmp(&rms, &keep_rms, sizeof rms) == 0);
     CHECK(hyst_everett_grid_fit_solve(NULL, &got, &rms) == HYST_ERR_NULL);
+    CHECK(hyst_everett_grid_fit_determined(NULL) == 0);
+    CHECK(hyst_everett_grid_fit_determined(&fit) == 0); /* no sample yet */
     for (k = 0u; k < n; ++k) {
         st = hyst_everett_grid_fit_add(&fit, fx[k], fy[k]);
         if (nospace_at[k]) { /* more turning points than fit_cap: refused, the record stops */
@@ -327,6 +329,18 @@ static void check_fit(const hyst_everett_grid_t *g, size_t n, unsigned fit_cap, 
     }
     n = k;
     st = hyst_everett_grid_fit_solve(&fit, &got, &rms);
+    {
+        /* determined() shares the solver's workspace: a solve after it is
+         * the same, bit for bit */
+        hyst_everett_grid_t again;
+        hyst_wide_t again_rms = -1;
+        const int determined = hyst_everett_grid_fit_determined(&fit);
+        CHECK(determined == 0 || determined == 1);
+        CHECK(used >= 2u || determined == 0);
+        memcpy(&again, &keep_g, sizeof again);
+        CHECK(hyst_everett_grid_fit_solve(&fit, &again, &again_rms) == st);
+        CHECK(memcmp(&again, &got, sizeof again) == 0 && memcmp(&again_rms, &rms, sizeof rms) == 0);
+    }
     if (used < 2u) {
         CHECK(st == HYST_ERR_SINGULAR);
         return;

@@ -57,6 +57,13 @@ HYST_INLINE int hyst_wide_is_finite(hyst_wide_t v)
     return z == z;
 }
 
+/* The same test of a float, in float: no conversion to hyst_wide_t. */
+HYST_INLINE int hyst_float_is_finite(float v)
+{
+    const float z = v - v;
+    return z == z;
+}
+
 HYST_INLINE hyst_wide_t hyst_wide_abs(hyst_wide_t v) { return v < 0 ? -v : v; }
 
 /* A real number of a curve or instance of real variant `variant`, as
@@ -127,7 +134,7 @@ HYST_INLINE int hyst_num_set(hyst_num_t *v, unsigned variant, hyst_wide_t w)
     (void)variant;
 #endif
     v->f32 = (float)w;
-    return hyst_wide_is_finite((hyst_wide_t)v->f32);
+    return hyst_float_is_finite(v->f32);
 }
 
 /* Concurrency (tcm.h): the compiler must not move memory accesses across
