@@ -18,8 +18,14 @@ double ref_egrid_e(const hyst_everett_grid_t *g, double a, double b)
         for (j = 0u; j <= i; ++j) {
             const double bj = (double)g->knots[j], bj1 = (double)g->knots[j + 1u];
             const double w = (double)g->weight[i * (i + 1u) / 2u + j];
+            if (w == 0.0) {
+                continue; /* adds +0: skipped, the sum unchanged */
+            }
             if (j < i) { /* a rectangle: a' in [b, a] of interval i, b' in [b, a] of interval j */
-                sum += w * overlap(ai, ai1, b, a) * overlap(bj, bj1, b, a) / ((ai1 - ai) * (bj1 - bj));
+                const double da = overlap(ai, ai1, b, a), db = overlap(bj, bj1, b, a);
+                if (da > 0.0 && db > 0.0) { /* otherwise adds +0 */
+                    sum += w * da * db / ((ai1 - ai) * (bj1 - bj));
+                }
             } else { /* a triangle: b <= b' <= a' <= a inside interval i */
                 const double d = overlap(ai, ai1, b, a);
                 sum += w * d * d / ((ai1 - ai) * (ai1 - ai));
