@@ -1022,11 +1022,13 @@ hyst_status_t hyst_branch_fit_add_(hyst_branch_fit_t *f, hyst_wide_t x, hyst_wid
     r = f->r_prev;
     cols = f->cols;
     for (i = 0u; i < cols; ++i) {
-        if (r[i] != 0) { /* most grid cells are 0 on a branch: skip their rows */
+        const hyst_wide_t r_i = r[i]; /* read once: the row's stores may alias r */
+        if (r_i != 0) { /* most grid cells are 0 on a branch: skip their rows */
+            hyst_wide_t *row = f->ata + i * cols;
             for (j = 0u; j <= i; ++j) {
-                f->ata[i * cols + j] += r[i] * r[j];
+                row[j] += r_i * r[j];
             }
-            f->aty[i] += r[i] * y;
+            f->aty[i] += r_i * y;
         }
     }
     f->yy += y * y;
