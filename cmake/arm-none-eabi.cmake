@@ -88,13 +88,17 @@ set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
 
 # add_test(COMMAND <exe target> ...) runs "<emulator> <elf>": -kernel must
 # stay last so the ELF path lands on it. Semihosting carries the console
-# and the exit status; -icount shift=0 makes timing deterministic. Each MPS2
-# machine accepts only its own CPU (-cpu must match -M). Cortex-M0/M0+ have
-# no MPS2 machine in QEMU: no emulator, no tests.
+# and the exit status. Each MPS2 machine accepts only its own CPU (-cpu must
+# match -M). Cortex-M0/M0+ have no MPS2 machine in QEMU: no emulator, no
+# tests. A test that runs no timer computes the same without -icount, which
+# slows QEMU down; one whose interrupts must land at the same instructions
+# every run sets HYST_QEMU_ICOUNT_EMULATOR (-icount shift=0: one instruction
+# per virtual nanosecond) as its CROSSCOMPILING_EMULATOR.
 set(HYST_QEMU qemu-system-arm CACHE STRING "QEMU program for Arm system emulation")
 if(HYST_QEMU_MACHINE)
-  set(CMAKE_CROSSCOMPILING_EMULATOR
+  set(_hyst_qemu_run
     ${HYST_QEMU} -M ${HYST_QEMU_MACHINE} -cpu ${HYST_QEMU_CPU} -nographic -monitor none
-    -serial none -semihosting-config enable=on,target=native
-    -icount shift=0 -kernel)
+    -serial none -semihosting-config enable=on,target=native)
+  set(CMAKE_CROSSCOMPILING_EMULATOR ${_hyst_qemu_run} -kernel)
+  set(HYST_QEMU_ICOUNT_EMULATOR ${_hyst_qemu_run} -icount shift=0 -kernel)
 endif()
