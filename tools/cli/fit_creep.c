@@ -5,6 +5,7 @@
  * same hold-out as the model's degree and delay. */
 #include "fit_select.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,178 +14,119 @@
  * length (a longer lag is a ramp over the record, an offset's twin). */
 static const double creep_taus[] = {100.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0, 10000.0, 20000.0};
 
-/* One time constant: weight and offset from the equations of [0, train),
- * scored on [train, len) (NaN when train == len: no hold-out). */
-static void creep_one(const double *u, const double *r, size_t len, size_t train, double x_rest,
-                      double tau, fit_creep_t *out)
-{
-    const hyst_wide_t t = (hyst_wide_t)tau;
-    hyst_creep_holdout_t h;
-    memset(out, 0, sizeof *out);
-    out->holdout_rms = NAN;
-    out->fit_rms = NAN;
-    if (hyst_creep_fit_holdout(1u, &t, (hyst_wide_t)x_rest, u, r, len, train, &h) != HYST_OK) {
-        return;
-    }
-    out->tau = tau;
-    out->weight = (double)h.weight[0];
-    out->offset = (double)h.offset;
-    out->fit_rms = (double)h.fit_rms;
-    out->max_abs = (double)h.max_abs;
-    out->holdout_rms = h.holdout_used > 0u ? (double)h.holdout_rms : NAN;
-}
+/* Time constants of the series: at most this many. */
+#define CREEP_TAUS (sizeof creep_taus / sizeof creep_taus[0])
 
-void fit_creep_score(const double *u, const double *r, size_t len, size_t train, double x_rest,
-                     double tau, fit_creep_t *best)
+/* The creep lags' states (weight 1: a lag's output is its state) before
+ * each input u[k], k < len, from rest at x_rest, for time constants
+ * tau[0..count), count <= CREEP_TAUS, into s[i * len + k], by the library's
+ * f64 instances themselves. The lags advance side by side: independent
+ * chains, which the processor overlaps. 0, or 1 if a lag is refused. */
+static int lag_states(const double *u, size_t len, double x_rest, const double *tau,
+                      size_t count, double *s)
 {
-    size_t i;
-    memset(best, 0, sizeof *best);
-    best->holdout_rms = NAN;
-    best->fit_rms = NAN;
-    if (tau > 0) {
-        creep_one(u, r, len, train, x_rest, tau, best);
-        return;
-    }
-    for (i = 0u; i < sizeof creep_taus / sizeof creep_taus[0] && creep_taus[i] <= (double)len;
-         ++i) {
-        fit_creep_t c;
-        creep_one(u, r, len, train, x_rest, creep_taus[i], &c);
-        if (isfinite(c.holdout_rms) && !(best->holdout_rms <= c.holdout_rms)) {
-            *best = c;
+    const hyst_wide_t one = 1;
+    hyst_creep_t C[CREEP_TAUS];
+    size_t i, k;
+    for (i = 0u; i < count; ++i) {
+        const hyst_wide_t t = (hyst_wide_t)tau[i];
+        if (hyst_f64_creep_init(&C[i], 1u, &t, &one, (hyst_wide_t)x_rest) != HYST_OK) {
+            return 1;
         }
-    }
-}
-
-/* One time constant fitted on [0, len) but [from, to) (the lags fed
- * through it) and scored on [from, to) from score_from on, the creep run
- * from rest. */
-static void creep_one_part(const double *u, const double *r, size_t len, size_t from, size_t to,
-                           size_t score_from, double x_rest, double tau, fit_creep_t *out)
-{
-    const hyst_wide_t t = (hyst_wide_t)tau;
-    hyst_creep_fit_t F;
-    hyst_creep_t C;
-    hyst_wide_t w, offset, fit_rms;
-    double ss = 0.0, worst = 0.0;
-    size_t k, used = 0u;
-    hyst_status_t st;
-    memset(out, 0, sizeof *out);
-    out->holdout_rms = NAN;
-    out->fit_rms = NAN;
-    st = hyst_creep_fit_init(&F, 1u, &t, (hyst_wide_t)x_rest);
-    for (k = 0u; st == HYST_OK && k < len; ++k) {
-        st = (k < from || k >= to) && isfinite(r[k]) ? hyst_creep_fit_add(&F, u[k], r[k])
-                                                     : hyst_creep_fit_feed(&F, u[k]);
-    }
-    if (st != HYST_OK || hyst_creep_fit_solve(&F, &w, &offset, &fit_rms) != HYST_OK ||
-        hyst_f64_creep_init(&C, 1u, &t, &w, (hyst_wide_t)x_rest) != HYST_OK) {
-        return;
     }
     for (k = 0u; k < len; ++k) {
-        const double e = r[k] - hyst_f64_creep_step(&C, u[k]) - (double)offset;
-        if (isfinite(e)) {
-            worst = fabs(e) > worst ? fabs(e) : worst;
-            if (k >= from && k < to && k >= score_from) {
-                ss += e * e;
-                ++used;
-            }
+        for (i = 0u; i < count; ++i) {
+            s[i * len + k] = hyst_f64_creep_step(&C[i], u[k]);
         }
-    }
-    out->tau = tau;
-    out->weight = (double)w;
-    out->offset = (double)offset;
-    out->fit_rms = (double)fit_rms;
-    out->max_abs = worst;
-    out->holdout_rms = used > 0u ? sqrt(ss / (double)used) : NAN;
-}
-
-void fit_creep_score_part(const double *u, const double *r, size_t len, size_t from, size_t to,
-                          size_t score_from, double x_rest, double tau, fit_creep_t *best)
-{
-    size_t i;
-    memset(best, 0, sizeof *best);
-    best->holdout_rms = NAN;
-    best->fit_rms = NAN;
-    if (tau > 0) {
-        creep_one_part(u, r, len, from, to, score_from, x_rest, tau, best);
-        return;
-    }
-    for (i = 0u; i < sizeof creep_taus / sizeof creep_taus[0] && creep_taus[i] <= (double)len;
-         ++i) {
-        fit_creep_t c;
-        creep_one_part(u, r, len, from, to, score_from, x_rest, creep_taus[i], &c);
-        if (isfinite(c.holdout_rms) && !(best->holdout_rms <= c.holdout_rms)) {
-            *best = c;
-        }
-    }
-}
-
-/* ---- The rate term (hyst/rate.h), fitted with the creep lag ---- */
-
-/* The regressors of sample k before its input: the creep lag's state
- * (weight 1: its output is the state) and the rate term's low-pass (weight
- * 1), from rest at x_rest, by the library's f64 instances themselves. */
-static int terms_regressors(const double *u, size_t len, double x_rest, double creep_tau,
-                            double rate_tau, double *s, double *v)
-{
-    const hyst_wide_t one = 1, t = (hyst_wide_t)creep_tau;
-    hyst_creep_t C;
-    hyst_rate_t R;
-    size_t k;
-    if ((creep_tau > 0 && hyst_f64_creep_init(&C, 1u, &t, &one, (hyst_wide_t)x_rest) != HYST_OK) ||
-        hyst_f64_rate_init(&R, (hyst_wide_t)rate_tau, one, (hyst_wide_t)x_rest) != HYST_OK) {
-        return 1;
-    }
-    for (k = 0u; k < len; ++k) {
-        s[k] = creep_tau > 0 ? hyst_f64_creep_step(&C, u[k]) : 0.0;
-        v[k] = hyst_f64_rate_step(&R, u[k]);
     }
     return 0;
 }
 
-/* The weights of the creep lag's state s (when lag) and the rate term's
- * low-pass v, and the offset, by least squares on the residual r outside
- * [from, to): 0, or 1 when they are not determined (*fit_rms over the
- * samples fitted). */
-static int terms_solve(const double *s, const double *v, const double *r, size_t len,
-                       size_t from, size_t to, int lag, double *ws_out, double *wv_out,
-                       double *offset_out, double *fit_rms)
+/* The regressors of sample k before its input, from rest at x_rest: the
+ * creep lag's state into s when creep_tau > 0, the rate term's low-pass
+ * (weight 1) into v when rate_tau > 0. 0, or 1 if refused. */
+static int terms_regressors(const double *u, size_t len, double x_rest, double creep_tau,
+                            double rate_tau, double *s, double *v)
 {
-    double ms = 0.0, mv = 0.0, mr = 0.0, css = 0.0, csv = 0.0, cvv = 0.0, csr = 0.0;
-    double cvr = 0.0, crr = 0.0, ws = 0.0, wv, det, fit_ss;
-    size_t k, used = 0u;
-    for (k = 0u; k < len; ++k) { /* the equations: outside [from, to), residual known */
-        if ((k < from || k >= to) && isfinite(r[k])) {
-            ms += s[k];
-            mv += v[k];
-            mr += r[k];
-            ++used;
+    const hyst_wide_t one = 1;
+    hyst_rate_t R;
+    size_t k;
+    if (creep_tau > 0 && lag_states(u, len, x_rest, &creep_tau, 1u, s) != 0) {
+        return 1;
+    }
+    if (rate_tau > 0) {
+        if (hyst_f64_rate_init(&R, (hyst_wide_t)rate_tau, one, (hyst_wide_t)x_rest) != HYST_OK) {
+            return 1;
+        }
+        for (k = 0u; k < len; ++k) {
+            v[k] = hyst_f64_rate_step(&R, u[k]);
         }
     }
-    if (used <= (lag ? 3u : 2u)) {
+    return 0;
+}
+
+/* The weights of the creep lag's state s and the rate term's low-pass v
+ * (either may be NULL: no such term, weight 0) and the offset, by least
+ * squares on the residual r outside [from, to), two passes (the means,
+ * then the co-moments about them): 0, or 1 when they are not determined
+ * (*fit_rms over the samples fitted). */
+static int terms_solve(const double *s, const double *v, const double *r, size_t len,
+                       size_t from, size_t to, double *ws_out, double *wv_out,
+                       double *offset_out, double *fit_rms)
+{
+    const size_t terms = (s != NULL ? 1u : 0u) + (v != NULL ? 1u : 0u);
+    double ms = 0.0, mv = 0.0, mr = 0.0, css = 0.0, csv = 0.0, cvv = 0.0, csr = 0.0;
+    double cvr = 0.0, crr = 0.0, ws = 0.0, wv = 0.0, det, fit_ss;
+    /* the equations: outside [from, to), residual known */
+    const size_t begin[2] = {0u, to > from ? to : from}, end[2] = {from < len ? from : len, len};
+    size_t k, used = 0u;
+    int part;
+    for (part = 0; part <= 1; ++part) {
+        for (k = begin[part]; k < end[part]; ++k) {
+            if (isfinite(r[k])) {
+                ms += s != NULL ? s[k] : 0.0;
+                mv += v != NULL ? v[k] : 0.0;
+                mr += r[k];
+                ++used;
+            }
+        }
+    }
+    if (terms == 0u || used <= terms + 1u) {
         return 1;
     }
     ms /= (double)used;
     mv /= (double)used;
     mr /= (double)used;
-    for (k = 0u; k < len; ++k) { /* co-moments about the means: the constant eliminated */
-        if ((k < from || k >= to) && isfinite(r[k])) {
-            const double ds = s[k] - ms, dv = v[k] - mv, dr = r[k] - mr;
-            css += ds * ds;
-            csv += ds * dv;
-            cvv += dv * dv;
-            csr += ds * dr;
-            cvr += dv * dr;
-            crr += dr * dr;
+    for (part = 0; part <= 1; ++part) { /* co-moments about the means: the constant eliminated */
+        for (k = begin[part]; k < end[part]; ++k) {
+            if (isfinite(r[k])) {
+                const double ds = s != NULL ? s[k] - ms : 0.0, dv = v != NULL ? v[k] - mv : 0.0;
+                const double dr = r[k] - mr;
+                css += ds * ds;
+                csv += ds * dv;
+                cvv += dv * dv;
+                csr += ds * dr;
+                cvr += dv * dr;
+                crr += dr * dr;
+            }
         }
     }
-    det = css * cvv - csv * csv;
-    if (!(cvv > 0) || (lag && !(det > 1e-12 * css * cvv))) {
-        return 1; /* a drive that never moved, or the two indistinguishable */
+    /* A term that never moved, or moved by too little to tell from the
+     * offset (its variance under 1e4 rounding units of its sum of squares),
+     * or two terms indistinguishable, leave the weights undetermined. */
+    if ((s != NULL && !(css > 1e4 * DBL_EPSILON * (css + (double)used * ms * ms))) ||
+        (v != NULL && !(cvv > 0))) {
+        return 1;
     }
-    if (lag) {
+    if (terms == 2u) {
+        det = css * cvv - csv * csv;
+        if (!(det > 1e-12 * css * cvv)) {
+            return 1;
+        }
         ws = (cvv * csr - csv * cvr) / det;
         wv = (css * cvr - csv * csr) / det;
+    } else if (s != NULL) {
+        ws = csr / css;
     } else {
         wv = cvr / cvv;
     }
@@ -196,28 +138,37 @@ static int terms_solve(const double *s, const double *v, const double *r, size_t
     return 0;
 }
 
-void fit_terms_part(const double *u, const double *r, size_t len, size_t from, size_t to,
-                    size_t score_from, double x_rest, double creep_tau, double rate_tau,
-                    fit_creep_t *out)
+/* r[k] less the terms' prediction: what the model with its terms leaves. */
+static double terms_error(const double *s, const double *v, const double *r, size_t k,
+                          double ws, double wv, double offset)
 {
-    const int lag = creep_tau > 0;
-    double *s, *v, ws, wv, offset, fit_rms, ss = 0.0, worst = 0.0;
+    double e = r[k];
+    if (s != NULL) {
+        e -= ws * s[k];
+    }
+    if (v != NULL) {
+        e -= wv * v[k];
+    }
+    return e - offset;
+}
+
+/* The terms with regressors s (creep lag of creep_tau) and v (rate term of
+ * rate_tau), either NULL if absent, fitted and scored as fit_terms_part()
+ * says, into *out. */
+static void terms_score(const double *s, const double *v, const double *r, size_t len,
+                        size_t from, size_t to, size_t score_from, double creep_tau,
+                        double rate_tau, fit_creep_t *out)
+{
+    double ws, wv, offset, fit_rms, ss = 0.0, worst = 0.0;
     size_t k, scored = 0u;
     memset(out, 0, sizeof *out);
     out->holdout_rms = NAN;
     out->fit_rms = NAN;
-    if (!(rate_tau >= 1.0) || len == 0u ||
-        (s = (double *)malloc(2u * len * sizeof(double))) == NULL) {
-        return;
-    }
-    v = s + len;
-    if (terms_regressors(u, len, x_rest, creep_tau, rate_tau, s, v) != 0 ||
-        terms_solve(s, v, r, len, from, to, lag, &ws, &wv, &offset, &fit_rms) != 0) {
-        free(s);
+    if (terms_solve(s, v, r, len, from, to, &ws, &wv, &offset, &fit_rms) != 0) {
         return;
     }
     for (k = 0u; k < len; ++k) {
-        const double e = r[k] - ws * s[k] - wv * v[k] - offset;
+        const double e = terms_error(s, v, r, k, ws, wv, offset);
         if (isfinite(e)) {
             worst = fabs(e) > worst ? fabs(e) : worst;
             if (k >= from && k < to && k >= score_from) {
@@ -226,10 +177,9 @@ void fit_terms_part(const double *u, const double *r, size_t len, size_t from, s
             }
         }
     }
-    free(s);
-    out->tau = lag ? creep_tau : 0.0;
+    out->tau = s != NULL ? creep_tau : 0.0;
     out->weight = ws;
-    out->rate_tau = rate_tau;
+    out->rate_tau = v != NULL ? rate_tau : 0.0;
     out->rate_weight = wv;
     out->offset = offset;
     out->fit_rms = fit_rms;
@@ -237,8 +187,64 @@ void fit_terms_part(const double *u, const double *r, size_t len, size_t from, s
     out->holdout_rms = scored > 0u ? sqrt(ss / (double)scored) : NAN;
 }
 
-/* The RMS of r2 - ws s - wv v - offset over r2's finite entries, s and v
- * the terms' regressors of u2 from rest (NaN if none or out of memory). */
+void fit_terms_part(const double *u, const double *r, size_t len, size_t from, size_t to,
+                    size_t score_from, double x_rest, double creep_tau, double rate_tau,
+                    fit_creep_t *out)
+{
+    const int lag = creep_tau > 0, rate = rate_tau > 0;
+    double *s;
+    memset(out, 0, sizeof *out);
+    out->holdout_rms = NAN;
+    out->fit_rms = NAN;
+    if ((!lag && !rate) || (rate && !(rate_tau >= 1.0)) || len == 0u ||
+        (s = (double *)malloc(2u * len * sizeof(double))) == NULL) {
+        return;
+    }
+    if (terms_regressors(u, len, x_rest, creep_tau, rate_tau, s, s + len) == 0) {
+        terms_score(lag ? s : NULL, rate ? s + len : NULL, r, len, from, to, score_from,
+                    creep_tau, rate_tau, out);
+    }
+    free(s);
+}
+
+void fit_creep_score_part(const double *u, const double *r, size_t len, size_t from, size_t to,
+                          size_t score_from, double x_rest, double tau, fit_creep_t *best)
+{
+    size_t i, count = 0u;
+    double *s;
+    if (tau > 0) {
+        fit_terms_part(u, r, len, from, to, score_from, x_rest, tau, 0.0, best);
+        return;
+    }
+    memset(best, 0, sizeof *best);
+    best->holdout_rms = NAN;
+    best->fit_rms = NAN;
+    while (count < CREEP_TAUS && creep_taus[count] <= (double)len) {
+        ++count;
+    }
+    if (count == 0u || (s = (double *)malloc(count * len * sizeof(double))) == NULL) {
+        return;
+    }
+    if (lag_states(u, len, x_rest, creep_taus, count, s) == 0) {
+        for (i = 0u; i < count; ++i) {
+            fit_creep_t c;
+            terms_score(s + i * len, NULL, r, len, from, to, score_from, creep_taus[i], 0.0, &c);
+            if (isfinite(c.holdout_rms) && !(best->holdout_rms <= c.holdout_rms)) {
+                *best = c;
+            }
+        }
+    }
+    free(s);
+}
+
+void fit_creep_score(const double *u, const double *r, size_t len, size_t train, double x_rest,
+                     double tau, fit_creep_t *best)
+{
+    fit_creep_score_part(u, r, len, train, len, train, x_rest, tau, best);
+}
+
+/* The RMS of what the terms leave of r2 over its finite entries, their
+ * regressors run over u2 from rest (NaN if none or out of memory). */
 static double terms_other_rms(const double *u2, const double *r2, size_t len2, double x_rest,
                               double creep_tau, double rate_tau, double ws, double wv,
                               double offset)
@@ -254,7 +260,8 @@ static double terms_other_rms(const double *u2, const double *r2, size_t len2, d
         return NAN;
     }
     for (k = 0u; k < len2; ++k) {
-        const double e = r2[k] - ws * s[k] - wv * v[k] - offset;
+        const double e = terms_error(creep_tau > 0 ? s : NULL, rate_tau > 0 ? v : NULL, r2, k,
+                                     ws, wv, offset);
         if (isfinite(e)) {
             ss += e * e;
             ++used;
@@ -264,16 +271,16 @@ static double terms_other_rms(const double *u2, const double *r2, size_t len2, d
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
-/* One creep time constant fitted on the whole of r (as the model file's
- * term is: fit_creep_score() with no hold-out), scored on r2. */
-static void creep_other(const double *u, const double *r, size_t len, const double *u2,
-                        const double *r2, size_t len2, double x_rest, double tau,
-                        fit_creep_t *out)
+/* The terms fitted on the whole of r (as the model file's are: [len, len)
+ * held out), scored on r2. */
+static void terms_other(const double *u, const double *r, size_t len, const double *u2,
+                        const double *r2, size_t len2, double x_rest, double creep_tau,
+                        double rate_tau, fit_creep_t *out)
 {
-    creep_one(u, r, len, len, x_rest, tau, out);
-    if (out->tau > 0) {
-        out->holdout_rms =
-            terms_other_rms(u2, r2, len2, x_rest, tau, 1.0, out->weight, 0.0, out->offset);
+    fit_terms_part(u, r, len, len, len, len, x_rest, creep_tau, rate_tau, out);
+    if (isfinite(out->fit_rms)) {
+        out->holdout_rms = terms_other_rms(u2, r2, len2, x_rest, creep_tau, rate_tau,
+                                           out->weight, out->rate_weight, out->offset);
     }
 }
 
@@ -282,25 +289,17 @@ void fit_terms_other(const double *u, const double *r, size_t len, const double 
                      double rate_tau, fit_creep_t *out)
 {
     size_t i;
+    if (rate_tau > 0 || creep_tau > 0) {
+        terms_other(u, r, len, u2, r2, len2, x_rest, creep_tau, rate_tau, out);
+        return;
+    }
     memset(out, 0, sizeof *out);
     out->holdout_rms = NAN;
     out->fit_rms = NAN;
-    if (rate_tau > 0) { /* fitted on every sample of r: [len, len) held out */
-        fit_terms_part(u, r, len, len, len, len, x_rest, creep_tau, rate_tau, out);
-        if (isfinite(out->fit_rms)) {
-            out->holdout_rms = terms_other_rms(u2, r2, len2, x_rest, creep_tau, rate_tau,
-                                               out->weight, out->rate_weight, out->offset);
-        }
-        return;
-    }
-    if (creep_tau > 0) {
-        creep_other(u, r, len, u2, r2, len2, x_rest, creep_tau, out);
-        return;
-    }
     for (i = 0u; i < sizeof creep_taus / sizeof creep_taus[0] && creep_taus[i] <= (double)len;
          ++i) {
         fit_creep_t c;
-        creep_other(u, r, len, u2, r2, len2, x_rest, creep_taus[i], &c);
+        terms_other(u, r, len, u2, r2, len2, x_rest, creep_taus[i], 0.0, &c);
         if (isfinite(c.holdout_rms) && !(out->holdout_rms <= c.holdout_rms)) {
             *out = c;
         }

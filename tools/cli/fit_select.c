@@ -776,14 +776,16 @@ unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
 }
 
 /* Adds candidate (kind, degree, t_degree, delay), scored, at cand[*count]
- * unless cand is full; *best the lowest hold-out RMS so far. */
+ * unless cand is full or the model has more than max_parameters (when not
+ * 0). */
 static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                const fit_validation_t *v, double creep_tau, int kind, unsigned degree,
-                unsigned t_degree, size_t delay, int widened, fit_candidate_t *cand,
-                size_t max_cand, size_t *count)
+                const fit_validation_t *v, double creep_tau, unsigned max_parameters, int kind,
+                unsigned degree, unsigned t_degree, size_t delay, int widened,
+                fit_candidate_t *cand, size_t max_cand, size_t *count)
 {
     fit_candidate_t *c = &cand[*count];
-    if (*count >= max_cand) {
+    if (*count >= max_cand ||
+        (max_parameters != 0u && fit_parameters(kind, degree, t_degree) > max_parameters)) {
         return;
     }
     memset(c, 0, sizeof *c);
@@ -797,7 +799,7 @@ static void add(const hyst_ident_config_t *base, const double *x, const double *
 }
 
 size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
-                  unsigned t_degree, double creep_tau, const double *x, const double *y,
+                  unsigned t_degree, unsigned max_parameters, double creep_tau, const double *x, const double *y,
                   size_t n, const fit_validation_t *v, size_t max_delay,
                   fit_candidate_t *cand, size_t max_cand, size_t *best, int *with_creep)
 {
@@ -832,26 +834,26 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
         }
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
             for (w = 0; w <= widen; ++w) {
-                add(base, x, y, n, v, creep_tau, FIT_POLY, deg, 0u, d, w, cand, max_cand,
-                    &count);
+                add(base, x, y, n, v, creep_tau, max_parameters, FIT_POLY, deg, 0u, d, w, cand,
+                    max_cand, &count);
             }
         }
         for (k = 0u; (kinds & FIT_GRID) != 0 && k < FIT_GRID_CANDIDATES; ++k) {
-            add(base, x, y, n, v, creep_tau, FIT_GRID, FIT_GRID_INTERVALS(k), 0u, d, 0, cand,
-                max_cand, &count);
+            add(base, x, y, n, v, creep_tau, max_parameters, FIT_GRID, FIT_GRID_INTERVALS(k), 0u,
+                d, 0, cand, max_cand, &count);
         }
         for (k = 0u; (kinds & FIT_SPLINE) != 0 && k < FIT_SPLINE_CANDIDATES; ++k) {
             for (w = 0; w <= widen; ++w) {
-                add(base, x, y, n, v, creep_tau, FIT_SPLINE, FIT_SPLINE_INTERVALS(k), 0u, d, w,
-                    cand, max_cand, &count);
+                add(base, x, y, n, v, creep_tau, max_parameters, FIT_SPLINE,
+                    FIT_SPLINE_INTERVALS(k), 0u, d, w, cand, max_cand, &count);
             }
         }
         for (deg = 1u; (kinds & FIT_EVERETT) != 0 && deg <= HYST_EVERETT_MAX_DEGREE; ++deg) {
             for (k = 0u; k < deg && (everett_degree == 0u || deg == everett_degree); ++k) {
                 for (w = 0; w <= widen; ++w) {
                     if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
-                        add(base, x, y, n, v, creep_tau, FIT_EVERETT, deg, k, d, w, cand,
-                            max_cand, &count);
+                        add(base, x, y, n, v, creep_tau, max_parameters, FIT_EVERETT, deg, k, d,
+                            w, cand, max_cand, &count);
                     }
                 }
             }
@@ -1067,7 +1069,8 @@ static int search_fraction(const hyst_ident_config_t *cfg, int kinds, unsigned t
         const double f = (double)i / (double)FIT_FRACTIONS;
         size_t n_tried;
         fit_delay_fraction(x, n, f, xf);
-        n_tried = fit_select(&base, kinds, 0u, t_degree, creep_tau, xf, y, n,
+        /* a model with more parameters than the choice is never kept (below): not fitted */
+        n_tried = fit_select(&base, kinds, 0u, t_degree, params, creep_tau, xf, y, n,
                              validation_fraction(v, f, xf + n, &vf), b->delay, tried + total,
                              per_fraction, &best, &wc);
         for (k = total; k < total + n_tried; ++k) {
@@ -1128,8 +1131,8 @@ hyst_status_t fit_search(const hyst_ident_config_t *base, int kinds, unsigned t_
             max_delay = out->cheap_delay + FIT_DELAY_AROUND;
         }
     }
-    out->count = fit_select(&cfg, kinds, 0u, t_degree, creep_tau, x, y, n, v, max_delay, cand,
-                            max_cand, &out->best, &out->with_creep);
+    out->count = fit_select(&cfg, kinds, 0u, t_degree, 0u, creep_tau, x, y, n, v, max_delay,
+                            cand, max_cand, &out->best, &out->with_creep);
     if (out->best != (size_t)-1) {
         out->integer_delay = cand[out->best].delay;
         out->integer_holdout = fit_option_rms(&cand[out->best], out->with_creep);

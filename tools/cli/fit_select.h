@@ -431,8 +431,10 @@ int fit_chosen_domain(const fit_candidate_t *c, const double *x, size_t skip, si
 /* Fits each kind of the mask `kinds` (poly degree 1..HYST_MAX_DEGREE,
  * everett degree 1..HYST_EVERETT_MAX_DEGREE with each t-degree 0..degree - 1;
  * everett_degree, when not 0, the only everett degree, t_degree, when not
- * FIT_ANY_T_DEGREE, the only t-degree) at each delay from base->delay to
- * max_delay (base: method, domain, skip) into cand[0..max_cand), each also
+ * FIT_ANY_T_DEGREE, the only t-degree; max_parameters, when not 0, the
+ * most a model may have, fit_parameters(): the others are not fitted) at
+ * each delay from base->delay to max_delay (base: method, domain, skip)
+ * into cand[0..max_cand), each also
  * with a creep term unless creep_tau < 0 (0: its time constant chosen,
  * fit_creep_score()); returns the count, *best the index chosen and
  * *with_creep its option: the fewest parameters within FIT_PARSIMONY of the
@@ -440,7 +442,7 @@ int fit_chosen_domain(const fit_candidate_t *c, const double *x, size_t skip, si
  * symmetric kind (its compensator is a table, the asymmetric kind's
  * solves), then the lower RMS ((size_t)-1: none could be scored). */
 size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
-                  unsigned t_degree, double creep_tau, const double *x, const double *y,
+                  unsigned t_degree, unsigned max_parameters, double creep_tau, const double *x, const double *y,
                   size_t n, const fit_validation_t *v, size_t max_delay,
                   fit_candidate_t *cand, size_t max_cand, size_t *best, int *with_creep);
 
