@@ -3,7 +3,9 @@
  * Madelung's rules run on the recorded inputs; each stacked turning point
  * keeps the regressors of its output, as the model keeps the output, so a
  * sample's row is the current TP's plus or minus the terms of E between
- * them. Normal equations in hyst_wide_t, solved by Cholesky's method. */
+ * them. Least squares in hyst_wide_t by square-root-free Givens rotations
+ * (the normal equations would square the condition number of E's
+ * monomials: float could not hold degree 3 or 4). */
 #include "hyst/ident.h"
 
 #include "hyst_util.h"
@@ -33,6 +35,45 @@ static void add_terms(const hyst_everett_fit_t *f, hyst_wide_t a, hyst_wide_t b,
         for (j = 0u; j <= last_j(f, i); ++j) {
             r[col++] += wi * tj;
             tj *= t;
+        }
+    }
+}
+
+/* Offset of row i of the m-column packed factor (row i: columns i..m-1). */
+static size_t row_at(size_t i, size_t m)
+{
+    return i * m - i * (i - 1u) / 2u;
+}
+
+/* Rotates the row v (m entries, destroyed) into the factor R = D^1/2 U
+ * (U unit upper triangular, packed with D on its diagonal) by
+ * square-root-free Givens rotations: R'R gains v v'. One division per
+ * column and none of the square roots of plain rotations: a sample costs
+ * about three times what the normal equations' update would. */
+static void rotate_in(hyst_wide_t *restrict r, size_t m, hyst_wide_t *restrict v)
+{
+    hyst_wide_t w = 1; /* the row's weight, shrinking as it is rotated in */
+    size_t i, j;
+    for (i = 0u; i < m; ++i) {
+        hyst_wide_t *ri = r + row_at(i, m);
+        const hyst_wide_t vi = v[i];
+        hyst_wide_t d, inv, c, s;
+        if (vi == 0) {
+            continue;
+        }
+        d = ri[0] + w * vi * vi;
+        inv = 1 / d;
+        c = ri[0] * inv;
+        s = w * vi * inv;
+        w *= c;
+        ri[0] = d;
+        for (j = i + 1u; j < m; ++j) {
+            const hyst_wide_t vj = v[j];
+            v[j] = vj - vi * ri[j - i];
+            ri[j - i] = c * ri[j - i] + s * vj;
+        }
+        if (!(w > 0)) {
+            break; /* the row is spent: every later column is in the span of the ones before */
         }
     }
 }
@@ -82,7 +123,7 @@ hyst_status_t hyst_everett_fit_init_terms(hyst_everett_fit_t *fit, unsigned degr
 
 hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_wide_t y)
 {
-    size_t i, j;
+    hyst_wide_t v[HYST_EVERETT_FIT_COLS + 1u];
     if (fit == NULL) {
         return HYST_ERR_NULL;
     }
@@ -108,15 +149,10 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
     if (fit->used == 0u) {
         fit->y_ref = y;
     }
-    y -= fit->y_ref; /* about the first output: the residual below then does
-                      * not cancel against an offset (8.4e6: RMS 0.47 for an exact fit) */
-    for (i = 0u; i < fit->cols; ++i) {
-        for (j = 0u; j <= i; ++j) {
-            fit->ata[i * HYST_EVERETT_FIT_COLS + j] += fit->r_prev[i] * fit->r_prev[j];
-        }
-        fit->aty[i] += fit->r_prev[i] * y;
-    }
-    fit->yy += y * y;
+    memcpy(v, fit->r_prev, fit->cols * sizeof v[0]);
+    v[fit->cols] = y - fit->y_ref; /* about the first output: y_lo's column
+                                    * then need not carry an offset far above the range */
+    rotate_in(fit->r, fit->cols + 1u, v);
     ++fit->used;
     return HYST_OK;
 }
@@ -232,52 +268,53 @@ static void to_everett(const hyst_everett_fit_t *fit, const hyst_wide_t *s, hyst
 }
 
 /* Least squares into e and rms; if `constrained` and the curve would
- * refuse that E, the least-squares E of the sufficient conditions. */
+ * refuse that E, the least-squares E of the sufficient conditions. The
+ * factor R (fit->r: R'R = A'A, its last column Q'y) gives L = R' and
+ * u = L^-1 A'y as a Cholesky factorisation of the normal equations would,
+ * at the condition number of A, not of A'A. */
 static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hyst_wide_t *rms,
                            int constrained)
 {
-    hyst_wide_t l[HYST_EVERETT_FIT_COLS * HYST_EVERETT_FIT_COLS];
-    hyst_wide_t s[HYST_EVERETT_FIT_COLS], u[HYST_EVERETT_FIT_COLS];
+    enum { N = HYST_EVERETT_FIT_COLS };
+    hyst_wide_t l[N * N];
+    hyst_wide_t s[N], u[N], root[N + 1];
     hyst_wide_t ss;
     hyst_status_t st = HYST_OK;
-    size_t n, i, j, k;
+    size_t n, m, i, k;
     if (fit == NULL || e == NULL) {
         return HYST_ERR_NULL;
     }
     n = fit->cols;
     memset(s, 0, sizeof s);
     memset(u, 0, sizeof u);
-    if (n < 2u || n > HYST_EVERETT_FIT_COLS || fit->used <= n) {
+    if (n < 2u || n > N || fit->used <= n) {
         return HYST_ERR_SINGULAR;
     }
-    for (i = 0u; i < n; ++i) { /* A = L L' */
-        for (j = 0u; j <= i; ++j) {
-            hyst_wide_t sum = fit->ata[i * HYST_EVERETT_FIT_COLS + j];
-            for (k = 0u; k < j; ++k) {
-                sum -= l[i * HYST_EVERETT_FIT_COLS + k] * l[j * HYST_EVERETT_FIT_COLS + k];
-            }
-            if (i > j) {
-                l[i * HYST_EVERETT_FIT_COLS + j] = sum / l[j * HYST_EVERETT_FIT_COLS + j];
-            } else if (sum > fit->ata[i * HYST_EVERETT_FIT_COLS + i] * HYST_WIDE_EPS * (hyst_wide_t)1e4) {
-                l[i * HYST_EVERETT_FIT_COLS + i] = HYST_WIDE_SQRT(sum);
-            } else {
-                return HYST_ERR_SINGULAR; /* a column in the span of the others */
-            }
-        }
+    m = n + 1u;
+    for (k = 0u; k < m; ++k) {
+        root[k] = HYST_WIDE_SQRT(fit->r[row_at(k, m)]); /* D^1/2 */
     }
-    for (i = 0u; i < n; ++i) { /* L u = A'y */
-        s[i] = fit->aty[i];
+    for (i = 0u; i < n; ++i) {
+        hyst_wide_t column = 0; /* |A's column i|^2 */
         for (k = 0u; k < i; ++k) {
-            s[i] -= l[i * HYST_EVERETT_FIT_COLS + k] * s[k];
+            l[i * N + k] = root[k] * fit->r[row_at(k, m) + (i - k)];
+            column += l[i * N + k] * l[i * N + k];
         }
-        s[i] /= l[i * HYST_EVERETT_FIT_COLS + i];
-        u[i] = s[i];
+        l[i * N + i] = root[i];
+        column += l[i * N + i] * l[i * N + i];
+        /* a column in the span of the others: rotated to rounding */
+        if (!(l[i * N + i] * l[i * N + i] >
+              column * (HYST_WIDE_EPS * (hyst_wide_t)(1000u * n)) * (HYST_WIDE_EPS * (hyst_wide_t)(1000u * n)))) {
+            return HYST_ERR_SINGULAR;
+        }
+        u[i] = root[i] * fit->r[row_at(i, m) + (n - i)];
+        s[i] = u[i];
     }
     for (i = n; i-- > 0u;) { /* L' s = u */
         for (k = i + 1u; k < n; ++k) {
-            s[i] -= l[k * HYST_EVERETT_FIT_COLS + i] * s[k];
+            s[i] -= l[k * N + i] * s[k];
         }
-        s[i] /= l[i * HYST_EVERETT_FIT_COLS + i];
+        s[i] /= l[i * N + i];
     }
     to_everett(fit, s, e);
     if (constrained && !hyst_everett_monotone_(e)) {
@@ -289,8 +326,18 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
             st = HYST_ERR_NOT_MONOTONE;
         }
     }
-    if (constrained && st == HYST_OK && !(hyst_everett_range_(e) > 0)) {
-        st = HYST_ERR_NOT_MONOTONE; /* flat: the curve refuses an E that never rises */
+    if (constrained && st == HYST_OK) {
+        /* flat: an E that never rises, or by rounding of the outputs'
+         * spread about y_ref (|Q'y|^2 / used) only: the nearest monotone E
+         * of outputs that rise and fall */
+        hyst_wide_t spread = fit->r[row_at(n, m)];
+        for (i = 0u; i < n; ++i) {
+            spread += u[i] * u[i];
+        }
+        spread = HYST_WIDE_SQRT(spread / (hyst_wide_t)fit->used);
+        if (!(hyst_everett_range_(e) > spread * HYST_WIDE_EPS * (hyst_wide_t)(1000u * n))) {
+            st = HYST_ERR_NOT_MONOTONE;
+        }
     }
     if (constrained && st == HYST_OK) { /* what else the curve refuses: its rounding bound */
         hyst_curve_t curve;
@@ -300,19 +347,18 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
         st = hyst_curve_everett_(&curve, e, (unsigned)HYST_VARIANT_F32, HYST_LAYOUT);
 #endif
     }
-    /* residual: y'y - 2 s'A'y + s'A s */
-    ss = fit->yy;
+    /* residual: |Q'y - R s|^2, the rows of R and the part of y no column
+     * reaches (R's last diagonal entry) */
+    ss = fit->r[row_at(n, m)];
     for (i = 0u; i < n; ++i) {
-        hyst_wide_t as = 0;
-        for (j = 0u; j < n; ++j) {
-            as += (i >= j ? fit->ata[i * HYST_EVERETT_FIT_COLS + j]
-                          : fit->ata[j * HYST_EVERETT_FIT_COLS + i]) *
-                  s[j];
+        hyst_wide_t d = u[i];
+        for (k = i; k < n; ++k) {
+            d -= l[k * N + i] * s[k];
         }
-        ss += s[i] * (as - 2 * fit->aty[i]);
+        ss += d * d;
     }
     if (rms != NULL) {
-        *rms = HYST_WIDE_SQRT((ss > 0 ? ss : 0) / (hyst_wide_t)fit->used);
+        *rms = HYST_WIDE_SQRT(ss / (hyst_wide_t)fit->used);
     }
     return st;
 }

@@ -70,7 +70,7 @@ static void dir_reset(hyst_ident_dir_t *d)
 }
 
 /* Rotates the row v (m entries, destroyed) into the factor. */
-static void givens_add(hyst_wide_t *r, unsigned m, hyst_wide_t *v)
+static void givens_add(hyst_wide_t *restrict r, unsigned m, hyst_wide_t *restrict v)
 {
     unsigned i, j;
     for (i = 0u; i < m; ++i) {

@@ -306,9 +306,6 @@ static void test_identification_recovers_e(void)
     static hyst_wide_t work[HYST_EVERETT_FIT_WORK(CAP)];
     int trial, fitted = 0;
     double worst = 0.0;
-    if (SETUP_IN_FLOAT) { /* float normal equations (hyst_everett_fit_solve()) */
-        TEST_IGNORE_MESSAGE("E identified in float (HYST_NO_DOUBLE): not held to these bounds");
-    }
     for (trial = 0; trial < 20; ++trial) {
         const hyst_everett_t e = random_e();
         hyst_everett_fit_t fit;

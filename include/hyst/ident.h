@@ -363,6 +363,9 @@ hyst_status_t hyst_pi_fit_record(const hyst_pi_fit_config_t *cfg, const hyst_wid
  */
 #define HYST_EVERETT_FIT_WORK(capacity) ((size_t)(capacity) * (HYST_EVERETT_FIT_COLS + 1u))
 
+/** Numbers of an E fit's packed triangular factor: its columns and y. */
+#define HYST_EVERETT_FIT_R ((HYST_EVERETT_FIT_COLS + 1u) * (HYST_EVERETT_FIT_COLS + 2u) / 2u)
+
 /**
  * @brief An E fit in progress (hyst_everett_fit_init()). Fields are
  *        private. The model's output is y_lo plus a signed sum of E over
@@ -381,11 +384,12 @@ typedef struct hyst_everett_fit {
     size_t n_tp;       /**< stacked, A0 included */
     hyst_wide_t x_prev; /**< last input */
     hyst_wide_t r_prev[HYST_EVERETT_FIT_COLS];  /**< its regressors */
-    hyst_wide_t ata[HYST_EVERETT_FIT_COLS * HYST_EVERETT_FIT_COLS]; /**< normal equations */
-    hyst_wide_t aty[HYST_EVERETT_FIT_COLS];
-    hyst_wide_t y_ref; /**< the first output: aty and yy take y - y_ref */
-    hyst_wide_t yy;    /**< sum of (y - y_ref)^2 */
-    size_t used;       /**< samples in the normal equations */
+    /** the least squares' factor of [regressors, y - y_ref], rotated in row
+     *  by row (square-root-free Givens): D on the diagonal, the unit
+     *  upper-triangular U above it, packed by rows */
+    hyst_wide_t r[HYST_EVERETT_FIT_R];
+    hyst_wide_t y_ref; /**< the first output: the factor takes y - y_ref */
+    size_t used;       /**< samples rotated in */
 } hyst_everett_fit_t;
 
 /**
@@ -419,8 +423,8 @@ hyst_status_t hyst_everett_fit_init_terms(hyst_everett_fit_t *fit, unsigned degr
                                           hyst_wide_t *work, size_t work_len);
 
 /**
- * @brief Moves the record's input to @p x and adds the row (regressors at x,
- *        y) to the normal equations.
+ * @brief Moves the record's input to @p x and rotates the row (regressors
+ *        at x, y) into the least squares' triangular factor.
  * @return HYST_OK; HYST_ERR_NONFINITE (y NaN or infinite: the input still
  *         moves, the sample is not used; x NaN: ignored); HYST_ERR_DOMAIN (x
  *         outside [lo, hi]: ignored); HYST_ERR_NOSPACE (the record stacks
@@ -452,18 +456,19 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
  *         alone determines degree 2 at most); HYST_ERR_NOT_MONOTONE (the
  *         constrained solution did not converge to an E the curve accepts,
  *         a rounding-level failure, or the E fitted is flat, E(hi, lo) not
- *         above 0: outputs that never rise, or rise by less than the
- *         type resolves; @p e and @p rms hold it all the same); or what
+ *         above the rounding of the outputs' spread: outputs that never
+ *         rise, rise by less than the type resolves, or rise and fall
+ *         (the nearest monotone E is then 0 up to rounding); @p e and @p rms hold it all the same); or what
  *         else the curve refuses that E with (in double, or in float
  *         without the f64 variant), HYST_ERR_ILL_CONDITIONED when its
  *         rounding bound exceeds HYST_MAX_ROUNDING of its range (an
  *         output offset far above the range); @p e and @p rms hold it
- *         then too. The RMS is computed about the first output, so an
- *         offset does not cancel it. With HYST_NO_DOUBLE the normal
- *         equations are float: E of degree 3 or 4 is then refused as
- *         HYST_ERR_SINGULAR by records double fits, and @p rms is not
- *         resolved (the sums it is formed from cancel: a good fit can read
- *         0); the E of degree 1 or 2 fitted is as good as double's.
+ *         then too. The factor is rotated from the rows themselves (no
+ *         normal equations, whose condition number is the square of the
+ *         regressors'), so HYST_NO_DOUBLE fits E of every degree as double
+ *         does; there the constrained E's Bernstein-Bezier coefficients
+ *         are sign-correct only to what the dual's normal equations resolve
+ *         in float (the curve's own proof accepts it all the same).
  */
 hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
                                      hyst_wide_t *rms);

@@ -611,7 +611,8 @@ def _select(x, y, kinds, method, lo, hi, skip, delay, t_degree=None, creep_tau=-
     fitted on the first two thirds, scored by its prediction of the last
     third, alone and with its creep term (creep_tau >= 0); the fewest
     parameters within PARSIMONY of the lowest error win; between as many,
-    the symmetric kind, then the lower error. Returns the candidates, the
+    the symmetric kind, then the lower error (the widened one at a tie in
+    rounding). Returns the candidates, the
     index chosen (None: none), whether with its creep term, the chosen
     one's domain (lo, hi) when it is a widened one (fit_chosen_domain()),
     else None, and the search (fit_search(): with delay None the delays are

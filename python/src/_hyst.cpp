@@ -1521,7 +1521,7 @@ nb::dict validation_excitation(const In<double> &x, size_t skip, size_t end,
 }
 
 /* fit_choose() over candidates given as dicts (kind, degree, t_degree,
- * holdout_rms and, optionally, creep_tau, creep_holdout_rms): the rule
+ * holdout_rms and, optionally, widened, creep_tau, creep_holdout_rms): the rule
  * select() applies, alone. */
 nb::tuple choose(const nb::list &cands, double creep_tau)
 {
@@ -1537,6 +1537,7 @@ nb::tuple choose(const nb::list &cands, double creep_tau)
                          ? nb::cast<unsigned>(d["t_degree"])
                          : 0u;
         c.holdout_rms = nb::cast<double>(d["holdout_rms"]);
+        c.widened = d.contains("widened") && nb::cast<bool>(d["widened"]) ? 1 : 0;
         c.creep.tau = d.contains("creep_tau") ? nb::cast<double>(d["creep_tau"]) : 0.0;
         c.creep.holdout_rms =
             d.contains("creep_holdout_rms") ? nb::cast<double>(d["creep_holdout_rms"]) : NAN;

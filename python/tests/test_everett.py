@@ -276,6 +276,13 @@ def test_choice_rule_fewest_parameters_then_symmetric_then_lower_error():
     assert _choose([cand("everett", 6, within), cand("everett", 6, best),
                     cand("poly", 2, float("nan"))]) == (1, False)
     assert _choose([cand("poly", 2, float("nan"))]) == (None, False)
+    # errors equal up to rounding (FIT_TIE, 1e-9): the widened one, not the
+    # last digits; a difference the record resolves still goes to the lower
+    plain, wide = cand("everett", 4, best), dict(cand("everett", 4, best * (1 + 1e-12)),
+                                                 widened=True)
+    assert _choose([plain, wide]) == (1, False)
+    assert _choose([wide, plain]) == (0, False)
+    assert _choose([plain, dict(wide, holdout_rms=best * (1 + 1e-6))]) == (0, False)
 
     # with creep terms (hyst fit --creep auto): each candidate alone and with
     # its creep term, two parameters more (weight and time constant), by the same rule

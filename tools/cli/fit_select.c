@@ -895,10 +895,13 @@ void fit_choose(const fit_candidate_t *cand, size_t count, double creep_tau, siz
                 const unsigned pc = fit_option_parameters(c, wc);
                 const unsigned pb = fit_option_parameters(b, *with_creep);
                 /* between as many parameters: the symmetric kind (its
-                 * compensator is a table), then the lower error */
+                 * compensator is a table), then the lower error; at a tie
+                 * in rounding, the widened one */
                 const int sym_c = c->kind == FIT_POLY, sym_b = b->kind == FIT_POLY;
+                const int tie = fabs(ec - eb) <= FIT_TIE * fmax(ec, eb);
+                const int better = tie ? c->widened > b->widened : ec < eb;
                 if (isfinite(ec) && ec <= limit &&
-                    (pc < pb || (pc == pb && (sym_c > sym_b || (sym_c == sym_b && ec < eb))))) {
+                    (pc < pb || (pc == pb && (sym_c > sym_b || (sym_c == sym_b && better))))) {
                     *best = i;
                     *with_creep = wc;
                 }

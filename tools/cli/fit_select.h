@@ -64,6 +64,12 @@
  * of its range. */
 #define FIT_RESOLUTION 1e-6
 
+/* Two hold-out errors this close (a fraction of the larger) differ only in
+ * rounding: between as many parameters of the same kind's preference, the
+ * widened candidate wins then (it predicts where the other clamps), not the
+ * last digits. */
+#define FIT_TIE 1e-9
+
 /* The asymmetric kind is also fitted on a domain wider than the inputs' range
  * by this fraction of the range on each side: E continued beyond the inputs
  * it was identified on (monotone on the whole wider triangle, as the library
@@ -440,7 +446,8 @@ int fit_chosen_domain(const fit_candidate_t *c, const double *x, size_t skip, si
  * *with_creep its option: the fewest parameters within FIT_PARSIMONY of the
  * lowest hold-out RMS of all options; between as many parameters the
  * symmetric kind (its compensator is a table, the asymmetric kind's
- * solves), then the lower RMS ((size_t)-1: none could be scored). */
+ * solves), then the lower RMS, the widened one at a tie (FIT_TIE)
+ * ((size_t)-1: none could be scored). */
 size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_degree,
                   unsigned t_degree, unsigned max_parameters, double creep_tau, const double *x, const double *y,
                   size_t n, const fit_validation_t *v, size_t max_delay,
