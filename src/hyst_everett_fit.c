@@ -182,7 +182,7 @@ static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
 {
     enum { M = HYST_EVERETT_BERNSTEIN_MAX, N = HYST_EVERETT_FIT_COLS };
     hyst_wide_t v[M * N], rhs[M], lambda[M], passive[M], grad[M], set[M], b[M];
-    hyst_wide_t lp[(N - 1u) * (N - 1u)], coef[M], unorm = 0;
+    hyst_wide_t lp[(N - 1u) * (N - 1u)], coef[M], umax = 0, unorm = 0;
     hyst_everett_t unit;
     hyst_nnls_t p;
     const size_t n = fit->cols;
@@ -203,7 +203,10 @@ static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
         }
     }
     for (k = 0u; k < n; ++k) {
-        unorm += u[k] * u[k];
+        umax = hyst_wide_abs(u[k]) > umax ? hyst_wide_abs(u[k]) : umax;
+    }
+    for (k = 0u; umax > 0 && k < n; ++k) { /* |u| / umax: outputs whose squares overflow */
+        unorm += (u[k] / umax) * (u[k] / umax);
     }
     for (i = 0u; i < m; ++i) { /* v_i = L^-1 c_i, scaled to length 1 (same constraint) */
         hyst_wide_t *vi = v + i * N, len = 0;
@@ -234,7 +237,7 @@ static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
     p.l = lp;
     p.most = n - 1u; /* independent rows of V: at most its n - 1 non-zero entries */
     /* |rhs_i| <= |u|: a gradient below this share of it is rounding */
-    done = hyst_nnls_(&p, HYST_WIDE_SQRT(unorm) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m));
+    done = hyst_nnls_(&p, umax * HYST_WIDE_SQRT(unorm) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m));
     for (k = 0u; k < n; ++k) { /* z = u + V lambda, into s */
         s[k] = u[k];
         for (i = 0u; i < m; ++i) {
@@ -335,6 +338,9 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
             spread += u[i] * u[i];
         }
         spread = HYST_WIDE_SQRT(spread / (hyst_wide_t)fit->used);
+        if (!hyst_wide_is_finite(spread)) {
+            spread = 0; /* outputs whose squares overflow: E only has to rise */
+        }
         if (!(hyst_everett_range_(e) > spread * HYST_WIDE_EPS * (hyst_wide_t)(1000u * n))) {
             st = HYST_ERR_NOT_MONOTONE;
         }

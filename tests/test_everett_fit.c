@@ -364,6 +364,43 @@ static void test_offset_outputs_report_their_residual(void)
     }
 }
 
+/* Outputs so large that their squares overflow (1e200 times the plant's;
+ * float: 1e25): the same E, scaled, is fitted and accepted; the RMS is the
+ * scaled RMS where its own squares stay finite, else infinite, never 0. */
+static void test_huge_outputs_fit_the_scaled_e(void)
+{
+    static hyst_everett_fit_t fit;
+    const double scale = SETUP_IN_FLOAT ? 1e25 : 1e200;
+    double emax = 0.0;
+    hyst_everett_t e, big;
+    hyst_wide_t rms = -1, rms_big = -1;
+    unsigned i, j;
+    long k;
+    record_plant(0.0);
+    fit_record(&fit, 2u, PLANT_LO, PLANT_HI, RECORD);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve(&fit, &e, &rms));
+    for (k = 0; k < RECORD; ++k) {
+        ry[k] *= scale;
+    }
+    fit_record(&fit, 2u, PLANT_LO, PLANT_HI, RECORD);
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_everett_fit_solve(&fit, &big, &rms_big));
+    for (i = 0u; i < 2u; ++i) {
+        for (j = 0u; i + j < 2u; ++j) {
+            emax = fmax(emax, fabs((double)e.e[i][j]));
+        }
+    }
+    for (i = 0u; i < 2u; ++i) {
+        for (j = 0u; i + j < 2u; ++j) {
+            TEST_ASSERT_DOUBLE_WITHIN((SETUP_IN_FLOAT ? 1e-4 : 1e-9) * emax, (double)e.e[i][j],
+                                      (double)big.e[i][j] / scale);
+        }
+    }
+    TEST_ASSERT_TRUE(rms_big > 0);
+    if (isfinite((double)rms_big)) {
+        TEST_ASSERT_DOUBLE_WITHIN(1e-3 * (double)rms, (double)rms, (double)rms_big / scale);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -373,5 +410,6 @@ int main(void)
     RUN_TEST(test_major_loops_alone_are_singular_above_degree_2);
     RUN_TEST(test_flat_record_is_refused);
     RUN_TEST(test_offset_outputs_report_their_residual);
+    RUN_TEST(test_huge_outputs_fit_the_scaled_e);
     return UNITY_END();
 }

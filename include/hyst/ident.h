@@ -469,6 +469,8 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
  *         does; there the constrained E's Bernstein-Bezier coefficients
  *         are sign-correct only to what the dual's normal equations resolve
  *         in float (the curve's own proof accepts it all the same).
+ *         Outputs whose squares overflow hyst_wide_t fit as scaled ones
+ *         do; @p rms is then infinite where its own squares overflow.
  */
 hyst_status_t hyst_everett_fit_solve(const hyst_everett_fit_t *fit, hyst_everett_t *e,
                                      hyst_wide_t *rms);
