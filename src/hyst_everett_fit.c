@@ -39,10 +39,19 @@ static void add_terms(const hyst_everett_fit_t *f, hyst_wide_t a, hyst_wide_t b,
     }
 }
 
-/* Offset of row i of the m-column packed factor (row i: columns i..m-1). */
-static size_t row_at(size_t i, size_t m)
+/* |v| (n entries) without squaring the entries themselves: outputs whose
+ * squares overflow hyst_wide_t still have a finite norm. */
+static hyst_wide_t norm_of(const hyst_wide_t *v, size_t n)
 {
-    return i * m - i * (i - 1u) / 2u;
+    hyst_wide_t big = 0, sum = 0;
+    size_t k;
+    for (k = 0u; k < n; ++k) {
+        big = hyst_wide_abs(v[k]) > big ? hyst_wide_abs(v[k]) : big;
+    }
+    for (k = 0u; big > 0 && k < n; ++k) {
+        sum += (v[k] / big) * (v[k] / big);
+    }
+    return big * HYST_WIDE_SQRT(sum);
 }
 
 /* Rotates the row v (m entries, destroyed) into the factor R = D^1/2 U
@@ -55,7 +64,7 @@ static void rotate_in(hyst_wide_t *restrict r, size_t m, hyst_wide_t *restrict v
     hyst_wide_t w = 1; /* the row's weight, shrinking as it is rotated in */
     size_t i, j;
     for (i = 0u; i < m; ++i) {
-        hyst_wide_t *ri = r + row_at(i, m);
+        hyst_wide_t *ri = r + hyst_packed_row_(i, m);
         const hyst_wide_t vi = v[i];
         hyst_wide_t d, inv, c, s;
         if (vi == 0) {
@@ -182,7 +191,7 @@ static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
 {
     enum { M = HYST_EVERETT_BERNSTEIN_MAX, N = HYST_EVERETT_FIT_COLS };
     hyst_wide_t v[M * N], rhs[M], lambda[M], passive[M], grad[M], set[M], b[M];
-    hyst_wide_t lp[(N - 1u) * (N - 1u)], coef[M], umax = 0, unorm = 0;
+    hyst_wide_t lp[(N - 1u) * (N - 1u)], coef[M];
     hyst_everett_t unit;
     hyst_nnls_t p;
     const size_t n = fit->cols;
@@ -201,12 +210,6 @@ static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
                 v[i * N + col] = coef[i];
             }
         }
-    }
-    for (k = 0u; k < n; ++k) {
-        umax = hyst_wide_abs(u[k]) > umax ? hyst_wide_abs(u[k]) : umax;
-    }
-    for (k = 0u; umax > 0 && k < n; ++k) { /* |u| / umax: outputs whose squares overflow */
-        unorm += (u[k] / umax) * (u[k] / umax);
     }
     for (i = 0u; i < m; ++i) { /* v_i = L^-1 c_i, scaled to length 1 (same constraint) */
         hyst_wide_t *vi = v + i * N, len = 0;
@@ -237,7 +240,7 @@ static int monotone_solve(const hyst_everett_fit_t *fit, const hyst_wide_t *l,
     p.l = lp;
     p.most = n - 1u; /* independent rows of V: at most its n - 1 non-zero entries */
     /* |rhs_i| <= |u|: a gradient below this share of it is rounding */
-    done = hyst_nnls_(&p, umax * HYST_WIDE_SQRT(unorm) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m));
+    done = hyst_nnls_(&p, norm_of(u, n) * HYST_WIDE_EPS * (hyst_wide_t)(1000u * m));
     for (k = 0u; k < n; ++k) { /* z = u + V lambda, into s */
         s[k] = u[k];
         for (i = 0u; i < m; ++i) {
@@ -295,12 +298,12 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
     }
     m = n + 1u;
     for (k = 0u; k < m; ++k) {
-        root[k] = HYST_WIDE_SQRT(fit->r[row_at(k, m)]); /* D^1/2 */
+        root[k] = HYST_WIDE_SQRT(fit->r[hyst_packed_row_(k, m)]); /* D^1/2 */
     }
     for (i = 0u; i < n; ++i) {
         hyst_wide_t column = 0; /* |A's column i|^2 */
         for (k = 0u; k < i; ++k) {
-            l[i * N + k] = root[k] * fit->r[row_at(k, m) + (i - k)];
+            l[i * N + k] = root[k] * fit->r[hyst_packed_row_(k, m) + (i - k)];
             column += l[i * N + k] * l[i * N + k];
         }
         l[i * N + i] = root[i];
@@ -310,7 +313,7 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
               column * (HYST_WIDE_EPS * (hyst_wide_t)(1000u * n)) * (HYST_WIDE_EPS * (hyst_wide_t)(1000u * n)))) {
             return HYST_ERR_SINGULAR;
         }
-        u[i] = root[i] * fit->r[row_at(i, m) + (n - i)];
+        u[i] = root[i] * fit->r[hyst_packed_row_(i, m) + (n - i)];
         s[i] = u[i];
     }
     for (i = n; i-- > 0u;) { /* L' s = u */
@@ -331,15 +334,12 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
     }
     if (constrained && st == HYST_OK) {
         /* flat: an E that never rises, or by rounding of the outputs'
-         * spread about y_ref (|Q'y|^2 / used) only: the nearest monotone E
-         * of outputs that rise and fall */
-        hyst_wide_t spread = fit->r[row_at(n, m)];
-        for (i = 0u; i < n; ++i) {
-            spread += u[i] * u[i];
-        }
-        spread = HYST_WIDE_SQRT(spread / (hyst_wide_t)fit->used);
+         * spread about y_ref (|Q'y| / used^1/2) only: the nearest monotone
+         * E of outputs that rise and fall */
+        const hyst_wide_t parts[2] = {root[n], norm_of(u, n)};
+        hyst_wide_t spread = norm_of(parts, 2u) / HYST_WIDE_SQRT((hyst_wide_t)fit->used);
         if (!hyst_wide_is_finite(spread)) {
-            spread = 0; /* outputs whose squares overflow: E only has to rise */
+            spread = 0; /* the residual's own square overflowed: E only has to rise */
         }
         if (!(hyst_everett_range_(e) > spread * HYST_WIDE_EPS * (hyst_wide_t)(1000u * n))) {
             st = HYST_ERR_NOT_MONOTONE;
@@ -355,7 +355,7 @@ static hyst_status_t solve(const hyst_everett_fit_t *fit, hyst_everett_t *e, hys
     }
     /* residual: |Q'y - R s|^2, the rows of R and the part of y no column
      * reaches (R's last diagonal entry) */
-    ss = fit->r[row_at(n, m)];
+    ss = fit->r[hyst_packed_row_(n, m)];
     for (i = 0u; i < n; ++i) {
         hyst_wide_t d = u[i];
         for (k = i; k < n; ++k) {

@@ -10,12 +10,6 @@
 
 
 
-/* Offset of row i of an m-column packed upper-triangular factor. */
-static size_t row_at(unsigned i, unsigned m)
-{
-    return (size_t)i * m - (size_t)i * (i - 1u) / 2u;
-}
-
 /* T_0(t) .. T_n(t) into b[0..n]. */
 static void chebyshev(hyst_wide_t *b, unsigned n, hyst_wide_t t)
 {
@@ -74,7 +68,7 @@ static void givens_add(hyst_wide_t *restrict r, unsigned m, hyst_wide_t *restric
 {
     unsigned i, j;
     for (i = 0u; i < m; ++i) {
-        hyst_wide_t *ri = r + row_at(i, m);
+        hyst_wide_t *ri = r + hyst_packed_row_(i, m);
         hyst_wide_t a, rho, c, s;
         if (v[i] == 0) {
             continue;
@@ -301,11 +295,11 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
         return HYST_ERR_ARG;
     }
     for (i = 0u; i <= n; ++i) {
-        const hyst_wide_t d = hyst_wide_abs(id->r[row_at(i, m)]);
+        const hyst_wide_t d = hyst_wide_abs(id->r[hyst_packed_row_(i, m)]);
         big = d > big ? d : big;
     }
     for (i = 0u; i <= n; ++i) {
-        if (!(hyst_wide_abs(id->r[row_at(i, m)]) > big * HYST_WIDE_EPS * (hyst_wide_t)1000)) {
+        if (!(hyst_wide_abs(id->r[hyst_packed_row_(i, m)]) > big * HYST_WIDE_EPS * (hyst_wide_t)1000)) {
             return HYST_ERR_SINGULAR;
         }
     }
@@ -319,7 +313,7 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
     }
     /* back substitution with right-hand side b1 + s b2 */
     for (i = n + 1u; i-- > 0u;) {
-        const hyst_wide_t *ri = id->r + row_at(i, m);
+        const hyst_wide_t *ri = id->r + hyst_packed_row_(i, m);
         hyst_wide_t acc = ri[n + 1u - i] + s * ri[n + 2u - i];
         for (j = i + 1u; j <= n; ++j) {
             acc -= ri[j - i] * z[j];
@@ -341,9 +335,9 @@ hyst_status_t hyst_ident_solve(hyst_ident_t *id, hyst_ident_result_t *res)
             return HYST_ERR_ILL_CONDITIONED;
         }
     }
-    ra = id->r[row_at(n + 1u, m)];
-    rb = id->r[row_at(n + 1u, m) + 1u];
-    rc = id->r[row_at(n + 2u, m)];
+    ra = id->r[hyst_packed_row_(n + 1u, m)];
+    rb = id->r[hyst_packed_row_(n + 1u, m) + 1u];
+    rc = id->r[hyst_packed_row_(n + 2u, m)];
     ra += s * rb;
     rc *= s;
     out.used = id->rising + id->falling;

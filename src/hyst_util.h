@@ -281,6 +281,10 @@ typedef struct {
     size_t most;           /* 1..n */
 } hyst_nnls_t;
 
+/* Offset of row i of an m-column packed upper-triangular factor (row i holds
+ * columns i..m-1), as the fits of f0 and of E keep theirs. */
+HYST_INLINE size_t hyst_packed_row_(size_t i, size_t m) { return i * m - i * (i - 1u) / 2u; }
+
 /* Runs the problem f to its w (src/hyst_ident.c); returns 1 if it ends at the
  * optimum (no zero weight whose gradient exceeds tol), 0 if it ran out of
  * iterations (w is then feasible, not optimal). */

@@ -458,17 +458,18 @@ hyst_status_t hyst_everett_fit_add(hyst_everett_fit_t *fit, hyst_wide_t x, hyst_
  *         a rounding-level failure, or the E fitted is flat, E(hi, lo) not
  *         above the rounding of the outputs' spread: outputs that never
  *         rise, rise by less than the type resolves, or rise and fall
- *         (the nearest monotone E is then 0 up to rounding); @p e and @p rms hold it all the same); or what
- *         else the curve refuses that E with (in double, or in float
- *         without the f64 variant), HYST_ERR_ILL_CONDITIONED when its
- *         rounding bound exceeds HYST_MAX_ROUNDING of its range (an
- *         output offset far above the range); @p e and @p rms hold it
- *         then too. The factor is rotated from the rows themselves (no
- *         normal equations, whose condition number is the square of the
- *         regressors'), so HYST_NO_DOUBLE fits E of every degree as double
- *         does; there the constrained E's Bernstein-Bezier coefficients
- *         are sign-correct only to what the dual's normal equations resolve
- *         in float (the curve's own proof accepts it all the same).
+ *         (the nearest monotone E is then 0 up to rounding); @p e and
+ *         @p rms hold it all the same); or what else the curve refuses
+ *         that E with (in double, or in float without the f64 variant),
+ *         HYST_ERR_ILL_CONDITIONED when its rounding bound exceeds
+ *         HYST_MAX_ROUNDING of its range (an output offset far above the
+ *         range); @p e and @p rms hold it then too. The factor is rotated
+ *         from the rows themselves (no normal equations, whose condition
+ *         number is the square of the regressors'), so HYST_NO_DOUBLE fits
+ *         E of every degree as double does; there the constrained E's
+ *         Bernstein-Bezier coefficients are sign-correct only to what the
+ *         dual's normal equations resolve in float (the curve's own proof
+ *         accepts it all the same).
  *         Outputs whose squares overflow hyst_wide_t fit as scaled ones
  *         do; @p rms is then infinite where its own squares overflow.
  */
