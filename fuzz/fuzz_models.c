@@ -1235,6 +1235,23 @@ static void fuzz_ident(reader_t *rd, unsigned flags)
         }
         CHECK(st == s2);
         if (st == HYST_OK) CHECK(memcmp(res.coeffs, r2.coeffs, sizeof(res.coeffs)) == 0);
+        /* and once more at HYST_MAX_DEGREE, lowered to the degree: the same
+         * solve bit for bit (ident.h); errors write nothing */
+        c2.degree = HYST_MAX_DEGREE; /* on the domain found above */
+        if (hyst_ident_init(&id2, &c2) == HYST_OK) {
+            for (i = 0; i < count; ++i) (void)hyst_ident_add(&id2, recx[cfg.skip + i], recy[cfg.skip + cfg.delay + i]);
+            memcpy(&keep_id, &id, sizeof(id));
+            s2 = hyst_ident_lower_degree(&id2, cfg.degree, &id);
+            CHECK(s2 == (cfg.degree >= 1u && cfg.degree <= HYST_MAX_DEGREE ? HYST_OK : HYST_ERR_DEGREE));
+            if (s2 != HYST_OK) {
+                CHECK(memcmp(&id, &keep_id, sizeof(id)) == 0);
+            } else {
+                s2 = hyst_ident_solve(&id, &r2);
+                if (st == HYST_OK || st == HYST_ERR_SINGULAR || st == HYST_ERR_ILL_CONDITIONED) CHECK(s2 == st);
+                if (s2 == HYST_OK) CHECK(memcmp(res.coeffs, r2.coeffs, sizeof(res.coeffs)) == 0);
+                if (s2 == HYST_OK) CHECK(hyst_ident_lower_degree(&id, 1u, &id2) == HYST_ERR_ARG); /* solved */
+            }
+        }
     }
 }
 

@@ -236,6 +236,52 @@ hyst_status_t hyst_ident_add(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y)
     return HYST_OK;
 }
 
+hyst_status_t hyst_ident_lower_degree(const hyst_ident_t *id, unsigned degree,
+                                      hyst_ident_t *lower)
+{
+    hyst_ident_t out;
+    unsigned n, m, big_m, i, j;
+    if (id == NULL || lower == NULL) {
+        return HYST_ERR_NULL;
+    }
+    if (id->phase != 0) {
+        return HYST_ERR_ARG;
+    }
+    if (degree < 1u || degree > id->degree) {
+        return HYST_ERR_DEGREE;
+    }
+    n = id->degree;
+    big_m = n + 3u;
+    m = degree + 3u;
+    out = *id;
+    out.degree = degree;
+    for (i = 0u; i < sizeof(out.r) / sizeof(out.r[0]); ++i) {
+        out.r[i] = 0;
+    }
+    /* T_0..T_degree are the first columns of both: their rows as they are,
+     * each followed by its entries of the y and reflect columns */
+    for (i = 0u; i <= degree; ++i) {
+        const hyst_wide_t *from = id->r + hyst_packed_row_(i, big_m);
+        hyst_wide_t *to = out.r + hyst_packed_row_(i, m);
+        for (j = i; j <= degree; ++j) {
+            to[j - i] = from[j - i];
+        }
+        to[degree + 1u - i] = from[n + 1u - i];
+        to[degree + 2u - i] = from[n + 2u - i];
+    }
+    /* what no lower column reaches: the y and reflect entries of the higher
+     * rows and the trailing triangle, rotated into the new trailing one */
+    for (i = degree + 1u; i < big_m; ++i) {
+        const hyst_wide_t *from = id->r + hyst_packed_row_(i, big_m);
+        hyst_wide_t v[2];
+        v[0] = i <= n + 1u ? from[n + 1u - i] : 0;
+        v[1] = from[n + 2u - i];
+        givens_add(out.r + hyst_packed_row_(degree + 1u, m), 2u, v);
+    }
+    *lower = out;
+    return HYST_OK;
+}
+
 /* Power coefficients in x, highest first, of sum a_k T_k((x - mid) * inv_half). */
 static void to_user_units(hyst_wide_t *out, const hyst_wide_t *a, unsigned n,
                           hyst_wide_t mid, hyst_wide_t inv_half)

@@ -615,6 +615,92 @@ static void test_piezo_fit_first_half_predicts_second_half(void)
     TEST_ASSERT_TRUE(results[1] < results[0]); /* why JOINT is the default */
 }
 
+/* Degrees 1..8 from one pass at degree 9: each solves as an instance of that
+ * degree fed the same samples, up to rounding (both estimators), and takes
+ * more samples after it; errors write nothing. */
+static void test_lower_degree_solves_as_each_degree_fitted_alone(void)
+{
+    const int methods[2] = {HYST_IDENT_JOINT, HYST_IDENT_REFLECT};
+    const size_t n = simulate_sine(&paper_eq20, 400, 4, 0.05);
+    static hyst_ident_t high, lower, alone;
+    hyst_ident_config_t cfg = {0};
+    hyst_ident_result_t a, b;
+    const double eps = SETUP_IN_FLOAT ? FLT_EPSILON : DBL_EPSILON; /* the fit's */
+    double worst = 0.0, range;
+    hyst_status_t st;
+    size_t i;
+    unsigned d, j, solved = 0u;
+    int m;
+    cfg.lo = paper_eq20.lo;
+    cfg.hi = paper_eq20.hi;
+    for (range = 0.0, j = 0u; j < 4u; ++j) { /* f0(hi) - f0(lo), lo = 0 */
+        range = range * (double)paper_eq20.hi + paper_eq20_coeffs[j];
+    }
+    range -= paper_eq20_coeffs[3];
+    for (m = 0; m < 2; ++m) {
+        cfg.method = methods[m];
+        cfg.degree = HYST_MAX_DEGREE;
+        TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_init(&high, &cfg));
+        for (i = 0u; i < n / 2u; ++i) {
+            (void)hyst_ident_add(&high, xs[i], ys[i]);
+        }
+        for (d = 1u; d < HYST_MAX_DEGREE; ++d) {
+            cfg.degree = d;
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_init(&alone, &cfg));
+            TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_lower_degree(&high, d, &lower));
+            for (i = 0u; i < n; ++i) { /* the rest after the lowering */
+                (void)hyst_ident_add(&alone, xs[i], ys[i]);
+                if (i >= n / 2u) {
+                    (void)hyst_ident_add(&lower, xs[i], ys[i]);
+                }
+            }
+            /* in float, degrees whose powers of 40 the curve cannot hold
+             * are refused by both */
+            st = hyst_ident_solve(&alone, &a);
+            TEST_ASSERT_EQUAL_INT(st, hyst_ident_solve(&lower, &b));
+            TEST_ASSERT_TRUE(st == HYST_OK || (SETUP_IN_FLOAT && st == HYST_ERR_ILL_CONDITIONED));
+            if (st != HYST_OK) {
+                continue;
+            }
+            ++solved;
+            TEST_ASSERT_EQUAL_UINT(d, b.degree);
+            TEST_ASSERT_EQUAL_UINT((unsigned)a.rising, (unsigned)b.rising);
+            TEST_ASSERT_EQUAL_UINT((unsigned)a.falling, (unsigned)b.falling);
+            TEST_ASSERT_EQUAL_INT(a.increasing, b.increasing);
+            /* the rows of T_0..T_d and their outputs' entries are the same
+             * rotations: the solution bit for bit; the residual, rotated
+             * into the trailing rows in another order, up to rounding */
+            TEST_ASSERT_EQUAL_MEMORY(a.coeffs, b.coeffs, sizeof a.coeffs);
+            worst = fabs((double)(a.rms - b.rms)) > worst ? fabs((double)(a.rms - b.rms)) : worst;
+            TEST_ASSERT_DOUBLE_WITHIN(1e3 * eps * range, (double)a.rms, (double)b.rms);
+        }
+    }
+    printf("lowered degrees: %u solved, the same f0; RMS within %.3g of each fitted alone\n",
+           solved, worst);
+    TEST_ASSERT_TRUE(solved >= (SETUP_IN_FLOAT ? 6u : 2u * (HYST_MAX_DEGREE - 1u)));
+    /* lowered in place; errors leave the target as it was */
+    cfg.degree = HYST_MAX_DEGREE;
+    cfg.method = HYST_IDENT_JOINT;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_init(&high, &cfg));
+    for (i = 0u; i < n; ++i) {
+        (void)hyst_ident_add(&high, xs[i], ys[i]);
+    }
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_lower_degree(&high, 3u, &lower));
+    alone = high;
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_lower_degree(&alone, 3u, &alone));
+    TEST_ASSERT_EQUAL_MEMORY(&lower, &alone, sizeof lower);
+    alone = lower;
+    UNCHANGED(&alone, &lower, HYST_ERR_NULL, hyst_ident_lower_degree(NULL, 3u, &lower));
+    TEST_ASSERT_EQUAL_INT(HYST_ERR_NULL, hyst_ident_lower_degree(&high, 3u, NULL));
+    UNCHANGED(&alone, &lower, HYST_ERR_DEGREE, hyst_ident_lower_degree(&high, 0u, &lower));
+    UNCHANGED(&alone, &lower, HYST_ERR_DEGREE, hyst_ident_lower_degree(&alone, 4u, &lower));
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_lower_degree(&high, HYST_MAX_DEGREE, &alone));
+    TEST_ASSERT_EQUAL_MEMORY(&high, &alone, sizeof alone); /* its own degree: itself */
+    TEST_ASSERT_EQUAL_INT(HYST_OK, hyst_ident_solve(&lower, &a)); /* solved: no longer lowered */
+    alone = lower;
+    UNCHANGED(&alone, &lower, HYST_ERR_ARG, hyst_ident_lower_degree(&lower, 2u, &lower));
+}
+
 int main(void)
 {
     hyst_port_init();
@@ -632,5 +718,6 @@ int main(void)
     RUN_TEST(test_streaming_api_and_sample_errors);
     RUN_TEST(test_bad_arguments_are_refused);
     RUN_TEST(test_piezo_fit_first_half_predicts_second_half);
+    RUN_TEST(test_lower_degree_solves_as_each_degree_fitted_alone);
     return UNITY_END();
 }

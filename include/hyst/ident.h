@@ -167,6 +167,22 @@ hyst_status_t hyst_ident_init_(hyst_ident_t *id, const hyst_ident_config_t *cfg,
 hyst_status_t hyst_ident_add(hyst_ident_t *id, hyst_wide_t x, hyst_wide_t y);
 
 /**
+ * @brief The identification of a lower degree on the samples added so far.
+ *
+ * Fitting every degree up to n on one record costs one pass at degree n:
+ * @p lower becomes what an instance of @p degree holds once fed the same
+ * samples (its columns are a prefix of @p id's, rotated alike: its solution
+ * is the same bit for bit, its least-squares RMS the same up to rounding),
+ * ready for more samples or hyst_ident_solve(). @p id is not changed;
+ * @p lower may be @p id.
+ * @return HYST_OK; HYST_ERR_NULL; HYST_ERR_ARG (@p id already solved);
+ *         HYST_ERR_DEGREE (@p degree 0 or above @p id's). Nothing is
+ *         written on error.
+ */
+hyst_status_t hyst_ident_lower_degree(const hyst_ident_t *id, unsigned degree,
+                                      hyst_ident_t *lower);
+
+/**
  * @brief Solves the least-squares problem of the samples added so far.
  *
  * Fills @p res (coefficients in user units, highest power first; domain;

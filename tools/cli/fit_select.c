@@ -184,10 +184,29 @@ size_t fit_max_delay(const double *x, size_t from, size_t to)
     return d < FIT_MAX_DELAY ? FIT_MAX_DELAY : d > FIT_MAX_SCALED_DELAY ? FIT_MAX_SCALED_DELAY : d;
 }
 
+/* f0's first pass at HYST_MAX_DEGREE over one split of one record (the
+ * part fitted: its domain, method, skip, delay and samples), from which the
+ * fit of every lower degree is lowered (hyst_ident_lower_degree(): the same
+ * f0 bit for bit) instead of passing over the record once per degree. */
+typedef struct poly_pass {
+    int valid;
+    hyst_ident_config_t part; /* its degree HYST_MAX_DEGREE */
+    const double *x, *y;      /* the record (y: before a split's mask) */
+    size_t n, count;
+    int split;
+    hyst_status_t status; /* of the pass: HYST_OK, or why no degree fits */
+    hyst_ident_t id;
+} poly_pass_t;
+
+/* One per split and widening: the candidates of one delay take turns. */
+typedef struct poly_passes {
+    poly_pass_t pass[FIT_SPLITS][2];
+} poly_passes_t;
+
 static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degree, int widened,
                       const double *x, const double *y, size_t n, const fit_validation_t *v,
-                      hyst_status_t *status, hyst_ident_result_t *poly, fit_everett_result_t *ev,
-                      fit_creep_t *creep, double *last_third);
+                      poly_passes_t *passes, hyst_status_t *status, hyst_ident_result_t *poly,
+                      fit_everett_result_t *ev, fit_creep_t *creep, double *last_third);
 
 size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
                        size_t n, const fit_validation_t *v, size_t max_delay)
@@ -202,7 +221,7 @@ size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const d
         double e;
         cfg.degree = 3u;
         cfg.delay = d;
-        e = holdout(&cfg, FIT_POLY, 0u, 0, x, y, n, v, &st, &fit, &unused, NULL, NULL);
+        e = holdout(&cfg, FIT_POLY, 0u, 0, x, y, n, v, NULL, &st, &fit, &unused, NULL, NULL);
         if (isfinite(e) && !(lowest <= e)) {
             lowest = e;
             best = d;
@@ -414,15 +433,66 @@ hyst_status_t fit_record_finish(int kind, const hyst_ident_config_t *cfg, const 
     return HYST_OK;
 }
 
+/* The fits of two parts differ in nothing but their degree. */
+static int same_part(const hyst_ident_config_t *a, const hyst_ident_config_t *b)
+{
+    return a->method == b->method && a->lo == b->lo && a->hi == b->hi && a->skip == b->skip &&
+           a->delay == b->delay;
+}
+
+/* hyst_ident_fit() of part, its first pass lowered from the pass at
+ * HYST_MAX_DEGREE over the same samples, made first when pass is not valid
+ * (the caller has set its key). */
+static hyst_status_t poly_fit_lowered(const hyst_ident_config_t *part, const double *x,
+                                      const double *y, size_t count, poly_pass_t *pass,
+                                      hyst_ident_t *work, hyst_ident_result_t *res)
+{
+    hyst_status_t st;
+    size_t i;
+    if (!pass->valid) {
+        hyst_ident_config_t high = *part;
+        high.degree = HYST_MAX_DEGREE;
+        pass->part = high;
+        pass->valid = 1;
+        pass->status = part->skip >= count || part->delay >= count - part->skip ? HYST_ERR_ARG
+                                                                             : HYST_OK;
+        if (pass->status == HYST_OK && high.lo == high.hi) { /* as hyst_ident_fit() takes it */
+            pass->status = hyst_ident_domain(x + high.skip, count - high.skip - high.delay,
+                                             &high.lo, &high.hi);
+        }
+        if (pass->status == HYST_OK) {
+            pass->status = hyst_ident_init(&pass->id, &high);
+        }
+        for (i = high.skip; pass->status == HYST_OK && i + high.delay < count; ++i) {
+            (void)hyst_ident_add(&pass->id, x[i], y[i + high.delay]);
+        }
+    }
+    if (pass->status != HYST_OK) {
+        return pass->status;
+    }
+    st = hyst_ident_lower_degree(&pass->id, part->degree, work);
+    if (st == HYST_OK) {
+        st = hyst_ident_solve(work, res);
+    }
+    if (st != HYST_OK) {
+        return st;
+    }
+    for (i = part->skip; i + part->delay < count; ++i) {
+        (void)hyst_ident_check(work, x[i], y[i + part->delay]);
+    }
+    return hyst_ident_residuals(work, res);
+}
+
 /* The model of kind `kind` fitted to x[k] with y[k + delay], part->skip <= k
  * < count - delay (part: degree, delay, domain, method): f0 into *f0
- * (FIT_POLY) or the curve into *curve (its grid's table static). 0, or 1
- * when the fit failed, f0 is not increasing or the library refused E
+ * (FIT_POLY; lowered from *pass when not NULL, which holds the same samples'
+ * pass or gets it) or the curve into *curve (its grid's table static). 0,
+ * or 1 when the fit failed, f0 is not increasing or the library refused E
  * (*status says which). */
 static int model_fit(const hyst_ident_config_t *part, int kind, unsigned t_degree,
-                     const double *x, const double *y, size_t count, hyst_status_t *status,
-                     hyst_ident_result_t *poly, fit_everett_result_t *ev, hyst_poly_t *f0,
-                     hyst_curve_t *curve)
+                     const double *x, const double *y, size_t count, poly_pass_t *pass,
+                     hyst_status_t *status, hyst_ident_result_t *poly, fit_everett_result_t *ev,
+                     hyst_poly_t *f0, hyst_curve_t *curve)
 {
     unsigned i;
     if (kind != FIT_POLY) {
@@ -436,7 +506,8 @@ static int model_fit(const hyst_ident_config_t *part, int kind, unsigned t_degre
     }
     {
         hyst_ident_t work;
-        *status = hyst_ident_fit(part, x, y, count, &work, poly);
+        *status = pass != NULL ? poly_fit_lowered(part, x, y, count, pass, &work, poly)
+                               : hyst_ident_fit(part, x, y, count, &work, poly);
         if (*status != HYST_OK || !poly->increasing) {
             return 1;
         }
@@ -462,8 +533,9 @@ static int model_fit(const hyst_ident_config_t *part, int kind, unsigned t_degre
  * same parts. */
 static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t_degree,
                             int widened, const double *x, const double *y, size_t n, int split,
-                            size_t settle, hyst_status_t *status, hyst_ident_result_t *poly,
-                            fit_everett_result_t *ev, fit_creep_t *creep)
+                            size_t settle, poly_passes_t *passes, hyst_status_t *status,
+                            hyst_ident_result_t *poly, fit_everett_result_t *ev,
+                            fit_creep_t *creep)
 {
     const size_t len = n > cfg->skip + cfg->delay ? n - cfg->skip - cfg->delay : 0u;
     const size_t train = len > 0u ? train_count(n, cfg->skip, cfg->delay) : 0u;
@@ -471,6 +543,7 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
     const size_t to = split == 0 ? n : cfg->skip + (split == 2 ? len / 3u : train);
     const size_t count = split == 0 ? from + cfg->delay : n; /* the samples fitted end here */
     hyst_ident_config_t part = *cfg;
+    poly_pass_t *pass = NULL;
     double *masked = NULL;
     const double *yf = y;
     hyst_curve_t curve;
@@ -511,7 +584,19 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
         part.lo = lo;
         part.hi = hi;
     }
-    if (model_fit(&part, kind, t_degree, x, yf, count, status, poly, ev, &f0, &curve) != 0) {
+    if (passes != NULL) { /* the pass is of this split's part of the record */
+        pass = &passes->pass[split][widened != 0];
+        if (pass->valid && !(pass->x == x && pass->y == y && pass->n == n && pass->split == split &&
+                             pass->count == count && same_part(&pass->part, &part))) {
+            pass->valid = 0;
+        }
+        pass->x = x;
+        pass->y = y;
+        pass->n = n;
+        pass->split = split;
+        pass->count = count;
+    }
+    if (model_fit(&part, kind, t_degree, x, yf, count, pass, status, poly, ev, &f0, &curve) != 0) {
         free(masked);
         return NAN;
     }
@@ -559,7 +644,7 @@ static double validated(const hyst_ident_config_t *cfg, int kind, unsigned t_deg
         fit_widened_domain(lo, hi, fit_first_input(x, cfg->skip, n - cfg->delay), &whole.lo,
                            &whole.hi);
     }
-    if (model_fit(&whole, kind, t_degree, x, y, n, status, poly, ev, &f0, &curve) != 0) {
+    if (model_fit(&whole, kind, t_degree, x, y, n, NULL, status, poly, ev, &f0, &curve) != 0) {
         return NAN;
     }
     fp = kind == FIT_POLY ? &f0 : NULL;
@@ -598,8 +683,8 @@ static double validated(const hyst_ident_config_t *cfg, int kind, unsigned t_deg
  * the creep's hold-out over every split at that time constant. */
 static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degree, int widened,
                       const double *x, const double *y, size_t n, const fit_validation_t *v,
-                      hyst_status_t *status, hyst_ident_result_t *poly, fit_everett_result_t *ev,
-                      fit_creep_t *creep, double *last_third)
+                      poly_passes_t *passes, hyst_status_t *status, hyst_ident_result_t *poly,
+                      fit_everett_result_t *ev, fit_creep_t *creep, double *last_third)
 {
     hyst_ident_result_t poly_other;
     fit_everett_result_t ev_other;
@@ -621,7 +706,8 @@ static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degre
         }
         return resolved(e, resolution);
     }
-    e = holdout_split(cfg, kind, t_degree, widened, x, y, n, 0, settle, status, poly, ev, creep);
+    e = holdout_split(cfg, kind, t_degree, widened, x, y, n, 0, settle, passes, status, poly, ev,
+                      creep);
     ss = e * e;
     if (last_third != NULL) {
         *last_third = e;
@@ -639,8 +725,8 @@ static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degre
         const int terms = creep != NULL && (creep->tau > 0 || creep->rate_tau > 0);
         creep_other.tau = creep != NULL ? creep->tau : 0.0;
         creep_other.rate_tau = creep != NULL ? creep->rate_tau : 0.0;
-        e = holdout_split(cfg, kind, t_degree, widened, x, y, n, split, settle, &st, &poly_other,
-                          &ev_other, terms ? &creep_other : NULL);
+        e = holdout_split(cfg, kind, t_degree, widened, x, y, n, split, settle, passes, &st,
+                          &poly_other, &ev_other, terms ? &creep_other : NULL);
         ss += e * e;
         ++splits;
         if (terms) {
@@ -665,7 +751,8 @@ double fit_tcm_holdout(const hyst_ident_config_t *cfg, const double *x, const do
                        fit_creep_t *creep, double *last_third)
 {
     fit_everett_result_t unused;
-    return holdout(cfg, FIT_POLY, 0u, 0, x, y, n, NULL, status, fit, &unused, creep, last_third);
+    return holdout(cfg, FIT_POLY, 0u, 0, x, y, n, NULL, NULL, status, fit, &unused, creep,
+                   last_third);
 }
 
 double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, const double *x,
@@ -673,7 +760,7 @@ double fit_everett_holdout(const hyst_ident_config_t *cfg, unsigned t_degree, co
                            fit_everett_result_t *fit, fit_creep_t *creep, double *last_third)
 {
     hyst_ident_result_t unused;
-    return holdout(cfg, FIT_EVERETT, t_degree, 0, x, y, n, NULL, status, &unused, fit, creep,
+    return holdout(cfg, FIT_EVERETT, t_degree, 0, x, y, n, NULL, NULL, status, &unused, fit, creep,
                    last_third);
 }
 
@@ -682,7 +769,7 @@ double fit_grid_holdout(const hyst_ident_config_t *cfg, const double *x, const d
                         fit_creep_t *creep, double *last_third)
 {
     hyst_ident_result_t unused;
-    return holdout(cfg, FIT_GRID, 0u, 0, x, y, n, NULL, status, &unused, fit, creep,
+    return holdout(cfg, FIT_GRID, 0u, 0, x, y, n, NULL, NULL, status, &unused, fit, creep,
                    last_third);
 }
 
@@ -717,11 +804,10 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
-/* Candidate c fitted and scored: kind, degree (t_degree) and delay set by
- * the caller; with a creep term too unless creep_tau < 0 (0: its time
- * constant chosen). */
-void fit_score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-               const fit_validation_t *v, double creep_tau, fit_candidate_t *c)
+/* fit_score(), f0's fits lowered from *passes (may be NULL). */
+static void score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+                  const fit_validation_t *v, poly_passes_t *passes, double creep_tau,
+                  fit_candidate_t *c)
 {
     hyst_ident_config_t cfg = *base;
     fit_creep_t *creep = creep_tau >= 0 ? &c->creep : NULL;
@@ -732,19 +818,28 @@ void fit_score(const hyst_ident_config_t *base, const double *x, const double *y
     if (c->kind == FIT_EVERETT || c->kind == FIT_GRID || c->kind == FIT_SPLINE) {
         fit_everett_result_t ev;
         hyst_ident_result_t unused;
-        c->holdout_rms = holdout(&cfg, c->kind, c->t_degree, c->widened, x, y, n, v,
+        c->holdout_rms = holdout(&cfg, c->kind, c->t_degree, c->widened, x, y, n, v, passes,
                                  &c->status, &unused, &ev, creep, &c->last_third_rms);
         c->fit_rms = ev.rms;
     } else {
         fit_everett_result_t unused;
-        c->holdout_rms = holdout(&cfg, FIT_POLY, 0u, c->widened, x, y, n, v, &c->status, &c->fit,
-                                 &unused, creep, &c->last_third_rms);
+        c->holdout_rms = holdout(&cfg, FIT_POLY, 0u, c->widened, x, y, n, v, passes, &c->status,
+                                 &c->fit, &unused, creep, &c->last_third_rms);
         c->fit_rms = (double)c->fit.rms;
     }
     if (!isfinite(c->holdout_rms)) {
         c->creep.tau = 0.0; /* the model itself could not be scored */
         c->creep.holdout_rms = NAN;
     }
+}
+
+/* Candidate c fitted and scored: kind, degree (t_degree) and delay set by
+ * the caller; with a creep term too unless creep_tau < 0 (0: its time
+ * constant chosen). */
+void fit_score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
+               const fit_validation_t *v, double creep_tau, fit_candidate_t *c)
+{
+    score(base, x, y, n, v, NULL, creep_tau, c);
 }
 
 void fit_delay_fraction(const double *x, size_t n, double f, double *xf)
@@ -779,9 +874,9 @@ unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
  * unless cand is full or the model has more than max_parameters (when not
  * 0). */
 static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                const fit_validation_t *v, double creep_tau, unsigned max_parameters, int kind,
-                unsigned degree, unsigned t_degree, size_t delay, int widened,
-                fit_candidate_t *cand, size_t max_cand, size_t *count)
+                const fit_validation_t *v, poly_passes_t *passes, double creep_tau,
+                unsigned max_parameters, int kind, unsigned degree, unsigned t_degree,
+                size_t delay, int widened, fit_candidate_t *cand, size_t max_cand, size_t *count)
 {
     fit_candidate_t *c = &cand[*count];
     if (*count >= max_cand ||
@@ -794,7 +889,7 @@ static void add(const hyst_ident_config_t *base, const double *x, const double *
     c->t_degree = t_degree;
     c->delay = delay;
     c->widened = widened;
-    fit_score(base, x, y, n, v, creep_tau, c);
+    score(base, x, y, n, v, passes, creep_tau, c);
     ++*count;
 }
 
@@ -803,6 +898,8 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
                   size_t n, const fit_validation_t *v, size_t max_delay,
                   fit_candidate_t *cand, size_t max_cand, size_t *best, int *with_creep)
 {
+    poly_passes_t one_delay; /* every poly candidate of a delay lowered from its passes */
+    poly_passes_t *const passes = &one_delay;
     size_t count = 0u, d;
     unsigned deg, k;
     int widen = 0, w;
@@ -815,6 +912,7 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
      * at its last slope above its inputs). Not the grid: its cells beyond
      * the inputs see no data, and their masses 0 hold the output as
      * clamping does. */
+    memset(&one_delay, 0, sizeof one_delay);
     if (v != NULL && !(base->lo < base->hi) && n > base->skip + base->delay) {
         fit_excitation_t e; /* the validation record's inputs leave the record's range */
         fit_validation_excitation(x, base->skip, n - base->delay, v, base->delay, &e);
@@ -834,17 +932,17 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
         }
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
             for (w = 0; w <= widen; ++w) {
-                add(base, x, y, n, v, creep_tau, max_parameters, FIT_POLY, deg, 0u, d, w, cand,
-                    max_cand, &count);
+                add(base, x, y, n, v, passes, creep_tau, max_parameters, FIT_POLY, deg, 0u, d, w,
+                    cand, max_cand, &count);
             }
         }
         for (k = 0u; (kinds & FIT_GRID) != 0 && k < FIT_GRID_CANDIDATES; ++k) {
-            add(base, x, y, n, v, creep_tau, max_parameters, FIT_GRID, FIT_GRID_INTERVALS(k), 0u,
+            add(base, x, y, n, v, NULL, creep_tau, max_parameters, FIT_GRID, FIT_GRID_INTERVALS(k), 0u,
                 d, 0, cand, max_cand, &count);
         }
         for (k = 0u; (kinds & FIT_SPLINE) != 0 && k < FIT_SPLINE_CANDIDATES; ++k) {
             for (w = 0; w <= widen; ++w) {
-                add(base, x, y, n, v, creep_tau, max_parameters, FIT_SPLINE,
+                add(base, x, y, n, v, NULL, creep_tau, max_parameters, FIT_SPLINE,
                     FIT_SPLINE_INTERVALS(k), 0u, d, w, cand, max_cand, &count);
             }
         }
@@ -852,8 +950,8 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
             for (k = 0u; k < deg && (everett_degree == 0u || deg == everett_degree); ++k) {
                 for (w = 0; w <= widen; ++w) {
                     if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
-                        add(base, x, y, n, v, creep_tau, max_parameters, FIT_EVERETT, deg, k, d,
-                            w, cand, max_cand, &count);
+                        add(base, x, y, n, v, NULL, creep_tau, max_parameters, FIT_EVERETT, deg, k,
+                            d, w, cand, max_cand, &count);
                     }
                 }
             }
@@ -920,7 +1018,7 @@ static double kind_holdout(const hyst_ident_config_t *base, int kind, unsigned t
     fit_everett_result_t ev;
     hyst_ident_result_t poly;
     cfg.delay = d;
-    return holdout(&cfg, kind, t_degree, 0, x, y, n, v, &st, &poly, &ev, NULL, NULL);
+    return holdout(&cfg, kind, t_degree, 0, x, y, n, v, NULL, &st, &poly, &ev, NULL, NULL);
 }
 
 /* v with its drive a fraction f of a sample later, in vxf (v's rows) and
