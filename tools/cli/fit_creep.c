@@ -207,11 +207,64 @@ void fit_terms_part(const double *u, const double *r, size_t len, size_t from, s
     free(s);
 }
 
+/* The states of creep_taus[0..count) over u[0..len) from rest at x_rest:
+ * a run lags keeps of the same inputs from the same rest, or computed, and
+ * kept in lags (may be NULL) in place of the run used longest ago, else
+ * into *owned (the caller's to free). NULL when out of memory or a lag is
+ * refused. */
+static const double *series_states(fit_lags_t *lags, const double *u, size_t len, double x_rest,
+                                   size_t count, double **owned)
+{
+    fit_lag_run_t *run = NULL;
+    double *s, *copy;
+    size_t i;
+    *owned = NULL;
+    for (i = 0u; lags != NULL && i < FIT_LAG_RUNS; ++i) {
+        fit_lag_run_t *r = &lags->run[i];
+        if (r->u != NULL && r->len == len && r->x_rest == x_rest &&
+            memcmp(r->u, u, len * sizeof *u) == 0) {
+            r->used = ++lags->clock;
+            return r->s;
+        }
+        run = run == NULL || r->used < run->used ? r : run;
+    }
+    if ((s = (double *)malloc(count * len * sizeof(double))) == NULL ||
+        lag_states(u, len, x_rest, creep_taus, count, s) != 0) {
+        free(s);
+        return NULL;
+    }
+    if (run == NULL || (copy = (double *)malloc(len * sizeof *u)) == NULL) {
+        *owned = s;
+        return s;
+    }
+    free(run->u);
+    free(run->s);
+    memcpy(copy, u, len * sizeof *u);
+    run->u = copy;
+    run->s = s;
+    run->len = len;
+    run->x_rest = x_rest;
+    run->used = ++lags->clock;
+    return s;
+}
+
+void fit_lags_free(fit_lags_t *lags)
+{
+    size_t i;
+    for (i = 0u; i < FIT_LAG_RUNS; ++i) {
+        free(lags->run[i].u);
+        free(lags->run[i].s);
+    }
+    memset(lags, 0, sizeof *lags);
+}
+
 void fit_creep_score_part(const double *u, const double *r, size_t len, size_t from, size_t to,
-                          size_t score_from, double x_rest, double tau, fit_creep_t *best)
+                          size_t score_from, double x_rest, double tau, fit_lags_t *lags,
+                          fit_creep_t *best)
 {
     size_t i, count = 0u;
-    double *s;
+    const double *s;
+    double *owned;
     if (tau > 0) {
         fit_terms_part(u, r, len, from, to, score_from, x_rest, tau, 0.0, best);
         return;
@@ -222,25 +275,23 @@ void fit_creep_score_part(const double *u, const double *r, size_t len, size_t f
     while (count < CREEP_TAUS && creep_taus[count] <= (double)len) {
         ++count;
     }
-    if (count == 0u || (s = (double *)malloc(count * len * sizeof(double))) == NULL) {
+    if (count == 0u || (s = series_states(lags, u, len, x_rest, count, &owned)) == NULL) {
         return;
     }
-    if (lag_states(u, len, x_rest, creep_taus, count, s) == 0) {
-        for (i = 0u; i < count; ++i) {
-            fit_creep_t c;
-            terms_score(s + i * len, NULL, r, len, from, to, score_from, creep_taus[i], 0.0, &c);
-            if (isfinite(c.holdout_rms) && !(best->holdout_rms <= c.holdout_rms)) {
-                *best = c;
-            }
+    for (i = 0u; i < count; ++i) {
+        fit_creep_t c;
+        terms_score(s + i * len, NULL, r, len, from, to, score_from, creep_taus[i], 0.0, &c);
+        if (isfinite(c.holdout_rms) && !(best->holdout_rms <= c.holdout_rms)) {
+            *best = c;
         }
     }
-    free(s);
+    free(owned);
 }
 
 void fit_creep_score(const double *u, const double *r, size_t len, size_t train, double x_rest,
                      double tau, fit_creep_t *best)
 {
-    fit_creep_score_part(u, r, len, train, len, train, x_rest, tau, best);
+    fit_creep_score_part(u, r, len, train, len, train, x_rest, tau, NULL, best);
 }
 
 /* The RMS of what the terms leave of r2 over its finite entries, their

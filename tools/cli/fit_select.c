@@ -198,14 +198,16 @@ typedef struct poly_pass {
     hyst_ident_t id;
 } poly_pass_t;
 
-/* One per split and widening: the candidates of one delay take turns. */
-typedef struct poly_passes {
+/* What the candidates of one delay share: f0's reuse, one per split and
+ * widening, and the creep lags' states of the runs they make. */
+typedef struct reuse {
     poly_pass_t pass[FIT_SPLITS][2];
-} poly_passes_t;
+    fit_lags_t lags;
+} reuse_t;
 
 static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degree, int widened,
                       const double *x, const double *y, size_t n, const fit_validation_t *v,
-                      poly_passes_t *passes, hyst_status_t *status, hyst_ident_result_t *poly,
+                      reuse_t *reuse, hyst_status_t *status, hyst_ident_result_t *poly,
                       fit_everett_result_t *ev, fit_creep_t *creep, double *last_third);
 
 size_t fit_cheap_delay(const hyst_ident_config_t *base, const double *x, const double *y,
@@ -299,7 +301,7 @@ static int model_residual(const hyst_poly_t *f0, const hyst_curve_t *curve, cons
 static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const double *x,
                         const double *y, size_t n, size_t skip, size_t delay, size_t from,
                         size_t to, int part, size_t score_from, double *before_rms,
-                        double *max_abs, fit_creep_t *creep)
+                        double *max_abs, fit_creep_t *creep, fit_lags_t *lags)
 {
     const size_t len = n > delay + skip ? n - delay - skip : 0u;
     double *u, *r, ss = 0.0, ss_before = 0.0, worst = 0.0;
@@ -351,11 +353,10 @@ static double model_run(const hyst_poly_t *f0, const hyst_curve_t *curve, const 
             fit_terms_part(u, r, len, at, part ? (to > skip ? to - skip : 0u) : len,
                            part ? (score_from > skip ? score_from - skip : 0u) : at, x_rest, tau,
                            rate_tau, creep);
-        } else if (part) {
-            fit_creep_score_part(u, r, len, at, to > skip ? to - skip : 0u,
-                                 score_from > skip ? score_from - skip : 0u, x_rest, tau, creep);
-        } else {
-            fit_creep_score(u, r, len, at, x_rest, tau, creep);
+        } else { /* part: held out inside the run (fit_creep_score()'s the rest) */
+            fit_creep_score_part(u, r, len, at, part ? (to > skip ? to - skip : 0u) : len,
+                                 part ? (score_from > skip ? score_from - skip : 0u) : at, x_rest,
+                                 tau, lags, creep);
         }
     }
     free(u);
@@ -373,7 +374,7 @@ double fit_model_run_creep(const hyst_poly_t *f0, const hyst_curve_t *curve, con
                            double *before_rms, double *max_abs, fit_creep_t *creep)
 {
     return model_run(f0, curve, x, y, n, skip, delay, from, n, 0, from, before_rms, max_abs,
-                     creep);
+                     creep, NULL);
 }
 
 /* Samples of the training part: the first two thirds of those the model sees. */
@@ -533,7 +534,7 @@ static int model_fit(const hyst_ident_config_t *part, int kind, unsigned t_degre
  * same parts. */
 static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t_degree,
                             int widened, const double *x, const double *y, size_t n, int split,
-                            size_t settle, poly_passes_t *passes, hyst_status_t *status,
+                            size_t settle, reuse_t *reuse, hyst_status_t *status,
                             hyst_ident_result_t *poly, fit_everett_result_t *ev,
                             fit_creep_t *creep)
 {
@@ -584,8 +585,8 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
         part.lo = lo;
         part.hi = hi;
     }
-    if (passes != NULL) { /* the pass is of this split's part of the record */
-        pass = &passes->pass[split][widened != 0];
+    if (reuse != NULL && kind == FIT_POLY) { /* the pass of this split's part of the record */
+        pass = &reuse->pass[split][widened != 0];
         if (pass->valid && !(pass->x == x && pass->y == y && pass->n == n && pass->split == split &&
                              pass->count == count && same_part(&pass->part, &part))) {
             pass->valid = 0;
@@ -603,7 +604,8 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
     free(masked);
     e = model_run(kind != FIT_POLY ? NULL : &f0, kind != FIT_POLY ? &curve : NULL, x, y, n,
                   cfg->skip, cfg->delay, from, to, split != 0,
-                  split != 0 && settle > from ? settle : from, &before, NULL, creep);
+                  split != 0 && settle > from ? settle : from, &before, NULL, creep,
+                  reuse != NULL ? &reuse->lags : NULL);
     return e;
 }
 
@@ -683,7 +685,7 @@ static double validated(const hyst_ident_config_t *cfg, int kind, unsigned t_deg
  * the creep's hold-out over every split at that time constant. */
 static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degree, int widened,
                       const double *x, const double *y, size_t n, const fit_validation_t *v,
-                      poly_passes_t *passes, hyst_status_t *status, hyst_ident_result_t *poly,
+                      reuse_t *reuse, hyst_status_t *status, hyst_ident_result_t *poly,
                       fit_everett_result_t *ev, fit_creep_t *creep, double *last_third)
 {
     hyst_ident_result_t poly_other;
@@ -706,7 +708,7 @@ static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degre
         }
         return resolved(e, resolution);
     }
-    e = holdout_split(cfg, kind, t_degree, widened, x, y, n, 0, settle, passes, status, poly, ev,
+    e = holdout_split(cfg, kind, t_degree, widened, x, y, n, 0, settle, reuse, status, poly, ev,
                       creep);
     ss = e * e;
     if (last_third != NULL) {
@@ -725,7 +727,7 @@ static double holdout(const hyst_ident_config_t *cfg, int kind, unsigned t_degre
         const int terms = creep != NULL && (creep->tau > 0 || creep->rate_tau > 0);
         creep_other.tau = creep != NULL ? creep->tau : 0.0;
         creep_other.rate_tau = creep != NULL ? creep->rate_tau : 0.0;
-        e = holdout_split(cfg, kind, t_degree, widened, x, y, n, split, settle, passes, &st,
+        e = holdout_split(cfg, kind, t_degree, widened, x, y, n, split, settle, reuse, &st,
                           &poly_other, &ev_other, terms ? &creep_other : NULL);
         ss += e * e;
         ++splits;
@@ -804,9 +806,9 @@ double fit_pi_holdout(const hyst_pi_fit_config_t *cfg, const double *x, const do
     return used > 0u ? sqrt(ss / (double)used) : NAN;
 }
 
-/* fit_score(), f0's fits lowered from *passes (may be NULL). */
+/* fit_score(), with what the candidates of one delay share in *reuse (may be NULL). */
 static void score(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                  const fit_validation_t *v, poly_passes_t *passes, double creep_tau,
+                  const fit_validation_t *v, reuse_t *reuse, double creep_tau,
                   fit_candidate_t *c)
 {
     hyst_ident_config_t cfg = *base;
@@ -818,12 +820,12 @@ static void score(const hyst_ident_config_t *base, const double *x, const double
     if (c->kind == FIT_EVERETT || c->kind == FIT_GRID || c->kind == FIT_SPLINE) {
         fit_everett_result_t ev;
         hyst_ident_result_t unused;
-        c->holdout_rms = holdout(&cfg, c->kind, c->t_degree, c->widened, x, y, n, v, passes,
+        c->holdout_rms = holdout(&cfg, c->kind, c->t_degree, c->widened, x, y, n, v, reuse,
                                  &c->status, &unused, &ev, creep, &c->last_third_rms);
         c->fit_rms = ev.rms;
     } else {
         fit_everett_result_t unused;
-        c->holdout_rms = holdout(&cfg, FIT_POLY, 0u, c->widened, x, y, n, v, passes, &c->status,
+        c->holdout_rms = holdout(&cfg, FIT_POLY, 0u, c->widened, x, y, n, v, reuse, &c->status,
                                  &c->fit, &unused, creep, &c->last_third_rms);
         c->fit_rms = (double)c->fit.rms;
     }
@@ -874,7 +876,7 @@ unsigned fit_option_parameters(const fit_candidate_t *c, int with_creep)
  * unless cand is full or the model has more than max_parameters (when not
  * 0). */
 static void add(const hyst_ident_config_t *base, const double *x, const double *y, size_t n,
-                const fit_validation_t *v, poly_passes_t *passes, double creep_tau,
+                const fit_validation_t *v, reuse_t *reuse, double creep_tau,
                 unsigned max_parameters, int kind, unsigned degree, unsigned t_degree,
                 size_t delay, int widened, fit_candidate_t *cand, size_t max_cand, size_t *count)
 {
@@ -889,7 +891,7 @@ static void add(const hyst_ident_config_t *base, const double *x, const double *
     c->t_degree = t_degree;
     c->delay = delay;
     c->widened = widened;
-    score(base, x, y, n, v, passes, creep_tau, c);
+    score(base, x, y, n, v, reuse, creep_tau, c);
     ++*count;
 }
 
@@ -898,8 +900,7 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
                   size_t n, const fit_validation_t *v, size_t max_delay,
                   fit_candidate_t *cand, size_t max_cand, size_t *best, int *with_creep)
 {
-    poly_passes_t one_delay; /* every poly candidate of a delay lowered from its passes */
-    poly_passes_t *const passes = &one_delay;
+    reuse_t reuse;
     size_t count = 0u, d;
     unsigned deg, k;
     int widen = 0, w;
@@ -912,7 +913,7 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
      * at its last slope above its inputs). Not the grid: its cells beyond
      * the inputs see no data, and their masses 0 hold the output as
      * clamping does. */
-    memset(&one_delay, 0, sizeof one_delay);
+    memset(&reuse, 0, sizeof reuse);
     if (v != NULL && !(base->lo < base->hi) && n > base->skip + base->delay) {
         fit_excitation_t e; /* the validation record's inputs leave the record's range */
         fit_validation_excitation(x, base->skip, n - base->delay, v, base->delay, &e);
@@ -932,17 +933,17 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
         }
         for (deg = 1u; (kinds & FIT_POLY) != 0 && deg <= HYST_MAX_DEGREE; ++deg) {
             for (w = 0; w <= widen; ++w) {
-                add(base, x, y, n, v, passes, creep_tau, max_parameters, FIT_POLY, deg, 0u, d, w,
+                add(base, x, y, n, v, &reuse, creep_tau, max_parameters, FIT_POLY, deg, 0u, d, w,
                     cand, max_cand, &count);
             }
         }
         for (k = 0u; (kinds & FIT_GRID) != 0 && k < FIT_GRID_CANDIDATES; ++k) {
-            add(base, x, y, n, v, NULL, creep_tau, max_parameters, FIT_GRID, FIT_GRID_INTERVALS(k), 0u,
-                d, 0, cand, max_cand, &count);
+            add(base, x, y, n, v, &reuse, creep_tau, max_parameters, FIT_GRID,
+                FIT_GRID_INTERVALS(k), 0u, d, 0, cand, max_cand, &count);
         }
         for (k = 0u; (kinds & FIT_SPLINE) != 0 && k < FIT_SPLINE_CANDIDATES; ++k) {
             for (w = 0; w <= widen; ++w) {
-                add(base, x, y, n, v, NULL, creep_tau, max_parameters, FIT_SPLINE,
+                add(base, x, y, n, v, &reuse, creep_tau, max_parameters, FIT_SPLINE,
                     FIT_SPLINE_INTERVALS(k), 0u, d, w, cand, max_cand, &count);
             }
         }
@@ -950,13 +951,14 @@ size_t fit_select(const hyst_ident_config_t *base, int kinds, unsigned everett_d
             for (k = 0u; k < deg && (everett_degree == 0u || deg == everett_degree); ++k) {
                 for (w = 0; w <= widen; ++w) {
                     if (t_degree == FIT_ANY_T_DEGREE || k == t_degree) {
-                        add(base, x, y, n, v, NULL, creep_tau, max_parameters, FIT_EVERETT, deg, k,
-                            d, w, cand, max_cand, &count);
+                        add(base, x, y, n, v, &reuse, creep_tau, max_parameters, FIT_EVERETT,
+                            deg, k, d, w, cand, max_cand, &count);
                     }
                 }
             }
         }
     }
+    fit_lags_free(&reuse.lags);
     fit_choose(cand, count, creep_tau, best, with_creep);
     return count;
 }

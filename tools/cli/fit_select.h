@@ -152,6 +152,27 @@ typedef struct fit_creep {
     double rate_tau, rate_weight;
 } fit_creep_t;
 
+/* The creep lags' states of the series (fit_creep_score()) over one run's
+ * inputs from one rest, kept for the next run that takes the same inputs
+ * from the same rest, as most candidates of a delay do: FIT_LAG_RUNS runs,
+ * the one used longest ago replaced. Zeroed before use, then
+ * fit_lags_free(). */
+#define FIT_LAG_RUNS 4u
+typedef struct fit_lag_run {
+    double *u;          /* the inputs (a copy), NULL: none kept */
+    double *s;          /* the states, the series' lags side by side */
+    size_t len;
+    double x_rest;
+    unsigned long used; /* when last used: the one with the lowest goes */
+} fit_lag_run_t;
+typedef struct fit_lags {
+    fit_lag_run_t run[FIT_LAG_RUNS];
+    unsigned long clock;
+} fit_lags_t;
+
+/* Frees the runs *lags keeps (zeroed after). */
+void fit_lags_free(fit_lags_t *lags);
+
 /* The creep on a model's run: u[k] its inputs, r[k] the measurement minus
  * its prediction (NaN where missing), k < len; fitted on k < train, scored
  * on the rest. tau > 0: that time constant; 0: each of a 1-2-5 series from
@@ -162,9 +183,10 @@ void fit_creep_score(const double *u, const double *r, size_t len, size_t train,
 
 /* fit_creep_score() on a part held out inside the run: fitted on [0, len)
  * but [from, to) (the lags fed through it), scored on [from, to) from
- * score_from on. */
+ * score_from on; the series' states kept in lags (may be NULL). */
 void fit_creep_score_part(const double *u, const double *r, size_t len, size_t from, size_t to,
-                          size_t score_from, double x_rest, double tau, fit_creep_t *best);
+                          size_t score_from, double x_rest, double tau, fit_lags_t *lags,
+                          fit_creep_t *best);
 
 /* The rate term with the creep lag (creep_tau > 0) or alone (0), on a part
  * held out as fit_creep_score_part(): their weights and the offset by least
