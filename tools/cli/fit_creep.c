@@ -209,9 +209,9 @@ void fit_terms_part(const double *u, const double *r, size_t len, size_t from, s
 
 /* The states of creep_taus[0..count) over u[0..len) from rest at x_rest:
  * a run lags keeps of the same inputs from the same rest, or computed, and
- * kept in lags (may be NULL) in place of the run used longest ago, else
- * into *owned (the caller's to free). NULL when out of memory or a lag is
- * refused. */
+ * kept in lags (may be NULL) in place of the run used longest ago while the
+ * runs fit in FIT_LAG_BYTES, else into *owned (the caller's to free). NULL
+ * when out of memory or a lag is refused. */
 static const double *series_states(fit_lags_t *lags, const double *u, size_t len, double x_rest,
                                    size_t count, double **owned)
 {
@@ -233,7 +233,8 @@ static const double *series_states(fit_lags_t *lags, const double *u, size_t len
         free(s);
         return NULL;
     }
-    if (run == NULL || (copy = (double *)malloc(len * sizeof *u)) == NULL) {
+    if (run == NULL || (count + 1u) * len * sizeof(double) > FIT_LAG_BYTES / FIT_LAG_RUNS ||
+        (copy = (double *)malloc(len * sizeof *u)) == NULL) {
         *owned = s;
         return s;
     }

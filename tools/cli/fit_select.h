@@ -155,9 +155,11 @@ typedef struct fit_creep {
 /* The creep lags' states of the series (fit_creep_score()) over one run's
  * inputs from one rest, kept for the next run that takes the same inputs
  * from the same rest, as most candidates of a delay do: FIT_LAG_RUNS runs,
- * the one used longest ago replaced. Zeroed before use, then
- * fit_lags_free(). */
+ * the one used longest ago replaced, while they fit in FIT_LAG_BYTES
+ * (records of up to about 460 000 samples; longer ones compute them for
+ * each run). Zeroed before use, then fit_lags_free(). */
 #define FIT_LAG_RUNS 4u
+#define FIT_LAG_BYTES (128u * 1024u * 1024u)
 typedef struct fit_lag_run {
     double *u;          /* the inputs (a copy), NULL: none kept */
     double *s;          /* the states, the series' lags side by side */
