@@ -184,22 +184,21 @@ size_t fit_max_delay(const double *x, size_t from, size_t to)
     return d < FIT_MAX_DELAY ? FIT_MAX_DELAY : d > FIT_MAX_SCALED_DELAY ? FIT_MAX_SCALED_DELAY : d;
 }
 
-/* f0's first pass at HYST_MAX_DEGREE over one split of one record (the
- * part fitted: its domain, method, skip, delay and samples), from which the
- * fit of every lower degree is lowered (hyst_ident_lower_degree(): the same
- * f0 bit for bit) instead of passing over the record once per degree. */
+/* f0's first pass at HYST_MAX_DEGREE over one split of the record (the
+ * part fitted: its domain, method, skip and delay, which with the split
+ * decide its samples), from which the fit of every lower degree is lowered
+ * (hyst_ident_lower_degree(): the same f0 bit for bit) instead of passing
+ * over the record once per degree. */
 typedef struct poly_pass {
     int valid;
-    hyst_ident_config_t part; /* its degree HYST_MAX_DEGREE */
-    const double *x, *y;      /* the record (y: before a split's mask) */
-    size_t n, count;
-    int split;
-    hyst_status_t status; /* of the pass: HYST_OK, or why no degree fits */
+    hyst_ident_config_t part; /* as the candidate gave it, its degree aside */
+    hyst_status_t status;     /* of the pass: HYST_OK, or why no degree fits */
     hyst_ident_t id;
 } poly_pass_t;
 
-/* What the candidates of one delay share: f0's reuse, one per split and
- * widening, and the creep lags' states of the runs they make. */
+/* What the candidates of one record share (one fit_select() call): f0's
+ * passes, one per split and widening, and the creep lags' states of the
+ * runs they make. */
 typedef struct reuse {
     poly_pass_t pass[FIT_SPLITS][2];
     fit_lags_t lags;
@@ -441,16 +440,16 @@ static int same_part(const hyst_ident_config_t *a, const hyst_ident_config_t *b)
            a->delay == b->delay;
 }
 
-/* hyst_ident_fit() of part, its first pass lowered from the pass at
- * HYST_MAX_DEGREE over the same samples, made first when pass is not valid
- * (the caller has set its key). */
+/* hyst_ident_fit() of part, its first pass lowered from *pass, the pass at
+ * HYST_MAX_DEGREE over this split's samples, made first unless *pass holds
+ * it for a part that differs in nothing but its degree. */
 static hyst_status_t poly_fit_lowered(const hyst_ident_config_t *part, const double *x,
                                       const double *y, size_t count, poly_pass_t *pass,
                                       hyst_ident_t *work, hyst_ident_result_t *res)
 {
     hyst_status_t st;
     size_t i;
-    if (!pass->valid) {
+    if (!pass->valid || !same_part(&pass->part, part)) {
         hyst_ident_config_t high = *part;
         high.degree = HYST_MAX_DEGREE;
         pass->part = high;
@@ -585,17 +584,8 @@ static double holdout_split(const hyst_ident_config_t *cfg, int kind, unsigned t
         part.lo = lo;
         part.hi = hi;
     }
-    if (reuse != NULL && kind == FIT_POLY) { /* the pass of this split's part of the record */
+    if (reuse != NULL && kind == FIT_POLY) {
         pass = &reuse->pass[split][widened != 0];
-        if (pass->valid && !(pass->x == x && pass->y == y && pass->n == n && pass->split == split &&
-                             pass->count == count && same_part(&pass->part, &part))) {
-            pass->valid = 0;
-        }
-        pass->x = x;
-        pass->y = y;
-        pass->n = n;
-        pass->split = split;
-        pass->count = count;
     }
     if (model_fit(&part, kind, t_degree, x, yf, count, pass, status, poly, ev, &f0, &curve) != 0) {
         free(masked);
