@@ -235,8 +235,8 @@ function f = hyst_fit(x, y, varargin)
   f = fit_part(opts, method, domain, tdegree, x, y);
   if ~isempty(cands)
     f.candidates = cands;
-    f.excitation = excitation(x, double(opts.skip), numel(x) - double(opts.delay), vx, vy, ...
-                              double(opts.delay));
+    f.excitation = excitation(x, y, double(opts.skip), numel(x) - double(opts.delay), ...
+                              double(opts.delay), vx, vy);
   end
   % the delay the model was fitted at: HYST_MODEL_SAVE writes it,
   % HYST_HEADER states it
@@ -567,12 +567,12 @@ end
 % What the hold-out's last third tested the automatic choice on (the
 % gateway's excitation: fit_holdout_excitation(), as 'hyst fit' prints it),
 % with hyst fit's warnings (hyst:excitation).
-function e = excitation(x, skip, finish, vx, vy, delay)
+function e = excitation(x, y, skip, finish, delay, vx, vy)
   if isempty(vx)
-    e = hyst_mex('excitation', x, skip, finish);
+    e = hyst_mex('excitation', x, y, skip, finish, delay);
     part = {'the last third''s', 'the record''s range', 'the last third', 'the inputs'' range'};
   else  % what the validation record tests it on
-    e = hyst_mex('excitation', x, skip, finish, vx, vy, delay);
+    e = hyst_mex('excitation', x, y, skip, finish, delay, vx, vy);
     part = {'the validation record''s', 'the range of the record''s', 'the validation record', ...
             'the record''s inputs'' range or beyond'};
   end

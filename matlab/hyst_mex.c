@@ -40,7 +40,7 @@
  *   f = hyst_mex('fit_spline', x, y, intervals, lo, hi, skip, delay)
  *   [delay, fraction, x] = hyst_mex('given_delay', x, y, kind, degree, t_degree, method, lo,
  *                                   hi, skip)
- *   e = hyst_mex('excitation', x, skip, end)   what the hold-out tests a choice on
+ *   e = hyst_mex('excitation', x, y, skip, end, delay)   what the hold-out tests a choice on
  *   r = hyst_mex('record_check', x, y, skip, delay)   what hyst fit refuses in a record
  *   [cands, best, with_creep, widened, fraction, x, rate] = hyst_mex('select', x, y, kinds,
  *       method, lo, hi, skip, delay, t_degree, creep_tau[, rate_tau])
@@ -1352,43 +1352,46 @@ static void run_score(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     }
 }
 
-/* excitation: prhs = x, skip, end[, vx, vy, delay]; plhs = what the
- * hold-out's last third of x(skip + 1 .. end) tests a choice on
- * (fit_holdout_excitation(), tools/cli/fit_select.c), or the validation
- * record vx, vy (the output delay samples later) against x(skip + 1 ..
- * end) (fit_validation_excitation()): a struct fitted_lo, fitted_hi,
- * holdout_n, beyond, span, minor, and min_span, the span below which hyst
- * fit warns. */
+/* excitation: prhs = x, y, skip, end, delay[, vx, vy]; plhs = what the
+ * hold-out's last third of x(skip + 1 .. end) tests a choice on, the output
+ * of x(k) being y(k + delay) (fit_holdout_excitation(), tools/cli/fit_select.c),
+ * or the validation record vx, vy (the output delay samples later) against
+ * x(skip + 1 .. end) (fit_validation_excitation()): a struct fitted_lo,
+ * fitted_hi, holdout_n, beyond, span, minor, noise (the scored outputs'
+ * noise floor, fit_noise_floor(); NaN: not resolved), and min_span, the span
+ * below which hyst fit warns. */
 static void run_excitation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"fitted_lo", "fitted_hi", "holdout_n", "beyond",
-                                   "span",      "minor",     "min_span"};
+                                   "span",      "minor",     "noise",     "min_span"};
     fit_excitation_t e;
-    size_t skip, end;
+    size_t skip, end, delay;
     mxArray *s;
     (void)nlhs;
-    if ((nrhs != 3 && nrhs != 6) || !is_real_double(prhs[0])) {
-        usage("excitation takes x (a real double vector), skip, end[, vx, vy, delay]");
+    if ((nrhs != 5 && nrhs != 7) || !is_real_double(prhs[0]) || !is_real_double(prhs[1])) {
+        usage("excitation takes x, y (real double vectors), skip, end, delay[, vx, vy]");
     }
-    skip = count(prhs[1], "skip", 0.0, 1e15);
-    end = count(prhs[2], "end", 0.0, 1e15);
-    if (skip > end || end > mxGetNumberOfElements(prhs[0])) {
-        usage("excitation: skip <= end <= numel(x) needed");
+    skip = count(prhs[2], "skip", 0.0, 1e15);
+    end = count(prhs[3], "end", 0.0, 1e15);
+    delay = count(prhs[4], "delay", 0.0, 1e15);
+    if (skip > end || end > mxGetNumberOfElements(prhs[0]) ||
+        end + delay > mxGetNumberOfElements(prhs[1])) {
+        usage("excitation: skip <= end <= numel(x), end + delay <= numel(y) needed");
     }
-    if (nrhs == 6) {
+    if (nrhs == 7) {
         fit_validation_t v;
         double *vdrive;
-        const fit_validation_t *val = validation_arg(prhs[3], prhs[4], skip, &vdrive, &v);
+        const fit_validation_t *val = validation_arg(prhs[5], prhs[6], skip, &vdrive, &v);
         if (val == NULL) {
             usage("excitation: the validation record is empty");
         }
-        fit_validation_excitation((const double *)mxGetData(prhs[0]), skip, end, val,
-                                  count(prhs[5], "delay", 0.0, 1e15), &e);
+        fit_validation_excitation((const double *)mxGetData(prhs[0]), skip, end, val, delay, &e);
         if (vdrive != NULL) {
             mxFree(vdrive);
         }
     } else {
-        fit_holdout_excitation((const double *)mxGetData(prhs[0]), skip, end, &e);
+        fit_holdout_excitation((const double *)mxGetData(prhs[0]),
+                               (const double *)mxGetData(prhs[1]), skip, end, delay, &e);
     }
     s = mxCreateStructMatrix(1, 1, (int)(sizeof fields / sizeof fields[0]), fields);
     set_field(s, "fitted_lo", mxCreateDoubleScalar(e.fitted_lo));
@@ -1397,6 +1400,7 @@ static void run_excitation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *p
     set_field(s, "beyond", mxCreateDoubleScalar((double)e.beyond));
     set_field(s, "span", mxCreateDoubleScalar(e.span));
     set_field(s, "minor", mxCreateDoubleScalar((double)e.minor));
+    set_field(s, "noise", mxCreateDoubleScalar(e.noise));
     set_field(s, "min_span", mxCreateDoubleScalar(FIT_HOLDOUT_MIN_SPAN));
     plhs[0] = s;
 }

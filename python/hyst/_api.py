@@ -892,7 +892,7 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
         f.excitation = _validation_excitation(x, skip, len(x) - int(delay), validate,
                                               int(delay))
     elif cands is not None:
-        f.excitation = _excitation(x, skip, len(x) - int(delay))
+        f.excitation = _excitation(x, y, skip, len(x) - int(delay), int(delay))
     if minor_loops:
         _warn_minor_loops(record["minor"], None if degree_given is None else int(degree_given))
     if validate is not None and chosen is not None:
@@ -950,10 +950,10 @@ def _validation_excitation(x, skip, end, validate, delay):
     return e
 
 
-def _excitation(x, skip, end):
+def _excitation(x, y, skip, end, delay):
     """What the hold-out's last third tested the choice on (fit_excitation(),
     as hyst fit prints it), with hyst fit's warnings (FitWarning)."""
-    e = _hyst.excitation(x, skip, end)
+    e = _hyst.excitation(x, y, skip, end, delay)
     if e["span"] < _hyst.FIT_HOLDOUT_MIN_SPAN:
         warnings.warn(f"the last third's inputs span {100 * e['span']:.3g} % of the record's "
                       "range: the choice was not tested over the rest of it", FitWarning,

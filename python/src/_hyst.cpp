@@ -1461,10 +1461,11 @@ nb::dict given_delay(const In<double> &x, const In<double> &y, int kind, unsigne
 
 /* What the hold-out's last third of x[skip .. end) tests a choice on
  * (fit_holdout_excitation()): dict fitted_lo, fitted_hi, holdout_n, beyond, span,
- * minor. */
+ * minor, noise (None: not resolved). */
 nb::dict excitation_dict(const fit_excitation_t &e)
 {
     nb::dict d;
+    d["noise"] = std::isfinite(e.noise) ? nb::cast(e.noise) : nb::none();
     d["fitted_lo"] = e.fitted_lo;
     d["fitted_hi"] = e.fitted_hi;
     d["holdout_n"] = e.holdout_n;
@@ -1493,13 +1494,14 @@ nb::dict record_check(const In<double> &x, const In<double> &y, size_t skip, siz
     return d;
 }
 
-nb::dict excitation(const In<double> &x, size_t skip, size_t end)
+nb::dict excitation(const In<double> &x, const In<double> &y, size_t skip, size_t end,
+                    size_t delay)
 {
     fit_excitation_t e;
-    if (end > x.shape(0) || skip > end) {
-        throw nb::value_error("excitation: skip <= end <= len(x) needed");
+    if (end > x.shape(0) || skip > end || end + delay > y.shape(0)) {
+        throw nb::value_error("excitation: skip <= end <= len(x), end + delay <= len(y) needed");
     }
-    fit_holdout_excitation(x.data(), skip, end, &e);
+    fit_holdout_excitation(x.data(), y.data(), skip, end, delay, &e);
     return excitation_dict(e);
 }
 
@@ -1857,9 +1859,10 @@ NB_MODULE(_hyst, m)
           "The delay of one model as hyst fit --degree D without --delay chooses it "
           "(fit_given_delay(); on the validation record vx, vy unless empty): dict delay, "
           "delay_fraction, max_delay, integer_holdout, x, vx.");
-    m.def("excitation", &excitation, "x"_a, "skip"_a, "end"_a,
-          "What hyst fit's hold-out tests the choice on (fit_holdout_excitation()): dict fitted_lo, "
-          "fitted_hi, holdout_n, beyond, span, minor.");
+    m.def("excitation", &excitation, "x"_a, "y"_a, "skip"_a, "end"_a, "delay"_a,
+          "What hyst fit's hold-out tests the choice on (fit_holdout_excitation(); the output "
+          "of x[k] is y[k + delay]): dict fitted_lo, fitted_hi, holdout_n, beyond, span, minor, "
+          "noise (the outputs' noise floor, fit_noise_floor(); None: not resolved).");
     m.def("validation_excitation", &validation_excitation, "x"_a, "skip"_a, "end"_a, "vx"_a,
           "vy"_a, "delay"_a,
           "What a validation record tests the choice on (fit_validation_excitation()): the "

@@ -101,9 +101,26 @@ def test_fit_says_what_the_hold_out_tested_as_the_tool(c_build, tmp_path, minor_
                      r.stdout, re.M).groups()
     assert (round(100 * e["span"], 1), e["minor"]) == (float(said[0]), int(said[1]))
     assert (e["minor"] > 0) == minor_loops
+    floor = re.search(r"^# hold-out noise floor: rms (\S+),", r.stdout, re.M)
+    assert floor and f"{e['noise']:.6g}" == floor.group(1)
+    assert abs(e["noise"] - 1e-4) <= 0.05e-4  # record()'s noise
     warned = [str(w.message) for w in caught if issubclass(w.category, hyst.FitWarning)]
     assert any("no minor loop" in m for m in warned) == ("no minor loop" in r.stderr) \
         == (not minor_loops)
+
+
+def test_fit_leaves_the_noise_floor_unresolved_where_the_record_is_coarse(c_build, tmp_path):
+    """A sine of 40 samples a period through the plant, with record()'s
+    noise: the output's curvature between the drive's turns dominates its
+    third and fourth differences, which then disagree, so neither front end
+    states a noise floor."""
+    x = 20.0 - 20.0 * np.cos(2.0 * np.pi * np.arange(1200) / 40.0)
+    y = hyst.model_from(PLANT).process(x) + 1e-4 * np.random.default_rng(5).standard_normal(1200)
+    r = cli_fit(c_build, tmp_path, x, y)
+    assert re.search(r"^# hold-out noise floor: not resolved", r.stdout, re.M), r.stdout
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", hyst.FitWarning)
+        assert hyst.fit(x, y).excitation["noise"] is None
 
 
 def write_record(path, x, y):
@@ -134,6 +151,8 @@ def test_fit_on_a_validation_record_chooses_as_the_tool(c_build, tmp_path):
     e = f.excitation
     beyond = re.search(r"^# validation: (\d+) of its (\d+) inputs outside", r.stdout, re.M)
     assert (e["beyond"], e["holdout_n"]) == (int(beyond.group(1)), int(beyond.group(2)))
+    floor = re.search(r"^# validation noise floor: rms (\S+),", r.stdout, re.M)
+    assert floor and f"{e['noise']:.6g}" == floor.group(1)
     for kind, opts in (("poly", ["--degree", "3"]),
                        ("everett", ["--kind", "everett", "--degree", "2"])):
         r = cli_fit(c_build, tmp_path, x, y, *opts, "--validate", other)

@@ -527,7 +527,8 @@ static int choose(fit_opts_t *o, const char *name, cli_table_t *t)
         fit_validation_excitation(t->col[0], o->cfg.skip, t->n - o->cfg.delay, o->v,
                                   o->cfg.delay, &o->excitation);
     } else {
-        fit_holdout_excitation(t->col[0], o->cfg.skip, t->n - o->cfg.delay, &o->excitation);
+        fit_holdout_excitation(t->col[0], t->col[1], o->cfg.skip, t->n - o->cfg.delay,
+                               o->cfg.delay, &o->excitation);
     }
     rank_others(o, t);
     o->holdout = candidates[best_candidate].holdout_rms;
@@ -737,6 +738,17 @@ static void print_excitation(const fit_opts_t *o, const char *what, const char *
     (void)printf("# %s excitation: its inputs span %.3g %% of the record's range, %lu reversals "
                  "inside it (minor loops)\n",
                  what, 100.0 * o->excitation.span, (unsigned long)o->excitation.minor);
+    if (isfinite(o->excitation.noise)) {
+        (void)printf("# %s noise floor: rms %.6g, the white noise of its outputs (from their "
+                     "third and fourth differences away from the drive's turns, no model): no "
+                     "prediction scores below it\n",
+                     what, o->excitation.noise);
+    } else {
+        (void)printf("# %s noise floor: not resolved (its outputs' third and fourth differences "
+                     "away from the drive's turns disagree, or none is: sampled too coarsely to "
+                     "tell their noise from their signal)\n",
+                     what);
+    }
 }
 
 /* --validate: what the choice was scored on, and the lines of its inputs. */

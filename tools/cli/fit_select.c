@@ -129,15 +129,65 @@ size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double 
     return count;
 }
 
-void fit_holdout_excitation(const double *x, size_t skip, size_t end, fit_excitation_t *e)
+/* Whether the drive x[0 .. n) turns (reverses, or starts or stops moving) at
+ * an index in [lo, hi]: where the output's slope jumps. */
+static int turns_within(const double *x, size_t n, size_t lo, size_t hi)
+{
+    size_t i;
+    for (i = lo < 1u ? 1u : lo; i <= hi && i + 1u < n; ++i) {
+        const double before = x[i] - x[i - 1u], after = x[i + 1u] - x[i];
+        if (before * after <= 0.0 && (before != 0.0 || after != 0.0)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+double fit_noise_floor(const double *x, size_t nx, const double *y, size_t from, size_t to,
+                       size_t delay)
+{
+    /* the k-th differences' weights (k = 3, 4) and C(2k, k) */
+    static const double weight[2][5] = {{-1.0, 3.0, -3.0, 1.0, 0.0}, {1.0, -4.0, 6.0, -4.0, 1.0}};
+    static const double central[2] = {20.0, 70.0};
+    double s[2];
+    size_t order;
+    for (order = 0u; order < 2u; ++order) {
+        const size_t width = order + 4u; /* samples in a difference */
+        double ss = 0.0;
+        size_t used = 0u, k, j;
+        for (k = from < delay + 1u ? delay + 1u : from; k + width <= to; ++k) {
+            double d = 0.0;
+            if (turns_within(x, nx, k - delay - 1u, k + width - delay)) {
+                continue;
+            }
+            for (j = 0u; j < width; ++j) {
+                d += weight[order][j] * y[k + j];
+            }
+            if (isfinite(d)) {
+                ss += d * d;
+                ++used;
+            }
+        }
+        if (used == 0u) {
+            return NAN;
+        }
+        s[order] = sqrt(ss / (double)used / central[order]);
+    }
+    return fabs(s[0] - s[1]) <= FIT_NOISE_AGREE * s[1] ? s[1] : NAN;
+}
+
+void fit_holdout_excitation(const double *x, const double *y, size_t skip, size_t end,
+                            size_t delay, fit_excitation_t *e)
 {
     const size_t train = end > skip ? (2u * (end - skip)) / 3u : 0u;
     double lo, hi, hold_lo, hold_hi;
     size_t k;
     memset(e, 0, sizeof *e);
+    e->noise = NAN;
     if (end <= skip) {
         return;
     }
+    e->noise = fit_noise_floor(x, end, y, skip + train + delay, end + delay, delay);
     fit_input_range(x, skip, skip + train, 0.0, &e->fitted_lo, &e->fitted_hi);
     e->holdout_n = end - skip - train;
     for (k = skip + train; k < end; ++k) {
@@ -156,9 +206,11 @@ void fit_validation_excitation(const double *x, size_t skip, size_t end,
     double lo, hi;
     size_t k;
     memset(e, 0, sizeof *e);
+    e->noise = NAN;
     if (end <= skip || v_end <= v->skip) {
         return;
     }
+    e->noise = fit_noise_floor(v->x, v->n, v->y, v->skip + delay, v->n, delay);
     fit_input_range(x, skip, end, 0.0, &e->fitted_lo, &e->fitted_hi);
     e->holdout_n = v_end - v->skip;
     for (k = v->skip; k < v_end; ++k) {

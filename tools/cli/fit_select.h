@@ -277,18 +277,37 @@ typedef struct fit_excitation {
     size_t beyond;               /* of them, inputs outside [fitted_lo, fitted_hi] */
     double span;                 /* the last third's input range over the record's */
     size_t minor;                /* its reversals inside the record's range (minor loops) */
+    double noise;                /* its outputs' noise floor (fit_noise_floor()); NaN: none */
 } fit_excitation_t;
 
 /* The excitation of the inputs x[skip .. end) split as the hold-out splits
- * them (the first two thirds fitted, the last third scored). */
-void fit_holdout_excitation(const double *x, size_t skip, size_t end, fit_excitation_t *e);
+ * them (the first two thirds fitted, the last third scored), the output of
+ * input k being y[k + delay]. */
+void fit_holdout_excitation(const double *x, const double *y, size_t skip, size_t end,
+                            size_t delay, fit_excitation_t *e);
 
 /* The same for a validation record v (the output `delay` rows after the
  * input): fitted_lo, fitted_hi the range of x[skip .. end), the record
  * fitted; holdout_n v's rows scored, beyond those outside that range, span
- * their range over it, minor v's reversals inside it. */
+ * their range over it, minor v's reversals inside it, noise its outputs'. */
 void fit_validation_excitation(const double *x, size_t skip, size_t end,
                                const fit_validation_t *v, size_t delay, fit_excitation_t *e);
+
+/* fit_noise_floor(): its estimates of order 3 and 4 agree within this fraction. */
+#define FIT_NOISE_AGREE 0.05
+
+/* The white noise of the outputs y[from .. to), as an RMS, estimated without
+ * a model (the output of the drive's x[k] being y[k + delay], x of nx
+ * samples): for white noise of deviation s the k-th difference of the
+ * samples has mean square C(2k, k) s^2, while a signal sampled finely enough
+ * cancels in it; the differences whose samples answer a turn of the drive
+ * (where the output's slope jumps) are left out. The order 4 estimate where
+ * the order 3 one agrees with it within FIT_NOISE_AGREE; NaN where it does
+ * not (a record sampled too coarsely to tell its noise from its signal) or no
+ * difference is left. No prediction of those outputs from the drive scores
+ * below it, the noise being independent of it. */
+double fit_noise_floor(const double *x, size_t nx, const double *y, size_t from, size_t to,
+                       size_t delay);
 
 /* The delay in [0, max_delay] at which the cheap model (f0 of degree 3 on
  * base's skip and domain, no creep) predicts the hold-out (or v) best. */
