@@ -1465,13 +1465,13 @@ nb::dict given_delay(const In<double> &x, const In<double> &y, int kind, unsigne
 nb::dict excitation_dict(const fit_excitation_t &e)
 {
     nb::dict d;
-    d["noise"] = std::isfinite(e.noise) ? nb::cast(e.noise) : nb::none();
     d["fitted_lo"] = e.fitted_lo;
     d["fitted_hi"] = e.fitted_hi;
     d["holdout_n"] = e.holdout_n;
     d["beyond"] = e.beyond;
     d["span"] = e.span;
     d["minor"] = e.minor;
+    d["noise"] = std::isfinite(e.noise) ? nb::cast(e.noise) : nb::none();
     return d;
 }
 
