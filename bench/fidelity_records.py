@@ -13,6 +13,11 @@ Files read with `git show COMMIT:PATH` (the pinned commit for preisach):
   Final_files_for_master/cont_id_and_inv/lp_and_delay/{20,40,100}_hz_no_lp.mat
   (MAT v5, read by the small reader below): drive `Pdrag` (column 1), output
   `Mling` (column 2), 10 kHz.
+- valve_tri50.txt, valve_sine100.txt, valve_prbn.txt: the same valve's
+  Final_files_for_master/discrete_id_and_inv/inv_compare/exp_design_test/
+  {tri50,sine100,prbn}_1.mat: 1 s at rest in the middle of the range, then
+  excursions growing to both ends (a triangle, a sine, a random binary
+  sequence), the same signals.
 - sma_ga.txt: input_data.m's v and y, y - 20 + 17.72, the major loop then the
   ten reversal curves appended as the script assembles them (773 samples).
 """
@@ -26,6 +31,7 @@ import zlib
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PREISACH_COMMIT = "8d1d16b8"
 VALVE_DIR = "Final_files_for_master/cont_id_and_inv/lp_and_delay/"
+GROWING_DIR = "Final_files_for_master/discrete_id_and_inv/inv_compare/exp_design_test/"
 
 # MAT v5 data types: struct format of each numeric one
 NUMERIC = {1: "b", 2: "B", 3: "h", 4: "H", 5: "i", 6: "I", 7: "f", 9: "d", 12: "q", 13: "Q"}
@@ -103,15 +109,23 @@ def write(path, xs, ys):
     print("wrote %s (%d samples)" % (os.path.relpath(path, ROOT), len(xs)))
 
 
+def valve_signals(repo, path):
+    """(drive, output) of one of the valve's records."""
+    (rec,) = load_mat(git_show(repo, "%s:%s" % (PREISACH_COMMIT, path))).values()
+    signals = {s["Name"].split('"/"')[1]: s["Data"] for s in rec["Y"]}
+    # the names are Swedish (P\xe5drag, M\xe4ling), saved in a code page
+    drive = next(v for k, v in signals.items() if k.startswith("P") and k.endswith("drag"))
+    output = next(v for k, v in signals.items() if k.startswith("M") and k.endswith("ling"))
+    return drive, output
+
+
 def valve(repo, out):
     for rate in ("20", "40", "100"):
-        mat = load_mat(git_show(repo, "%s:%s%s_hz_no_lp.mat" % (PREISACH_COMMIT, VALVE_DIR, rate)))
-        (rec,) = mat.values()
-        signals = {s["Name"].split('"/"')[1]: s["Data"] for s in rec["Y"]}
-        # the names are Swedish (P\xe5drag, M\xe4ling), saved in a code page
-        drive = next(v for k, v in signals.items() if k.startswith("P") and k.endswith("drag"))
-        output = next(v for k, v in signals.items() if k.startswith("M") and k.endswith("ling"))
-        write(os.path.join(out, "valve_%shz.txt" % rate), drive, output)
+        write(os.path.join(out, "valve_%shz.txt" % rate),
+              *valve_signals(repo, "%s%s_hz_no_lp.mat" % (VALVE_DIR, rate)))
+    for name in ("tri50", "sine100", "prbn"):
+        write(os.path.join(out, "valve_%s.txt" % name),
+              *valve_signals(repo, "%s%s_1.mat" % (GROWING_DIR, name)))
 
 
 def sma(repo, out):

@@ -26,8 +26,9 @@ function f = hyst_fit(x, y, varargin)
 %   F = HYST_FIT(X, Y, 'kind', 'everett') fits the asymmetric kind's branch
 %   function E of total degree 'degree' (1..4) by hyst_everett_fit_*: the
 %   record starts from rest (lo) at sample 'skip', its outputs fitted from
-%   the first input within 1 % of an end of the range on, inputs outside
-%   the domain clamped as the model clamps them. 'tdegree' K (0..degree-1,
+%   the first input within 1 % of an end of the range on (every output
+%   where that input comes after the first third), inputs outside the
+%   domain clamped as the model clamps them. 'tdegree' K (0..degree-1,
 %   default degree-1: all terms) fits only the terms w^i t^j with j <= K,
 %   the others 0: major loops alone determine E of t-degree 1 at most, at
 %   any degree (a higher t-degree needs minor loops, else ERR_SINGULAR).

@@ -15,7 +15,9 @@
 #    of the model's outputs (the asymmetric compensator, to 1e-9 of the span);
 #  - the same plant's record from inside a loop: only the samples after the
 #    first extreme are fitted (before it the model's state, from rest, is
-#    not the plant's): E recovered, its class chosen;
+#    not the plant's): E recovered, its class chosen; a record whose first
+#    extreme comes late (excursions growing from a rest in the middle) has
+#    every output fitted;
 #  - a fit the library refuses (E falling) exits 2 and writes nothing;
 #  - major loops alone of a plant whose E is of degree 3, linear in t: E of
 #    full degree 3 is singular there, t-degree 1 is chosen and recovered.
@@ -114,6 +116,23 @@ awk -F, 'NR == 1 { split("3,1,2", w, ",");
 "$tool" fit --creep none mid.txt > mid_choice.txt || fail "fit from inside a loop, chosen"
 grep -q '^# chosen by hold-out: degree 2, delay 0 (kind everett, t-degree 1, 4 parameters' mid_choice.txt ||
     fail "choice from inside a loop: $(grep chosen mid_choice.txt)"
+
+# ---- the plant's record of excursions growing from a rest at 20: the first
+# extreme comes in the last third, so every output is fitted (from rest, as
+# the plant ran), not only the tail after it; E recovered ----
+awk 'BEGIN { for (i = 0; i < 50; i++) print 20; for (c = 1; c <= 10; c++) { a = 2 * c;
+             for (x = 20; x < 20 + a; x += 0.25) print x; for (x = 20 + a; x > 20 - a; x -= 0.25) print x;
+             for (x = 20 - a; x < 20; x += 0.25) print x } }' > gx.txt
+"$tool" sim --model plant.hyst --digits 17 gx.txt > gy.txt || fail "sim of the plant (growing)"
+paste -d' ' gx.txt gy.txt > grow.txt
+"$tool" fit --kind everett --degree 2 --t-degree 1 --delay 0 --creep none grow.txt > grow_fit.txt ||
+    fail "fit of the growing record"
+n=$(wc -l < grow.txt)
+grep -q "run over the record, $n of $n samples used" grow_fit.txt ||
+    fail "growing record: $(grep -o '[0-9]* of [0-9]* samples used' grow_fit.txt), not $n of $n"
+awk -F, 'NR == 1 { split("3,1,2", w, ",");
+                   for (k = 1; k <= 3; k++) { d = $k - w[k]; if (d < 0) d = -d; if (d > 1e-3) exit 1 } }' grow_fit.txt ||
+    fail "terms of the growing record: $(head -1 grow_fit.txt)"
 
 # ---- headers: compile in float and double, hold the saved numbers ----
 "$tool" header --model m.hyst --dir . f0_hdr 2> /dev/null || fail "header --model"

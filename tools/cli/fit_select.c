@@ -91,10 +91,13 @@ size_t fit_settled(const double *x, size_t from, size_t to)
     fit_input_range(x, from, to, 0.0, &lo, &hi);
     for (k = from; k < to; ++k) {
         if (x[k] <= lo + 0.01 * (hi - lo) || x[k] >= hi - 0.01 * (hi - lo)) {
-            return k;
+            break;
         }
     }
-    return to;
+    /* a later first extreme (excursions growing from a rest in the middle)
+     * would leave most of the record unfitted: fitting the head instead
+     * makes the model carry the branch from rest to the actuator's state */
+    return k - from <= (to - from) / 3u ? k : from;
 }
 
 size_t fit_reversals(const double *x, size_t from, size_t to, double lo, double hi,

@@ -220,8 +220,9 @@ void fit_terms_other(const double *u, const double *r, size_t len, const double 
 size_t fit_rate_taus(const double *x, size_t from, size_t to, double *taus);
 
 /* The first sample of x[from .. to) within 1 % of the range of an end of
- * that range (to if none): where a model run from rest has the record's own
- * state whatever came before (an extreme wipes the rest out). */
+ * that range: where a model run from rest has the record's own state
+ * whatever came before (an extreme wipes the rest out); from itself when
+ * that sample lies beyond the first third (or there is none). */
 size_t fit_settled(const double *x, size_t from, size_t to);
 
 typedef struct fit_candidate {
