@@ -12,7 +12,7 @@ function failed = run_tests(root, ref, cli)
            @t_bounded_memory_bitexact, @t_inv_undoes_sim, @t_fit_measured, ...
            @t_fit_equals_cli, @t_errors_status_names, @t_usage_errors, ...
            @t_save_load_roundtrip, @t_load_rejects, @t_readme_block, ...
-           @t_everett_reference, @t_everett_errors, @t_everett_fit, ...
+           @t_everett_reference, @t_everett_errors, @t_everett_fit, @t_everett_fit_growing, ...
            @t_everett_save_load, @t_everett_load_rejects, @t_everett_inv, ...
            @t_everett_inv_table_bitexact, @t_everett_inv_table_error, ...
            @t_everett_inv_table_monotone, @t_everett_inv_table_arguments, ...
@@ -627,6 +627,24 @@ function t_everett_errors(~)
   expect_error('hyst:ERR_DEGREE', @() hyst_fit(0:9, 0:9, 'kind', 'everett', 'degree', 5));
   expect_error('hyst:ERR_ARG', @() hyst_fit(0:9, 0:9, 'kind', 'everett', 'degree', 3, ...
                                             'delay', 0, 'skip', 10));
+end
+
+function t_everett_fit_growing(~)
+  % excursions growing from a rest in the middle: the first extreme comes in
+  % the last third, so every output is fitted and the plant (run from rest,
+  % as the model is) recovered
+  e = e3();
+  x = 5 * ones(50, 1);
+  for c = 1:10
+    a = 0.5 * c;
+    x = [x; (5:0.05:5 + a - 1e-9)'; (5 + a:-0.05:5 - a + 1e-9)'; (5 - a:0.05:5 - 1e-9)'];
+  end
+  y = hyst_sim(e, x);
+  near_end = x <= min(x) + 0.01 * (max(x) - min(x)) | x >= max(x) - 0.01 * (max(x) - min(x));
+  check(find(near_end, 1) > 2 * numel(x) / 3, 'first extreme at %d of %d', find(near_end, 1), numel(x));
+  f = hyst_fit(x, y, 'kind', 'everett', 'degree', 3, 'delay', 0, 'domain', [e.lo e.hi]);
+  check(f.used == numel(x), 'used %d of %d', f.used, numel(x));
+  check(max(abs(f.terms - e.terms)) < 1e-3 * max(abs(e.terms)), 'terms %s', mat2str(f.terms, 5));
 end
 
 function t_everett_fit(~)

@@ -204,6 +204,24 @@ def test_fit_from_inside_a_loop():
     assert np.max(np.abs(np.array(f.terms) - E3["terms"])) < 1e-3 * np.max(np.abs(E3["terms"]))
 
 
+def test_fit_of_excursions_growing_from_a_rest_inside():
+    """A record whose first extreme comes late (excursions growing from a
+    rest in the middle): every output is fitted, not only the tail after
+    that extreme; the plant, run from rest as the model is, recovered."""
+    steps = [np.full(50, 5.0)]
+    for c in range(1, 11):
+        a = 0.5 * c
+        steps += [np.arange(5.0, 5.0 + a, 0.05), np.arange(5.0 + a, 5.0 - a, -0.05),
+                  np.arange(5.0 - a, 5.0, 0.05)]
+    x = np.concatenate(steps)
+    y = hyst.ModelFromEverett(**E3).process(x)
+    near_end = (x <= x.min() + 0.01 * np.ptp(x)) | (x >= x.max() - 0.01 * np.ptp(x))
+    assert np.argmax(near_end) > 2 * len(x) // 3  # the first extreme in the last third
+    f = hyst.fit(x, y, 3, kind="everett", domain=(E3["lo"], E3["hi"]))
+    assert f.used == len(x)
+    assert np.max(np.abs(np.array(f.terms) - E3["terms"])) < 1e-3 * np.max(np.abs(E3["terms"]))
+
+
 def test_auto_choice_prefers_the_asymmetric_kind_on_an_asymmetric_plant():
     x, y = noisy_record(E3, 6000, seed=33, delay=2)
     f = hyst.fit(x, y, None, delay=None, domain=(E3["lo"], E3["hi"]))
