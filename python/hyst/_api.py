@@ -694,8 +694,9 @@ def fit(x, y, degree=None, *, kind=None, t_degree=None, method="joint", domain=N
     of x cancel);
     ``kind="everett"`` the asymmetric kind's E (hyst_everett_fit_*(), degree
     1..EVERETT_MAX_DEGREE; the record starts from rest at sample ``skip``, its
-    outputs fitted from the first input within 1 % of an end of the range on,
-    inputs outside the domain are clamped as the model clamps them;
+    outputs fitted from the first input within 1 % of an end of the range on
+    (every output where that input comes after the first third), inputs
+    outside the domain are clamped as the model clamps them;
     ``t_degree`` fits only E's terms w^i t^j with j <= t_degree, the others
     0: major loops alone determine E of t_degree 1 at most, at any degree);
     ``kind="everett_grid"`` E on a grid of ``degree`` knot intervals and
