@@ -27,6 +27,11 @@ tool=$1 run=$2 cc=$3 inc=$4 work=$5 data=$6
 mkdir -p "$work"
 cd "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
+# line 1 of a fit's output FILE: the plant's three terms 3,1,2, each within TOL
+plant_terms_within() {
+    awk -F, -v tol="$1" 'NR == 1 { if (NF != 3) exit 1; split("3,1,2", w, ",");
+        for (k = 1; k <= 3; k++) { d = $k - w[k]; if (d < 0) d = -d; if (d > tol) exit 1 } }' "$2"
+}
 
 # ---- the measured record: both kinds compared, every candidate reported (the
 # hysteresis models alone: creep.sh checks the creep term) ----
@@ -84,8 +89,7 @@ awk 'NR == FNR { x[NR] = $1; n = NR; next } { y[FNR] = $1 }
                printf "%s %.9g\n", x[k], y[k - 2] + e } }' x.txt y.txt > rec.txt
 "$tool" fit --save m.hyst --header f0_asym rec.txt > fit.txt 2> fit_err.txt || fail "fit: $(cat fit_err.txt)"
 grep -q '^# chosen by hold-out: degree 2, delay 2 (kind everett, t-degree 1, 4 parameters' fit.txt || fail "plant: $(grep chosen fit.txt)"
-awk -F, 'NR == 1 { if (NF != 3) exit 1; split("3,1,2", w, ",");
-                   for (k = 1; k <= 3; k++) { d = $k - w[k]; if (d < 0) d = -d; if (d > 0.01) exit 1 } }' fit.txt ||
+plant_terms_within 0.01 fit.txt ||
     fail "plant terms: $(head -1 fit.txt)"
 # the model file as docs/cli.md gives it
 [ "$(sed -n 1p m.hyst)" = 'hyst-model-text 1' ] && [ "$(grep -v '^#' m.hyst | cut -d' ' -f1 | paste -sd' ')" = "hyst-model-text kind lo hi y_lo delay degree terms" ] ||
@@ -110,8 +114,7 @@ cmp <(tail -n +3 sim_model.txt) <(head -n -2 lib.txt) || fail "sim --model diffe
 paste -d' ' x.txt y_plant.txt | tail -n +200 > mid.txt
 "$tool" fit --kind everett --degree 2 --t-degree 1 --delay 0 --creep none mid.txt > mid_fit.txt ||
     fail "fit of the record from inside a loop"
-awk -F, 'NR == 1 { split("3,1,2", w, ",");
-                   for (k = 1; k <= 3; k++) { d = $k - w[k]; if (d < 0) d = -d; if (d > 1e-3) exit 1 } }' mid_fit.txt ||
+plant_terms_within 1e-3 mid_fit.txt ||
     fail "terms from inside a loop: $(head -1 mid_fit.txt)"
 "$tool" fit --creep none mid.txt > mid_choice.txt || fail "fit from inside a loop, chosen"
 grep -q '^# chosen by hold-out: degree 2, delay 0 (kind everett, t-degree 1, 4 parameters' mid_choice.txt ||
@@ -130,8 +133,7 @@ paste -d' ' gx.txt gy.txt > grow.txt
 n=$(wc -l < grow.txt)
 grep -q "run over the record, $n of $n samples used" grow_fit.txt ||
     fail "growing record: $(grep -o '[0-9]* of [0-9]* samples used' grow_fit.txt), not $n of $n"
-awk -F, 'NR == 1 { split("3,1,2", w, ",");
-                   for (k = 1; k <= 3; k++) { d = $k - w[k]; if (d < 0) d = -d; if (d > 1e-3) exit 1 } }' grow_fit.txt ||
+plant_terms_within 1e-3 grow_fit.txt ||
     fail "terms of the growing record: $(head -1 grow_fit.txt)"
 
 # ---- headers: compile in float and double, hold the saved numbers ----
